@@ -1,0 +1,389 @@
+/* sylva/plugin.h — the one header a sylva plugin includes.
+ *
+ * A plugin is a shared module that exports one function, `sylva_plugin_get`, returning const
+ * descriptors (one per index, NULL past the end). A descriptor names the plugin, its kind, its
+ * parameter schema and its operations. Listing plugins reads descriptors only: it allocates
+ * nothing in the plugin and runs no plugin code beyond `sylva_plugin_get`.
+ *
+ * The host validates every scene-file block against the schema before any plugin code runs,
+ * fills defaults, and hands the plugin a `sylva_params` whose values are in schema order. Each
+ * operation receives the host's API table (`sylva_host_api`) and an opaque `sylva_host`; a
+ * plugin keeps no global state and no pointer to the table between calls.
+ *
+ * Compatibility rules
+ *  - SYLVA_ABI_MAJOR changes when any existing field or function changes meaning or place; the
+ *    host refuses a plugin built against another major.
+ *  - SYLVA_ABI_MINOR grows when fields or API functions are appended. Every extensible struct
+ *    starts with `size` (its sizeof as the writer compiled it); a reader reads no field past it.
+ *  - Arrays the host indexes (parameter specs) must have the host's element size: the descriptor
+ *    records `param_spec_size`, and the host refuses a mismatch.
+ *
+ * Errors: every operation returns SYLVA_OK or a negative sylva_status and, on failure, leaves a
+ * sentence through api->error() or api->param_error() (what is wrong, what would be valid). A
+ * plugin never exits, never aborts on bad input and never writes to stdout.
+ *
+ * Ownership: everything the host hands in (params, requests, heightfields, the API table) is
+ * borrowed for the duration of the call. Meshes, heightfields, materials and textures a plugin
+ * creates through the API are owned by the host. Plugin state returned by create() is owned by
+ * the plugin and released by destroy(), which accepts NULL.
+ */
+#ifndef SYLVA_PLUGIN_H
+#define SYLVA_PLUGIN_H
+
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define SYLVA_ABI_MAJOR 1
+#define SYLVA_ABI_MINOR 0
+
+#if defined(_WIN32)
+#define SYLVA_EXPORT __declspec(dllexport)
+#else
+#define SYLVA_EXPORT __attribute__((visibility("default")))
+#endif
+
+#if defined(__GNUC__)
+#define SYLVA_PRINTF(fmt, args) __attribute__((format(printf, fmt, args)))
+#else
+#define SYLVA_PRINTF(fmt, args)
+#endif
+
+/* ---------------------------------------------------------------------------------------------
+ * Status codes. 0 is success; failures are negative.
+ */
+typedef enum sylva_status {
+    SYLVA_OK = 0,
+    SYLVA_ERR_PARAM = -1,    /* a parameter value the plugin cannot use */
+    SYLVA_ERR_IO = -2,       /* a file could not be read or written */
+    SYLVA_ERR_LIMIT = -3,    /* a documented limit (size, count, recursion) was reached */
+    SYLVA_ERR_NOMEM = -4,    /* an allocation failed */
+    SYLVA_ERR_INTERNAL = -5  /* anything else; the message says what */
+} sylva_status;
+
+/* ---------------------------------------------------------------------------------------------
+ * Parameter schema.
+ */
+typedef enum sylva_kind {
+    SYLVA_KIND_TERRAIN = 1, /* builds the heightfield */
+    SYLVA_KIND_TREE = 2,    /* builds one species' model (mesh), several variants */
+    SYLVA_KIND_ECOLOGY = 3  /* places plants of the scene's species on the terrain */
+} sylva_kind;
+
+typedef enum sylva_ptype {
+    SYLVA_P_BOOL = 1,     /* true/false                                  -> value.i (0/1)      */
+    SYLVA_P_INT = 2,      /* integer, range-checked                      -> value.i            */
+    SYLVA_P_REAL = 3,     /* number, range-checked                       -> value.r            */
+    SYLVA_P_STRING = 4,   /* any string                                  -> value.s            */
+    SYLVA_P_ENUM = 5,     /* one of spec.choices                         -> value.i (index), .s */
+    SYLVA_P_PATH = 6,     /* file path, resolved against the scene file  -> value.s (resolved) */
+    SYLVA_P_VEC3 = 7,     /* [x, y, z]; each element range-checked      -> value.list, len 3  */
+    SYLVA_P_LIST = 8,     /* [a, b, ...] numbers; element range-checked; length in
+                             [min_len, max_len]                          -> value.list, .len   */
+    SYLVA_P_POLYLINE = 9, /* [[x, y], ...] points with non-decreasing x; y range-checked;
+                             equal x allowed (a step)                    -> value.list (x0 y0 x1
+                                                                            y1 ...), .len = points */
+    SYLVA_P_GRID = 10,    /* [[z, z, ...], ...] rows of equal length      -> value.list, .rows,
+                                                                            .cols (row-major)  */
+    SYLVA_P_GROUP = 11,   /* a mapping validated against spec.group      -> value.group        */
+    SYLVA_P_GROUP_LIST = 12 /* a sequence of such mappings               -> value.items, .len  */
+} sylva_ptype;
+
+/* spec.flags */
+#define SYLVA_PARAM_REQUIRED 0x1u      /* the scene file must give it; def is ignored */
+#define SYLVA_PARAM_HAS_MIN 0x2u       /* value (or each element) >= min */
+#define SYLVA_PARAM_HAS_MAX 0x4u       /* value (or each element) <= max */
+#define SYLVA_PARAM_MIN_EXCLUSIVE 0x8u /* with HAS_MIN: value > min */
+#define SYLVA_PARAM_MAX_EXCLUSIVE 0x10u /* with HAS_MAX: value < max */
+
+typedef struct sylva_param_spec sylva_param_spec;
+
+/* One parameter. Static const data in the plugin; the host enforces every field. */
+struct sylva_param_spec {
+    const char *name;       /* key in the scene file: [a-z][a-z0-9_]*, unique in its table */
+    sylva_ptype type;
+    uint32_t flags;          /* SYLVA_PARAM_* */
+    double def;              /* default for BOOL/INT/REAL */
+    double min, max;         /* range, when flagged */
+    const char *def_str;     /* default for STRING/ENUM/PATH (NULL: empty / no file) */
+    const double *def_list;  /* default for VEC3/LIST/POLYLINE (x y pairs); NULL: empty */
+    uint32_t def_len;        /* elements of def_list (POLYLINE: points) */
+    uint32_t min_len, max_len; /* LIST/POLYLINE/GROUP_LIST length bounds; max_len 0: no bound */
+    const char *const *choices; /* ENUM: NULL-terminated names */
+    const char *unit;        /* "m", "deg", "1", ... ; NULL when unitless */
+    const char *help;        /* one sentence */
+    const sylva_param_spec *group; /* GROUP/GROUP_LIST: the nested schema */
+    uint32_t n_group;
+};
+
+/* A validated value. Element i of sylva_params.values belongs to spec[i]. */
+typedef struct sylva_params sylva_params;
+typedef struct sylva_value {
+    int is_set;            /* 1 when the scene file gave it, 0 when it is the default */
+    int64_t i;             /* BOOL, INT, ENUM (choice index) */
+    double r;              /* REAL */
+    const char *s;         /* STRING, ENUM (choice name), PATH (absolute or scene-relative
+                              resolved); NULL when absent */
+    const double *list;    /* VEC3, LIST, POLYLINE (x y interleaved), GRID (row-major) */
+    uint32_t len;          /* elements (POLYLINE: points; GROUP_LIST: items) */
+    uint32_t rows, cols;   /* GRID */
+    const sylva_params *group; /* GROUP */
+    const sylva_params *items; /* GROUP_LIST: array of len */
+    uint32_t line, column; /* where the value stands in the scene file (1-based; 0: default) */
+} sylva_value;
+
+struct sylva_params {
+    const sylva_param_spec *spec;
+    uint32_t n;
+    const sylva_value *values; /* n values */
+    const char *file;          /* scene file these came from (for messages) */
+    uint32_t line, column;     /* where the block starts */
+};
+
+/* ---------------------------------------------------------------------------------------------
+ * Shared data types.
+ */
+
+/* A counter-based random stream: next() hashes (key, counter). Streams derived from the same
+ * key and purpose give the same numbers in any order of use or thread count. */
+typedef struct sylva_rng {
+    uint64_t key;
+    uint64_t counter;
+} sylva_rng;
+
+/* Surface kinds a material can take. */
+typedef enum sylva_bsdf {
+    SYLVA_BSDF_LAMBERT = 1, /* opaque diffuse: albedo */
+    SYLVA_BSDF_LEAF = 2     /* two-sided: diffuse reflection (albedo) + diffuse transmission */
+} sylva_bsdf;
+
+typedef struct sylva_material_desc {
+    uint32_t size;          /* sizeof(sylva_material_desc) */
+    const char *name;       /* copied by the host */
+    sylva_bsdf bsdf;
+    float albedo[3];        /* linear RGB reflectance, multiplied by the texture */
+    float transmittance[3]; /* LEAF: linear RGB diffuse transmittance */
+    int32_t texture;        /* from api->texture_new, or -1: none */
+    int alpha_mask;         /* 1: texture alpha < 0.5 cuts the surface away */
+} sylva_material_desc;
+
+/* An opaque triangle mesh owned by the host. */
+typedef struct sylva_mesh sylva_mesh;
+
+/* A regular grid of heights, owned by the host. Node (i, j) sits at (x0 + i dx, y0 + j dy) with
+ * height z[j * nx + i]. */
+typedef struct sylva_heightfield {
+    uint32_t size;        /* sizeof(sylva_heightfield) */
+    uint32_t nx, ny;      /* nodes along x and y, >= 2 each */
+    double x0, y0;        /* position of node (0, 0), metres */
+    double dx, dy;        /* node spacing, metres, > 0 */
+    float *z;             /* nx * ny heights, metres; host-allocated */
+    int32_t *material;    /* NULL, or nx * ny material ids (per node; a triangle takes its
+                             first vertex's); host-allocated when asked for */
+    int has_water;        /* 1: a water surface at water_level */
+    double water_level;   /* metres */
+    int32_t water_material; /* material of the water surface, or -1 for the host's default */
+} sylva_heightfield;
+
+/* A plant placed by an ecology plugin. */
+typedef struct sylva_plant {
+    uint32_t size;        /* sizeof(sylva_plant) */
+    uint32_t species;     /* index into the request's species array */
+    double position[3];   /* metres; z is ignored and taken from the terrain when snap is 1 */
+    int snap_to_terrain;
+    double rotation;      /* about +Z, radians */
+    double height;        /* metres; the prototype is scaled to it (<= 0: unscaled) */
+    double age;           /* normalised age in (0, 1]; selects the variant */
+} sylva_plant;
+
+/* ---------------------------------------------------------------------------------------------
+ * The host API table, passed into every call. Functions are only ever appended.
+ */
+typedef struct sylva_host sylva_host; /* opaque: the host's side of one scene */
+
+typedef enum sylva_log_level {
+    SYLVA_LOG_DEBUG = 0,
+    SYLVA_LOG_INFO = 1,
+    SYLVA_LOG_WARN = 2
+} sylva_log_level;
+
+typedef struct sylva_host_api {
+    uint32_t size; /* sizeof(sylva_host_api) as the host compiled it */
+    uint32_t abi_major, abi_minor;
+
+    /* Messages. error() sets the failure sentence the host reports when the operation returns
+     * non-zero; param_error() does the same and prefixes the scene-file location of the named
+     * parameter of `params`. Both return SYLVA_ERR_PARAM for `return api->error(...)`. */
+    void (*log)(sylva_host *, sylva_log_level, const char *fmt, ...) SYLVA_PRINTF(3, 4);
+    int (*error)(sylva_host *, const char *fmt, ...) SYLVA_PRINTF(2, 3);
+    int (*param_error)(sylva_host *, const sylva_params *, const char *param, const char *fmt, ...)
+        SYLVA_PRINTF(4, 5);
+    /* Progress of a long operation: done of total units; label names the stage. */
+    void (*progress)(sylva_host *, const char *label, uint64_t done, uint64_t total);
+
+    /* Random streams: a stream for (scene seed, purpose, index). */
+    void (*rng_init)(sylva_host *, sylva_rng *, const char *purpose, uint64_t index);
+    uint64_t (*rng_u64)(sylva_rng *);
+    double (*rng_uniform)(sylva_rng *); /* [0, 1) with 53 random bits */
+
+    /* Meshes. mesh_append copies nv vertices (positions required; normals and uvs may be
+     * NULL) and nt triangles whose indices are relative to the vertices appended by this call;
+     * mat holds one material id per triangle, or is NULL for material 0 of the mesh's owner.
+     * Returns SYLVA_OK, or SYLVA_ERR_LIMIT past the host's triangle limit (message set). */
+    int (*mesh_append)(sylva_host *, sylva_mesh *, const float *pos, const float *nrm,
+                       const float *uv, uint32_t nv, const uint32_t *tri, const int32_t *mat,
+                       uint32_t nt);
+    uint32_t (*mesh_triangle_count)(const sylva_mesh *);
+
+    /* Materials and textures (owned by the host). texture_new copies w*h RGBA8 texels and
+     * returns its id (>= 0) or a negative status. material_new returns an id >= 0. */
+    int32_t (*texture_new)(sylva_host *, const char *name, uint32_t w, uint32_t h,
+                           const uint8_t *rgba);
+    int32_t (*material_new)(sylva_host *, const sylva_material_desc *);
+
+    /* Heightfields (owned by the host). with_material: allocate the per-node material ids. */
+    sylva_heightfield *(*heightfield_new)(sylva_host *, uint32_t nx, uint32_t ny,
+                                          int with_material);
+
+    /* Terrain queries over the scene's terrain (valid during ecology calls). */
+    int (*terrain_height)(sylva_host *, double x, double y, double *z);
+    int (*terrain_normal)(sylva_host *, double x, double y, double n[3]);
+
+    /* Plants (ecology): copies one plant into the scene. */
+    int (*plant_add)(sylva_host *, const sylva_plant *);
+
+    /* Scene-file paths: the absolute path of `rel` resolved against the scene file; the string
+     * is owned by the host and lives as long as the scene. */
+    const char *(*resolve_path)(sylva_host *, const char *rel);
+} sylva_host_api;
+
+/* ---------------------------------------------------------------------------------------------
+ * Requests and outputs of each kind. All start with `size`.
+ */
+typedef struct sylva_terrain_request {
+    uint32_t size;
+    uint64_t seed;        /* the scene seed */
+} sylva_terrain_request;
+
+typedef struct sylva_terrain_out {
+    uint32_t size;
+    sylva_heightfield *terrain; /* set by the plugin: from api->heightfield_new */
+} sylva_terrain_out;
+
+typedef struct sylva_tree_request {
+    uint32_t size;
+    double age;           /* normalised age in (0, 1]; 1 = the full-grown tree */
+    uint32_t variant;     /* index of this variant in [0, n_variants) */
+    uint32_t n_variants;
+    uint32_t lod;         /* level of detail: 0 = full */
+    uint64_t seed;        /* seed for this species and variant */
+} sylva_tree_request;
+
+typedef struct sylva_tree_out {
+    uint32_t size;
+    sylva_mesh *mesh;     /* created by the host; the plugin appends to it. Z up, the base of
+                             the trunk at the origin, metres */
+    double height;        /* set by the plugin: the model's height, metres */
+} sylva_tree_out;
+
+typedef struct sylva_species_info {
+    uint32_t size;
+    const char *name;            /* the species' key in the scene file */
+    const sylva_params *ecology; /* the species' block validated against species_params */
+    double model_height;         /* height of the full-grown model, metres */
+} sylva_species_info;
+
+typedef struct sylva_ecology_request {
+    uint32_t size;
+    uint64_t seed;
+    const sylva_heightfield *terrain;
+    const sylva_species_info *species;
+    uint32_t n_species;
+} sylva_ecology_request;
+
+typedef struct sylva_ecology_out {
+    uint32_t size;
+    uint32_t n_plants;    /* set by the plugin: plants it added through api->plant_add */
+} sylva_ecology_out;
+
+/* ---------------------------------------------------------------------------------------------
+ * The descriptor.
+ */
+typedef struct sylva_plugin {
+    uint32_t size;            /* sizeof(sylva_plugin) */
+    uint32_t abi_major, abi_minor; /* SYLVA_ABI_MAJOR/MINOR */
+    uint32_t param_spec_size; /* sizeof(sylva_param_spec) */
+    sylva_kind kind;
+    const char *name;         /* [a-z][a-z0-9_]*, unique among plugins; scenes use it */
+    const char *summary;      /* one line */
+    const char *version;      /* the plugin's own version */
+
+    const sylva_param_spec *params; /* the plugin's block in the scene file */
+    uint32_t n_params;
+
+    /* Ecology only: the block each species carries under `species_section` (e.g. "ecology"). */
+    const char *species_section;
+    const sylva_param_spec *species_params;
+    uint32_t n_species_params;
+
+    /* Operations. create() validates what the schema cannot and builds state; generate() takes
+     * the kind's request and output (sylva_terrain_*, sylva_tree_*, sylva_ecology_*). */
+    int (*create)(const sylva_host_api *, sylva_host *, const sylva_params *, void **state);
+    int (*generate)(void *state, const sylva_host_api *, sylva_host *, const void *request,
+                    void *out);
+    void (*destroy)(void *state);
+
+    /* Optional interfaces by id (NULL, or returns NULL for an unknown id). */
+    const void *(*extension)(const char *id);
+} sylva_plugin;
+
+/* The one exported symbol: descriptor `index` of this module, NULL past the end. */
+#define SYLVA_PLUGIN_ENTRY "sylva_plugin_get"
+typedef const sylva_plugin *(*sylva_plugin_get_fn)(uint32_t index);
+
+/* ---------------------------------------------------------------------------------------------
+ * Convenience readers (inline; no linkage to the host).
+ */
+static inline int sylva_param_index(const sylva_params *p, const char *name)
+{
+    for (uint32_t k = 0; k < p->n; k++) {
+        const char *a = p->spec[k].name, *b = name;
+        while (*a && *a == *b) a++, b++;
+        if (*a == *b) return (int)k;
+    }
+    return -1;
+}
+
+/* The value of `name`; NULL when the schema has no such parameter (a plugin bug). */
+static inline const sylva_value *sylva_param(const sylva_params *p, const char *name)
+{
+    int k = sylva_param_index(p, name);
+    return k < 0 ? (const sylva_value *)0 : &p->values[k];
+}
+
+static inline double sylva_param_real(const sylva_params *p, const char *name)
+{
+    const sylva_value *v = sylva_param(p, name);
+    return v ? v->r : 0.0;
+}
+
+static inline int64_t sylva_param_int(const sylva_params *p, const char *name)
+{
+    const sylva_value *v = sylva_param(p, name);
+    return v ? v->i : 0;
+}
+
+static inline const char *sylva_param_str(const sylva_params *p, const char *name)
+{
+    const sylva_value *v = sylva_param(p, name);
+    return v ? v->s : (const char *)0;
+}
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# install-deps.sh — installs sylva's build and test dependencies from Debian 12's archive.
+# Idempotent: installs only what is missing. Uses sudo when not run as root.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libembree-dev          # Embree 3: ray tracing kernels
+  libopenexr-dev         # OpenEXR Core C API: EXR output
+  libopenimageio-dev openimageio-tools  # PNG output, image reading and comparison
+  libyaml-dev            # scene files
+  libgdal-dev            # DTM input (terrain plugin)
+  povray                 # cross-check renders
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then sudo_cmd=(sudo); else
+    echo "install-deps: need root (or sudo) to install: ${missing[*]}" >&2
+    exit 1
+  fi
+fi
+echo "install-deps: installing ${missing[*]}"
+"${sudo_cmd[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,34 @@
+/* cli_args.c — number and size parsing for the command line. */
+#include "cli/cli_args.h"
+
+#include <errno.h>
+#include <inttypes.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+int cli_parse_u64(const char *cmd, const char *opt, const char *s, uint64_t lo, uint64_t hi, uint64_t *out)
+{
+    char *end;
+    errno = 0;
+    unsigned long long v = s && *s != '-' ? strtoull(s, &end, 10) : 0;
+    if (!s || *s == '-' || !*s || *end || errno || v < lo || v > hi) {
+        fprintf(stderr, "sylva %s: %s expects a whole number from %" PRIu64 " to %" PRIu64 ", got '%s'\n", cmd, opt,
+                lo, hi, s ? s : "");
+        return -1;
+    }
+    *out = v;
+    return 0;
+}
+
+int cli_parse_size(const char *cmd, const char *opt, const char *s, uint32_t *w, uint32_t *h)
+{
+    unsigned a, b;
+    char tail;
+    if (!s || sscanf(s, "%ux%u%c", &a, &b, &tail) != 2 || a < 1 || b < 1 || a > 16384 || b > 16384) {
+        fprintf(stderr, "sylva %s: %s expects WIDTHxHEIGHT with each side from 1 to 16384, got '%s'\n", cmd, opt,
+                s ? s : "");
+        return -1;
+    }
+    *w = a, *h = b;
+    return 0;
+}

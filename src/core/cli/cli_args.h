@@ -1,0 +1,22 @@
+/* cli_args.h — strict parsing of command-line numbers and sizes, with messages that name the
+ * option and what would be valid. */
+#ifndef SYLVA_CLI_ARGS_H
+#define SYLVA_CLI_ARGS_H
+
+#include <stdint.h>
+
+/* Exit codes shared by every command (documented in README.md and `sylva --help`). */
+enum {
+    EXIT_OK = 0,
+    EXIT_USAGE = 1,   /* bad command line */
+    EXIT_INPUT = 2,   /* bad scene file, missing plugin, plugin failure */
+    EXIT_OUTPUT = 3,  /* an output file could not be written */
+    EXIT_INTERNAL = 4 /* out of memory or an internal error */
+};
+
+/* Parses an unsigned integer in [lo, hi]; prints "sylva OPTION: ..." and returns -1 when bad. */
+int cli_parse_u64(const char *cmd, const char *opt, const char *s, uint64_t lo, uint64_t hi, uint64_t *out);
+/* Parses "WxH" with each side in [1, 16384]. */
+int cli_parse_size(const char *cmd, const char *opt, const char *s, uint32_t *w, uint32_t *h);
+
+#endif

@@ -1,0 +1,143 @@
+/* cmd_plugins.c — `sylva plugins`: which plugins this host can use, and what each one takes.
+ *
+ * The listing goes to stdout; modules that could not be used are reported on stderr, one line
+ * each, so a script reading the list is not confused by them. `--describe` prints from the
+ * plugin's own schema, the same table the scene loader validates against.
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli/cli_args.h"
+#include "cli/commands.h"
+#include "plugin_host.h"
+
+static void plugins_usage(FILE *out, const char *cmd)
+{
+    fprintf(out,
+            "usage: sylva %s [--describe NAME]\n"
+            "\n"
+            "Lists the plugins found in the search path (name, kind, version, summary, file);\n"
+            "modules that could not be used are reported on stderr with the reason.\n"
+            "\n"
+            "  --describe NAME  print one plugin's summary, kind, file and parameter schema\n"
+            "  --help           print this help\n"
+            "\n"
+            "Search path, first match wins: the folders of SYLVA_PLUGIN_PATH (colon-separated),\n"
+            "then %s, then %s.\n"
+            "Exit status: 0 done, 1 usage error, 2 no plugin called NAME, 4 out of memory.\n",
+            cmd, SYLVA_PLUGIN_BUILD_DIR, SYLVA_PLUGIN_INSTALL_DIR);
+}
+
+static void plugins_list(const plugin_registry *reg)
+{
+    uint32_t n = plugin_registry_count(reg);
+    if (n == 0) {
+        printf("no plugins found; searched:");
+        for (uint32_t i = 0; i < plugin_registry_folder_count(reg); i++)
+            printf("%s %s", i ? "," : "", plugin_registry_folder_at(reg, i));
+        printf("\n");
+    } else {
+        int wname = 4, wkind = 4, wver = 7, wsum = 7; /* at least the headings */
+        for (uint32_t i = 0; i < n; i++) {
+            const sylva_plugin *d = plugin_registry_at(reg, i)->desc;
+            int l = (int)strlen(d->name);
+            if (l > wname) wname = l;
+            l = (int)strlen(plugin_kind_name(d->kind));
+            if (l > wkind) wkind = l;
+            l = (int)strlen(d->version);
+            if (l > wver) wver = l;
+            l = (int)strlen(d->summary);
+            if (l > wsum) wsum = l;
+        }
+        printf("%-*s  %-*s  %-*s  %-*s  %s\n", wname, "NAME", wkind, "KIND", wver, "VERSION", wsum,
+               "SUMMARY", "FILE");
+        for (uint32_t i = 0; i < n; i++) {
+            const loaded_plugin *lp = plugin_registry_at(reg, i);
+            printf("%-*s  %-*s  %-*s  %-*s  %s\n", wname, lp->desc->name, wkind,
+                   plugin_kind_name(lp->desc->kind), wver, lp->desc->version, wsum,
+                   lp->desc->summary, lp->file);
+        }
+    }
+    for (uint32_t i = 0; i < plugin_registry_problem_count(reg); i++)
+        fprintf(stderr, "sylva plugins: %s\n", plugin_registry_problem_at(reg, i)->message);
+}
+
+static void plugins_describe(const loaded_plugin *lp)
+{
+    const sylva_plugin *d = lp->desc;
+    printf("%s: %s\n", d->name, d->summary);
+    printf("  kind     %s\n", plugin_kind_name(d->kind));
+    printf("  version  %s\n", d->version);
+    printf("  file     %s\n", lp->file);
+    printf("  ABI      %u.%u\n", d->abi_major, d->abi_minor);
+    printf("\nparameters:\n");
+    if (d->n_params) plugin_schema_print(stdout, d->params, d->n_params, 2);
+    else printf("  (none)\n");
+    if (d->kind == SYLVA_KIND_ECOLOGY && d->species_section) {
+        printf("\nspecies parameters (each species' `%s` block):\n", d->species_section);
+        if (d->n_species_params)
+            plugin_schema_print(stdout, d->species_params, d->n_species_params, 2);
+        else printf("  (none)\n");
+    }
+}
+
+int cmd_plugins(int argc, char **argv)
+{
+    const char *cmd = argc > 0 && argv[0] ? argv[0] : "plugins";
+    const char *describe = NULL;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            plugins_usage(stdout, cmd);
+            return EXIT_OK;
+        }
+        const char *value = NULL;
+        if (!strcmp(a, "--describe")) {
+            if (i + 1 >= argc) {
+                fprintf(stderr, "sylva %s: --describe needs a plugin name\n", cmd);
+                plugins_usage(stderr, cmd);
+                return EXIT_USAGE;
+            }
+            value = argv[++i];
+        } else if (!strncmp(a, "--describe=", 11)) {
+            value = a + 11;
+        } else {
+            fprintf(stderr, "sylva %s: unknown %s '%s'\n", cmd,
+                    a[0] == '-' ? "option" : "argument", a);
+            plugins_usage(stderr, cmd);
+            return EXIT_USAGE;
+        }
+        if (describe) {
+            fprintf(stderr, "sylva %s: --describe is given twice; describe one plugin at a time\n",
+                    cmd);
+            return EXIT_USAGE;
+        }
+        if (!value[0]) {
+            fprintf(stderr, "sylva %s: --describe needs a plugin name\n", cmd);
+            return EXIT_USAGE;
+        }
+        describe = value;
+    }
+
+    err_buf err;
+    err_clear(&err);
+    plugin_registry *reg = plugin_registry_open(&err); /* freed below */
+    if (!reg) {
+        fprintf(stderr, "sylva %s: %s\n", cmd, err.msg);
+        return EXIT_INTERNAL;
+    }
+    int status = EXIT_OK;
+    if (!describe) {
+        plugins_list(reg);
+    } else {
+        const loaded_plugin *lp = plugin_registry_find(reg, describe, 0, &err);
+        if (lp) {
+            plugins_describe(lp);
+        } else {
+            fprintf(stderr, "sylva %s: %s\n", cmd, err.msg);
+            status = EXIT_INPUT;
+        }
+    }
+    plugin_registry_free(reg);
+    return status;
+}

@@ -1,0 +1,15 @@
+/* commands.h — one function per `sylva` command; argv[0] is the command name. Each returns the
+ * process exit status and prints its results on stdout, messages on stderr. */
+#ifndef SYLVA_CLI_COMMANDS_H
+#define SYLVA_CLI_COMMANDS_H
+
+/* `sylva plugins [--describe NAME]`: lists the plugins found (and the modules that could not be
+ * used), or describes one plugin and its parameter schema. Exit status: 0 done, 1 usage error,
+ * 2 no plugin called NAME, 4 out of memory. */
+int cmd_plugins(int argc, char **argv);
+
+/* `sylva render SCENE [options]`: renders to EXR and PNG (see cmd_render.c for options and
+ * exit codes). */
+int cmd_render(int argc, char **argv);
+
+#endif

@@ -1,0 +1,27 @@
+/* exr_write.h — writing a rendered frame as a multi-layer OpenEXR file through the OpenEXR Core
+ * C API (openexr.h). Channels: R, G, B (linear, HALF or FLOAT), Z (depth, FLOAT), N.X N.Y N.Z
+ * (world normal), albedo.R albedo.G albedo.B, id.instance and id.species (UINT). Any layer
+ * pointer may be NULL and is then left out. The file is written under a temporary name in the
+ * same folder and renamed into place, so a failure never leaves a partial file at `path`. */
+#ifndef SYLVA_EXR_WRITE_H
+#define SYLVA_EXR_WRITE_H
+
+#include <stdint.h>
+
+#include "util/err.h"
+
+typedef struct exr_frame {
+    uint32_t width, height;
+    const float *rgb;          /* 3 per pixel, row 0 at the top */
+    const float *depth;        /* 1 per pixel: distance along the camera axis; +inf for sky */
+    const float *normal;       /* 3 per pixel, world space */
+    const float *albedo;       /* 3 per pixel */
+    const uint32_t *instance_id; /* 1 per pixel: 0 = none, else instance index + 1 */
+    const uint32_t *species_id;  /* 1 per pixel: 0 = none, else species index + 1 */
+    int rgb_half;              /* 1: store R, G, B as HALF; 0: FLOAT */
+} exr_frame;
+
+/* Writes f to path (ZIP compression, scanline). Returns 0 or -1 with err set. */
+int exr_write(const char *path, const exr_frame *f, err_buf *err);
+
+#endif

@@ -1,0 +1,34 @@
+/* image_io.h — the C side of the one C++ file (oiio_shim.cpp) that talks to OpenImageIO:
+ * reading any image format as float pixels and writing 8-bit images (PNG). Nothing of C++
+ * crosses this header. Writes go to a temporary name and are renamed into place. */
+#ifndef SYLVA_IMAGE_IO_H
+#define SYLVA_IMAGE_IO_H
+
+#include <stdint.h>
+
+#include "util/err.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct image_f32 {
+    uint32_t width, height, channels;
+    float *pixels;             /* width*height*channels, row 0 at the top; owned (image_free) */
+    char **channel_names;      /* channels strings; owned */
+} image_f32;
+
+/* Reads path (PNG, EXR, JPEG, TIFF, ... whatever OpenImageIO reads), every channel as float
+ * (8- and 16-bit values scaled to [0, 1], 32-bit integers such as EXR id channels kept by
+ * value, alpha unassociated, no colour conversion). Returns 0 or -1 with err set. */
+int image_read(const char *path, image_f32 *out, err_buf *err);
+void image_free(image_f32 *img); /* accepts a zeroed image */
+
+/* Writes 8-bit pixels (channels 1..4) to path; the format follows the extension. */
+int image_write_u8(const char *path, uint32_t width, uint32_t height, uint32_t channels,
+                   const uint8_t *pixels, err_buf *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

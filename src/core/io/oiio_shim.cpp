@@ -1,0 +1,195 @@
+// oiio_shim.cpp — the only C++ in sylva: image_io.h implemented on OpenImageIO. Every entry
+// point catches whatever OpenImageIO or the standard library throws and turns it into an
+// err_buf sentence; memory handed back to C is malloc'd so image_free can release it. Alpha is
+// read and written unassociated, so pixel values pass through unchanged.
+extern "C" {
+#include "io/atomic_file.h"
+#include "util/err.h"
+}
+#include "io/image_io.h"
+
+#include <unistd.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <atomic>
+#include <cerrno>
+#include <climits>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <string>
+#include <vector>
+
+namespace {
+
+// "dir/.stem.tmp-<pid>-<n>.ext" beside path, keeping the extension so a reader can tell the
+// format from the temporary file too.
+std::string temp_name_beside(const std::string &path)
+{
+    static std::atomic<unsigned> counter{0};
+    std::string::size_type slash = path.rfind('/');
+    std::string dir = slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+    std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+    std::string::size_type dot = base.rfind('.');
+    std::string stem = dot == std::string::npos || dot == 0 ? base : base.substr(0, dot);
+    std::string ext = dot == std::string::npos || dot == 0 ? std::string() : base.substr(dot);
+    return dir + "." + stem + ".tmp-" + std::to_string(static_cast<long>(getpid())) + "-" +
+           std::to_string(counter.fetch_add(1)) + ext;
+}
+
+// OpenImageIO scales integer samples into [0, 1] when it converts them to float. That suits
+// 8- and 16-bit photographs; 32-bit integer channels hold ids and counts, so they are read
+// again in their own type and stored by value.
+int read_integer_channel(OIIO::ImageInput *in, int c, image_f32 *img, err_buf *err)
+{
+    OIIO::TypeDesc type = in->spec().channelformat(c);
+    if (type != OIIO::TypeDesc::UINT32 && type != OIIO::TypeDesc::INT32) return 0;
+    const size_t n_px = static_cast<size_t>(img->width) * img->height;
+    std::vector<uint32_t> raw(n_px);
+    if (!in->read_image(0, 0, c, c + 1, type, raw.data())) {
+        std::string why = in->geterror();
+        return err_set(err, "cannot read the integer channel %d: %s", c, why.c_str());
+    }
+    for (size_t i = 0; i < n_px; i++) {
+        float v = type == OIIO::TypeDesc::UINT32 ? static_cast<float>(raw[i])
+                                                 : static_cast<float>(static_cast<int32_t>(raw[i]));
+        img->pixels[i * img->channels + static_cast<size_t>(c)] = v;
+    }
+    return 0;
+}
+
+int read_into(const char *path, image_f32 *img, err_buf *err)
+{
+    if (access(path, R_OK) != 0) // OpenImageIO would only say it could not open the file
+        return err_set(err, "%s: cannot read the image: %s", path, std::strerror(errno));
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(path, &config);
+    if (!in) {
+        std::string why = OIIO::geterror();
+        return err_set(err, "%s: cannot read the image: %s", path, why.c_str());
+    }
+    const OIIO::ImageSpec &spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth != 1)
+        return err_set(err, "%s: cannot read the image: it is %dx%dx%d with %d channels; a flat "
+                       "image with at least one pixel and one channel is needed",
+                       path, spec.width, spec.height, spec.depth, spec.nchannels);
+    const size_t count = static_cast<size_t>(spec.width) * static_cast<size_t>(spec.height) *
+                         static_cast<size_t>(spec.nchannels);
+    if (count > SIZE_MAX / sizeof(float) / 2)
+        return err_set(err, "%s: cannot read the image: %dx%d pixels with %d channels is too "
+                       "large", path, spec.width, spec.height, spec.nchannels);
+
+    img->width = static_cast<uint32_t>(spec.width);
+    img->height = static_cast<uint32_t>(spec.height);
+    img->pixels = static_cast<float *>(std::malloc(count * sizeof(float)));
+    img->channel_names = static_cast<char **>(std::calloc(spec.nchannels, sizeof(char *)));
+    if (!img->pixels || !img->channel_names)
+        return err_set(err, "%s: out of memory for %zu float samples", path, count);
+    img->channels = static_cast<uint32_t>(spec.nchannels);
+    for (int c = 0; c < spec.nchannels; c++) {
+        const std::string &name = c < static_cast<int>(spec.channelnames.size())
+                                      ? spec.channelnames[c]
+                                      : std::string();
+        img->channel_names[c] = strdup(name.c_str());
+        if (!img->channel_names[c])
+            return err_set(err, "%s: out of memory for the channel names", path);
+    }
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img->pixels)) {
+        std::string why = in->geterror();
+        return err_set(err, "%s: cannot read the pixels: %s", path, why.c_str());
+    }
+    for (int c = 0; c < spec.nchannels; c++)
+        if (read_integer_channel(in.get(), c, img, err)) return err_prefix(err, "%s: ", path);
+    in->close();
+    return 0;
+}
+
+int write_u8(const char *path, const std::string &tmp, uint32_t width, uint32_t height,
+             uint32_t channels, const uint8_t *pixels, err_buf *err)
+{
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) {
+        std::string why = OIIO::geterror();
+        return err_set(err, "%s: no image format can be chosen from this file name: %s", path,
+                       why.c_str());
+    }
+    OIIO::ImageSpec spec(static_cast<int>(width), static_cast<int>(height),
+                         static_cast<int>(channels), OIIO::TypeDesc::UINT8);
+    spec.attribute("oiio:UnassociatedAlpha", 1);
+    if (!out->open(tmp, spec)) {
+        std::string why = out->geterror();
+        return err_set(err, "%s: cannot create the image file: %s", path, why.c_str());
+    }
+    if (!out->write_image(OIIO::TypeDesc::UINT8, pixels)) {
+        std::string why = out->geterror();
+        out->close();
+        return err_set(err, "%s: cannot write the pixels: %s", path, why.c_str());
+    }
+    if (!out->close()) {
+        std::string why = out->geterror();
+        return err_set(err, "%s: cannot finish the image file: %s", path, why.c_str());
+    }
+    return 0;
+}
+
+} // namespace
+
+extern "C" int image_read(const char *path, image_f32 *out, err_buf *err)
+{
+    if (!path || !out) return err_set(err, "image_read needs a path and an output image");
+    image_f32 img{};
+    int status;
+    try {
+        status = read_into(path, &img, err);
+    } catch (const std::exception &e) {
+        status = err_set(err, "%s: cannot read the image: %s", path, e.what());
+    } catch (...) {
+        status = err_set(err, "%s: cannot read the image: unknown failure in OpenImageIO", path);
+    }
+    if (status) {
+        image_free(&img);
+        return -1;
+    }
+    *out = img;
+    return 0;
+}
+
+extern "C" void image_free(image_f32 *img)
+{
+    if (!img) return;
+    if (img->channel_names)
+        for (uint32_t c = 0; c < img->channels; c++) std::free(img->channel_names[c]);
+    std::free(img->channel_names);
+    std::free(img->pixels);
+    *img = image_f32{};
+}
+
+extern "C" int image_write_u8(const char *path, uint32_t width, uint32_t height,
+                              uint32_t channels, const uint8_t *pixels, err_buf *err)
+{
+    if (!path || !pixels) return err_set(err, "image_write_u8 needs a path and pixels");
+    if (width == 0 || height == 0 || width > INT_MAX || height > INT_MAX)
+        return err_set(err, "%s: cannot write a %ux%u image; width and height must be between "
+                       "1 and %d", path, width, height, INT_MAX);
+    if (channels < 1 || channels > 4)
+        return err_set(err, "%s: cannot write %u channels; 1 to 4 (grey, grey+alpha, RGB, RGBA) "
+                       "are supported", path, channels);
+    std::string tmp;
+    int status;
+    try {
+        tmp = temp_name_beside(path);
+        status = write_u8(path, tmp, width, height, channels, pixels, err);
+    } catch (const std::exception &e) {
+        status = err_set(err, "%s: cannot write the image: %s", path, e.what());
+    } catch (...) {
+        status = err_set(err, "%s: cannot write the image: unknown failure in OpenImageIO", path);
+    }
+    if (status) {
+        if (!tmp.empty()) std::remove(tmp.c_str());
+        return -1;
+    }
+    return atomic_commit(tmp.c_str(), path, err);
+}

@@ -1,0 +1,71 @@
+/* film.c — frame buffers, tone mapping and output. */
+#include "render/film.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "io/exr_write.h"
+#include "io/image_io.h"
+
+film *film_new(uint32_t w, uint32_t h, err_buf *err)
+{
+    size_t n = (size_t)w * h;
+    film *f = calloc(1, sizeof *f);
+    if (f) {
+        f->width = w, f->height = h;
+        f->rgb = calloc(n * 3, sizeof(float));
+        f->depth = calloc(n, sizeof(float));
+        f->normal = calloc(n * 3, sizeof(float));
+        f->albedo = calloc(n * 3, sizeof(float));
+        f->instance_id = calloc(n, sizeof(uint32_t));
+        f->species_id = calloc(n, sizeof(uint32_t));
+    }
+    if (!f || !f->rgb || !f->depth || !f->normal || !f->albedo || !f->instance_id || !f->species_id) {
+        film_free(f);
+        err_set(err, "out of memory for a %ux%u frame", w, h);
+        return NULL;
+    }
+    return f;
+}
+
+void film_free(film *f)
+{
+    if (!f) return;
+    free(f->rgb), free(f->depth), free(f->normal), free(f->albedo), free(f->instance_id), free(f->species_id);
+    free(f);
+}
+
+float film_tonemap_value(float x)
+{
+    if (!(x > 0.0f)) return 0.0f;
+    /* ACES filmic fit (Narkowicz 2015) */
+    float y = (x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f);
+    y = y < 0.0f ? 0.0f : y > 1.0f ? 1.0f : y;
+    return y <= 0.0031308f ? 12.92f * y : 1.055f * powf(y, 1.0f / 2.4f) - 0.055f;
+}
+
+uint8_t *film_tonemap(const film *f, double exposure_stops)
+{
+    size_t n = (size_t)f->width * f->height * 3;
+    uint8_t *out = malloc(n);
+    if (!out) return NULL;
+    float gain = (float)exp2(exposure_stops);
+    for (size_t i = 0; i < n; i++) out[i] = (uint8_t)lrintf(film_tonemap_value(f->rgb[i] * gain) * 255.0f);
+    return out;
+}
+
+int film_write_exr(const film *f, const char *path, err_buf *err)
+{
+    exr_frame fr = {.width = f->width, .height = f->height, .rgb = f->rgb, .depth = f->depth, .normal = f->normal,
+                    .albedo = f->albedo, .instance_id = f->instance_id, .species_id = f->species_id, .rgb_half = 0};
+    return exr_write(path, &fr, err);
+}
+
+int film_write_png(const film *f, const char *path, double exposure_stops, err_buf *err)
+{
+    uint8_t *px = film_tonemap(f, exposure_stops);
+    if (!px) return err_set(err, "out of memory tone-mapping the image");
+    int rc = image_write_u8(path, f->width, f->height, 3, px, err);
+    free(px);
+    return rc;
+}

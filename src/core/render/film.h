@@ -1,0 +1,35 @@
+/* film.h — the rendered frame: linear RGB and the auxiliary layers, tone mapping to 8-bit sRGB
+ * and writing EXR and PNG files.
+ *
+ * Tone mapping for PNG: multiply by 2^exposure, apply the ACES filmic curve as fitted by
+ * Narkowicz (2015), then encode with the sRGB transfer function. The EXR keeps linear values.
+ *
+ * Ownership: film_new allocates all layers; film_free releases them. */
+#ifndef SYLVA_FILM_H
+#define SYLVA_FILM_H
+
+#include <stdint.h>
+
+#include "util/err.h"
+
+typedef struct film {
+    uint32_t width, height;
+    float *rgb;            /* 3 per pixel */
+    float *depth;          /* 1 per pixel */
+    float *normal;         /* 3 per pixel */
+    float *albedo;         /* 3 per pixel */
+    uint32_t *instance_id; /* 1 per pixel */
+    uint32_t *species_id;  /* 1 per pixel */
+} film;
+
+film *film_new(uint32_t width, uint32_t height, err_buf *err);
+void film_free(film *f); /* accepts NULL */
+
+/* 8-bit sRGB RGB pixels (3 per pixel) after tone mapping; caller frees. */
+uint8_t *film_tonemap(const film *f, double exposure_stops);
+float film_tonemap_value(float linear); /* the curve plus sRGB encoding, for one channel */
+
+int film_write_exr(const film *f, const char *path, err_buf *err);
+int film_write_png(const film *f, const char *path, double exposure_stops, err_buf *err);
+
+#endif

@@ -1,0 +1,46 @@
+/* integrator.h — what one pixel sees.
+ *
+ * Path tracing: unidirectional paths from the camera; at each vertex next-event estimation of
+ * the sun and of the sky, each combined with BSDF sampling by multiple importance sampling
+ * (power heuristic); Russian roulette from the fourth vertex on; at most max_depth vertices.
+ *
+ * Verification mode: what POV-Ray computes from the same scene — at the first hit,
+ * albedo * (ambient + sun irradiance * max(0, n.l) * visibility), with the normal turned toward
+ * the viewer, hard shadows from a point-like sun, no indirect light; rays that miss show the
+ * sky's mean colour. Samples sit on a regular sub-pixel grid (no jitter).
+ *
+ * Auxiliary layers (depth, normal, albedo, ids) come from one ray through the pixel centre. */
+#ifndef SYLVA_INTEGRATOR_H
+#define SYLVA_INTEGRATOR_H
+
+#include "render/accel.h"
+#include "render/camera.h"
+#include "render/lights.h"
+
+/* Receives every ray the integrator casts (benchmarks replay them on bare Embree). */
+typedef struct ray_recorder {
+    void (*record)(void *user, vec3 org, vec3 dir, float tfar, int shadow);
+    void *user;
+} ray_recorder;
+
+typedef struct render_ctx {
+    const accel *accel;
+    const lights *lights;
+    camera camera;
+    uint32_t spp, max_depth;
+    uint64_t seed;
+    int verify;
+    const ray_recorder *recorder; /* NULL, or called for each ray (single-threaded renders only) */
+} render_ctx;
+
+typedef struct pixel_result {
+    vec3 rgb;
+    float depth;
+    vec3 normal;
+    vec3 albedo;
+    uint32_t instance_id, species_id;
+} pixel_result;
+
+void integrate_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_result *out);
+
+#endif

@@ -1,0 +1,107 @@
+/* render.c — the tile scheduler and worker threads. */
+#include "render/render.h"
+
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include "render/accel.h"
+#include "render/integrator.h"
+#include "util/progress.h"
+
+#define TILE 16
+
+typedef struct render_job {
+    const render_ctx *ctx;
+    film *film;
+    uint32_t tiles_x, tiles_y;
+    atomic_uint next_tile;
+    progress *prog;
+} render_job;
+
+unsigned render_default_threads(void)
+{
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    return n > 0 ? (unsigned)n : 1;
+}
+
+static void render_tile(render_job *job, uint32_t tile)
+{
+    film *f = job->film;
+    uint32_t tx = tile % job->tiles_x, ty = tile / job->tiles_x;
+    for (uint32_t y = ty * TILE; y < (ty + 1) * TILE && y < f->height; y++)
+        for (uint32_t x = tx * TILE; x < (tx + 1) * TILE && x < f->width; x++) {
+            pixel_result r;
+            integrate_pixel(job->ctx, x, y, &r);
+            size_t k = (size_t)y * f->width + x;
+            f->rgb[k * 3] = r.rgb.x, f->rgb[k * 3 + 1] = r.rgb.y, f->rgb[k * 3 + 2] = r.rgb.z;
+            f->depth[k] = r.depth;
+            f->normal[k * 3] = r.normal.x, f->normal[k * 3 + 1] = r.normal.y, f->normal[k * 3 + 2] = r.normal.z;
+            f->albedo[k * 3] = r.albedo.x, f->albedo[k * 3 + 1] = r.albedo.y, f->albedo[k * 3 + 2] = r.albedo.z;
+            f->instance_id[k] = r.instance_id;
+            f->species_id[k] = r.species_id;
+        }
+}
+
+static void *render_worker(void *arg)
+{
+    render_job *job = arg;
+    uint32_t n = job->tiles_x * job->tiles_y;
+    for (;;) {
+        uint32_t t = atomic_fetch_add(&job->next_tile, 1);
+        if (t >= n) break;
+        render_tile(job, t);
+        progress_advance(job->prog, 1);
+    }
+    return NULL;
+}
+
+film *render_scene(const scene *s, const render_options *opt, render_stats *stats, err_buf *err)
+{
+    render_options o = *opt;
+    uint32_t w = o.width ? o.width : s->image.width, h = o.height ? o.height : s->image.height;
+    unsigned threads = o.recorder ? 1 : o.threads ? o.threads : render_default_threads();
+    double t0 = progress_now();
+    accel acc;
+    if (accel_build(&acc, s, threads, err)) return NULL;
+    double t1 = progress_now();
+    lights lt;
+    if (lights_init(&lt, &s->sun, &s->sky, err)) {
+        accel_free(&acc);
+        return NULL;
+    }
+    film *f = film_new(w, h, err);
+    if (!f) {
+        lights_free(&lt);
+        accel_free(&acc);
+        return NULL;
+    }
+    render_ctx ctx = {.accel = &acc, .lights = &lt, .spp = o.spp ? o.spp : s->image.spp,
+                      .max_depth = s->image.max_depth, .seed = o.seed_set ? o.seed : s->image.seed, .verify = o.verify,
+                      .recorder = o.recorder};
+    camera_init(&ctx.camera, &s->camera, w, h);
+    render_job job = {.ctx = &ctx, .film = f, .tiles_x = (w + TILE - 1) / TILE, .tiles_y = (h + TILE - 1) / TILE};
+    atomic_init(&job.next_tile, 0);
+    progress prog;
+    progress_begin(&prog, o.verify ? "render (verify)" : "render", (uint64_t)job.tiles_x * job.tiles_y, o.quiet);
+    job.prog = &prog;
+    pthread_t *tids = calloc(threads, sizeof(pthread_t));
+    unsigned started = 0;
+    if (tids)
+        for (; started + 1 < threads; started++)
+            if (pthread_create(&tids[started], NULL, render_worker, &job)) break;
+    render_worker(&job);
+    for (unsigned i = 0; i < started; i++) pthread_join(tids[i], NULL);
+    free(tids);
+    progress_end(&prog);
+    double t2 = progress_now();
+    if (stats) {
+        stats->build_seconds = t1 - t0;
+        stats->render_seconds = t2 - t1;
+        stats->samples = (uint64_t)w * h * ctx.spp;
+    }
+    lights_free(&lt);
+    accel_free(&acc);
+    return f;
+}

@@ -1,0 +1,228 @@
+/* host.c — the host API table given to plugins. Every function checks its arguments: a plugin's
+ * mistake becomes an error sentence, never a crash in the host. */
+#include "scene/host.h"
+
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "util/rng.h"
+
+void host_init(sylva_host *h, scene *sc, const char *scene_dir, uint64_t seed, const char *context,
+               err_buf *err)
+{
+    memset(h, 0, sizeof *h);
+    h->scene = sc, h->scene_dir = scene_dir, h->seed = seed, h->context = context, h->err = err;
+}
+
+void host_release(sylva_host *h)
+{
+    if (h->progress_open) progress_end(&h->prog);
+    for (uint32_t i = 0; i < h->n_paths; i++) free(h->paths[i]);
+    free(h->paths);
+    free(h->plants);
+    h->paths = NULL, h->n_paths = 0, h->plants = NULL, h->n_plants = 0, h->progress_open = 0;
+}
+
+static void host_log(sylva_host *h, sylva_log_level level, const char *fmt, ...)
+{
+    if (level == SYLVA_LOG_DEBUG && !h->verbose) return;
+    va_list ap;
+    va_start(ap, fmt);
+    fprintf(stderr, "sylva: %s%s: ", level == SYLVA_LOG_WARN ? "warning: " : "", h->context);
+    vfprintf(stderr, fmt, ap);
+    fputc('\n', stderr);
+    va_end(ap);
+}
+
+static int host_error(sylva_host *h, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    err_vset(h->err, fmt, ap);
+    va_end(ap);
+    h->error_set = 1;
+    return SYLVA_ERR_PARAM;
+}
+
+static int host_param_error(sylva_host *h, const sylva_params *p, const char *param, const char *fmt, ...)
+{
+    char msg[ERR_MSG_MAX];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    const sylva_value *v = p && param ? sylva_param(p, param) : NULL;
+    uint32_t line = v && v->line ? v->line : (p ? p->line : 0);
+    uint32_t col = v && v->line ? v->column : (p ? p->column : 0);
+    const char *file = p && p->file ? p->file : "scene";
+    err_set(h->err, "%s:%u:%u: '%s': %s", file, line, col, param ? param : "?", msg);
+    h->error_set = 1;
+    return SYLVA_ERR_PARAM;
+}
+
+static void host_progress(sylva_host *h, const char *label, uint64_t done, uint64_t total)
+{
+    if (!h->progress_open) {
+        char l[64];
+        snprintf(l, sizeof l, "%s", label ? label : h->context);
+        progress_begin(&h->prog, l, total, h->quiet);
+        h->progress_open = 1;
+    }
+    progress_set(&h->prog, done, total);
+    if (total && done >= total) {
+        progress_end(&h->prog);
+        h->progress_open = 0;
+    }
+}
+
+static void host_rng_init(sylva_host *h, sylva_rng *r, const char *purpose, uint64_t index)
+{
+    rng_stream(r, h->seed, purpose ? purpose : "", index);
+}
+
+static uint64_t host_rng_u64(sylva_rng *r) { return rng_next_u64(r); }
+static double host_rng_uniform(sylva_rng *r) { return rng_next_double(r); }
+
+static int host_mesh_append(sylva_host *h, sylva_mesh *m, const float *pos, const float *nrm,
+                            const float *uv, uint32_t nv, const uint32_t *tri, const int32_t *mat,
+                            uint32_t nt)
+{
+    if (!m) return host_error(h, "mesh_append called without a mesh");
+    if (mat)
+        for (uint32_t t = 0; t < nt; t++)
+            if (mat[t] < -1 || mat[t] >= (int32_t)h->scene->n_materials)
+                return host_error(h, "triangle %u has material id %d; valid ids are -1 to %u", t,
+                                  mat[t], h->scene->n_materials - 1);
+    err_buf e;
+    if (mesh_append(m, pos, nrm, uv, nv, tri, mat, -1, nt, &e)) {
+        host_error(h, "%s", e.msg);
+        return strstr(e.msg, "limit") ? SYLVA_ERR_LIMIT : SYLVA_ERR_PARAM;
+    }
+    return SYLVA_OK;
+}
+
+static uint32_t host_mesh_triangle_count(const sylva_mesh *m) { return m ? m->nt : 0; }
+
+static int32_t host_texture_new(sylva_host *h, const char *name, uint32_t w, uint32_t hh,
+                                const uint8_t *rgba)
+{
+    if (!rgba) return host_error(h, "texture_new called without texels");
+    err_buf e;
+    int32_t id = scene_add_texture(h->scene, name ? name : "texture", w, hh, rgba, &e);
+    if (id < 0) host_error(h, "%s", e.msg);
+    return id < 0 ? SYLVA_ERR_PARAM : id;
+}
+
+static int32_t host_material_new(sylva_host *h, const sylva_material_desc *d)
+{
+    if (!d || d->size < sizeof(sylva_material_desc))
+        return host_error(h, "material_new: the descriptor is missing or its size is wrong");
+    if (d->bsdf != SYLVA_BSDF_LAMBERT && d->bsdf != SYLVA_BSDF_LEAF)
+        return host_error(h, "material '%s': unknown bsdf %d", d->name ? d->name : "?", (int)d->bsdf);
+    if (d->texture >= (int32_t)h->scene->n_textures)
+        return host_error(h, "material '%s': texture %d does not exist", d->name ? d->name : "?", d->texture);
+    for (int k = 0; k < 3; k++)
+        if (!(d->albedo[k] >= 0 && d->albedo[k] <= 1 && d->transmittance[k] >= 0 && d->transmittance[k] <= 1))
+            return host_error(h, "material '%s': albedo and transmittance must be in [0, 1]",
+                              d->name ? d->name : "?");
+    err_buf e;
+    int32_t id = scene_add_material(h->scene, d, &e);
+    if (id < 0) host_error(h, "%s", e.msg);
+    return id < 0 ? SYLVA_ERR_NOMEM : id;
+}
+
+static sylva_heightfield *host_heightfield_new(sylva_host *h, uint32_t nx, uint32_t ny, int with_material)
+{
+    if (nx < 2 || ny < 2 || nx > 65536 || ny > 65536 || (uint64_t)nx * ny > (1ull << 28)) {
+        host_error(h, "heightfield of %u x %u nodes: each side must be 2 to 65536 and the total at "
+                   "most 2^28 nodes", nx, ny);
+        return NULL;
+    }
+    sylva_heightfield *hf = calloc(1, sizeof *hf);
+    float *z = calloc((size_t)nx * ny, sizeof(float));
+    int32_t *mat = with_material ? malloc((size_t)nx * ny * sizeof(int32_t)) : NULL;
+    if (!hf || !z || (with_material && !mat)) {
+        free(hf), free(z), free(mat);
+        host_error(h, "out of memory for a %u x %u heightfield", nx, ny);
+        return NULL;
+    }
+    for (size_t i = 0; mat && i < (size_t)nx * ny; i++) mat[i] = -1;
+    *hf = (sylva_heightfield){.size = sizeof *hf, .nx = nx, .ny = ny, .dx = 1, .dy = 1, .z = z,
+                              .material = mat, .water_material = -1};
+    /* The scene takes it now, so a failing plugin leaks nothing. */
+    if (h->scene->terrain) {
+        free(h->scene->terrain->z), free(h->scene->terrain->material), free(h->scene->terrain);
+    }
+    h->scene->terrain = hf;
+    return hf;
+}
+
+static int host_terrain_height(sylva_host *h, double x, double y, double *z)
+{
+    return scene_terrain_height(h->scene, x, y, z) ? SYLVA_ERR_PARAM : SYLVA_OK;
+}
+
+static int host_terrain_normal(sylva_host *h, double x, double y, double n[3])
+{
+    return scene_terrain_normal(h->scene, x, y, n) ? SYLVA_ERR_PARAM : SYLVA_OK;
+}
+
+static int host_plant_add(sylva_host *h, const sylva_plant *p)
+{
+    if (!p || p->size < sizeof(sylva_plant)) return host_error(h, "plant_add: the plant's size is wrong");
+    if (p->species >= h->n_species)
+        return host_error(h, "plant_add: species %u does not exist (%u species)", p->species, h->n_species);
+    if (!(p->age > 0 && p->age <= 1))
+        return host_error(h, "plant_add: age %g is outside (0, 1]", p->age);
+    if (h->n_plants >= 100000000u) return host_error(h, "more than 100000000 plants (the scene limit)");
+    if (h->n_plants == h->cap_plants) {
+        uint32_t cap = h->cap_plants ? h->cap_plants * 2 : 1024;
+        sylva_plant *q = realloc(h->plants, (size_t)cap * sizeof *q);
+        if (!q) return host_error(h, "out of memory adding plant %u", h->n_plants);
+        h->plants = q, h->cap_plants = cap;
+    }
+    h->plants[h->n_plants++] = *p;
+    return SYLVA_OK;
+}
+
+static const char *host_resolve_path(sylva_host *h, const char *rel)
+{
+    if (!rel) return NULL;
+    size_t n = strlen(h->scene_dir) + strlen(rel) + 2;
+    char *s = malloc(n), **list = realloc(h->paths, (h->n_paths + 1) * sizeof(char *));
+    if (list) h->paths = list;
+    if (!s || !list) {
+        free(s);
+        return NULL;
+    }
+    if (rel[0] == '/') snprintf(s, n, "%s", rel);
+    else snprintf(s, n, "%s/%s", h->scene_dir, rel);
+    h->paths[h->n_paths++] = s;
+    return s;
+}
+
+static const sylva_host_api api_table = {
+    .size = sizeof(sylva_host_api),
+    .abi_major = SYLVA_ABI_MAJOR,
+    .abi_minor = SYLVA_ABI_MINOR,
+    .log = host_log,
+    .error = host_error,
+    .param_error = host_param_error,
+    .progress = host_progress,
+    .rng_init = host_rng_init,
+    .rng_u64 = host_rng_u64,
+    .rng_uniform = host_rng_uniform,
+    .mesh_append = host_mesh_append,
+    .mesh_triangle_count = host_mesh_triangle_count,
+    .texture_new = host_texture_new,
+    .material_new = host_material_new,
+    .heightfield_new = host_heightfield_new,
+    .terrain_height = host_terrain_height,
+    .terrain_normal = host_terrain_normal,
+    .plant_add = host_plant_add,
+    .resolve_path = host_resolve_path,
+};
+
+const sylva_host_api *host_api_table(void) { return &api_table; }

@@ -1,0 +1,285 @@
+/* host_schema.c — the tables behind every host section of a scene file.
+ *
+ * Conventions: lengths in metres, angles in degrees, colours as linear RGB. Optional keys whose
+ * absence matters (camera look_at, sun direction, ...) carry a default that the loader ignores
+ * unless the key is set; their help says so.
+ */
+#include "scene/host_schema.h"
+
+#include <stddef.h>
+#include <string.h>
+
+#define COUNT(a) ((uint32_t)(sizeof(a) / sizeof((a)[0])))
+#define MIN SYLVA_PARAM_HAS_MIN
+#define MAX SYLVA_PARAM_HAS_MAX
+#define MIN_X (SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_MIN_EXCLUSIVE)
+#define MAX_X (SYLVA_PARAM_HAS_MAX | SYLVA_PARAM_MAX_EXCLUSIVE)
+#define REQ SYLVA_PARAM_REQUIRED
+
+const char *const host_sections[] = {"image",   "camera",  "sun",     "sky",     "materials",
+                                     "terrain", "species", "plants",  "ecology", "objects", NULL};
+
+const char *const host_reserved_keys[] = {"plugin", "material", "variants", "shape",   "grid",
+                                          "origin", "spacing",  "include",  NULL};
+
+const char *const host_shape_names[] = {"mesh", "box", "sphere", "quad", "disk", NULL};
+const char *const host_sky_models[] = {"none", "constant", "preetham", NULL};
+const char *const host_material_types[] = {"lambert", "leaf", NULL};
+
+static const double zero3[3] = {0, 0, 0}, one3[3] = {1, 1, 1}, half3[3] = {0.5, 0.5, 0.5};
+static const double north[3] = {0, 1, 0}, z_up[3] = {0, 0, 1};
+static const double ambient_default[3] = {0.2, 0.2, 0.2};
+static const double sky_blue[3] = {0.5, 0.7, 1.0};
+static const double zero2[2] = {0, 0}, one2[2] = {1, 1};
+
+/* --- image ---------------------------------------------------------------------------------- */
+static const sylva_param_spec image_params[] = {
+    {.name = "width", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 640, .min = 1,
+     .max = HOST_IMAGE_MAX_SIZE, .unit = "px", .help = "Image width in pixels."},
+    {.name = "height", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 360, .min = 1,
+     .max = HOST_IMAGE_MAX_SIZE, .unit = "px", .help = "Image height in pixels."},
+    {.name = "spp", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 16, .min = 1, .max = 1048576,
+     .unit = "samples", .help = "Samples per pixel; noise falls as one over its square root."},
+    {.name = "seed", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 0, .min = 0,
+     .max = 9007199254740992.0,
+     .help = "Scene seed: every random stream (pixels, plants, plugins) is derived from it."},
+    {.name = "max_depth", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 6, .min = 1, .max = 1024,
+     .unit = "bounces",
+     .help = "Longest light path in surface interactions after the camera; 1 is direct light only."},
+    {.name = "exposure", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = -20, .max = 20,
+     .unit = "stops", .help = "Exposure change applied before tone mapping to PNG (not to EXR)."},
+};
+const host_schema host_schema_image = {"image", "Output size, sampling and the scene seed.",
+                                       image_params, COUNT(image_params)};
+
+/* --- camera --------------------------------------------------------------------------------- */
+static const sylva_param_spec camera_params[] = {
+    {.name = "position", .type = SYLVA_P_VEC3, .flags = REQ, .unit = "m",
+     .help = "Position of the camera's eye point."},
+    {.name = "look_at", .type = SYLVA_P_VEC3, .unit = "m",
+     .help = "A point the camera looks at (give look_at or direction, not both)."},
+    {.name = "direction", .type = SYLVA_P_VEC3, .def_list = north, .def_len = 3,
+     .help = "Viewing direction, any length but not zero (used when look_at is absent)."},
+    {.name = "up", .type = SYLVA_P_VEC3, .def_list = z_up, .def_len = 3,
+     .help = "Up direction of the image; must not be parallel to the viewing direction."},
+    {.name = "fov", .type = SYLVA_P_REAL, .flags = MIN_X | MAX_X, .def = 60, .min = 0, .max = 180,
+     .unit = "deg", .help = "Horizontal field of view (give fov or focal_length, not both)."},
+    {.name = "focal_length", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 35, .min = 0,
+     .max = 100000, .unit = "mm",
+     .help = "Lens focal length; when given, the field of view follows from it and sensor_width."},
+    {.name = "sensor_width", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 36, .min = 0,
+     .max = 1000, .unit = "mm", .help = "Sensor width, used with focal_length (36 is full frame)."},
+};
+const host_schema host_schema_camera = {
+    "camera", "A pinhole camera: where it stands, where it looks and how wide it sees.",
+    camera_params, COUNT(camera_params)};
+
+/* --- sun ------------------------------------------------------------------------------------ */
+static const sylva_param_spec sun_params[] = {
+    {.name = "enabled", .type = SYLVA_P_BOOL, .def = 1,
+     .help = "Whether the sun lights the scene (the sky still uses its position)."},
+    {.name = "azimuth", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 180, .min = -360,
+     .max = 360, .unit = "deg", .help = "Compass direction of the sun, clockwise from north (+Y); 90 is east."},
+    {.name = "elevation", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 45, .min = -90,
+     .max = 90, .unit = "deg", .help = "Angle of the sun above the horizon."},
+    {.name = "direction", .type = SYLVA_P_VEC3,
+     .help = "Direction from the ground toward the sun, instead of azimuth and elevation."},
+    {.name = "irradiance", .type = SYLVA_P_REAL, .flags = MIN, .def = 1, .min = 0,
+     .help = "Irradiance on a surface facing the sun, in sylva's unit (1 is about 100 klx)."},
+    {.name = "color", .type = SYLVA_P_VEC3, .flags = MIN, .min = 0, .def_list = one3, .def_len = 3,
+     .help = "Linear RGB tint multiplied with the irradiance."},
+    {.name = "angular_diameter", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0.53, .min = 0,
+     .max = 20, .unit = "deg", .help = "Apparent diameter of the sun's disc; sets shadow softness."},
+};
+const host_schema host_schema_sun = {"sun", "The sun: a directional light with an angular size.",
+                                     sun_params, COUNT(sun_params)};
+
+/* --- sky ------------------------------------------------------------------------------------ */
+static const sylva_param_spec sky_params[] = {
+    {.name = "model", .type = SYLVA_P_ENUM, .def_str = "preetham", .choices = host_sky_models,
+     .help = "Sky radiance: preetham (analytic daylight), constant (one colour) or none (black)."},
+    {.name = "turbidity", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 3, .min = 1.7,
+     .max = 10, .help = "Haze of the preetham sky: 2 is very clear, 10 is hazy."},
+    {.name = "scale", .type = SYLVA_P_REAL, .flags = MIN, .def = 1, .min = 0,
+     .help = "Factor on the sky's radiance."},
+    {.name = "color", .type = SYLVA_P_VEC3, .flags = MIN, .min = 0, .def_list = sky_blue,
+     .def_len = 3, .help = "Linear RGB radiance of the constant sky (model: constant only)."},
+    {.name = "ground_albedo", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0.2, .min = 0,
+     .max = 1, .help = "Reflectance of the ground seen below the horizon."},
+    {.name = "ambient", .type = SYLVA_P_VEC3, .flags = MIN, .min = 0, .def_list = ambient_default,
+     .def_len = 3,
+     .help = "Constant ambient light of the verification mode and the POV-Ray export."},
+};
+const host_schema host_schema_sky = {"sky", "The sky dome that lights the scene from every side.",
+                                     sky_params, COUNT(sky_params)};
+
+/* --- materials ------------------------------------------------------------------------------ */
+static const sylva_param_spec material_params[] = {
+    {.name = "type", .type = SYLVA_P_ENUM, .def_str = "lambert", .choices = host_material_types,
+     .help = "lambert: opaque diffuse; leaf: two-sided, reflects and transmits diffusely."},
+    {.name = "albedo", .type = SYLVA_P_VEC3, .flags = MIN | MAX, .min = 0, .max = 1,
+     .def_list = half3, .def_len = 3,
+     .help = "Linear RGB diffuse reflectance, multiplied by the texture when there is one."},
+    {.name = "transmittance", .type = SYLVA_P_VEC3, .flags = MIN | MAX, .min = 0, .max = 1,
+     .def_list = zero3, .def_len = 3,
+     .help = "Linear RGB diffuse transmittance (type: leaf only); albedo plus it is at most 1."},
+    {.name = "texture", .type = SYLVA_P_PATH,
+     .help = "Image file (PNG, JPEG, EXR, ...) whose colour multiplies the albedo."},
+    {.name = "alpha_mask", .type = SYLVA_P_BOOL, .def = 0,
+     .help = "Cut the surface away where the texture's alpha is below 0.5 (needs a texture)."},
+};
+const host_schema host_schema_material = {"materials entry",
+                                          "A named surface that terrain, shapes and objects use.",
+                                          material_params, COUNT(material_params)};
+
+/* --- terrain -------------------------------------------------------------------------------- */
+static const sylva_param_spec terrain_params[] = {
+    {.name = "plugin", .type = SYLVA_P_STRING,
+     .help = "Terrain plugin that builds the heightfield; its parameters sit beside this key."},
+    {.name = "material", .type = SYLVA_P_STRING,
+     .help = "Material of the ground (a name from materials:); the default is a grey lambert."},
+    {.name = "grid", .type = SYLVA_P_GRID, .unit = "m",
+     .help = "Inline heights, rows from south to north, columns from west to east (>= 2 x 2)."},
+    {.name = "origin", .type = SYLVA_P_LIST, .min_len = 2, .max_len = 2, .def_list = zero2,
+     .def_len = 2, .unit = "m", .help = "x and y of the grid's first node (row 0, column 0)."},
+    {.name = "spacing", .type = SYLVA_P_LIST, .flags = MIN_X, .min = 0, .min_len = 2,
+     .max_len = 2, .def_list = one2, .def_len = 2, .unit = "m",
+     .help = "Distance between grid nodes along x and along y."},
+};
+const host_schema host_schema_terrain = {
+    "terrain", "The ground: an inline height grid or a terrain plugin's block.", terrain_params,
+    COUNT(terrain_params)};
+
+/* --- species -------------------------------------------------------------------------------- */
+static const sylva_param_spec species_params[] = {
+    {.name = "plugin", .type = SYLVA_P_STRING,
+     .help = "Tree plugin that builds the model; its parameters sit beside this key."},
+    {.name = "variants", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 4, .min = 1, .max = 64,
+     .help = "Number of age variants of the model to build (plugin species)."},
+    {.name = "shape", .type = SYLVA_P_ENUM, .def_str = "box", .choices = host_shape_names,
+     .help = "A built-in prototype instead of a plugin (a species gives plugin or shape)."},
+    {.name = "material", .type = SYLVA_P_STRING,
+     .help = "Material of a built-in shape (a name from materials:)."},
+};
+const host_schema host_schema_species = {
+    "species entry", "One kind of plant: a tree plugin's block or a built-in shape.",
+    species_params, COUNT(species_params)};
+
+/* --- plants --------------------------------------------------------------------------------- */
+static const sylva_param_spec plant_params[] = {
+    {.name = "species", .type = SYLVA_P_STRING, .flags = REQ,
+     .help = "Name of a species defined under species:."},
+    {.name = "position", .type = SYLVA_P_LIST, .flags = REQ, .min_len = 2, .max_len = 3,
+     .unit = "m", .help = "[x, y, z], or [x, y] to stand on the terrain."},
+    {.name = "rotation", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = -360,
+     .max = 360, .unit = "deg", .help = "Turn about the vertical axis, counter-clockwise seen from above."},
+    {.name = "scale", .type = SYLVA_P_REAL, .flags = MIN_X, .def = 1, .min = 0,
+     .help = "Uniform size factor on the species' model."},
+    {.name = "age", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 1, .min = 0, .max = 1,
+     .help = "Normalised age; picks the nearest age variant (1 is full grown)."},
+};
+const host_schema host_schema_plant = {"plants item", "One plant placed by hand.", plant_params,
+                                       COUNT(plant_params)};
+
+/* --- objects -------------------------------------------------------------------------------- */
+static const sylva_param_spec object_params[] = {
+    {.name = "name", .type = SYLVA_P_STRING,
+     .help = "Label used in messages and in the object-id layer (default: object<index>)."},
+    {.name = "shape", .type = SYLVA_P_ENUM, .flags = REQ, .choices = host_shape_names,
+     .help = "Built-in shape: mesh, box, sphere, quad or disk; its keys sit beside this one."},
+    {.name = "position", .type = SYLVA_P_VEC3, .def_list = zero3, .def_len = 3, .unit = "m",
+     .help = "Where the shape's origin goes."},
+    {.name = "rotation", .type = SYLVA_P_VEC3, .def_list = zero3, .def_len = 3, .unit = "deg",
+     .help = "Rotations about X, then Y, then Z."},
+    {.name = "scale", .type = SYLVA_P_VEC3, .flags = MIN_X, .min = 0, .def_list = one3,
+     .def_len = 3, .help = "Size factors along X, Y and Z, applied before the rotation."},
+    {.name = "material", .type = SYLVA_P_STRING,
+     .help = "Material (a name from materials:); the default is a grey lambert."},
+};
+const host_schema host_schema_object = {"objects item", "A man-made object built from a shape.",
+                                        object_params, COUNT(object_params)};
+
+/* --- ecology -------------------------------------------------------------------------------- */
+static const sylva_param_spec ecology_params[] = {
+    {.name = "plugin", .type = SYLVA_P_STRING, .flags = REQ,
+     .help = "Ecology plugin that places the species; its parameters sit beside this key."},
+};
+const host_schema host_schema_ecology = {
+    "ecology", "The plant population: an ecology plugin's block.", ecology_params,
+    COUNT(ecology_params)};
+
+/* --- built-in shapes ------------------------------------------------------------------------ */
+static const sylva_param_spec box_params[] = {
+    {.name = "size", .type = SYLVA_P_VEC3, .flags = MIN_X, .min = 0, .def_list = one3,
+     .def_len = 3, .unit = "m", .help = "Edge lengths along X, Y and Z; the box is centred on its origin."},
+};
+static const sylva_param_spec sphere_params[] = {
+    {.name = "radius", .type = SYLVA_P_REAL, .flags = MIN_X, .def = 0.5, .min = 0, .unit = "m",
+     .help = "Radius; the sphere is centred on its origin."},
+    {.name = "subdivisions", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 3, .min = 0, .max = 7,
+     .help = "Icosphere refinement: 20 * 4^subdivisions triangles."},
+};
+static const sylva_param_spec quad_params[] = {
+    {.name = "size", .type = SYLVA_P_LIST, .flags = MIN_X, .min = 0, .min_len = 2, .max_len = 2,
+     .def_list = one2, .def_len = 2, .unit = "m",
+     .help = "Width along X and height along Y of a square in the XY plane facing +Z."},
+};
+static const sylva_param_spec disk_params[] = {
+    {.name = "radius", .type = SYLVA_P_REAL, .flags = MIN_X, .def = 0.5, .min = 0, .unit = "m",
+     .help = "Radius of a disc in the XY plane facing +Z."},
+    {.name = "segments", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 32, .min = 3,
+     .max = 4096, .help = "Triangles around the rim."},
+};
+static const sylva_param_spec mesh_params[] = {
+    {.name = "vertices", .type = SYLVA_P_GRID, .flags = REQ, .unit = "m",
+     .help = "Vertex positions [[x, y, z], ...]."},
+    {.name = "triangles", .type = SYLVA_P_GRID, .flags = REQ | MIN, .min = 0,
+     .help = "Triangles as vertex indices from 0 [[i, j, k], ...], counter-clockwise seen from the front."},
+    {.name = "uvs", .type = SYLVA_P_GRID,
+     .help = "Texture coordinates [[u, v], ...], one per vertex."},
+};
+const host_schema host_schema_shape_box = {"shape box", "A box.", box_params, COUNT(box_params)};
+const host_schema host_schema_shape_sphere = {"shape sphere", "An icosphere.", sphere_params,
+                                              COUNT(sphere_params)};
+const host_schema host_schema_shape_quad = {"shape quad", "A rectangle.", quad_params,
+                                            COUNT(quad_params)};
+const host_schema host_schema_shape_disk = {"shape disk", "A flat disc.", disk_params,
+                                            COUNT(disk_params)};
+const host_schema host_schema_shape_mesh = {"shape mesh", "An inline triangle mesh.",
+                                            mesh_params, COUNT(mesh_params)};
+
+const host_schema *host_schema_shape(shape_kind kind)
+{
+    switch (kind) {
+    case SHAPE_BOX: return &host_schema_shape_box;
+    case SHAPE_SPHERE: return &host_schema_shape_sphere;
+    case SHAPE_QUAD: return &host_schema_shape_quad;
+    case SHAPE_DISK: return &host_schema_shape_disk;
+    case SHAPE_MESH: return &host_schema_shape_mesh;
+    }
+    return NULL;
+}
+
+const host_schema *host_schema_at(uint32_t i)
+{
+    static const host_schema *const all[] = {
+        &host_schema_image,        &host_schema_camera,       &host_schema_sun,
+        &host_schema_sky,          &host_schema_material,     &host_schema_terrain,
+        &host_schema_species,      &host_schema_plant,        &host_schema_ecology,
+        &host_schema_object,       &host_schema_shape_box,    &host_schema_shape_sphere,
+        &host_schema_shape_quad,   &host_schema_shape_disk,   &host_schema_shape_mesh};
+    return i < COUNT(all) ? all[i] : NULL;
+}
+
+const char *host_reserved_key_clash(const sylva_param_spec *params, uint32_t n,
+                                    const char *species_section)
+{
+    for (uint32_t i = 0; i < n; i++) {
+        const char *name = params[i].name;
+        if (!name) continue;
+        if (species_section && !strcmp(name, species_section)) return name;
+        for (const char *const *r = host_reserved_keys; *r; r++)
+            if (!strcmp(name, *r)) return name;
+    }
+    return NULL;
+}

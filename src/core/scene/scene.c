@@ -1,0 +1,188 @@
+/* scene.c — the scene graph's storage: growable arrays of materials, textures, prototypes,
+ * instances and objects, and terrain queries. */
+#include "scene/scene.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Grows *arr (element size sz) to hold at least need elements. */
+static int grow(void **arr, uint32_t *cap, uint32_t need, size_t sz)
+{
+    if (need <= *cap) return 0;
+    uint32_t c = *cap ? *cap : 16;
+    while (c < need) {
+        if (c > UINT32_MAX / 2) return -1;
+        c *= 2;
+    }
+    void *p = realloc(*arr, (size_t)c * sz);
+    if (!p) return -1;
+    *arr = p;
+    *cap = c;
+    return 0;
+}
+
+scene *scene_new(void)
+{
+    scene *s = calloc(1, sizeof *s);
+    if (!s) return NULL;
+    sylva_material_desc grey = {.size = sizeof grey, .name = "default", .bsdf = SYLVA_BSDF_LAMBERT,
+                                .albedo = {0.5f, 0.5f, 0.5f}, .texture = -1};
+    s->default_material = scene_add_material(s, &grey, NULL);
+    if (s->default_material < 0) {
+        scene_free(s);
+        return NULL;
+    }
+    s->terrain_material = s->default_material;
+    s->water_material = s->default_material;
+    return s;
+}
+
+void scene_free(scene *s)
+{
+    if (!s) return;
+    if (s->terrain) {
+        free(s->terrain->z);
+        free(s->terrain->material);
+        free(s->terrain);
+    }
+    for (uint32_t i = 0; i < s->n_materials; i++) free(s->materials[i].name);
+    for (uint32_t i = 0; i < s->n_textures; i++) free(s->textures[i].name), free(s->textures[i].rgba);
+    for (uint32_t i = 0; i < s->n_species; i++) free(s->species[i].name);
+    for (uint32_t i = 0; i < s->n_prototypes; i++) mesh_free(s->prototypes[i].mesh);
+    for (uint32_t i = 0; i < s->n_objects; i++) free(s->objects[i].name), mesh_free(s->objects[i].mesh);
+    free(s->materials);
+    free(s->textures);
+    free(s->species);
+    free(s->prototypes);
+    free(s->instances);
+    free(s->objects);
+    free(s);
+}
+
+int32_t scene_add_material(scene *s, const sylva_material_desc *d, err_buf *err)
+{
+    if (grow((void **)&s->materials, &s->cap_materials, s->n_materials + 1, sizeof(material)))
+        return err_set(err, "out of memory adding a material");
+    char *name = strdup(d->name ? d->name : "unnamed");
+    if (!name) return err_set(err, "out of memory adding a material");
+    material *m = &s->materials[s->n_materials];
+    *m = (material){.name = name, .bsdf = d->bsdf == SYLVA_BSDF_LEAF ? SYLVA_BSDF_LEAF : SYLVA_BSDF_LAMBERT,
+                    .albedo = v3(d->albedo[0], d->albedo[1], d->albedo[2]),
+                    .transmittance = v3(d->transmittance[0], d->transmittance[1], d->transmittance[2]),
+                    .texture = d->texture, .alpha_mask = d->alpha_mask};
+    if (m->texture < 0 || (uint32_t)m->texture >= s->n_textures) m->texture = -1, m->alpha_mask = 0;
+    return (int32_t)s->n_materials++;
+}
+
+int32_t scene_add_texture(scene *s, const char *name, uint32_t w, uint32_t h, const uint8_t *rgba,
+                          err_buf *err)
+{
+    if (!w || !h || w > 16384 || h > 16384)
+        return err_set(err, "texture '%s' is %ux%u; sizes from 1 to 16384 are valid", name, w, h);
+    if (grow((void **)&s->textures, &s->cap_textures, s->n_textures + 1, sizeof(texture)))
+        return err_set(err, "out of memory adding texture '%s'", name);
+    size_t n = (size_t)w * h * 4;
+    uint8_t *copy = malloc(n);
+    char *nm = strdup(name ? name : "texture");
+    if (!copy || !nm) {
+        free(copy), free(nm);
+        return err_set(err, "out of memory adding texture '%s'", name);
+    }
+    memcpy(copy, rgba, n);
+    int alpha = 0;
+    for (size_t i = 3; i < n; i += 4) alpha |= copy[i] < 255;
+    s->textures[s->n_textures] = (texture){.name = nm, .width = w, .height = h, .rgba = copy, .has_alpha = alpha};
+    return (int32_t)s->n_textures++;
+}
+
+int32_t scene_add_prototype(scene *s, uint32_t sp, uint32_t variant, double age, double height,
+                            mesh *m, err_buf *err)
+{
+    if (grow((void **)&s->prototypes, &s->cap_prototypes, s->n_prototypes + 1, sizeof(prototype))) {
+        mesh_free(m);
+        return err_set(err, "out of memory adding a prototype");
+    }
+    s->prototypes[s->n_prototypes] =
+        (prototype){.species = sp, .variant = variant, .age = age, .height = height, .mesh = m};
+    return (int32_t)s->n_prototypes++;
+}
+
+int32_t scene_add_instance(scene *s, uint32_t proto, const xform3x4 *xf, err_buf *err)
+{
+    if (s->n_instances >= 100000000u)
+        return err_set(err, "more than 100000000 instances (the scene limit)");
+    if (grow((void **)&s->instances, &s->cap_instances, s->n_instances + 1, sizeof(instance)))
+        return err_set(err, "out of memory adding instance %u", s->n_instances);
+    s->instances[s->n_instances] = (instance){.prototype = proto, .xf = *xf};
+    return (int32_t)s->n_instances++;
+}
+
+int32_t scene_add_object(scene *s, const char *name, mesh *m, err_buf *err)
+{
+    char *nm = strdup(name ? name : "object");
+    if (!nm || grow((void **)&s->objects, &s->cap_objects, s->n_objects + 1, sizeof(object))) {
+        free(nm);
+        mesh_free(m);
+        return err_set(err, "out of memory adding object '%s'", name ? name : "object");
+    }
+    s->objects[s->n_objects] = (object){.name = nm, .mesh = m};
+    return (int32_t)s->n_objects++;
+}
+
+int32_t scene_find_material(const scene *s, const char *name)
+{
+    for (uint32_t i = 0; i < s->n_materials; i++)
+        if (!strcmp(s->materials[i].name, name)) return (int32_t)i;
+    return -1;
+}
+
+uint32_t scene_variant_for_age(const scene *s, uint32_t sp, double t)
+{
+    const species *p = &s->species[sp];
+    uint32_t best = p->n_variants - 1;
+    for (uint32_t v = 0; v < p->n_variants; v++)
+        if (s->prototypes[p->first_prototype + v].age >= t - 1e-9) {
+            best = v;
+            break;
+        }
+    return best;
+}
+
+/* Cell (i, j) and fractions (fx, fy) of (x, y); -1 outside. */
+static int terrain_cell(const sylva_heightfield *h, double x, double y, uint32_t *i, uint32_t *j,
+                        double *fx, double *fy)
+{
+    double gx = (x - h->x0) / h->dx, gy = (y - h->y0) / h->dy;
+    if (!(gx >= 0.0 && gy >= 0.0 && gx <= h->nx - 1 && gy <= h->ny - 1)) return -1;
+    uint32_t ci = (uint32_t)gx, cj = (uint32_t)gy;
+    if (ci >= h->nx - 1) ci = h->nx - 2;
+    if (cj >= h->ny - 1) cj = h->ny - 2;
+    *i = ci, *j = cj, *fx = gx - ci, *fy = gy - cj;
+    return 0;
+}
+
+int scene_terrain_height(const scene *s, double x, double y, double *z)
+{
+    const sylva_heightfield *h = s->terrain;
+    uint32_t i, j;
+    double fx, fy;
+    if (!h || terrain_cell(h, x, y, &i, &j, &fx, &fy)) return -1;
+    const float *r0 = h->z + (size_t)j * h->nx, *r1 = r0 + h->nx;
+    *z = (1 - fy) * ((1 - fx) * r0[i] + fx * r0[i + 1]) + fy * ((1 - fx) * r1[i] + fx * r1[i + 1]);
+    return 0;
+}
+
+int scene_terrain_normal(const scene *s, double x, double y, double n[3])
+{
+    const sylva_heightfield *h = s->terrain;
+    uint32_t i, j;
+    double fx, fy;
+    if (!h || terrain_cell(h, x, y, &i, &j, &fx, &fy)) return -1;
+    const float *r0 = h->z + (size_t)j * h->nx, *r1 = r0 + h->nx;
+    double dzdx = ((1 - fy) * (r0[i + 1] - r0[i]) + fy * (r1[i + 1] - r1[i])) / h->dx;
+    double dzdy = ((1 - fx) * (r1[i] - r0[i]) + fx * (r1[i + 1] - r0[i + 1])) / h->dy;
+    double l = sqrt(dzdx * dzdx + dzdy * dzdy + 1.0);
+    n[0] = -dzdx / l, n[1] = -dzdy / l, n[2] = 1.0 / l;
+    return 0;
+}

@@ -1,0 +1,162 @@
+/* scene_file.h — a scene file, read and validated, before any plugin runs.
+ *
+ * scene_file_load() parses the YAML (libyaml), checks every key against the host's section
+ * schemas (host_schema.h) and every plugin block against that plugin's schema (looked up in the
+ * plugin registry by name), fills defaults, resolves relative paths against the scene file's
+ * folder and merges included species files. Any problem stops loading with
+ * "file:line:column: message" in err.
+ *
+ * Ownership: a scene_file owns everything reachable from it (one arena); scene_file_free()
+ * releases it all. The sylva_params it holds point into that arena and stay valid until then.
+ */
+#ifndef SYLVA_SCENE_FILE_H
+#define SYLVA_SCENE_FILE_H
+
+#include <stdint.h>
+
+#include "sylva/plugin.h"
+#include "util/err.h"
+
+struct plugin_registry;
+
+typedef struct image_settings {
+    uint32_t width, height; /* pixels */
+    uint32_t spp;           /* samples per pixel */
+    uint64_t seed;
+    uint32_t max_depth;     /* path vertices after the camera */
+    double exposure;        /* stops applied before tone mapping (PNG only) */
+} image_settings;
+
+typedef struct camera_settings {
+    double position[3];
+    int has_look_at;        /* 1: look_at given; 0: direction given (or default) */
+    double look_at[3];
+    double direction[3];    /* unit after loading */
+    double up[3];
+    double fov_deg;         /* horizontal field of view; derived from focal length when given */
+    double focal_length_mm; /* 0 when fov was given */
+    double sensor_width_mm;
+} camera_settings;
+
+typedef struct sun_settings {
+    int enabled;
+    double direction[3];    /* unit, from the ground toward the sun */
+    double azimuth_deg;     /* clockwise from north (+Y) */
+    double elevation_deg;
+    double irradiance;      /* on a surface facing the sun */
+    double color[3];        /* linear RGB tint, multiplied with irradiance */
+    double angular_diameter_deg;
+} sun_settings;
+
+typedef enum sky_model { SKY_NONE = 0, SKY_CONSTANT = 1, SKY_PREETHAM = 2 } sky_model;
+
+typedef struct sky_settings {
+    sky_model model;
+    double turbidity;       /* Preetham */
+    double scale;           /* multiplies the sky radiance */
+    double color[3];        /* SKY_CONSTANT radiance */
+    double ground_albedo;   /* below the horizon the sky shows this times the horizon-average */
+    double ambient[3];      /* verification mode's constant ambient term (and POV-Ray's) */
+} sky_settings;
+
+typedef enum shape_kind {
+    SHAPE_MESH = 0,   /* inline vertices + triangles (+ optional uvs) */
+    SHAPE_BOX = 1,    /* size[3], centred on the origin */
+    SHAPE_SPHERE = 2, /* radius, subdivisions (icosphere) */
+    SHAPE_QUAD = 3,   /* size[2] in the XY plane, normal +Z, uvs 0..1 */
+    SHAPE_DISK = 4    /* radius, segments, XY plane */
+} shape_kind;
+
+typedef struct shape_spec {
+    shape_kind kind;
+    double size[3];
+    double radius;
+    uint32_t subdivisions;
+    const double *vertices; uint32_t n_vertices; /* xyz triples */
+    const double *uvs;      uint32_t n_uvs;      /* uv pairs, n_uvs == n_vertices or 0 */
+    const double *triangles; uint32_t n_triangles; /* index triples (validated integers) */
+} shape_spec;
+
+typedef struct material_spec {
+    const char *name;
+    sylva_bsdf bsdf;
+    double albedo[3];
+    double transmittance[3];
+    const char *texture_path; /* absolute, or NULL */
+    int alpha_mask;
+    uint32_t line, column;
+} material_spec;
+
+typedef struct object_spec {
+    const char *name;
+    shape_spec shape;
+    double position[3], rotation_deg[3], scale[3];
+    const char *material;     /* a material name (checked to exist), or NULL for the default */
+    uint32_t line, column;
+} object_spec;
+
+typedef struct species_spec {
+    const char *name;
+    const char *plugin;       /* tree plugin name, or NULL when `shape` gives the prototype */
+    const sylva_params *params; /* the plugin's block (NULL for shapes) */
+    shape_spec shape;
+    const char *material;     /* shapes: material name or NULL */
+    uint32_t variants;        /* age variants to build */
+    const sylva_params *ecology; /* the block under the ecology plugin's species_section, or NULL */
+    uint32_t line, column;
+} species_spec;
+
+typedef struct plant_spec {
+    uint32_t species;         /* index into scene_file.species */
+    double position[3];
+    int snap_to_terrain;      /* 1 when the position gave no z (two numbers) */
+    double rotation_deg;      /* about +Z */
+    double scale;
+    double age;               /* (0, 1] */
+    uint32_t line, column;
+} plant_spec;
+
+typedef enum terrain_source { TERRAIN_NONE = 0, TERRAIN_GRID = 1, TERRAIN_PLUGIN = 2 } terrain_source;
+
+typedef struct terrain_spec {
+    terrain_source source;
+    const char *plugin;         /* TERRAIN_PLUGIN */
+    const sylva_params *params; /* TERRAIN_PLUGIN */
+    const double *grid; uint32_t nx, ny; /* TERRAIN_GRID: ny rows of nx heights, row 0 = south */
+    double origin[2], spacing[2];
+    const char *material;       /* material name or NULL for the default ground */
+    uint32_t line, column;
+} terrain_spec;
+
+typedef struct ecology_spec {
+    const char *plugin;         /* NULL: no ecology */
+    const sylva_params *params;
+    uint32_t line, column;
+} ecology_spec;
+
+typedef struct scene_file {
+    const char *path;           /* as given */
+    const char *dir;            /* absolute folder of the file */
+    image_settings image;
+    camera_settings camera;
+    sun_settings sun;
+    sky_settings sky;
+    terrain_spec terrain;
+    species_spec *species; uint32_t n_species;
+    plant_spec *plants; uint32_t n_plants;
+    ecology_spec ecology;
+    object_spec *objects; uint32_t n_objects;
+    material_spec *materials; uint32_t n_materials;
+    struct arena *arena;        /* owns all of the above */
+} scene_file;
+
+/* Reads and validates `path`. plugins may be NULL only for scenes that name no plugin.
+ * Returns a new scene_file (caller frees with scene_file_free) or NULL with err set. */
+scene_file *scene_file_load(const char *path, const struct plugin_registry *plugins, err_buf *err);
+void scene_file_free(scene_file *sf); /* accepts NULL */
+
+/* Index of a material or species by name, or -1. */
+int scene_file_material_index(const scene_file *sf, const char *name);
+int scene_file_species_index(const scene_file *sf, const char *name);
+
+#endif

@@ -1,0 +1,41 @@
+/* broken_null.c — a test module whose descriptor has NULL name, summary and version: the host
+ * must refuse it with a sentence, without dereferencing any of them. */
+#include "sylva/plugin.h"
+
+static int flat_create(const sylva_host_api *api, sylva_host *host, const sylva_params *params,
+                       void **state)
+{
+    *state = NULL;
+    return SYLVA_OK;
+}
+
+static int flat_generate(void *state, const sylva_host_api *api, sylva_host *host,
+                         const void *request, void *out)
+{
+    sylva_heightfield *hf = api->heightfield_new(host, 2, 2, 0); /* owned by the host */
+    if (!hf) return api->error(host, "cannot allocate a 2 x 2 heightfield");
+    hf->dx = hf->dy = 1.0;
+    ((sylva_terrain_out *)out)->terrain = hf;
+    return SYLVA_OK;
+}
+
+static void flat_destroy(void *state) { (void)state; }
+
+static const sylva_plugin broken_null = {
+    .size = sizeof(sylva_plugin),
+    .abi_major = SYLVA_ABI_MAJOR,
+    .abi_minor = SYLVA_ABI_MINOR,
+    .param_spec_size = sizeof(sylva_param_spec),
+    .kind = SYLVA_KIND_TERRAIN,
+    .name = NULL,
+    .summary = NULL,
+    .version = NULL,
+    .create = flat_create,
+    .generate = flat_generate,
+    .destroy = flat_destroy,
+};
+
+SYLVA_EXPORT const sylva_plugin *sylva_plugin_get(uint32_t index)
+{
+    return index == 0 ? &broken_null : NULL;
+}

@@ -1,0 +1,209 @@
+/* test_image_io.c — the OpenImageIO shim: 8-bit PNG written and read back exactly (grey, RGB,
+ * RGBA with unassociated alpha), readable errors for files that are not images, and no
+ * temporary file left beside the target after a success or a failure. */
+#include <dirent.h>
+#include <math.h>
+#include <stdint.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "harness.h"
+#include "io/image_io.h"
+
+static char work_dir[] = "/tmp/sylva-test-image-io-XXXXXX";
+
+static void remove_work_dir(void)
+{
+    /* several passes: entries removed while a folder is being read may hide others */
+    for (int pass = 0; pass < 4 && rmdir(work_dir) != 0; pass++) {
+        DIR *d = opendir(work_dir);
+        if (!d) return;
+        struct dirent *e;
+        char path[1024];
+        while ((e = readdir(d))) {
+            if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
+            snprintf(path, sizeof path, "%s/%s", work_dir, e->d_name);
+            remove(path);
+        }
+        closedir(d);
+    }
+}
+
+static const char *work_path(const char *name)
+{
+    static char path[1024];
+    static int ready;
+    if (!ready) {
+        ready = 1;
+        if (!mkdtemp(work_dir)) {
+            fprintf(stderr, "cannot make a work folder in /tmp\n");
+            exit(2);
+        }
+        atexit(remove_work_dir);
+    }
+    snprintf(path, sizeof path, "%s/%s", work_dir, name);
+    return path;
+}
+
+/* Names in the work folder other than the given ones, counted (temporary files, leftovers). */
+static int count_other_entries(const char *keep1, const char *keep2)
+{
+    DIR *d = opendir(work_dir);
+    if (!d) return -1;
+    int n = 0;
+    struct dirent *e;
+    while ((e = readdir(d))) {
+        const char *s = e->d_name;
+        if (!strcmp(s, ".") || !strcmp(s, "..")) continue;
+        if ((keep1 && !strcmp(s, keep1)) || (keep2 && !strcmp(s, keep2))) continue;
+        fprintf(stderr, "unexpected file in the work folder: %s\n", s);
+        n++;
+    }
+    closedir(d);
+    return n;
+}
+
+static void round_trip(const char *name, uint32_t w, uint32_t h, uint32_t channels,
+                       const char *const *want_names)
+{
+    uint8_t px[64 * 4];
+    for (uint32_t i = 0; i < w * h * channels; i++) px[i] = (uint8_t)((i * 37u + 11u) & 0xffu);
+    if (channels == 4) {
+        px[3] = 0;      /* fully transparent pixel with colour: must survive unchanged */
+        px[4 + 3] = 1;
+    }
+    err_buf err = {{0}};
+    const char *path = work_path(name);
+    int rc = image_write_u8(path, w, h, channels, px, &err);
+    CHECK_INT(rc, 0);
+    if (rc) fprintf(stderr, "%s\n", err.msg);
+    image_f32 img = {0};
+    rc = image_read(path, &img, &err);
+    CHECK_INT(rc, 0);
+    if (rc) {
+        fprintf(stderr, "%s\n", err.msg);
+        return;
+    }
+    CHECK_INT(img.width, w);
+    CHECK_INT(img.height, h);
+    CHECK_INT(img.channels, channels);
+    for (uint32_t c = 0; c < img.channels && c < channels; c++)
+        CHECK_STR_CONTAINS(img.channel_names[c], want_names[c]);
+    int bad = 0;
+    for (uint32_t i = 0; i < w * h * channels && img.channels == channels; i++)
+        if (fabsf(img.pixels[i] - (float)px[i] / 255.0f) > 1e-7f) { /* OIIO scales by 1/255 */
+            if (bad < 3)
+                fprintf(stderr, "value %u = %.9g, expected %u/255\n", i, img.pixels[i], px[i]);
+            bad++;
+        }
+    CHECK_INT(bad, 0);
+    image_free(&img);
+    CHECK(img.pixels == NULL && img.channel_names == NULL && img.channels == 0);
+}
+
+TEST(png_rgb_round_trip)
+{
+    static const char *const names[] = {"R", "G", "B"};
+    round_trip("rgb.png", 5, 3, 3, names);
+    CHECK_INT(count_other_entries("rgb.png", NULL), 0);
+    remove(work_path("rgb.png"));
+}
+
+TEST(png_rgba_round_trip)
+{
+    static const char *const names[] = {"R", "G", "B", "A"};
+    round_trip("rgba.png", 4, 4, 4, names);
+    CHECK_INT(count_other_entries("rgba.png", NULL), 0);
+    remove(work_path("rgba.png"));
+}
+
+TEST(png_grey_round_trip)
+{
+    static const char *const names[] = {"Y"};
+    round_trip("grey.png", 8, 2, 1, names);
+    remove(work_path("grey.png"));
+}
+
+TEST(overwrite_replaces_the_file)
+{
+    uint8_t dark[3 * 4] = {0}, light[3 * 4];
+    memset(light, 200, sizeof light);
+    err_buf err = {{0}};
+    const char *path = work_path("again.png");
+    CHECK_INT(image_write_u8(path, 2, 2, 3, dark, &err), 0);
+    CHECK_INT(image_write_u8(path, 2, 2, 3, light, &err), 0);
+    image_f32 img = {0};
+    CHECK_INT(image_read(path, &img, &err), 0);
+    if (img.pixels) CHECK_NEAR(img.pixels[11], 200.0 / 255.0, 1e-7);
+    image_free(&img);
+    CHECK_INT(count_other_entries("again.png", NULL), 0);
+    remove(path);
+}
+
+TEST(unreadable_files)
+{
+    err_buf err = {{0}};
+    image_f32 img = {0};
+    const char *missing = work_path("missing.png");
+    CHECK_INT(image_read(missing, &img, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, missing);
+    CHECK_STR_CONTAINS(err.msg, "cannot read the image");
+    CHECK(img.pixels == NULL && img.channels == 0);
+
+    const char *junk = work_path("junk.png");
+    FILE *f = fopen(junk, "wb");
+    CHECK(f != NULL);
+    if (f) {
+        fputs("this is not a PNG file\n", f);
+        fclose(f);
+    }
+    err_clear(&err);
+    CHECK_INT(image_read(junk, &img, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, junk);
+    CHECK(strlen(err.msg) > strlen(junk) + 25); /* the reason follows the name */
+    CHECK(img.pixels == NULL);
+    remove(junk);
+}
+
+TEST(failed_writes_leave_nothing)
+{
+    uint8_t px[3 * 4] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};
+    err_buf err = {{0}};
+    char path[1024];
+
+    snprintf(path, sizeof path, "%s/no/such/folder/out.png", work_dir);
+    CHECK_INT(image_write_u8(path, 2, 2, 3, px, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, path);
+    CHECK_INT(access(path, F_OK), -1);
+
+    const char *unknown = work_path("picture.unknownformat");
+    err_clear(&err);
+    CHECK_INT(image_write_u8(unknown, 2, 2, 3, px, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, unknown);
+    CHECK_INT(access(unknown, F_OK), -1);
+
+    /* the target is a non-empty folder: the rename fails after the file was written */
+    const char *folder = work_path("occupied.png");
+    CHECK_INT(mkdir(folder, 0755), 0);
+    char inner[1100];
+    snprintf(inner, sizeof inner, "%s/keep", folder);
+    CHECK_INT(mkdir(inner, 0755), 0);
+    err_clear(&err);
+    CHECK_INT(image_write_u8(folder, 2, 2, 3, px, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "cannot move the finished file into place");
+    CHECK_INT(count_other_entries("occupied.png", NULL), 0);
+    rmdir(inner);
+    rmdir(folder);
+
+    err_clear(&err);
+    CHECK_INT(image_write_u8(work_path("five.png"), 2, 2, 5, px, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "1 to 4");
+    err_clear(&err);
+    CHECK_INT(image_write_u8(work_path("empty.png"), 0, 2, 3, px, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "0x2");
+    CHECK_INT(count_other_entries(NULL, NULL), 0);
+}
+
+TEST_LIST(TEST_CASE(png_rgb_round_trip), TEST_CASE(png_rgba_round_trip),
+          TEST_CASE(png_grey_round_trip), TEST_CASE(overwrite_replaces_the_file),
+          TEST_CASE(unreadable_files), TEST_CASE(failed_writes_leave_nothing))

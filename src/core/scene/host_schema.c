@@ -184,7 +184,7 @@ const host_schema host_schema_plant = {"plants item", "One plant placed by hand.
 /* --- objects -------------------------------------------------------------------------------- */
 static const sylva_param_spec object_params[] = {
     {.name = "name", .type = SYLVA_P_STRING,
-     .help = "Label used in messages and in the object-id layer (default: object<index>)."},
+     .help = "Label used in messages and in the object-id layer (default: objects[<index>])."},
     {.name = "shape", .type = SYLVA_P_ENUM, .flags = REQ, .choices = host_shape_names,
      .help = "Built-in shape: mesh, box, sphere, quad or disk; its keys sit beside this one."},
     {.name = "position", .type = SYLVA_P_VEC3, .def_list = zero3, .def_len = 3, .unit = "m",
@@ -222,7 +222,7 @@ static const sylva_param_spec sphere_params[] = {
 static const sylva_param_spec quad_params[] = {
     {.name = "size", .type = SYLVA_P_LIST, .flags = MIN_X, .min = 0, .min_len = 2, .max_len = 2,
      .def_list = one2, .def_len = 2, .unit = "m",
-     .help = "Width along X and height along Y of a square in the XY plane facing +Z."},
+     .help = "Width along X and height along Y of a rectangle in the XY plane facing +Z."},
 };
 static const sylva_param_spec disk_params[] = {
     {.name = "radius", .type = SYLVA_P_REAL, .flags = MIN_X, .def = 0.5, .min = 0, .unit = "m",

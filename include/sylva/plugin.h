@@ -17,6 +17,9 @@
  *    starts with `size` (its sizeof as the writer compiled it); a reader reads no field past it.
  *  - Arrays the host indexes (parameter specs) must have the host's element size: the descriptor
  *    records `param_spec_size`, and the host refuses a mismatch.
+ *  - Arrays the plugin indexes (sylva_params.values, sylva_value.items, the ecology request's
+ *    species) keep their element layout for the whole of a major version: growing sylva_value,
+ *    sylva_params or sylva_species_info is a major change.
  *
  * Errors: every operation returns SYLVA_OK or a negative sylva_status and, on failure, leaves a
  * sentence through api->error() or api->param_error() (what is wrong, what would be valid). A

@@ -1,15 +1,16 @@
 /* plugin_host.h — finding, loading and checking plugins.
  *
- * A registry holds every plugin found in the search path: the build tree's plugin folder, the
- * install folder, and each folder of SYLVA_PLUGIN_PATH (colon-separated), in that order of
- * precedence reversed (SYLVA_PLUGIN_PATH first). Each module is dlopen()ed and its entry point
+ * A registry holds every plugin found in the search path: each folder of SYLVA_PLUGIN_PATH
+ * (colon-separated), then the build tree's plugin folder, then the install folder; the first
+ * folder providing a name wins. Each module is dlopen()ed and its entry point
  * `sylva_plugin_get` called for descriptors; each descriptor is checked (ABI major, struct
  * sizes, name, kind, schema well-formedness, operations present) before it is listed. A module
- * or descriptor that fails a check is kept as a `plugin_problem` with a sentence naming file,
- * symbol and reason — it is never fatal to the host.
+ * or descriptor that fails a check is kept as a `plugin_problem` whose sentence names the file,
+ * the symbol where one is involved, and the reason — it is never fatal to the host.
  *
  * Ownership: the registry owns the module handles (closed by plugin_registry_free) and the
- * problem list; descriptors point into the modules and are valid until then.
+ * problem list, and a copy of each accepted descriptor (zero-filled past the plugin's `size`,
+ * so every field can be read); strings in them point into the modules and stay valid until then.
  */
 #ifndef SYLVA_PLUGIN_HOST_H
 #define SYLVA_PLUGIN_HOST_H

@@ -386,7 +386,39 @@ TEST(host_reserved_keys)
     CHECK(!strcmp(host_reserved_key_clash(eco, 1, "habitat"), "habitat"));
 }
 
+/* docs/scene-file.md has a table row for every host key, with the schema's help sentence. */
+TEST(docs_list_every_key)
+{
+    FILE *f = fopen(SYLVA_TEST_DATA_DIR "/../docs/scene-file.md", "r");
+    CHECK(f != NULL);
+    if (!f) return;
+    static char doc[1 << 17];
+    size_t n = fread(doc, 1, sizeof doc - 1, f);
+    fclose(f);
+    doc[n] = '\0';
+    for (uint32_t i = 0; host_schema_at(i); i++) {
+        const host_schema *s = host_schema_at(i);
+        for (uint32_t k = 0; k < s->n_params; k++) {
+            char row[128];
+            snprintf(row, sizeof row, "| `%s` |", s->params[k].name);
+            int found = 0;
+            for (const char *line = doc; line && *line && !found;) {
+                const char *end = strchr(line, '\n');
+                size_t len = end ? (size_t)(end - line) : strlen(line);
+                const char *r = strstr(line, row), *h = strstr(line, s->params[k].help);
+                found = r && h && r < line + len && h < line + len;
+                line = end ? end + 1 : NULL;
+            }
+            if (!found)
+                fprintf(stderr, "docs/scene-file.md: no row for '%s' (%s) with its help\n",
+                        s->params[k].name, s->name);
+            CHECK(found);
+        }
+    }
+}
+
 TEST_LIST(TEST_CASE(scene_minimal_defaults), TEST_CASE(scene_full), TEST_CASE(scene_bad_corpus),
           TEST_CASE(scene_bad_plugin_corpus), TEST_CASE(scene_plugins),
           TEST_CASE(scene_file_errors), TEST_CASE(scene_file_size_limit),
-          TEST_CASE(host_schemas_are_well_formed), TEST_CASE(host_reserved_keys))
+          TEST_CASE(host_schemas_are_well_formed), TEST_CASE(host_reserved_keys),
+          TEST_CASE(docs_list_every_key))

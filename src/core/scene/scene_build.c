@@ -74,11 +74,20 @@ static int add_materials(scene *s, const scene_file *sf, err_buf *err)
     return 0;
 }
 
-/* Reports a plugin's failure: its own sentence, or a generic one when it gave none. */
-static int plugin_failed(err_buf *err, const sylva_host *h, const loaded_plugin *lp, const char *op, int rc)
+/* Reports a plugin's failure, located in the scene file: a sentence from param_error already
+ * starts with the parameter's file:line:column and gets the plugin named after it; any other
+ * sentence is placed at the plugin's block. */
+static int plugin_failed(err_buf *err, const sylva_host *h, const loaded_plugin *lp, const char *op, int rc,
+                         const char *path, uint32_t line, uint32_t column)
 {
     if (!h->error_set) err_set(err, "returned status %d from %s without saying why", rc, op);
-    return err_prefix(err, "%s (%s): %s failed: ", h->context, lp->file, op);
+    size_t n = strlen(path);
+    if (!strncmp(err->msg, path, n) && err->msg[n] == ':') {
+        char msg[ERR_MSG_MAX];
+        snprintf(msg, sizeof msg, "%s", err->msg);
+        return err_set(err, "%s (%s: %s failed; %s)", msg, h->context, op, lp->file);
+    }
+    return err_prefix(err, "%s:%u:%u: %s: %s failed (%s): ", path, line, column, h->context, op, lp->file);
 }
 
 static int build_terrain(scene *s, const scene_file *sf, const plugin_registry *reg,
@@ -97,9 +106,9 @@ static int build_terrain(scene *s, const scene_file *sf, const plugin_registry *
         for (size_t i = 0; i < (size_t)t->nx * t->ny; i++) hf->z[i] = (float)t->grid[i];
         return 0;
     }
-    err_buf lookup;
+    err_buf lookup = {{0}};
     const loaded_plugin *lp = reg ? plugin_registry_find(reg, t->plugin, SYLVA_KIND_TERRAIN, &lookup) : NULL;
-    if (!lp) return err_set(err, "%s:%u:%u: terrain plugin '%s' is not available", sf->path, t->line, t->column, t->plugin);
+    if (!lp) return err_set(err, "%s:%u:%u: %s", sf->path, t->line, t->column, reg ? lookup.msg : "no plugins were loaded");
     char context[160];
     snprintf(context, sizeof context, "terrain plugin '%s'", t->plugin);
     sylva_host h;
@@ -109,7 +118,7 @@ static int build_terrain(scene *s, const scene_file *sf, const plugin_registry *
     void *state = NULL;
     int rc = lp->desc->create(api, &h, t->params, &state);
     if (rc) {
-        plugin_failed(err, &h, lp, "create", rc);
+        plugin_failed(err, &h, lp, "create", rc, sf->path, t->line, t->column);
         host_release(&h);
         return -1;
     }
@@ -129,7 +138,7 @@ static int build_terrain(scene *s, const scene_file *sf, const plugin_registry *
         h.error_set = 1;
     }
     if (rc) {
-        plugin_failed(err, &h, lp, "generate", rc);
+        plugin_failed(err, &h, lp, "generate", rc, sf->path, t->line, t->column);
         host_release(&h);
         return -1;
     }
@@ -166,10 +175,10 @@ static int build_species(scene *s, const scene_file *sf, const plugin_registry *
             dst->n_variants = 1;
             continue;
         }
-        err_buf lookup;
+        err_buf lookup = {{0}};
         const loaded_plugin *lp = reg ? plugin_registry_find(reg, sp->plugin, SYLVA_KIND_TREE, &lookup) : NULL;
         if (!lp)
-            return err_set(err, "%s:%u:%u: tree plugin '%s' is not available", sf->path, sp->line, sp->column, sp->plugin);
+            return err_set(err, "%s:%u:%u: %s", sf->path, sp->line, sp->column, reg ? lookup.msg : "no plugins were loaded");
         char context[200];
         snprintf(context, sizeof context, "tree plugin '%s' for species '%s'", sp->plugin, sp->name);
         sylva_host h;
@@ -179,7 +188,7 @@ static int build_species(scene *s, const scene_file *sf, const plugin_registry *
         void *state = NULL;
         int rc = lp->desc->create(api, &h, sp->params, &state);
         if (rc) {
-            plugin_failed(err, &h, lp, "create", rc);
+            plugin_failed(err, &h, lp, "create", rc, sf->path, sp->line, sp->column);
             host_release(&h);
             return -1;
         }
@@ -214,7 +223,7 @@ static int build_species(scene *s, const scene_file *sf, const plugin_registry *
         }
         lp->desc->destroy(state);
         if (rc) {
-            plugin_failed(err, &h, lp, "generate", rc);
+            plugin_failed(err, &h, lp, "generate", rc, sf->path, sp->line, sp->column);
             host_release(&h);
             return -1;
         }
@@ -255,9 +264,9 @@ static int build_ecology(scene *s, const scene_file *sf, const plugin_registry *
     const ecology_spec *e = &sf->ecology;
     if (!e->plugin) return 0;
     if (!s->terrain) return err_set(err, "%s:%u:%u: the ecology needs a terrain", sf->path, e->line, e->column);
-    err_buf lookup;
+    err_buf lookup = {{0}};
     const loaded_plugin *lp = reg ? plugin_registry_find(reg, e->plugin, SYLVA_KIND_ECOLOGY, &lookup) : NULL;
-    if (!lp) return err_set(err, "%s:%u:%u: ecology plugin '%s' is not available", sf->path, e->line, e->column, e->plugin);
+    if (!lp) return err_set(err, "%s:%u:%u: %s", sf->path, e->line, e->column, reg ? lookup.msg : "no plugins were loaded");
     sylva_species_info *info = calloc(sf->n_species ? sf->n_species : 1, sizeof *info);
     if (!info) return err_set(err, "out of memory");
     for (uint32_t i = 0; i < sf->n_species; i++) {
@@ -274,7 +283,7 @@ static int build_ecology(scene *s, const scene_file *sf, const plugin_registry *
     void *state = NULL;
     int rc = lp->desc->create(api, &h, e->params, &state);
     if (rc) {
-        plugin_failed(err, &h, lp, "create", rc);
+        plugin_failed(err, &h, lp, "create", rc, sf->path, e->line, e->column);
         goto done;
     }
     sylva_ecology_request req = {.size = sizeof req, .seed = h.seed, .terrain = s->terrain, .species = info,
@@ -283,7 +292,7 @@ static int build_ecology(scene *s, const scene_file *sf, const plugin_registry *
     rc = lp->desc->generate(state, api, &h, &req, &out);
     lp->desc->destroy(state);
     if (rc) {
-        plugin_failed(err, &h, lp, "generate", rc);
+        plugin_failed(err, &h, lp, "generate", rc, sf->path, e->line, e->column);
         goto done;
     }
     for (uint32_t i = 0; i < h.n_plants; i++) {

@@ -296,7 +296,8 @@ typedef struct sylva_tree_out {
 typedef struct sylva_species_info {
     uint32_t size;
     const char *name;            /* the species' key in the scene file */
-    const sylva_params *ecology; /* the species' block validated against species_params */
+    const sylva_params *ecology; /* the species' block validated against species_params (defaults
+                                    when the scene gives none); NULL when species_params is empty */
     double model_height;         /* height of the full-grown model, metres */
 } sylva_species_info;
 

@@ -300,7 +300,13 @@ TEST(scene_plugins)
                 CHECK_NEAR(sylva_param_real(e, "max_slope"), 20, 0);
                 CHECK_INT(e->line, 15);
             }
-            CHECK(sf->species[1].ecology == NULL); /* no block: not placed by the ecology */
+            /* no block: the ecology plugin's defaults, all unset */
+            const sylva_params *d = sf->species[1].ecology;
+            CHECK(d != NULL);
+            if (d) {
+                CHECK(!strcmp(sylva_param_str(d, "shade"), "tolerant"));
+                for (uint32_t k = 0; k < d->n; k++) CHECK(!d->values[k].is_set);
+            }
         }
         scene_file_free(sf);
     }

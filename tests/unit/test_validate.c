@@ -45,7 +45,21 @@ static const sylva_param_spec spec[] = {
 };
 #define N_SPEC ((uint32_t)(sizeof spec / sizeof spec[0]))
 
-enum { FLAG, COUNT, ALPHA, LABEL, MODE, TEXTURE, TINT, WEIGHTS, PROFILE, HEIGHTS, TOP, LAYERS, NEEDED };
+enum {
+    FLAG,
+    COUNT,
+    ALPHA,
+    LABEL,
+    MODE,
+    TEXTURE,
+    TINT,
+    WEIGHTS,
+    PROFILE,
+    HEIGHTS,
+    TOP,
+    LAYERS,
+    NEEDED
+};
 
 /* Parses text as "t.yaml" and validates its root against spec. Returns params or NULL. */
 static const sylva_params *run(arena *a, const char *text, const char *const *host_keys,
@@ -187,20 +201,24 @@ TEST(validate_bool_words)
         arena_free(a);
     }
     expect_error("flag: 1\nneeded: 0\n", "t.yaml:1:7: 'flag' must be true or false, got '1'");
-    expect_error("flag: 'true'\nneeded: 0\n", "'flag' must be true or false, got the quoted string");
+    expect_error("flag: 'true'\nneeded: 0\n",
+                 "'flag' must be true or false, got the quoted string");
 }
 
 TEST(validate_numbers)
 {
-    expect_error("count: -3\nneeded: 0\n", "t.yaml:1:8: 'count' must be an integer in [1, 10], got -3");
-    expect_error("count: 2.5\nneeded: 0\n", "t.yaml:1:8: 'count' must be an integer in [1, 10], got 2.5");
+    expect_error("count: -3\nneeded: 0\n",
+                 "t.yaml:1:8: 'count' must be an integer in [1, 10], got -3");
+    expect_error("count: 2.5\nneeded: 0\n",
+                 "t.yaml:1:8: 'count' must be an integer in [1, 10], got 2.5");
     expect_error("count: abc\nneeded: 0\n", "t.yaml:1:8: 'count': expected an integer, got 'abc'");
     expect_error("alpha: 1.5\nneeded: 0\n", "t.yaml:1:8: 'alpha' must be in (-1, 1), got 1.5");
     expect_error("alpha: -1\nneeded: 0\n", "'alpha' must be in (-1, 1), got -1");
     expect_error("alpha: abc\nneeded: 0\n", "t.yaml:1:8: 'alpha': expected a number, got 'abc'");
     expect_error("alpha: 0x10\nneeded: 0\n", "'alpha': expected a number, got '0x10'");
     expect_error("alpha: .inf\nneeded: 0\n", "'alpha': expected a finite number, got '.inf'");
-    expect_error("needed: 1e400\n", "t.yaml:1:9: 'needed': the number 1e400 is too large to represent");
+    expect_error("needed: 1e400\n",
+                 "t.yaml:1:9: 'needed': the number 1e400 is too large to represent");
     expect_error("needed: [1]\n", "'needed': expected a number, got a sequence");
     /* integral reals are integers; 1e1 is 10 */
     arena *a = arena_new();
@@ -217,10 +235,13 @@ TEST(validate_numbers)
 
 TEST(validate_enum_and_path)
 {
-    expect_error("mode: exakt\nneeded: 0\n",
-                 "t.yaml:1:7: 'mode' must be one of fast, fine, exact; got 'exakt' (did you mean 'exact'?)");
-    expect_error("mode: banana\nneeded: 0\n", "'mode' must be one of fast, fine, exact; got 'banana'");
-    expect_error("texture: ''\nneeded: 0\n", "t.yaml:1:10: 'texture' must be a file path, got an empty string");
+    expect_error(
+        "mode: exakt\nneeded: 0\n",
+        "t.yaml:1:7: 'mode' must be one of fast, fine, exact; got 'exakt' (did you mean 'exact'?)");
+    expect_error("mode: banana\nneeded: 0\n",
+                 "'mode' must be one of fast, fine, exact; got 'banana'");
+    expect_error("texture: ''\nneeded: 0\n",
+                 "t.yaml:1:10: 'texture' must be a file path, got an empty string");
     arena *a = arena_new();
     err_buf err;
     const sylva_params *p = run(a, "texture: /abs/leaf.png\nneeded: 0\n", NULL, 0, &err);
@@ -237,16 +258,19 @@ TEST(validate_lists)
     expect_error("tint: [1, 2]\nneeded: 0\n",
                  "t.yaml:1:7: 'tint' must be a list of 3 numbers [x, y, z], got 2 numbers");
     expect_error("tint: [1, -2, 3]\nneeded: 0\n", "t.yaml:1:11: 'tint'[1] must be >= 0, got -2");
-    expect_error("tint: [1, x, 3]\nneeded: 0\n", "t.yaml:1:11: 'tint'[1]: expected a number, got 'x'");
-    expect_error("weights: [1]\nneeded: 0\n", "'weights' must be a list of 2 to 4 numbers, got 1 number");
+    expect_error("tint: [1, x, 3]\nneeded: 0\n",
+                 "t.yaml:1:11: 'tint'[1]: expected a number, got 'x'");
+    expect_error("weights: [1]\nneeded: 0\n",
+                 "'weights' must be a list of 2 to 4 numbers, got 1 number");
     expect_error("weights: [1, 2, 3, 4, 5]\nneeded: 0\n", "got 5 numbers");
     expect_error("weights: 3\nneeded: 0\n", "'weights' must be a list of 2 to 4 numbers, got '3'");
 }
 
 TEST(validate_polyline)
 {
-    expect_error("profile: [[0, 0.5], [2, 0.5], [1, 0.5]]\nneeded: 0\n",
-                 "t.yaml:1:32: 'profile'[2]: x must not decrease along the polyline, got 1 after 2");
+    expect_error(
+        "profile: [[0, 0.5], [2, 0.5], [1, 0.5]]\nneeded: 0\n",
+        "t.yaml:1:32: 'profile'[2]: x must not decrease along the polyline, got 1 after 2");
     expect_error("profile: [[0, 0.5], [1, 1.5]]\nneeded: 0\n",
                  "t.yaml:1:25: 'profile'[1] y must be in [0, 1], got 1.5");
     expect_error("profile: [[0, 0.5]]\nneeded: 0\n",
@@ -259,11 +283,15 @@ TEST(validate_polyline)
 TEST(validate_grid)
 {
     expect_error("heights: [[1, 2], [3]]\nneeded: 0\n",
-                 "t.yaml:1:19: 'heights'[1] has 1 numbers but row 0 has 2; every row must have the same length");
-    expect_error("heights: []\nneeded: 0\n", "t.yaml:1:10: 'heights' needs at least one row of numbers");
+                 "t.yaml:1:19: 'heights'[1] has 1 numbers but row 0 has 2; every row must have the "
+                 "same length");
+    expect_error("heights: []\nneeded: 0\n",
+                 "t.yaml:1:10: 'heights' needs at least one row of numbers");
     expect_error("heights: [[]]\nneeded: 0\n", "t.yaml:1:11: 'heights'[0] is an empty row");
-    expect_error("heights: [[1, 2], [3, b]]\nneeded: 0\n", "t.yaml:1:23: 'heights'[1][1]: expected a number, got 'b'");
-    expect_error("heights: [1, 2]\nneeded: 0\n", "'heights'[0] must be a row of numbers [a, b, ...], got '1'");
+    expect_error("heights: [[1, 2], [3, b]]\nneeded: 0\n",
+                 "t.yaml:1:23: 'heights'[1][1]: expected a number, got 'b'");
+    expect_error("heights: [1, 2]\nneeded: 0\n",
+                 "'heights'[0] must be a row of numbers [a, b, ...], got '1'");
 }
 
 TEST(validate_groups)
@@ -271,7 +299,8 @@ TEST(validate_groups)
     expect_error("top: {depht: 1}\nneeded: 0\n",
                  "t.yaml:1:7: unknown key 'depht' in 'block.top'; did you mean 'depth'?");
     expect_error("top: {depth: 0}\nneeded: 0\n", "t.yaml:1:14: 'depth' must be > 0, got 0");
-    expect_error("top: 5\nneeded: 0\n", "t.yaml:1:6: 'block.top' must be a mapping (key: value), got '5'");
+    expect_error("top: 5\nneeded: 0\n",
+                 "t.yaml:1:6: 'block.top' must be a mapping (key: value), got '5'");
     expect_error("layers: [{kind: a}, 3]\nneeded: 0\n",
                  "t.yaml:1:21: 'block.layers[1]' must be a mapping (key: value), got '3'");
     expect_error("layers: [{}, {}, {}, {}]\nneeded: 0\n",
@@ -283,10 +312,12 @@ TEST(validate_groups)
 TEST(validate_keys)
 {
     expect_error("count: 1\n", "t.yaml:1:1: missing required key 'needed' in 'block'");
-    expect_error("needed: 1\ncuont: 2\n", "t.yaml:2:1: unknown key 'cuont' in 'block'; did you mean 'count'?");
-    expect_error("needed: 1\nzebra: 2\n",
-                 "t.yaml:2:1: unknown key 'zebra' in 'block'; valid keys are flag, count, alpha, label, "
-                 "mode, texture, tint, weights, profile, heights, top, layers, needed");
+    expect_error("needed: 1\ncuont: 2\n",
+                 "t.yaml:2:1: unknown key 'cuont' in 'block'; did you mean 'count'?");
+    expect_error(
+        "needed: 1\nzebra: 2\n",
+        "t.yaml:2:1: unknown key 'zebra' in 'block'; valid keys are flag, count, alpha, label, "
+        "mode, texture, tint, weights, profile, heights, top, layers, needed");
     expect_error("- 1\n", "t.yaml:1:1: 'block' must be a mapping (key: value), got a sequence");
 
     /* host keys are skipped, and offered as suggestions */
@@ -298,7 +329,8 @@ TEST(validate_keys)
     CHECK(p && p->line == 1 && p->column == 1);
     p = run(a, "plugn: x\nneeded: 1\n", host, 2, &err);
     CHECK(p == NULL);
-    CHECK_STR_CONTAINS(err.msg, "t.yaml:1:1: unknown key 'plugn' in 'block'; did you mean 'plugin'?");
+    CHECK_STR_CONTAINS(err.msg,
+                       "t.yaml:1:1: unknown key 'plugn' in 'block'; did you mean 'plugin'?");
     arena_free(a);
 
     /* an absent block is all defaults, located where the caller says */
@@ -361,12 +393,14 @@ TEST(yaml_doc_tree)
     const ynode *r = doc.root;
     CHECK(r && r->kind == YNODE_MAPPING && r->n_pairs == 3);
     if (r && r->n_pairs == 3) {
-        CHECK(!strcmp(r->pairs[0].key, "a") && r->pairs[0].key_line == 1 && r->pairs[0].key_column == 1);
+        CHECK(!strcmp(r->pairs[0].key, "a") && r->pairs[0].key_line == 1 &&
+              r->pairs[0].key_column == 1);
         CHECK(r->pairs[0].value->line == 1 && r->pairs[0].value->column == 4);
         const ynode *b = ynode_get(r, "b");
         CHECK(b->kind == YNODE_SEQUENCE && b->n_items == 3);
         CHECK(b->items[0]->quoted == 0 && b->items[1]->quoted == 1);
-        CHECK(b->items[2]->kind == YNODE_MAPPING && b->items[2]->line == 5 && b->items[2]->column == 5);
+        CHECK(b->items[2]->kind == YNODE_MAPPING && b->items[2]->line == 5 &&
+              b->items[2]->column == 5);
         CHECK(!strcmp(ynode_get(b->items[2], "c")->text, "d"));
         const ynode *e = ynode_get(r, "e");
         CHECK(e && e->quoted == 1 && !strcmp(e->text, "block\n"));
@@ -382,7 +416,8 @@ TEST(yaml_doc_refusals)
     expect_yaml_error("a: 1\nb: 2\na: 3\n", 13,
                       "y.yaml:3:1: duplicate key 'a'; it was first given at line 1, column 1");
     expect_yaml_error("{b: 1, a: 2, b: 3, a: 4}", 24, "y.yaml:1:14: duplicate key 'b'");
-    expect_yaml_error("? [1, 2]\n: x\n", 12, "y.yaml:1:3: a mapping key must be a name (a scalar), not a sequence");
+    expect_yaml_error("? [1, 2]\n: x\n", 12,
+                      "y.yaml:1:3: a mapping key must be a name (a scalar), not a sequence");
     expect_yaml_error("a: *x\n", 6, "y.yaml:1:4: YAML aliases ('*x') are not supported");
     expect_yaml_error("a: \"nul\\0here\"\n", 15, "y.yaml:1:4: a scalar contains a NUL character");
     expect_yaml_error("a: \xff\xfe\n", 6, "(YAML syntax)");
@@ -412,7 +447,9 @@ TEST(yaml_doc_refusals)
     memcpy(text, "a: ", 3);
     memset(text + 3, 'x', big);
     text[3 + big] = '\n';
-    expect_yaml_error(text, big + 4, "y.yaml:1:4: a scalar of 65546 bytes is longer than the limit of 65536 bytes");
+    expect_yaml_error(
+        text, big + 4,
+        "y.yaml:1:4: a scalar of 65546 bytes is longer than the limit of 65536 bytes");
     free(text);
 
     /* an empty or comment-only text has no root */
@@ -421,8 +458,9 @@ TEST(yaml_doc_refusals)
     arena_free(a);
 }
 
-TEST_LIST(TEST_CASE(validate_every_type), TEST_CASE(validate_defaults), TEST_CASE(validate_bool_words),
-          TEST_CASE(validate_numbers), TEST_CASE(validate_enum_and_path), TEST_CASE(validate_lists),
+TEST_LIST(TEST_CASE(validate_every_type), TEST_CASE(validate_defaults),
+          TEST_CASE(validate_bool_words), TEST_CASE(validate_numbers),
+          TEST_CASE(validate_enum_and_path), TEST_CASE(validate_lists),
           TEST_CASE(validate_polyline), TEST_CASE(validate_grid), TEST_CASE(validate_groups),
           TEST_CASE(validate_keys), TEST_CASE(validate_range_phrase), TEST_CASE(nearest_name),
           TEST_CASE(yaml_doc_tree), TEST_CASE(yaml_doc_refusals))

@@ -46,7 +46,8 @@ void param_range_phrase(const sylva_param_spec *spec, char *buf, size_t size)
     char lo_text[40], hi_text[40];
     bound_text(spec->min, lo_text, sizeof lo_text);
     bound_text(spec->max, hi_text, sizeof hi_text);
-    int lo = (spec->flags & SYLVA_PARAM_HAS_MIN) != 0, hi = (spec->flags & SYLVA_PARAM_HAS_MAX) != 0;
+    int lo = (spec->flags & SYLVA_PARAM_HAS_MIN) != 0,
+        hi = (spec->flags & SYLVA_PARAM_HAS_MAX) != 0;
     int lo_x = (spec->flags & SYLVA_PARAM_MIN_EXCLUSIVE) != 0;
     int hi_x = (spec->flags & SYLVA_PARAM_MAX_EXCLUSIVE) != 0;
     if (lo && hi)
@@ -62,10 +63,12 @@ void param_range_phrase(const sylva_param_spec *spec, char *buf, size_t size)
 static int in_range(const sylva_param_spec *spec, double v)
 {
     if (spec->flags & SYLVA_PARAM_HAS_MIN) {
-        if (spec->flags & SYLVA_PARAM_MIN_EXCLUSIVE ? !(v > spec->min) : !(v >= spec->min)) return 0;
+        if (spec->flags & SYLVA_PARAM_MIN_EXCLUSIVE ? !(v > spec->min) : !(v >= spec->min))
+            return 0;
     }
     if (spec->flags & SYLVA_PARAM_HAS_MAX) {
-        if (spec->flags & SYLVA_PARAM_MAX_EXCLUSIVE ? !(v < spec->max) : !(v <= spec->max)) return 0;
+        if (spec->flags & SYLVA_PARAM_MAX_EXCLUSIVE ? !(v < spec->max) : !(v <= spec->max))
+            return 0;
     }
     return 1;
 }
@@ -76,7 +79,9 @@ static void got_phrase(const ynode *n, char *buf, size_t size)
     if (!n || ynode_is_null(n)) snprintf(buf, size, "nothing");
     else if (n->kind == YNODE_SEQUENCE) snprintf(buf, size, "a sequence");
     else if (n->kind == YNODE_MAPPING) snprintf(buf, size, "a mapping");
-    else if (n->quoted) snprintf(buf, size, "the quoted string \"%.60s%s\"", n->text, n->text_len > 60 ? "..." : "");
+    else if (n->quoted)
+        snprintf(buf, size, "the quoted string \"%.60s%s\"", n->text,
+                 n->text_len > 60 ? "..." : "");
     else snprintf(buf, size, "'%.60s%s'", n->text, n->text_len > 60 ? "..." : "");
 }
 
@@ -340,7 +345,8 @@ static int read_enum(arena *a, const param_scope *scope, const ynode *n,
         used += (size_t)snprintf(list + used, sizeof list - used, "%s%s", k ? ", " : "",
                                  spec->choices[k]);
     got_phrase(n, got, sizeof got);
-    const char *near = n->kind == YNODE_SCALAR ? param_nearest_name(n->text, spec->choices, n_choices) : NULL;
+    const char *near =
+        n->kind == YNODE_SCALAR ? param_nearest_name(n->text, spec->choices, n_choices) : NULL;
     if (near)
         return err_set(err, "%s:%u:%u: %s must be one of %s; got %s (did you mean '%s'?)",
                        scope->file, n->line, n->column, label, list, got, near);
@@ -490,7 +496,8 @@ int param_value_default(arena *a, const sylva_param_spec *spec, const param_scop
         v->r = spec->def;
         break;
     case SYLVA_P_STRING:
-        if (spec->def_str && !(v->s = arena_strdup(a, spec->def_str))) return out_of_memory(scope, err);
+        if (spec->def_str && !(v->s = arena_strdup(a, spec->def_str)))
+            return out_of_memory(scope, err);
         break;
     case SYLVA_P_ENUM: {
         const char *name = spec->def_str ? spec->def_str : spec->choices ? spec->choices[0] : NULL;
@@ -509,7 +516,8 @@ int param_value_default(arena *a, const sylva_param_spec *spec, const param_scop
         /* A VEC3 is always three numbers (zeros when the schema gives none). */
         uint32_t len = spec->type == SYLVA_P_VEC3 ? 3 : spec->def_list ? spec->def_len : 0;
         size_t count = (size_t)len * (spec->type == SYLVA_P_POLYLINE ? 2 : 1);
-        size_t given = spec->def_list ? (size_t)spec->def_len * (spec->type == SYLVA_P_POLYLINE ? 2 : 1) : 0;
+        size_t given =
+            spec->def_list ? (size_t)spec->def_len * (spec->type == SYLVA_P_POLYLINE ? 2 : 1) : 0;
         if (!count) break;
         double *list = arena_alloc(a, count * sizeof *list);
         if (!list) return out_of_memory(scope, err);
@@ -543,7 +551,8 @@ static int unknown_key(const param_scope *scope, const ynode_pair *pair,
     const char *names[256];
     size_t count = 0;
     for (uint32_t k = 0; k < n && count < 256; k++) names[count++] = spec[k].name;
-    for (uint32_t k = 0; k < scope->n_host_keys && count < 256; k++) names[count++] = scope->host_keys[k];
+    for (uint32_t k = 0; k < scope->n_host_keys && count < 256; k++)
+        names[count++] = scope->host_keys[k];
     const char *near = param_nearest_name(pair->key, names, count);
     if (near)
         return err_set(err, "%s:%u:%u: unknown key '%s' in '%s'; did you mean '%s'?", scope->file,

@@ -49,7 +49,7 @@ uint8_t *film_tonemap(const film *f, double exposure_stops)
     size_t n = (size_t)f->width * f->height * 3;
     uint8_t *out = malloc(n);
     if (!out) return NULL;
-    float gain = (float)exp2(exposure_stops);
+    float gain = (float)(M_PI * exp2(exposure_stops));
     for (size_t i = 0; i < n; i++) out[i] = (uint8_t)lrintf(film_tonemap_value(f->rgb[i] * gain) * 255.0f);
     return out;
 }

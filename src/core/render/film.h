@@ -1,8 +1,11 @@
 /* film.h — the rendered frame: linear RGB and the auxiliary layers, tone mapping to 8-bit sRGB
  * and writing EXR and PNG files.
  *
- * Tone mapping for PNG: multiply by 2^exposure, apply the ACES filmic curve as fitted by
- * Narkowicz (2015), then encode with the sRGB transfer function. The EXR keeps linear values.
+ * Tone mapping for PNG: multiply by pi * 2^exposure, apply the ACES filmic curve as fitted by
+ * Narkowicz (2015), then encode with the sRGB transfer function. The factor pi makes exposure 0
+ * a daylight exposure: a white Lambertian surface facing a sun of irradiance 1 (radiance 1/pi)
+ * comes out just below white, an 18 % grey in the sun as a mid-tone. The EXR keeps linear
+ * values.
  *
  * Ownership: film_new allocates all layers; film_free releases them. */
 #ifndef SYLVA_FILM_H

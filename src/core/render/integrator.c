@@ -69,13 +69,15 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
         struct RTCRayHit rh;
         ray_init(&rh, o, d, 0.0f, INFINITY);
         if (!trace(ctx, &rh)) {
-            vec3 sky = lights_sky(l, d);
-            float w = 1.0f;
+            /* The camera sees the exact sky; light reaching surfaces uses the tabulated sky, the
+             * same function next-event estimation samples, so both MIS strategies agree. */
             if (prev_pdf > 0.0f && l->table.rgb) {
                 float rgb[3], fd[3] = {d.x, d.y, d.z};
-                w = power_heuristic(prev_pdf, sky_table_pdf(&l->table, fd, rgb));
+                float w = power_heuristic(prev_pdf, sky_table_pdf(&l->table, fd, rgb));
+                L = v3_add(L, v3_scale(v3_mul(beta, v3(rgb[0], rgb[1], rgb[2])), w));
+            } else {
+                L = v3_add(L, v3_mul(beta, lights_sky(l, d)));
             }
-            L = v3_add(L, v3_scale(v3_mul(beta, sky), w));
             if (lights_in_sun(l, d)) {
                 float ws = prev_pdf > 0.0f ? power_heuristic(prev_pdf, 1.0f / l->solid_angle) : 1.0f;
                 L = v3_add(L, v3_scale(v3_mul(beta, l->sun_radiance), ws));
@@ -116,7 +118,7 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
             vec3 f = bsdf_eval(h.mat, h.albedo, n, wo, wi, &pdf_b);
             float c = fabsf(v3_dot(n, wi));
             if (pdf_l > 0.0f && v3_max(f) > 0.0f && c > 0.0f && visible(ctx, offset_point(h.p, ng, wi), wi, INFINITY)) {
-                vec3 Ls = lights_sky(l, wi);
+                vec3 Ls = v3(rgb[0], rgb[1], rgb[2]);
                 L = v3_add(L, v3_mul(beta, v3_scale(v3_mul(f, Ls), c / pdf_l * power_heuristic(pdf_l, pdf_b))));
             }
         }

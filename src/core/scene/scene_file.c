@@ -77,9 +77,13 @@ static int located(err_buf *err, const char *file, uint32_t line, uint32_t colum
     return err_set(err, "%s:%u:%u: %s", file, line, column, msg);
 }
 
-static int out_of_memory(loader *L) { return err_set(L->err, "%s: out of memory while loading", L->file); }
+static int out_of_memory(loader *L)
+{
+    return err_set(L->err, "%s: out of memory while loading", L->file);
+}
 
-static const char *arena_printf(arena *a, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static const char *arena_printf(arena *a, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3)));
 static const char *arena_printf(arena *a, const char *fmt, ...)
 {
     va_list ap;
@@ -134,6 +138,14 @@ static void copy3(double out[3], const sylva_value *v)
 
 static double length3(const double v[3]) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
+/* The spec of one host key (tables are static; every name asked for exists). */
+static const sylva_param_spec *host_key(const host_schema *schema, const char *name)
+{
+    for (uint32_t k = 0; k < schema->n_params; k++)
+        if (!strcmp(schema->params[k].name, name)) return &schema->params[k];
+    return &schema->params[0];
+}
+
 /* A list of names for messages: "a, b, c" (cut when long). */
 static void name_list(const char *const *names, uint32_t n, char *buf, size_t size)
 {
@@ -166,8 +178,8 @@ static int unknown_name(loader *L, const char *file, const sylva_value *v, const
 {
     const char *near = param_nearest_name(v->s, defined, n_defined);
     if (near)
-        return located(L->err, file, v->line, v->column, "unknown %s '%s' in '%s'; did you mean '%s'?",
-                       kind, v->s, where, near);
+        return located(L->err, file, v->line, v->column,
+                       "unknown %s '%s' in '%s'; did you mean '%s'?", kind, v->s, where, near);
     if (!n_defined)
         return located(L->err, file, v->line, v->column,
                        "unknown %s '%s' in '%s'; the scene defines no %s", kind, v->s, where,
@@ -295,7 +307,8 @@ static int read_ecology(loader *L, const ynode *node, uint32_t line, uint32_t co
                        "missing required key 'plugin' in 'ecology' (the ecology plugin to use)");
     const sylva_plugin *d;
     const char *name;
-    if (find_plugin(L, &scope, pp, &host_schema_ecology.params[0], SYLVA_KIND_ECOLOGY, &d, &name))
+    if (find_plugin(L, &scope, pp, host_key(&host_schema_ecology, "plugin"), SYLVA_KIND_ECOLOGY, &d,
+                    &name))
         return -1;
     const sylva_params *host, *params;
     if (validate_shared(L, node, &scope, host_schema_ecology.params, host_schema_ecology.n_params,
@@ -325,8 +338,8 @@ static int read_terrain(loader *L, const ynode *node, uint32_t line, uint32_t co
     const ynode_pair *pp = ynode_get_pair(node, "plugin");
     if (pp) {
         const sylva_plugin *d;
-        if (find_plugin(L, &scope, pp, &host_schema_terrain.params[0], SYLVA_KIND_TERRAIN, &d,
-                        &t->plugin))
+        if (find_plugin(L, &scope, pp, host_key(&host_schema_terrain, "plugin"), SYLVA_KIND_TERRAIN,
+                        &d, &t->plugin))
             return -1;
         if (validate_shared(L, node, &scope, host_schema_terrain.params,
                             host_schema_terrain.n_params, d->params, d->n_params, NULL, &host,
@@ -355,7 +368,8 @@ static int read_terrain(loader *L, const ynode *node, uint32_t line, uint32_t co
             return located(L->err, L->file, grid->line, grid->column,
                            "'grid' needs at least 2 rows and 2 columns of heights, got %u x %u",
                            grid->rows, grid->cols);
-        const sylva_value *origin = sylva_param(host, "origin"), *spacing = sylva_param(host, "spacing");
+        const sylva_value *origin = sylva_param(host, "origin"),
+                          *spacing = sylva_param(host, "spacing");
         t->source = TERRAIN_GRID;
         t->grid = grid->list, t->nx = grid->cols, t->ny = grid->rows;
         t->origin[0] = origin->list[0], t->origin[1] = origin->list[1];
@@ -415,9 +429,10 @@ static int read_shape(loader *L, const char *file, shape_kind kind, const sylva_
             }
         }
     if (uv->is_set && (uv->cols != 2 || uv->rows != vtx->rows))
-        return located(L->err, file, uv->line, uv->column,
-                       "'uvs' must be %u rows of 2 numbers [u, v] (one per vertex), got %u rows of %u",
-                       vtx->rows, uv->rows, uv->cols);
+        return located(
+            L->err, file, uv->line, uv->column,
+            "'uvs' must be %u rows of 2 numbers [u, v] (one per vertex), got %u rows of %u",
+            vtx->rows, uv->rows, uv->cols);
     s->vertices = vtx->list, s->n_vertices = vtx->rows;
     s->triangles = tri->list, s->n_triangles = tri->rows;
     if (uv->is_set) s->uvs = uv->list, s->n_uvs = uv->rows;
@@ -507,19 +522,17 @@ static int include_file(loader *L, const ynode *item, const char *file, const ch
     L->seen[L->n_seen++] = inc;
 
     yaml_doc doc;
-    err_buf inner;
-    err_clear(&inner);
-    if (yaml_doc_load(L->a, path, shown, &doc, &inner)) {
-        if (strstr(inner.msg, ": cannot open:") || strstr(inner.msg, ": not a regular file"))
-            return located(L->err, file, item->line, item->column, "cannot include '%s': %s", rel,
-                           inner.msg);
-        memcpy(L->err->msg, inner.msg, sizeof inner.msg);
-        return -1;
-    }
+    int rc = yaml_doc_load(L->a, path, shown, &doc, L->err);
+    if (rc == YAML_DOC_UNREADABLE)
+        return err_prefix(L->err, "%s:%u:%u: cannot include '%s': ", file, item->line,
+                          item->column, rel);
+    if (rc) return -1;
     if (!doc.root || doc.root->kind != YNODE_MAPPING)
-        return located(L->err, shown, doc.root ? doc.root->line : 1, doc.root ? doc.root->column : 1,
+        return located(L->err, shown, doc.root ? doc.root->line : 1,
+                       doc.root ? doc.root->column : 1,
                        "an included species file must hold a mapping with a 'species:' section, "
-                       "got %s", ynode_kind_phrase(doc.root));
+                       "got %s",
+                       ynode_kind_phrase(doc.root));
     for (uint32_t i = 0; i < doc.root->n_pairs; i++) {
         const ynode_pair *pr = &doc.root->pairs[i];
         if (strcmp(pr->key, "species"))
@@ -534,7 +547,7 @@ static int include_file(loader *L, const ynode *item, const char *file, const ch
     const char *inc_dir = folder_of(L->a, canon);
     if (!inc_dir) return out_of_memory(L);
     L->chain[L->chain_len++] = inc;
-    int rc = collect_species(L, species, shown, inc_dir);
+    rc = collect_species(L, species, shown, inc_dir);
     L->chain_len--;
     return rc;
 }
@@ -594,7 +607,9 @@ static int read_species_entry(loader *L, const species_entry *e, species_spec *s
     const char *section = L->species_section;
     if (pp) {
         const sylva_plugin *d;
-        if (find_plugin(L, &scope, pp, &hs[0], SYLVA_KIND_TREE, &d, &sp->plugin)) return -1;
+        if (find_plugin(L, &scope, pp, host_key(&host_schema_species, "plugin"), SYLVA_KIND_TREE,
+                        &d, &sp->plugin))
+            return -1;
         if (validate_shared(L, map, &scope, hs, hn, d->params, d->n_params, section, &host,
                             &sp->params))
             return -1;
@@ -606,7 +621,9 @@ static int read_species_entry(loader *L, const species_entry *e, species_spec *s
         sp->variants = (uint32_t)sylva_param_int(host, "variants");
     } else {
         sylva_value kind;
-        if (param_value_read(L->a, shp->value, &hs[2], &scope, &kind, L->err)) return -1;
+        if (param_value_read(L->a, shp->value, host_key(&host_schema_species, "shape"), &scope,
+                             &kind, L->err))
+            return -1;
         const host_schema *shape = host_schema_shape((shape_kind)kind.i);
         const sylva_params *shape_params;
         if (validate_shared(L, map, &scope, hs, hn, shape->params, shape->n_params, section,
@@ -622,7 +639,16 @@ static int read_species_entry(loader *L, const species_entry *e, species_spec *s
         sp->variants = 1;
     }
     const ynode_pair *eco = ynode_get_pair(map, section);
-    if (!eco) return 0;
+    if (!eco) {
+        /* A species without a block takes the ecology plugin's defaults, so the plugin always
+         * receives a complete block for every species. */
+        if (!L->ecology || !L->ecology->species_section) return 0;
+        param_scope ds = {file, e->dir, arena_printf(L->a, "species.%s.%s", e->name, section), NULL, 0,
+                          e->line, e->column};
+        if (!ds.where) return out_of_memory(L);
+        return params_validate(L->a, NULL, L->ecology->species_params, L->ecology->n_species_params,
+                               &ds, &sp->ecology, L->err);
+    }
     if (!L->ecology)
         return located(L->err, file, eco->key_line, eco->key_column,
                        "species '%s' has an '%s:' block, but the scene has no 'ecology:' section "
@@ -726,7 +752,9 @@ static int read_objects(loader *L, const ynode *node)
                            "missing required key 'shape' in '%s' (mesh, box, sphere, quad or disk)",
                            scope.where);
         sylva_value kind;
-        if (param_value_read(L->a, shape_node, &os[1], &scope, &kind, L->err)) return -1;
+        if (param_value_read(L->a, shape_node, host_key(&host_schema_object, "shape"), &scope,
+                             &kind, L->err))
+            return -1;
         const host_schema *shape = host_schema_shape((shape_kind)kind.i);
         const sylva_params *p, *sp;
         if (validate_shared(L, item, &scope, os, host_schema_object.n_params, shape->params,
@@ -739,7 +767,8 @@ static int read_objects(loader *L, const ynode *node)
         copy3(o->position, sylva_param(p, "position"));
         copy3(o->rotation_deg, sylva_param(p, "rotation"));
         copy3(o->scale, sylva_param(p, "scale"));
-        if (material_ref(L, L->file, sylva_param(p, "material"), scope.where, &o->material)) return -1;
+        if (material_ref(L, L->file, sylva_param(p, "material"), scope.where, &o->material))
+            return -1;
         o->line = item->line, o->column = item->column;
         sf->n_objects++;
     }
@@ -956,12 +985,18 @@ static int load(loader *L, const char *path)
         return -1;
     const ynode_pair *eco = ynode_get_pair(L->root, "ecology");
     const ynode_pair *ter = ynode_get_pair(L->root, "terrain");
-    if (read_ecology(L, eco ? eco->value : NULL, eco ? eco->key_line : 0, eco ? eco->key_column : 0) ||
-        read_terrain(L, ter ? ter->value : NULL, ter ? ter->key_line : 0, ter ? ter->key_column : 0) ||
+    if (read_ecology(L, eco ? eco->value : NULL, eco ? eco->key_line : 0,
+                     eco ? eco->key_column : 0) ||
+        read_terrain(L, ter ? ter->value : NULL, ter ? ter->key_line : 0,
+                     ter ? ter->key_column : 0) ||
         read_species(L, ynode_get(L->root, "species")) ||
         read_plants(L, ynode_get(L->root, "plants")) ||
         read_objects(L, ynode_get(L->root, "objects")))
         return -1;
+    if (L->sf->ecology.plugin && L->sf->terrain.source == TERRAIN_NONE)
+        return located(L->err, L->file, L->sf->ecology.line, L->sf->ecology.column,
+                       "the ecology plugin '%s' places plants on the terrain, but the scene has no "
+                       "'terrain:' section; add one (grid: ... or plugin: ...)", L->sf->ecology.plugin);
     return 0;
 }
 

@@ -9,6 +9,7 @@
 #include "scene/yaml_doc.h"
 
 #include <errno.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -72,7 +73,8 @@ static int attach(doc_builder *b, const ynode *n)
         c->have_key = 1;
         return 0;
     }
-    if (grow(c, sizeof(ynode_pair))) return err_set(b->err, "%s: out of memory while reading", b->file);
+    if (grow(c, sizeof(ynode_pair)))
+        return err_set(b->err, "%s: out of memory while reading", b->file);
     ynode_pair *p = &((ynode_pair *)c->children)[c->n++];
     *p = c->key;
     p->value = n;
@@ -161,7 +163,8 @@ static int scalar_node(doc_builder *b, const yaml_event_t *ev)
     size_t len = ev->data.scalar.length;
     const char *text = (const char *)ev->data.scalar.value;
     if (len > YAML_DOC_MAX_SCALAR_BYTES)
-        return err_set(b->err, "%s:%u:%u: a scalar of %zu bytes is longer than the limit of %zu bytes",
+        return err_set(b->err,
+                       "%s:%u:%u: a scalar of %zu bytes is longer than the limit of %zu bytes",
                        b->file, mark_line(ev->start_mark), mark_column(ev->start_mark), len,
                        YAML_DOC_MAX_SCALAR_BYTES);
     if (memchr(text, '\0', len))
@@ -244,7 +247,8 @@ static void offset_position(const char *text, size_t len, size_t offset, uint32_
 
 static int syntax_error(doc_builder *b, const yaml_parser_t *p)
 {
-    if (p->error == YAML_MEMORY_ERROR) return err_set(b->err, "%s: out of memory while reading", b->file);
+    if (p->error == YAML_MEMORY_ERROR)
+        return err_set(b->err, "%s: out of memory while reading", b->file);
     if (p->error == YAML_READER_ERROR) {
         uint32_t line, column;
         offset_position(b->text, b->len, p->problem_offset, &line, &column);
@@ -272,7 +276,8 @@ int yaml_doc_parse(arena *a, const char *text, size_t len, const char *file_labe
                        len, YAML_DOC_MAX_FILE_BYTES >> 20);
 
     yaml_parser_t parser;
-    if (!yaml_parser_initialize(&parser)) return err_set(err, "%s: out of memory while reading", file);
+    if (!yaml_parser_initialize(&parser))
+        return err_set(err, "%s: out of memory while reading", file);
     yaml_parser_set_input_string(&parser, (const unsigned char *)text, len);
 
     doc_builder b = {.a = a, .file = doc->file, .text = text, .len = len, .err = err};
@@ -294,33 +299,43 @@ int yaml_doc_parse(arena *a, const char *text, size_t len, const char *file_labe
     return 0;
 }
 
+static int unreadable(err_buf *err, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static int unreadable(err_buf *err, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    err_vset(err, fmt, ap);
+    va_end(ap);
+    return YAML_DOC_UNREADABLE;
+}
+
 int yaml_doc_load(arena *a, const char *path, const char *file_label, yaml_doc *doc, err_buf *err)
 {
     const char *file = file_label ? file_label : path;
     FILE *f = fopen(path, "rb");
-    if (!f) return err_set(err, "%s: cannot open: %s", file, strerror(errno));
+    if (!f) return unreadable(err, "%s: cannot open: %s", file, strerror(errno));
     struct stat st;
     if (fstat(fileno(f), &st) != 0 || !S_ISREG(st.st_mode)) {
         fclose(f);
-        return err_set(err, "%s: not a regular file", file);
+        return unreadable(err, "%s: not a regular file", file);
     }
     if ((unsigned long long)st.st_size > YAML_DOC_MAX_FILE_BYTES) {
         fclose(f);
-        return err_set(err, "%s: the file is %lld bytes, larger than the limit of %zu MiB", file,
+        return unreadable(err, "%s: the file is %lld bytes, larger than the limit of %zu MiB", file,
                        (long long)st.st_size, YAML_DOC_MAX_FILE_BYTES >> 20);
     }
     size_t size = (size_t)st.st_size;
     char *text = malloc(size + 1); /* owned here; freed below */
     if (!text) {
         fclose(f);
-        return err_set(err, "%s: out of memory while reading", file);
+        return unreadable(err, "%s: out of memory while reading", file);
     }
     size_t got = fread(text, 1, size, f);
     int read_failed = ferror(f);
     fclose(f);
     if (read_failed || got != size) {
         free(text);
-        return err_set(err, "%s: read error", file);
+        return unreadable(err, "%s: read error", file);
     }
     text[size] = '\0';
     int rc = yaml_doc_parse(a, text, size, file, doc, err);

@@ -52,9 +52,12 @@ typedef struct yaml_doc {
     const ynode *root;         /* NULL when the file holds no document (empty or comments) */
 } yaml_doc;
 
+#define YAML_DOC_UNREADABLE (-2) /* yaml_doc_load: the file could not be opened or read */
+
 /* Reads `path` and builds its tree in `a`. `file_label` names the file in messages (NULL: the
- * path). Returns 0 and fills *doc, or -1 with err set to "file:line:column: message" (or
- * "file: message" when the file cannot be read). */
+ * path). Returns 0 and fills *doc; YAML_DOC_UNREADABLE with err "file: reason" when the file
+ * cannot be opened, is not a regular file, is too large or fails to read; or -1 with err
+ * "file:line:column: message" for a problem in its text. */
 int yaml_doc_load(arena *a, const char *path, const char *file_label, yaml_doc *doc,
                   err_buf *err);
 /* The same for text already in memory (len bytes). */

@@ -127,6 +127,12 @@ static int32_t host_material_new(sylva_host *h, const sylva_material_desc *d)
         if (!(d->albedo[k] >= 0 && d->albedo[k] <= 1 && d->transmittance[k] >= 0 && d->transmittance[k] <= 1))
             return host_error(h, "material '%s': albedo and transmittance must be in [0, 1]",
                               d->name ? d->name : "?");
+    if (d->bsdf == SYLVA_BSDF_LEAF)
+        for (int k = 0; k < 3; k++)
+            if (d->albedo[k] + d->transmittance[k] > 1.0f)
+                return host_error(h, "material '%s': albedo + transmittance is %g in channel %d; a leaf "
+                                  "cannot scatter more than it receives (at most 1)",
+                                  d->name ? d->name : "?", d->albedo[k] + d->transmittance[k], k);
     err_buf e;
     int32_t id = scene_add_material(h->scene, d, &e);
     if (id < 0) host_error(h, "%s", e.msg);

@@ -3,24 +3,7 @@
  * asking forever or listing the same plugin many times. */
 #include "sylva/plugin.h"
 
-static int flat_create(const sylva_host_api *api, sylva_host *host, const sylva_params *params,
-                       void **state)
-{
-    *state = NULL;
-    return SYLVA_OK;
-}
-
-static int flat_generate(void *state, const sylva_host_api *api, sylva_host *host,
-                         const void *request, void *out)
-{
-    sylva_heightfield *hf = api->heightfield_new(host, 2, 2, 0); /* owned by the host */
-    if (!hf) return api->error(host, "cannot allocate a 2 x 2 heightfield");
-    hf->dx = hf->dy = 1.0;
-    ((sylva_terrain_out *)out)->terrain = hf;
-    return SYLVA_OK;
-}
-
-static void flat_destroy(void *state) { (void)state; }
+#include "flat_terrain_ops.h"
 
 static const sylva_plugin broken_endless = {
     .size = sizeof(sylva_plugin),

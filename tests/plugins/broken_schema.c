@@ -2,24 +2,7 @@
  * maximum (1 m): the host must refuse the plugin, naming the parameter and both numbers. */
 #include "sylva/plugin.h"
 
-static int flat_create(const sylva_host_api *api, sylva_host *host, const sylva_params *params,
-                       void **state)
-{
-    *state = NULL;
-    return SYLVA_OK;
-}
-
-static int flat_generate(void *state, const sylva_host_api *api, sylva_host *host,
-                         const void *request, void *out)
-{
-    sylva_heightfield *hf = api->heightfield_new(host, 2, 2, 0); /* owned by the host */
-    if (!hf) return api->error(host, "cannot allocate a 2 x 2 heightfield");
-    hf->dx = hf->dy = 1.0;
-    ((sylva_terrain_out *)out)->terrain = hf;
-    return SYLVA_OK;
-}
-
-static void flat_destroy(void *state) { (void)state; }
+#include "flat_terrain_ops.h"
 
 static const sylva_param_spec broken_schema_params[] = {
     {.name = "amplitude", .type = SYLVA_P_REAL, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX,

@@ -141,6 +141,11 @@ static int32_t host_material_new(sylva_host *h, const sylva_material_desc *d)
 
 static sylva_heightfield *host_heightfield_new(sylva_host *h, uint32_t nx, uint32_t ny, int with_material)
 {
+    if (h->kind && h->kind != SYLVA_KIND_TERRAIN) {
+        host_error(h, "heightfield_new is for terrain plugins; a %s plugin cannot replace the terrain",
+                   h->kind == SYLVA_KIND_TREE ? "tree" : "ecology");
+        return NULL;
+    }
     if (nx < 2 || ny < 2 || nx > 65536 || ny > 65536 || (uint64_t)nx * ny > (1ull << 28)) {
         host_error(h, "heightfield of %u x %u nodes: each side must be 2 to 65536 and the total at "
                    "most 2^28 nodes", nx, ny);
@@ -177,6 +182,8 @@ static int host_terrain_normal(sylva_host *h, double x, double y, double n[3])
 
 static int host_plant_add(sylva_host *h, const sylva_plant *p)
 {
+    if (h->kind && h->kind != SYLVA_KIND_ECOLOGY)
+        return host_error(h, "plant_add is for ecology plugins; plants of a scene come from its ecology");
     if (!p || p->size < sizeof(sylva_plant)) return host_error(h, "plant_add: the plant's size is wrong");
     if (p->species >= h->n_species)
         return host_error(h, "plant_add: species %u does not exist (%u species)", p->species, h->n_species);

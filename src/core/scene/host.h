@@ -25,6 +25,8 @@ struct sylva_host {
     /* ecology: plants are collected here, then turned into instances */
     sylva_plant *plants; uint32_t n_plants, cap_plants; /* owned */
     uint32_t n_species;    /* ecology: species count for checking plant_add */
+    sylva_kind kind;       /* the calling plugin's kind: heightfield_new only for terrain,
+                              plant_add only for ecology; 0 (tests) allows both */
 };
 
 void host_init(sylva_host *h, scene *sc, const char *scene_dir, uint64_t seed, const char *context,

@@ -113,7 +113,7 @@ static int build_terrain(scene *s, const scene_file *sf, const plugin_registry *
     snprintf(context, sizeof context, "terrain plugin '%s'", t->plugin);
     sylva_host h;
     host_init(&h, s, sf->dir, rng_combine(sf->image.seed, rng_hash_str("terrain")), context, err);
-    h.verbose = opt->verbose, h.quiet = opt->quiet;
+    h.verbose = opt->verbose, h.quiet = opt->quiet, h.kind = SYLVA_KIND_TERRAIN;
     const sylva_host_api *api = host_api_table();
     void *state = NULL;
     int rc = lp->desc->create(api, &h, t->params, &state);
@@ -184,7 +184,7 @@ static int build_species(scene *s, const scene_file *sf, const plugin_registry *
         sylva_host h;
         uint64_t seed = rng_combine(sf->image.seed, rng_hash_str(sp->name));
         host_init(&h, s, sf->dir, seed, context, err);
-        h.verbose = opt->verbose, h.quiet = opt->quiet;
+        h.verbose = opt->verbose, h.quiet = opt->quiet, h.kind = SYLVA_KIND_TREE;
         void *state = NULL;
         int rc = lp->desc->create(api, &h, sp->params, &state);
         if (rc) {
@@ -278,7 +278,7 @@ static int build_ecology(scene *s, const scene_file *sf, const plugin_registry *
     snprintf(context, sizeof context, "ecology plugin '%s'", e->plugin);
     sylva_host h;
     host_init(&h, s, sf->dir, rng_combine(sf->image.seed, rng_hash_str("ecology")), context, err);
-    h.verbose = opt->verbose, h.quiet = opt->quiet, h.n_species = sf->n_species;
+    h.verbose = opt->verbose, h.quiet = opt->quiet, h.n_species = sf->n_species, h.kind = SYLVA_KIND_ECOLOGY;
     const sylva_host_api *api = host_api_table();
     void *state = NULL;
     int rc = lp->desc->create(api, &h, e->params, &state);

@@ -1,0 +1,134 @@
+/* test_host_api.c — the host API table as plugins see it: every misuse becomes a sentence, never
+ * a crash; streams are keyed; ownership stays with the scene. */
+#include "harness.h"
+
+#include "scene/host.h"
+#include "scene/scene.h"
+
+TEST(rng_streams_are_keyed)
+{
+    scene *s = scene_new();
+    err_buf err = {{0}};
+    sylva_host h;
+    host_init(&h, s, "/tmp", 42, "test", &err);
+    sylva_rng a, b, c;
+    host_api_table()->rng_init(&h, &a, "placement", 3);
+    host_api_table()->rng_init(&h, &b, "placement", 3);
+    host_api_table()->rng_init(&h, &c, "placement", 4);
+    int same_c = 0;
+    for (int i = 0; i < 100; i++) {
+        uint64_t x = host_api_table()->rng_u64(&a), y = host_api_table()->rng_u64(&b), z = host_api_table()->rng_u64(&c);
+        CHECK(x == y);
+        same_c += x == z;
+    }
+    CHECK_INT(same_c, 0);
+    double u = host_api_table()->rng_uniform(&a);
+    CHECK(u >= 0 && u < 1);
+    host_release(&h);
+    scene_free(s);
+}
+
+TEST(heightfield_only_for_terrain)
+{
+    scene *s = scene_new();
+    err_buf err = {{0}};
+    sylva_host h;
+    host_init(&h, s, "/tmp", 1, "tree plugin 'x'", &err);
+    h.kind = SYLVA_KIND_TREE;
+    CHECK(host_api_table()->heightfield_new(&h, 4, 4, 0) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "for terrain plugins");
+    h.kind = SYLVA_KIND_TERRAIN;
+    CHECK(host_api_table()->heightfield_new(&h, 1, 4, 0) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "each side must be 2 to 65536");
+    sylva_heightfield *hf = host_api_table()->heightfield_new(&h, 3, 2, 1);
+    CHECK(hf != NULL && s->terrain == hf);
+    if (hf) CHECK_INT(hf->material[5], -1);
+    host_release(&h);
+    scene_free(s); /* frees the heightfield */
+}
+
+TEST(plants_only_for_ecology_and_checked)
+{
+    scene *s = scene_new();
+    err_buf err = {{0}};
+    sylva_host h;
+    host_init(&h, s, "/tmp", 1, "ecology plugin 'x'", &err);
+    h.kind = SYLVA_KIND_TERRAIN;
+    sylva_plant p = {.size = sizeof p, .species = 0, .age = 0.5};
+    CHECK(host_api_table()->plant_add(&h, &p) != SYLVA_OK);
+    CHECK_STR_CONTAINS(err.msg, "for ecology plugins");
+    h.kind = SYLVA_KIND_ECOLOGY;
+    h.n_species = 1;
+    p.species = 1;
+    CHECK(host_api_table()->plant_add(&h, &p) != SYLVA_OK);
+    CHECK_STR_CONTAINS(err.msg, "species 1 does not exist");
+    p.species = 0, p.age = 1.5;
+    CHECK(host_api_table()->plant_add(&h, &p) != SYLVA_OK);
+    CHECK_STR_CONTAINS(err.msg, "outside (0, 1]");
+    p.age = 1.0;
+    CHECK(host_api_table()->plant_add(&h, &p) == SYLVA_OK);
+    CHECK_INT(h.n_plants, 1);
+    host_release(&h);
+    scene_free(s);
+}
+
+TEST(mesh_and_material_misuse)
+{
+    scene *s = scene_new();
+    err_buf err = {{0}};
+    sylva_host h;
+    host_init(&h, s, "/tmp", 1, "tree plugin 'x'", &err);
+    mesh *m = mesh_new();
+    float pos[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    uint32_t tri[3] = {0, 1, 2};
+    int32_t bad_mat[1] = {99};
+    CHECK(host_api_table()->mesh_append(&h, m, pos, NULL, NULL, 3, tri, bad_mat, 1) != SYLVA_OK);
+    CHECK_STR_CONTAINS(err.msg, "material id 99");
+    CHECK(host_api_table()->mesh_append(&h, NULL, pos, NULL, NULL, 3, tri, NULL, 1) != SYLVA_OK);
+    CHECK(host_api_table()->mesh_append(&h, m, pos, NULL, NULL, 3, tri, NULL, 1) == SYLVA_OK);
+    CHECK_INT(host_api_table()->mesh_triangle_count(m), 1);
+    sylva_material_desc leaf = {.size = sizeof leaf, .name = "glow", .bsdf = SYLVA_BSDF_LEAF,
+                                .albedo = {0.7f, 0.5f, 0.5f}, .transmittance = {0.5f, 0.2f, 0.2f}, .texture = -1};
+    CHECK(host_api_table()->material_new(&h, &leaf) < 0);
+    CHECK_STR_CONTAINS(err.msg, "cannot scatter more than it receives");
+    leaf.albedo[0] = 0.4f;
+    int32_t id = host_api_table()->material_new(&h, &leaf);
+    CHECK(id > 0);
+    leaf.texture = 7;
+    CHECK(host_api_table()->material_new(&h, &leaf) < 0);
+    uint8_t texel[4] = {10, 20, 30, 0};
+    CHECK(host_api_table()->texture_new(&h, "t", 0, 1, texel) < 0);
+    CHECK(host_api_table()->texture_new(&h, "t", 1, 1, texel) == 0);
+    CHECK(s->textures[0].has_alpha);
+    mesh_free(m);
+    host_release(&h);
+    scene_free(s);
+}
+
+TEST(param_error_is_located)
+{
+    scene *s = scene_new();
+    err_buf err = {{0}};
+    sylva_host h;
+    host_init(&h, s, "/tmp", 1, "terrain plugin 'x'", &err);
+    static const sylva_param_spec spec[] = {{.name = "alpha", .type = SYLVA_P_REAL, .help = "a"}};
+    sylva_value v[1] = {{.is_set = 1, .r = 2.0, .line = 7, .column = 12}};
+    sylva_params p = {.spec = spec, .n = 1, .values = v, .file = "scene.yaml", .line = 5, .column = 1};
+    CHECK(host_api_table()->param_error(&h, &p, "alpha", "must be below %g", 1.0) == SYLVA_ERR_PARAM);
+    CHECK_STR_CONTAINS(err.msg, "scene.yaml:7:12: 'alpha': must be below 1");
+    CHECK(h.error_set);
+    const char *r = host_api_table()->resolve_path(&h, "dem/a.tif");
+    CHECK(r && !strcmp(r, "/tmp/dem/a.tif"));
+    host_release(&h);
+    scene_free(s);
+}
+
+TEST(api_table_versions)
+{
+    CHECK_INT(host_api_table()->size, sizeof(sylva_host_api));
+    CHECK_INT(host_api_table()->abi_major, SYLVA_ABI_MAJOR);
+}
+
+TEST_LIST(TEST_CASE(api_table_versions), TEST_CASE(rng_streams_are_keyed), TEST_CASE(heightfield_only_for_terrain),
+          TEST_CASE(plants_only_for_ecology_and_checked), TEST_CASE(mesh_and_material_misuse),
+          TEST_CASE(param_error_is_located))

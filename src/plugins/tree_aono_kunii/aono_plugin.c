@@ -1,0 +1,125 @@
+/* aono_plugin.c — the plugin's operations: parameters and materials in create(), one age
+ * variant per generate() (skeleton, bark, leaves, one mesh_append), and destroy(). */
+#include "aono_plugin.h"
+
+#include <math.h>
+#include <stddef.h>
+#include <stdlib.h>
+
+#include "aono_config.h"
+#include "aono_grow.h"
+#include "aono_mesh.h"
+
+/* What create() keeps for generate(). Owned by the plugin until aono_destroy. */
+typedef struct aono_state {
+    aono_config cfg;
+    int32_t bark_material;
+    int32_t leaf_material; /* -1 without leaves */
+} aono_state;
+
+uint32_t aono_variant_levels(uint32_t levels, double age)
+{
+    double n = ceil(age * levels - 1e-9);
+    if (!(n >= 1.0)) return 1;
+    return n > levels ? levels : (uint32_t)n;
+}
+
+static int make_materials(const sylva_host_api *api, sylva_host *host, aono_state *st)
+{
+    const aono_config *c = &st->cfg;
+    sylva_material_desc bark = {.size = sizeof bark, .name = "tree_aono_kunii.bark", .bsdf = SYLVA_BSDF_LAMBERT,
+                                .texture = -1};
+    for (int k = 0; k < 3; k++) bark.albedo[k] = (float)c->bark_color[k];
+    st->bark_material = api->material_new(host, &bark);
+    if (st->bark_material < 0) return st->bark_material;
+    st->leaf_material = -1;
+    if (!c->leaf_count) return SYLVA_OK;
+    uint8_t *texels = malloc(4u * AONO_LEAF_TEXTURE_W * AONO_LEAF_TEXTURE_H); /* owned here; the host copies */
+    if (!texels) {
+        api->error(host, "out of memory for the leaf texture");
+        return SYLVA_ERR_NOMEM;
+    }
+    aono_leaf_texture(c->leaf_shape, AONO_LEAF_TEXTURE_W, AONO_LEAF_TEXTURE_H, texels);
+    int32_t tex = api->texture_new(host, "tree_aono_kunii.leaf", AONO_LEAF_TEXTURE_W, AONO_LEAF_TEXTURE_H, texels);
+    free(texels);
+    if (tex < 0) return tex;
+    sylva_material_desc leaf = {.size = sizeof leaf, .name = "tree_aono_kunii.leaf", .bsdf = SYLVA_BSDF_LEAF,
+                                .texture = tex, .alpha_mask = 1};
+    for (int k = 0; k < 3; k++)
+        leaf.albedo[k] = (float)c->leaf_color[k], leaf.transmittance[k] = (float)c->leaf_transmittance[k];
+    st->leaf_material = api->material_new(host, &leaf);
+    return st->leaf_material < 0 ? st->leaf_material : SYLVA_OK;
+}
+
+static void aono_destroy(void *state)
+{
+    aono_state *st = state;
+    if (!st) return;
+    aono_config_release(&st->cfg);
+    free(st);
+}
+
+static int aono_create(const sylva_host_api *api, sylva_host *host, const sylva_params *params, void **state)
+{
+    *state = NULL;
+    aono_state *st = calloc(1, sizeof *st); /* owned by the plugin until aono_destroy */
+    if (!st) {
+        api->error(host, "tree_aono_kunii: out of memory for its settings");
+        return SYLVA_ERR_NOMEM;
+    }
+    int rc = aono_config_read(api, host, params, &st->cfg);
+    if (!rc) rc = make_materials(api, host, st);
+    if (rc) {
+        aono_destroy(st);
+        return rc;
+    }
+    *state = st;
+    return SYLVA_OK;
+}
+
+static int aono_generate(void *state, const sylva_host_api *api, sylva_host *host, const void *request, void *out)
+{
+    const aono_state *st = state;
+    const sylva_tree_request *req = request;
+    sylva_tree_out *o = out;
+    if (req->size < offsetof(sylva_tree_request, age) + sizeof req->age ||
+        o->size < offsetof(sylva_tree_out, height) + sizeof o->height) {
+        api->error(host, "tree_aono_kunii: the host's tree request or output is too small");
+        return SYLVA_ERR_INTERNAL;
+    }
+    if (!(req->age > 0.0 && req->age <= 1.0))
+        return api->error(host, "tree_aono_kunii: variant age %g is outside (0, 1]", req->age);
+    aono_skeleton skel;
+    aono_mesh_buffer buf = {0};
+    int rc = aono_grow(&st->cfg, aono_variant_levels(st->cfg.levels, req->age), api, host, &skel);
+    if (rc) return rc;
+    rc = aono_mesh_branches(&st->cfg, &skel, st->bark_material, api, host, &buf);
+    if (!rc) rc = aono_mesh_leaves(&st->cfg, &skel, st->leaf_material, api, host, &buf);
+    aono_skeleton_release(&skel);
+    if (!rc) rc = api->mesh_append(host, o->mesh, buf.pos, buf.nrm, buf.uv, buf.nv, buf.tri, buf.mat, buf.nt);
+    if (!rc) {
+        double top = 0.0;
+        for (uint32_t i = 0; i < buf.nv; i++) top = fmax(top, buf.pos[3 * i + 2]);
+        o->height = top;
+    }
+    aono_mesh_buffer_release(&buf);
+    return rc;
+}
+
+static const sylva_plugin aono_descriptor = {
+    .size = sizeof(sylva_plugin),
+    .abi_major = SYLVA_ABI_MAJOR,
+    .abi_minor = SYLVA_ABI_MINOR,
+    .param_spec_size = sizeof(sylva_param_spec),
+    .kind = SYLVA_KIND_TREE,
+    .name = "tree_aono_kunii",
+    .summary = "Aono-Kunii branching trees with attractors and inhibitors (Petric's CAVIA model).",
+    .version = "1.0",
+    .params = aono_params,
+    .n_params = AONO_N_PARAMS,
+    .create = aono_create,
+    .generate = aono_generate,
+    .destroy = aono_destroy,
+};
+
+const sylva_plugin *aono_plugin(void) { return &aono_descriptor; }

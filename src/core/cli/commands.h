@@ -11,5 +11,6 @@ int cmd_plugins(int argc, char **argv);
 /* `sylva render SCENE [options]`: renders to EXR and PNG (see cmd_render.c for options and
  * exit codes). */
 int cmd_render(int argc, char **argv);
+int cmd_tree_stats(int argc, char **argv); /* `sylva tree-stats SCENE SPECIES`: a tree species' models in figures (cmd_tree_stats.c) */
 
 #endif

@@ -1,0 +1,581 @@
+/* tree_lsystem.c — the tree plugin `tree_lsystem`: L-systems in the L-parser language (001,
+ * MODELS.md §3) grown to the age each variant asks for by the branch-number law (002,
+ * MODELS.md §4). This file owns the schema, the plugin state and the order of work; reading,
+ * derivation, the turtle, the mesh, box counting and the law live in their own files.
+ *
+ * generate() for one variant:
+ *   1. the variant's height H(age) from height and height_by_age;
+ *   2. its recursion level: the full level, or — with branch_law — the level whose branch count
+ *      is nearest N2 = N1 (H1 / H2)^(-D/2) (002 eq. 6), N1 and D from the full-grown tree;
+ *   3. derivation to that level; a first turtle pass for the bounds; a second that builds the
+ *      mesh scaled to H(age) (or by unit_length metres per file unit) and rasterises the side
+ *      silhouette for D_B (002 eq. 3).
+ * Randomness (`~`) comes from api->rng_init(host, "tree_lsystem.jitter", 0), restarted for
+ * every pass, so both passes and every run see the same turns.
+ */
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "box_count.h"
+#include "branch_law.h"
+#include "lsys_derive.h"
+#include "lsys_mesh.h"
+#include "lsys_palette.h"
+#include "lsys_system.h"
+#include "lsys_turtle.h"
+#include "sylva/plugin.h"
+
+#define SILHOUETTE_LEVEL 10     /* the silhouette raster is 1024 x 1024 */
+#define SILHOUETTE_FIT_MIN 0    /* D_B fits the grids 1 x 1 ... */
+#define SILHOUETTE_FIT_MAX 7    /* ... 128 x 128 (boxes of 8 pixels and more) */
+#define MAX_NESTING 65536       /* [ ] and { } nesting */
+#define START_COLOUR 2          /* Lparser's starting colour index */
+
+static const char *const shape_choices[] = {"auto", "prism", "cylinder", NULL};
+static const double default_height_by_age[] = {0.0, 0.0, 1.0, 1.0};
+
+static const sylva_param_spec palette_members[] = {
+    {.name = "index", .type = SYLVA_P_INT, .flags = SYLVA_PARAM_REQUIRED | SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX,
+     .min = 0, .max = 65535, .help = "Colour index as c(x) sets it."},
+    {.name = "albedo", .type = SYLVA_P_VEC3, .flags = SYLVA_PARAM_REQUIRED | SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX,
+     .min = 0, .max = 1, .help = "Linear RGB reflectance of wood and leaves drawn in this colour."},
+    {.name = "transmittance", .type = SYLVA_P_VEC3, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
+     .max = 1, .help = "Linear RGB transmittance of leaves (polygons) in this colour; default half the albedo."},
+};
+
+static const sylva_param_spec tree_params[] = {
+    {.name = "source", .type = SYLVA_P_STRING,
+     .help = "The L-system text itself, numeric (Lparser 4) or keyword (Lparser 2.1) dialect; give source or file."},
+    {.name = "file", .type = SYLVA_P_PATH,
+     .help = "An L-parser .ls file in either dialect, relative to the scene file; give source or file."},
+    {.name = "recursion", .type = SYLVA_P_INT, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
+     .max = LSYS_MAX_RECURSION, .help = "Derivation steps of the full-grown tree (default: the file's)."},
+    {.name = "angle", .type = SYLVA_P_REAL, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = -360,
+     .max = 360, .unit = "deg", .help = "Standard turning angle (default: the file's)."},
+    {.name = "thickness", .type = SYLVA_P_REAL, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
+     .max = 1e6, .unit = "%", .help = "Width of a segment in percent of its length at the start (default: the file's)."},
+    {.name = "min_thickness", .type = SYLVA_P_REAL, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
+     .max = 1e6, .unit = "%", .help = "Smallest width of a segment in percent of its length (default: the file's, else 0)."},
+    {.name = "base_length", .type = SYLVA_P_REAL, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
+     .max = 1e9, .help = "Length of F at the start in the file's units; 0 takes the dialect's (numeric 100, keyword 1)."},
+    {.name = "height", .type = SYLVA_P_REAL,
+     .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_MIN_EXCLUSIVE | SYLVA_PARAM_HAS_MAX, .def = 10, .min = 0,
+     .max = 10000, .unit = "m", .help = "Height of the full-grown tree (age 1); each variant is scaled to its own height."},
+    {.name = "unit_length", .type = SYLVA_P_REAL, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
+     .max = 1e6, .unit = "m", .help = "Metres per file unit; when positive the models keep the L-system's own size and height is not used."},
+    {.name = "segment_shape", .type = SYLVA_P_ENUM, .def_str = "auto", .choices = shape_choices,
+     .help = "Segments as prisms (Lparser's blocks) or joined cylinders; auto follows the file's shape line, else cylinders."},
+    {.name = "sides", .type = SYLVA_P_INT, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .def = 8, .min = 5,
+     .max = LSYS_MESH_MAX_SIDES, .help = "Corners of a cylinder's cross-section (prisms have 4)."},
+    {.name = "lenient", .type = SYLVA_P_BOOL, .def = 0,
+     .help = "Drop unknown symbols and ignore unsupported keywords with a warning instead of failing."},
+    {.name = "max_string", .type = SYLVA_P_INT, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .def = 33554432,
+     .min = 1, .max = 1e9, .unit = "bytes", .help = "Longest derived string; a derivation that would grow past it fails."},
+    {.name = "max_segments", .type = SYLVA_P_INT, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .def = 2000000,
+     .min = 1, .max = 1e8, .help = "Most segments (F, Z) a model may draw."},
+    {.name = "max_polygons", .type = SYLVA_P_INT, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .def = 2000000,
+     .min = 1, .max = 1e8, .help = "Most polygons (leaves) a model may draw."},
+    {.name = "max_polygon_vertices", .type = SYLVA_P_INT, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX,
+     .def = 4096, .min = 3, .max = 65536, .help = "Most vertices open polygons may hold at once."},
+    {.name = "height_by_age", .type = SYLVA_P_POLYLINE, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
+     .max = 1, .def_list = default_height_by_age, .def_len = 2, .min_len = 1,
+     .help = "Height as a fraction of height against the normalised age, points [age, fraction] with age in [0, 1]."},
+    {.name = "branch_law", .type = SYLVA_P_BOOL, .def = 1,
+     .help = "Choose each age variant's recursion level by the branch-number law N2 = N1 (H1/H2)^(-D/2)."},
+    {.name = "box_dimension", .type = SYLVA_P_REAL, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
+     .max = 3, .help = "D of the branch-number law; 0 measures it from the full-grown tree's silhouette."},
+    {.name = "palette", .type = SYLVA_P_GROUP_LIST, .group = palette_members,
+     .n_group = sizeof palette_members / sizeof palette_members[0],
+     .help = "Colours for colour indices, overriding the file's color lines and the default palette."},
+};
+
+typedef struct palette_override {
+    int32_t index;
+    float albedo[3], transmittance[3];
+    int has_transmittance;
+} palette_override;
+
+/* The plugin's state for one species. Owned by the plugin until tree_destroy. */
+typedef struct tree_state {
+    lsys_system *sys;               /* owned */
+    uint32_t recursion;
+    double angle, thickness, min_thickness, base_length, height;
+    double unit_length;             /* metres per file unit; 0: scale each variant to its height */
+    uint32_t sides;
+    int flat;                       /* prisms */
+    uint64_t max_string, max_segments, max_polygons;
+    uint32_t max_polygon_vertices;
+    double *height_by_age;          /* owned: x y pairs */
+    uint32_t n_height_by_age;
+    int branch_law;
+    double box_dimension;           /* 0: measure */
+    palette_override *palette;      /* owned */
+    uint32_t n_palette;
+    int32_t *material;              /* owned: material id per key (-1: not made yet) */
+    uint32_t n_material;
+    /* The full-grown tree's figures for the branch-number law, made once. */
+    int law_ready;
+    uint64_t *level_branches;       /* owned: recursion + 1 counts */
+    double law_dimension;
+    int warned;                     /* structure warnings given once */
+    int has_last;
+    sylva_tree_stats last;
+} tree_state;
+
+typedef struct host_ref {
+    const sylva_host_api *api;
+    sylva_host *host;
+} host_ref;
+
+static void warn_to_host(void *ctx, const char *sentence)
+{
+    host_ref *h = ctx;
+    h->api->log(h->host, SYLVA_LOG_WARN, "%s", sentence);
+}
+
+static int fail(const sylva_host_api *api, sylva_host *host, int lsys_status, const lsys_error *e)
+{
+    api->error(host, "%s", e->msg);
+    switch (lsys_status) {
+    case LSYS_ERR_LIMIT: return SYLVA_ERR_LIMIT;
+    case LSYS_ERR_NOMEM: return SYLVA_ERR_NOMEM;
+    case LSYS_ERR_IO: return SYLVA_ERR_IO;
+    default: return SYLVA_ERR_PARAM;
+    }
+}
+
+static void tree_destroy(void *state)
+{
+    tree_state *s = state;
+    if (!s) return;
+    lsys_system_free(s->sys);
+    free(s->height_by_age);
+    free(s->palette);
+    free(s->material);
+    free(s->level_branches);
+    free(s);
+}
+
+static int read_palette(tree_state *s, const sylva_host_api *api, sylva_host *host, const sylva_params *params)
+{
+    const sylva_value *v = sylva_param(params, "palette");
+    if (!v || !v->len) return SYLVA_OK;
+    s->palette = calloc(v->len, sizeof *s->palette);
+    if (!s->palette) {
+        api->error(host, "tree_lsystem: out of memory for the palette");
+        return SYLVA_ERR_NOMEM;
+    }
+    for (uint32_t i = 0; i < v->len; i++) {
+        const sylva_params *e = &v->items[i];
+        palette_override *p = &s->palette[i];
+        p->index = (int32_t)sylva_param_int(e, "index");
+        const sylva_value *a = sylva_param(e, "albedo"), *t = sylva_param(e, "transmittance");
+        for (int k = 0; k < 3; k++) p->albedo[k] = (float)a->list[k];
+        if (t && t->is_set) {
+            p->has_transmittance = 1;
+            for (int k = 0; k < 3; k++) {
+                p->transmittance[k] = (float)t->list[k];
+                if (p->albedo[k] + p->transmittance[k] > 1.0f)
+                    return api->param_error(host, e, "transmittance",
+                                            "albedo + transmittance is %g in channel %d; a leaf cannot scatter "
+                                            "more than it receives (at most 1)",
+                                            p->albedo[k] + p->transmittance[k], k);
+            }
+        }
+        for (uint32_t j = 0; j < i; j++)
+            if (s->palette[j].index == p->index)
+                return api->param_error(host, e, "index", "colour index %d is given twice in the palette",
+                                        p->index);
+    }
+    s->n_palette = v->len;
+    return SYLVA_OK;
+}
+
+static int read_height_by_age(tree_state *s, const sylva_host_api *api, sylva_host *host, const sylva_params *params)
+{
+    const sylva_value *v = sylva_param(params, "height_by_age");
+    s->n_height_by_age = v->len;
+    s->height_by_age = malloc(2 * (size_t)v->len * sizeof *s->height_by_age);
+    if (!s->height_by_age) {
+        api->error(host, "tree_lsystem: out of memory");
+        return SYLVA_ERR_NOMEM;
+    }
+    memcpy(s->height_by_age, v->list, 2 * (size_t)v->len * sizeof *s->height_by_age);
+    for (uint32_t i = 0; i < v->len; i++)
+        if (!(v->list[2 * i] >= 0 && v->list[2 * i] <= 1))
+            return api->param_error(host, params, "height_by_age",
+                                    "age %g of point %u is outside [0, 1]; ages are normalised (1 = full grown)",
+                                    v->list[2 * i], i);
+    return SYLVA_OK;
+}
+
+/* H(age) / height: the polyline, flat beyond its ends; at a step the later point wins. */
+static double height_fraction(const tree_state *s, double age)
+{
+    const double *p = s->height_by_age;
+    uint32_t n = s->n_height_by_age;
+    if (age <= p[0]) return p[1];
+    for (uint32_t i = 1; i < n; i++) {
+        double x0 = p[2 * i - 2], x1 = p[2 * i];
+        if (age < x1) return p[2 * i - 1] + (age - x0) / (x1 - x0) * (p[2 * i + 1] - p[2 * i - 1]);
+    }
+    return p[2 * n - 1];
+}
+
+static int tree_create(const sylva_host_api *api, sylva_host *host, const sylva_params *params, void **state)
+{
+    *state = NULL;
+    const char *source = sylva_param_str(params, "source"), *file = sylva_param_str(params, "file");
+    const sylva_value *vsource = sylva_param(params, "source"), *vfile = sylva_param(params, "file");
+    int has_source = vsource->is_set && source, has_file = vfile->is_set && file;
+    if (has_source == has_file)
+        return api->param_error(host, params, has_source ? "file" : "source",
+                                "give the L-system either inline as source or as a file path, %s",
+                                has_source ? "not both" : "one of them is required");
+    tree_state *s = calloc(1, sizeof *s); /* owned by the plugin until tree_destroy */
+    if (!s) {
+        api->error(host, "tree_lsystem: out of memory for its state");
+        return SYLVA_ERR_NOMEM;
+    }
+    host_ref ref = {api, host};
+    lsys_read_options ro = {.lenient = (int)sylva_param_int(params, "lenient"), .warn = warn_to_host, .warn_ctx = &ref};
+    lsys_error e = {{0}};
+    int rc = has_file ? lsys_read_file(file, &ro, &s->sys, &e)
+                      : lsys_read(source, strlen(source), "source", &ro, &s->sys, &e);
+    if (rc) {
+        tree_destroy(s);
+        api->param_error(host, params, has_source ? "source" : "file", "%s", e.msg);
+        return rc == LSYS_ERR_IO ? SYLVA_ERR_IO : rc == LSYS_ERR_NOMEM ? SYLVA_ERR_NOMEM
+               : rc == LSYS_ERR_LIMIT ? SYLVA_ERR_LIMIT : SYLVA_ERR_PARAM;
+    }
+    const lsys_system *sys = s->sys;
+    const sylva_value *v;
+    s->recursion = (v = sylva_param(params, "recursion"))->is_set ? (uint32_t)v->i : sys->recursion;
+    s->angle = (v = sylva_param(params, "angle"))->is_set ? v->r : sys->angle_deg;
+    s->thickness = (v = sylva_param(params, "thickness"))->is_set ? v->r : sys->thickness;
+    s->min_thickness = (v = sylva_param(params, "min_thickness"))->is_set ? v->r : sys->min_thickness;
+    s->base_length = sylva_param_real(params, "base_length") > 0 ? sylva_param_real(params, "base_length")
+                                                                  : sys->base_length;
+    s->height = sylva_param_real(params, "height");
+    s->unit_length = sylva_param_real(params, "unit_length");
+    int64_t shape = sylva_param_int(params, "segment_shape");
+    s->flat = shape == 1 || (shape == 0 && sys->shape == 0);
+    s->sides = s->flat ? 4 : (uint32_t)sylva_param_int(params, "sides");
+    s->max_string = (uint64_t)sylva_param_int(params, "max_string");
+    s->max_segments = (uint64_t)sylva_param_int(params, "max_segments");
+    s->max_polygons = (uint64_t)sylva_param_int(params, "max_polygons");
+    if (sys->poly_limit && sys->poly_limit < s->max_polygons) s->max_polygons = sys->poly_limit;
+    s->max_polygon_vertices = (uint32_t)sylva_param_int(params, "max_polygon_vertices");
+    s->branch_law = (int)sylva_param_int(params, "branch_law");
+    s->box_dimension = sylva_param_real(params, "box_dimension");
+    if ((rc = read_palette(s, api, host, params)) || (rc = read_height_by_age(s, api, host, params))) {
+        tree_destroy(s);
+        return rc;
+    }
+    *state = s;
+    return SYLVA_OK;
+}
+
+/* ---- one turtle pass ---------------------------------------------------------------------- */
+
+typedef struct jitter {
+    const sylva_host_api *api;
+    sylva_rng rng;
+} jitter;
+
+static double jitter_next(void *ctx)
+{
+    jitter *j = ctx;
+    return j->api->rng_uniform(&j->rng);
+}
+
+static lsys_turtle_config turtle_config(const tree_state *s, jitter *j)
+{
+    return (lsys_turtle_config){.angle_deg = s->angle, .thickness = s->thickness, .min_thickness = s->min_thickness,
+                                .base_length = s->base_length, .colour = START_COLOUR,
+                                .max_segments = s->max_segments, .max_polygons = s->max_polygons,
+                                .max_polygon_vertices = s->max_polygon_vertices, .max_depth = MAX_NESTING,
+                                .tube_reach = s->flat ? sqrt(2.0) : 1.0,
+                                .random = jitter_next, .random_ctx = j};
+}
+
+static int interpret(const tree_state *s, const sylva_host_api *api, sylva_host *host, const unsigned char *str,
+                     size_t n, const lsys_sink *sinks, int n_sinks, lsys_turtle_stats *st, lsys_error *e)
+{
+    jitter j = {.api = api};
+    api->rng_init(host, &j.rng, "tree_lsystem.jitter", 0);
+    lsys_turtle_config cfg = turtle_config(s, &j);
+    return lsys_interpret(str, n, &cfg, sinks, n_sinks, st, e);
+}
+
+/* The silhouette raster over the model's side view (x–z), square, from the bounds. */
+static int silhouette_init(box_raster *r, const lsys_turtle_stats *st)
+{
+    double w = st->hi[0] - st->lo[0], h = st->hi[2] - st->lo[2];
+    double size = (w > h ? w : h) * 1.0001;
+    if (!(size > 0)) return -1;
+    return box_raster_init(r, SILHOUETTE_LEVEL, st->lo[0], st->lo[2], size);
+}
+
+/* ---- the branch-number law's figures of the full-grown tree ---------------------------------- */
+
+static int count_level(void *ctx, uint32_t level, const unsigned char *s, size_t n)
+{
+    uint64_t *branches = ctx;
+    branches[level] = branch_count(s, n);
+    return 0;
+}
+
+static int prepare_law(tree_state *s, const sylva_host_api *api, sylva_host *host)
+{
+    if (s->law_ready) return SYLVA_OK;
+    if (!s->level_branches) s->level_branches = calloc((size_t)s->recursion + 1, sizeof *s->level_branches);
+    if (!s->level_branches) {
+        api->error(host, "tree_lsystem: out of memory");
+        return SYLVA_ERR_NOMEM;
+    }
+    lsys_error e = {{0}};
+    unsigned char *str = NULL; /* owned here */
+    size_t n = 0;
+    int rc = lsys_derive(s->sys, s->recursion, s->max_string, count_level, s->level_branches, &str, &n, &e);
+    if (rc) return fail(api, host, rc, &e);
+    s->law_dimension = s->box_dimension;
+    if (!(s->law_dimension > 0)) {
+        lsys_turtle_stats st;
+        rc = interpret(s, api, host, str, n, NULL, 0, &st, &e);
+        box_raster r = {0};
+        if (!rc && st.segments && !silhouette_init(&r, &st)) {
+            lsys_sink sink = box_raster_sink(&r);
+            rc = interpret(s, api, host, str, n, &sink, 1, &st, &e);
+            if (!rc) s->law_dimension = box_dimension(&r, SILHOUETTE_FIT_MIN, SILHOUETTE_FIT_MAX);
+        }
+        box_raster_free(&r);
+    }
+    free(str);
+    if (rc) return fail(api, host, rc, &e);
+    s->law_ready = 1;
+    return SYLVA_OK;
+}
+
+/* ---- materials and the mesh ------------------------------------------------------------------ */
+
+static void colour_of(const tree_state *s, int32_t index, float albedo[3], float trans[3])
+{
+    for (uint32_t i = 0; i < s->n_palette; i++)
+        if (s->palette[i].index == index) {
+            memcpy(albedo, s->palette[i].albedo, 3 * sizeof *albedo);
+            if (s->palette[i].has_transmittance) memcpy(trans, s->palette[i].transmittance, 3 * sizeof *trans);
+            else lsys_leaf_transmittance(albedo, trans);
+            return;
+        }
+    if (index >= 0 && index < LSYS_MAX_FILE_COLOURS && s->sys->colour_given[index]) {
+        for (int k = 0; k < 3; k++) {
+            float a = lsys_srgb_to_linear(s->sys->colour_srgb[index][k]);
+            albedo[k] = a < LSYS_ALBEDO_CAP ? a : LSYS_ALBEDO_CAP;
+        }
+    } else {
+        lsys_palette_default(index, albedo);
+    }
+    lsys_leaf_transmittance(albedo, trans);
+}
+
+typedef struct mesh_out {
+    tree_state *s;
+    const sylva_host_api *api;
+    sylva_host *host;
+    sylva_mesh *mesh;
+    int32_t *mat;      /* owned by the caller of the build: one id per triangle of a chunk */
+    int status;        /* the failing call's status */
+} mesh_out;
+
+static int32_t material_for(mesh_out *o, int32_t key)
+{
+    tree_state *s = o->s;
+    if ((uint32_t)key >= s->n_material) {
+        uint32_t n = (uint32_t)key + 64;
+        int32_t *g = realloc(s->material, n * sizeof *g);
+        if (!g) {
+            o->api->error(o->host, "tree_lsystem: out of memory for materials");
+            o->status = SYLVA_ERR_NOMEM;
+            return -1;
+        }
+        for (uint32_t i = s->n_material; i < n; i++) g[i] = -1;
+        s->material = g, s->n_material = n;
+    }
+    if (s->material[key] >= 0) return s->material[key];
+    int32_t colour = key / 2;
+    int leaf = key % 2;
+    char name[64];
+    snprintf(name, sizeof name, "tree_lsystem colour %d %s", colour, leaf ? "leaf" : "wood");
+    sylva_material_desc d = {.size = sizeof d, .name = name, .bsdf = leaf ? SYLVA_BSDF_LEAF : SYLVA_BSDF_LAMBERT,
+                             .texture = -1};
+    float trans[3];
+    colour_of(s, colour, d.albedo, trans);
+    if (leaf) memcpy(d.transmittance, trans, sizeof trans);
+    int32_t id = o->api->material_new(o->host, &d);
+    if (id < 0) {
+        o->status = id;
+        return -1;
+    }
+    s->material[key] = id;
+    return id;
+}
+
+static int flush_to_host(void *ctx, const float *pos, const float *nrm, uint32_t nv, const uint32_t *tri,
+                         const int32_t *key, uint32_t nt)
+{
+    mesh_out *o = ctx;
+    for (uint32_t i = 0; i < nt; i++)
+        if ((o->mat[i] = material_for(o, key[i])) < 0) return -1;
+    int rc = o->api->mesh_append(o->host, o->mesh, pos, nrm, NULL, nv, tri, o->mat, nt);
+    if (rc) {
+        o->status = rc;
+        return -1;
+    }
+    return 0;
+}
+
+static void warn_structure(tree_state *s, const sylva_host_api *api, sylva_host *host, const lsys_turtle_stats *st)
+{
+    if (s->warned || !(st->stray_pops || st->stray_polygon_ends || st->open_at_end)) return;
+    s->warned = 1;
+    api->log(host, SYLVA_LOG_WARN,
+             "%s: the string is unbalanced: %llu ']' without '[' and %llu '}' without '{' were ignored, %llu "
+             "'[' or '{' were still open at the end",
+             s->sys->name, (unsigned long long)st->stray_pops, (unsigned long long)st->stray_polygon_ends,
+             (unsigned long long)st->open_at_end);
+}
+
+/* ---- generate -------------------------------------------------------------------------------- */
+
+static int tree_generate(void *state, const sylva_host_api *api, sylva_host *host, const void *request, void *out)
+{
+    tree_state *s = state;
+    const sylva_tree_request *req = request;
+    sylva_tree_out *o = out;
+    if (!req || req->size < offsetof(sylva_tree_request, seed) + sizeof req->seed || !o ||
+        o->size < offsetof(sylva_tree_out, height) + sizeof o->height)
+        return api->error(host, "tree_lsystem: the tree request or output is smaller than this plugin reads");
+    double age = req->age > 0 && req->age <= 1 ? req->age : 1.0;
+    double frac = height_fraction(s, age), h2 = s->height * frac;
+    if (!(frac > 0))
+        return api->error(host, "tree_lsystem: height_by_age gives height 0 at age %g; every variant's age needs a "
+                          "positive height fraction", age);
+    sylva_tree_stats stats = {.size = sizeof stats, .age = age};
+    uint32_t level = s->recursion;
+    int rc;
+    if (s->branch_law && frac < 1.0) {
+        if ((rc = prepare_law(s, api, host))) return rc;
+        uint64_t n1 = s->level_branches[s->recursion];
+        if (n1 && s->law_dimension > 0) {
+            stats.law_dimension = s->law_dimension;
+            stats.target_branches = branch_law_count((double)n1, s->height, h2, s->law_dimension);
+            level = branch_law_level(s->level_branches, s->recursion + 1, stats.target_branches);
+        }
+    }
+    lsys_error e = {{0}};
+    unsigned char *str = NULL; /* owned here */
+    size_t n = 0;
+    if ((rc = lsys_derive(s->sys, level, s->max_string, NULL, NULL, &str, &n, &e))) return fail(api, host, rc, &e);
+    lsys_turtle_stats st;
+    if ((rc = interpret(s, api, host, str, n, NULL, 0, &st, &e))) {
+        free(str);
+        return fail(api, host, rc, &e);
+    }
+    if (!st.has_bounds) {
+        free(str);
+        return api->error(host, "%s: at recursion level %u the L-system draws nothing (no F, Z or polygon)",
+                          s->sys->name, level);
+    }
+    double ext[3] = {st.hi[0] - st.lo[0], st.hi[1] - st.lo[1], st.hi[2] - st.lo[2]};
+    double widest = fmax(ext[0], fmax(ext[1], ext[2]));
+    double size = ext[2] > 1e-6 * widest ? ext[2] : widest;
+    double scale = s->unit_length > 0 ? s->unit_length : h2 / size;
+    if (!(size > 0) || !isfinite(scale) || !isfinite(widest * scale) || widest * scale > 1e7) {
+        free(str);
+        return api->error(host, "%s: the model at recursion level %u spans %g by %g by %g file units, which cannot "
+                          "be scaled to a height of %g m",
+                          s->sys->name, level, ext[0], ext[1], ext[2], h2);
+    }
+    mesh_out mo = {.s = s, .api = api, .host = host, .mesh = o->mesh};
+    mo.mat = malloc(LSYS_MESH_CHUNK_TRIANGLES * sizeof *mo.mat);
+    lsys_mesh_config mc = {.sides = s->sides, .flat = s->flat, .scale = scale,
+                           .max_polygon_vertices = s->max_polygon_vertices, .flush = flush_to_host, .flush_ctx = &mo};
+    lsys_mesh *mesh = mo.mat ? lsys_mesh_new(&mc, &e) : NULL; /* owned here */
+    if (!mesh) {
+        free(mo.mat);
+        free(str);
+        api->error(host, "tree_lsystem: out of memory for the mesh builder");
+        return SYLVA_ERR_NOMEM;
+    }
+    box_raster r = {0};
+    int have_raster = st.segments && !silhouette_init(&r, &st);
+    lsys_sink sinks[2] = {lsys_mesh_sink(mesh), box_raster_sink(&r)};
+    rc = interpret(s, api, host, str, n, sinks, have_raster ? 2 : 1, &st, &e);
+    if (!rc) rc = lsys_mesh_finish(mesh);
+    uint64_t triangles = lsys_mesh_triangles(mesh);
+    uint64_t branches = rc ? 0 : branch_count(str, n);
+    lsys_mesh_free(mesh);
+    free(mo.mat);
+    free(str);
+    if (rc) {
+        box_raster_free(&r);
+        if (rc == LSYS_ERR_SINK) return mo.status ? mo.status : SYLVA_ERR_INTERNAL;
+        return fail(api, host, rc, &e);
+    }
+    stats.box_dimension = have_raster ? box_dimension(&r, SILHOUETTE_FIT_MIN, SILHOUETTE_FIT_MAX) : 0.0;
+    box_raster_free(&r);
+    warn_structure(s, api, host, &st);
+    o->height = size * scale;
+    stats.recursion = level;
+    stats.symbols = st.symbols;
+    stats.segments = st.segments;
+    stats.leaves = st.polygons;
+    stats.triangles = triangles;
+    stats.branches = branches;
+    for (int k = 0; k < 3; k++) stats.bbox_min[k] = st.lo[k] * scale, stats.bbox_max[k] = st.hi[k] * scale;
+    stats.height = o->height;
+    s->last = stats;
+    s->has_last = 1;
+    return SYLVA_OK;
+}
+
+/* ---- statistics interface ------------------------------------------------------------------ */
+
+static int tree_last_stats(void *state, sylva_tree_stats *out)
+{
+    tree_state *s = state;
+    if (!s || !s->has_last || !out || out->size < sizeof out->size) return SYLVA_ERR_PARAM;
+    uint32_t size = out->size < sizeof *out ? out->size : (uint32_t)sizeof *out;
+    memcpy((char *)out + sizeof out->size, (const char *)&s->last + sizeof out->size, size - sizeof out->size);
+    return SYLVA_OK;
+}
+
+static const sylva_tree_stats_v1 stats_interface = {.size = sizeof stats_interface, .last_stats = tree_last_stats};
+
+static const void *tree_extension(const char *id)
+{
+    return id && !strcmp(id, SYLVA_TREE_STATS_V1) ? &stats_interface : NULL;
+}
+
+static const sylva_plugin tree_lsystem = {
+    .size = sizeof(sylva_plugin),
+    .abi_major = SYLVA_ABI_MAJOR,
+    .abi_minor = SYLVA_ABI_MINOR,
+    .param_spec_size = sizeof(sylva_param_spec),
+    .kind = SYLVA_KIND_TREE,
+    .name = "tree_lsystem",
+    .summary = "Trees from L-systems in the L-parser language, grown by the branch-number law.",
+    .version = "1.0",
+    .params = tree_params,
+    .n_params = sizeof tree_params / sizeof tree_params[0],
+    .create = tree_create,
+    .generate = tree_generate,
+    .destroy = tree_destroy,
+    .extension = tree_extension,
+};
+
+SYLVA_EXPORT const sylva_plugin *sylva_plugin_get(uint32_t index) { return index == 0 ? &tree_lsystem : NULL; }

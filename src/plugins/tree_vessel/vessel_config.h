@@ -1,0 +1,29 @@
+/* vessel_config.h — the scene-file face of the vessel model: the parameter schema of the
+ * tree_vessel plugin and the reading of a validated block into a vessel_params.
+ *
+ * A block starts from its `preset` (beech when not given) and every key the scene gives
+ * (sylva_value.is_set) replaces that preset's value; keys not given keep the preset's. The
+ * schema's defaults are the beech preset's values, so `sylva plugins --describe tree_vessel`
+ * shows a complete species. */
+#ifndef VESSEL_CONFIG_H
+#define VESSEL_CONFIG_H
+
+#include <stdint.h>
+
+#include "sylva/plugin.h"
+#include "vessel_error.h"
+#include "vessel_params.h"
+
+#define VESSEL_SCHEMA_COUNT 32u
+extern const sylva_param_spec vessel_schema[VESSEL_SCHEMA_COUNT];
+
+/* The choices of leaf_texture and bark_texture, in enum order, NULL-terminated. */
+extern const char *const vessel_leaf_shape_names[VESSEL_LEAF_SHAPES + 1];
+extern const char *const vessel_bark_names[VESSEL_BARK_KINDS + 1];
+
+/* Reads a block validated against vessel_schema into *out and checks it (vessel_params_check
+ * plus the orders of the polylines). Returns 0, or a vessel_fault with err set; err->param names
+ * the key whose place in the scene file the message belongs to. */
+int vessel_config_read(const sylva_params *params, vessel_params *out, vessel_err *err);
+
+#endif

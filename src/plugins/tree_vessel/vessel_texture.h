@@ -1,0 +1,24 @@
+/* vessel_texture.h — the plugin's own bark and leaf textures (t_bark, t_leaf of 004 §3.3),
+ * drawn procedurally so that no image file is needed. Both are RGBA8, sRGB-encoded, row 0 at
+ * the top (v = 1). Colour channels hold a grey brightness pattern that the material's albedo
+ * multiplies; a leaf's alpha holds its outline (255 inside, 0 outside).
+ *
+ * The patterns come from a fixed lattice hash, not from a random stream: every scene gets the
+ * same textures. Bark tiles in u and v; a leaf's stalk is at v = 0 and its tip at v = 1. */
+#ifndef VESSEL_TEXTURE_H
+#define VESSEL_TEXTURE_H
+
+#include <stdint.h>
+
+#include "vessel_params.h"
+
+#define VESSEL_BARK_TEXTURE_SIZE 128u /* square, one circumference wide and long */
+#define VESSEL_LEAF_TEXTURE_SIZE 128u /* square */
+
+/* Fills rgba (VESSEL_BARK_TEXTURE_SIZE^2 * 4 bytes) with the bark pattern. */
+void vessel_texture_bark(vessel_bark_kind kind, uint8_t *rgba);
+
+/* Fills rgba (VESSEL_LEAF_TEXTURE_SIZE^2 * 4 bytes) with the leaf outline and veins. */
+void vessel_texture_leaf(vessel_leaf_shape shape, uint8_t *rgba);
+
+#endif

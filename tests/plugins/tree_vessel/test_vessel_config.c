@@ -1,0 +1,127 @@
+/* test_vessel_config.c — the tree_vessel schema: the host accepts it, its defaults are the beech
+ * preset, and a block reads as its preset with the given keys replaced one by one. */
+#include <string.h>
+
+#include "harness.h"
+#include "plugin_host.h"
+#include "vessel_config.h"
+#include "vessel_test_util.h"
+
+/* A block in which every key is given with the schema's default; `preset` as named. */
+typedef struct block {
+    sylva_value values[VESSEL_SCHEMA_COUNT];
+    sylva_params params;
+} block;
+
+static void block_from_defaults(block *b, const char *preset_name)
+{
+    memset(b, 0, sizeof *b);
+    for (uint32_t i = 0; i < VESSEL_SCHEMA_COUNT; i++) {
+        const sylva_param_spec *s = &vessel_schema[i];
+        sylva_value *v = &b->values[i];
+        v->is_set = 1;
+        v->r = s->def, v->i = (int64_t)s->def;
+        v->list = s->def_list, v->len = s->def_len;
+        if (s->type == SYLVA_P_ENUM) {
+            const char *want = !strcmp(s->name, "preset") ? preset_name : s->def_str;
+            for (int64_t k = 0; s->choices[k]; k++)
+                if (!strcmp(s->choices[k], want)) v->i = k, v->s = s->choices[k];
+        }
+    }
+    b->params = (sylva_params){.spec = vessel_schema, .n = VESSEL_SCHEMA_COUNT, .values = b->values};
+}
+
+static int same_params(const vessel_params *a, const vessel_params *b)
+{
+    int same = a->vessels == b->vessels && a->trunk_length == b->trunk_length &&
+               a->thickness == b->thickness && a->gravicentralism == b->gravicentralism &&
+               a->phyllotaxis == b->phyllotaxis && a->leaf_size == b->leaf_size &&
+               a->leaf_density == b->leaf_density && a->leaf_type == b->leaf_type &&
+               a->leaf_shape == b->leaf_shape && a->bark == b->bark && a->sides == b->sides &&
+               a->wind_sway == b->wind_sway && a->wind_strength == b->wind_strength &&
+               a->flexibility == b->flexibility && a->wind_time == b->wind_time;
+    for (int k = 0; k < 3; k++)
+        same = same && a->wind_direction[k] == b->wind_direction[k] &&
+               a->bark_albedo[k] == b->bark_albedo[k] && a->leaf_albedo[k] == b->leaf_albedo[k] &&
+               a->leaf_transmittance[k] == b->leaf_transmittance[k];
+    for (int k = 0; k < VESSEL_LOCALS; k++) {
+        const vessel_polyline *lines[4] = {&a->by_g[k], &b->by_g[k], &a->by_w[k], &b->by_w[k]};
+        for (int j = 0; j < 4; j += 2) {
+            same = same && lines[j]->n == lines[j + 1]->n;
+            for (uint32_t i = 0; same && i < lines[j]->n; i++)
+                same = lines[j]->x[i] == lines[j + 1]->x[i] && lines[j]->y[i] == lines[j + 1]->y[i];
+        }
+    }
+    return same;
+}
+
+TEST(the_host_accepts_the_schema)
+{
+    err_buf err = {{0}};
+    CHECK_INT(plugin_schema_check(vessel_schema, VESSEL_SCHEMA_COUNT, &err), 0);
+    if (err.msg[0]) fprintf(stderr, "%s\n", err.msg);
+    CHECK(vessel_schema[VESSEL_SCHEMA_COUNT - 1].name != NULL);
+}
+
+/* What `sylva plugins --describe` prints as defaults is the beech of 004 §3.4.1. */
+TEST(schema_defaults_are_the_beech_preset)
+{
+    block b;
+    block_from_defaults(&b, "beech");
+    vessel_params read, beech = preset(VESSEL_PRESET_BEECH);
+    vessel_err err = {0};
+    CHECK_INT(vessel_config_read(&b.params, &read, &err), 0);
+    CHECK(same_params(&read, &beech));
+}
+
+TEST(a_preset_with_keys_replaced)
+{
+    block b;
+    block_from_defaults(&b, "spruce");
+    for (uint32_t i = 0; i < VESSEL_SCHEMA_COUNT; i++) b.values[i].is_set = !strcmp(vessel_schema[i].name, "preset");
+    vessel_params read, spruce = preset(VESSEL_PRESET_SPRUCE);
+    vessel_err err = {0};
+    CHECK_INT(vessel_config_read(&b.params, &read, &err), 0);
+    CHECK(same_params(&read, &spruce)); /* nothing given: the preset itself */
+
+    int vessels = sylva_param_index(&b.params, "vessels"), angle = sylva_param_index(&b.params, "angle_g");
+    int leaf_type = sylva_param_index(&b.params, "leaf_type");
+    b.values[vessels].is_set = 1, b.values[vessels].i = 321;
+    static const double wide[] = {0, 90, 15, 60};
+    b.values[angle].is_set = 1, b.values[angle].list = wide, b.values[angle].len = 2;
+    b.values[leaf_type].is_set = 1, b.values[leaf_type].i = VESSEL_LEAF_BUNCHED;
+    CHECK_INT(vessel_config_read(&b.params, &read, &err), 0);
+    CHECK_INT(read.vessels, 321);
+    CHECK_INT(read.by_g[VESSEL_ANGLE].n, 2);
+    CHECK_NEAR(read.by_g[VESSEL_ANGLE].y[0], 90, 0);
+    CHECK_INT(read.leaf_type, VESSEL_LEAF_BUNCHED);
+    read.vessels = spruce.vessels, read.by_g[VESSEL_ANGLE] = spruce.by_g[VESSEL_ANGLE];
+    read.leaf_type = spruce.leaf_type;
+    CHECK(same_params(&read, &spruce)); /* everything else stays the spruce's */
+}
+
+/* What the schema cannot express: orders outside a polyline's span. */
+TEST(orders_past_the_span_are_refused_at_their_key)
+{
+    block b;
+    block_from_defaults(&b, "beech");
+    int k = sylva_param_index(&b.params, "split_g");
+    static const double far[] = {0, 0.7, 20, 0.9};
+    b.values[k].list = far, b.values[k].len = 2;
+    vessel_params read;
+    vessel_err err = {0};
+    CHECK_INT(vessel_config_read(&b.params, &read, &err), -1);
+    CHECK_STR_CONTAINS(err.param, "split_g");
+    CHECK_STR_CONTAINS(err.msg, "order 20; orders run from 0 to 15");
+    k = sylva_param_index(&b.params, "length_scale_w");
+    static const double fine[] = {0, 1, 50, 1}, past_w[] = {0, 1, 60, 1};
+    b.values[sylva_param_index(&b.params, "split_g")].list = vessel_schema[sylva_param_index(&b.params, "split_g")].def_list;
+    b.values[k].list = past_w;
+    CHECK_INT(vessel_config_read(&b.params, &read, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "'length_scale_w' point 1 has order 60; orders run from 0 to 50");
+    b.values[k].list = fine;
+    CHECK_INT(vessel_config_read(&b.params, &read, &err), 0);
+}
+
+TEST_LIST(TEST_CASE(the_host_accepts_the_schema), TEST_CASE(schema_defaults_are_the_beech_preset),
+          TEST_CASE(a_preset_with_keys_replaced), TEST_CASE(orders_past_the_span_are_refused_at_their_key))

@@ -1,0 +1,52 @@
+/* raster_gdal.h — one band of a raster file read through GDAL (GeoTIFF, ESRI ASCII grid, PNG,
+ * and whatever else the installed GDAL reads): its size, georeferencing, coordinate-system
+ * kind, nodata value, scale and offset, and its rows as metres-or-whatever numbers.
+ *
+ * GDAL's own messages never reach stderr: each call silences GDAL's error handler on the
+ * calling thread for its duration and turns GDAL's last message into the failure sentence.
+ * Ownership: an ifs_raster holds the open dataset until ifs_raster_close (which accepts a
+ * raster that failed to open or was already closed). */
+#ifndef TERRAIN_IFS_RASTER_GDAL_H
+#define TERRAIN_IFS_RASTER_GDAL_H
+
+#include <stdint.h>
+
+#include "ifs_err.h"
+
+typedef enum ifs_crs_kind {
+    IFS_CRS_NONE = 0,      /* no coordinate system in the file */
+    IFS_CRS_GEOGRAPHIC = 1,/* longitude / latitude in degrees */
+    IFS_CRS_PROJECTED = 2, /* projected, linear units (see metres_per_unit) */
+    IFS_CRS_OTHER = 3      /* anything else (local, geocentric...) */
+} ifs_crs_kind;
+
+typedef struct ifs_raster {
+    void *dataset;            /* GDALDatasetH, owned */
+    void *band;               /* GDALRasterBandH of the band asked for (borrowed from dataset) */
+    uint32_t cols, rows;      /* raster size in pixels; row 0 is the file's first row */
+    uint32_t bands;
+    int has_transform;        /* 1: geotransform read from the file */
+    double transform[6];      /* GDAL geotransform: x = t0 + col t1 + row t2, y = t3 + col t4 + row t5
+                                 (pixel corners); (0,1,0,0,0,1) when absent */
+    ifs_crs_kind crs;
+    double metres_per_unit;   /* IFS_CRS_PROJECTED: linear unit in metres; 1 otherwise */
+    int has_nodata;
+    double nodata;
+    double scale, offset;     /* value = raw * scale + offset (1 and 0 when the file gives none) */
+    char driver[32];          /* GDAL driver short name, e.g. "GTiff", "AAIGrid" */
+    char type_name[16];       /* sample type, e.g. "Int16", "Float32" */
+    double type_max;          /* largest value of an integer sample type (0 for floating types) */
+} ifs_raster;
+
+/* Opens band `band` (1-based) of `path`. `what` names the file's role in messages ("DTM",
+ * "humidity map"). Fails with SYLVA_ERR_IO when the file cannot be read or is not a raster,
+ * SYLVA_ERR_PARAM when the band does not exist. */
+int ifs_raster_open(const char *path, uint32_t band, const char *what, ifs_raster *r, ifs_err *err);
+void ifs_raster_close(ifs_raster *r);
+
+/* Reads `count` pixels of file row `row` from column `col` as doubles, converted with scale and
+ * offset; nodata pixels (and NaN) become NaN. */
+int ifs_raster_read_row(ifs_raster *r, uint32_t row, uint32_t col, uint32_t count, double *out,
+                        const char *what, ifs_err *err);
+
+#endif

@@ -1,0 +1,53 @@
+/* surface_classes.h — what covers the ground at each heightfield node: grass, dry grass, scree,
+ * rock or snow, from the slope, the normalised altitude and (when a humidity map is given) the
+ * humidity there. The rules, first match wins:
+ *
+ *   slope >= rock_slope                                  rock
+ *   altitude >= snow_line                                snow
+ *   slope >= scree_slope, or altitude >= scree_line      scree
+ *   humidity < dry_humidity                              dry grass
+ *   otherwise                                            grass
+ *
+ * The normalised altitude is (z - zmin) / (zmax - zmin) over the DTM's heights (0 when the DTM
+ * is flat); the slope is the angle of the normal the renderer computes, from central
+ * differences (one-sided at the border). */
+#ifndef TERRAIN_IFS_SURFACE_CLASSES_H
+#define TERRAIN_IFS_SURFACE_CLASSES_H
+
+#include <stdint.h>
+
+typedef enum ifs_surface_class {
+    IFS_SURFACE_GRASS = 0,
+    IFS_SURFACE_DRY_GRASS = 1,
+    IFS_SURFACE_SCREE = 2,
+    IFS_SURFACE_ROCK = 3,
+    IFS_SURFACE_SNOW = 4,
+    IFS_SURFACE_CLASSES = 5
+} ifs_surface_class;
+
+typedef struct ifs_surface_rules {
+    double zmin, zmax;      /* metres: the altitude range normalised to [0, 1] */
+    double snow_line;       /* normalised altitude */
+    double scree_line;      /* normalised altitude */
+    double scree_slope;     /* degrees */
+    double rock_slope;      /* degrees */
+    double dry_humidity;    /* humidity in [0, 1] below which grass is dry */
+} ifs_surface_rules;
+
+/* The class of one node. */
+ifs_surface_class ifs_surface_class_of(double slope_deg, double altitude, double humidity,
+                                       const ifs_surface_rules *r);
+
+/* Slope in degrees at node (i, j) of an nx x ny grid of heights with spacing dx, dy. */
+double ifs_surface_slope(const float *z, uint32_t nx, uint32_t ny, double dx, double dy,
+                         uint32_t i, uint32_t j);
+
+/* Classes of every node into cls (nx * ny). humidity: nx * ny values in [0, 1], or NULL (1
+ * everywhere). */
+void ifs_surface_classify(const float *z, uint32_t nx, uint32_t ny, double dx, double dy,
+                          const float *humidity, const ifs_surface_rules *r, uint8_t *cls);
+
+/* Name of a class ("grass", "dry grass", ...). */
+const char *ifs_surface_class_name(ifs_surface_class c);
+
+#endif

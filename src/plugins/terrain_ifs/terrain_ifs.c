@@ -1,0 +1,507 @@
+/* terrain_ifs.c — the terrain_ifs plugin: a DTM (raster file, inline grid or seeded coarse
+ * grid) refined by 3-D fractal interpolation with an IFS (MODELS.md §1), handed to the host as
+ * a heightfield with ground-cover materials and a water level.
+ *
+ * create() reads and checks the parameters, loads the DTM and keeps what generate() needs;
+ * generate() builds the maps, computes the heights by random iteration or deterministic
+ * evaluation, classifies the ground and fills the host's heightfield. Every random number comes
+ * from host streams ("terrain_ifs.dtm", "terrain_ifs.chaos" chain c); the plugin keeps no
+ * global state and writes nothing to stdout.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "dtm.h"
+#include "dtm_file.h"
+#include "dtm_generate.h"
+#include "humidity_map.h"
+#include "ifs_chaos.h"
+#include "ifs_eval.h"
+#include "ifs_maps.h"
+#include "surface_classes.h"
+#include "sylva/plugin.h"
+#include "terrain_ifs_schema.h"
+
+/* What create() keeps for generate(). Owned by the plugin until terrain_ifs_destroy. */
+typedef struct terrain_ifs_state {
+    ifs_dtm *dtm;                /* owned; heights after z_scale and z_offset */
+    double *alpha_field;         /* owned copy, (N-1)(M-1), or NULL */
+    double *probability_field;   /* owned copy, or NULL */
+    ifs_mode mode;
+    double alpha;
+    int random;                  /* 1: random iteration, 0: deterministic evaluation */
+    uint64_t iterations;
+    int has_start;
+    double start_u, start_v, start_z;
+    uint32_t depth;              /* 0: automatic */
+    uint32_t nx_out, ny_out;
+    uint32_t threads;
+    double centre[2];
+    int classes;                 /* 1: ground-cover classes, 0: the scene's material */
+    double water_level;          /* normalised, 0: none */
+    ifs_surface_rules rules;
+    float *humidity;             /* owned: humidity at each output node, or NULL */
+    float albedo[IFS_SURFACE_CLASSES][3];
+    float water_albedo[3];
+    char source[512];            /* what the DTM is, for the log */
+} terrain_ifs_state;
+
+static void state_free(terrain_ifs_state *s)
+{
+    if (!s) return;
+    ifs_dtm_free(s->dtm);
+    free(s->alpha_field), free(s->probability_field), free(s->humidity);
+    free(s);
+}
+
+static int is_whole(double v) { return v == floor(v) && isfinite(v); }
+
+/* Parameters that only one DTM source or one setting reads. */
+static const char *const file_only[] = {"band", "crop", "step", "units"};
+static const char *const classes_only[] = {"snow_line", "scree_line", "scree_slope", "rock_slope",
+                                           "humidity_map", "humidity_band", "humidity_range",
+                                           "dry_humidity", "grass_albedo",
+                                           "dry_grass_albedo", "scree_albedo", "rock_albedo",
+                                           "snow_albedo", "water_albedo"};
+
+static int is_set(const sylva_params *p, const char *name)
+{
+    const sylva_value *v = sylva_param(p, name);
+    return v && v->is_set;
+}
+
+/* Loads the DTM from the one source the scene names. */
+static int load_dtm(const sylva_host_api *api, sylva_host *host, const sylva_params *params,
+                    terrain_ifs_state *s)
+{
+    const sylva_value *dtm = sylva_param(params, "dtm"), *heights = sylva_param(params, "heights");
+    const sylva_value *cell = sylva_param(params, "cell_size");
+    double cs[2] = {0, 0};
+    if (cell->len) cs[0] = cell->list[0], cs[1] = cell->list[cell->len > 1 ? 1 : 0];
+    ifs_err err = {{0}};
+    int rc;
+    if (dtm->s) {
+        const sylva_value *crop = sylva_param(params, "crop");
+        ifs_dtm_file_options o = {.band = (uint32_t)sylva_param_int(params, "band"),
+                                  .has_crop = crop->len == 4,
+                                  .step = (uint32_t)sylva_param_int(params, "step"),
+                                  .units = (ifs_units)sylva_param_int(params, "units"),
+                                  .cell_size = {cs[0], cs[1]}};
+        if (crop->len != 0 && crop->len != 4)
+            return api->param_error(host, params, "crop", "crop has %u numbers; give 4, [first "
+                                    "column, first row, columns, rows], or leave it out", crop->len);
+        for (uint32_t k = 0; k < crop->len; k++) {
+            if (!is_whole(crop->list[k]) || crop->list[k] > 4294967295.0)
+                return api->param_error(host, params, "crop", "crop[%u] is %g; the window is "
+                                        "given in whole pixels", k, crop->list[k]);
+            o.crop[k] = (uint32_t)crop->list[k];
+        }
+        ifs_dtm_file_info info;
+        if ((rc = ifs_dtm_read_file(dtm->s, &o, &s->dtm, &info, &err))) {
+            api->param_error(host, params, "dtm", "%s", err.msg);
+            return rc;
+        }
+        snprintf(s->source, sizeof s->source, "%s (%s %s; %u x %u pixels from column %u, row %u; "
+                 "step %u)", dtm->s, info.driver, info.type_name, info.window[2], info.window[3],
+                 info.window[0], info.window[1], o.step);
+        if (info.nodata_filled)
+            api->log(host, SYLVA_LOG_INFO, "%s: %llu nodata node%s filled from their neighbours",
+                     dtm->s, (unsigned long long)info.nodata_filled,
+                     info.nodata_filled == 1 ? "" : "s");
+        if (info.degrees)
+            api->log(host, SYLVA_LOG_INFO, "%s: degrees converted to metres at latitude %.5f "
+                     "(%.3f x %.3f m between nodes)%s", dtm->s, info.centre_lat, s->dtm->dx,
+                     s->dtm->dy, info.units_guessed ? "; the file has no coordinate system, set "
+                     "units: metres if it is not in degrees" : "");
+        return SYLVA_OK;
+    }
+    double dx = cs[0] > 0 ? cs[0] : TERRAIN_IFS_DEFAULT_CELL;
+    double dy = cs[1] > 0 ? cs[1] : TERRAIN_IFS_DEFAULT_CELL;
+    if (heights->is_set) {
+        if ((rc = ifs_dtm_from_rows(heights->list, heights->cols, heights->rows, dx, dy, &s->dtm,
+                                    &err))) {
+            api->param_error(host, params, "heights", "%s", err.msg);
+            return rc;
+        }
+        snprintf(s->source, sizeof s->source, "inline heights");
+        return SYLVA_OK;
+    }
+    const sylva_params *g = sylva_param(params, "generated")->group;
+    const sylva_value *nodes = sylva_param(g, "nodes");
+    for (uint32_t k = 0; k < 2; k++)
+        if (!is_whole(nodes->list[k]))
+            return api->param_error(host, params, "generated", "generated.nodes[%u] is %g; node "
+                                    "counts are whole numbers", k, nodes->list[k]);
+    ifs_dtm_generator gen = {.nx = (uint32_t)nodes->list[0], .ny = (uint32_t)nodes->list[1],
+                             .dx = dx, .dy = dy, .relief = sylva_param_real(g, "relief"),
+                             .smoothness = sylva_param_real(g, "smoothness")};
+    sylva_rng rng;
+    api->rng_init(host, &rng, "terrain_ifs.dtm", 0);
+    if ((rc = ifs_dtm_generate(&gen, api->rng_u64, &rng, &s->dtm, &err))) {
+        api->param_error(host, params, "generated", "%s", err.msg);
+        return rc;
+    }
+    snprintf(s->source, sizeof s->source, "generated %u x %u DTM", gen.nx, gen.ny);
+    return SYLVA_OK;
+}
+
+/* A per-cell field copied out of the parameters after checking it matches the DTM's cells. */
+static int copy_cell_field(const sylva_host_api *api, sylva_host *host, const sylva_params *params,
+                           const char *name, const ifs_dtm *d, double **out)
+{
+    const sylva_value *v = sylva_param(params, name);
+    *out = NULL;
+    if (!v->is_set) return SYLVA_OK;
+    if (v->rows != d->ny - 1 || v->cols != d->nx - 1)
+        return api->param_error(host, params, name, "%s has %u rows of %u values; the DTM has %u "
+                                "rows of %u cells (one value per cell, rows from south to north)",
+                                name, v->rows, v->cols, d->ny - 1, d->nx - 1);
+    *out = malloc((size_t)v->rows * v->cols * sizeof **out); /* owned by the state */
+    if (!*out) {
+        api->error(host, "terrain_ifs: out of memory copying %s", name);
+        return SYLVA_ERR_NOMEM;
+    }
+    memcpy(*out, v->list, (size_t)v->rows * v->cols * sizeof **out);
+    return SYLVA_OK;
+}
+
+/* The relations between parameters that the schema cannot express. */
+static int check_relations(const sylva_host_api *api, sylva_host *host, const sylva_params *params)
+{
+    int has_file = sylva_param_str(params, "dtm") != NULL, has_heights = is_set(params, "heights");
+    if (has_file && has_heights)
+        return api->param_error(host, params, "heights", "give dtm or heights, not both");
+    if ((has_file || has_heights) && is_set(params, "generated"))
+        return api->param_error(host, params, "generated", "generated makes a DTM when neither "
+                                "dtm nor heights is given; remove it or them");
+    for (size_t k = 0; !has_file && k < sizeof file_only / sizeof file_only[0]; k++)
+        if (is_set(params, file_only[k]))
+            return api->param_error(host, params, file_only[k], "%s applies to a dtm file; this "
+                                    "terrain has none", file_only[k]);
+    if (is_set(params, "alpha") && is_set(params, "alpha_field"))
+        return api->param_error(host, params, "alpha_field", "give alpha or alpha_field, not both");
+    if (is_set(params, "refine") && is_set(params, "output_nodes"))
+        return api->param_error(host, params, "output_nodes", "give refine or output_nodes, not "
+                                "both");
+    int random = sylva_param_int(params, "method") == 0;
+    if (!random && (is_set(params, "iterations") || is_set(params, "start")))
+        return api->param_error(host, params, is_set(params, "iterations") ? "iterations" : "start",
+                                "iterations and start belong to method: random; this terrain is "
+                                "evaluated deterministically");
+    if (sylva_param_int(params, "surface") == 1)
+        for (size_t k = 0; k < sizeof classes_only / sizeof classes_only[0]; k++)
+            if (is_set(params, classes_only[k]))
+                return api->param_error(host, params, classes_only[k], "%s belongs to surface: "
+                                        "classes; with surface: scene the scene's terrain "
+                                        "material covers the ground", classes_only[k]);
+    const sylva_value *cell = sylva_param(params, "cell_size");
+    if (cell->is_set && cell->len == 0)
+        return api->param_error(host, params, "cell_size", "cell_size is empty; give [dx, dy] or "
+                                "[d] in metres, or leave it out");
+    const sylva_value *out = sylva_param(params, "output_nodes");
+    if (out->is_set && (out->len != 2 || !is_whole(out->list[0]) || !is_whole(out->list[1])))
+        return api->param_error(host, params, "output_nodes", "output_nodes must be two whole "
+                                "numbers [nx, ny]");
+    const sylva_value *start = sylva_param(params, "start");
+    if (start->is_set && start->len != 3)
+        return api->param_error(host, params, "start", "start has %u numbers; give [x, y, z] in "
+                                "metres, or leave it out for the DTM's origin", start->len);
+    if (sylva_param_real(params, "scree_slope") > sylva_param_real(params, "rock_slope"))
+        return api->param_error(host, params, "scree_slope", "scree_slope %g exceeds rock_slope "
+                                "%g; scree lies on gentler slopes than rock",
+                                sylva_param_real(params, "scree_slope"),
+                                sylva_param_real(params, "rock_slope"));
+    if (sylva_param_real(params, "scree_line") > sylva_param_real(params, "snow_line"))
+        return api->param_error(host, params, "scree_line", "scree_line %g is above snow_line %g; "
+                                "scree lies below the snow", sylva_param_real(params, "scree_line"),
+                                sylva_param_real(params, "snow_line"));
+    return SYLVA_OK;
+}
+
+static void read_albedo(const sylva_params *params, const char *name, float out[3])
+{
+    const double *v = sylva_param(params, name)->list;
+    for (int k = 0; k < 3; k++) out[k] = (float)v[k];
+}
+
+static int terrain_ifs_create(const sylva_host_api *api, sylva_host *host,
+                              const sylva_params *params, void **state)
+{
+    *state = NULL;
+    int rc = check_relations(api, host, params);
+    if (rc) return rc;
+    terrain_ifs_state *s = calloc(1, sizeof *s); /* owned by the plugin until destroy */
+    if (!s) {
+        api->error(host, "terrain_ifs: out of memory for its settings");
+        return SYLVA_ERR_NOMEM;
+    }
+    if ((rc = load_dtm(api, host, params, s))) goto fail;
+    ifs_dtm *d = s->dtm;
+    double zs = sylva_param_real(params, "z_scale"), zo = sylva_param_real(params, "z_offset");
+    for (size_t k = 0; k < (size_t)d->nx * d->ny; k++) d->z[k] = d->z[k] * zs + zo;
+    if ((rc = copy_cell_field(api, host, params, "alpha_field", d, &s->alpha_field))) goto fail;
+    if ((rc = copy_cell_field(api, host, params, "probability_field", d, &s->probability_field)))
+        goto fail;
+
+    const sylva_value *out = sylva_param(params, "output_nodes");
+    uint64_t refine = (uint64_t)sylva_param_int(params, "refine");
+    uint64_t nxo = out->is_set ? (uint64_t)out->list[0] : (d->nx - 1) * refine + 1;
+    uint64_t nyo = out->is_set ? (uint64_t)out->list[1] : (d->ny - 1) * refine + 1;
+    if (nxo > 65536 || nyo > 65536 || nxo * nyo > TERRAIN_IFS_MAX_OUTPUT_NODES) {
+        rc = api->param_error(host, params, out->is_set ? "output_nodes" : "refine",
+                              "the output grid would have %llu x %llu nodes; at most %u nodes "
+                              "(4097 x 4097) and 65536 along a side are made: lower %s",
+                              (unsigned long long)nxo, (unsigned long long)nyo,
+                              TERRAIN_IFS_MAX_OUTPUT_NODES, out->is_set ? "output_nodes" : "refine");
+        goto fail;
+    }
+    s->nx_out = (uint32_t)nxo, s->ny_out = (uint32_t)nyo;
+
+    const double *centre = sylva_param(params, "centre")->list;
+    s->centre[0] = centre[0], s->centre[1] = centre[1];
+    s->mode = sylva_param_int(params, "mode") == 1 ? IFS_MODE_AFFINE : IFS_MODE_BILINEAR;
+    s->alpha = sylva_param_real(params, "alpha");
+    s->random = sylva_param_int(params, "method") == 0;
+    s->iterations = (uint64_t)sylva_param_int(params, "iterations");
+    s->depth = (uint32_t)sylva_param_int(params, "depth");
+    uint32_t threads = (uint32_t)sylva_param_int(params, "threads");
+    s->threads = threads ? threads : ifs_online_processors();
+
+    /* The starting point: the DTM origin (U, V) = (0, 0) at its height, or the scene's point. */
+    const sylva_value *start = sylva_param(params, "start");
+    s->start_z = d->z[0];
+    if (start->is_set) {
+        double w = (d->nx - 1) * d->dx, h = (d->ny - 1) * d->dy;
+        double u = (start->list[0] - (s->centre[0] - 0.5 * w)) / w;
+        double v = (start->list[1] - (s->centre[1] - 0.5 * h)) / h;
+        if (!(u >= 0 && u <= 1 && v >= 0 && v <= 1)) {
+            rc = api->param_error(host, params, "start", "start (%g, %g) lies outside the DTM, "
+                                  "which covers x in [%g, %g] and y in [%g, %g]", start->list[0],
+                                  start->list[1], s->centre[0] - 0.5 * w, s->centre[0] + 0.5 * w,
+                                  s->centre[1] - 0.5 * h, s->centre[1] + 0.5 * h);
+            goto fail;
+        }
+        s->has_start = 1, s->start_u = u, s->start_v = v, s->start_z = start->list[2];
+    }
+
+    s->classes = sylva_param_int(params, "surface") == 0;
+    s->water_level = sylva_param_real(params, "water_level");
+    ifs_dtm_range(d, &s->rules.zmin, &s->rules.zmax);
+    s->rules.snow_line = sylva_param_real(params, "snow_line");
+    s->rules.scree_line = sylva_param_real(params, "scree_line");
+    s->rules.scree_slope = sylva_param_real(params, "scree_slope");
+    s->rules.rock_slope = sylva_param_real(params, "rock_slope");
+    s->rules.dry_humidity = sylva_param_real(params, "dry_humidity");
+    read_albedo(params, "grass_albedo", s->albedo[IFS_SURFACE_GRASS]);
+    read_albedo(params, "dry_grass_albedo", s->albedo[IFS_SURFACE_DRY_GRASS]);
+    read_albedo(params, "scree_albedo", s->albedo[IFS_SURFACE_SCREE]);
+    read_albedo(params, "rock_albedo", s->albedo[IFS_SURFACE_ROCK]);
+    read_albedo(params, "snow_albedo", s->albedo[IFS_SURFACE_SNOW]);
+    read_albedo(params, "water_albedo", s->water_albedo);
+    const char *hum = sylva_param_str(params, "humidity_map");
+    const sylva_value *hrange = sylva_param(params, "humidity_range");
+    if (!hum && (is_set(params, "humidity_band") || hrange->is_set)) {
+        rc = api->param_error(host, params, hrange->is_set ? "humidity_range" : "humidity_band",
+                              "humidity_band and humidity_range describe a humidity_map; this "
+                              "terrain has none");
+        goto fail;
+    }
+    if (hrange->is_set && (hrange->len != 2 || hrange->list[0] == hrange->list[1])) {
+        rc = api->param_error(host, params, "humidity_range", "humidity_range must be two "
+                              "different numbers [raw value of humidity 0, of humidity 1]");
+        goto fail;
+    }
+    if (hum) {
+        ifs_err err = {{0}};
+        ifs_humidity_source src = {.path = hum,
+                                   .band = (uint32_t)sylva_param_int(params, "humidity_band"),
+                                   .has_range = hrange->is_set};
+        if (hrange->is_set) src.range[0] = hrange->list[0], src.range[1] = hrange->list[1];
+        s->humidity = malloc((size_t)s->nx_out * s->ny_out * sizeof *s->humidity);
+        if (!s->humidity) {
+            api->error(host, "terrain_ifs: out of memory for the humidity of %u x %u nodes",
+                       s->nx_out, s->ny_out);
+            rc = SYLVA_ERR_NOMEM;
+            goto fail;
+        }
+        if ((rc = ifs_humidity_read(&src, s->nx_out, s->ny_out, s->humidity, &err))) {
+            api->param_error(host, params, "humidity_map", "%s", err.msg);
+            goto fail;
+        }
+    }
+    *state = s;
+    return SYLVA_OK;
+fail:
+    state_free(s);
+    return rc;
+}
+
+/* Host progress from the model's workers (called on the plugin's calling thread only). */
+typedef struct progress_sink {
+    const sylva_host_api *api;
+    sylva_host *host;
+    const char *label;
+} progress_sink;
+
+static void report_progress(void *pctx, uint64_t done, uint64_t total)
+{
+    const progress_sink *p = pctx;
+    p->api->progress(p->host, p->label, done, total);
+}
+
+/* The heights: random iteration or deterministic evaluation into hf->z. */
+static int compute_heights(const terrain_ifs_state *s, const ifs_maps *maps, uint32_t depth,
+                           const sylva_host_api *api, sylva_host *host, sylva_heightfield *hf)
+{
+    ifs_err err = {{0}};
+    int rc;
+    if (!s->random) {
+        progress_sink p = {api, host, "terrain_ifs evaluation"};
+        if ((rc = ifs_eval_grid(maps, s->nx_out, s->ny_out, depth, s->threads, hf->z,
+                                report_progress, &p, &err))) {
+            api->error(host, "%s", err.msg);
+            return rc;
+        }
+        api->log(host, SYLVA_LOG_INFO, "deterministic evaluation f_%u at %u x %u nodes", depth,
+                 s->nx_out, s->ny_out);
+        return SYLVA_OK;
+    }
+    uint64_t chains = ifs_chaos_chain_count(s->iterations);
+    sylva_rng *streams = malloc(chains * sizeof *streams); /* owned here */
+    if (!streams) {
+        api->error(host, "terrain_ifs: out of memory for %llu random streams",
+                   (unsigned long long)chains);
+        return SYLVA_ERR_NOMEM;
+    }
+    for (uint64_t c = 0; c < chains; c++) api->rng_init(host, &streams[c], "terrain_ifs.chaos", c);
+    progress_sink p = {api, host, "terrain_ifs random iteration"};
+    ifs_chaos_job job = {.points = s->iterations, .start_u = s->start_u, .start_v = s->start_v,
+                         .start_z = s->start_z, .streams = streams, .rng_u64 = api->rng_u64,
+                         .nx = s->nx_out, .ny = s->ny_out, .depth = depth, .threads = s->threads,
+                         .progress = report_progress, .pctx = &p};
+    ifs_chaos_stats stats;
+    rc = ifs_chaos_grid(maps, &job, hf->z, &stats, &err);
+    free(streams);
+    if (rc) {
+        api->error(host, "%s", err.msg);
+        return rc;
+    }
+    api->log(host, SYLVA_LOG_INFO, "random iteration: %llu points on %u x %u nodes (%u thread%s); "
+             "%llu node%s no point reached took f_%u", (unsigned long long)s->iterations,
+             s->nx_out, s->ny_out, stats.workers, stats.workers == 1 ? "" : "s",
+             (unsigned long long)stats.empty_nodes, stats.empty_nodes == 1 ? "" : "s", depth);
+    return SYLVA_OK;
+}
+
+/* Ground-cover materials per node, and the water material. */
+static int apply_surface(const terrain_ifs_state *s, const sylva_host_api *api, sylva_host *host,
+                         sylva_heightfield *hf)
+{
+    size_t n = (size_t)hf->nx * hf->ny;
+    uint8_t *cls = malloc(n); /* owned here */
+    int rc = SYLVA_OK;
+    if (!cls) {
+        api->error(host, "terrain_ifs: out of memory classifying %zu nodes", n);
+        return SYLVA_ERR_NOMEM;
+    }
+    ifs_surface_classify(hf->z, hf->nx, hf->ny, hf->dx, hf->dy, s->humidity, &s->rules, cls);
+    int32_t ids[IFS_SURFACE_CLASSES];
+    uint64_t counts[IFS_SURFACE_CLASSES] = {0};
+    for (int c = 0; c < IFS_SURFACE_CLASSES; c++) {
+        char name[48];
+        snprintf(name, sizeof name, "terrain_ifs %s", ifs_surface_class_name((ifs_surface_class)c));
+        sylva_material_desc m = {.size = sizeof m, .name = name, .bsdf = SYLVA_BSDF_LAMBERT,
+                                 .texture = -1};
+        memcpy(m.albedo, s->albedo[c], sizeof m.albedo);
+        if ((ids[c] = api->material_new(host, &m)) < 0) {
+            rc = ids[c];
+            goto done;
+        }
+    }
+    for (size_t k = 0; k < n; k++) hf->material[k] = ids[cls[k]], counts[cls[k]]++;
+    api->log(host, SYLVA_LOG_INFO, "ground: %.1f%% grass, %.1f%% dry grass, %.1f%% scree, "
+             "%.1f%% rock, %.1f%% snow", 100.0 * counts[0] / n, 100.0 * counts[1] / n,
+             100.0 * counts[2] / n, 100.0 * counts[3] / n, 100.0 * counts[4] / n);
+    if (s->water_level > 0) {
+        sylva_material_desc w = {.size = sizeof w, .name = "terrain_ifs water",
+                                 .bsdf = SYLVA_BSDF_LAMBERT, .texture = -1};
+        memcpy(w.albedo, s->water_albedo, sizeof w.albedo);
+        if ((hf->water_material = api->material_new(host, &w)) < 0) rc = hf->water_material;
+    }
+done:
+    free(cls);
+    return rc;
+}
+
+static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_host *host,
+                                const void *request, void *out)
+{
+    const terrain_ifs_state *s = state;
+    sylva_terrain_out *o = out;
+    (void)request; /* the scene seed reaches the plugin through api->rng_init */
+    if (o->size < offsetof(sylva_terrain_out, terrain) + sizeof o->terrain) {
+        api->error(host, "terrain_ifs: the host's terrain output is too small (%u bytes)", o->size);
+        return SYLVA_ERR_INTERNAL;
+    }
+    ifs_err err = {{0}};
+    ifs_maps *maps = NULL;
+    ifs_maps_params mp = {.mode = s->mode, .alpha = s->alpha, .alpha_field = s->alpha_field,
+                          .probability = s->probability_field};
+    int rc = ifs_maps_build(s->dtm, &mp, &maps, &err);
+    if (rc) {
+        api->error(host, "%s", err.msg);
+        return rc;
+    }
+    sylva_heightfield *hf = api->heightfield_new(host, s->nx_out, s->ny_out, s->classes);
+    if (!hf) { /* the host has said why */
+        ifs_maps_free(maps);
+        return SYLVA_ERR_NOMEM;
+    }
+    double width = (s->dtm->nx - 1) * s->dtm->dx, depth_m = (s->dtm->ny - 1) * s->dtm->dy;
+    hf->x0 = s->centre[0] - 0.5 * width, hf->y0 = s->centre[1] - 0.5 * depth_m;
+    hf->dx = width / (s->nx_out - 1), hf->dy = depth_m / (s->ny_out - 1);
+    uint32_t depth = s->depth ? s->depth : ifs_eval_auto_depth(maps, s->nx_out, s->ny_out);
+    api->log(host, SYLVA_LOG_INFO, "%s: %u x %u nodes %.3g x %.3g m apart, heights %.1f to %.1f m; "
+             "%s maps, alpha %s (largest |alpha| %g: detail up to about %.3g m per cell, alpha "
+             "times the DTM's %.3g m departure from the surface of its corners)", s->source,
+             s->dtm->nx, s->dtm->ny, s->dtm->dx, s->dtm->dy, s->rules.zmin, s->rules.zmax,
+             s->mode == IFS_MODE_AFFINE ? "affine" : "bilinear",
+             s->alpha_field ? "per cell" : "global", maps->alpha_max,
+             maps->alpha_max * maps->corner_departure, maps->corner_departure);
+    rc = compute_heights(s, maps, depth, api, host, hf);
+    ifs_maps_free(maps);
+    if (rc) return rc;
+    if (s->water_level > 0) {
+        hf->has_water = 1;
+        hf->water_level = s->rules.zmin + s->water_level * (s->rules.zmax - s->rules.zmin);
+    }
+    if (s->classes && (rc = apply_surface(s, api, host, hf))) return rc;
+    o->terrain = hf;
+    return SYLVA_OK;
+}
+
+static void terrain_ifs_destroy(void *state) { state_free(state); }
+
+static const sylva_plugin terrain_ifs = {
+    .size = sizeof(sylva_plugin),
+    .abi_major = SYLVA_ABI_MAJOR,
+    .abi_minor = SYLVA_ABI_MINOR,
+    .param_spec_size = sizeof(sylva_param_spec),
+    .kind = SYLVA_KIND_TERRAIN,
+    .name = "terrain_ifs",
+    .summary = "A DTM refined by 3-D fractal interpolation with an IFS (Petric 1994), with "
+               "ground cover and water.",
+    .version = "1.0",
+    .params = terrain_ifs_params,
+    .n_params = TERRAIN_IFS_N_PARAMS,
+    .create = terrain_ifs_create,
+    .generate = terrain_ifs_generate,
+    .destroy = terrain_ifs_destroy,
+};
+
+SYLVA_EXPORT const sylva_plugin *sylva_plugin_get(uint32_t index)
+{
+    return index == 0 ? &terrain_ifs : NULL;
+}

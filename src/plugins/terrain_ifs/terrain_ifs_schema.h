@@ -1,0 +1,18 @@
+/* terrain_ifs_schema.h — the parameter schema of the terrain_ifs plugin: the keys a scene's
+ * `terrain:` block may hold next to `plugin: terrain_ifs`, with their types, defaults, ranges,
+ * units and help (docs/models/terrain_ifs.md lists them). Static const data. */
+#ifndef TERRAIN_IFS_SCHEMA_H
+#define TERRAIN_IFS_SCHEMA_H
+
+#include <stdint.h>
+
+#include "sylva/plugin.h"
+
+#define TERRAIN_IFS_N_PARAMS 38u
+extern const sylva_param_spec terrain_ifs_params[TERRAIN_IFS_N_PARAMS];
+
+/* Defaults the plugin needs beside the schema. */
+#define TERRAIN_IFS_DEFAULT_CELL 25.0          /* m: node spacing of inline and generated DTMs */
+#define TERRAIN_IFS_MAX_OUTPUT_NODES 16785409u /* 4097 x 4097 output nodes */
+
+#endif

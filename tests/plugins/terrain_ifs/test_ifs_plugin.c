@@ -1,0 +1,320 @@
+/* test_ifs_plugin.c — the terrain_ifs plugin through the real host: scene files written by the
+ * test are loaded and built with the plugin from the build tree, so the schema, create(),
+ * generate() and the heightfield, materials and water the host receives are all checked, and
+ * bad input comes back as a located sentence. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include <gdal.h>
+
+#include "harness.h"
+#include "plugin_host.h"
+#include "scene/scene.h"
+#include "scene/scene_build.h"
+#include "scene/scene_file.h"
+
+#define OUT_DIR SYLVA_TEST_OUT_DIR
+
+static plugin_registry *registry(void)
+{
+    err_buf err = {{0}};
+    plugin_registry *reg = plugin_registry_open_path(SYLVA_PLUGIN_BUILD_DIR, &err);
+    CHECK(reg != NULL);
+    if (reg && !plugin_registry_find(reg, "terrain_ifs", SYLVA_KIND_TERRAIN, &err)) {
+        fprintf(stderr, "terrain_ifs is not in %s: %s\n", SYLVA_PLUGIN_BUILD_DIR, err.msg);
+        CHECK(0);
+    }
+    return reg;
+}
+
+/* Writes OUT_DIR/<name>.yaml with the given image seed and terrain keys (one "key: value" per
+ * line, without indentation) and returns its path (static storage). */
+static const char *scene_write(const char *name, int seed, const char *terrain_keys)
+{
+    static char path[512];
+    mkdir(OUT_DIR, 0755);
+    snprintf(path, sizeof path, "%s/%s.yaml", OUT_DIR, name);
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (!f) return path;
+    fprintf(f, "image: {width: 16, height: 16, spp: 1, seed: %d}\n"
+               "camera: {position: [0, -300, 100], look_at: [0, 0, 0]}\n"
+               "terrain:\n  plugin: terrain_ifs\n  threads: 2\n", seed);
+    for (const char *p = terrain_keys; *p;) {
+        const char *e = strchr(p, '\n');
+        size_t n = e ? (size_t)(e - p) : strlen(p);
+        fprintf(f, "  %.*s\n", (int)n, p);
+        p += n + (e ? 1 : 0);
+    }
+    fclose(f);
+    return path;
+}
+
+/* Loads and builds a scene; NULL with err set on failure. */
+static scene *scene_from(const char *path, plugin_registry *reg, err_buf *err)
+{
+    err_clear(err);
+    scene_file *sf = scene_file_load(path, reg, err);
+    if (!sf) return NULL;
+    build_options opt = {.quiet = 1};
+    scene *s = scene_build(sf, reg, &opt, err);
+    scene_file_free(sf);
+    return s;
+}
+
+static scene *scene_ok(const char *name, int seed, const char *keys, plugin_registry *reg)
+{
+    err_buf err;
+    scene *s = scene_from(scene_write(name, seed, keys), reg, &err);
+    CHECK(s != NULL && s->terrain != NULL);
+    if (!s) fprintf(stderr, "%s: %s\n", name, err.msg);
+    return s;
+}
+
+TEST(descriptor_and_schema)
+{
+    plugin_registry *reg = registry();
+    if (!reg) return;
+    err_buf err;
+    const loaded_plugin *lp = plugin_registry_find(reg, "terrain_ifs", SYLVA_KIND_TERRAIN, &err);
+    if (lp) {
+        CHECK_INT(lp->desc->n_params, 38);
+        CHECK(plugin_schema_check(lp->desc->params, lp->desc->n_params, &err) == 0);
+        CHECK_STR_CONTAINS(lp->desc->summary, "IFS");
+    }
+    plugin_registry_free(reg);
+}
+
+/* An inline 5 x 5 DTM, placed, scaled and evaluated deterministically in bilinear mode: the
+ * heightfield has (N - 1) refine + 1 nodes, spans the DTM's footprint around `centre`, and
+ * passes through every (scaled) DTM node. */
+TEST(inline_dtm_deterministic)
+{
+    plugin_registry *reg = registry();
+    if (!reg) return;
+    const double h[5][5] = {{10, 12, 15, 13, 11}, {11, 16, 20, 17, 12}, {12, 18, 30, 21, 14},
+                            {11, 15, 22, 18, 13}, {10, 11, 14, 12, 10}};
+    char keys[1024];
+    int n = snprintf(keys, sizeof keys, "method: deterministic\nalpha: 0.3\nrefine: 4\n"
+                     "cell_size: [10, 20]\ncentre: [100, 50]\nz_scale: 2\nz_offset: 5\nheights:");
+    for (int j = 0; j < 5; j++)
+        n += snprintf(keys + n, sizeof keys - n, "\n  - [%g, %g, %g, %g, %g]", h[j][0], h[j][1],
+                      h[j][2], h[j][3], h[j][4]);
+    scene *s = scene_ok("inline_deterministic", 1, keys, reg);
+    if (s && s->terrain) {
+        const sylva_heightfield *t = s->terrain;
+        CHECK_INT(t->nx, 17);
+        CHECK_INT(t->ny, 17);
+        CHECK_NEAR(t->dx, 2.5, 1e-12);
+        CHECK_NEAR(t->dy, 5, 1e-12);
+        CHECK_NEAR(t->x0, 80, 1e-12);
+        CHECK_NEAR(t->y0, 10, 1e-12);
+        double worst = 0;
+        for (int j = 0; j < 5; j++)
+            for (int i = 0; i < 5; i++)
+                worst = fmax(worst, fabs(t->z[(size_t)(4 * j) * 17 + 4 * i] - (2 * h[j][i] + 5)));
+        CHECK(worst <= 65 * 1.2e-7);
+        CHECK(t->material != NULL);
+        for (uint32_t k = 0; t->material && k < 17 * 17; k++)
+            CHECK(t->material[k] >= 0 && (uint32_t)t->material[k] < s->n_materials);
+        CHECK_INT(t->has_water, 0);
+        scene_free(s);
+    }
+    plugin_registry_free(reg);
+}
+
+/* The generated DTM with random iteration: the same scene gives the same heights, another seed
+ * other heights; water stands at y_w of the DTM's range with the plugin's water material. */
+TEST(generated_dtm_random_iteration)
+{
+    plugin_registry *reg = registry();
+    if (!reg) return;
+    const char *keys = "alpha: 0.2\niterations: 300000\nwater_level: 0.3\n"
+                       "generated: {nodes: [9, 9], relief: 60}\nwater_albedo: [0.1, 0.2, 0.3]";
+    scene *a = scene_ok("generated_a", 7, keys, reg);
+    scene *b = scene_ok("generated_b", 7, keys, reg);
+    scene *c = scene_ok("generated_c", 8, keys, reg);
+    if (a && b && c) {
+        const sylva_heightfield *t = a->terrain;
+        CHECK_INT(t->nx, 33);
+        CHECK_NEAR(t->dx, 25.0 * 8 / 32, 1e-12);
+        CHECK(memcmp(t->z, b->terrain->z, 33 * 33 * sizeof(float)) == 0);
+        CHECK(memcmp(t->z, c->terrain->z, 33 * 33 * sizeof(float)) != 0);
+        CHECK_INT(t->has_water, 1);
+        CHECK_NEAR(t->water_level, 18.0, 1e-9); /* generated heights span [0, 60] */
+        CHECK(t->water_material >= 0 && (uint32_t)t->water_material < a->n_materials);
+        if (t->water_material >= 0) {
+            const material *w = &a->materials[t->water_material];
+            CHECK_NEAR(w->albedo.x, 0.1, 1e-6);
+            CHECK_NEAR(w->albedo.z, 0.3, 1e-6);
+            CHECK_STR_CONTAINS(w->name, "water");
+        }
+        /* more than one ground class on a rough 60 m relief */
+        int first = t->material[0], varied = 0;
+        for (uint32_t k = 0; k < 33 * 33; k++) varied |= t->material[k] != first;
+        CHECK(varied);
+    }
+    scene_free(a), scene_free(b), scene_free(c);
+    plugin_registry_free(reg);
+}
+
+/* surface: scene leaves the ground to the scene's terrain material (no per-node ids). */
+TEST(surface_from_scene)
+{
+    plugin_registry *reg = registry();
+    if (!reg) return;
+    scene *s = scene_ok("surface_scene", 1, "surface: scene\nmode: affine\nmethod: deterministic", reg);
+    if (s) {
+        CHECK(s->terrain->material == NULL);
+        CHECK_INT(s->terrain->nx, 65);
+        scene_free(s);
+    }
+    plugin_registry_free(reg);
+}
+
+static void write_humidity(const char *path, uint8_t value)
+{
+    GDALAllRegister();
+    GDALDatasetH ds = GDALCreate(GDALGetDriverByName("GTiff"), path, 4, 4, 1, GDT_Byte, NULL);
+    CHECK(ds != NULL);
+    if (!ds) return;
+    uint8_t v[16];
+    memset(v, value, sizeof v);
+    CHECK(GDALRasterIO(GDALGetRasterBand(ds, 1), GF_Write, 0, 0, 4, 4, v, 4, 4, GDT_Byte, 0, 0) == CE_None);
+    GDALClose(ds);
+}
+
+/* A flat meadow is grass; under a dry humidity map it is dry grass. The map's path is relative
+ * to the scene file. */
+TEST(humidity_map_dries_grass)
+{
+    plugin_registry *reg = registry();
+    if (!reg) return;
+    char path[512];
+    snprintf(path, sizeof path, "%s/dry.tif", OUT_DIR);
+    mkdir(OUT_DIR, 0755);
+    write_humidity(path, 20);
+    snprintf(path, sizeof path, "%s/wet.tif", OUT_DIR);
+    write_humidity(path, 240);
+    const char *flat = "heights: [[5, 5, 5], [5, 5, 5], [5, 5, 5]]\nmethod: deterministic\n";
+    char keys[512];
+    snprintf(keys, sizeof keys, "%shumidity_map: dry.tif", flat);
+    scene *dry = scene_ok("humidity_dry", 1, keys, reg);
+    snprintf(keys, sizeof keys, "%shumidity_map: wet.tif", flat);
+    scene *wet = scene_ok("humidity_wet", 1, keys, reg);
+    if (dry && wet) {
+        CHECK_STR_CONTAINS(dry->materials[dry->terrain->material[4]].name, "dry grass");
+        const char *n = wet->materials[wet->terrain->material[4]].name;
+        CHECK_STR_CONTAINS(n, "grass");
+        CHECK(strstr(n, "dry") == NULL);
+    }
+    scene_free(dry), scene_free(wet);
+    plugin_registry_free(reg);
+}
+
+/* A DTM file named relative to the scene, cropped and resampled. */
+TEST(dtm_file_relative_to_scene)
+{
+    plugin_registry *reg = registry();
+    if (!reg) return;
+    char path[512], text[4096];
+    snprintf(path, sizeof path, "%s/scene_dtm.asc", OUT_DIR);
+    mkdir(OUT_DIR, 0755);
+    int n = snprintf(text, sizeof text, "ncols 11\nnrows 9\nxllcorner 500000\nyllcorner 4000000\n"
+                     "cellsize 10\nNODATA_value -9999\n");
+    for (int r = 0; r < 9; r++) {
+        for (int c = 0; c < 11; c++)
+            n += snprintf(text + n, sizeof text - n, "%d ", r == 4 && c == 4 ? -9999 : 300 + 2 * r + c);
+        n += snprintf(text + n, sizeof text - n, "\n");
+    }
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (f) {
+        fputs(text, f);
+        fclose(f);
+    }
+    scene *s = scene_ok("dtm_file", 1, "dtm: scene_dtm.asc\ncrop: [1, 0, 9, 9]\nstep: 2\n"
+                        "method: deterministic\nalpha: 0.1\nrefine: 2", reg);
+    if (s) {
+        /* 9 x 9 window, step 2: 5 x 5 nodes 20 m apart, 9 x 9 output nodes 10 m apart */
+        CHECK_INT(s->terrain->nx, 9);
+        CHECK_NEAR(s->terrain->dx, 10, 1e-12);
+        CHECK_NEAR(s->terrain->x0, -40, 1e-12);
+        /* south-west DTM node: file row 8, column 1 */
+        CHECK_NEAR(s->terrain->z[0], 300 + 16 + 1, 1e-4);
+        scene_free(s);
+    }
+    plugin_registry_free(reg);
+}
+
+/* Every bad input stops the scene with a sentence saying what is wrong. */
+TEST(bad_input_is_refused_clearly)
+{
+    plugin_registry *reg = registry();
+    if (!reg) return;
+    char empty[512];
+    snprintf(empty, sizeof empty, "%s/empty_dtm.asc", OUT_DIR);
+    mkdir(OUT_DIR, 0755);
+    FILE *f = fopen(empty, "w");
+    if (f) fclose(f);
+    static const struct {
+        const char *keys, *expect;
+    } cases[] = {
+        {"alpha: 1.5", "'alpha' must be in (-1, 1), got 1.5"},
+        {"alpha: -1", "'alpha' must be in (-1, 1)"},
+        {"iterations: 0", "'iterations' must be an integer in [1, 1000000000]"},
+        {"iterations: 5000000000", "'iterations' must be an integer in [1, 1000000000]"},
+        {"heights: []", "needs at least one row"},
+        {"heights: [[5]]", "1 x 1 nodes; the IFS needs at least 3 x 3"},
+        {"heights: [[1, 2], [3, 4]]", "2 x 2 nodes; the IFS needs at least 3 x 3"},
+        {"dtm: no_such_dtm.tif", "cannot read the DTM"},
+        {"dtm: empty_dtm.asc", "cannot read the DTM"},
+        {"alpha_field: [[0.1, 0.2]]", "alpha_field has 1 rows of 2 values; the DTM has 16 rows of 16 cells"},
+        {"alpha_field: [[0.1, 1.0]]", "must be in (-1, 1)"},
+        {"probability_field: [[0.1, -1]]", ">= 0"},
+        {"dtm: x.tif\nheights: [[1, 2, 3], [1, 2, 3], [1, 2, 3]]", "give dtm or heights, not both"},
+        {"step: 2", "step applies to a dtm file"},
+        {"method: deterministic\niterations: 10", "iterations and start belong to method: random"},
+        {"refine: 1024", "the output grid would have 16385 x 16385 nodes"},
+        {"output_nodes: [100]", "output_nodes must be two whole numbers"},
+        {"start: [100000, 0, 0]", "lies outside the DTM"},
+        {"start: [0, 0]", "start has 2 numbers"},
+        {"scree_slope: 50", "scree_slope 50 exceeds rock_slope 42"},
+        {"surface: scene\nsnow_line: 0.5", "belongs to surface: classes"},
+        {"humidity_map: no_such_humidity.tif", "cannot read the humidity map"},
+        {"humidity_range: [0, 255]", "describe a humidity_map; this terrain has none"},
+        {"humidity_map: x.png\nhumidity_range: [5, 5]", "humidity_range must be two different numbers"},
+        {"dtm: empty_dtm.asc\ncrop: [0, 0, 5]", "crop has 3 numbers"},
+        {"generated: {nodes: [2, 17]}", "must be"},
+        {"generated: {nodes: [17.5, 17]}", "whole numbers"},
+        {"mode: trilinear", "'mode' must be one of bilinear, affine"},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        err_buf err;
+        char name[32];
+        snprintf(name, sizeof name, "bad_%zu", k);
+        const char *path = scene_write(name, 1, cases[k].keys);
+        scene *s = scene_from(path, reg, &err);
+        CHECK(s == NULL);
+        if (s) {
+            fprintf(stderr, "  case %zu (%s) was accepted\n", k, cases[k].keys);
+            scene_free(s);
+            continue;
+        }
+        CHECK_STR_CONTAINS(err.msg, cases[k].expect);
+        CHECK_STR_CONTAINS(err.msg, name); /* located in the scene file */
+        fprintf(stderr, "  %-45.45s -> %s\n", cases[k].keys, err.msg + strlen(OUT_DIR) + 1);
+    }
+    plugin_registry_free(reg);
+}
+
+TEST_LIST(TEST_CASE(descriptor_and_schema),
+          TEST_CASE(inline_dtm_deterministic),
+          TEST_CASE(generated_dtm_random_iteration),
+          TEST_CASE(surface_from_scene),
+          TEST_CASE(humidity_map_dries_grass),
+          TEST_CASE(dtm_file_relative_to_scene),
+          TEST_CASE(bad_input_is_refused_clearly))

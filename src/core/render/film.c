@@ -19,8 +19,11 @@ film *film_new(uint32_t w, uint32_t h, err_buf *err)
         f->albedo = calloc(n * 3, sizeof(float));
         f->instance_id = calloc(n, sizeof(uint32_t));
         f->species_id = calloc(n, sizeof(uint32_t));
+        f->pixel_class = calloc(n, 1);
+        f->coverage = calloc(n, sizeof(float));
     }
-    if (!f || !f->rgb || !f->depth || !f->normal || !f->albedo || !f->instance_id || !f->species_id) {
+    if (!f || !f->rgb || !f->depth || !f->normal || !f->albedo || !f->instance_id || !f->species_id ||
+        !f->pixel_class || !f->coverage) {
         film_free(f);
         err_set(err, "out of memory for a %ux%u frame", w, h);
         return NULL;
@@ -32,6 +35,7 @@ void film_free(film *f)
 {
     if (!f) return;
     free(f->rgb), free(f->depth), free(f->normal), free(f->albedo), free(f->instance_id), free(f->species_id);
+    free(f->pixel_class), free(f->coverage);
     free(f);
 }
 

@@ -7,6 +7,9 @@
  * comes out just below white, an 18 % grey in the sun as a mid-tone. The EXR keeps linear
  * values.
  *
+ * The class and coverage layers serve comparisons (the POV-Ray cross-check); they are not
+ * written to the EXR.
+ *
  * Ownership: film_new allocates all layers; film_free releases them. */
 #ifndef SYLVA_FILM_H
 #define SYLVA_FILM_H
@@ -14,6 +17,13 @@
 #include <stdint.h>
 
 #include "util/err.h"
+
+/* What a pixel's centre ray sees first. Plant surfaces are leaves when their material is a leaf
+ * material and bark otherwise; the water surface counts as terrain. */
+typedef enum pixel_class {
+    PIXEL_SKY = 0, PIXEL_TERRAIN = 1, PIXEL_BARK = 2, PIXEL_LEAVES = 3, PIXEL_OBJECT = 4
+} pixel_class;
+#define PIXEL_CLASS_COUNT 5
 
 typedef struct film {
     uint32_t width, height;
@@ -23,6 +33,8 @@ typedef struct film {
     float *albedo;         /* 3 per pixel */
     uint32_t *instance_id; /* 1 per pixel */
     uint32_t *species_id;  /* 1 per pixel */
+    uint8_t *pixel_class;  /* 1 per pixel: a pixel_class */
+    float *coverage;       /* 1 per pixel: share of the camera samples that hit a surface */
 } film;
 
 film *film_new(uint32_t width, uint32_t height, err_buf *err);

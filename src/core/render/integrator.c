@@ -5,6 +5,7 @@
 #include <math.h>
 
 #include "render/bsdf.h"
+#include "render/film.h"
 #include "render/sampler.h"
 
 /* Sampler dimensions: 0-1 pixel position; then DIMS_PER_VERTEX per path vertex. */
@@ -59,7 +60,8 @@ static vec3 offset_point(vec3 p, vec3 ng, vec3 d)
     return v3_madd(p, ng, v3_dot(ng, d) >= 0.0f ? eps : -eps);
 }
 
-static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec3 d)
+/* *hit: 1 when the camera ray hit a surface. */
+static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec3 d, int *hit)
 {
     const accel *a = ctx->accel;
     const lights *l = ctx->lights;
@@ -68,7 +70,9 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
     for (uint32_t depth = 0;; depth++) {
         struct RTCRayHit rh;
         ray_init(&rh, o, d, 0.0f, INFINITY);
-        if (!trace(ctx, &rh)) {
+        int found = trace(ctx, &rh);
+        if (depth == 0) *hit = found;
+        if (!found) {
             /* The camera sees the exact sky; light reaching surfaces uses the tabulated sky, the
              * same function next-event estimation samples, so both MIS strategies agree. */
             if (prev_pdf > 0.0f && l->table.rgb) {
@@ -141,23 +145,72 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
     return L;
 }
 
-static vec3 verify_radiance(const render_ctx *ctx, vec3 o, vec3 d)
+#define VERIFY_STREAM 64 /* camera rays of one pixel traced together as a coherent stream */
+
+/* The verification samples of pixel (x, y): the centre, then (grid > 1) a grid x grid grid;
+ * camera rays go to Embree as coherent streams, then the shadow rays of the hits the sun can
+ * light. Sets *rgb to the samples' mean and *coverage to the share that hit a surface. */
+static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t grid, vec3 *rgb, float *coverage)
 {
     const accel *a = ctx->accel;
     const lights *l = ctx->lights;
-    struct RTCRayHit rh;
-    ray_init(&rh, o, d, 0.0f, INFINITY);
-    if (!trace(ctx, &rh)) return l->sky_mean;
-    hit_info h;
-    accel_shade(a, &rh, &h);
-    vec3 wo = v3_scale(d, -1.0f);
-    vec3 n = v3_dot(h.ns, wo) < 0.0f ? v3_scale(h.ns, -1.0f) : h.ns;
-    vec3 ng = v3_dot(h.ng, wo) < 0.0f ? v3_scale(h.ng, -1.0f) : h.ng;
-    vec3 E = l->ambient;
-    float c = v3_dot(n, l->sun_dir);
-    if (l->sun_on && c > 0.0f && visible(ctx, offset_point(h.p, ng, l->sun_dir), l->sun_dir, INFINITY))
-        E = v3_add(E, v3_scale(l->sun_irradiance, c));
-    return v3_mul(h.albedo, E);
+    const uint32_t n = grid > 1 ? grid * grid + 1 : 1;
+    struct RTCRayHit rh[VERIFY_STREAM];
+    struct RTCRay shadow[VERIFY_STREAM];
+    vec3 albedo[VERIFY_STREAM];
+    float cosine[VERIFY_STREAM]; /* n.l where the sun may light the hit, else 0 */
+    uint32_t owner[VERIFY_STREAM], hits = 0;
+    struct RTCIntersectContext ic;
+    vec3 sum = v3(0, 0, 0);
+    for (uint32_t s0 = 0; s0 < n; s0 += VERIFY_STREAM) {
+        uint32_t m = n - s0 < VERIFY_STREAM ? n - s0 : VERIFY_STREAM, k = 0;
+        for (uint32_t i = 0; i < m; i++) {
+            uint32_t s = s0 + i, g = s ? s - 1 : 0;
+            float sx = s ? ((g % grid) + 0.5f) / grid : 0.5f, sy = s ? ((g / grid) + 0.5f) / grid : 0.5f;
+            vec3 d = camera_direction(&ctx->camera, x + sx, y + sy);
+            ray_init(&rh[i], ctx->camera.origin, d, 0.0f, INFINITY);
+            if (ctx->recorder) ctx->recorder->record(ctx->recorder->user, ctx->camera.origin, d, INFINITY, 0);
+        }
+        rtcInitIntersectContext(&ic);
+        ic.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+        rtcIntersect1M(a->top, &ic, rh, m, sizeof rh[0]);
+        for (uint32_t i = 0; i < m; i++) {
+            cosine[i] = 0.0f;
+            if (rh[i].hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
+            hits++;
+            hit_info h;
+            accel_shade(a, &rh[i], &h);
+            vec3 wo = v3(-rh[i].ray.dir_x, -rh[i].ray.dir_y, -rh[i].ray.dir_z);
+            vec3 nrm = v3_dot(h.ns, wo) < 0.0f ? v3_scale(h.ns, -1.0f) : h.ns;
+            vec3 ng = v3_dot(h.ng, wo) < 0.0f ? v3_scale(h.ng, -1.0f) : h.ng;
+            albedo[i] = h.albedo;
+            float c = v3_dot(nrm, l->sun_dir);
+            if (!l->sun_on || !(c > 0.0f)) continue;
+            vec3 o = offset_point(h.p, ng, l->sun_dir);
+            shadow[k] = (struct RTCRay){.org_x = o.x, .org_y = o.y, .org_z = o.z, .tnear = 0.0f, .dir_x = l->sun_dir.x,
+                                        .dir_y = l->sun_dir.y, .dir_z = l->sun_dir.z, .time = 0.0f, .tfar = INFINITY,
+                                        .mask = 0xffffffffu, .id = 0, .flags = 0};
+            if (ctx->recorder) ctx->recorder->record(ctx->recorder->user, o, l->sun_dir, INFINITY, 1);
+            cosine[i] = c;
+            owner[k++] = i;
+        }
+        if (k) {
+            rtcInitIntersectContext(&ic);
+            ic.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+            rtcOccluded1M(a->top, &ic, shadow, k, sizeof shadow[0]);
+            for (uint32_t j = 0; j < k; j++)
+                if (shadow[j].tfar < 0.0f) cosine[owner[j]] = 0.0f;
+        }
+        for (uint32_t i = 0; i < m; i++) {
+            vec3 L = l->sky_mean;
+            if (rh[i].hit.geomID != RTC_INVALID_GEOMETRY_ID)
+                L = v3_mul(albedo[i], cosine[i] > 0.0f ? v3_add(l->ambient, v3_scale(l->sun_irradiance, cosine[i]))
+                                                       : l->ambient);
+            if (isfinite(L.x) && isfinite(L.y) && isfinite(L.z)) sum = v3_add(sum, L);
+        }
+    }
+    *rgb = v3_scale(sum, 1.0f / (float)n);
+    *coverage = (float)hits / (float)n;
 }
 
 static void aux_layers(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_result *out)
@@ -169,6 +222,7 @@ static void aux_layers(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_resu
         out->depth = INFINITY;
         out->normal = v3(0, 0, 0), out->albedo = v3(0, 0, 0);
         out->instance_id = out->species_id = 0;
+        out->pixel_class = PIXEL_SKY;
         return;
     }
     hit_info h;
@@ -178,30 +232,37 @@ static void aux_layers(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_resu
     out->albedo = h.albedo;
     out->instance_id = h.instance_id;
     out->species_id = h.species_id;
+    switch (h.kind) {
+    case GEOM_TERRAIN:
+    case GEOM_WATER: out->pixel_class = PIXEL_TERRAIN; break;
+    case GEOM_PROTOTYPE: out->pixel_class = h.mat->bsdf == SYLVA_BSDF_LEAF ? PIXEL_LEAVES : PIXEL_BARK; break;
+    case GEOM_OBJECT: out->pixel_class = PIXEL_OBJECT; break;
+    }
 }
 
 void integrate_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_result *out)
 {
+    if (ctx->verify) {
+        uint32_t grid = 1; /* spp rounded down to a square */
+        while ((grid + 1) * (grid + 1) <= ctx->spp) grid++;
+        verify_pixel(ctx, x, y, grid, &out->rgb, &out->coverage);
+        aux_layers(ctx, x, y, out);
+        return;
+    }
     uint64_t pixel = (uint64_t)y * ctx->camera.width + x;
     vec3 sum = v3(0, 0, 0);
-    uint32_t grid = 1;
-    while ((grid + 1) * (grid + 1) <= ctx->spp) grid++;
-    uint32_t n = ctx->verify ? grid * grid : ctx->spp; /* verification: spp rounded down to a square */
+    uint32_t n = ctx->spp, hits = 0;
     for (uint32_t s = 0; s < n; s++) {
         sampler smp;
         sampler_start(&smp, ctx->seed, pixel, s);
-        float sx, sy;
-        if (ctx->verify) {
-            sx = ((s % grid) + 0.5f) / grid;
-            sy = ((s / grid) + 0.5f) / grid;
-        } else {
-            sx = sampler_at(&smp, 0), sy = sampler_at(&smp, 1);
-        }
-        vec3 d = camera_direction(&ctx->camera, x + sx, y + sy);
-        vec3 L = ctx->verify ? verify_radiance(ctx, ctx->camera.origin, d) : path_radiance(ctx, &smp, ctx->camera.origin, d);
+        vec3 d = camera_direction(&ctx->camera, x + sampler_at(&smp, 0), y + sampler_at(&smp, 1));
+        int hit = 0;
+        vec3 L = path_radiance(ctx, &smp, ctx->camera.origin, d, &hit);
         if (!(isfinite(L.x) && isfinite(L.y) && isfinite(L.z))) L = v3(0, 0, 0);
         sum = v3_add(sum, L);
+        hits += hit != 0;
     }
     out->rgb = v3_scale(sum, 1.0f / (float)n);
+    out->coverage = (float)hits / (float)n;
     aux_layers(ctx, x, y, out);
 }

@@ -7,9 +7,13 @@
  * Verification mode: what POV-Ray computes from the same scene — at the first hit,
  * albedo * (ambient + sun irradiance * max(0, n.l) * visibility), with the normal turned toward
  * the viewer, hard shadows from a point-like sun, no indirect light; rays that miss show the
- * sky's mean colour. Samples sit on a regular sub-pixel grid (no jitter).
+ * sky's mean colour. Samples as POV-Ray's non-adaptive antialiasing (method 1, threshold 0, no
+ * jitter) takes them: below 4 spp one ray through the pixel centre; otherwise spp is rounded
+ * down to a square R x R and the pixel is the equally weighted mean of the centre ray and a
+ * regular R x R grid of rays at sub-pixel offsets (i + 0.5) / R - 0.5.
  *
- * Auxiliary layers (depth, normal, albedo, ids) come from one ray through the pixel centre. */
+ * Auxiliary layers (depth, normal, albedo, ids, class) come from one ray through the pixel
+ * centre; coverage is the share of the camera samples whose first ray hit a surface. */
 #ifndef SYLVA_INTEGRATOR_H
 #define SYLVA_INTEGRATOR_H
 
@@ -39,6 +43,8 @@ typedef struct pixel_result {
     vec3 normal;
     vec3 albedo;
     uint32_t instance_id, species_id;
+    uint8_t pixel_class;  /* a pixel_class (render/film.h) */
+    float coverage;
 } pixel_result;
 
 void integrate_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_result *out);

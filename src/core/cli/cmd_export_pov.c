@@ -1,0 +1,185 @@
+/* cmd_export_pov.c — `sylva export-pov SCENE`: load, build, write POV-Ray 3.7 scene files (the
+ * whole scene, or one species for use in another POV-Ray scene). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli_args.h"
+#include "cli/commands.h"
+#include "io/pov_write.h"
+#include "plugin_host.h"
+#include "scene/scene_build.h"
+#include "scene/scene_file.h"
+#include "util/progress.h"
+
+static void export_pov_usage(FILE *out)
+{
+    fprintf(out,
+            "usage: sylva export-pov SCENE [options]\n"
+            "Writes SCENE (a YAML scene file) as POV-Ray 3.7 scene files: OUT.pov with the camera,\n"
+            "sun, sky and includes beside it for the materials, terrain, objects, species (each\n"
+            "variant declared once as a mesh2) and plants (one `object { Species_k matrix <..> }`\n"
+            "each), plus the images of textured materials. Rendered by POV-Ray from the output\n"
+            "folder, it gives the picture of `sylva render --verify` (see docs/crosscheck.md).\n\n"
+            "options:\n"
+            "  -o, --output FILE   OUT.pov (default: the scene's name with .pov in the current folder);\n"
+            "                      with --species also OUT.inc alone\n"
+            "  --size WxH          image size the camera's aspect ratio is written for (default: the\n"
+            "                      scene's image.width/height)\n"
+            "  --spp N             samples per pixel the render command in OUT.pov matches\n"
+            "  --species NAME      one species only: OUT.inc declares its variants (base at the\n"
+            "                      origin, growing along +Z) with their materials; OUT.pov adds a\n"
+            "                      small scene showing them side by side\n"
+            "  --variant K         with --species: variant K only (0 is the youngest)\n"
+            "  -q, --quiet         no progress output\n"
+            "  -v, --verbose       plugin debug messages\n"
+            "  -h, --help          this text\n\n"
+            "Prints the path of the main file written.\n"
+            "exit status: 0 done, 1 usage, 2 bad scene, plugin failure or unknown species,\n"
+            "3 output not written, 4 out of memory or internal error\n");
+}
+
+/* The default output: the scene's stem with .pov in the current folder. */
+static int default_output(const char *scene_path, char *out, size_t n)
+{
+    const char *slash = strrchr(scene_path, '/');
+    const char *name = slash ? slash + 1 : scene_path;
+    const char *dot = strrchr(name, '.');
+    size_t l = dot && dot != name ? (size_t)(dot - name) : strlen(name);
+    return (size_t)snprintf(out, n, "%.*s.pov", (int)l, name) >= n ? -1 : 0;
+}
+
+int cmd_export_pov(int argc, char **argv)
+{
+    const char *scene_path = NULL, *out = NULL, *species_name = NULL;
+    pov_export_options po = {0};
+    build_options bo = {0};
+    int64_t variant = -1;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *val = i + 1 < argc ? argv[i + 1] : NULL;
+        uint64_t v;
+        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+            export_pov_usage(stdout);
+            return EXIT_OK;
+        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
+            if (!val) goto missing;
+            out = val, i++;
+        } else if (!strcmp(a, "--size")) {
+            if (!val || cli_parse_size("export-pov", a, val, &po.width, &po.height)) return EXIT_USAGE;
+            i++;
+        } else if (!strcmp(a, "--spp")) {
+            if (!val || cli_parse_u64("export-pov", a, val, 1, 1u << 20, &v)) return EXIT_USAGE;
+            po.spp = (uint32_t)v, i++;
+        } else if (!strcmp(a, "--species")) {
+            if (!val) goto missing;
+            species_name = val, i++;
+        } else if (!strcmp(a, "--variant")) {
+            if (!val || cli_parse_u64("export-pov", a, val, 0, 1u << 20, &v)) return EXIT_USAGE;
+            variant = (int64_t)v, i++;
+        } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
+            bo.quiet = 1;
+        } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
+            bo.verbose = 1;
+        } else if (a[0] == '-') {
+            fprintf(stderr, "sylva export-pov: unknown option '%s' (see sylva export-pov --help)\n", a);
+            return EXIT_USAGE;
+        } else if (!scene_path) {
+            scene_path = a;
+        } else {
+            fprintf(stderr, "sylva export-pov: one scene file only; '%s' is extra\n", a);
+            return EXIT_USAGE;
+        }
+        continue;
+    missing:
+        fprintf(stderr, "sylva export-pov: %s needs a value\n", a);
+        return EXIT_USAGE;
+    }
+    if (!scene_path) {
+        export_pov_usage(stderr);
+        return EXIT_USAGE;
+    }
+    if (variant >= 0 && !species_name) {
+        fprintf(stderr, "sylva export-pov: --variant needs --species NAME\n");
+        return EXIT_USAGE;
+    }
+    char out_default[4096];
+    if (!out) {
+        if (default_output(scene_path, out_default, sizeof out_default)) {
+            fprintf(stderr, "sylva export-pov: the scene's name is too long for an output name\n");
+            return EXIT_USAGE;
+        }
+        out = out_default;
+    }
+    size_t ol = strlen(out);
+    int out_pov = ol > 4 && !strcmp(out + ol - 4, ".pov"), out_inc = ol > 4 && !strcmp(out + ol - 4, ".inc");
+    if (!out_pov && !(species_name && out_inc)) {
+        fprintf(stderr, "sylva export-pov: -o must name a .pov file%s, got '%s'\n",
+                species_name ? " or, with --species, an .inc file" : "", out);
+        return EXIT_USAGE;
+    }
+
+    err_buf err = {{0}};
+    int rc = EXIT_OK;
+    scene_file *sf = NULL;
+    scene *sc = NULL;
+    double t0 = progress_now();
+    plugin_registry *reg = plugin_registry_open(&err);
+    if (!reg) {
+        fprintf(stderr, "sylva export-pov: %s\n", err.msg);
+        return EXIT_INTERNAL;
+    }
+    sf = scene_file_load(scene_path, reg, &err);
+    if (!sf) {
+        fprintf(stderr, "%s\n", err.msg);
+        rc = EXIT_INPUT;
+        goto done;
+    }
+    sc = scene_build(sf, reg, &bo, &err);
+    if (!sc) {
+        fprintf(stderr, "%s\n", err.msg);
+        rc = EXIT_INPUT;
+        goto done;
+    }
+    double t1 = progress_now();
+    pov_export_stats st;
+    if (species_name) {
+        uint32_t k = 0;
+        while (k < sc->n_species && strcmp(sc->species[k].name, species_name)) k++;
+        if (k == sc->n_species) {
+            fprintf(stderr, "sylva export-pov: the scene has no species '%s'; it has:", species_name);
+            for (uint32_t j = 0; j < sc->n_species; j++) fprintf(stderr, "%s '%s'", j ? "," : "", sc->species[j].name);
+            fprintf(stderr, "%s\n", sc->n_species ? "" : " none");
+            rc = EXIT_INPUT;
+            goto done;
+        }
+        if (variant >= 0 && (uint64_t)variant >= sc->species[k].n_variants) {
+            fprintf(stderr, "sylva export-pov: species '%s' has variants 0 to %u; --variant %lld does not exist\n",
+                    species_name, sc->species[k].n_variants ? sc->species[k].n_variants - 1 : 0, (long long)variant);
+            rc = EXIT_INPUT;
+            goto done;
+        }
+        if (pov_export_species(sc, k, (int32_t)variant, out, scene_path, &st, &err)) {
+            fprintf(stderr, "sylva export-pov: %s\n", err.msg);
+            rc = EXIT_OUTPUT;
+            goto done;
+        }
+    } else {
+        po.source = scene_path;
+        if (pov_export_scene(sc, out, &po, &st, &err)) {
+            fprintf(stderr, "sylva export-pov: %s\n", err.msg);
+            rc = EXIT_OUTPUT;
+            goto done;
+        }
+    }
+    if (!bo.quiet)
+        fprintf(stderr, "exported %u files, %.1f MB (%llu plants, %llu left out) in %.2fs; scene built in %.2fs\n", st.files,
+                st.bytes / 1e6, (unsigned long long)st.instances, (unsigned long long)st.skipped, progress_now() - t1,
+                t1 - t0);
+    printf("%s\n", out);
+done:
+    scene_free(sc);
+    scene_file_free(sf);
+    plugin_registry_free(reg);
+    return rc;
+}

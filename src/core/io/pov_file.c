@@ -1,0 +1,131 @@
+/* pov_file.c — streamed scene files and text builders for the POV-Ray exporter. */
+#include "io/pov_file.h"
+
+#include <errno.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "io/atomic_file.h"
+#include "io/pov_number.h"
+
+#define POV_FILE_BUFFER (1u << 20)
+
+int pov_file_open(pov_file *pf, const char *path, err_buf *err)
+{
+    memset(pf, 0, sizeof *pf);
+    size_t n = strlen(path);
+    if (n >= sizeof pf->path) return err_set(err, "%s: output path is too long", path);
+    memcpy(pf->path, path, n + 1);
+    if (atomic_temp_name(path, pf->tmp, sizeof pf->tmp, err)) return -1;
+    pf->f = fopen(pf->tmp, "w");
+    if (!pf->f) return err_set(err, "%s: cannot create the file: %s", path, strerror(errno));
+    pf->buffer = malloc(POV_FILE_BUFFER);
+    if (pf->buffer) setvbuf(pf->f, pf->buffer, _IOFBF, POV_FILE_BUFFER);
+    return 0;
+}
+
+int pov_file_finish(pov_file *pf, uint64_t *bytes, err_buf *err)
+{
+    if (!pf->f) return err_set(err, "%s: the file was not open", pf->path);
+    long size = ftell(pf->f);
+    int bad = fflush(pf->f) != 0 || ferror(pf->f);
+    int e = errno;
+    bad |= fclose(pf->f) != 0;
+    pf->f = NULL;
+    free(pf->buffer);
+    pf->buffer = NULL;
+    if (bad) {
+        remove(pf->tmp);
+        return err_set(err, "%s: writing failed: %s", pf->path, strerror(e ? e : EIO));
+    }
+    if (atomic_commit(pf->tmp, pf->path, err)) return -1;
+    if (bytes && size > 0) *bytes += (uint64_t)size;
+    return 0;
+}
+
+void pov_file_abort(pov_file *pf)
+{
+    if (pf->f) {
+        fclose(pf->f);
+        pf->f = NULL;
+        remove(pf->tmp);
+    }
+    free(pf->buffer);
+    pf->buffer = NULL;
+}
+
+void pov_put(pov_file *pf, const char *text)
+{
+    fputs(text, pf->f);
+}
+
+void pov_printf(pov_file *pf, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vfprintf(pf->f, fmt, ap);
+    va_end(ap);
+}
+
+char *pov_append_text(char *p, const char *text)
+{
+    size_t n = strlen(text);
+    memcpy(p, text, n + 1);
+    return p + n;
+}
+
+char *pov_append_uint(char *p, uint64_t v)
+{
+    char digits[24];
+    int n = 0;
+    do {
+        digits[n++] = (char)('0' + v % 10);
+        v /= 10;
+    } while (v);
+    while (n) *p++ = digits[--n];
+    *p = '\0';
+    return p;
+}
+
+char *pov_append_real(char *p, double v, int digits, int *bad)
+{
+    int n = pov_format_real(p, v, digits);
+    if (n < 0) {
+        if (bad) (*bad)++;
+        return p + 1;
+    }
+    return p + n;
+}
+
+char *pov_append_float(char *p, float v, int *bad)
+{
+    int n = pov_format_float(p, v);
+    if (n < 0) {
+        if (bad) (*bad)++;
+        return p + 1;
+    }
+    return p + n;
+}
+
+char *pov_append_vec3(char *p, const double v[3], int digits, int *bad)
+{
+    *p++ = '<';
+    p = pov_append_real(p, v[0], digits, bad);
+    p = pov_append_text(p, ", ");
+    p = pov_append_real(p, v[1], digits, bad);
+    p = pov_append_text(p, ", ");
+    p = pov_append_real(p, v[2], digits, bad);
+    return pov_append_text(p, ">");
+}
+
+char *pov_append_vec3f(char *p, float x, float y, float z, int *bad)
+{
+    *p++ = '<';
+    p = pov_append_float(p, x, bad);
+    p = pov_append_text(p, ", ");
+    p = pov_append_float(p, y, bad);
+    p = pov_append_text(p, ", ");
+    p = pov_append_float(p, z, bad);
+    return pov_append_text(p, ">");
+}

@@ -13,6 +13,8 @@ int cmd_plugins(int argc, char **argv);
 int cmd_render(int argc, char **argv);
 int cmd_export_pov(int argc, char **argv); /* `sylva export-pov SCENE`: POV-Ray 3.7 scene files (cmd_export_pov.c) */
 int cmd_crosscheck(int argc, char **argv); /* `sylva crosscheck SCENE`: sylva vs POV-Ray, report (cmd_crosscheck.c) */
+int cmd_simulate(int argc, char **argv); /* `sylva simulate SCENE`: the ecology alone, year by year (cmd_simulate.c) */
+int cmd_factors(int argc, char **argv);  /* `sylva factors SCENE -o DIR`: the ecology's terrain factor maps (cmd_factors.c) */
 int cmd_tree_stats(int argc, char **argv); /* `sylva tree-stats SCENE SPECIES`: a tree species' models in figures (cmd_tree_stats.c) */
 
 #endif

@@ -15,6 +15,8 @@ static void usage(FILE *out)
             "  plugins          list the plugins found (and problems with broken ones)\n"
             "  export-pov SCENE write a scene (or one species) as POV-Ray 3.7 scene files\n"
             "  crosscheck SCENE render with sylva (verification mode) and POV-Ray, compare, report\n"
+            "  simulate SCENE   run the scene's ecology alone: plants, statistics, saved state\n"
+            "  factors SCENE    write the ecology's terrain factor maps (-o DIR)\n"
             "  tree-stats SCENE SPECIES  a tree species' variants: segments, leaves, bounds, D_B\n"
             "  --version        print the version\n"
             "  --help           this text; every command takes --help too\n\n"
@@ -43,6 +45,8 @@ int main(int argc, char **argv)
     if (!strcmp(cmd, "plugins")) return cmd_plugins(argc - 1, argv + 1);
     if (!strcmp(cmd, "export-pov")) return cmd_export_pov(argc - 1, argv + 1);
     if (!strcmp(cmd, "crosscheck")) return cmd_crosscheck(argc - 1, argv + 1);
+    if (!strcmp(cmd, "simulate")) return cmd_simulate(argc - 1, argv + 1);
+    if (!strcmp(cmd, "factors")) return cmd_factors(argc - 1, argv + 1);
     if (!strcmp(cmd, "tree-stats")) return cmd_tree_stats(argc - 1, argv + 1);
     fprintf(stderr, "sylva: unknown command '%s' (commands: render, plugins; see sylva --help)\n", cmd);
     return EXIT_USAGE;

@@ -258,26 +258,63 @@ static int build_plants(scene *s, const scene_file *sf, err_buf *err)
     return 0;
 }
 
+uint64_t scene_ecology_seed(const scene_file *sf) { return rng_combine(sf->image.seed, rng_hash_str("ecology")); }
+
+sylva_species_info *scene_ecology_species(const scene *s, const scene_file *sf, err_buf *err)
+{
+    sylva_species_info *info = calloc(sf->n_species ? sf->n_species : 1, sizeof *info);
+    if (!info) {
+        err_set(err, "out of memory for %u species", sf->n_species);
+        return NULL;
+    }
+    for (uint32_t i = 0; i < sf->n_species && i < s->n_species; i++) {
+        const species *sp = &s->species[i];
+        double h = sp->n_variants ? s->prototypes[sp->first_prototype + sp->n_variants - 1].height : 0;
+        info[i] = (sylva_species_info){.size = sizeof *info, .name = sp->name, .ecology = sf->species[i].ecology,
+                                       .model_height = h};
+    }
+    return info;
+}
+
+int scene_place_plants(scene *s, const sylva_plant *plants, uint32_t n, err_buf *err)
+{
+    for (uint32_t i = 0; i < n; i++) {
+        const sylva_plant *p = &plants[i];
+        if (p->species >= s->n_species || !s->species[p->species].n_variants)
+            return err_set(err, "plant %u: species %u has no model (%u species)", i, p->species, s->n_species);
+        if (!(isfinite(p->position[0]) && isfinite(p->position[1]) && isfinite(p->position[2]) &&
+              isfinite(p->rotation) && isfinite(p->height) && p->age > 0 && p->age <= 1))
+            return err_set(err, "plant %u: position (%g, %g, %g), rotation %g, height %g and age %g must be finite "
+                           "numbers, the age in (0, 1]", i, p->position[0], p->position[1], p->position[2],
+                           p->rotation, p->height, p->age);
+        /* The variant by normalised age (the tree plugin built each variant for its age); the
+         * model scaled from that variant's height to the plant's; a turn about the vertical. */
+        const species *sp = &s->species[p->species];
+        uint32_t v = scene_variant_for_age(s, p->species, p->age);
+        double ph = s->prototypes[sp->first_prototype + v].height;
+        double scale = p->height > 0 && ph > 0 ? p->height / ph : 1.0;
+        double pos[3] = {p->position[0], p->position[1], p->position[2]};
+        if (place_plant(s, p->species, pos, p->snap_to_terrain, p->rotation * 180.0 / M_PI, scale, p->age, err))
+            return err_prefix(err, "plant %u: ", i);
+    }
+    return 0;
+}
+
 static int build_ecology(scene *s, const scene_file *sf, const plugin_registry *reg, const build_options *opt,
                          err_buf *err)
 {
     const ecology_spec *e = &sf->ecology;
-    if (!e->plugin) return 0;
+    if (!e->plugin || opt->no_ecology) return 0;
     if (!s->terrain) return err_set(err, "%s:%u:%u: the ecology needs a terrain", sf->path, e->line, e->column);
     err_buf lookup = {{0}};
     const loaded_plugin *lp = reg ? plugin_registry_find(reg, e->plugin, SYLVA_KIND_ECOLOGY, &lookup) : NULL;
     if (!lp) return err_set(err, "%s:%u:%u: %s", sf->path, e->line, e->column, reg ? lookup.msg : "no plugins were loaded");
-    sylva_species_info *info = calloc(sf->n_species ? sf->n_species : 1, sizeof *info);
-    if (!info) return err_set(err, "out of memory");
-    for (uint32_t i = 0; i < sf->n_species; i++) {
-        const species *sp = &s->species[i];
-        info[i] = (sylva_species_info){.size = sizeof *info, .name = sp->name, .ecology = sf->species[i].ecology,
-                                       .model_height = s->prototypes[sp->first_prototype + sp->n_variants - 1].height};
-    }
+    sylva_species_info *info = scene_ecology_species(s, sf, err);
+    if (!info) return -1;
     char context[160];
     snprintf(context, sizeof context, "ecology plugin '%s'", e->plugin);
     sylva_host h;
-    host_init(&h, s, sf->dir, rng_combine(sf->image.seed, rng_hash_str("ecology")), context, err);
+    host_init(&h, s, sf->dir, scene_ecology_seed(sf), context, err);
     h.verbose = opt->verbose, h.quiet = opt->quiet, h.n_species = sf->n_species, h.kind = SYLVA_KIND_ECOLOGY;
     const sylva_host_api *api = host_api_table();
     void *state = NULL;
@@ -295,18 +332,9 @@ static int build_ecology(scene *s, const scene_file *sf, const plugin_registry *
         plugin_failed(err, &h, lp, "generate", rc, sf->path, e->line, e->column);
         goto done;
     }
-    for (uint32_t i = 0; i < h.n_plants; i++) {
-        const sylva_plant *p = &h.plants[i];
-        const species *sp = &s->species[p->species];
-        uint32_t v = scene_variant_for_age(s, p->species, p->age);
-        double ph = s->prototypes[sp->first_prototype + v].height;
-        double scale = p->height > 0 && ph > 0 ? p->height / ph : 1.0;
-        double pos[3] = {p->position[0], p->position[1], p->position[2]};
-        if (place_plant(s, p->species, pos, p->snap_to_terrain, p->rotation * 180.0 / M_PI, scale, p->age, err)) {
-            err_prefix(err, "%s: plant %u: ", context, i);
-            rc = -1;
-            goto done;
-        }
+    if (scene_place_plants(s, h.plants, h.n_plants, err)) {
+        err_prefix(err, "%s (%s): ", context, lp->file);
+        rc = -1;
     }
 done:
     host_release(&h);

@@ -10,14 +10,30 @@
 #include "scene/scene_file.h"
 
 typedef struct build_options {
-    int verbose;  /* plugin DEBUG logs */
-    int quiet;    /* no progress output */
+    int verbose;     /* plugin DEBUG logs */
+    int quiet;       /* no progress output */
+    int no_ecology;  /* 1: leave the ecology plugin out (a caller that drives it itself) */
 } build_options;
 
 /* Returns a new scene (free with scene_free) or NULL with err set. plugins may be NULL when the
  * scene names none. */
 scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const build_options *opt,
                    err_buf *err);
+
+/* The seed of the ecology plugin's random streams for this scene file. */
+uint64_t scene_ecology_seed(const scene_file *sf);
+
+/* The ecology request's species array for a scene built from sf: name, the species' block under
+ * the ecology's species section, and the full-grown model's height (its oldest variant).
+ * Returns a calloc'ed array of sf->n_species (the caller frees it; the strings are the scene's
+ * and sf's), or NULL with err set. */
+sylva_species_info *scene_ecology_species(const scene *s, const scene_file *sf, err_buf *err);
+
+/* Turns plants into instances of their species' prototypes: the variant chosen by normalised
+ * age (scene_variant_for_age), scaled uniformly from that variant's height to the plant's
+ * height (unscaled when height <= 0), turned by the plant's rotation about +Z, and standing on
+ * the terrain when snap_to_terrain is set. Returns 0, or -1 with err naming the plant. */
+int scene_place_plants(scene *s, const sylva_plant *plants, uint32_t n, err_buf *err);
 
 /* The transform of a plant: translate to p, rotate by rot_deg about +Z, scale uniformly. */
 xform3x4 plant_transform(const double p[3], double rot_deg, double scale);

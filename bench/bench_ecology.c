@@ -1,0 +1,178 @@
+/* bench_ecology.c — the ecology plugin's two costs.
+ *
+ * 1. Instancing: the render scene for 1,000,000 plants of 4 species x 8 age variants, built by
+ *    the host's scene_place_plants (variant by age, scale by height, turn, standing on a 513 x 513
+ *    terrain), then Embree's BVH over it; build times and peak memory (goal: 3 s and 1.5 GB).
+ * 2. Simulation: the four default species (beech, maple, spruce, shrubs) for 300 years on a
+ *    hilly terrain sized to hold about 100,000 living plants, through the plugin's model;
+ *    per-year time against the plant count (goal: 20 s in all on 2 cores, linear in the plants).
+ *
+ * Usage: bench_ecology [--plants N] [--side METRES] [--years N] [--threads N] [--skip-instances]
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include "eco_sim.h"
+#include "render/accel.h"
+#include "scene/host.h"
+#include "scene/scene_build.h"
+#include "scene/shapes.h"
+#include "util/progress.h"
+#include "util/rng.h"
+
+static double peak_mib(void)
+{
+    struct rusage ru;
+    getrusage(RUSAGE_SELF, &ru);
+    return ru.ru_maxrss / 1024.0;
+}
+
+static float hill_height(double x, double y, double side)
+{
+    double u = x / side, v = y / side;
+    return (float)(40 * sin(5 * u) * cos(4 * v) + 25 * sin(11 * u + 3 * v) + 60 * u);
+}
+
+/* A terrain of n x n nodes over side x side metres. */
+static sylva_heightfield *terrain_new(uint32_t n, double side)
+{
+    sylva_heightfield *hf = calloc(1, sizeof *hf);
+    float *z = malloc((size_t)n * n * sizeof *z);
+    if (!hf || !z) return NULL;
+    *hf = (sylva_heightfield){.size = sizeof *hf, .nx = n, .ny = n, .dx = side / (n - 1), .dy = side / (n - 1),
+                              .z = z, .water_material = -1};
+    for (uint32_t j = 0; j < n; j++)
+        for (uint32_t i = 0; i < n; i++) z[(size_t)j * n + i] = hill_height(i * hf->dx, j * hf->dy, side);
+    return hf;
+}
+
+static int bench_instances(uint32_t n_plants, unsigned threads)
+{
+    err_buf err = {{0}};
+    double side = 2000;
+    scene *s = scene_new();
+    s->terrain = terrain_new(513, side);
+    s->species = calloc(4, sizeof(species));
+    if (!s->terrain || !s->species) return fprintf(stderr, "bench: out of memory\n"), 4;
+    uint32_t tris = 0;
+    for (uint32_t sp = 0; sp < 4; sp++) {
+        char name[16];
+        snprintf(name, sizeof name, "species%u", sp);
+        s->species[sp] = (species){.name = strdup(name), .first_prototype = s->n_prototypes, .n_variants = 8};
+        s->n_species++;
+        for (uint32_t v = 0; v < 8; v++) {
+            mesh *m = mesh_new();
+            shape_spec sph = {.kind = SHAPE_SPHERE, .radius = 1.0 + 0.5 * v, .subdivisions = 2};
+            if (!m || shape_build(&sph, s->default_material, m, &err)) return fprintf(stderr, "bench: %s\n", err.msg), 4;
+            tris += m->nt;
+            scene_add_prototype(s, sp, v, (v + 1) / 8.0, 2.0 + v, m, &err);
+        }
+    }
+    sylva_plant *plants = malloc((size_t)n_plants * sizeof *plants);
+    if (!plants) return fprintf(stderr, "bench: out of memory\n"), 4;
+    sylva_rng r;
+    rng_stream(&r, 7, "bench plants", 0);
+    for (uint32_t i = 0; i < n_plants; i++)
+        plants[i] = (sylva_plant){.size = sizeof(sylva_plant), .species = i % 4,
+                                  .position = {side * rng_next_double(&r), side * rng_next_double(&r), 0},
+                                  .snap_to_terrain = 1, .rotation = 2 * M_PI * rng_next_double(&r),
+                                  .height = 1 + 20 * rng_next_double(&r), .age = 0.01 + 0.99 * rng_next_double(&r)};
+    double before = peak_mib();
+    double t0 = progress_now();
+    if (scene_place_plants(s, plants, n_plants, &err)) return fprintf(stderr, "bench: %s\n", err.msg), 4;
+    double t1 = progress_now();
+    free(plants);
+    printf("instancing: %u plants of 4 species x 8 variants (%u prototype triangles in all) on a 513 x 513 "
+           "terrain\n", s->n_instances, tris);
+    printf("  plants -> instances (scene_place_plants): %.3f s; peak memory %.0f MiB (%.0f MiB before)\n", t1 - t0,
+           peak_mib(), before);
+    accel acc;
+    t0 = progress_now();
+    if (accel_build(&acc, s, threads, &err)) return fprintf(stderr, "bench: %s\n", err.msg), 4;
+    t1 = progress_now();
+    printf("  Embree scene over them (accel_build, %u threads): %.3f s; peak memory %.0f MiB\n", threads, t1 - t0,
+           peak_mib());
+    printf("  goal: build <= 3 s, peak <= 1536 MiB\n");
+    accel_free(&acc);
+    scene_free(s);
+    return 0;
+}
+
+static int bench_simulation(double side, uint32_t years, unsigned threads)
+{
+    scene *sc = scene_new();
+    err_buf err = {{0}};
+    sylva_host host;
+    host_init(&host, sc, "/tmp", 1, "ecology benchmark", &err);
+    host.kind = SYLVA_KIND_ECOLOGY, host.quiet = 1, host.n_species = 4;
+    const sylva_host_api *api = host_api_table();
+    uint32_t n = (uint32_t)(side / 4) + 1;
+    sylva_heightfield *hf = terrain_new(n, side);
+    const char *names[4] = {"beech", "maple", "spruce", "shrub"};
+    sylva_species_info info[4];
+    for (int i = 0; i < 4; i++)
+        info[i] = (sylva_species_info){.size = sizeof info[i], .name = names[i], .model_height = 20};
+    sylva_ecology_request req = {.size = sizeof req, .terrain = hf, .species = info, .n_species = 4};
+    eco_config cfg = {.factors = {.patches = (uint32_t)(side / 8), .rain = 1, .water_humidity = 10, .runoff = 1,
+                                  .humidity_blur = 10, .wind_azimuth_deg = 270, .wind_samples = 10, .shelter_deg = 45,
+                                  .latitude_deg = 46, .sun_samples = 9, .ambient = 0.2, .threads = threads},
+                      .area = {-1, 0, 0, 0}, .max_plants = 5000000, .threads = threads};
+    eco_sim *s = NULL;
+    double t0 = progress_now();
+    if (eco_sim_new(api, &host, NULL, &cfg, NULL, &req, &s)) return fprintf(stderr, "bench: %s\n", err.msg), 4;
+    double t_factors = progress_now() - t0;
+    printf("simulation: 4 species on %.0f x %.0f m, %u x %u patches of %.1f m, %u threads (factors in %.2f s)\n",
+           side, side, s->terrain.ni, s->terrain.nk, s->terrain.kx, threads, t_factors);
+    printf("  year   plants   ms/year   us/plant\n");
+    double total = 0, sum_xy = 0, sum_xx = 0;
+    uint64_t plant_years = 0;
+    uint32_t most = 0;
+    for (uint32_t y = 1; y <= years; y++) {
+        double a = progress_now();
+        if (eco_sim_step(s, api, &host)) return fprintf(stderr, "bench: %s\n", err.msg), 4;
+        double dt = progress_now() - a;
+        uint32_t count = eco_sim_count(s);
+        total += dt, plant_years += count, most = count > most ? count : most;
+        sum_xy += (double)count * dt, sum_xx += (double)count * count;
+        if (y % 20 == 0 || y == years)
+            printf("  %4u %8u %9.2f %10.3f\n", y, count, 1e3 * dt, count ? 1e6 * dt / count : 0.0);
+    }
+    double slope = sum_xy / sum_xx; /* least squares through the origin */
+    printf("  %u years in %.2f s (goal <= 20 s); most plants %u; %.2f us per plant-year on average\n", years, total,
+           most, 1e6 * total / (double)plant_years);
+    printf("  per-year time ~ %.3f us x plants (least squares through the origin)\n", 1e6 * slope);
+    eco_sim_free(s);
+    host_release(&host);
+    free(hf->z), free(hf);
+    scene_free(sc);
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    uint32_t plants = 1000000, years = 300;
+    double side = 560; /* about 100,000 living plants */
+    unsigned threads = (unsigned)sysconf(_SC_NPROCESSORS_ONLN);
+    int skip_instances = 0;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--skip-instances")) skip_instances = 1;
+        else if (i + 1 < argc && !strcmp(argv[i], "--plants")) plants = (uint32_t)atol(argv[++i]);
+        else if (i + 1 < argc && !strcmp(argv[i], "--side")) side = atof(argv[++i]);
+        else if (i + 1 < argc && !strcmp(argv[i], "--years")) years = (uint32_t)atol(argv[++i]);
+        else if (i + 1 < argc && !strcmp(argv[i], "--threads")) threads = (unsigned)atol(argv[++i]);
+        else {
+            fprintf(stderr, "usage: bench_ecology [--plants N] [--side METRES] [--years N] [--threads N] "
+                    "[--skip-instances]\n");
+            return 1;
+        }
+    }
+    if (threads < 1) threads = 1;
+    printf("machine: %ld processors online\n", sysconf(_SC_NPROCESSORS_ONLN));
+    int rc = skip_instances ? 0 : bench_instances(plants, threads);
+    if (!rc) rc = bench_simulation(side, years, threads);
+    return rc;
+}

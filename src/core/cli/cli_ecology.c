@@ -1,0 +1,54 @@
+/* cli_ecology.c — the scene and ecology session behind `sylva simulate` and `sylva factors`. */
+#include "cli/cli_ecology.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "cli/cli_args.h"
+
+int cli_ecology_open(cli_ecology *e, const char *cmd, const char *scene_path, const build_options *opt)
+{
+    memset(e, 0, sizeof *e);
+    err_buf err = {{0}};
+    if (!(e->reg = plugin_registry_open(&err))) {
+        fprintf(stderr, "sylva %s: %s\n", cmd, err.msg);
+        return EXIT_INTERNAL;
+    }
+    if (!(e->sf = scene_file_load(scene_path, e->reg, &err))) {
+        fprintf(stderr, "%s\n", err.msg);
+        return EXIT_INPUT;
+    }
+    build_options bo = *opt;
+    bo.no_ecology = 1;
+    if (!(e->scene = scene_build(e->sf, e->reg, &bo, &err))) {
+        fprintf(stderr, "%s\n", err.msg);
+        return EXIT_INPUT;
+    }
+    if (!(e->session = ecology_session_open(e->sf, e->scene, e->reg, opt, &err))) {
+        fprintf(stderr, "%s\n", err.msg);
+        return EXIT_INPUT;
+    }
+    return EXIT_OK;
+}
+
+void cli_ecology_close(cli_ecology *e)
+{
+    ecology_session_free(e->session);
+    scene_free(e->scene);
+    scene_file_free(e->sf);
+    plugin_registry_free(e->reg);
+    memset(e, 0, sizeof *e);
+}
+
+int cli_make_folder(const char *dir, err_buf *err)
+{
+    struct stat st;
+    if (!stat(dir, &st)) {
+        if (S_ISDIR(st.st_mode)) return 0;
+        return err_set(err, "%s: exists and is not a folder", dir);
+    }
+    if (mkdir(dir, 0777)) return err_set(err, "%s: cannot create the folder: %s", dir, strerror(errno));
+    return 0;
+}

@@ -1,0 +1,24 @@
+/* cli_ecology.h — what `sylva simulate` and `sylva factors` share: loading a scene, building
+ * its terrain and species without the ecology, and starting the ecology session on them; and
+ * making the output folder. */
+#ifndef SYLVA_CLI_ECOLOGY_H
+#define SYLVA_CLI_ECOLOGY_H
+
+#include "scene/ecology_session.h"
+
+typedef struct cli_ecology {
+    plugin_registry *reg;     /* owned */
+    scene_file *sf;           /* owned */
+    scene *scene;             /* owned */
+    ecology_session *session; /* owned */
+} cli_ecology;
+
+/* Fills e; returns an exit status (EXIT_OK, or EXIT_INPUT / EXIT_INTERNAL after printing the
+ * problem prefixed with "sylva CMD: " where it is not a located scene-file message). */
+int cli_ecology_open(cli_ecology *e, const char *cmd, const char *scene_path, const build_options *opt);
+void cli_ecology_close(cli_ecology *e);
+
+/* Creates folder `dir` when it does not exist (its parent must). Returns 0, or -1 with err. */
+int cli_make_folder(const char *dir, err_buf *err);
+
+#endif

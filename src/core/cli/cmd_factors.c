@@ -1,0 +1,137 @@
+/* cmd_factors.c — `sylva factors SCENE -o DIR`: the ecology's terrain factors on its patch grid
+ * (altitude, slope, humidity, windiness, sunniness, water) as one PNG map each and one CSV of
+ * every patch's values. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli_args.h"
+#include "cli/cli_ecology.h"
+#include "cli/commands.h"
+#include "io/atomic_file.h"
+#include "io/ecology_maps.h"
+
+static void factors_usage(FILE *out)
+{
+    fprintf(out,
+            "usage: sylva factors SCENE -o DIR [options]\n"
+            "Computes the terrain factors the scene's ecology grows plants by, on its patch grid, and\n"
+            "writes each as DIR/NAME.png (dark 0 to bright 1; north up) and all of them, one row a\n"
+            "patch, as DIR/factors.csv. The folder is created when missing.\n\n"
+            "options:\n"
+            "  -o, --output DIR    folder for the maps (required)\n"
+            "  -q, --quiet         no progress output\n"
+            "  -v, --verbose       plugin debug messages\n"
+            "  -h, --help          this text\n\n"
+            "exit status: 0 done, 1 usage, 2 bad scene or plugin failure, 3 output not written,\n"
+            "4 out of memory or internal error\n");
+}
+
+/* factors.csv: i, k, the patch centre, then each map's value. */
+static int write_csv(const char *path, const sylva_ecology_factor_map *maps, uint32_t n, err_buf *err)
+{
+    char tmp[4200];
+    if (atomic_temp_name(path, tmp, sizeof tmp, err)) return -1;
+    FILE *f = fopen(tmp, "w");
+    if (!f) return err_set(err, "%s: cannot write: %s", path, strerror(errno));
+    fprintf(f, "i,k,x,y");
+    for (uint32_t m = 0; m < n; m++) fprintf(f, ",%s", maps[m].name);
+    fputc('\n', f);
+    const sylva_ecology_factor_map *g = &maps[0];
+    for (uint32_t k = 0; k < g->ny; k++)
+        for (uint32_t i = 0; i < g->nx; i++) {
+            fprintf(f, "%u,%u,%.3f,%.3f", i, k, g->x0 + (i + 0.5) * g->dx, g->y0 + (k + 0.5) * g->dy);
+            for (uint32_t m = 0; m < n; m++) fprintf(f, ",%.6f", maps[m].values[(size_t)k * g->nx + i]);
+            fputc('\n', f);
+        }
+    int bad = ferror(f);
+    if (fclose(f) || bad) {
+        remove(tmp);
+        return err_set(err, "%s: cannot write: %s", path, strerror(errno ? errno : EIO));
+    }
+    return atomic_commit(tmp, path, err);
+}
+
+int cmd_factors(int argc, char **argv)
+{
+    const char *scene_path = NULL, *dir = NULL;
+    build_options bo = {0};
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+            factors_usage(stdout);
+            return EXIT_OK;
+        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
+            if (i + 1 >= argc) {
+                fprintf(stderr, "sylva factors: %s needs a value\n", a);
+                return EXIT_USAGE;
+            }
+            dir = argv[++i];
+        } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
+            bo.quiet = 1;
+        } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
+            bo.verbose = 1;
+        } else if (a[0] == '-') {
+            fprintf(stderr, "sylva factors: unknown option '%s' (see sylva factors --help)\n", a);
+            return EXIT_USAGE;
+        } else if (!scene_path) {
+            scene_path = a;
+        } else {
+            fprintf(stderr, "sylva factors: one scene file only; '%s' is extra\n", a);
+            return EXIT_USAGE;
+        }
+    }
+    if (!scene_path || !dir) {
+        factors_usage(stderr);
+        return EXIT_USAGE;
+    }
+    cli_ecology e;
+    int rc = cli_ecology_open(&e, "factors", scene_path, &bo);
+    if (rc) {
+        cli_ecology_close(&e);
+        return rc;
+    }
+    err_buf err = {{0}};
+    uint32_t n = ecology_session_factor_count(e.session);
+    sylva_ecology_factor_map *maps = calloc(n ? n : 1, sizeof *maps);
+    if (!maps) {
+        fprintf(stderr, "sylva factors: out of memory\n");
+        cli_ecology_close(&e);
+        return EXIT_INTERNAL;
+    }
+    for (uint32_t m = 0; m < n && !rc; m++)
+        if (ecology_session_factor(e.session, m, &maps[m], &err)) {
+            fprintf(stderr, "sylva factors: %s\n", err.msg);
+            rc = EXIT_INPUT;
+        }
+    if (!rc && n && cli_make_folder(dir, &err)) {
+        fprintf(stderr, "sylva factors: %s\n", err.msg);
+        rc = EXIT_OUTPUT;
+    }
+    char path[4200];
+    for (uint32_t m = 0; m < n && !rc; m++) {
+        snprintf(path, sizeof path, "%s/%s.png", dir, maps[m].name);
+        if (factor_map_write(path, &maps[m], &err)) {
+            fprintf(stderr, "sylva factors: %s\n", err.msg);
+            rc = EXIT_OUTPUT;
+        } else {
+            printf("%s\n", path);
+        }
+    }
+    if (!rc && n) {
+        snprintf(path, sizeof path, "%s/factors.csv", dir);
+        if (write_csv(path, maps, n, &err)) {
+            fprintf(stderr, "sylva factors: %s\n", err.msg);
+            rc = EXIT_OUTPUT;
+        } else {
+            printf("%s\n", path);
+        }
+    }
+    if (!rc && !bo.quiet)
+        fprintf(stderr, "factors: %u maps of %u x %u patches of %.2f x %.2f m\n", n, maps[0].nx, maps[0].ny, maps[0].dx,
+                maps[0].dy);
+    free(maps);
+    cli_ecology_close(&e);
+    return rc;
+}

@@ -1,0 +1,54 @@
+/* ecology_session.h — a scene's ecology plugin driven year by year through its optional
+ * "sylva.ecology.v1" interface (include/sylva/plugin.h), for `sylva simulate` and
+ * `sylva factors`. The session sets the plugin up exactly as scene_build does (same seed, same
+ * request), so a run stepped here to the scene's year holds the plants `sylva render` places.
+ *
+ * Ownership: a session owns the plugin's state and run, its host and the species array; it
+ * borrows the scene_file and the scene (built with build_options.no_ecology), which must
+ * outlive it. ecology_session_free accepts NULL.
+ */
+#ifndef SYLVA_ECOLOGY_SESSION_H
+#define SYLVA_ECOLOGY_SESSION_H
+
+#include "plugin_host.h"
+#include "scene/host.h"
+#include "scene/scene_build.h"
+
+typedef struct ecology_session {
+    const scene_file *sf;               /* borrowed */
+    scene *scene;                       /* borrowed */
+    const loaded_plugin *plugin;        /* the registry's */
+    const sylva_ecology_ext_v1 *ext;    /* the plugin's */
+    void *state;                        /* from create(), owned */
+    sylva_ecology_run *run;             /* owned */
+    sylva_species_info *species;        /* owned array of sf->n_species */
+    sylva_host host;                    /* the plugin's side of the calls */
+    err_buf plugin_err;                 /* where the plugin's sentences land */
+    char context[160];
+} ecology_session;
+
+/* Starts the scene's ecology at year 0. Fails (NULL, err set) when the scene has no ecology, the
+ * plugin is missing or offers no "sylva.ecology.v1" interface, or create/run_new fail. */
+ecology_session *ecology_session_open(const scene_file *sf, scene *s, const plugin_registry *reg,
+                                      const build_options *opt, err_buf *err);
+void ecology_session_free(ecology_session *e);
+
+uint32_t ecology_session_year(const ecology_session *e);
+uint32_t ecology_session_years_wanted(const ecology_session *e);
+
+/* Each returns 0, or -1 with err holding the plugin's sentence after the session's context. */
+int ecology_session_step(ecology_session *e, uint32_t years, err_buf *err);
+int ecology_session_save(ecology_session *e, const char *path, err_buf *err);
+int ecology_session_load(ecology_session *e, const char *path, err_buf *err);
+
+/* Living plants: all (which = SYLVA_ECOLOGY_ALL_SPECIES) or of species `which`. */
+uint32_t ecology_session_count(const ecology_session *e, uint32_t which);
+
+/* Copies every living plant into a malloc'ed array (*out, *n; the caller frees *out). */
+int ecology_session_plants(ecology_session *e, sylva_ecology_plant_record **out, uint32_t *n, err_buf *err);
+
+/* Factor maps: their number and each one (values owned by the run). */
+uint32_t ecology_session_factor_count(const ecology_session *e);
+int ecology_session_factor(const ecology_session *e, uint32_t i, sylva_ecology_factor_map *out, err_buf *err);
+
+#endif

@@ -1,0 +1,107 @@
+/* eco_reproduce.c — the year's new plants (004 §4.6 and §4.8): ΔN_s = 1 + g_s s_s seedlings
+ * per species (4.30–4.31 with the thesis code's start of 1/g_s seeds, Fig. C.11, which is the
+ * one arrival a year that colonises an empty terrain), the fraction carried to the next year;
+ * each lands beside a parent with chance p_s or anywhere the plants may grow, picked through
+ * Algorithm 7's sorted index list so that adding is linear in the plants. A seedling that falls
+ * into water or outside the growth area is lost. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "eco_growth.h"
+#include "eco_sim.h"
+
+static int by_index(const void *a, const void *b)
+{
+    uint32_t x = *(const uint32_t *)a, y = *(const uint32_t *)b;
+    return x < y ? -1 : x > y;
+}
+
+/* Patch p or one of its existing 4-neighbours, chosen uniformly (Fig. 4.18; the same patch is
+ * one of the choices, as 004 §4.6 allows). */
+static uint32_t beside(const eco_terrain *t, uint32_t p, double u)
+{
+    uint32_t i = p % t->ni, k = p / t->ni, opt[5], n = 0;
+    opt[n++] = p;
+    if (i > 0) opt[n++] = p - 1;
+    if (i + 1 < t->ni) opt[n++] = p + 1;
+    if (k > 0) opt[n++] = p - t->ni;
+    if (k + 1 < t->nk) opt[n++] = p + t->ni;
+    uint32_t c = (uint32_t)(u * n);
+    return opt[c < n ? c : n - 1];
+}
+
+/* A seedling of species j on patch p at a random point of it (Fig. 4.19); lost in water or
+ * outside the growth area. The population has room (reserved by the caller). */
+static void sow(eco_sim *s, uint32_t j, uint32_t p, const sylva_host_api *api)
+{
+    const eco_terrain *t = &s->terrain;
+    sylva_rng *rng = &s->rng[(size_t)j * ECO_N_STREAMS];
+    double x = t->x0 + (p % t->ni + api->rng_uniform(&rng[ECO_RNG_POSITION_I])) * t->kx;
+    double y = t->y0 + (p / t->ni + api->rng_uniform(&rng[ECO_RNG_POSITION_J])) * t->ky;
+    if (!s->growable[p] || eco_in_water(t, x, y)) return;
+    const eco_species *sp = &s->species[j];
+    eco_plant *pl = &s->pop[j].plants[s->pop[j].n++];
+    *pl = (eco_plant){.x = x, .y = y, .z = eco_height_at(t, x, y), .patch = p};
+    float f[ECO_N_FACTORS];
+    for (int q = 0; q < ECO_N_FACTORS; q++) f[q] = t->factor[q][p];
+    double fav[5];
+    eco_favourabilities(sp, f, fav);
+    for (int q = 0; q < 5; q++) pl->fav[q] = (float)fav[q];
+    pl->v = eco_vigour(fav);
+    pl->t_max = eco_death_age(sp, api->rng_uniform(&rng[ECO_RNG_DEATH_AGE]));
+    pl->rotation = 2.0 * M_PI * api->rng_uniform(&rng[ECO_RNG_ROTATION]);
+}
+
+int eco_reproduce(eco_sim *s, const sylva_host_api *api, sylva_host *host)
+{
+    uint64_t living = eco_sim_count(s);
+    for (uint32_t j = 0; j < s->n_species; j++) {
+        const eco_species *sp = &s->species[j];
+        eco_population *pop = &s->pop[j];
+        double want = 1.0 + sp->g_s * s->seeds[j] + s->carry[j]; /* (4.30) with s_s from (4.31) */
+        double whole = floor(want);
+        s->carry[j] = want - whole;
+        if (living + whole > (double)s->config.max_plants) {
+            api->error(host, "year %u: species '%s' would bring %.0f seedlings to %llu living plants, more than "
+                       "max_plants = %llu; raise max_plants or lower the species' g_s", s->year + 1, s->names[j],
+                       whole, (unsigned long long)living, (unsigned long long)s->config.max_plants);
+            return SYLVA_ERR_LIMIT;
+        }
+        uint32_t n_new = (uint32_t)whole;
+        living += n_new;
+        if (pop->n + (uint64_t)n_new > pop->cap) {
+            uint64_t cap = pop->cap ? pop->cap : 64;
+            while (cap < pop->n + (uint64_t)n_new) cap *= 2;
+            if (cap > UINT32_MAX) cap = UINT32_MAX;
+            eco_plant *q = realloc(pop->plants, cap * sizeof *q);
+            if (!q) return api->error(host, "out of memory for %llu plants of '%s'", (unsigned long long)cap, s->names[j]);
+            pop->plants = q, pop->cap = (uint32_t)cap;
+        }
+        uint32_t *parents = malloc((n_new ? n_new : 1) * sizeof *parents);
+        if (!parents) return api->error(host, "out of memory for %u seedlings", n_new);
+        sylva_rng *rng = &s->rng[(size_t)j * ECO_N_STREAMS];
+        /* Algorithm 7: first decide every seedling (near a parent, which one; or anywhere) ... */
+        uint32_t existing = pop->n, n_near = 0, n_anywhere = 0;
+        for (uint32_t q = 0; q < n_new; q++) {
+            if (existing && api->rng_uniform(&rng[ECO_RNG_NEAR]) < sp->p_s) {
+                uint32_t idx = (uint32_t)(api->rng_uniform(&rng[ECO_RNG_PARENT]) * existing);
+                parents[n_near++] = idx < existing ? idx : existing - 1;
+            } else {
+                n_anywhere++;
+            }
+        }
+        /* ... then walk the parents once in index order ... */
+        qsort(parents, n_near, sizeof *parents, by_index);
+        for (uint32_t q = 0; q < n_near; q++) {
+            uint32_t p = beside(&s->terrain, pop->plants[parents[q]].patch, api->rng_uniform(&rng[ECO_RNG_SIDE]));
+            sow(s, j, p, api);
+        }
+        /* ... and place the rest anywhere the plants may grow. */
+        for (uint32_t q = 0; q < n_anywhere; q++) {
+            uint32_t c = (uint32_t)(api->rng_uniform(&rng[ECO_RNG_ANYWHERE]) * s->n_growable);
+            sow(s, j, s->growable_list[c < s->n_growable ? c : s->n_growable - 1], api);
+        }
+        free(parents);
+    }
+    return SYLVA_OK;
+}

@@ -1,0 +1,132 @@
+/* eco_sim.h — the ecosystem simulation of 004 ch. 4 (MODELS.md §6): plants of several species
+ * on the patch grid, one year at a time by Algorithm 9 — add (reproduction 4.30–4.31,
+ * placement by Algorithm 7), grow (4.32) with power (4.18) and dominance (Algorithm 8), remove
+ * the dead (age 4.26, domination p_m, unfavourable conditions).
+ *
+ * Randomness: fourteen streams per species from api->rng_init, one per purpose — the thirteen of
+ * 004 Fig. C.16 and sylva's rotation — keyed by purpose and (stream seed, species). Every draw
+ * happens on the calling thread in a fixed order; the dominance search, the only part run on
+ * worker threads, draws nothing. The same seeds therefore give the same forest for any thread
+ * count.
+ *
+ * Ownership: an eco_sim owns everything in it; eco_sim_free releases it (accepts NULL). It
+ * keeps no pointer to the host, the API table or the request.
+ */
+#ifndef ECO_SIM_H
+#define ECO_SIM_H
+
+#include <stdint.h>
+
+#include "eco_species.h"
+#include "eco_terrain.h"
+#include "sylva/plugin.h"
+
+/* The random streams, each per species. */
+typedef enum eco_stream {
+    ECO_RNG_NEAR = 0,         /* near a parent or anywhere (p_s) */
+    ECO_RNG_PARENT,           /* which parent (Algorithm 7's index list) */
+    ECO_RNG_SIDE,             /* which neighbouring patch of the parent's */
+    ECO_RNG_ANYWHERE,         /* which patch for a seedling from anywhere */
+    ECO_RNG_POSITION_I,       /* where on its patch along x */
+    ECO_RNG_POSITION_J,       /* where on its patch along y */
+    ECO_RNG_DEATH_DOMINANCE,  /* death of a dominated plant (p_m) */
+    ECO_RNG_DEATH_ALTITUDE,   /* death from unfavourable altitude */
+    ECO_RNG_DEATH_HUMIDITY,   /* ... humidity */
+    ECO_RNG_DEATH_SUNNINESS,  /* ... sunniness */
+    ECO_RNG_DEATH_WINDINESS,  /* ... windiness */
+    ECO_RNG_DEATH_SLOPE,      /* ... slope */
+    ECO_RNG_DEATH_AGE,        /* the death age t_max (4.26) */
+    ECO_RNG_ROTATION,         /* sylva's: the plant's turn about the vertical */
+    ECO_N_STREAMS
+} eco_stream;
+
+#define ECO_N_SEEDED_STREAMS 13 /* the thesis's; `stream_seeds` sets these */
+
+extern const char *const eco_stream_purposes[ECO_N_STREAMS];
+
+/* One plant (004 §4.6: the factors of its patch are kept with it). */
+typedef struct eco_plant {
+    double x, y, z;     /* position, metres (z on the terrain) */
+    double h;           /* normalised height in [0, 1] */
+    double r;           /* ecological radius h R_s, metres (4.33) */
+    double power;       /* v h p_r (4.18) */
+    double v;           /* vigour (4.20) */
+    double t_max;       /* death age, years (4.26) */
+    double rotation;    /* radians about +Z */
+    float fav[5];       /* favourabilities at its patch, ECO_FAV_* order */
+    uint32_t age;       /* years */
+    uint32_t patch;     /* index i + k ni of its patch */
+    uint8_t dominated;  /* Algorithm 8's flag from the last search */
+} eco_plant;
+
+typedef struct eco_population {
+    eco_plant *plants;  /* owned; in order of birth */
+    uint32_t n, cap;
+} eco_population;
+
+/* Everything a run needs besides the terrain and the species blocks. */
+typedef struct eco_config {
+    eco_factor_params factors;
+    uint32_t years;             /* years the scene asks for */
+    int64_t area[4];            /* growth rectangle i0, k0, i1, k1 (inclusive); area[0] < 0: none */
+    const double *mask;         /* growth mask rows (row 0 south), or NULL; borrowed */
+    uint32_t mask_rows, mask_cols;
+    uint64_t stream_seeds[ECO_N_SEEDED_STREAMS];
+    uint64_t max_plants;        /* limit on living plants */
+    double min_height;          /* metres: shorter plants are not placed in the scene */
+    unsigned threads;           /* >= 1 */
+} eco_config;
+
+typedef struct eco_sim {
+    eco_terrain terrain;        /* owned */
+    eco_config config;          /* copy; mask is not used after eco_sim_new */
+    uint32_t n_species;         /* species taking part */
+    eco_species *species;       /* owned, n_species */
+    uint32_t *request_index;    /* owned: each one's index into the request's species */
+    char **names;               /* owned copies of their names */
+    double *model_height;       /* owned: full-grown model height, metres */
+    double *p_r;                /* owned: relative power (4.19) */
+    eco_population *pop;        /* owned, one per species */
+    double *seeds;              /* owned: s_s from the last growth (4.31) */
+    double *carry;              /* owned: fractional seedlings carried to the next year */
+    sylva_rng *rng;             /* owned: ECO_N_STREAMS per species */
+    uint32_t year;
+    uint8_t *growable;          /* owned: 1 for a patch where plants may grow */
+    uint32_t *growable_list;    /* owned: those patches, in index order */
+    uint32_t n_growable;
+    double max_r_s;             /* max over species of R_s */
+    uint32_t n_opt;             /* (4.27) */
+    uint64_t fingerprint;       /* of the terrain factors, growth area and species (save/load) */
+    /* scratch of the dominance search, owned */
+    uint32_t cells_per_patch;   /* the search grid cuts each patch into this many cells a side */
+    uint32_t cells_i, cells_k;  /* cells along x and y */
+    uint32_t *cell_start;       /* cells + 1: each cell's first entry */
+    double *patch_r_max;        /* per patch: the largest radius of its plants */
+    struct eco_cell_entry *cell; /* the plants in cell order, strongest first in a cell */
+    uint32_t cell_cap;
+} eco_sim;
+
+/* Starts a run at year 0: copies the terrain, computes the factors, reads each species block
+ * and the growth area. `only` is a list of species names separated by commas or spaces (NULL or
+ * empty: every species of the request); `params` is the plugin's block (for locating
+ * messages). Returns SYLVA_OK or a negative status with the sentence set through api. */
+int eco_sim_new(const sylva_host_api *api, sylva_host *host, const sylva_params *params,
+                const eco_config *cfg, const char *only, const sylva_ecology_request *req, eco_sim **out);
+void eco_sim_free(eco_sim *s);
+
+/* One year (Algorithm 9). SYLVA_ERR_LIMIT when the living plants would pass max_plants. */
+int eco_sim_step(eco_sim *s, const sylva_host_api *api, sylva_host *host);
+
+/* The parts of a year, in the order eco_sim_step runs them. */
+int eco_reproduce(eco_sim *s, const sylva_host_api *api, sylva_host *host);  /* 4.30–4.31, Alg. 7 */
+void eco_grow(eco_sim *s);                                                     /* 4.32, 4.33, 4.18 */
+int eco_find_dominance(eco_sim *s, const sylva_host_api *api, sylva_host *host); /* Algorithm 8 */
+void eco_remove_dead(eco_sim *s, const sylva_host_api *api);                   /* 4.26, p_m, env */
+
+uint32_t eco_sim_count(const eco_sim *s); /* living plants */
+
+/* Save and load the whole state (eco_state_io.c). */
+int eco_sim_save(const eco_sim *s, const sylva_host_api *api, sylva_host *host, const char *path);
+int eco_sim_load(eco_sim *s, const sylva_host_api *api, sylva_host *host, const char *path);
+
+#endif

@@ -15,8 +15,8 @@
 #include "scene/host.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"
+#include "scene/scene_build.h"
 #include "scene/scene_file.h"
-#include "util/rng.h"
 
 static void tree_stats_usage(FILE *out)
 {
@@ -65,10 +65,9 @@ static int run_species(const scene_file *sf, const species_spec *sp, const loade
     err_buf err = {{0}};
     char context[200];
     snprintf(context, sizeof context, "tree plugin '%s' for species '%s'", sp->plugin, sp->name);
-    /* The same seeds as the scene build: the species' name, then the variant. */
-    uint64_t seed = rng_combine(sf->image.seed, rng_hash_str(sp->name));
+    /* The same seeds as the scene build, so the figures describe the models a render uses. */
     sylva_host h;
-    host_init(&h, sc, sf->dir, seed, context, &err);
+    host_init(&h, sc, sf->dir, scene_species_seed(sf, sp->name, 0), context, &err);
     h.verbose = verbose, h.quiet = 1, h.kind = SYLVA_KIND_TREE;
     const sylva_host_api *api = host_api_table();
     void *state = NULL;
@@ -92,7 +91,7 @@ static int run_species(const scene_file *sf, const species_spec *sp, const loade
             status = EXIT_INTERNAL;
             break;
         }
-        h.seed = rng_combine(seed, v);
+        h.seed = scene_species_seed(sf, sp->name, v);
         sylva_tree_request req = {.size = sizeof req, .age = only_age > 0 ? only_age : (double)(v + 1) / count,
                                   .variant = v, .n_variants = count, .lod = 0, .seed = h.seed};
         sylva_tree_out out = {.size = sizeof out, .mesh = m};

@@ -48,6 +48,6 @@ int main(int argc, char **argv)
     if (!strcmp(cmd, "simulate")) return cmd_simulate(argc - 1, argv + 1);
     if (!strcmp(cmd, "factors")) return cmd_factors(argc - 1, argv + 1);
     if (!strcmp(cmd, "tree-stats")) return cmd_tree_stats(argc - 1, argv + 1);
-    fprintf(stderr, "sylva: unknown command '%s' (commands: render, plugins; see sylva --help)\n", cmd);
+    fprintf(stderr, "sylva: unknown command '%s' (commands: render, plugins, export-pov, crosscheck, simulate, factors, tree-stats; see sylva --help)\n", cmd);
     return EXIT_USAGE;
 }

@@ -182,8 +182,7 @@ static int build_species(scene *s, const scene_file *sf, const plugin_registry *
         char context[200];
         snprintf(context, sizeof context, "tree plugin '%s' for species '%s'", sp->plugin, sp->name);
         sylva_host h;
-        uint64_t seed = rng_combine(sf->image.seed, rng_hash_str(sp->name));
-        host_init(&h, s, sf->dir, seed, context, err);
+        host_init(&h, s, sf->dir, scene_species_seed(sf, sp->name, 0), context, err);
         h.verbose = opt->verbose, h.quiet = opt->quiet, h.kind = SYLVA_KIND_TREE;
         void *state = NULL;
         int rc = lp->desc->create(api, &h, sp->params, &state);
@@ -200,7 +199,7 @@ static int build_species(scene *s, const scene_file *sf, const plugin_registry *
                 h.error_set = 1;
                 break;
             }
-            h.seed = rng_combine(seed, v);
+            h.seed = scene_species_seed(sf, sp->name, v);
             sylva_tree_request req = {.size = sizeof req, .age = (double)(v + 1) / sp->variants, .variant = v,
                                       .n_variants = sp->variants, .lod = 0, .seed = h.seed};
             sylva_tree_out out = {.size = sizeof out, .mesh = m};
@@ -256,6 +255,11 @@ static int build_plants(scene *s, const scene_file *sf, err_buf *err)
             return err_prefix(err, "%s:%u:%u: plant %u: ", sf->path, p->line, p->column, i);
     }
     return 0;
+}
+
+uint64_t scene_species_seed(const scene_file *sf, const char *name, uint32_t variant)
+{
+    return rng_combine(rng_combine(sf->image.seed, rng_hash_str(name)), variant);
 }
 
 uint64_t scene_ecology_seed(const scene_file *sf) { return rng_combine(sf->image.seed, rng_hash_str("ecology")); }

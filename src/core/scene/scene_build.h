@@ -20,6 +20,9 @@ typedef struct build_options {
 scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const build_options *opt,
                    err_buf *err);
 
+/* The seed of a tree plugin's random streams for one species (by name) and variant. */
+uint64_t scene_species_seed(const scene_file *sf, const char *name, uint32_t variant);
+
 /* The seed of the ecology plugin's random streams for this scene file. */
 uint64_t scene_ecology_seed(const scene_file *sf);
 

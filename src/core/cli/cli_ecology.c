@@ -11,22 +11,12 @@
 int cli_ecology_open(cli_ecology *e, const char *cmd, const char *scene_path, const build_options *opt)
 {
     memset(e, 0, sizeof *e);
-    err_buf err = {{0}};
-    if (!(e->reg = plugin_registry_open(&err))) {
-        fprintf(stderr, "sylva %s: %s\n", cmd, err.msg);
-        return EXIT_INTERNAL;
-    }
-    if (!(e->sf = scene_file_load(scene_path, e->reg, &err))) {
-        fprintf(stderr, "%s\n", err.msg);
-        return EXIT_INPUT;
-    }
     build_options bo = *opt;
     bo.no_ecology = 1;
-    if (!(e->scene = scene_build(e->sf, e->reg, &bo, &err))) {
-        fprintf(stderr, "%s\n", err.msg);
-        return EXIT_INPUT;
-    }
-    if (!(e->session = ecology_session_open(e->sf, e->scene, e->reg, opt, &err))) {
+    int rc = cli_scene_open(&e->base, cmd, scene_path, &bo);
+    if (rc) return rc;
+    err_buf err = {{0}};
+    if (!(e->session = ecology_session_open(e->base.sf, e->base.scene, e->base.reg, opt, &err))) {
         fprintf(stderr, "%s\n", err.msg);
         return EXIT_INPUT;
     }
@@ -36,9 +26,7 @@ int cli_ecology_open(cli_ecology *e, const char *cmd, const char *scene_path, co
 void cli_ecology_close(cli_ecology *e)
 {
     ecology_session_free(e->session);
-    scene_free(e->scene);
-    scene_file_free(e->sf);
-    plugin_registry_free(e->reg);
+    cli_scene_close(&e->base);
     memset(e, 0, sizeof *e);
 }
 

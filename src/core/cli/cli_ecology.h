@@ -4,12 +4,11 @@
 #ifndef SYLVA_CLI_ECOLOGY_H
 #define SYLVA_CLI_ECOLOGY_H
 
+#include "cli/cli_scene.h"
 #include "scene/ecology_session.h"
 
 typedef struct cli_ecology {
-    plugin_registry *reg;     /* owned */
-    scene_file *sf;           /* owned */
-    scene *scene;             /* owned */
+    cli_scene base;           /* owned: registry, scene file, scene built without the ecology */
     ecology_session *session; /* owned */
 } cli_ecology;
 

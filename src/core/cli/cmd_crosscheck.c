@@ -6,11 +6,9 @@
 #include <string.h>
 
 #include "cli/cli_args.h"
+#include "cli/cli_scene.h"
 #include "cli/commands.h"
 #include "crosscheck/crosscheck.h"
-#include "plugin_host.h"
-#include "scene/scene_build.h"
-#include "scene/scene_file.h"
 
 enum { EXIT_DISAGREE = 5 }; /* both renders compared; a threshold does not hold */
 
@@ -150,26 +148,10 @@ int cmd_crosscheck(int argc, char **argv)
     co.source = scene_path;
 
     err_buf err = {{0}};
-    int rc = EXIT_OK;
-    scene_file *sf = NULL;
-    scene *sc = NULL;
-    plugin_registry *reg = plugin_registry_open(&err);
-    if (!reg) {
-        fprintf(stderr, "sylva crosscheck: %s\n", err.msg);
-        return EXIT_INTERNAL;
-    }
-    sf = scene_file_load(scene_path, reg, &err);
-    if (!sf) {
-        fprintf(stderr, "%s\n", err.msg);
-        rc = EXIT_INPUT;
-        goto done;
-    }
-    sc = scene_build(sf, reg, &bo, &err);
-    if (!sc) {
-        fprintf(stderr, "%s\n", err.msg);
-        rc = EXIT_INPUT;
-        goto done;
-    }
+    cli_scene cs;
+    int rc = cli_scene_open(&cs, "crosscheck", scene_path, &bo);
+    if (rc) goto done;
+    const scene *sc = cs.scene;
     crosscheck_result *r = malloc(sizeof *r);
     if (!r) {
         fprintf(stderr, "sylva crosscheck: out of memory\n");
@@ -186,8 +168,6 @@ int cmd_crosscheck(int argc, char **argv)
     }
     free(r);
 done:
-    scene_free(sc);
-    scene_file_free(sf);
-    plugin_registry_free(reg);
+    cli_scene_close(&cs);
     return rc;
 }

@@ -5,11 +5,9 @@
 #include <string.h>
 
 #include "cli/cli_args.h"
+#include "cli/cli_scene.h"
 #include "cli/commands.h"
 #include "io/pov_write.h"
-#include "plugin_host.h"
-#include "scene/scene_build.h"
-#include "scene/scene_file.h"
 #include "util/progress.h"
 
 static void export_pov_usage(FILE *out)
@@ -120,27 +118,10 @@ int cmd_export_pov(int argc, char **argv)
     }
 
     err_buf err = {{0}};
-    int rc = EXIT_OK;
-    scene_file *sf = NULL;
-    scene *sc = NULL;
-    double t0 = progress_now();
-    plugin_registry *reg = plugin_registry_open(&err);
-    if (!reg) {
-        fprintf(stderr, "sylva export-pov: %s\n", err.msg);
-        return EXIT_INTERNAL;
-    }
-    sf = scene_file_load(scene_path, reg, &err);
-    if (!sf) {
-        fprintf(stderr, "%s\n", err.msg);
-        rc = EXIT_INPUT;
-        goto done;
-    }
-    sc = scene_build(sf, reg, &bo, &err);
-    if (!sc) {
-        fprintf(stderr, "%s\n", err.msg);
-        rc = EXIT_INPUT;
-        goto done;
-    }
+    cli_scene cs;
+    int rc = cli_scene_open(&cs, "export-pov", scene_path, &bo);
+    if (rc) goto done;
+    const scene *sc = cs.scene;
     double t1 = progress_now();
     pov_export_stats st;
     if (species_name) {
@@ -175,11 +156,9 @@ int cmd_export_pov(int argc, char **argv)
     if (!bo.quiet)
         fprintf(stderr, "exported %u files, %.1f MB (%llu plants, %llu left out) in %.2fs; scene built in %.2fs\n", st.files,
                 st.bytes / 1e6, (unsigned long long)st.instances, (unsigned long long)st.skipped, progress_now() - t1,
-                t1 - t0);
+                cs.seconds);
     printf("%s\n", out);
 done:
-    scene_free(sc);
-    scene_file_free(sf);
-    plugin_registry_free(reg);
+    cli_scene_close(&cs);
     return rc;
 }

@@ -4,11 +4,9 @@
 #include <string.h>
 
 #include "cli/cli_args.h"
+#include "cli/cli_scene.h"
 #include "cli/commands.h"
-#include "plugin_host.h"
 #include "render/render.h"
-#include "scene/scene_build.h"
-#include "scene/scene_file.h"
 #include "util/progress.h"
 
 static void render_usage(FILE *out)
@@ -115,32 +113,15 @@ int cmd_render(int argc, char **argv)
     if (output_paths(scene_path, out, png, exr, sizeof png)) return EXIT_USAGE;
 
     err_buf err = {{0}};
-    int rc = EXIT_OK;
-    scene_file *sf = NULL;
-    scene *sc = NULL;
-    film *f = NULL;
     double t0 = progress_now();
-    plugin_registry *reg = plugin_registry_open(&err);
-    if (!reg) {
-        fprintf(stderr, "sylva render: %s\n", err.msg);
-        return EXIT_INTERNAL;
-    }
-    sf = scene_file_load(scene_path, reg, &err);
-    if (!sf) {
-        fprintf(stderr, "%s\n", err.msg);
-        rc = EXIT_INPUT;
-        goto done;
-    }
-    sc = scene_build(sf, reg, &bo, &err);
-    if (!sc) {
-        fprintf(stderr, "%s\n", err.msg);
-        rc = EXIT_INPUT;
-        goto done;
-    }
-    double t1 = progress_now();
+    cli_scene cs;
+    film *f = NULL;
+    int rc = cli_scene_open(&cs, "render", scene_path, &bo);
+    if (rc) goto done;
+    const scene *sc = cs.scene;
     if (!ro.quiet)
         fprintf(stderr, "scene: %u species, %u prototypes, %u instances, %u objects%s (built in %.2fs)\n",
-                sc->n_species, sc->n_prototypes, sc->n_instances, sc->n_objects, sc->terrain ? ", terrain" : "", t1 - t0);
+                sc->n_species, sc->n_prototypes, sc->n_instances, sc->n_objects, sc->terrain ? ", terrain" : "", cs.seconds);
     render_stats st;
     f = render_scene(sc, &ro, &st, &err);
     if (!f) {
@@ -159,8 +140,6 @@ int cmd_render(int argc, char **argv)
     printf("%s\n%s\n", png, exr);
 done:
     film_free(f);
-    scene_free(sc);
-    scene_file_free(sf);
-    plugin_registry_free(reg);
+    cli_scene_close(&cs);
     return rc;
 }

@@ -114,7 +114,7 @@ static int write_map(cli_ecology *e, const char *dir, const char *const *names, 
     sylva_ecology_factor_map water = {0}, m;
     for (uint32_t i = 0; i < ecology_session_factor_count(e->session); i++)
         if (!ecology_session_factor(e->session, i, &m, err) && !strcmp(m.name, "water")) water = m;
-    int rc = plant_map_write(path, e->scene->terrain, water.values ? &water : NULL, p, n, names, e->sf->n_species,
+    int rc = plant_map_write(path, e->base.scene->terrain, water.values ? &water : NULL, p, n, names, e->base.sf->n_species,
                              year, err);
     free(p);
     if (rc) return EXIT_OUTPUT;
@@ -188,7 +188,7 @@ int cmd_simulate(int argc, char **argv)
     }
     uint32_t start = ecology_session_year(e.session), wanted = ecology_session_years_wanted(e.session);
     uint32_t n_years = years_given ? (uint32_t)years : wanted > start ? wanted - start : 0;
-    uint32_t ns = e.sf->n_species;
+    uint32_t ns = e.base.sf->n_species;
     counts = malloc(((size_t)n_years + 1) * (ns ? ns : 1) * sizeof *counts);
     row_years = malloc(((size_t)n_years + 1) * sizeof *row_years);
     names = calloc(ns ? ns : 1, sizeof *names);
@@ -197,7 +197,7 @@ int cmd_simulate(int argc, char **argv)
         rc = EXIT_INTERNAL;
         goto done;
     }
-    for (uint32_t s = 0; s < ns; s++) names[s] = e.sf->species[s].name;
+    for (uint32_t s = 0; s < ns; s++) names[s] = e.base.sf->species[s].name;
     if (stats && cli_make_folder(stats, &err)) {
         fprintf(stderr, "sylva simulate: %s\n", err.msg);
         rc = EXIT_OUTPUT;
@@ -235,7 +235,7 @@ int cmd_simulate(int argc, char **argv)
             rc = EXIT_INPUT;
             goto done;
         }
-        int bad = write_plants_csv(out, e.sf, p, n, &err);
+        int bad = write_plants_csv(out, e.base.sf, p, n, &err);
         free(p);
         if (bad) {
             fprintf(stderr, "sylva simulate: %s\n", err.msg);
@@ -255,7 +255,7 @@ int cmd_simulate(int argc, char **argv)
     if (stats) {
         char path[4200];
         snprintf(path, sizeof path, "%s/population.csv", stats);
-        if (write_population_csv(path, e.sf, row_years, counts, rows, &err)) {
+        if (write_population_csv(path, e.base.sf, row_years, counts, rows, &err)) {
             fprintf(stderr, "sylva simulate: %s\n", err.msg);
             rc = EXIT_OUTPUT;
             goto done;

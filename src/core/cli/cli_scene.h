@@ -1,0 +1,24 @@
+/* cli_scene.h — what every command that works on a scene file starts with: the plugin registry,
+ * the validated scene file and the scene built from it, each problem printed once (a located
+ * scene-file sentence as it is, anything else prefixed with "sylva CMD: "). */
+#ifndef SYLVA_CLI_SCENE_H
+#define SYLVA_CLI_SCENE_H
+
+#include "plugin_host.h"
+#include "scene/scene.h"
+#include "scene/scene_build.h"
+#include "scene/scene_file.h"
+
+typedef struct cli_scene {
+    plugin_registry *reg;  /* owned */
+    scene_file *sf;        /* owned */
+    scene *scene;          /* owned */
+    double seconds;        /* to load and build */
+} cli_scene;
+
+/* Fills c and returns EXIT_OK, or EXIT_INPUT / EXIT_INTERNAL after printing the problem; in
+ * every case cli_scene_close releases what was made. */
+int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const build_options *opt);
+void cli_scene_close(cli_scene *c);
+
+#endif

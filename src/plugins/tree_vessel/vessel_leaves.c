@@ -21,16 +21,17 @@ uint32_t vessel_leaf_layout(const vessel_params *p, vessel_leaf_slot *slots)
     switch (p->leaf_type) {
     case VESSEL_LEAF_STACKED:
         for (uint32_t i = 0; i < m / 2; i++) {
-            double along = (i + 1.0) / (m / 2 + 1.0);
-            slots[k++] = slot(along, 0, side);
-            slots[k++] = slot(along, M_PI, side);
+            double along = (i + 1.0) / (m / 2 + 1.0), twist = i * VESSEL_LEAF_TWIST * VESSEL_DEG;
+            slots[k++] = slot(along, twist, side);
+            slots[k++] = slot(along, M_PI + twist, side);
         }
         break;
     case VESSEL_LEAF_STAGGERED:
     case VESSEL_LEAF_CONIFEROUS: {
         double lean = p->leaf_type == VESSEL_LEAF_CONIFEROUS ? VESSEL_CONIFEROUS_ANGLE * VESSEL_DEG : side;
         for (uint32_t i = 0; i < m; i++)
-            slots[k++] = slot((i + 1.0) / (m + 1.0), (i & 1u) ? M_PI : 0, lean);
+            slots[k++] = slot((i + 1.0) / (m + 1.0), ((i & 1u) ? M_PI : 0) + (i / 2) * VESSEL_LEAF_TWIST * VESSEL_DEG,
+                              lean);
         break;
     }
     case VESSEL_LEAF_SPIRAL:

@@ -18,6 +18,10 @@
 #include "vessel_structure.h"
 
 #define VESSEL_CONIFEROUS_ANGLE 45.0 /* degrees between a coniferous leaf and its branch */
+/* Stacked, staggered and coniferous leaves on one side of a branch would all lie in one plane and
+ * overlap there (coincident alpha-masked quads, which renderers resolve differently); each
+ * further pair turns this many degrees about the branch so no two share a plane. */
+#define VESSEL_LEAF_TWIST 7.0
 /* A leaf of size l_l is a square of half-diagonal l_l, as 004 draws it (a four-sided disc of
  * radius l_l, Fig. C.8): its side is sqrt(2) l_l. */
 #define VESSEL_LEAF_SIDE_PER_SIZE M_SQRT2

@@ -47,8 +47,13 @@ TEST(stacked_leaves_come_in_opposite_pairs)
     CHECK_NEAR(l[2].base.z, 2.0, 1e-12);
     CHECK_NEAR(l[0].out.x, 1.0, 1e-12);
     CHECK_NEAR(l[1].out.x, -1.0, 1e-12);
-    CHECK_NEAR(l[2].out.x, 1.0, 1e-12); /* every pair in the same plane */
-    CHECK_NEAR(l[3].out.x, -1.0, 1e-12);
+    /* the next pair is opposite too, turned VESSEL_LEAF_TWIST about the branch: no two pairs
+     * share a plane */
+    double t = VESSEL_LEAF_TWIST * M_PI / 180.0;
+    CHECK_NEAR(l[2].out.x, cos(t), 1e-12);
+    CHECK_NEAR(l[3].out.x, -cos(t), 1e-12);
+    CHECK_NEAR(l[2].out.y + l[3].out.y, 0.0, 1e-12);
+    CHECK(fabs(l[2].out.y) > 0.1);
 }
 
 TEST(staggered_leaves_alternate_sides)

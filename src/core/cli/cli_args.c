@@ -32,3 +32,17 @@ int cli_parse_size(const char *cmd, const char *opt, const char *s, uint32_t *w,
     *w = a, *h = b;
     return 0;
 }
+
+int cli_scene_argument(const char *cmd, const char *arg, const char **scene_path)
+{
+    if (arg[0] == '-') {
+        fprintf(stderr, "sylva %s: unknown option '%s' (see sylva %s --help)\n", cmd, arg, cmd);
+        return -1;
+    }
+    if (*scene_path) {
+        fprintf(stderr, "sylva %s: one scene file only; '%s' is extra\n", cmd, arg);
+        return -1;
+    }
+    *scene_path = arg;
+    return 0;
+}

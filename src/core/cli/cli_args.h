@@ -16,6 +16,9 @@ enum {
 
 /* Parses an unsigned integer in [lo, hi]; prints "sylva OPTION: ..." and returns -1 when bad. */
 int cli_parse_u64(const char *cmd, const char *opt, const char *s, uint64_t lo, uint64_t hi, uint64_t *out);
+/* An argument of a command that takes one scene file: an unknown option or a second file is
+ * reported ("sylva CMD: ...") and gives -1; otherwise *scene_path is set and 0 returned. */
+int cli_scene_argument(const char *cmd, const char *arg, const char **scene_path);
 /* Parses "WxH" with each side in [1, 16384]. */
 int cli_parse_size(const char *cmd, const char *opt, const char *s, uint32_t *w, uint32_t *h);
 

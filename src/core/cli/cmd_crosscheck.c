@@ -110,13 +110,7 @@ int cmd_crosscheck(int argc, char **argv)
             co.quiet = bo.quiet = 1;
         } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
             bo.verbose = 1;
-        } else if (a[0] == '-') {
-            fprintf(stderr, "sylva crosscheck: unknown option '%s' (see sylva crosscheck --help)\n", a);
-            return EXIT_USAGE;
-        } else if (!scene_path) {
-            scene_path = a;
-        } else {
-            fprintf(stderr, "sylva crosscheck: one scene file only; '%s' is extra\n", a);
+        } else if (cli_scene_argument("crosscheck", a, &scene_path)) {
             return EXIT_USAGE;
         }
         continue;

@@ -79,13 +79,7 @@ int cmd_export_pov(int argc, char **argv)
             bo.quiet = 1;
         } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
             bo.verbose = 1;
-        } else if (a[0] == '-') {
-            fprintf(stderr, "sylva export-pov: unknown option '%s' (see sylva export-pov --help)\n", a);
-            return EXIT_USAGE;
-        } else if (!scene_path) {
-            scene_path = a;
-        } else {
-            fprintf(stderr, "sylva export-pov: one scene file only; '%s' is extra\n", a);
+        } else if (cli_scene_argument("export-pov", a, &scene_path)) {
             return EXIT_USAGE;
         }
         continue;

@@ -72,13 +72,7 @@ int cmd_factors(int argc, char **argv)
             bo.quiet = 1;
         } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
             bo.verbose = 1;
-        } else if (a[0] == '-') {
-            fprintf(stderr, "sylva factors: unknown option '%s' (see sylva factors --help)\n", a);
-            return EXIT_USAGE;
-        } else if (!scene_path) {
-            scene_path = a;
-        } else {
-            fprintf(stderr, "sylva factors: one scene file only; '%s' is extra\n", a);
+        } else if (cli_scene_argument("factors", a, &scene_path)) {
             return EXIT_USAGE;
         }
     }

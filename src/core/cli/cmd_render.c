@@ -91,13 +91,7 @@ int cmd_render(int argc, char **argv)
             ro.quiet = bo.quiet = 1;
         } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
             bo.verbose = 1;
-        } else if (a[0] == '-') {
-            fprintf(stderr, "sylva render: unknown option '%s' (see sylva render --help)\n", a);
-            return EXIT_USAGE;
-        } else if (!scene_path) {
-            scene_path = a;
-        } else {
-            fprintf(stderr, "sylva render: one scene file only; '%s' is extra\n", a);
+        } else if (cli_scene_argument("render", a, &scene_path)) {
             return EXIT_USAGE;
         }
         continue;

@@ -158,13 +158,7 @@ int cmd_simulate(int argc, char **argv)
             bo.quiet = 1;
         } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
             bo.verbose = 1;
-        } else if (a[0] == '-') {
-            fprintf(stderr, "sylva simulate: unknown option '%s' (see sylva simulate --help)\n", a);
-            return EXIT_USAGE;
-        } else if (!scene_path) {
-            scene_path = a;
-        } else {
-            fprintf(stderr, "sylva simulate: one scene file only; '%s' is extra\n", a);
+        } else if (cli_scene_argument("simulate", a, &scene_path)) {
             return EXIT_USAGE;
         }
         i += takes_value;

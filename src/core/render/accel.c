@@ -272,8 +272,11 @@ void accel_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h)
     h->ns = v3_norm(ns);
     if (!(v3_dot(h->ns, h->ns) > 0.5f)) h->ns = h->ng;
     h->t = rh->ray.tfar;
-    h->p = v3_madd(v3(rh->ray.org_x, rh->ray.org_y, rh->ray.org_z), v3(rh->ray.dir_x, rh->ray.dir_y, rh->ray.dir_z),
-                   rh->ray.tfar);
+    /* The point from the barycentrics rather than origin + t direction: it lies on the triangle
+     * to within the rounding of its coordinates, whereas t carries an error proportional to the
+     * distance from the camera, which would force a far larger shadow-ray offset. */
+    vec3 p = v3_add(v3_add(v3_scale(p0, bw), v3_scale(p1, bu)), v3_scale(p2, bv));
+    h->p = xf ? xf_point(xf, p) : p;
     h->u = bw * m->uv[k[0] * 2] + bu * m->uv[k[1] * 2] + bv * m->uv[k[2] * 2];
     h->v = bw * m->uv[k[0] * 2 + 1] + bu * m->uv[k[1] * 2 + 1] + bv * m->uv[k[2] * 2 + 1];
     h->mat = material_of(s, m->mat[t]);

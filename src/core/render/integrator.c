@@ -52,11 +52,14 @@ static int visible(const render_ctx *ctx, vec3 o, vec3 d, float far)
     return r.tfar >= 0.0f;
 }
 
-/* A point just off the surface on the side of direction d. */
+/* A point just off the surface on the side of direction d. p comes from the triangle's
+ * barycentrics (accel_shade), so its error is a few float steps of its largest coordinate;
+ * 1e-6 relative is about eight steps. With 0 the surface shadows itself everywhere; the
+ * offset moves shadows by its size, which for centimetre leaves must stay well under 1 mm. */
 static vec3 offset_point(vec3 p, vec3 ng, vec3 d)
 {
     float scale = fmaxf(fabsf(p.x), fmaxf(fabsf(p.y), fabsf(p.z)));
-    float eps = 1e-4f * (1.0f + scale);
+    float eps = 1e-6f * (1.0f + scale);
     return v3_madd(p, ng, v3_dot(ng, d) >= 0.0f ? eps : -eps);
 }
 

@@ -182,7 +182,8 @@ int accel_build(accel *a, const scene *s, unsigned threads, err_buf *err)
             uint32_t tri[6] = {0, 1, 2, 0, 2, 3};
             int32_t wm = hf->water_material >= 0 ? hf->water_material : s->water_material;
             a->water_mesh = mesh_new();
-            if (!a->water_mesh || mesh_append(a->water_mesh, pos, NULL, uv, 4, tri, NULL, wm, 2, err)) goto fail;
+            if (!a->water_mesh) goto oom;
+            if (mesh_append(a->water_mesh, pos, NULL, uv, 4, tri, NULL, wm, 2, err)) goto fail;
             if (add_mesh_part(a, a->top, a->water_mesh, 0, GEOM_WATER, 2, &a->top_geoms[2], err)) goto fail;
         }
     }

@@ -3,6 +3,7 @@
 #   agree            `sylva crosscheck SCENE` passes (exit 0) and writes its report
 #   mirror_camera    the export's camera is mirrored (right x instead of right -x)
 #   move_object      the export's first object moves 0.3 m along x
+#   move_plant       the export's first plant moves 0.3 m along x
 #   rotate_instance  the export's first plant turns 25 degrees about its own vertical axis
 #   shadowless_sun   the export's sun casts no shadows
 #   broken_pov       the export ends in a syntax error
@@ -34,6 +35,7 @@ fi
 case "$case" in
   mirror_camera)   file="$dir/$name.pov";        edit='s/^  right -x \*/  right x */' ;;
   move_object)     file="$dir/$name.pov";        edit='0,/^object { O[0-9]/s/^\(object { O[0-9][A-Za-z0-9_]*\) }/\1 translate <0.3, 0, 0> }/' ;;
+  move_plant)      file="$dir/${name}_plants.inc"; edit='0,/^object { /s/> }$/> translate <0.3, 0, 0> }/' ;;
   rotate_instance) file="$dir/${name}_plants.inc"; edit='0,/^object { /s/ matrix </ rotate 25*z matrix </' ;;
   shadowless_sun)  file="$dir/$name.pov";        edit='s/^  parallel$/  parallel shadowless/' ;;
   broken_pov)      file="$dir/$name.pov";        edit='$a sphere { <0, 0, 0> 1 pigment {' ;;

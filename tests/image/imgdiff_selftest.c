@@ -5,9 +5,9 @@
 #include <unistd.h>
 
 #include "harness.h"
+#include "work_dir.h"
 #include "io/image_io.h"
 
-static char work_dir[] = "/tmp/sylva-imgdiff-XXXXXX";
 static char out_text[4096], err_text[4096];
 
 static void slurp(const char *path, char *buf, size_t n)
@@ -23,14 +23,11 @@ static void slurp(const char *path, char *buf, size_t n)
 /* Runs the tool with args (already quoted where needed); returns its exit status. */
 static int run_imgdiff(const char *args)
 {
-    char cmd[8192], out_path[512], err_path[512];
-    snprintf(out_path, sizeof out_path, "%s/out.txt", work_dir);
-    snprintf(err_path, sizeof err_path, "%s/err.txt", work_dir);
-    snprintf(cmd, sizeof cmd, "cd '%s' && '%s' %s > '%s' 2> '%s'", work_dir, SYLVA_IMGDIFF_PATH,
-             args, out_path, err_path);
+    char cmd[8192];
+    snprintf(cmd, sizeof cmd, "cd '%s' && '%s' %s > out.txt 2> err.txt", work_dir(), SYLVA_IMGDIFF_PATH, args);
     int rc = system(cmd);
-    slurp(out_path, out_text, sizeof out_text);
-    slurp(err_path, err_text, sizeof err_text);
+    slurp(work_path("out.txt"), out_text, sizeof out_text);
+    slurp(work_path("err.txt"), err_text, sizeof err_text);
     return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
 }
 
@@ -45,24 +42,9 @@ static void make_images(void)
     memset(small, 100, sizeof small);
     memset(test + (2 * 4 + 1) * 3, 151, 3);
     err_buf err = {{0}};
-    char path[512];
-    snprintf(path, sizeof path, "%s/ref.png", work_dir);
-    CHECK_INT(image_write_u8(path, 4, 4, 3, ref, &err), 0);
-    snprintf(path, sizeof path, "%s/test.png", work_dir);
-    CHECK_INT(image_write_u8(path, 4, 4, 3, test, &err), 0);
-    snprintf(path, sizeof path, "%s/small.png", work_dir);
-    CHECK_INT(image_write_u8(path, 2, 2, 3, small, &err), 0);
-}
-
-static void remove_work_files(void)
-{
-    const char *names[] = {"ref.png", "test.png", "small.png", "heat.png", "out.txt", "err.txt"};
-    char path[512];
-    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
-        snprintf(path, sizeof path, "%s/%s", work_dir, names[i]);
-        remove(path);
-    }
-    rmdir(work_dir);
+    CHECK_INT(image_write_u8(work_path("ref.png"), 4, 4, 3, ref, &err), 0);
+    CHECK_INT(image_write_u8(work_path("test.png"), 4, 4, 3, test, &err), 0);
+    CHECK_INT(image_write_u8(work_path("small.png"), 2, 2, 3, small, &err), 0);
 }
 
 /* Makes the work folder and images once, for whichever test runs first. */
@@ -71,11 +53,6 @@ static void ensure_images(void)
     static int ready;
     if (ready) return;
     ready = 1;
-    if (!mkdtemp(work_dir)) {
-        fprintf(stderr, "cannot make a work folder in /tmp\n");
-        exit(2);
-    }
-    atexit(remove_work_files);
     make_images();
 }
 
@@ -133,11 +110,9 @@ TEST(diff_heatmap)
 {
     ensure_images();
     CHECK_INT(run_imgdiff("ref.png test.png --max-rmse 0.01 --diff heat.png --diff-scale 0.1"), 1);
-    char path[512];
-    snprintf(path, sizeof path, "%s/heat.png", work_dir);
     image_f32 heat = {0};
     err_buf err = {{0}};
-    CHECK_INT(image_read(path, &heat, &err), 0);
+    CHECK_INT(image_read(work_path("heat.png"), &heat, &err), 0);
     if (heat.pixels) {
         CHECK_INT(heat.width, 4);
         CHECK_INT(heat.channels, 3);

@@ -8,46 +8,12 @@
 #include <unistd.h>
 
 #include "harness.h"
+#include "work_dir.h"
 #include "io/exr_write.h"
 #include "io/half_float.h"
 #include "io/image_io.h"
 
 enum { W = 7, H = 5, N = W * H };
-
-static char work_dir[] = "/tmp/sylva-test-exr-XXXXXX";
-
-static void remove_work_dir(void)
-{
-    /* several passes: entries removed while a folder is being read may hide others */
-    for (int pass = 0; pass < 4 && rmdir(work_dir) != 0; pass++) {
-        DIR *d = opendir(work_dir);
-        if (!d) return;
-        struct dirent *e;
-        char path[1024];
-        while ((e = readdir(d))) {
-            if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
-            snprintf(path, sizeof path, "%s/%s", work_dir, e->d_name);
-            if (rmdir(path) != 0) remove(path);
-        }
-        closedir(d);
-    }
-}
-
-static const char *work_path(const char *name)
-{
-    static char path[1024];
-    static int ready;
-    if (!ready) {
-        ready = 1;
-        if (!mkdtemp(work_dir)) {
-            fprintf(stderr, "cannot make a work folder in /tmp\n");
-            exit(2);
-        }
-        atexit(remove_work_dir);
-    }
-    snprintf(path, sizeof path, "%s/%s", work_dir, name);
-    return path;
-}
 
 static int count_entries(const char *dir)
 {

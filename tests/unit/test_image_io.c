@@ -8,47 +8,13 @@
 #include <unistd.h>
 
 #include "harness.h"
+#include "work_dir.h"
 #include "io/image_io.h"
-
-static char work_dir[] = "/tmp/sylva-test-image-io-XXXXXX";
-
-static void remove_work_dir(void)
-{
-    /* several passes: entries removed while a folder is being read may hide others */
-    for (int pass = 0; pass < 4 && rmdir(work_dir) != 0; pass++) {
-        DIR *d = opendir(work_dir);
-        if (!d) return;
-        struct dirent *e;
-        char path[1024];
-        while ((e = readdir(d))) {
-            if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
-            snprintf(path, sizeof path, "%s/%s", work_dir, e->d_name);
-            remove(path);
-        }
-        closedir(d);
-    }
-}
-
-static const char *work_path(const char *name)
-{
-    static char path[1024];
-    static int ready;
-    if (!ready) {
-        ready = 1;
-        if (!mkdtemp(work_dir)) {
-            fprintf(stderr, "cannot make a work folder in /tmp\n");
-            exit(2);
-        }
-        atexit(remove_work_dir);
-    }
-    snprintf(path, sizeof path, "%s/%s", work_dir, name);
-    return path;
-}
 
 /* Names in the work folder other than the given ones, counted (temporary files, leftovers). */
 static int count_other_entries(const char *keep1, const char *keep2)
 {
-    DIR *d = opendir(work_dir);
+    DIR *d = opendir(work_dir());
     if (!d) return -1;
     int n = 0;
     struct dirent *e;
@@ -171,7 +137,7 @@ TEST(failed_writes_leave_nothing)
     err_buf err = {{0}};
     char path[1024];
 
-    snprintf(path, sizeof path, "%s/no/such/folder/out.png", work_dir);
+    snprintf(path, sizeof path, "%s/no/such/folder/out.png", work_dir());
     CHECK_INT(image_write_u8(path, 2, 2, 3, px, &err), -1);
     CHECK_STR_CONTAINS(err.msg, path);
     CHECK_INT(access(path, F_OK), -1);

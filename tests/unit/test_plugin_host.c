@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "harness.h"
+#include "work_dir.h"
 #include "plugin_host.h"
 
 #define PLUGIN_DIR SYLVA_TEST_PLUGIN_DIR
@@ -357,9 +358,10 @@ static int copy_file(const char *from, const char *to)
 
 TEST(earlier_folder_shadows_later)
 {
-    char dir[] = "/tmp/sylva_shadow_XXXXXX";
-    CHECK(mkdtemp(dir) != NULL);
-    char copy[256];
+    char dir[1200];
+    snprintf(dir, sizeof dir, "%s", work_path("shadow"));
+    CHECK(mkdir(dir, 0700) == 0);
+    char copy[1300];
     snprintf(copy, sizeof copy, "%s/example_terrain.so", dir);
     CHECK_INT(copy_file(PLUGIN_DIR "/example_terrain.so", copy), 0);
     char path[1024];

@@ -9,23 +9,13 @@
 #include <unistd.h>
 
 #include "harness.h"
+#include "work_dir.h"
 #include "io/image_io.h"
 #include "io/pov_names.h"
 #include "io/pov_write.h"
 #include "render/texture_lookup.h"
 #include "scene/scene_build.h"
 #include "scene/shapes.h"
-
-static char tmp_root[256];
-
-static const char *tmp_dir(void)
-{
-    if (!tmp_root[0]) {
-        snprintf(tmp_root, sizeof tmp_root, "/tmp/sylva-test-pov-XXXXXX");
-        if (!mkdtemp(tmp_root)) tmp_root[0] = '\0';
-    }
-    return tmp_root;
-}
 
 static int count_files(const char *dir)
 {
@@ -185,7 +175,7 @@ TEST(identifiers_never_collide)
 
 TEST(scene_export)
 {
-    const char *dir = tmp_dir();
+    const char *dir = work_dir();
     CHECK(dir[0]);
     empty_dir(dir);
     scene *s = small_scene();
@@ -274,7 +264,7 @@ TEST(scene_export)
 
 TEST(refusals_leave_nothing)
 {
-    const char *dir = tmp_dir();
+    const char *dir = work_dir();
     empty_dir(dir);
     scene *s = small_scene();
     err_buf err = {{0}};
@@ -307,7 +297,7 @@ TEST(refusals_leave_nothing)
 
 TEST(singular_plants_are_left_out)
 {
-    const char *dir = tmp_dir();
+    const char *dir = work_dir();
     empty_dir(dir);
     scene *s = small_scene();
     memset(&s->instances[0].xf, 0, sizeof s->instances[0].xf); /* scale 0 */
@@ -328,7 +318,7 @@ TEST(singular_plants_are_left_out)
 
 TEST(species_export)
 {
-    const char *dir = tmp_dir();
+    const char *dir = work_dir();
     empty_dir(dir);
     scene *s = small_scene();
     err_buf err = {{0}};

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "harness.h"
+#include "work_dir.h"
 #include "plugin_host.h"
 #include "scene/host_schema.h"
 #include "scene/scene_file.h"
@@ -345,8 +346,8 @@ TEST(scene_file_errors)
 
 TEST(scene_file_size_limit)
 {
-    char path[] = "/tmp/sylva_scene_big_XXXXXX";
-    int fd = mkstemp(path);
+    const char *path = work_path("big.yaml");
+    int fd = open(path, O_WRONLY | O_CREAT | O_TRUNC, 0600);
     CHECK(fd >= 0);
     if (fd < 0) return;
     /* a sparse file one byte past the limit: nothing is written but its size */

@@ -3,6 +3,7 @@
  * law, scaling, materials from the palette, the statistics interface, determinism and the
  * errors a scene author sees. */
 #include "harness.h"
+#include "work_dir.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -28,13 +29,8 @@ static plugin_registry *registry(void)
 /* Writes the YAML into a file of its own and loads it; NULL with err set when loading fails. */
 static scene_file *load(plugin_registry *reg, const char *yaml, err_buf *err)
 {
-    char path[] = "/tmp/sylva_lsys_XXXXXX.yaml";
-    int fd = mkstemps(path, 5);
-    if (fd < 0) return NULL;
-    FILE *f = fdopen(fd, "w");
-    if (!f) return NULL;
-    fputs(yaml, f);
-    fclose(f);
+    const char *path = work_file("scene.yaml", yaml);
+    if (!path) return NULL;
     scene_file *sf = scene_file_load(path, reg, err);
     unlink(path);
     return sf;

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "harness.h"
+#include "work_dir.h"
 #include "plugin_host.h"
 #include "scene/scene_build.h"
 #include "scene/scene_file.h"
@@ -28,17 +29,16 @@ static plugin_registry *registry(void)
  * builds it. Returns the scene, or NULL with err set. */
 static scene *load(const plugin_registry *reg, const char *keys, uint32_t variants, err_buf *err)
 {
-    char path[] = "/tmp/sylva_vessel_XXXXXX";
-    int fd = mkstemp(path);
-    if (fd < 0) return NULL;
-    FILE *f = fdopen(fd, "w");
-    fprintf(f, "camera: {position: [0, -40, 10]}\n"
-               "species:\n"
-               "  tree: {plugin: tree_vessel, variants: %u%s%s}\n"
-               "plants:\n"
-               "  - {species: tree, position: [0, 0, 0]}\n",
-            variants, keys[0] ? ", " : "", keys);
-    fclose(f);
+    char yaml[4096];
+    snprintf(yaml, sizeof yaml,
+             "camera: {position: [0, -40, 10]}\n"
+             "species:\n"
+             "  tree: {plugin: tree_vessel, variants: %u%s%s}\n"
+             "plants:\n"
+             "  - {species: tree, position: [0, 0, 0]}\n",
+             variants, keys[0] ? ", " : "", keys);
+    const char *path = work_file("scene.yaml", yaml);
+    if (!path) return NULL;
     scene *s = NULL;
     scene_file *sf = scene_file_load(path, reg, err);
     if (sf) {
@@ -143,7 +143,7 @@ TEST(bad_blocks_are_refused_with_clear_messages)
         scene_free(s);
         CHECK_STR_CONTAINS(err.msg, cases[i].expect[0]);
         CHECK_STR_CONTAINS(err.msg, cases[i].expect[1]);
-        CHECK_STR_CONTAINS(err.msg, "/tmp/sylva_vessel_");
+        CHECK_STR_CONTAINS(err.msg, work_path("scene.yaml")); /* names the scene file */
     }
     plugin_registry_free(reg);
 }

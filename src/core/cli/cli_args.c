@@ -1,10 +1,11 @@
-/* cli_args.c — number and size parsing for the command line. */
+/* cli_args.c — number and size parsing for the command line, and a scene file's stem. */
 #include "cli/cli_args.h"
 
 #include <errno.h>
 #include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 int cli_parse_u64(const char *cmd, const char *opt, const char *s, uint64_t lo, uint64_t hi, uint64_t *out)
 {
@@ -45,4 +46,13 @@ int cli_scene_argument(const char *cmd, const char *arg, const char **scene_path
     }
     *scene_path = arg;
     return 0;
+}
+
+int cli_scene_stem(const char *scene_path, const char *prefix, const char *suffix, char *out, size_t n)
+{
+    const char *slash = strrchr(scene_path, '/');
+    const char *name = slash ? slash + 1 : scene_path;
+    const char *dot = strrchr(name, '.');
+    size_t l = dot && dot != name ? (size_t)(dot - name) : strlen(name);
+    return (size_t)snprintf(out, n, "%s%.*s%s", prefix, (int)l, name, suffix) >= n ? -1 : 0;
 }

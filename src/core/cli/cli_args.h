@@ -1,8 +1,10 @@
-/* cli_args.h — strict parsing of command-line numbers and sizes, with messages that name the
- * option and what would be valid. */
+/* cli_args.h — strict parsing of command-line numbers, sizes and the scene argument, with
+ * messages that name the option and what would be valid; the scene file's stem for default
+ * output names. */
 #ifndef SYLVA_CLI_ARGS_H
 #define SYLVA_CLI_ARGS_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 /* Exit codes shared by every command (documented in README.md and `sylva --help`). */
@@ -19,6 +21,9 @@ int cli_parse_u64(const char *cmd, const char *opt, const char *s, uint64_t lo, 
 /* An argument of a command that takes one scene file: an unknown option or a second file is
  * reported ("sylva CMD: ...") and gives -1; otherwise *scene_path is set and 0 returned. */
 int cli_scene_argument(const char *cmd, const char *arg, const char **scene_path);
+/* The scene file's name without its folder and extension ("scenes/a.yaml" gives "a"), written
+ * into out between prefix and suffix. Returns -1 when that does not fit in n bytes. */
+int cli_scene_stem(const char *scene_path, const char *prefix, const char *suffix, char *out, size_t n);
 /* Parses "WxH" with each side in [1, 16384]. */
 int cli_parse_size(const char *cmd, const char *opt, const char *s, uint32_t *w, uint32_t *h);
 

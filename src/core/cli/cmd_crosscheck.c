@@ -129,11 +129,7 @@ int cmd_crosscheck(int argc, char **argv)
     }
     char out_default[4096];
     if (!out) {
-        const char *slash = strrchr(scene_path, '/');
-        const char *name = slash ? slash + 1 : scene_path;
-        const char *dot = strrchr(name, '.');
-        size_t l = dot && dot != name ? (size_t)(dot - name) : strlen(name);
-        if ((size_t)snprintf(out_default, sizeof out_default, "crosscheck-%.*s", (int)l, name) >= sizeof out_default) {
+        if (cli_scene_stem(scene_path, "crosscheck-", "", out_default, sizeof out_default)) {
             fprintf(stderr, "sylva crosscheck: the scene's name is too long for an output folder\n");
             return EXIT_USAGE;
         }

@@ -37,16 +37,6 @@ static void export_pov_usage(FILE *out)
             "3 output not written, 4 out of memory or internal error\n");
 }
 
-/* The default output: the scene's stem with .pov in the current folder. */
-static int default_output(const char *scene_path, char *out, size_t n)
-{
-    const char *slash = strrchr(scene_path, '/');
-    const char *name = slash ? slash + 1 : scene_path;
-    const char *dot = strrchr(name, '.');
-    size_t l = dot && dot != name ? (size_t)(dot - name) : strlen(name);
-    return (size_t)snprintf(out, n, "%.*s.pov", (int)l, name) >= n ? -1 : 0;
-}
-
 int cmd_export_pov(int argc, char **argv)
 {
     const char *scene_path = NULL, *out = NULL, *species_name = NULL;
@@ -97,7 +87,7 @@ int cmd_export_pov(int argc, char **argv)
     }
     char out_default[4096];
     if (!out) {
-        if (default_output(scene_path, out_default, sizeof out_default)) {
+        if (cli_scene_stem(scene_path, "", ".pov", out_default, sizeof out_default)) {
             fprintf(stderr, "sylva export-pov: the scene's name is too long for an output name\n");
             return EXIT_USAGE;
         }

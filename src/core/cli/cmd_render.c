@@ -45,14 +45,8 @@ static int output_paths(const char *scene_path, const char *out, char *png, char
         if (l - 4 >= sizeof base) return -1;
         memcpy(base, out, l - 4);
         base[l - 4] = '\0';
-    } else {
-        const char *slash = strrchr(scene_path, '/');
-        const char *name = slash ? slash + 1 : scene_path;
-        const char *dot = strrchr(name, '.');
-        size_t l = dot && dot != name ? (size_t)(dot - name) : strlen(name);
-        if (l >= sizeof base) return -1;
-        memcpy(base, name, l);
-        base[l] = '\0';
+    } else if (cli_scene_stem(scene_path, "", "", base, sizeof base)) {
+        return -1;
     }
     if ((size_t)snprintf(png, n, "%s.png", base) >= n || (size_t)snprintf(exr, n, "%s.exr", base) >= n) return -1;
     return 0;

@@ -82,9 +82,7 @@ static float alpha_at(const geom_info *g, uint32_t prim, float bu, float bv)
     float w = 1.0f - bu - bv;
     float u = w * m->uv[k[0] * 2] + bu * m->uv[k[1] * 2] + bv * m->uv[k[2] * 2];
     float v = w * m->uv[k[0] * 2 + 1] + bu * m->uv[k[1] * 2 + 1] + bv * m->uv[k[2] * 2 + 1];
-    float rgba[4];
-    texture_sample(&g->scene->textures[mt->texture], u, v, rgba);
-    return rgba[3];
+    return texture_alpha(&g->scene->textures[mt->texture], u, v);
 }
 
 /* Embree's RTCHitN is a structure of arrays (Ng x, y, z, u, v, primID, ...), each N long; its

@@ -10,13 +10,25 @@
 
 float texture_srgb_to_linear(uint8_t v);
 
-static inline void texture_sample(const texture *t, float u, float v, float rgba[4])
+/* The 4 stored bytes (sRGB colour, alpha) of the texel nearest to (u, v). */
+static inline const uint8_t *texture_texel(const texture *t, float u, float v)
 {
     float fu = u - floorf(u), fv = v - floorf(v);
     uint32_t x = (uint32_t)(fu * t->width), y = (uint32_t)((1.0f - fv) * t->height);
     if (x >= t->width) x = t->width - 1;
     if (y >= t->height) y = t->height - 1;
-    const uint8_t *p = t->rgba + ((size_t)y * t->width + x) * 4;
+    return t->rgba + ((size_t)y * t->width + x) * 4;
+}
+
+/* The alpha (0..1) of the texel nearest to (u, v): what the alpha-mask test reads. */
+static inline float texture_alpha(const texture *t, float u, float v)
+{
+    return texture_texel(t, u, v)[3] * (1.0f / 255.0f);
+}
+
+static inline void texture_sample(const texture *t, float u, float v, float rgba[4])
+{
+    const uint8_t *p = texture_texel(t, u, v);
     rgba[0] = texture_srgb_to_linear(p[0]);
     rgba[1] = texture_srgb_to_linear(p[1]);
     rgba[2] = texture_srgb_to_linear(p[2]);

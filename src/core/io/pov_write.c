@@ -67,11 +67,6 @@ static int material_is_grey(const material *m)
 }
 
 /* 1 when the renderer cuts this material's triangles out by texture alpha. */
-static int material_alpha_cut(const scene *s, const material *m)
-{
-    return m->alpha_mask && m->texture >= 0 && s->textures[m->texture].has_alpha;
-}
-
 static uint8_t srgb_encode(float linear)
 {
     float c = linear <= 0.0f ? 0.0f : linear >= 1.0f ? 1.0f : linear;
@@ -91,7 +86,7 @@ static int write_material_image(const scene *s, uint32_t i, const export_paths *
 {
     const material *m = &s->materials[i];
     const texture *t = &s->textures[m->texture];
-    int cut = material_alpha_cut(s, m), grey = material_is_grey(m);
+    int cut = scene_material_cuts_alpha(s, m), grey = material_is_grey(m);
     uint32_t ch = cut ? 4 : 3;
     size_t n = (size_t)t->width * t->height;
     uint8_t *px = malloc(n * ch);
@@ -137,7 +132,7 @@ static void write_material(pov_file *pf, const scene *s, uint32_t i, const expor
     int grey = material_is_grey(m);
     pov_printf(pf, "; albedo %s %s%s\n", line,
                grey ? "in the finish" : "multiplied into the image",
-               material_alpha_cut(s, m) ? "; alpha cut at one half" : "");
+               scene_material_cuts_alpha(s, m) ? "; alpha cut at one half" : "");
     pov_printf(pf, "#declare %s = texture {\n  uv_mapping pigment { image_map { png \"%s\" gamma srgb } }\n", ident, image);
     if (grey) {
         char a[POV_NUMBER_MAX];

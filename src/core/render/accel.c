@@ -68,8 +68,7 @@ static const material *material_of(const scene *s, int32_t id)
 
 static int tri_is_masked(const scene *s, const mesh *m, uint32_t t)
 {
-    const material *mt = material_of(s, m->mat[t]);
-    return mt->alpha_mask && mt->texture >= 0 && s->textures[mt->texture].has_alpha;
+    return scene_material_cuts_alpha(s, material_of(s, m->mat[t]));
 }
 
 /* Texture alpha at barycentrics (u, v) of triangle t. */

@@ -89,6 +89,14 @@ int32_t scene_add_instance(scene *s, uint32_t prototype, const xform3x4 *xf, err
 int32_t scene_add_object(scene *s, const char *name, mesh *m, err_buf *err); /* takes m */
 int32_t scene_find_material(const scene *s, const char *name);
 
+/* 1 when hits on material m are cut where its texture's alpha is below one half: it asks for
+ * the mask and its texture has some alpha. The renderer and the POV-Ray export both decide by
+ * this. */
+static inline int scene_material_cuts_alpha(const scene *s, const material *m)
+{
+    return m->alpha_mask && m->texture >= 0 && s->textures[m->texture].has_alpha;
+}
+
 /* The variant of `species` for normalised age t: the youngest variant at least as old as t. */
 uint32_t scene_variant_for_age(const scene *s, uint32_t species, double t);
 

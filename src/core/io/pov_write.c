@@ -66,7 +66,6 @@ static int material_is_grey(const material *m)
     return m->albedo.x == m->albedo.y && m->albedo.y == m->albedo.z;
 }
 
-/* 1 when the renderer cuts this material's triangles out by texture alpha. */
 static uint8_t srgb_encode(float linear)
 {
     float c = linear <= 0.0f ? 0.0f : linear >= 1.0f ? 1.0f : linear;

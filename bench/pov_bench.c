@@ -23,8 +23,8 @@
 
 #include "crosscheck/crosscheck.h"
 #include "crosscheck/povray_run.h"
-#include "io/pov_write.h"
-#include "plugin_host.h"
+#include "pov/pov_write.h"
+#include "plugin/plugin_host.h"
 #include "render/render.h"
 #include "scene/scene_build.h"
 #include "scene/scene_file.h"

@@ -20,7 +20,7 @@
 #include "lsys_derive.h"
 #include "lsys_system.h"
 #include "lsys_turtle.h"
-#include "plugin_host.h"
+#include "plugin/plugin_host.h"
 #include "scene/host.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"

@@ -10,7 +10,7 @@
 
 #include "harness.h"
 #include "work_dir.h"
-#include "plugin_host.h"
+#include "plugin/plugin_host.h"
 
 #define PLUGIN_DIR SYLVA_TEST_PLUGIN_DIR
 

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 
 #include "harness.h"
-#include "io/pov_number.h"
+#include "pov/pov_number.h"
 #include "util/rng.h"
 
 static const char *real(double v, int digits)

@@ -11,10 +11,10 @@
 
 #include "harness.h"
 #include "work_dir.h"
-#include "plugin_host.h"
+#include "plugin/plugin_host.h"
 #include "scene/host_schema.h"
 #include "scene/scene_file.h"
-#include "scene/yaml_doc.h"
+#include "params/yaml_doc.h"
 
 #define SCENES SYLVA_TEST_DATA_DIR "/scenes"
 

@@ -4,7 +4,7 @@
 #include <dirent.h>
 
 #include "harness.h"
-#include "plugin_host.h"
+#include "plugin/plugin_host.h"
 #include "scene/scene_file.h"
 
 #define SCENES SYLVA_TEST_DATA_DIR "/../scenes"

@@ -5,7 +5,7 @@
 
 #include "harness.h"
 #include "params/validate.h"
-#include "scene/yaml_doc.h"
+#include "params/yaml_doc.h"
 
 #define F_MIN SYLVA_PARAM_HAS_MIN
 #define F_MAX SYLVA_PARAM_HAS_MAX

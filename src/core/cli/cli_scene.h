@@ -4,7 +4,7 @@
 #ifndef SYLVA_CLI_SCENE_H
 #define SYLVA_CLI_SCENE_H
 
-#include "plugin_host.h"
+#include "plugin/plugin_host.h"
 #include "scene/scene.h"
 #include "scene/scene_build.h"
 #include "scene/scene_file.h"

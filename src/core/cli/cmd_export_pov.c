@@ -7,7 +7,7 @@
 #include "cli/cli_args.h"
 #include "cli/cli_scene.h"
 #include "cli/commands.h"
-#include "io/pov_write.h"
+#include "pov/pov_write.h"
 #include "util/progress.h"
 
 static void export_pov_usage(FILE *out)

@@ -9,7 +9,7 @@
 
 #include "cli/cli_args.h"
 #include "cli/commands.h"
-#include "plugin_host.h"
+#include "plugin/plugin_host.h"
 
 static void plugins_usage(FILE *out, const char *cmd)
 {

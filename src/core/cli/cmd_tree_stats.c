@@ -11,7 +11,7 @@
 
 #include "cli/cli_args.h"
 #include "cli/commands.h"
-#include "plugin_host.h"
+#include "plugin/plugin_host.h"
 #include "scene/host.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"

@@ -12,7 +12,7 @@
 
 #include "crosscheck/crosscheck_report.h"
 #include "io/image_io.h"
-#include "io/pov_write.h"
+#include "pov/pov_write.h"
 #include "render/lights.h"
 #include "render/render.h"
 #include "util/progress.h"

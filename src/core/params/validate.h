@@ -21,7 +21,7 @@
 
 #include <stdint.h>
 
-#include "scene/yaml_doc.h"
+#include "params/yaml_doc.h"
 #include "sylva/plugin.h"
 #include "util/arena.h"
 #include "util/err.h"

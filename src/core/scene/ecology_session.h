@@ -10,7 +10,7 @@
 #ifndef SYLVA_ECOLOGY_SESSION_H
 #define SYLVA_ECOLOGY_SESSION_H
 
-#include "plugin_host.h"
+#include "plugin/plugin_host.h"
 #include "scene/host.h"
 #include "scene/scene_build.h"
 

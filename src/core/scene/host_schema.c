@@ -19,9 +19,6 @@
 const char *const host_sections[] = {"image",   "camera",  "sun",     "sky",     "materials",
                                      "terrain", "species", "plants",  "ecology", "objects", NULL};
 
-const char *const host_reserved_keys[] = {"plugin", "material", "variants", "shape",   "grid",
-                                          "origin", "spacing",  "include",  NULL};
-
 const char *const host_shape_names[] = {"mesh", "box", "sphere", "quad", "disk", NULL};
 const char *const host_sky_models[] = {"none", "constant", "preetham", NULL};
 const char *const host_material_types[] = {"lambert", "leaf", NULL};
@@ -378,7 +375,7 @@ const char *host_reserved_key_clash(const sylva_param_spec *params, uint32_t n,
         const char *name = params[i].name;
         if (!name) continue;
         if (species_section && !strcmp(name, species_section)) return name;
-        for (const char *const *r = host_reserved_keys; *r; r++)
+        for (const char *const *r = plugin_reserved_keys; *r; r++)
             if (!strcmp(name, *r)) return name;
     }
     return NULL;

@@ -13,6 +13,7 @@
 
 #include <stdint.h>
 
+#include "plugin/plugin_host.h"
 #include "scene/scene_file.h"
 #include "sylva/plugin.h"
 
@@ -48,12 +49,8 @@ const host_schema *host_schema_shape(shape_kind kind);
 /* Top-level section names of a scene file, NULL-terminated. */
 extern const char *const host_sections[];
 
-/* Keys the host owns inside plugin blocks; a plugin schema may not use them (the ecology
- * plugin's species_section name is reserved as well). NULL-terminated. */
-extern const char *const host_reserved_keys[];
-
 /* The first parameter of a plugin's table whose name the host keeps for itself (one of
- * host_reserved_keys, or species_section when not NULL), or NULL when there is none. */
+ * plugin_reserved_keys, or species_section when not NULL), or NULL when there is none. */
 const char *host_reserved_key_clash(const sylva_param_spec *params, uint32_t n,
                                     const char *species_section);
 

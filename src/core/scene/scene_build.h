@@ -5,7 +5,7 @@
 #ifndef SYLVA_SCENE_BUILD_H
 #define SYLVA_SCENE_BUILD_H
 
-#include "plugin_host.h"
+#include "plugin/plugin_host.h"
 #include "scene/scene.h"
 #include "scene/scene_file.h"
 

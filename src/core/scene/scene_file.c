@@ -22,9 +22,9 @@
 #include <string.h>
 
 #include "params/validate.h"
-#include "plugin_host.h"
+#include "plugin/plugin_host.h"
 #include "scene/host_schema.h"
-#include "scene/yaml_doc.h"
+#include "params/yaml_doc.h"
 #include "util/arena.h"
 
 #define INCLUDE_MAX_DEPTH 16

@@ -6,7 +6,7 @@
 #include <unistd.h>
 
 #include "harness.h"
-#include "plugin_host.h"
+#include "plugin/plugin_host.h"
 #include "scene/ecology_session.h"
 #include "scene/scene_build.h"
 #include "scene/scene_file.h"

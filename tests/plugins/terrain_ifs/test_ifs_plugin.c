@@ -11,7 +11,7 @@
 #include <gdal.h>
 
 #include "harness.h"
-#include "plugin_host.h"
+#include "plugin/plugin_host.h"
 #include "scene/scene.h"
 #include "scene/scene_build.h"
 #include "scene/scene_file.h"

@@ -6,7 +6,7 @@
 
 #include "aono_plugin.h"
 #include "params/validate.h"
-#include "scene/yaml_doc.h"
+#include "params/yaml_doc.h"
 
 static int fixture_start(aono_fixture *f, uint64_t seed)
 {

@@ -11,7 +11,7 @@
 
 #include "branch_law.h"
 #include "lsys_derive.h"
-#include "plugin_host.h"
+#include "plugin/plugin_host.h"
 #include "scene/host.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"

@@ -3,7 +3,7 @@
 #include <string.h>
 
 #include "harness.h"
-#include "plugin_host.h"
+#include "plugin/plugin_host.h"
 #include "vessel_config.h"
 #include "vessel_test_util.h"
 

@@ -7,7 +7,7 @@
 
 #include "harness.h"
 #include "work_dir.h"
-#include "plugin_host.h"
+#include "plugin/plugin_host.h"
 #include "scene/scene_build.h"
 #include "scene/scene_file.h"
 #include "vessel_mesh.h"

@@ -6,7 +6,7 @@
  * released on every path out. Duplicate keys are found when a mapping closes, by sorting, so a
  * mapping with many keys costs n log n, not n^2.
  */
-#include "scene/yaml_doc.h"
+#include "params/yaml_doc.h"
 
 #include <errno.h>
 #include <stdarg.h>

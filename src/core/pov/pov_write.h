@@ -32,7 +32,7 @@
 
 #include <stdint.h>
 
-#include "io/pov_names.h"
+#include "pov/pov_names.h"
 #include "scene/scene.h"
 #include "util/err.h"
 

@@ -1,9 +1,9 @@
 /* pov_mesh.c — mesh2 declarations, streamed a line at a time. */
-#include "io/pov_mesh.h"
+#include "pov/pov_mesh.h"
 
 #include <stdlib.h>
 
-#include "io/pov_names.h"
+#include "pov/pov_names.h"
 
 #define VECTORS_PER_LINE 4
 #define FACES_PER_LINE 6

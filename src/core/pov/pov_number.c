@@ -1,6 +1,6 @@
 /* pov_number.c — decimal text for POV-Ray scene files, by integer arithmetic on the scaled
  * value (printf's %g is several times slower and an export prints millions of numbers). */
-#include "io/pov_number.h"
+#include "pov/pov_number.h"
 
 #include <math.h>
 #include <stdint.h>

@@ -20,6 +20,10 @@
 #include "sylva/plugin.h"
 #include "util/err.h"
 
+/* Keys the host owns inside plugin blocks; a plugin schema may not use them (the ecology
+ * plugin's species_section name is reserved as well). NULL-terminated. */
+extern const char *const plugin_reserved_keys[];
+
 typedef struct loaded_plugin {
     const sylva_plugin *desc;
     const char *file;         /* module path (owned by the registry) */

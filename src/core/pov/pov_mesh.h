@@ -6,7 +6,7 @@
 #ifndef SYLVA_POV_MESH_H
 #define SYLVA_POV_MESH_H
 
-#include "io/pov_file.h"
+#include "pov/pov_file.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"
 #include "util/err.h"

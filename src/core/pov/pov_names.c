@@ -1,5 +1,5 @@
 /* pov_names.c — identifiers and comment text for the POV-Ray exporter. */
-#include "io/pov_names.h"
+#include "pov/pov_names.h"
 
 #include <stdio.h>
 #include <string.h>

@@ -18,8 +18,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "plugin_host.h"
-#include "scene/host_schema.h"
+#include "plugin/plugin_host.h"
 #include "util/arena.h"
 #include "util/edit_distance.h"
 
@@ -101,10 +100,13 @@ static const loaded_plugin *registry_lookup(const plugin_registry *reg, const ch
  * Descriptors
  */
 
+const char *const plugin_reserved_keys[] = {"plugin", "material", "variants", "shape",   "grid",
+                                            "origin", "spacing",  "include",  NULL};
+
 /* The host key `name` would take in a plugin block, or NULL when it is free. */
 static const char *reserved_key(const char *name)
 {
-    for (const char *const *r = host_reserved_keys; *r; r++)
+    for (const char *const *r = plugin_reserved_keys; *r; r++)
         if (!strcmp(*r, name)) return *r;
     return NULL;
 }
@@ -114,8 +116,8 @@ static void reserved_key_list(char *buf, size_t cap)
 {
     size_t len = 0;
     buf[0] = '\0';
-    for (const char *const *r = host_reserved_keys; *r && len < cap; r++) {
-        int w = snprintf(buf + len, cap - len, "%s%s", r == host_reserved_keys ? "" : ", ", *r);
+    for (const char *const *r = plugin_reserved_keys; *r && len < cap; r++) {
+        int w = snprintf(buf + len, cap - len, "%s%s", r == plugin_reserved_keys ? "" : ", ", *r);
         if (w < 0) break;
         len += (size_t)w;
     }

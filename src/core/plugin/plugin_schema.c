@@ -11,7 +11,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "plugin_host.h"
+#include "plugin/plugin_host.h"
 
 #define SCHEMA_MAX_PARAMS 256  /* entries in one table */
 #define SCHEMA_MAX_DEPTH 8     /* GROUP / GROUP_LIST nesting */

@@ -1,6 +1,6 @@
 /* pov_write.c — the scene and species exports: file names, materials and their images, the
  * terrain, objects, species and plants, and the main scene file (see pov_write.h). */
-#include "io/pov_write.h"
+#include "pov/pov_write.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -8,10 +8,10 @@
 #include <sys/stat.h>
 
 #include "io/image_io.h"
-#include "io/pov_file.h"
-#include "io/pov_mesh.h"
-#include "io/pov_names.h"
-#include "io/pov_number.h"
+#include "pov/pov_file.h"
+#include "pov/pov_mesh.h"
+#include "pov/pov_names.h"
+#include "pov/pov_number.h"
 #include "render/accel.h"
 #include "render/lights.h"
 #include "render/texture_lookup.h"

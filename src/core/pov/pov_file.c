@@ -1,5 +1,5 @@
 /* pov_file.c — streamed scene files and text builders for the POV-Ray exporter. */
-#include "io/pov_file.h"
+#include "pov/pov_file.h"
 
 #include <errno.h>
 #include <stdarg.h>
@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "io/atomic_file.h"
-#include "io/pov_number.h"
+#include "pov/pov_number.h"
 
 #define POV_FILE_BUFFER (1u << 20)
 

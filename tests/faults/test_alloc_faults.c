@@ -9,8 +9,8 @@
  * the run with allocation N failing (with --sticky: N and all later ones, as when memory has run
  * out) must
  *   - not crash (no signal, no sanitizer report: those end the child abnormally),
- *   - either succeed (the allocation was optional) or exit 2, 3 or 4 with a message on stderr
- *     that says the memory ran out,
+ *   - either succeed (the allocation was optional) or exit with status 4, the README's status
+ *     for running out of memory, with a message on stderr that says the memory ran out,
  *   - free every block it allocated (the live count returns to what it was before the command),
  *   - leave no temporary file in OUT_DIR.
  * Prints one line per failing N and a summary; exit 0 when every run passed. --only N runs
@@ -30,6 +30,7 @@
 #include "fault_alloc.h"
 
 #define MAX_ARGS 64
+#define EXIT_OUT_OF_MEMORY 4 /* README: out of memory or internal error */
 #define ALWAYS_TESTED 64 /* the first allocations (argument and scene-file handling) all */
 
 typedef struct {
@@ -41,14 +42,9 @@ typedef struct {
 
 static int dispatch(int argc, char **argv)
 {
-    const char *c = argv[0];
-    if (!strcmp(c, "render")) return cmd_render(argc, argv);
-    if (!strcmp(c, "export-pov")) return cmd_export_pov(argc, argv);
-    if (!strcmp(c, "simulate")) return cmd_simulate(argc, argv);
-    if (!strcmp(c, "factors")) return cmd_factors(argc, argv);
-    if (!strcmp(c, "tree-stats")) return cmd_tree_stats(argc, argv);
-    if (!strcmp(c, "plugins")) return cmd_plugins(argc, argv);
-    fprintf(stderr, "test_alloc_faults: unknown command '%s'\n", c);
+    const sylva_command *c = sylva_command_find(argv[0]);
+    if (c) return c->run(argc, argv);
+    fprintf(stderr, "test_alloc_faults: unknown command '%s'\n", argv[0]);
     return 99;
 }
 
@@ -220,8 +216,8 @@ int main(int argc, char **argv)
         if (only) print_file(err_path, 40);
         int temps = clear_dir(out_dir);
         const char *problem = NULL;
-        if (r.rc != 0 && (r.rc < 2 || r.rc > 4))
-            problem = "exit status outside 2..4";
+        if (r.rc != 0 && r.rc != EXIT_OUT_OF_MEMORY)
+            problem = "exit status other than 4 (out of memory)";
         else if (r.rc != 0 && !says_out_of_memory(err_path))
             problem = "no 'out of memory' on stderr";
         if (!problem && r.leaked != 0) problem = "blocks leaked";

@@ -7,15 +7,6 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* Exit codes shared by every command (documented in README.md and `sylva --help`). */
-enum {
-    EXIT_OK = 0,
-    EXIT_USAGE = 1,   /* bad command line */
-    EXIT_INPUT = 2,   /* bad scene file, missing plugin, plugin failure */
-    EXIT_OUTPUT = 3,  /* an output file could not be written */
-    EXIT_INTERNAL = 4 /* out of memory or an internal error */
-};
-
 /* Parses an unsigned integer in [lo, hi]; prints "sylva OPTION: ..." and returns -1 when bad. */
 int cli_parse_u64(const char *cmd, const char *opt, const char *s, uint64_t lo, uint64_t hi, uint64_t *out);
 /* An argument of a command that takes one scene file: an unknown option or a second file is

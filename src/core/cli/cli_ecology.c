@@ -2,11 +2,10 @@
 #include "cli/cli_ecology.h"
 
 #include <errno.h>
-#include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
 
-#include "cli/cli_args.h"
+#include "cli/cli_status.h"
 
 int cli_ecology_open(cli_ecology *e, const char *cmd, const char *scene_path, const build_options *opt)
 {
@@ -16,10 +15,8 @@ int cli_ecology_open(cli_ecology *e, const char *cmd, const char *scene_path, co
     int rc = cli_scene_open(&e->base, cmd, scene_path, &bo);
     if (rc) return rc;
     err_buf err = {{0}};
-    if (!(e->session = ecology_session_open(e->base.sf, e->base.scene, e->base.reg, opt, &err))) {
-        fprintf(stderr, "%s\n", err.msg);
-        return EXIT_INPUT;
-    }
+    if (!(e->session = ecology_session_open(e->base.sf, e->base.scene, e->base.reg, opt, &err)))
+        return cli_fail(NULL, &err, ERR_INPUT);
     return EXIT_OK;
 }
 
@@ -35,8 +32,8 @@ int cli_make_folder(const char *dir, err_buf *err)
     struct stat st;
     if (!stat(dir, &st)) {
         if (S_ISDIR(st.st_mode)) return 0;
-        return err_set(err, "%s: exists and is not a folder", dir);
+        return err_fail(err, ERR_OUTPUT, "%s: exists and is not a folder", dir);
     }
-    if (mkdir(dir, 0777)) return err_set(err, "%s: cannot create the folder: %s", dir, strerror(errno));
+    if (mkdir(dir, 0777)) return err_fail(err, ERR_OUTPUT, "%s: cannot create the folder: %s", dir, strerror(errno));
     return 0;
 }

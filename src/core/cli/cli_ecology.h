@@ -12,8 +12,7 @@ typedef struct cli_ecology {
     ecology_session *session; /* owned */
 } cli_ecology;
 
-/* Fills e; returns an exit status (EXIT_OK, or EXIT_INPUT / EXIT_INTERNAL after printing the
- * problem prefixed with "sylva CMD: " where it is not a located scene-file message). */
+/* Fills e; returns EXIT_OK, or the exit status of the problem after printing it (cli_fail). */
 int cli_ecology_open(cli_ecology *e, const char *cmd, const char *scene_path, const build_options *opt);
 void cli_ecology_close(cli_ecology *e);
 

@@ -1,10 +1,9 @@
 /* cli_scene.c — loading and building a scene for a command. */
 #include "cli/cli_scene.h"
 
-#include <stdio.h>
 #include <string.h>
 
-#include "cli/cli_args.h"
+#include "cli/cli_status.h"
 #include "util/progress.h"
 
 int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const build_options *opt)
@@ -12,18 +11,10 @@ int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const 
     memset(c, 0, sizeof *c);
     err_buf err = {{0}};
     double t0 = progress_now();
-    if (!(c->reg = plugin_registry_open(&err))) {
-        fprintf(stderr, "sylva %s: %s\n", cmd, err.msg);
-        return EXIT_INTERNAL;
-    }
-    if (!(c->sf = scene_file_load(scene_path, c->reg, &err))) {
-        fprintf(stderr, "%s\n", err.msg);
-        return EXIT_INPUT;
-    }
-    if (!(c->scene = scene_build(c->sf, c->reg, opt, &err))) {
-        fprintf(stderr, "%s\n", err.msg);
-        return EXIT_INPUT;
-    }
+    if (!(c->reg = plugin_registry_open(&err))) return cli_fail(cmd, &err, ERR_INTERNAL);
+    /* Problems of the scene file speak of it themselves. */
+    if (!(c->sf = scene_file_load(scene_path, c->reg, &err))) return cli_fail(NULL, &err, ERR_INPUT);
+    if (!(c->scene = scene_build(c->sf, c->reg, opt, &err))) return cli_fail(NULL, &err, ERR_INPUT);
     c->seconds = progress_now() - t0;
     return EXIT_OK;
 }

@@ -16,8 +16,8 @@ typedef struct cli_scene {
     double seconds;        /* to load and build */
 } cli_scene;
 
-/* Fills c and returns EXIT_OK, or EXIT_INPUT / EXIT_INTERNAL after printing the problem; in
- * every case cli_scene_close releases what was made. */
+/* Fills c and returns EXIT_OK, or the exit status of the problem after printing it
+ * (cli_fail); in every case cli_scene_close releases what was made. */
 int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const build_options *opt);
 void cli_scene_close(cli_scene *c);
 

@@ -7,6 +7,7 @@
 
 #include "cli/cli_args.h"
 #include "cli/cli_scene.h"
+#include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "crosscheck/crosscheck.h"
 
@@ -144,14 +145,12 @@ int cmd_crosscheck(int argc, char **argv)
     const scene *sc = cs.scene;
     crosscheck_result *r = malloc(sizeof *r);
     if (!r) {
-        fprintf(stderr, "sylva crosscheck: out of memory\n");
-        rc = EXIT_INTERNAL;
+        rc = cli_failf("crosscheck", ERR_NOMEM, "out of memory");
         goto done;
     }
     int status = crosscheck_run(sc, out, &co, r, &err);
     if (status) {
-        fprintf(stderr, "sylva crosscheck: %s\n", err.msg);
-        rc = status == CROSSCHECK_NOT_WRITTEN ? EXIT_OUTPUT : EXIT_INTERNAL;
+        rc = cli_fail("crosscheck", &err, status == CROSSCHECK_NOT_WRITTEN ? ERR_OUTPUT : ERR_INTERNAL);
     } else {
         printf("%s\n%s/report.html\n", r->verdict, out);
         rc = r->pass ? EXIT_OK : EXIT_DISAGREE;

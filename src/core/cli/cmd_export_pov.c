@@ -6,6 +6,7 @@
 
 #include "cli/cli_args.h"
 #include "cli/cli_scene.h"
+#include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "pov/pov_write.h"
 #include "util/progress.h"
@@ -112,28 +113,27 @@ int cmd_export_pov(int argc, char **argv)
         uint32_t k = 0;
         while (k < sc->n_species && strcmp(sc->species[k].name, species_name)) k++;
         if (k == sc->n_species) {
-            fprintf(stderr, "sylva export-pov: the scene has no species '%s'; it has:", species_name);
-            for (uint32_t j = 0; j < sc->n_species; j++) fprintf(stderr, "%s '%s'", j ? "," : "", sc->species[j].name);
-            fprintf(stderr, "%s\n", sc->n_species ? "" : " none");
-            rc = EXIT_INPUT;
+            char names[ERR_MSG_MAX / 2] = "";
+            for (uint32_t j = 0, used = 0; j < sc->n_species && used < sizeof names; j++)
+                used += (uint32_t)snprintf(names + used, sizeof names - used, "%s '%s'", j ? "," : "", sc->species[j].name);
+            rc = cli_failf("export-pov", ERR_INPUT, "the scene has no species '%s'; it has:%s", species_name,
+                           sc->n_species ? names : " none");
             goto done;
         }
         if (variant >= 0 && (uint64_t)variant >= sc->species[k].n_variants) {
-            fprintf(stderr, "sylva export-pov: species '%s' has variants 0 to %u; --variant %lld does not exist\n",
-                    species_name, sc->species[k].n_variants ? sc->species[k].n_variants - 1 : 0, (long long)variant);
-            rc = EXIT_INPUT;
+            rc = cli_failf("export-pov", ERR_INPUT, "species '%s' has variants 0 to %u; --variant %lld does not exist",
+                           species_name, sc->species[k].n_variants ? sc->species[k].n_variants - 1 : 0,
+                           (long long)variant);
             goto done;
         }
         if (pov_export_species(sc, k, (int32_t)variant, out, scene_path, &st, &err)) {
-            fprintf(stderr, "sylva export-pov: %s\n", err.msg);
-            rc = EXIT_OUTPUT;
+            rc = cli_fail("export-pov", &err, ERR_OUTPUT);
             goto done;
         }
     } else {
         po.source = scene_path;
         if (pov_export_scene(sc, out, &po, &st, &err)) {
-            fprintf(stderr, "sylva export-pov: %s\n", err.msg);
-            rc = EXIT_OUTPUT;
+            rc = cli_fail("export-pov", &err, ERR_OUTPUT);
             goto done;
         }
     }

@@ -8,6 +8,7 @@
 
 #include "cli/cli_args.h"
 #include "cli/cli_ecology.h"
+#include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "io/atomic_file.h"
 #include "io/ecology_maps.h"
@@ -90,25 +91,17 @@ int cmd_factors(int argc, char **argv)
     uint32_t n = ecology_session_factor_count(e.session);
     sylva_ecology_factor_map *maps = calloc(n ? n : 1, sizeof *maps);
     if (!maps) {
-        fprintf(stderr, "sylva factors: out of memory\n");
         cli_ecology_close(&e);
-        return EXIT_INTERNAL;
+        return cli_failf("factors", ERR_NOMEM, "out of memory");
     }
     for (uint32_t m = 0; m < n && !rc; m++)
-        if (ecology_session_factor(e.session, m, &maps[m], &err)) {
-            fprintf(stderr, "sylva factors: %s\n", err.msg);
-            rc = EXIT_INPUT;
-        }
-    if (!rc && n && cli_make_folder(dir, &err)) {
-        fprintf(stderr, "sylva factors: %s\n", err.msg);
-        rc = EXIT_OUTPUT;
-    }
+        if (ecology_session_factor(e.session, m, &maps[m], &err)) rc = cli_fail("factors", &err, ERR_PLUGIN);
+    if (!rc && n && cli_make_folder(dir, &err)) rc = cli_fail("factors", &err, ERR_OUTPUT);
     char path[4200];
     for (uint32_t m = 0; m < n && !rc; m++) {
         snprintf(path, sizeof path, "%s/%s.png", dir, maps[m].name);
         if (factor_map_write(path, &maps[m], &err)) {
-            fprintf(stderr, "sylva factors: %s\n", err.msg);
-            rc = EXIT_OUTPUT;
+            rc = cli_fail("factors", &err, ERR_OUTPUT);
         } else {
             printf("%s\n", path);
         }
@@ -116,8 +109,7 @@ int cmd_factors(int argc, char **argv)
     if (!rc && n) {
         snprintf(path, sizeof path, "%s/factors.csv", dir);
         if (write_csv(path, maps, n, &err)) {
-            fprintf(stderr, "sylva factors: %s\n", err.msg);
-            rc = EXIT_OUTPUT;
+            rc = cli_fail("factors", &err, ERR_OUTPUT);
         } else {
             printf("%s\n", path);
         }

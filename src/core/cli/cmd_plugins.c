@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "cli/cli_args.h"
+#include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "plugin/plugin_host.h"
 
@@ -122,10 +123,7 @@ int cmd_plugins(int argc, char **argv)
     err_buf err;
     err_clear(&err);
     plugin_registry *reg = plugin_registry_open(&err); /* freed below */
-    if (!reg) {
-        fprintf(stderr, "sylva %s: %s\n", cmd, err.msg);
-        return EXIT_INTERNAL;
-    }
+    if (!reg) return cli_fail(cmd, &err, ERR_INTERNAL);
     int status = EXIT_OK;
     if (!describe) {
         plugins_list(reg);
@@ -134,8 +132,7 @@ int cmd_plugins(int argc, char **argv)
         if (lp) {
             plugins_describe(lp);
         } else {
-            fprintf(stderr, "sylva %s: %s\n", cmd, err.msg);
-            status = EXIT_INPUT;
+            status = cli_fail(cmd, &err, ERR_INPUT);
         }
     }
     plugin_registry_free(reg);

@@ -5,6 +5,7 @@
 
 #include "cli/cli_args.h"
 #include "cli/cli_scene.h"
+#include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "render/render.h"
 #include "util/progress.h"
@@ -113,13 +114,11 @@ int cmd_render(int argc, char **argv)
     render_stats st;
     f = render_scene(sc, &ro, &st, &err);
     if (!f) {
-        fprintf(stderr, "sylva render: %s\n", err.msg);
-        rc = EXIT_INTERNAL;
+        rc = cli_fail("render", &err, ERR_INTERNAL);
         goto done;
     }
     if (film_write_exr(f, exr, &err) || film_write_png(f, png, sc->image.exposure, &err)) {
-        fprintf(stderr, "sylva render: %s\n", err.msg);
-        rc = EXIT_OUTPUT;
+        rc = cli_fail("render", &err, ERR_OUTPUT);
         goto done;
     }
     if (!ro.quiet)

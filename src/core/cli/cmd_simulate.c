@@ -9,6 +9,7 @@
 
 #include "cli/cli_args.h"
 #include "cli/cli_ecology.h"
+#include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "io/atomic_file.h"
 #include "io/ecology_maps.h"
@@ -107,7 +108,7 @@ static int write_map(cli_ecology *e, const char *dir, const char *const *names, 
 {
     sylva_ecology_plant_record *p = NULL;
     uint32_t n = 0;
-    if (ecology_session_plants(e->session, &p, &n, err)) return EXIT_INPUT;
+    if (ecology_session_plants(e->session, &p, &n, err)) return -1;
     char path[4200];
     uint32_t year = ecology_session_year(e->session);
     snprintf(path, sizeof path, "%s/map_%04u.png", dir, year);
@@ -117,9 +118,9 @@ static int write_map(cli_ecology *e, const char *dir, const char *const *names, 
     int rc = plant_map_write(path, e->base.scene->terrain, water.values ? &water : NULL, p, n, names, e->base.sf->n_species,
                              year, err);
     free(p);
-    if (rc) return EXIT_OUTPUT;
+    if (rc) return err_default(err, ERR_OUTPUT);
     printf("%s\n", path);
-    return EXIT_OK;
+    return 0;
 }
 
 int cmd_simulate(int argc, char **argv)
@@ -176,8 +177,7 @@ int cmd_simulate(int argc, char **argv)
     const char **names = NULL;
     if (rc) goto done;
     if (load && ecology_session_load(e.session, load, &err)) {
-        fprintf(stderr, "sylva simulate: %s\n", err.msg);
-        rc = EXIT_INPUT;
+        rc = cli_fail("simulate", &err, ERR_INPUT);
         goto done;
     }
     uint32_t start = ecology_session_year(e.session), wanted = ecology_session_years_wanted(e.session);
@@ -187,14 +187,12 @@ int cmd_simulate(int argc, char **argv)
     row_years = malloc(((size_t)n_years + 1) * sizeof *row_years);
     names = calloc(ns ? ns : 1, sizeof *names);
     if (!counts || !row_years || !names) {
-        fprintf(stderr, "sylva simulate: out of memory for %u years of statistics\n", n_years);
-        rc = EXIT_INTERNAL;
+        rc = cli_failf("simulate", ERR_NOMEM, "out of memory for %u years of statistics", n_years);
         goto done;
     }
     for (uint32_t s = 0; s < ns; s++) names[s] = e.base.sf->species[s].name;
     if (stats && cli_make_folder(stats, &err)) {
-        fprintf(stderr, "sylva simulate: %s\n", err.msg);
-        rc = EXIT_OUTPUT;
+        rc = cli_fail("simulate", &err, ERR_OUTPUT);
         goto done;
     }
     progress prog;
@@ -206,16 +204,15 @@ int cmd_simulate(int argc, char **argv)
         rows++;
         int mapped = 0;
         for (uint32_t m = 0; stats && m < n_map_years; m++) mapped |= map_years[m] == year;
-        if (stats && (mapped || y == n_years) && (rc = write_map(&e, stats, names, &err))) {
+        if (stats && (mapped || y == n_years) && write_map(&e, stats, names, &err)) {
             progress_end(&prog);
-            fprintf(stderr, "sylva simulate: %s\n", err.msg);
+            rc = cli_fail("simulate", &err, ERR_OUTPUT);
             goto done;
         }
         if (y == n_years) break;
         if (ecology_session_step(e.session, 1, &err)) {
             progress_end(&prog);
-            fprintf(stderr, "sylva simulate: %s\n", err.msg);
-            rc = EXIT_INPUT;
+            rc = cli_fail("simulate", &err, ERR_PLUGIN);
             goto done;
         }
         progress_set(&prog, y + 1, n_years);
@@ -225,23 +222,20 @@ int cmd_simulate(int argc, char **argv)
         sylva_ecology_plant_record *p = NULL;
         uint32_t n = 0;
         if (ecology_session_plants(e.session, &p, &n, &err)) {
-            fprintf(stderr, "sylva simulate: %s\n", err.msg);
-            rc = EXIT_INPUT;
+            rc = cli_fail("simulate", &err, ERR_PLUGIN);
             goto done;
         }
         int bad = write_plants_csv(out, e.base.sf, p, n, &err);
         free(p);
         if (bad) {
-            fprintf(stderr, "sylva simulate: %s\n", err.msg);
-            rc = EXIT_OUTPUT;
+            rc = cli_fail("simulate", &err, ERR_OUTPUT);
             goto done;
         }
         printf("%s\n", out);
     }
     if (save) {
         if (ecology_session_save(e.session, save, &err)) {
-            fprintf(stderr, "sylva simulate: %s\n", err.msg);
-            rc = EXIT_OUTPUT;
+            rc = cli_fail("simulate", &err, ERR_OUTPUT);
             goto done;
         }
         printf("%s\n", save);
@@ -250,15 +244,13 @@ int cmd_simulate(int argc, char **argv)
         char path[4200];
         snprintf(path, sizeof path, "%s/population.csv", stats);
         if (write_population_csv(path, e.base.sf, row_years, counts, rows, &err)) {
-            fprintf(stderr, "sylva simulate: %s\n", err.msg);
-            rc = EXIT_OUTPUT;
+            rc = cli_fail("simulate", &err, ERR_OUTPUT);
             goto done;
         }
         printf("%s\n", path);
         snprintf(path, sizeof path, "%s/population.png", stats);
         if (population_plot_write(path, row_years, counts, rows, names, ns, &err)) {
-            fprintf(stderr, "sylva simulate: %s\n", err.msg);
-            rc = EXIT_OUTPUT;
+            rc = cli_fail("simulate", &err, ERR_OUTPUT);
             goto done;
         }
         printf("%s\n", path);

@@ -10,12 +10,12 @@
 #include <string.h>
 
 #include "cli/cli_args.h"
+#include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "plugin/plugin_host.h"
-#include "scene/host.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"
-#include "scene/scene_build.h"
+#include "scene/plugin_call.h"
 #include "scene/scene_file.h"
 
 static void tree_stats_usage(FILE *out)
@@ -47,73 +47,52 @@ static void print_row(uint32_t variant, const sylva_tree_stats *st)
            st->bbox_max[2], st->box_dimension);
 }
 
-/* Builds and prints the variants; returns the exit status. */
-static int run_species(const scene_file *sf, const species_spec *sp, const loaded_plugin *lp, uint32_t n_variants,
-                       double only_age, int verbose)
+/* Builds and prints the variants through the scene build's plugin call, so the figures describe
+ * the models a render uses. Returns 0, or -1 with err set. */
+static int run_species(const scene_file *sf, const species_spec *sp, const plugin_registry *reg,
+                       uint32_t n_variants, double only_age, int verbose, err_buf *err)
 {
-    const sylva_tree_stats_v1 *ext = lp->desc->extension ? lp->desc->extension(SYLVA_TREE_STATS_V1) : NULL;
-    if (!ext || ext->size < offsetof(sylva_tree_stats_v1, last_stats) + sizeof ext->last_stats || !ext->last_stats) {
-        fprintf(stderr, "sylva tree-stats: tree plugin '%s' (%s) does not report statistics (no \"%s\" interface)\n",
-                sp->plugin, lp->file, SYLVA_TREE_STATS_V1);
-        return EXIT_INPUT;
-    }
-    scene *sc = scene_new();
-    if (!sc) {
-        fprintf(stderr, "sylva tree-stats: out of memory\n");
-        return EXIT_INTERNAL;
-    }
-    err_buf err = {{0}};
-    char context[200];
-    snprintf(context, sizeof context, "tree plugin '%s' for species '%s'", sp->plugin, sp->name);
-    /* The same seeds as the scene build, so the figures describe the models a render uses. */
-    sylva_host h;
-    host_init(&h, sc, sf->dir, scene_species_seed(sf, sp->name, 0), context, &err);
-    h.verbose = verbose, h.quiet = 1, h.kind = SYLVA_KIND_TREE;
-    const sylva_host_api *api = host_api_table();
-    void *state = NULL;
-    int rc = lp->desc->create(api, &h, sp->params, &state);
-    if (rc) {
-        fprintf(stderr, "%s:%u:%u: %s (%s): create failed: %s\n", sf->path, sp->line, sp->column, context, lp->file,
-                err.msg[0] ? err.msg : "no reason given");
-        host_release(&h);
+    scene *sc = scene_new(); /* owned: holds the meshes' materials while they are measured */
+    if (!sc) return err_nomem(err, "out of memory");
+    plugin_call c;
+    plugin_call_output out = {.verbose = verbose, .quiet = 1};
+    if (plugin_call_open_tree(&c, sf, sp, sc, reg, &out, err)) {
         scene_free(sc);
-        return EXIT_INPUT;
+        return -1;
     }
-    printf("species %s: plugin %s (%s)\n", sp->name, sp->plugin, lp->file);
+    const sylva_plugin *desc = c.plugin->desc;
+    const sylva_tree_stats_v1 *ext = desc->extension ? desc->extension(SYLVA_TREE_STATS_V1) : NULL;
+    int rc = 0;
+    if (!ext || ext->size < offsetof(sylva_tree_stats_v1, last_stats) + sizeof ext->last_stats || !ext->last_stats) {
+        rc = err_at(err, ERR_INPUT, sf->path, sp->line, sp->column,
+                    "tree plugin '%s' (%s) does not report statistics (no \"%s\" interface)", sp->plugin,
+                    c.plugin->file, SYLVA_TREE_STATS_V1);
+        goto done;
+    }
+    printf("species %s: plugin %s (%s)\n", sp->name, sp->plugin, c.plugin->file);
     printf("%-7s %-6s %-5s %-11s %-9s %-8s %-8s %-16s %-10s %-8s %-36s  %s\n", "variant", "age", "level", "symbols",
            "segments", "leaves", "branches", "N2 eq.6", "triangles", "height", "bounding box (m)", "D_B");
-    int status = EXIT_OK;
     uint32_t count = only_age > 0 ? 1 : n_variants;
-    for (uint32_t v = 0; v < count && status == EXIT_OK; v++) {
+    for (uint32_t v = 0; v < count && !rc; v++) {
         mesh *m = mesh_new();
         if (!m) {
-            fprintf(stderr, "sylva tree-stats: out of memory\n");
-            status = EXIT_INTERNAL;
+            rc = err_nomem(err, "out of memory");
             break;
         }
-        h.seed = scene_species_seed(sf, sp->name, v);
-        sylva_tree_request req = {.size = sizeof req, .age = only_age > 0 ? only_age : (double)(v + 1) / count,
-                                  .variant = v, .n_variants = count, .lod = 0, .seed = h.seed};
-        sylva_tree_out out = {.size = sizeof out, .mesh = m};
-        err_clear(&err);
-        rc = lp->desc->generate(state, api, &h, &req, &out);
+        tree_variant tv = {.index = v, .count = count, .age = only_age};
         sylva_tree_stats st = {.size = sizeof st};
-        if (rc) {
-            fprintf(stderr, "%s:%u:%u: %s (%s): generate failed for variant %u: %s\n", sf->path, sp->line, sp->column,
-                    context, lp->file, v, err.msg[0] ? err.msg : "no reason given");
-            status = EXIT_INPUT;
-        } else if (ext->last_stats(state, &st)) {
-            fprintf(stderr, "sylva tree-stats: %s gave no statistics for variant %u\n", context, v);
-            status = EXIT_INPUT;
-        } else {
-            print_row(v, &st);
+        if (!(rc = plugin_call_tree(&c, &tv, m, err))) {
+            if (ext->last_stats(c.state, &st))
+                rc = plugin_call_refuse(&c, "last_stats", ERR_PLUGIN, err, "gave no statistics for variant %u", v);
+            else
+                print_row(v, &st);
         }
         mesh_free(m);
     }
-    lp->desc->destroy(state);
-    host_release(&h);
+done:
+    plugin_call_close(&c);
     scene_free(sc);
-    return status;
+    return rc;
 }
 
 int cmd_tree_stats(int argc, char **argv)
@@ -164,36 +143,32 @@ int cmd_tree_stats(int argc, char **argv)
     }
     err_buf err = {{0}};
     plugin_registry *reg = plugin_registry_open(&err);
-    if (!reg) {
-        fprintf(stderr, "sylva tree-stats: %s\n", err.msg);
-        return EXIT_INTERNAL;
-    }
-    int rc = EXIT_INPUT;
+    if (!reg) return cli_fail("tree-stats", &err, ERR_INTERNAL);
+    int rc = EXIT_OK;
+    const species_spec *sp = NULL;
     scene_file *sf = scene_file_load(scene_path, reg, &err);
     if (!sf) {
-        fprintf(stderr, "%s\n", err.msg);
+        rc = cli_fail(NULL, &err, ERR_INPUT);
         goto done;
     }
-    const species_spec *sp = NULL;
     for (uint32_t i = 0; i < sf->n_species; i++)
         if (!strcmp(sf->species[i].name, species_name)) sp = &sf->species[i];
     if (!sp) {
-        fprintf(stderr, "sylva tree-stats: %s has no species '%s'; its species are:", scene_path, species_name);
-        for (uint32_t i = 0; i < sf->n_species; i++) fprintf(stderr, " %s", sf->species[i].name);
-        fprintf(stderr, "%s\n", sf->n_species ? "" : " (none)");
+        char names[ERR_MSG_MAX / 2] = "";
+        for (uint32_t i = 0, used = 0; i < sf->n_species && used < sizeof names; i++)
+            used += (uint32_t)snprintf(names + used, sizeof names - used, " %s", sf->species[i].name);
+        rc = cli_failf("tree-stats", ERR_INPUT, "%s has no species '%s'; its species are:%s", scene_path,
+                       species_name, sf->n_species ? names : " (none)");
         goto done;
     }
     if (!sp->plugin) {
-        fprintf(stderr, "%s:%u:%u: species '%s' is a built-in shape, not a tree plugin's model\n", sf->path, sp->line,
-                sp->column, sp->name);
+        err_at(&err, ERR_INPUT, sf->path, sp->line, sp->column,
+               "species '%s' is a built-in shape, not a tree plugin's model", sp->name);
+        rc = cli_fail("tree-stats", &err, ERR_INPUT);
         goto done;
     }
-    const loaded_plugin *lp = plugin_registry_find(reg, sp->plugin, SYLVA_KIND_TREE, &err);
-    if (!lp) {
-        fprintf(stderr, "%s:%u:%u: %s\n", sf->path, sp->line, sp->column, err.msg);
-        goto done;
-    }
-    rc = run_species(sf, sp, lp, variants ? (uint32_t)variants : sp->variants, age, verbose);
+    if (run_species(sf, sp, reg, variants ? (uint32_t)variants : sp->variants, age, verbose, &err))
+        rc = cli_fail("tree-stats", &err, ERR_PLUGIN);
 done:
     scene_file_free(sf);
     plugin_registry_free(reg);

@@ -1,20 +1,29 @@
-/* commands.h — one function per `sylva` command; argv[0] is the command name. Each returns the
- * process exit status and prints its results on stdout, messages on stderr. */
+/* commands.h — the `sylva` commands: one function per command, and the table the command line
+ * dispatches from and lists in `sylva --help`. argv[0] is the command name; each function
+ * returns the process exit status (cli_status.h) and prints its results on stdout, messages on
+ * stderr. Each command's --help gives its options. */
 #ifndef SYLVA_CLI_COMMANDS_H
 #define SYLVA_CLI_COMMANDS_H
 
-/* `sylva plugins [--describe NAME]`: lists the plugins found (and the modules that could not be
- * used), or describes one plugin and its parameter schema. Exit status: 0 done, 1 usage error,
- * 2 no plugin called NAME, 4 out of memory. */
-int cmd_plugins(int argc, char **argv);
+int cmd_render(int argc, char **argv);     /* cmd_render.c */
+int cmd_plugins(int argc, char **argv);    /* cmd_plugins.c */
+int cmd_export_pov(int argc, char **argv); /* cmd_export_pov.c */
+int cmd_crosscheck(int argc, char **argv); /* cmd_crosscheck.c */
+int cmd_simulate(int argc, char **argv);   /* cmd_simulate.c */
+int cmd_factors(int argc, char **argv);    /* cmd_factors.c */
+int cmd_tree_stats(int argc, char **argv); /* cmd_tree_stats.c */
 
-/* `sylva render SCENE [options]`: renders to EXR and PNG (see cmd_render.c for options and
- * exit codes). */
-int cmd_render(int argc, char **argv);
-int cmd_export_pov(int argc, char **argv); /* `sylva export-pov SCENE`: POV-Ray 3.7 scene files (cmd_export_pov.c) */
-int cmd_crosscheck(int argc, char **argv); /* `sylva crosscheck SCENE`: sylva vs POV-Ray, report (cmd_crosscheck.c) */
-int cmd_simulate(int argc, char **argv); /* `sylva simulate SCENE`: the ecology alone, year by year (cmd_simulate.c) */
-int cmd_factors(int argc, char **argv);  /* `sylva factors SCENE -o DIR`: the ecology's terrain factor maps (cmd_factors.c) */
-int cmd_tree_stats(int argc, char **argv); /* `sylva tree-stats SCENE SPECIES`: a tree species' models in figures (cmd_tree_stats.c) */
+typedef struct sylva_command {
+    const char *name;                 /* as typed after `sylva` */
+    int (*run)(int argc, char **argv);
+    const char *synopsis;             /* arguments for `sylva --help`, e.g. "SCENE SPECIES" */
+    const char *summary;              /* one line for `sylva --help` */
+} sylva_command;
+
+/* Every command, in the order `sylva --help` lists them; the last entry's name is NULL. */
+extern const sylva_command sylva_commands[];
+
+/* The command called `name`, or NULL. */
+const sylva_command *sylva_command_find(const char *name);
 
 #endif

@@ -79,7 +79,7 @@ static int write_class_map(const char *path, const film *f, err_buf *err)
     };
     size_t n = (size_t)f->width * f->height;
     uint8_t *px = malloc(n * 3);
-    if (!px) return err_set(err, "out of memory for the class map");
+    if (!px) return err_nomem(err, "out of memory for the class map");
     for (size_t i = 0; i < n; i++) {
         uint8_t k = f->pixel_class[i] < PIXEL_CLASS_COUNT ? f->pixel_class[i] : 0;
         memcpy(px + i * 3, colour[k], 3);
@@ -165,7 +165,7 @@ static int compare(const film *f, const float *pov_rgb, const float *pov_alpha, 
     uint8_t *ms = malloc(n), *mp = malloc(n);
     if (!ms || !mp) {
         free(ms), free(mp);
-        return err_set(err, "out of memory for the coverage masks");
+        return err_nomem(err, "out of memory for the coverage masks");
     }
     double sum = 0;
     for (size_t i = 0; i < n; i++) {
@@ -264,7 +264,7 @@ int crosscheck_run(const scene *s, const char *out_dir, const crosscheck_options
     pov_rgb = malloc(n * 3 * sizeof(float));
     pov_alpha = malloc(n * sizeof(float));
     if (!pov_rgb || !pov_alpha) {
-        err_set(err, "out of memory for POV-Ray's picture");
+        err_nomem(err, "out of memory for POV-Ray's picture");
         goto done;
     }
     composite_over_sky(&img, l.sky_mean, pov_rgb, pov_alpha);

@@ -116,7 +116,7 @@ int povray_render(const povray_job *job, povray_result *res, err_buf *err)
     argv[argc] = NULL;
 
     posix_spawn_file_actions_t fa;
-    if (posix_spawn_file_actions_init(&fa)) return err_set(err, "out of memory starting POV-Ray");
+    if (posix_spawn_file_actions_init(&fa)) return err_nomem(err, "out of memory starting POV-Ray");
     int rc = posix_spawn_file_actions_addchdir_np(&fa, job->folder);
     if (!rc) rc = posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
     if (!rc) rc = posix_spawn_file_actions_addopen(&fa, 1, job->log, O_WRONLY | O_CREAT | O_TRUNC, 0644);

@@ -113,7 +113,7 @@ int plant_map_write(const char *path, const sylva_heightfield *t, const sylva_ec
     uint32_t *count = calloc(n_species ? n_species : 1, sizeof *count);
     if (!order || !count) {
         free(order), free(count), canvas_free(&c);
-        return err_set(err, "out of memory for the map of %u plants", n_plants);
+        return err_nomem(err, "out of memory for the map of %u plants", n_plants);
     }
     for (uint32_t i = 0; i < n_plants; i++) order[i] = (plant_order){plants[i].radius, i};
     qsort(order, n_plants, sizeof *order, larger_first);

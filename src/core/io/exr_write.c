@@ -142,7 +142,7 @@ static int exr_write_part(exr_context_t ctx, exr_stream *s, const exr_frame *f,
     if (f->rgb && f->rgb_half) {
         half_rows = malloc(width * (size_t)lines_per_chunk * 3u * sizeof *half_rows);
         if (!half_rows)
-            return err_set(s->err, "%s: out of memory for a chunk of %d half-float scanlines",
+            return err_nomem(s->err, "%s: out of memory for a chunk of %d half-float scanlines",
                            s->path, (int)lines_per_chunk);
     }
     exr_encode_pipeline_t enc = EXR_ENCODE_PIPELINE_INITIALIZER;

@@ -175,7 +175,7 @@ int image_diff_heatmap_write(const char *path, const image_view *ref, const imag
     if (compare_check(ref, test, opts, err)) return -1;
     size_t n_px = (size_t)ref->width * ref->height;
     uint8_t *rgb = malloc(3 * n_px); /* owned here */
-    if (!rgb) return err_set(err, "%s: out of memory for a %ux%u heatmap", path, ref->width,
+    if (!rgb) return err_nomem(err, "%s: out of memory for a %ux%u heatmap", path, ref->width,
                              ref->height);
     int status = image_diff_heatmap(ref, test, opts, full_scale, rgb, err);
     if (!status) status = image_write_u8(path, ref->width, ref->height, 3, rgb, err);

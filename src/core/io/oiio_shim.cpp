@@ -87,7 +87,7 @@ int read_into(const char *path, image_f32 *img, err_buf *err)
     img->pixels = static_cast<float *>(std::malloc(count * sizeof(float)));
     img->channel_names = static_cast<char **>(std::calloc(spec.nchannels, sizeof(char *)));
     if (!img->pixels || !img->channel_names)
-        return err_set(err, "%s: out of memory for %zu float samples", path, count);
+        return err_nomem(err, "%s: out of memory for %zu float samples", path, count);
     img->channels = static_cast<uint32_t>(spec.nchannels);
     for (int c = 0; c < spec.nchannels; c++) {
         const std::string &name = c < static_cast<int>(spec.channelnames.size())
@@ -95,7 +95,7 @@ int read_into(const char *path, image_f32 *img, err_buf *err)
                                       : std::string();
         img->channel_names[c] = strdup(name.c_str());
         if (!img->channel_names[c])
-            return err_set(err, "%s: out of memory for the channel names", path);
+            return err_nomem(err, "%s: out of memory for the channel names", path);
     }
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img->pixels)) {
         std::string why = in->geterror();

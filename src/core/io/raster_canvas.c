@@ -15,7 +15,7 @@ int canvas_init(canvas *c, uint32_t width, uint32_t height, const uint8_t bg[3],
         return err_set(err, "a canvas of %u x %u pixels; each side must be 1 to 16384", width, height);
     size_t n = (size_t)width * height;
     c->rgb = malloc(n * 3);
-    if (!c->rgb) return err_set(err, "out of memory for a %u x %u image", width, height);
+    if (!c->rgb) return err_nomem(err, "out of memory for a %u x %u image", width, height);
     c->width = width, c->height = height;
     for (size_t i = 0; i < n; i++) memcpy(c->rgb + 3 * i, bg, 3);
     return 0;

@@ -18,7 +18,7 @@
 
 static int out_of_memory(const param_scope *s, err_buf *err)
 {
-    return err_set(err, "%s: out of memory while reading '%s'", s->file, s->where);
+    return err_nomem(err, "%s: out of memory while reading '%s'", s->file, s->where);
 }
 
 const char *param_nearest_name(const char *name, const char *const *candidates, size_t n)

@@ -59,7 +59,7 @@ static int attach(doc_builder *b, const ynode *n)
     open_collection *c = &b->stack[b->depth - 1];
     if (c->node->kind == YNODE_SEQUENCE) {
         if (grow(c, sizeof(const ynode *)))
-            return err_set(b->err, "%s: out of memory while reading", b->file);
+            return err_nomem(b->err, "%s: out of memory while reading", b->file);
         ((const ynode **)c->children)[c->n++] = n;
         return 0;
     }
@@ -74,7 +74,7 @@ static int attach(doc_builder *b, const ynode *n)
         return 0;
     }
     if (grow(c, sizeof(ynode_pair)))
-        return err_set(b->err, "%s: out of memory while reading", b->file);
+        return err_nomem(b->err, "%s: out of memory while reading", b->file);
     ynode_pair *p = &((ynode_pair *)c->children)[c->n++];
     *p = c->key;
     p->value = n;
@@ -101,7 +101,7 @@ static int check_duplicate_keys(doc_builder *b, const ynode_pair *pairs, uint32_
 {
     if (n < 2) return 0;
     const ynode_pair **sorted = malloc((size_t)n * sizeof *sorted);
-    if (!sorted) return err_set(b->err, "%s: out of memory while reading", b->file);
+    if (!sorted) return err_nomem(b->err, "%s: out of memory while reading", b->file);
     for (uint32_t i = 0; i < n; i++) sorted[i] = &pairs[i];
     qsort(sorted, n, sizeof *sorted, pair_order);
     const ynode_pair *dup = NULL, *first = NULL;
@@ -128,12 +128,12 @@ static int close_collection(doc_builder *b)
     ynode *n = c->node;
     if (n->kind == YNODE_SEQUENCE) {
         const ynode **items = arena_alloc(b->a, (size_t)c->n * sizeof *items + 1);
-        if (!items) return err_set(b->err, "%s: out of memory while reading", b->file);
+        if (!items) return err_nomem(b->err, "%s: out of memory while reading", b->file);
         if (c->n) memcpy(items, c->children, (size_t)c->n * sizeof *items);
         n->items = items, n->n_items = c->n;
     } else {
         ynode_pair *pairs = arena_alloc(b->a, (size_t)c->n * sizeof *pairs + 1);
-        if (!pairs) return err_set(b->err, "%s: out of memory while reading", b->file);
+        if (!pairs) return err_nomem(b->err, "%s: out of memory while reading", b->file);
         if (c->n) memcpy(pairs, c->children, (size_t)c->n * sizeof *pairs);
         n->pairs = pairs, n->n_pairs = c->n;
         if (check_duplicate_keys(b, pairs, c->n)) return -1;
@@ -150,7 +150,7 @@ static int open_collection_node(doc_builder *b, ynode_kind kind, yaml_mark_t at)
         return err_set(b->err, "%s:%u:%u: nesting is deeper than the limit of %d levels", b->file,
                        mark_line(at), mark_column(at), YAML_DOC_MAX_DEPTH);
     ynode *n = arena_alloc(b->a, sizeof *n);
-    if (!n) return err_set(b->err, "%s: out of memory while reading", b->file);
+    if (!n) return err_nomem(b->err, "%s: out of memory while reading", b->file);
     n->kind = kind, n->line = mark_line(at), n->column = mark_column(at);
     open_collection *c = &b->stack[b->depth++];
     memset(c, 0, sizeof *c);
@@ -172,7 +172,7 @@ static int scalar_node(doc_builder *b, const yaml_event_t *ev)
                        mark_line(ev->start_mark), mark_column(ev->start_mark));
     ynode *n = arena_alloc(b->a, sizeof *n);
     char *copy = n ? arena_strndup(b->a, text, len) : NULL;
-    if (!copy) return err_set(b->err, "%s: out of memory while reading", b->file);
+    if (!copy) return err_nomem(b->err, "%s: out of memory while reading", b->file);
     n->kind = YNODE_SCALAR;
     n->line = mark_line(ev->start_mark), n->column = mark_column(ev->start_mark);
     n->text = copy, n->text_len = len;
@@ -248,7 +248,7 @@ static void offset_position(const char *text, size_t len, size_t offset, uint32_
 static int syntax_error(doc_builder *b, const yaml_parser_t *p)
 {
     if (p->error == YAML_MEMORY_ERROR)
-        return err_set(b->err, "%s: out of memory while reading", b->file);
+        return err_nomem(b->err, "%s: out of memory while reading", b->file);
     if (p->error == YAML_READER_ERROR) {
         uint32_t line, column;
         offset_position(b->text, b->len, p->problem_offset, &line, &column);
@@ -270,14 +270,14 @@ int yaml_doc_parse(arena *a, const char *text, size_t len, const char *file_labe
     const char *file = file_label ? file_label : "(text)";
     memset(doc, 0, sizeof *doc);
     doc->file = arena_strdup(a, file);
-    if (!doc->file) return err_set(err, "%s: out of memory while reading", file);
+    if (!doc->file) return err_nomem(err, "%s: out of memory while reading", file);
     if (len > YAML_DOC_MAX_FILE_BYTES)
         return err_set(err, "%s: the file is %zu bytes, larger than the limit of %zu MiB", file,
                        len, YAML_DOC_MAX_FILE_BYTES >> 20);
 
     yaml_parser_t parser;
     if (!yaml_parser_initialize(&parser))
-        return err_set(err, "%s: out of memory while reading", file);
+        return err_nomem(err, "%s: out of memory while reading", file);
     yaml_parser_set_input_string(&parser, (const unsigned char *)text, len);
 
     doc_builder b = {.a = a, .file = doc->file, .text = text, .len = len, .err = err};
@@ -328,7 +328,8 @@ int yaml_doc_load(arena *a, const char *path, const char *file_label, yaml_doc *
     char *text = malloc(size + 1); /* owned here; freed below */
     if (!text) {
         fclose(f);
-        return unreadable(err, "%s: out of memory while reading", file);
+        err_nomem(err, "%s: out of memory while reading", file);
+        return YAML_DOC_UNREADABLE;
     }
     size_t got = fread(text, 1, size, f);
     int read_failed = ferror(f);

@@ -407,7 +407,7 @@ static plugin_registry *registry_new(err_buf *err)
     if (reg) reg->strings = arena_new();
     if (!reg || !reg->strings) {
         free(reg);
-        err_set(err, "out of memory while creating the plugin registry");
+        err_nomem(err, "out of memory while creating the plugin registry");
         return NULL;
     }
     return reg;
@@ -416,7 +416,7 @@ static plugin_registry *registry_new(err_buf *err)
 static plugin_registry *registry_out_of_memory(plugin_registry *reg, err_buf *err)
 {
     plugin_registry_free(reg);
-    err_set(err, "out of memory while scanning for plugins");
+    err_nomem(err, "out of memory while scanning for plugins");
     return NULL;
 }
 
@@ -456,7 +456,7 @@ int plugin_registry_add_file(plugin_registry *reg, const char *file, err_buf *er
         free(real);
         rc = path ? registry_load_module(reg, path) : -1;
     }
-    if (rc < 0) return err_set(err, "out of memory while loading the plugin module %s", file);
+    if (rc < 0) return err_nomem(err, "out of memory while loading the plugin module %s", file);
     if (reg->n_problems > before) return err_set(err, "%s", reg->problems[before].pub.message);
     return 0;
 }

@@ -43,7 +43,7 @@ int pov_write_mesh(pov_file *pf, const char *ident, const mesh *m, const scene *
     uint32_t *used = malloc((size_t)(s->n_materials ? s->n_materials : 1) * sizeof(uint32_t));
     if (!slot || !used) {
         free(slot), free(used);
-        return err_set(err, "out of memory writing mesh %s", ident);
+        return err_nomem(err, "out of memory writing mesh %s", ident);
     }
     for (uint32_t i = 0; i < s->n_materials; i++) slot[i] = -1;
     uint32_t n_used = 0;

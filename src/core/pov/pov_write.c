@@ -89,7 +89,7 @@ static int write_material_image(const scene *s, uint32_t i, const export_paths *
     uint32_t ch = cut ? 4 : 3;
     size_t n = (size_t)t->width * t->height;
     uint8_t *px = malloc(n * ch);
-    if (!px) return err_set(err, "out of memory for the %ux%u image of material \"%s\"", t->width, t->height, m->name);
+    if (!px) return err_nomem(err, "out of memory for the %ux%u image of material \"%s\"", t->width, t->height, m->name);
     float albedo[3] = {m->albedo.x, m->albedo.y, m->albedo.z};
     for (size_t k = 0; k < n; k++) {
         const uint8_t *src = t->rgba + k * 4;
@@ -221,7 +221,7 @@ static mesh *water_mesh_build(const scene *s, err_buf *err)
     int32_t wm = hf->water_material >= 0 ? hf->water_material : s->water_material;
     mesh *m = mesh_new();
     if (!m) {
-        err_set(err, "out of memory for the water surface");
+        err_nomem(err, "out of memory for the water surface");
         return NULL;
     }
     if (mesh_append(m, pos, NULL, uv, 4, tri, NULL, wm, 2, err)) {
@@ -354,7 +354,7 @@ static int write_plants(const scene *s, const export_paths *ep, const char *sour
     if (path_with(ep, "_plants.inc", path, err)) return -1;
     snprintf(name, sizeof name, "%s_plants.inc", ep->stem);
     char(*ident)[POV_IDENT_MAX] = malloc((size_t)(s->n_prototypes ? s->n_prototypes : 1) * POV_IDENT_MAX);
-    if (!ident) return err_set(err, "out of memory for %u prototype names", s->n_prototypes);
+    if (!ident) return err_nomem(err, "out of memory for %u prototype names", s->n_prototypes);
     for (uint32_t p = 0; p < s->n_prototypes; p++) pov_prototype_identifier(s, p, ident[p]);
     pov_file pf;
     if (pov_file_open(&pf, path, err)) {
@@ -629,7 +629,7 @@ int pov_export_species(const scene *s, uint32_t species_index, int32_t variant, 
     uint8_t *wanted_mat = calloc(s->n_materials ? s->n_materials : 1, 1);
     int rc = -1;
     if (!wanted_proto || !wanted_mat) {
-        err_set(err, "out of memory exporting species \"%s\"", sp->name);
+        err_nomem(err, "out of memory exporting species \"%s\"", sp->name);
         goto done;
     }
     uint32_t chosen = 0;

@@ -24,7 +24,7 @@ mesh *terrain_mesh_build(const sylva_heightfield *hf, int32_t fallback, err_buf 
     int32_t *mat = malloc(nt * sizeof(int32_t));
     mesh *m = mesh_new();
     if (!pos || !nrm || !uv || !tri || !mat || !m) {
-        err_set(err, "out of memory tessellating a %u x %u terrain", nx, ny);
+        err_nomem(err, "out of memory tessellating a %u x %u terrain", nx, ny);
         goto fail;
     }
     for (uint32_t j = 0; j < ny; j++)
@@ -109,7 +109,7 @@ static int add_mesh_part(accel *a, RTCScene rs, const mesh *m, int masked, geom_
     if (!n) return 0;
     g->indices = malloc((size_t)n * 3 * sizeof(uint32_t));
     g->prim_to_tri = malloc((size_t)n * sizeof(uint32_t));
-    if (!g->indices || !g->prim_to_tri) return err_set(err, "out of memory building the BVH");
+    if (!g->indices || !g->prim_to_tri) return err_nomem(err, "out of memory building the BVH");
     uint32_t k = 0;
     for (uint32_t t = 0; t < m->nt; t++)
         if (tri_is_masked(a->scene, m, t) == masked) {
@@ -208,7 +208,7 @@ int accel_build(accel *a, const scene *s, unsigned threads, err_buf *err)
     a->bounds_hi[0] = b.upper_x, a->bounds_hi[1] = b.upper_y, a->bounds_hi[2] = b.upper_z;
     return 0;
 oom:
-    err_set(err, "out of memory building the BVH");
+    err_nomem(err, "out of memory building the BVH");
 fail:
     accel_free(a);
     return -1;

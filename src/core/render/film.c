@@ -25,7 +25,7 @@ film *film_new(uint32_t w, uint32_t h, err_buf *err)
     if (!f || !f->rgb || !f->depth || !f->normal || !f->albedo || !f->instance_id || !f->species_id ||
         !f->pixel_class || !f->coverage) {
         film_free(f);
-        err_set(err, "out of memory for a %ux%u frame", w, h);
+        err_nomem(err, "out of memory for a %ux%u frame", w, h);
         return NULL;
     }
     return f;
@@ -68,7 +68,7 @@ int film_write_exr(const film *f, const char *path, err_buf *err)
 int film_write_png(const film *f, const char *path, double exposure_stops, err_buf *err)
 {
     uint8_t *px = film_tonemap(f, exposure_stops);
-    if (!px) return err_set(err, "out of memory tone-mapping the image");
+    if (!px) return err_nomem(err, "out of memory tone-mapping the image");
     int rc = image_write_u8(path, f->width, f->height, 3, px, err);
     free(px);
     return rc;

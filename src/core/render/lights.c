@@ -51,7 +51,7 @@ int lights_init(lights *l, const sun_settings *sun, const sky_settings *sky, err
             return err_set(err, "sky: turbidity %g is outside the Preetham model's range [1.7, 10]", sky->turbidity);
     }
     if (sky->model != SKY_NONE) {
-        if (sky_table_build(&l->table, 64, 128, sky_eval_cb, l)) return err_set(err, "out of memory for the sky table");
+        if (sky_table_build(&l->table, 64, 128, sky_eval_cb, l)) return err_nomem(err, "out of memory for the sky table");
         /* mean over the upper hemisphere, from the table's cells */
         double sum[3] = {0, 0, 0}, wsum = 0;
         for (uint32_t r = 0; r < l->table.nt / 2; r++) {

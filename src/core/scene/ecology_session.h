@@ -1,9 +1,10 @@
 /* ecology_session.h — a scene's ecology plugin driven year by year through its optional
  * "sylva.ecology.v1" interface (include/sylva/plugin.h), for `sylva simulate` and
- * `sylva factors`. The session sets the plugin up exactly as scene_build does (same seed, same
- * request), so a run stepped here to the scene's year holds the plants `sylva render` places.
+ * `sylva factors`. The plugin is opened through plugin_call, which writes the ecology request
+ * for scene_build too, so a run stepped here to the scene's year holds the plants
+ * `sylva render` places. Failures read as every plugin failure does (plugin_call.h).
  *
- * Ownership: a session owns the plugin's state and run, its host and the species array; it
+ * Ownership: a session owns the plugin call (state, host, species array) and the run; it
  * borrows the scene_file and the scene (built with build_options.no_ecology), which must
  * outlive it. ecology_session_free accepts NULL.
  */
@@ -11,20 +12,14 @@
 #define SYLVA_ECOLOGY_SESSION_H
 
 #include "plugin/plugin_host.h"
-#include "scene/host.h"
+#include "scene/plugin_call.h"
 #include "scene/scene_build.h"
 
 typedef struct ecology_session {
     const scene_file *sf;               /* borrowed */
-    scene *scene;                       /* borrowed */
-    const loaded_plugin *plugin;        /* the registry's */
+    plugin_call call;                   /* owned: the plugin, its state and host */
     const sylva_ecology_ext_v1 *ext;    /* the plugin's */
-    void *state;                        /* from create(), owned */
     sylva_ecology_run *run;             /* owned */
-    sylva_species_info *species;        /* owned array of sf->n_species */
-    sylva_host host;                    /* the plugin's side of the calls */
-    err_buf plugin_err;                 /* where the plugin's sentences land */
-    char context[160];
 } ecology_session;
 
 /* Starts the scene's ecology at year 0. Fails (NULL, err set) when the scene has no ecology, the
@@ -49,6 +44,6 @@ int ecology_session_plants(ecology_session *e, sylva_ecology_plant_record **out,
 
 /* Factor maps: their number and each one (values owned by the run). */
 uint32_t ecology_session_factor_count(const ecology_session *e);
-int ecology_session_factor(const ecology_session *e, uint32_t i, sylva_ecology_factor_map *out, err_buf *err);
+int ecology_session_factor(ecology_session *e, uint32_t i, sylva_ecology_factor_map *out, err_buf *err);
 
 #endif

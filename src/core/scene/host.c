@@ -46,6 +46,27 @@ static int host_error(sylva_host *h, const char *fmt, ...)
     return SYLVA_ERR_PARAM;
 }
 
+/* A host function's allocation failed: the sentence, and SYLVA_ERR_NOMEM for the plugin. */
+static int host_out_of_memory(sylva_host *h, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    err_vset(h->err, fmt, ap);
+    va_end(ap);
+    if (h->err) h->err->status = ERR_NOMEM;
+    h->error_set = h->out_of_memory = 1;
+    return SYLVA_ERR_NOMEM;
+}
+
+/* A failure of the scene's own functions passed on to the plugin: the sentence, and the
+ * plugin status its kind stands for. */
+static int host_pass_on(sylva_host *h, const err_buf *e)
+{
+    if (e->status == ERR_NOMEM) return host_out_of_memory(h, "%s", e->msg);
+    host_error(h, "%s", e->msg);
+    return e->status == ERR_LIMIT ? SYLVA_ERR_LIMIT : SYLVA_ERR_PARAM;
+}
+
 static int host_param_error(sylva_host *h, const sylva_params *p, const char *param, const char *fmt, ...)
 {
     char msg[ERR_MSG_MAX];
@@ -57,7 +78,7 @@ static int host_param_error(sylva_host *h, const sylva_params *p, const char *pa
     uint32_t line = v && v->line ? v->line : (p ? p->line : 0);
     uint32_t col = v && v->line ? v->column : (p ? p->column : 0);
     const char *file = p && p->file ? p->file : "scene";
-    err_set(h->err, "%s:%u:%u: '%s': %s", file, line, col, param ? param : "?", msg);
+    err_at(h->err, ERR_UNSTATED, file, line, col, "'%s': %s", param ? param : "?", msg);
     h->error_set = 1;
     return SYLVA_ERR_PARAM;
 }
@@ -96,11 +117,7 @@ static int host_mesh_append(sylva_host *h, sylva_mesh *m, const float *pos, cons
                 return host_error(h, "triangle %u has material id %d; valid ids are -1 to %u", t,
                                   mat[t], h->scene->n_materials - 1);
     err_buf e;
-    if (mesh_append(m, pos, nrm, uv, nv, tri, mat, -1, nt, &e)) {
-        host_error(h, "%s", e.msg);
-        return strstr(e.msg, "limit") ? SYLVA_ERR_LIMIT : SYLVA_ERR_PARAM;
-    }
-    return SYLVA_OK;
+    return mesh_append(m, pos, nrm, uv, nv, tri, mat, -1, nt, &e) ? host_pass_on(h, &e) : SYLVA_OK;
 }
 
 static uint32_t host_mesh_triangle_count(const sylva_mesh *m) { return m ? m->nt : 0; }
@@ -111,8 +128,7 @@ static int32_t host_texture_new(sylva_host *h, const char *name, uint32_t w, uin
     if (!rgba) return host_error(h, "texture_new called without texels");
     err_buf e;
     int32_t id = scene_add_texture(h->scene, name ? name : "texture", w, hh, rgba, &e);
-    if (id < 0) host_error(h, "%s", e.msg);
-    return id < 0 ? SYLVA_ERR_PARAM : id;
+    return id < 0 ? host_pass_on(h, &e) : id;
 }
 
 static int32_t host_material_new(sylva_host *h, const sylva_material_desc *d)
@@ -135,8 +151,7 @@ static int32_t host_material_new(sylva_host *h, const sylva_material_desc *d)
                                   d->name ? d->name : "?", d->albedo[k] + d->transmittance[k], k);
     err_buf e;
     int32_t id = scene_add_material(h->scene, d, &e);
-    if (id < 0) host_error(h, "%s", e.msg);
-    return id < 0 ? SYLVA_ERR_NOMEM : id;
+    return id < 0 ? host_pass_on(h, &e) : id;
 }
 
 static sylva_heightfield *host_heightfield_new(sylva_host *h, uint32_t nx, uint32_t ny, int with_material)
@@ -156,7 +171,7 @@ static sylva_heightfield *host_heightfield_new(sylva_host *h, uint32_t nx, uint3
     int32_t *mat = with_material ? malloc((size_t)nx * ny * sizeof(int32_t)) : NULL;
     if (!hf || !z || (with_material && !mat)) {
         free(hf), free(z), free(mat);
-        host_error(h, "out of memory for a %u x %u heightfield", nx, ny);
+        host_out_of_memory(h, "out of memory for a %u x %u heightfield", nx, ny);
         return NULL;
     }
     for (size_t i = 0; mat && i < (size_t)nx * ny; i++) mat[i] = -1;
@@ -193,7 +208,7 @@ static int host_plant_add(sylva_host *h, const sylva_plant *p)
     if (h->n_plants == h->cap_plants) {
         uint32_t cap = h->cap_plants ? h->cap_plants * 2 : 1024;
         sylva_plant *q = realloc(h->plants, (size_t)cap * sizeof *q);
-        if (!q) return host_error(h, "out of memory adding plant %u", h->n_plants);
+        if (!q) return host_out_of_memory(h, "out of memory adding plant %u", h->n_plants);
         h->plants = q, h->cap_plants = cap;
     }
     h->plants[h->n_plants++] = *p;
@@ -208,6 +223,7 @@ static const char *host_resolve_path(sylva_host *h, const char *rel)
     if (list) h->paths = list;
     if (!s || !list) {
         free(s);
+        host_out_of_memory(h, "out of memory resolving path '%s'", rel);
         return NULL;
     }
     if (rel[0] == '/') snprintf(s, n, "%s", rel);

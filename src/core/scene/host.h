@@ -17,6 +17,7 @@ struct sylva_host {
     const char *context;   /* e.g. "terrain plugin 'terrain_ifs'", for messages */
     err_buf *err;          /* borrowed: the plugin's failure sentence goes here */
     int error_set;         /* 1 once the plugin called error()/param_error() */
+    int out_of_memory;     /* 1 once a host function ran out of memory for the plugin */
     int verbose;           /* 1: print DEBUG logs */
     int quiet;             /* 1: no progress */
     int progress_open;

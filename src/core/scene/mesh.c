@@ -80,9 +80,9 @@ int mesh_append(mesh *m, const float *pos, const float *nrm, const float *uv, ui
                 err_buf *err)
 {
     if (nv > MESH_MAX_VERTICES - m->nv)
-        return err_set(err, "mesh would exceed %u vertices (the per-mesh limit)", MESH_MAX_VERTICES);
+        return err_fail(err, ERR_LIMIT, "mesh would exceed %u vertices (the per-mesh limit)", MESH_MAX_VERTICES);
     if (nt > MESH_MAX_TRIANGLES - m->nt)
-        return err_set(err, "mesh would exceed %u triangles (the per-mesh limit)", MESH_MAX_TRIANGLES);
+        return err_fail(err, ERR_LIMIT, "mesh would exceed %u triangles (the per-mesh limit)", MESH_MAX_TRIANGLES);
     if ((nv && !pos) || (nt && !tri)) return err_set(err, "mesh_append: positions or triangles missing");
     for (size_t i = 0; i < (size_t)nt * 3; i++)
         if (tri[i] >= nv)
@@ -91,7 +91,7 @@ int mesh_append(mesh *m, const float *pos, const float *nrm, const float *uv, ui
     for (size_t i = 0; i < (size_t)nv * 3; i++)
         if (!isfinite(pos[i])) return err_set(err, "mesh_append: vertex %zu is not finite", i / 3);
     if (grow_vertices(m, m->nv + nv) || grow_triangles(m, m->nt + nt))
-        return err_set(err, "out of memory growing a mesh to %u vertices, %u triangles",
+        return err_nomem(err, "out of memory growing a mesh to %u vertices, %u triangles",
                        m->nv + nv, m->nt + nt);
     uint32_t v0 = m->nv, t0 = m->nt;
     memcpy(m->pos + (size_t)v0 * 3, pos, (size_t)nv * 3 * sizeof(float));

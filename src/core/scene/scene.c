@@ -63,9 +63,9 @@ void scene_free(scene *s)
 int32_t scene_add_material(scene *s, const sylva_material_desc *d, err_buf *err)
 {
     if (grow((void **)&s->materials, &s->cap_materials, s->n_materials + 1, sizeof(material)))
-        return err_set(err, "out of memory adding a material");
+        return err_nomem(err, "out of memory adding a material");
     char *name = strdup(d->name ? d->name : "unnamed");
-    if (!name) return err_set(err, "out of memory adding a material");
+    if (!name) return err_nomem(err, "out of memory adding a material");
     material *m = &s->materials[s->n_materials];
     *m = (material){.name = name, .bsdf = d->bsdf == SYLVA_BSDF_LEAF ? SYLVA_BSDF_LEAF : SYLVA_BSDF_LAMBERT,
                     .albedo = v3(d->albedo[0], d->albedo[1], d->albedo[2]),
@@ -81,13 +81,13 @@ int32_t scene_add_texture(scene *s, const char *name, uint32_t w, uint32_t h, co
     if (!w || !h || w > 16384 || h > 16384)
         return err_set(err, "texture '%s' is %ux%u; sizes from 1 to 16384 are valid", name, w, h);
     if (grow((void **)&s->textures, &s->cap_textures, s->n_textures + 1, sizeof(texture)))
-        return err_set(err, "out of memory adding texture '%s'", name);
+        return err_nomem(err, "out of memory adding texture '%s'", name);
     size_t n = (size_t)w * h * 4;
     uint8_t *copy = malloc(n);
     char *nm = strdup(name ? name : "texture");
     if (!copy || !nm) {
         free(copy), free(nm);
-        return err_set(err, "out of memory adding texture '%s'", name);
+        return err_nomem(err, "out of memory adding texture '%s'", name);
     }
     memcpy(copy, rgba, n);
     int alpha = 0;
@@ -101,7 +101,7 @@ int32_t scene_add_prototype(scene *s, uint32_t sp, uint32_t variant, double age,
 {
     if (grow((void **)&s->prototypes, &s->cap_prototypes, s->n_prototypes + 1, sizeof(prototype))) {
         mesh_free(m);
-        return err_set(err, "out of memory adding a prototype");
+        return err_nomem(err, "out of memory adding a prototype");
     }
     s->prototypes[s->n_prototypes] =
         (prototype){.species = sp, .variant = variant, .age = age, .height = height, .mesh = m};
@@ -111,9 +111,9 @@ int32_t scene_add_prototype(scene *s, uint32_t sp, uint32_t variant, double age,
 int32_t scene_add_instance(scene *s, uint32_t proto, const xform3x4 *xf, err_buf *err)
 {
     if (s->n_instances >= 100000000u)
-        return err_set(err, "more than 100000000 instances (the scene limit)");
+        return err_fail(err, ERR_LIMIT, "more than 100000000 instances (the scene limit)");
     if (grow((void **)&s->instances, &s->cap_instances, s->n_instances + 1, sizeof(instance)))
-        return err_set(err, "out of memory adding instance %u", s->n_instances);
+        return err_nomem(err, "out of memory adding instance %u", s->n_instances);
     s->instances[s->n_instances] = (instance){.prototype = proto, .xf = *xf};
     return (int32_t)s->n_instances++;
 }
@@ -124,7 +124,7 @@ int32_t scene_add_object(scene *s, const char *name, mesh *m, err_buf *err)
     if (!nm || grow((void **)&s->objects, &s->cap_objects, s->n_objects + 1, sizeof(object))) {
         free(nm);
         mesh_free(m);
-        return err_set(err, "out of memory adding object '%s'", name ? name : "object");
+        return err_nomem(err, "out of memory adding object '%s'", name ? name : "object");
     }
     s->objects[s->n_objects] = (object){.name = nm, .mesh = m};
     return (int32_t)s->n_objects++;

@@ -1,7 +1,7 @@
 /* scene_build.h — from a validated scene file to a scene graph: textures and materials, the
  * terrain (inline grid or terrain plugin), each species' prototypes (tree plugin or built-in
  * shape, one per age variant), explicit plants and the ecology plugin's plants as instances,
- * and objects. Plugins run here, in that order, each through the host API. */
+ * and objects. Plugins run here, in that order, each through plugin_call.h. */
 #ifndef SYLVA_SCENE_BUILD_H
 #define SYLVA_SCENE_BUILD_H
 
@@ -19,18 +19,6 @@ typedef struct build_options {
  * scene names none. */
 scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const build_options *opt,
                    err_buf *err);
-
-/* The seed of a tree plugin's random streams for one species (by name) and variant. */
-uint64_t scene_species_seed(const scene_file *sf, const char *name, uint32_t variant);
-
-/* The seed of the ecology plugin's random streams for this scene file. */
-uint64_t scene_ecology_seed(const scene_file *sf);
-
-/* The ecology request's species array for a scene built from sf: name, the species' block under
- * the ecology's species section, and the full-grown model's height (its oldest variant).
- * Returns a calloc'ed array of sf->n_species (the caller frees it; the strings are the scene's
- * and sf's), or NULL with err set. */
-sylva_species_info *scene_ecology_species(const scene *s, const scene_file *sf, err_buf *err);
 
 /* Turns plants into instances of their species' prototypes: the variant chosen by normalised
  * age (scene_variant_for_age), scaled uniformly from that variant's height to the plant's

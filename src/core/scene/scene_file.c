@@ -69,17 +69,16 @@ static int located(err_buf *err, const char *file, uint32_t line, uint32_t colum
 static int located(err_buf *err, const char *file, uint32_t line, uint32_t column,
                    const char *fmt, ...)
 {
-    char msg[ERR_MSG_MAX];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(msg, sizeof msg, fmt, ap);
+    err_vat(err, ERR_INPUT, file, line, column, fmt, ap);
     va_end(ap);
-    return err_set(err, "%s:%u:%u: %s", file, line, column, msg);
+    return -1;
 }
 
 static int out_of_memory(loader *L)
 {
-    return err_set(L->err, "%s: out of memory while loading", L->file);
+    return err_nomem(L->err, "%s: out of memory while loading", L->file);
 }
 
 static const char *arena_printf(arena *a, const char *fmt, ...)
@@ -1011,7 +1010,7 @@ scene_file *scene_file_load(const char *path, const struct plugin_registry *plug
     scene_file *sf = a ? arena_alloc(a, sizeof *sf) : NULL;
     if (!sf || !(sf->path = arena_strdup(a, path))) {
         arena_free(a);
-        err_set(err, "%s: out of memory while loading", path);
+        err_nomem(err, "%s: out of memory while loading", path);
         return NULL;
     }
     sf->arena = a;

@@ -52,7 +52,7 @@ static int build_disk(double radius, uint32_t segments, int32_t mat, mesh *m, er
     uint32_t *tri = malloc((size_t)segments * 3 * sizeof(uint32_t));
     int rc = -1;
     if (!pos || !uv || !nrm || !tri) {
-        err_set(err, "out of memory building a disk");
+        err_nomem(err, "out of memory building a disk");
         goto done;
     }
     for (uint32_t k = 0; k < nv; k++) nrm[k * 3] = 0, nrm[k * 3 + 1] = 0, nrm[k * 3 + 2] = 1;
@@ -139,7 +139,7 @@ static int build_sphere(double radius, uint32_t level, int32_t mat, mesh *m, err
     rc = mesh_append(m, pos, NULL, uv, (uint32_t)nv, f, NULL, mat, (uint32_t)nt, err);
     goto done;
 oom:
-    err_set(err, "out of memory building a sphere with %u subdivisions", level);
+    err_nomem(err, "out of memory building a sphere with %u subdivisions", level);
 done:
     free(v), free(f), free(g), free(edge_key), free(edge_mid), free(pos), free(uv);
     return rc;
@@ -169,7 +169,7 @@ static int build_inline(const shape_spec *s, int32_t mat, mesh *m, err_buf *err)
     rc = mesh_append(m, pos, NULL, uv, nv, tri, NULL, mat, nt, err);
     goto done;
 oom:
-    err_set(err, "out of memory building an inline mesh");
+    err_nomem(err, "out of memory building an inline mesh");
 done:
     free(pos), free(uv), free(tri);
     return rc;

@@ -154,7 +154,10 @@ static int build_plugin_species(scene *s, const scene_file *sf, uint32_t i, cons
             mesh_free(m);
             break;
         }
-        if ((rc = scene_add_prototype(s, i, v, tv.age, tv.height, m, err) < 0 ? -1 : 0)) break;
+        if (scene_add_prototype(s, i, v, tv.age, tv.height, m, err) < 0) {
+            rc = -1;
+            break;
+        }
         s->species[i].n_variants++;
     }
     plugin_call_close(&c);

@@ -322,11 +322,15 @@ static int silhouette_init(box_raster *r, const lsys_turtle_stats *st)
 
 /* ---- the branch-number law's figures of the full-grown tree ---------------------------------- */
 
+typedef struct level_counts {
+    uint64_t *branches; /* recursion + 1 counts */
+    lsys_error *err;
+} level_counts;
+
 static int count_level(void *ctx, uint32_t level, const unsigned char *s, size_t n)
 {
-    uint64_t *branches = ctx;
-    branches[level] = branch_count(s, n);
-    return 0;
+    level_counts *c = ctx;
+    return branch_count(s, n, &c->branches[level], c->err);
 }
 
 static int prepare_law(tree_state *s, const sylva_host_api *api, sylva_host *host)
@@ -340,7 +344,8 @@ static int prepare_law(tree_state *s, const sylva_host_api *api, sylva_host *hos
     lsys_error e = {{0}};
     unsigned char *str = NULL; /* owned here */
     size_t n = 0;
-    int rc = lsys_derive(s->sys, s->recursion, s->max_string, count_level, s->level_branches, &str, &n, &e);
+    level_counts counts = {s->level_branches, &e};
+    int rc = lsys_derive(s->sys, s->recursion, s->max_string, count_level, &counts, &str, &n, &e);
     if (rc) return fail(api, host, rc, &e);
     s->law_dimension = s->box_dimension;
     if (!(s->law_dimension > 0)) {
@@ -517,7 +522,8 @@ static int tree_generate(void *state, const sylva_host_api *api, sylva_host *hos
     rc = interpret(s, api, host, str, n, sinks, have_raster ? 2 : 1, &st, &e);
     if (!rc) rc = lsys_mesh_finish(mesh);
     uint64_t triangles = lsys_mesh_triangles(mesh);
-    uint64_t branches = rc ? 0 : branch_count(str, n);
+    uint64_t branches = 0;
+    if (!rc) rc = branch_count(str, n, &branches, &e);
     lsys_mesh_free(mesh);
     free(mo.mat);
     free(str);

@@ -129,7 +129,7 @@ static int bench_simulation(double side, uint32_t years, unsigned threads)
                       .area = {-1, 0, 0, 0}, .max_plants = 5000000, .threads = threads};
     eco_sim *s = NULL;
     eco_random rnd = {.stream = host_stream, .uniform = api->rng_uniform, .ctx = &host};
-    eco_err fail = {0};
+    plugin_err fail = {0};
     double t0 = progress_now();
     if (eco_sim_new(&rnd, NULL, &cfg, NULL, &req, &s, &fail)) return fprintf(stderr, "bench: %s\n", fail.msg), 4;
     double t_factors = progress_now() - t0;

@@ -52,7 +52,7 @@ static void sow(eco_sim *s, uint32_t j, uint32_t p, const eco_random *rnd)
     pl->rotation = 2.0 * M_PI * rnd->uniform(&rng[ECO_RNG_ROTATION]);
 }
 
-int eco_reproduce(eco_sim *s, const eco_random *rnd, eco_err *err)
+int eco_reproduce(eco_sim *s, const eco_random *rnd, plugin_err *err)
 {
     uint64_t living = eco_sim_count(s);
     for (uint32_t j = 0; j < s->n_species; j++) {
@@ -62,10 +62,11 @@ int eco_reproduce(eco_sim *s, const eco_random *rnd, eco_err *err)
         double whole = floor(want);
         s->carry[j] = want - whole;
         if (living + whole > (double)s->config.max_plants) {
-            return eco_fail(err, SYLVA_ERR_LIMIT,
-                            "year %u: species '%s' would bring %.0f seedlings to %llu living plants, more than "
-                            "max_plants = %llu; raise max_plants or lower the species' g_s", s->year + 1,
-                            s->names[j], whole, (unsigned long long)living, (unsigned long long)s->config.max_plants);
+            return plugin_fail(err, SYLVA_ERR_LIMIT,
+                               "year %u: species '%s' would bring %.0f seedlings to %llu living plants, more than "
+                               "max_plants = %llu; raise max_plants or lower the species' g_s",
+                               s->year + 1, s->names[j], whole, (unsigned long long)living,
+                               (unsigned long long)s->config.max_plants);
         }
         uint32_t n_new = (uint32_t)whole;
         living += n_new;
@@ -75,12 +76,12 @@ int eco_reproduce(eco_sim *s, const eco_random *rnd, eco_err *err)
             if (cap > UINT32_MAX) cap = UINT32_MAX;
             eco_plant *q = realloc(pop->plants, cap * sizeof *q);
             if (!q)
-                return eco_fail(err, SYLVA_ERR_NOMEM, "out of memory for %llu plants of '%s'", (unsigned long long)cap,
-                                s->names[j]);
+                return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for %llu plants of '%s'",
+                                   (unsigned long long)cap, s->names[j]);
             pop->plants = q, pop->cap = (uint32_t)cap;
         }
         uint32_t *parents = malloc((n_new ? n_new : 1) * sizeof *parents);
-        if (!parents) return eco_fail(err, SYLVA_ERR_NOMEM, "out of memory for %u seedlings", n_new);
+        if (!parents) return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for %u seedlings", n_new);
         sylva_rng *rng = &s->rng[(size_t)j * ECO_N_STREAMS];
         /* Algorithm 7: first decide every seedling (near a parent, which one; or anywhere) ... */
         uint32_t existing = pop->n, n_near = 0, n_anywhere = 0;

@@ -48,7 +48,7 @@ uint32_t eco_sim_count(const eco_sim *s)
 /* Which of the request's species take part: `only` names them (commas or spaces between), or
  * NULL/empty for all. Fills pick (n_species entries of 0/1). */
 static int pick_species(const sylva_params *params, const char *only, const sylva_ecology_request *req,
-                        uint8_t *pick, eco_err *err)
+                        uint8_t *pick, plugin_err *err)
 {
     int any = 0;
     for (const char *c = only; c && *c; c++) any |= *c != ',' && *c != ' ';
@@ -71,12 +71,12 @@ static int pick_species(const sylva_params *params, const char *only, const sylv
             for (uint32_t i = 0; i < req->n_species; i++)
                 snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", i ? ", " : "",
                          req->species[i].name ? req->species[i].name : "?");
-            return eco_fail_param(err, params, "species", "unknown species '%.*s'; the scene's species are %s",
-                                  (int)len, c, req->n_species ? list : "none");
+            return plugin_fail_param(err, params, "species", "unknown species '%.*s'; the scene's species are %s",
+                                     (int)len, c, req->n_species ? list : "none");
         }
         if (pick[found])
-            return eco_fail_param(err, params, "species", "species '%.*s' is named twice; name each once",
-                                  (int)len, c);
+            return plugin_fail_param(err, params, "species", "species '%.*s' is named twice; name each once",
+                                     (int)len, c);
         pick[found] = 1;
         c += len;
     }
@@ -84,7 +84,7 @@ static int pick_species(const sylva_params *params, const char *only, const sylv
 }
 
 /* The growth area: the rectangle and the mask, minus water. */
-static int growth_area(eco_sim *s, const sylva_params *params, eco_err *err)
+static int growth_area(eco_sim *s, const sylva_params *params, plugin_err *err)
 {
     const eco_terrain *t = &s->terrain;
     const eco_config *c = &s->config;
@@ -92,20 +92,21 @@ static int growth_area(eco_sim *s, const sylva_params *params, eco_err *err)
     if (c->area[0] >= 0) {
         const int64_t *a = c->area;
         if (a[2] < a[0] || a[3] < a[1])
-            return eco_fail_param(err, params, "growth_area",
-                                  "growth_area [%lld, %lld, %lld, %lld] is empty; give [i0, k0, i1, k1] with "
-                                  "i0 <= i1 and k0 <= k1", (long long)a[0], (long long)a[1], (long long)a[2],
-                                  (long long)a[3]);
+            return plugin_fail_param(err, params, "growth_area",
+                                     "growth_area [%lld, %lld, %lld, %lld] is empty; give [i0, k0, i1, k1] with "
+                                     "i0 <= i1 and k0 <= k1", (long long)a[0], (long long)a[1], (long long)a[2],
+                                     (long long)a[3]);
         if (a[2] >= t->ni || a[3] >= t->nk)
-            return eco_fail_param(err, params, "growth_area",
-                                  "growth_area [%lld, %lld, %lld, %lld] reaches outside the terrain's %u x %u "
-                                  "patches; patch indices run from 0 to %u along x and 0 to %u along y",
-                                  (long long)a[0], (long long)a[1], (long long)a[2], (long long)a[3], t->ni, t->nk,
-                                  t->ni - 1, t->nk - 1);
+            return plugin_fail_param(err, params, "growth_area",
+                                     "growth_area [%lld, %lld, %lld, %lld] reaches outside the terrain's %u x %u "
+                                     "patches; patch indices run from 0 to %u along x and 0 to %u along y",
+                                     (long long)a[0], (long long)a[1], (long long)a[2], (long long)a[3], t->ni, t->nk,
+                                     t->ni - 1, t->nk - 1);
     }
     s->growable = malloc(n);
     s->growable_list = malloc(n * sizeof *s->growable_list);
-    if (!s->growable || !s->growable_list) return eco_fail(err, SYLVA_ERR_NOMEM, "out of memory for the growth area");
+    if (!s->growable || !s->growable_list)
+        return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for the growth area");
     s->n_growable = 0;
     for (uint32_t k = 0; k < t->nk; k++)
         for (uint32_t i = 0; i < t->ni; i++) {
@@ -123,9 +124,12 @@ static int growth_area(eco_sim *s, const sylva_params *params, eco_err *err)
             if (ok) s->growable_list[s->n_growable++] = (uint32_t)p;
         }
     if (!s->n_growable)
-        return eco_fail_param(err, params, c->area[0] >= 0 ? "growth_area" : c->mask ? "growth_mask" : "water_altitude",
-                              "no patch of the terrain is left where plants may grow (every patch is water or "
-                              "outside the growth area); widen the growth area or lower the water");
+        return plugin_fail_param(err, params,
+                                 c->area[0] >= 0 ? "growth_area"
+                                 : c->mask       ? "growth_mask"
+                                                 : "water_altitude",
+                                 "no patch of the terrain is left where plants may grow (every patch is water or "
+                                 "outside the growth area); widen the growth area or lower the water");
     return SYLVA_OK;
 }
 
@@ -149,15 +153,15 @@ static uint64_t sim_fingerprint(const eco_sim *s)
 }
 
 int eco_sim_new(const eco_random *rnd, const sylva_params *params, const eco_config *cfg, const char *only,
-                const sylva_ecology_request *req, eco_sim **out, eco_err *err)
+                const sylva_ecology_request *req, eco_sim **out, plugin_err *err)
 {
     *out = NULL;
-    if (!req->terrain) return eco_fail(err, SYLVA_ERR_PARAM, "the ecology request carries no terrain");
+    if (!req->terrain) return plugin_fail(err, SYLVA_ERR_PARAM, "the ecology request carries no terrain");
     eco_sim *s = calloc(1, sizeof *s);
     uint8_t *pick = calloc(req->n_species ? req->n_species : 1, 1);
     if (!s || !pick) {
         free(s), free(pick);
-        return eco_fail(err, SYLVA_ERR_NOMEM, "out of memory starting the ecology");
+        return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory starting the ecology");
     }
     s->config = *cfg;
     int rc = pick_species(params, only, req, pick, err);
@@ -175,7 +179,7 @@ int eco_sim_new(const eco_random *rnd, const sylva_params *params, const eco_con
     s->rng = calloc((size_t)ns * ECO_N_STREAMS, sizeof *s->rng);
     if (!s->species || !s->request_index || !s->names || !s->model_height || !s->p_r || !s->pop || !s->seeds ||
         !s->carry || !s->rng) {
-        rc = eco_fail(err, SYLVA_ERR_NOMEM, "out of memory for %u species", s->n_species);
+        rc = plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for %u species", s->n_species);
         goto fail;
     }
     uint32_t j = 0;
@@ -186,7 +190,7 @@ int eco_sim_new(const eco_random *rnd, const sylva_params *params, const eco_con
         const char *name = info->name ? info->name : "";
         s->request_index[j] = i;
         if (!(s->names[j] = strdup(name))) {
-            rc = eco_fail(err, SYLVA_ERR_NOMEM, "out of memory for the species' names");
+            rc = plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for the species' names");
             goto fail;
         }
         rc = eco_species_read(info->ecology, name, &s->species[j], err);
@@ -200,7 +204,7 @@ int eco_sim_new(const eco_random *rnd, const sylva_params *params, const eco_con
 
     char msg[512];
     if (eco_terrain_build(&s->terrain, req->terrain, &cfg->factors, msg, sizeof msg)) {
-        rc = eco_fail_param(err, params, "patches", "%s", msg);
+        rc = plugin_fail_param(err, params, "patches", "%s", msg);
         goto fail;
     }
     if ((rc = growth_area(s, params, err))) goto fail;
@@ -224,10 +228,10 @@ int eco_sim_new(const eco_random *rnd, const sylva_params *params, const eco_con
 fail:
     free(pick);
     eco_sim_free(s);
-    return rc ? rc : eco_fail(err, SYLVA_ERR_INTERNAL, "the ecology could not start");
+    return rc ? rc : plugin_fail(err, SYLVA_ERR_INTERNAL, "the ecology could not start");
 }
 
-int eco_sim_step(eco_sim *s, const eco_random *rnd, eco_err *err)
+int eco_sim_step(eco_sim *s, const eco_random *rnd, plugin_err *err)
 {
     int rc = eco_reproduce(s, rnd, err);
     if (rc) return rc;

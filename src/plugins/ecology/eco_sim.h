@@ -11,7 +11,7 @@
  * count.
  *
  * Failures: functions that can fail return SYLVA_OK or a negative sylva_status with the sentence
- * in an eco_err; the model never calls the host.
+ * in a plugin_err; the model never calls the host.
  *
  * Ownership: an eco_sim owns everything in it; eco_sim_free releases it (accepts NULL). It
  * keeps no pointer to the random source, the request or the error.
@@ -21,7 +21,7 @@
 
 #include <stdint.h>
 
-#include "eco_err.h"
+#include "plugin_err.h"
 #include "eco_species.h"
 #include "eco_terrain.h"
 #include "sylva/plugin.h"
@@ -125,16 +125,16 @@ typedef struct eco_sim {
  * empty: every species of the request); `params` is the plugin's block (for locating
  * messages; may be NULL). Returns SYLVA_OK or a negative status with err set. */
 int eco_sim_new(const eco_random *rnd, const sylva_params *params, const eco_config *cfg, const char *only,
-                const sylva_ecology_request *req, eco_sim **out, eco_err *err);
+                const sylva_ecology_request *req, eco_sim **out, plugin_err *err);
 void eco_sim_free(eco_sim *s);
 
 /* One year (Algorithm 9). SYLVA_ERR_LIMIT when the living plants would pass max_plants. */
-int eco_sim_step(eco_sim *s, const eco_random *rnd, eco_err *err);
+int eco_sim_step(eco_sim *s, const eco_random *rnd, plugin_err *err);
 
 /* The parts of a year, in the order eco_sim_step runs them. */
-int eco_reproduce(eco_sim *s, const eco_random *rnd, eco_err *err); /* 4.30–4.31, Alg. 7 */
+int eco_reproduce(eco_sim *s, const eco_random *rnd, plugin_err *err); /* 4.30–4.31, Alg. 7 */
 void eco_grow(eco_sim *s);                                            /* 4.32, 4.33, 4.18 */
-int eco_find_dominance(eco_sim *s, eco_err *err);                     /* Algorithm 8 */
+int eco_find_dominance(eco_sim *s, plugin_err *err);                     /* Algorithm 8 */
 void eco_remove_dead(eco_sim *s, const eco_random *rnd);              /* 4.26, p_m, env */
 
 uint32_t eco_sim_count(const eco_sim *s); /* living plants */
@@ -143,7 +143,7 @@ uint32_t eco_sim_count(const eco_sim *s); /* living plants */
  * through a new temporary file beside it (never an existing name, never through a symbolic
  * link), synced, then renamed over `path`. Failures are SYLVA_ERR_IO (or SYLVA_ERR_PARAM for a
  * state that does not fit the run, SYLVA_ERR_NOMEM) with err set. */
-int eco_sim_save(const eco_sim *s, const char *path, eco_err *err);
-int eco_sim_load(eco_sim *s, const char *path, eco_err *err);
+int eco_sim_save(const eco_sim *s, const char *path, plugin_err *err);
+int eco_sim_load(eco_sim *s, const char *path, plugin_err *err);
 
 #endif

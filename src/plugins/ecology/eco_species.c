@@ -75,7 +75,7 @@ static int given(const sylva_params *block, const char *key)
     return v && v->is_set;
 }
 
-int eco_species_read(const sylva_params *block, const char *name, eco_species *out, eco_err *err)
+int eco_species_read(const sylva_params *block, const char *name, eco_species *out, plugin_err *err)
 {
     eco_profile prof = ECO_PROFILE_GENERIC;
     if (given(block, "profile")) {
@@ -90,13 +90,13 @@ int eco_species_read(const sylva_params *block, const char *name, eco_species *o
             *(double *)((char *)out + eco_species_fields[f].offset) = sylva_param(block, eco_species_fields[f].key)->r;
     }
     if (!(out->t_m < out->t_a))
-        return eco_fail_param(err, block, given(block, "t_m") ? "t_m" : "t_a",
-                              "species '%s': t_m = %g years is not before t_a = %g years; a plant matures "
-                              "(t_m) before it stops growing (t_a), so t_m < t_a", name, out->t_m, out->t_a);
+        return plugin_fail_param(err, block, given(block, "t_m") ? "t_m" : "t_a",
+                                 "species '%s': t_m = %g years is not before t_a = %g years; a plant matures "
+                                 "(t_m) before it stops growing (t_a), so t_m < t_a", name, out->t_m, out->t_a);
     if (!(out->t_a <= out->t_f))
-        return eco_fail_param(err, block, given(block, "t_a") ? "t_a" : "t_f",
-                              "species '%s': t_a = %g years is after t_f = %g years; a plant stops growing "
-                              "(t_a) no later than it dies of age (t_f), so t_a <= t_f", name, out->t_a,
-                              out->t_f);
+        return plugin_fail_param(err, block, given(block, "t_a") ? "t_a" : "t_f",
+                                 "species '%s': t_a = %g years is after t_f = %g years; a plant stops growing "
+                                 "(t_a) no later than it dies of age (t_f), so t_a <= t_f", name, out->t_a,
+                                 out->t_f);
     return SYLVA_OK;
 }

@@ -13,7 +13,7 @@
 
 #include <stdint.h>
 
-#include "eco_err.h"
+#include "plugin_err.h"
 #include "sylva/plugin.h"
 
 /* Favourability terms of the vigour (4.20), indexed like the factor maps. The fifth, slope, has
@@ -75,6 +75,6 @@ extern const eco_species eco_profiles[ECO_N_PROFILES];
  * the block's `profile` when given, else the profile named like the species (`name`), else
  * generic. Returns SYLVA_OK, or SYLVA_ERR_PARAM with err naming the key and the rule (t_m
  * before t_a, t_a at most t_f). */
-int eco_species_read(const sylva_params *block, const char *name, eco_species *out, eco_err *err);
+int eco_species_read(const sylva_params *block, const char *name, eco_species *out, plugin_err *err);
 
 #endif

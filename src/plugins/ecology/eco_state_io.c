@@ -70,7 +70,7 @@ static void get_plant(state_file *r, eco_plant *p)
 /* Creates a new temporary file beside `path` for writing: a name no file has (O_EXCL) with a
  * random part, never opened through a symbolic link (O_NOFOLLOW), mode 0666 less the umask as
  * fopen would give. Returns the descriptor, or -1 with errno set and err filled. */
-static int create_temporary(const char *path, char *tmp, size_t n, eco_err *err)
+static int create_temporary(const char *path, char *tmp, size_t n, plugin_err *err)
 {
     static atomic_uint counter;
     for (int attempt = 0; attempt < 64; attempt++) {
@@ -78,22 +78,22 @@ static int create_temporary(const char *path, char *tmp, size_t n, eco_err *err)
         if (getentropy(&random, sizeof random)) random = (uint32_t)attempt * 0x9e3779b9u;
         unsigned c = atomic_fetch_add(&counter, 1);
         if ((size_t)snprintf(tmp, n, "%s.tmp-%ld-%u-%08x", path, (long)getpid(), c, random) >= n) {
-            eco_fail(err, SYLVA_ERR_IO, "%s: the path is too long to save the ecology state", path);
+            plugin_fail(err, SYLVA_ERR_IO, "%s: the path is too long to save the ecology state", path);
             errno = ENAMETOOLONG;
             return -1;
         }
         int fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
         if (fd >= 0 || errno != EEXIST) {
-            if (fd < 0) eco_fail(err, SYLVA_ERR_IO, "%s: cannot write the ecology state: %s", path, strerror(errno));
+            if (fd < 0) plugin_fail(err, SYLVA_ERR_IO, "%s: cannot write the ecology state: %s", path, strerror(errno));
             return fd;
         }
     }
-    eco_fail(err, SYLVA_ERR_IO, "%s: cannot write the ecology state: no free temporary name beside it", path);
+    plugin_fail(err, SYLVA_ERR_IO, "%s: cannot write the ecology state: no free temporary name beside it", path);
     errno = EEXIST;
     return -1;
 }
 
-int eco_sim_save(const eco_sim *s, const char *path, eco_err *err)
+int eco_sim_save(const eco_sim *s, const char *path, plugin_err *err)
 {
     char tmp[4096];
     int fd = create_temporary(path, tmp, sizeof tmp, err);
@@ -103,7 +103,7 @@ int eco_sim_save(const eco_sim *s, const char *path, eco_err *err)
         int e = errno;
         close(fd);
         unlink(tmp);
-        return eco_fail(err, SYLVA_ERR_IO, "%s: cannot write the ecology state: %s", path, strerror(e));
+        return plugin_fail(err, SYLVA_ERR_IO, "%s: cannot write the ecology state: %s", path, strerror(e));
     }
     state_file w = {f, 0, 0};
     uint32_t version = ECO_STATE_VERSION, order = ECO_BYTE_ORDER;
@@ -137,7 +137,7 @@ int eco_sim_save(const eco_sim *s, const char *path, eco_err *err)
     if (w.failed || e || rename(tmp, path)) {
         if (!e) e = errno;
         unlink(tmp);
-        return eco_fail(err, SYLVA_ERR_IO, "%s: cannot write the ecology state: %s", path, strerror(e ? e : EIO));
+        return plugin_fail(err, SYLVA_ERR_IO, "%s: cannot write the ecology state: %s", path, strerror(e ? e : EIO));
     }
     return SYLVA_OK;
 }
@@ -155,10 +155,10 @@ static int plant_is_valid(const eco_sim *s, const eco_plant *p)
            eco_patch_of(t, p->x, p->y) >= 0;
 }
 
-int eco_sim_load(eco_sim *s, const char *path, eco_err *err)
+int eco_sim_load(eco_sim *s, const char *path, plugin_err *err)
 {
     FILE *f = fopen(path, "rb");
-    if (!f) return eco_fail(err, SYLVA_ERR_IO, "%s: cannot read the ecology state: %s", path, strerror(errno));
+    if (!f) return plugin_fail(err, SYLVA_ERR_IO, "%s: cannot read the ecology state: %s", path, strerror(errno));
     char magic[8];
     uint32_t version = 0, order = 0;
     uint64_t fingerprint = 0;
@@ -167,18 +167,22 @@ int eco_sim_load(eco_sim *s, const char *path, eco_err *err)
     double *seeds = NULL, *carry = NULL;
     sylva_rng *rng = NULL;
     if (fread(magic, 1, 8, f) != 8 || memcmp(magic, ECO_STATE_MAGIC, 8)) {
-        rc = eco_fail(err, SYLVA_ERR_PARAM, "%s: not a sylva ecology state (it does not start with %s)", path, ECO_STATE_MAGIC);
+        rc = plugin_fail(err, SYLVA_ERR_PARAM, "%s: not a sylva ecology state (it does not start with %s)", path,
+                         ECO_STATE_MAGIC);
         goto done;
     }
     if (fread(&version, 4, 1, f) != 1 || fread(&order, 4, 1, f) != 1 || fread(&fingerprint, 8, 1, f) != 1 ||
         version != ECO_STATE_VERSION || order != ECO_BYTE_ORDER) {
-        rc = eco_fail(err, SYLVA_ERR_PARAM, "%s: an ecology state of format %u%s; this sylva reads format %u in its own byte order",
-                        path, version, order == ECO_BYTE_ORDER ? "" : " in another byte order", ECO_STATE_VERSION);
+        rc = plugin_fail(err, SYLVA_ERR_PARAM,
+                         "%s: an ecology state of format %u%s; this sylva reads format %u in its own byte order", path,
+                         version, order == ECO_BYTE_ORDER ? "" : " in another byte order", ECO_STATE_VERSION);
         goto done;
     }
     if (fingerprint != s->fingerprint) {
-        rc = eco_fail(err, SYLVA_ERR_PARAM, "%s: the state was saved from another terrain, growth area, species list or species "
-                        "parameters; continue it with the scene that saved it", path);
+        rc = plugin_fail(err, SYLVA_ERR_PARAM,
+                         "%s: the state was saved from another terrain, growth area, species list or species "
+                         "parameters; continue it with the scene that saved it",
+                         path);
         goto done;
     }
     state_file r = {f, 0xcbf29ce484222325ull, 0};
@@ -186,8 +190,9 @@ int eco_sim_load(eco_sim *s, const char *path, eco_err *err)
     get(&r, &n_species, sizeof n_species);
     get(&r, &year, sizeof year);
     if (r.failed || n_species != s->n_species) {
-        rc = eco_fail(err, SYLVA_ERR_PARAM, "%s: the state holds %u species, the scene %u; continue it with the scene that saved it",
-                        path, n_species, s->n_species);
+        rc = plugin_fail(err, SYLVA_ERR_PARAM,
+                         "%s: the state holds %u species, the scene %u; continue it with the scene that saved it", path,
+                         n_species, s->n_species);
         goto done;
     }
     uint32_t ns = n_species ? n_species : 1;
@@ -196,7 +201,7 @@ int eco_sim_load(eco_sim *s, const char *path, eco_err *err)
     carry = calloc(ns, sizeof *carry);
     rng = calloc((size_t)ns * ECO_N_STREAMS, sizeof *rng);
     if (!pop || !seeds || !carry || !rng) {
-        rc = eco_fail(err, SYLVA_ERR_NOMEM, "out of memory loading %s", path);
+        rc = plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory loading %s", path);
         goto done;
     }
     uint64_t living = 0;
@@ -213,14 +218,17 @@ int eco_sim_load(eco_sim *s, const char *path, eco_err *err)
         free(stored);
         if (r.failed) break;
         if (!same) {
-            rc = eco_fail(err, SYLVA_ERR_PARAM, "%s: species %u of the state is not the scene's '%s'; continue it with the scene "
-                            "that saved it", path, j, name);
+            rc = plugin_fail(err, SYLVA_ERR_PARAM,
+                             "%s: species %u of the state is not the scene's '%s'; continue it with the scene "
+                             "that saved it",
+                             path, j, name);
             goto done;
         }
         get(&r, &seeds[j], sizeof seeds[j]);
         get(&r, &carry[j], sizeof carry[j]);
         if (!r.failed && !(isfinite(seeds[j]) && seeds[j] >= 0 && carry[j] >= 0 && carry[j] < 1)) {
-            rc = eco_fail(err, SYLVA_ERR_PARAM, "%s: the seeds of '%s' are damaged (a value out of range)", path, name);
+            rc = plugin_fail(err, SYLVA_ERR_PARAM, "%s: the seeds of '%s' are damaged (a value out of range)", path,
+                             name);
             goto done;
         }
         for (int q = 0; q < ECO_N_STREAMS; q++) {
@@ -233,20 +241,21 @@ int eco_sim_load(eco_sim *s, const char *path, eco_err *err)
         living += n;
         if (r.failed || living > s->config.max_plants) {
             if (!r.failed)
-                rc = eco_fail(err, SYLVA_ERR_PARAM, "%s: the state holds more than max_plants = %llu living plants", path,
-                                (unsigned long long)s->config.max_plants);
+                rc = plugin_fail(err, SYLVA_ERR_PARAM, "%s: the state holds more than max_plants = %llu living plants",
+                                 path, (unsigned long long)s->config.max_plants);
             break;
         }
         pop[j].plants = malloc((n ? n : 1) * sizeof *pop[j].plants);
         if (!pop[j].plants) {
-            rc = eco_fail(err, SYLVA_ERR_NOMEM, "out of memory for the %u plants of '%s' in %s", n, name, path);
+            rc = plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for the %u plants of '%s' in %s", n, name, path);
             goto done;
         }
         pop[j].cap = n ? n : 1;
         for (uint32_t q = 0; q < n && !r.failed; q++) {
             get_plant(&r, &pop[j].plants[q]);
             if (!r.failed && !plant_is_valid(s, &pop[j].plants[q])) {
-                rc = eco_fail(err, SYLVA_ERR_PARAM, "%s: plant %u of '%s' is damaged (a value out of range)", path, q, name);
+                rc = plugin_fail(err, SYLVA_ERR_PARAM, "%s: plant %u of '%s' is damaged (a value out of range)", path,
+                                 q, name);
                 goto done;
             }
             pop[j].n = q + 1;
@@ -256,7 +265,8 @@ int eco_sim_load(eco_sim *s, const char *path, eco_err *err)
     uint64_t sum = 0;
     if (r.failed || fread(&sum, 8, 1, f) != 1 || sum != r.sum ||
         fgetc(f) != EOF) {
-        rc = eco_fail(err, SYLVA_ERR_PARAM, "%s: the ecology state is truncated or damaged (its checksum does not match)", path);
+        rc = plugin_fail(err, SYLVA_ERR_PARAM,
+                         "%s: the ecology state is truncated or damaged (its checksum does not match)", path);
         goto done;
     }
     /* Everything read and checked: the run takes it over. */

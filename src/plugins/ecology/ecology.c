@@ -1,8 +1,9 @@
 /* ecology.c — the `ecology` plugin: its descriptor, create() / generate() / destroy() and the
  * "sylva.ecology.v1" interface (a run the host steps year by year, reads plants and factor maps
  * from, saves and loads). This is the plugin's only file that calls the host: the model
- * (eco_sim.h and below) reports failures in an eco_err, which report() hands to api->error or
- * api->param_error, and draws its random numbers from an eco_random made of the host's streams.
+ * (eco_sim.h and below) reports failures in a plugin_err, which plugin_report() hands to
+ * api->error or api->param_error, and draws its random numbers from an eco_random made of the
+ * host's streams.
  *
  * generate() simulates the scene's years and adds every living plant that has grown through
  * api->plant_add: its position, a turn about the vertical, its height in metres (the normalised
@@ -15,6 +16,7 @@
 #include "eco_parallel.h"
 #include "eco_schema.h"
 #include "eco_sim.h"
+#include "plugin_host.h"
 #include "sylva/plugin.h"
 
 /* The plugin's state between create() and destroy(): the run configuration read from the
@@ -38,50 +40,31 @@ struct sylva_ecology_run {
 
 /* ---- the model's failures and random numbers, through the host ------------------------------ */
 
-/* Hands the model's failure to the host: at its key when it names one. Returns its status. */
-static int report(const sylva_host_api *api, sylva_host *host, const eco_err *err)
-{
-    if (err->param[0]) api->param_error(host, err->where, err->param, "%s", err->msg);
-    else api->error(host, "%s", err->msg);
-    return err->status ? err->status : SYLVA_ERR_INTERNAL;
-}
-
-typedef struct host_ref {
-    const sylva_host_api *api;
-    sylva_host *host;
-} host_ref;
-
-static void host_stream(void *ctx, sylva_rng *rng, const char *purpose, uint64_t index)
-{
-    host_ref *h = ctx;
-    h->api->rng_init(h->host, rng, purpose, index);
-}
-
 /* The model's random source: the host's keyed streams. */
-static eco_random host_random(host_ref *h)
+static eco_random host_random(plugin_host_ref *h)
 {
-    return (eco_random){.stream = host_stream, .uniform = h->api->rng_uniform, .ctx = h};
+    return (eco_random){.stream = plugin_host_stream, .uniform = h->api->rng_uniform, .ctx = h};
 }
 
 /* Starts a run for the plugin state and request (generate() and run_new). */
 static int run_start(const eco_plugin_state *st, const sylva_host_api *api, sylva_host *host,
                      const sylva_ecology_request *req, eco_sim **out)
 {
-    host_ref h = {api, host};
+    plugin_host_ref h = {api, host};
     eco_random rnd = host_random(&h);
-    eco_err err = {0};
+    plugin_err err = {0};
     int rc = eco_sim_new(&rnd, &st->located, &st->cfg, st->only, req, out, &err);
-    return rc ? report(api, host, &err) : SYLVA_OK;
+    return rc ? plugin_report(api, host, &err) : SYLVA_OK;
 }
 
 /* Simulates `years` more years with progress reports. */
 static int run_years(eco_sim *sim, const sylva_host_api *api, sylva_host *host, uint32_t years)
 {
-    host_ref h = {api, host};
+    plugin_host_ref h = {api, host};
     eco_random rnd = host_random(&h);
-    eco_err err = {0};
+    plugin_err err = {0};
     for (uint32_t y = 0; y < years; y++) {
-        if (eco_sim_step(sim, &rnd, &err)) return report(api, host, &err);
+        if (eco_sim_step(sim, &rnd, &err)) return plugin_report(api, host, &err);
         api->progress(host, "ecology", y + 1, years);
     }
     return SYLVA_OK;
@@ -221,7 +204,8 @@ static int run_new(void *state, const sylva_host_api *api, sylva_host *host, con
 {
     *run = NULL;
     const eco_plugin_state *st = state;
-    if (!st || !req || req->size < sizeof *req) return api->error(host, "run_new needs the plugin's state and a request");
+    if (!st || !req || req->size < sizeof *req)
+        return api->error(host, "run_new needs the plugin's state and a request");
     sylva_ecology_run *r = calloc(1, sizeof *r);
     if (!r) {
         api->error(host, "out of memory starting the ecology");
@@ -296,14 +280,14 @@ static int run_factor(const sylva_ecology_run *run, uint32_t index, sylva_ecolog
 
 static int run_save(const sylva_ecology_run *run, const sylva_host_api *api, sylva_host *host, const char *path)
 {
-    eco_err err = {0};
-    return eco_sim_save(run->sim, path, &err) ? report(api, host, &err) : SYLVA_OK;
+    plugin_err err = {0};
+    return eco_sim_save(run->sim, path, &err) ? plugin_report(api, host, &err) : SYLVA_OK;
 }
 
 static int run_load(sylva_ecology_run *run, const sylva_host_api *api, sylva_host *host, const char *path)
 {
-    eco_err err = {0};
-    return eco_sim_load(run->sim, path, &err) ? report(api, host, &err) : SYLVA_OK;
+    plugin_err err = {0};
+    return eco_sim_load(run->sim, path, &err) ? plugin_report(api, host, &err) : SYLVA_OK;
 }
 
 static const sylva_ecology_ext_v1 eco_extension_v1 = {

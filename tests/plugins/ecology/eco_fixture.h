@@ -52,7 +52,7 @@ typedef struct fixture_host {
     err_buf err;
     const sylva_host_api *api;
     eco_random rnd;  /* ctx: this fixture */
-    eco_err fail;    /* the model's last failure */
+    plugin_err fail;    /* the model's last failure */
 } fixture_host;
 
 static inline void fixture_stream(void *ctx, sylva_rng *rng, const char *purpose, uint64_t index)

@@ -1,10 +1,10 @@
-/* eco_err.c — filling the ecology model's failure report. */
-#include "eco_err.h"
+/* plugin_err.c — filling the failure report of a plugin's model. */
+#include "plugin_err.h"
 
 #include <stdarg.h>
 #include <stdio.h>
 
-int eco_fail(eco_err *e, int status, const char *fmt, ...)
+int plugin_fail(plugin_err *e, int status, const char *fmt, ...)
 {
     if (e) {
         e->status = status, e->where = NULL, e->param[0] = '\0';
@@ -16,7 +16,7 @@ int eco_fail(eco_err *e, int status, const char *fmt, ...)
     return status;
 }
 
-int eco_fail_param(eco_err *e, const sylva_params *where, const char *param, const char *fmt, ...)
+int plugin_fail_param(plugin_err *e, const sylva_params *where, const char *param, const char *fmt, ...)
 {
     if (e) {
         e->status = SYLVA_ERR_PARAM, e->where = where;

@@ -129,13 +129,12 @@ int eco_sim_save(const eco_sim *s, const char *path, plugin_err *err)
     }
     uint64_t sum = w.sum;
     if (!w.failed && fwrite(&sum, 8, 1, f) != 1) w.failed = 1;
-    errno = 0;
     /* On the disk before it takes the final name, so a crash leaves the old file or the new. */
-    if (!w.failed && (fflush(f) || fsync(fileno(f)))) w.failed = 1;
-    int e = errno;
-    if (fclose(f) && !e) e = errno;
-    if (w.failed || e || rename(tmp, path)) {
-        if (!e) e = errno;
+    int e = 0;
+    if (!w.failed && (fflush(f) || fsync(fileno(f)))) w.failed = 1, e = errno;
+    if (fclose(f) && !w.failed) w.failed = 1, e = errno;
+    if (!w.failed && rename(tmp, path)) w.failed = 1, e = errno;
+    if (w.failed) {
         unlink(tmp);
         return plugin_fail(err, SYLVA_ERR_IO, "%s: cannot write the ecology state: %s", path, strerror(e ? e : EIO));
     }

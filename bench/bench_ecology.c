@@ -102,6 +102,12 @@ static int bench_instances(uint32_t n_plants, unsigned threads)
     return 0;
 }
 
+/* The model's random source: the host's streams, as the plugin file makes it. */
+static void host_stream(void *ctx, sylva_rng *rng, const char *purpose, uint64_t index)
+{
+    host_api_table()->rng_init(ctx, rng, purpose, index);
+}
+
 static int bench_simulation(double side, uint32_t years, unsigned threads)
 {
     scene *sc = scene_new();
@@ -122,8 +128,10 @@ static int bench_simulation(double side, uint32_t years, unsigned threads)
                                   .latitude_deg = 46, .sun_samples = 9, .ambient = 0.2, .threads = threads},
                       .area = {-1, 0, 0, 0}, .max_plants = 5000000, .threads = threads};
     eco_sim *s = NULL;
+    eco_random rnd = {.stream = host_stream, .uniform = api->rng_uniform, .ctx = &host};
+    plugin_err fail = {0};
     double t0 = progress_now();
-    if (eco_sim_new(api, &host, NULL, &cfg, NULL, &req, &s)) return fprintf(stderr, "bench: %s\n", err.msg), 4;
+    if (eco_sim_new(&rnd, NULL, &cfg, NULL, &req, &s, &fail)) return fprintf(stderr, "bench: %s\n", fail.msg), 4;
     double t_factors = progress_now() - t0;
     printf("simulation: 4 species on %.0f x %.0f m, %u x %u patches of %.1f m, %u threads (factors in %.2f s)\n",
            side, side, s->terrain.ni, s->terrain.nk, s->terrain.kx, threads, t_factors);
@@ -133,7 +141,7 @@ static int bench_simulation(double side, uint32_t years, unsigned threads)
     uint32_t most = 0;
     for (uint32_t y = 1; y <= years; y++) {
         double a = progress_now();
-        if (eco_sim_step(s, api, &host)) return fprintf(stderr, "bench: %s\n", err.msg), 4;
+        if (eco_sim_step(s, &rnd, &fail)) return fprintf(stderr, "bench: %s\n", fail.msg), 4;
         double dt = progress_now() - a;
         uint32_t count = eco_sim_count(s);
         total += dt, plant_years += count, most = count > most ? count : most;

@@ -46,7 +46,7 @@ static int measure(const char *yaml, const char *path, const char *name, int run
             aono_config cfg;
             aono_skeleton s = {0};
             rc = aono_fixture_config(&fx, &cfg);
-            if (!rc) rc = aono_grow(&cfg, cfg.levels, host_api_table(), &fx.host, &s);
+            if (!rc) rc = aono_grow(&cfg, cfg.levels, &fx.env, &s, &fx.fail);
             if (!rc) out->segments = s.n, out->triangles = m->nt;
             aono_skeleton_release(&s);
             aono_config_release(&cfg);

@@ -135,7 +135,7 @@ static uint32_t cell_of(const eco_sim *s, double x, double y)
     return i + k * s->cells_i;
 }
 
-int eco_find_dominance(eco_sim *s, const sylva_host_api *api, sylva_host *host)
+int eco_find_dominance(eco_sim *s, plugin_err *err)
 {
     const eco_terrain *t = &s->terrain;
     if (!s->cells_per_patch) {
@@ -149,12 +149,13 @@ int eco_find_dominance(eco_sim *s, const sylva_host_api *api, sylva_host *host)
     if (!s->cell_start) {
         s->cell_start = malloc((n_cells + 1) * sizeof *s->cell_start);
         s->patch_r_max = malloc((size_t)t->ni * t->nk * sizeof *s->patch_r_max);
-        if (!s->cell_start || !s->patch_r_max) return api->error(host, "out of memory for the dominance grid");
+        if (!s->cell_start || !s->patch_r_max)
+            return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for the dominance grid");
     }
     if (n > s->cell_cap) {
         uint32_t cap = n + n / 2 + 1024;
         eco_cell_entry *c = realloc(s->cell, (size_t)cap * sizeof *c);
-        if (!c) return api->error(host, "out of memory for the dominance search of %u plants", n);
+        if (!c) return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for the dominance search of %u plants", n);
         s->cell = c, s->cell_cap = cap;
     }
     /* Counting sort by cell: start[c + 1] counts cell c, then prefix sums give the starts. */

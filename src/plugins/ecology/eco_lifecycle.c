@@ -28,7 +28,7 @@ void eco_grow(eco_sim *s)
     }
 }
 
-void eco_remove_dead(eco_sim *s, const sylva_host_api *api)
+void eco_remove_dead(eco_sim *s, const eco_random *rnd)
 {
     static const struct {
         int fav;
@@ -46,10 +46,10 @@ void eco_remove_dead(eco_sim *s, const sylva_host_api *api)
         for (uint32_t q = 0; q < pop->n; q++) {
             const eco_plant *pl = &pop->plants[q];
             int dead = pl->age >= pl->t_max;
-            if (!dead && pl->dominated) dead = api->rng_uniform(&rng[ECO_RNG_DEATH_DOMINANCE]) < sp->p_m;
+            if (!dead && pl->dominated) dead = rnd->uniform(&rng[ECO_RNG_DEATH_DOMINANCE]) < sp->p_m;
             for (int f = 0; f < 5 && !dead && sp->env_death > 0; f++) {
                 double c = pl->fav[env[f].fav];
-                if (c < 1) dead = api->rng_uniform(&rng[env[f].stream]) < sp->env_death * (1.0 - c);
+                if (c < 1) dead = rnd->uniform(&rng[env[f].stream]) < sp->env_death * (1.0 - c);
             }
             if (!dead) pop->plants[kept++] = *pl;
         }

@@ -32,12 +32,12 @@ static uint32_t beside(const eco_terrain *t, uint32_t p, double u)
 
 /* A seedling of species j on patch p at a random point of it (Fig. 4.19); lost in water or
  * outside the growth area. The population has room (reserved by the caller). */
-static void sow(eco_sim *s, uint32_t j, uint32_t p, const sylva_host_api *api)
+static void sow(eco_sim *s, uint32_t j, uint32_t p, const eco_random *rnd)
 {
     const eco_terrain *t = &s->terrain;
     sylva_rng *rng = &s->rng[(size_t)j * ECO_N_STREAMS];
-    double x = t->x0 + (p % t->ni + api->rng_uniform(&rng[ECO_RNG_POSITION_I])) * t->kx;
-    double y = t->y0 + (p / t->ni + api->rng_uniform(&rng[ECO_RNG_POSITION_J])) * t->ky;
+    double x = t->x0 + (p % t->ni + rnd->uniform(&rng[ECO_RNG_POSITION_I])) * t->kx;
+    double y = t->y0 + (p / t->ni + rnd->uniform(&rng[ECO_RNG_POSITION_J])) * t->ky;
     if (!s->growable[p] || eco_in_water(t, x, y)) return;
     const eco_species *sp = &s->species[j];
     eco_plant *pl = &s->pop[j].plants[s->pop[j].n++];
@@ -48,11 +48,11 @@ static void sow(eco_sim *s, uint32_t j, uint32_t p, const sylva_host_api *api)
     eco_favourabilities(sp, f, fav);
     for (int q = 0; q < 5; q++) pl->fav[q] = (float)fav[q];
     pl->v = eco_vigour(fav);
-    pl->t_max = eco_death_age(sp, api->rng_uniform(&rng[ECO_RNG_DEATH_AGE]));
-    pl->rotation = 2.0 * M_PI * api->rng_uniform(&rng[ECO_RNG_ROTATION]);
+    pl->t_max = eco_death_age(sp, rnd->uniform(&rng[ECO_RNG_DEATH_AGE]));
+    pl->rotation = 2.0 * M_PI * rnd->uniform(&rng[ECO_RNG_ROTATION]);
 }
 
-int eco_reproduce(eco_sim *s, const sylva_host_api *api, sylva_host *host)
+int eco_reproduce(eco_sim *s, const eco_random *rnd, plugin_err *err)
 {
     uint64_t living = eco_sim_count(s);
     for (uint32_t j = 0; j < s->n_species; j++) {
@@ -62,10 +62,11 @@ int eco_reproduce(eco_sim *s, const sylva_host_api *api, sylva_host *host)
         double whole = floor(want);
         s->carry[j] = want - whole;
         if (living + whole > (double)s->config.max_plants) {
-            api->error(host, "year %u: species '%s' would bring %.0f seedlings to %llu living plants, more than "
-                       "max_plants = %llu; raise max_plants or lower the species' g_s", s->year + 1, s->names[j],
-                       whole, (unsigned long long)living, (unsigned long long)s->config.max_plants);
-            return SYLVA_ERR_LIMIT;
+            return plugin_fail(err, SYLVA_ERR_LIMIT,
+                               "year %u: species '%s' would bring %.0f seedlings to %llu living plants, more than "
+                               "max_plants = %llu; raise max_plants or lower the species' g_s",
+                               s->year + 1, s->names[j], whole, (unsigned long long)living,
+                               (unsigned long long)s->config.max_plants);
         }
         uint32_t n_new = (uint32_t)whole;
         living += n_new;
@@ -74,17 +75,19 @@ int eco_reproduce(eco_sim *s, const sylva_host_api *api, sylva_host *host)
             while (cap < pop->n + (uint64_t)n_new) cap *= 2;
             if (cap > UINT32_MAX) cap = UINT32_MAX;
             eco_plant *q = realloc(pop->plants, cap * sizeof *q);
-            if (!q) return api->error(host, "out of memory for %llu plants of '%s'", (unsigned long long)cap, s->names[j]);
+            if (!q)
+                return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for %llu plants of '%s'",
+                                   (unsigned long long)cap, s->names[j]);
             pop->plants = q, pop->cap = (uint32_t)cap;
         }
         uint32_t *parents = malloc((n_new ? n_new : 1) * sizeof *parents);
-        if (!parents) return api->error(host, "out of memory for %u seedlings", n_new);
+        if (!parents) return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for %u seedlings", n_new);
         sylva_rng *rng = &s->rng[(size_t)j * ECO_N_STREAMS];
         /* Algorithm 7: first decide every seedling (near a parent, which one; or anywhere) ... */
         uint32_t existing = pop->n, n_near = 0, n_anywhere = 0;
         for (uint32_t q = 0; q < n_new; q++) {
-            if (existing && api->rng_uniform(&rng[ECO_RNG_NEAR]) < sp->p_s) {
-                uint32_t idx = (uint32_t)(api->rng_uniform(&rng[ECO_RNG_PARENT]) * existing);
+            if (existing && rnd->uniform(&rng[ECO_RNG_NEAR]) < sp->p_s) {
+                uint32_t idx = (uint32_t)(rnd->uniform(&rng[ECO_RNG_PARENT]) * existing);
                 parents[n_near++] = idx < existing ? idx : existing - 1;
             } else {
                 n_anywhere++;
@@ -93,13 +96,13 @@ int eco_reproduce(eco_sim *s, const sylva_host_api *api, sylva_host *host)
         /* ... then walk the parents once in index order ... */
         qsort(parents, n_near, sizeof *parents, by_index);
         for (uint32_t q = 0; q < n_near; q++) {
-            uint32_t p = beside(&s->terrain, pop->plants[parents[q]].patch, api->rng_uniform(&rng[ECO_RNG_SIDE]));
-            sow(s, j, p, api);
+            uint32_t p = beside(&s->terrain, pop->plants[parents[q]].patch, rnd->uniform(&rng[ECO_RNG_SIDE]));
+            sow(s, j, p, rnd);
         }
         /* ... and place the rest anywhere the plants may grow. */
         for (uint32_t q = 0; q < n_anywhere; q++) {
-            uint32_t c = (uint32_t)(api->rng_uniform(&rng[ECO_RNG_ANYWHERE]) * s->n_growable);
-            sow(s, j, s->growable_list[c < s->n_growable ? c : s->n_growable - 1], api);
+            uint32_t c = (uint32_t)(rnd->uniform(&rng[ECO_RNG_ANYWHERE]) * s->n_growable);
+            sow(s, j, s->growable_list[c < s->n_growable ? c : s->n_growable - 1], rnd);
         }
         free(parents);
     }

@@ -47,8 +47,8 @@ uint32_t eco_sim_count(const eco_sim *s)
 
 /* Which of the request's species take part: `only` names them (commas or spaces between), or
  * NULL/empty for all. Fills pick (n_species entries of 0/1). */
-static int pick_species(const sylva_host_api *api, sylva_host *host, const sylva_params *params, const char *only,
-                        const sylva_ecology_request *req, uint8_t *pick)
+static int pick_species(const sylva_params *params, const char *only, const sylva_ecology_request *req,
+                        uint8_t *pick, plugin_err *err)
 {
     int any = 0;
     for (const char *c = only; c && *c; c++) any |= *c != ',' && *c != ' ';
@@ -71,12 +71,12 @@ static int pick_species(const sylva_host_api *api, sylva_host *host, const sylva
             for (uint32_t i = 0; i < req->n_species; i++)
                 snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", i ? ", " : "",
                          req->species[i].name ? req->species[i].name : "?");
-            return api->param_error(host, params, "species", "unknown species '%.*s'; the scene's species are %s",
-                                    (int)len, c, req->n_species ? list : "none");
+            return plugin_fail_param(err, params, "species", "unknown species '%.*s'; the scene's species are %s",
+                                     (int)len, c, req->n_species ? list : "none");
         }
         if (pick[found])
-            return api->param_error(host, params, "species", "species '%.*s' is named twice; name each once",
-                                    (int)len, c);
+            return plugin_fail_param(err, params, "species", "species '%.*s' is named twice; name each once",
+                                     (int)len, c);
         pick[found] = 1;
         c += len;
     }
@@ -84,7 +84,7 @@ static int pick_species(const sylva_host_api *api, sylva_host *host, const sylva
 }
 
 /* The growth area: the rectangle and the mask, minus water. */
-static int growth_area(eco_sim *s, const sylva_host_api *api, sylva_host *host, const sylva_params *params)
+static int growth_area(eco_sim *s, const sylva_params *params, plugin_err *err)
 {
     const eco_terrain *t = &s->terrain;
     const eco_config *c = &s->config;
@@ -92,20 +92,21 @@ static int growth_area(eco_sim *s, const sylva_host_api *api, sylva_host *host, 
     if (c->area[0] >= 0) {
         const int64_t *a = c->area;
         if (a[2] < a[0] || a[3] < a[1])
-            return api->param_error(host, params, "growth_area",
-                                    "growth_area [%lld, %lld, %lld, %lld] is empty; give [i0, k0, i1, k1] with "
-                                    "i0 <= i1 and k0 <= k1", (long long)a[0], (long long)a[1], (long long)a[2],
-                                    (long long)a[3]);
+            return plugin_fail_param(err, params, "growth_area",
+                                     "growth_area [%lld, %lld, %lld, %lld] is empty; give [i0, k0, i1, k1] with "
+                                     "i0 <= i1 and k0 <= k1", (long long)a[0], (long long)a[1], (long long)a[2],
+                                     (long long)a[3]);
         if (a[2] >= t->ni || a[3] >= t->nk)
-            return api->param_error(host, params, "growth_area",
-                                    "growth_area [%lld, %lld, %lld, %lld] reaches outside the terrain's %u x %u "
-                                    "patches; patch indices run from 0 to %u along x and 0 to %u along y",
-                                    (long long)a[0], (long long)a[1], (long long)a[2], (long long)a[3], t->ni, t->nk,
-                                    t->ni - 1, t->nk - 1);
+            return plugin_fail_param(err, params, "growth_area",
+                                     "growth_area [%lld, %lld, %lld, %lld] reaches outside the terrain's %u x %u "
+                                     "patches; patch indices run from 0 to %u along x and 0 to %u along y",
+                                     (long long)a[0], (long long)a[1], (long long)a[2], (long long)a[3], t->ni, t->nk,
+                                     t->ni - 1, t->nk - 1);
     }
     s->growable = malloc(n);
     s->growable_list = malloc(n * sizeof *s->growable_list);
-    if (!s->growable || !s->growable_list) return api->error(host, "out of memory for the growth area");
+    if (!s->growable || !s->growable_list)
+        return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for the growth area");
     s->n_growable = 0;
     for (uint32_t k = 0; k < t->nk; k++)
         for (uint32_t i = 0; i < t->ni; i++) {
@@ -123,9 +124,12 @@ static int growth_area(eco_sim *s, const sylva_host_api *api, sylva_host *host, 
             if (ok) s->growable_list[s->n_growable++] = (uint32_t)p;
         }
     if (!s->n_growable)
-        return api->param_error(host, params, c->area[0] >= 0 ? "growth_area" : c->mask ? "growth_mask" : "water_altitude",
-                                "no patch of the terrain is left where plants may grow (every patch is water or "
-                                "outside the growth area); widen the growth area or lower the water");
+        return plugin_fail_param(err, params,
+                                 c->area[0] >= 0 ? "growth_area"
+                                 : c->mask       ? "growth_mask"
+                                                 : "water_altitude",
+                                 "no patch of the terrain is left where plants may grow (every patch is water or "
+                                 "outside the growth area); widen the growth area or lower the water");
     return SYLVA_OK;
 }
 
@@ -148,19 +152,19 @@ static uint64_t sim_fingerprint(const eco_sim *s)
     return h;
 }
 
-int eco_sim_new(const sylva_host_api *api, sylva_host *host, const sylva_params *params, const eco_config *cfg,
-                const char *only, const sylva_ecology_request *req, eco_sim **out)
+int eco_sim_new(const eco_random *rnd, const sylva_params *params, const eco_config *cfg, const char *only,
+                const sylva_ecology_request *req, eco_sim **out, plugin_err *err)
 {
     *out = NULL;
-    if (!req->terrain) return api->error(host, "the ecology request carries no terrain");
+    if (!req->terrain) return plugin_fail(err, SYLVA_ERR_PARAM, "the ecology request carries no terrain");
     eco_sim *s = calloc(1, sizeof *s);
     uint8_t *pick = calloc(req->n_species ? req->n_species : 1, 1);
     if (!s || !pick) {
         free(s), free(pick);
-        return api->error(host, "out of memory starting the ecology");
+        return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory starting the ecology");
     }
     s->config = *cfg;
-    int rc = pick_species(api, host, params, only, req, pick);
+    int rc = pick_species(params, only, req, pick, err);
     if (rc) goto fail;
     for (uint32_t i = 0; i < req->n_species; i++) s->n_species += pick[i];
     uint32_t ns = s->n_species ? s->n_species : 1;
@@ -175,7 +179,7 @@ int eco_sim_new(const sylva_host_api *api, sylva_host *host, const sylva_params 
     s->rng = calloc((size_t)ns * ECO_N_STREAMS, sizeof *s->rng);
     if (!s->species || !s->request_index || !s->names || !s->model_height || !s->p_r || !s->pop || !s->seeds ||
         !s->carry || !s->rng) {
-        rc = api->error(host, "out of memory for %u species", s->n_species);
+        rc = plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for %u species", s->n_species);
         goto fail;
     }
     uint32_t j = 0;
@@ -186,10 +190,10 @@ int eco_sim_new(const sylva_host_api *api, sylva_host *host, const sylva_params 
         const char *name = info->name ? info->name : "";
         s->request_index[j] = i;
         if (!(s->names[j] = strdup(name))) {
-            rc = api->error(host, "out of memory");
+            rc = plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for the species' names");
             goto fail;
         }
-        rc = eco_species_read(api, host, info->ecology, name, &s->species[j]);
+        rc = eco_species_read(info->ecology, name, &s->species[j], err);
         if (rc) goto fail;
         s->model_height[j] = info->model_height > 0 && isfinite(info->model_height) ? info->model_height : 1.0;
         if (s->species[j].t_f > max_t_f) max_t_f = s->species[j].t_f;
@@ -200,10 +204,10 @@ int eco_sim_new(const sylva_host_api *api, sylva_host *host, const sylva_params 
 
     char msg[512];
     if (eco_terrain_build(&s->terrain, req->terrain, &cfg->factors, msg, sizeof msg)) {
-        rc = api->param_error(host, params, "patches", "%s", msg);
+        rc = plugin_fail_param(err, params, "patches", "%s", msg);
         goto fail;
     }
-    if ((rc = growth_area(s, api, host, params))) goto fail;
+    if ((rc = growth_area(s, params, err))) goto fail;
     s->config.mask = NULL; /* borrowed: not kept past this call */
     s->n_opt = eco_n_opt(s->max_r_s, s->terrain.k);
 
@@ -213,8 +217,8 @@ int eco_sim_new(const sylva_host_api *api, sylva_host *host, const sylva_params 
         uint64_t name_key = fnv1a(FNV_START, s->names[j], strlen(s->names[j]));
         for (int p = 0; p < ECO_N_STREAMS; p++) {
             uint64_t seed = p < ECO_N_SEEDED_STREAMS ? cfg->stream_seeds[p] : 0;
-            api->rng_init(host, &s->rng[(size_t)j * ECO_N_STREAMS + p], eco_stream_purposes[p],
-                          name_key ^ (seed * 0x9e3779b97f4a7c15ull));
+            rnd->stream(rnd->ctx, &s->rng[(size_t)j * ECO_N_STREAMS + p], eco_stream_purposes[p],
+                        name_key ^ (seed * 0x9e3779b97f4a7c15ull));
         }
     }
     s->fingerprint = sim_fingerprint(s);
@@ -224,16 +228,16 @@ int eco_sim_new(const sylva_host_api *api, sylva_host *host, const sylva_params 
 fail:
     free(pick);
     eco_sim_free(s);
-    return rc ? rc : SYLVA_ERR_INTERNAL;
+    return rc ? rc : plugin_fail(err, SYLVA_ERR_INTERNAL, "the ecology could not start");
 }
 
-int eco_sim_step(eco_sim *s, const sylva_host_api *api, sylva_host *host)
+int eco_sim_step(eco_sim *s, const eco_random *rnd, plugin_err *err)
 {
-    int rc = eco_reproduce(s, api, host);
+    int rc = eco_reproduce(s, rnd, err);
     if (rc) return rc;
     eco_grow(s);
-    if ((rc = eco_find_dominance(s, api, host))) return rc;
-    eco_remove_dead(s, api);
+    if ((rc = eco_find_dominance(s, err))) return rc;
+    eco_remove_dead(s, rnd);
     s->year++;
     return SYLVA_OK;
 }

@@ -3,20 +3,25 @@
  * placement by Algorithm 7), grow (4.32) with power (4.18) and dominance (Algorithm 8), remove
  * the dead (age 4.26, domination p_m, unfavourable conditions).
  *
- * Randomness: fourteen streams per species from api->rng_init, one per purpose — the thirteen of
- * 004 Fig. C.16 and sylva's rotation — keyed by purpose and (stream seed, species). Every draw
+ * Randomness: fourteen streams per species from the caller's eco_random (the plugin file hands
+ * in the host's streams), one per purpose — the thirteen of 004 Fig. C.16 and sylva's
+ * rotation — keyed by purpose and (stream seed, species). Every draw
  * happens on the calling thread in a fixed order; the dominance search, the only part run on
  * worker threads, draws nothing. The same seeds therefore give the same forest for any thread
  * count.
  *
+ * Failures: functions that can fail return SYLVA_OK or a negative sylva_status with the sentence
+ * in a plugin_err; the model never calls the host.
+ *
  * Ownership: an eco_sim owns everything in it; eco_sim_free releases it (accepts NULL). It
- * keeps no pointer to the host, the API table or the request.
+ * keeps no pointer to the random source, the request or the error.
  */
 #ifndef ECO_SIM_H
 #define ECO_SIM_H
 
 #include <stdint.h>
 
+#include "plugin_err.h"
 #include "eco_species.h"
 #include "eco_terrain.h"
 #include "sylva/plugin.h"
@@ -43,6 +48,15 @@ typedef enum eco_stream {
 #define ECO_N_SEEDED_STREAMS 13 /* the thesis's; `stream_seeds` sets these */
 
 extern const char *const eco_stream_purposes[ECO_N_STREAMS];
+
+/* Where the random numbers come from: `stream` starts the stream for (purpose, index) — the
+ * host's keyed streams, so that the same scene seed gives the same numbers — and `uniform` draws
+ * the next number in [0, 1) from one. Borrowed for the duration of a call. */
+typedef struct eco_random {
+    void (*stream)(void *ctx, sylva_rng *rng, const char *purpose, uint64_t index);
+    double (*uniform)(sylva_rng *rng);
+    void *ctx;
+} eco_random;
 
 /* One plant (004 §4.6: the factors of its patch are kept with it). */
 typedef struct eco_plant {
@@ -109,24 +123,27 @@ typedef struct eco_sim {
 /* Starts a run at year 0: copies the terrain, computes the factors, reads each species block
  * and the growth area. `only` is a list of species names separated by commas or spaces (NULL or
  * empty: every species of the request); `params` is the plugin's block (for locating
- * messages). Returns SYLVA_OK or a negative status with the sentence set through api. */
-int eco_sim_new(const sylva_host_api *api, sylva_host *host, const sylva_params *params,
-                const eco_config *cfg, const char *only, const sylva_ecology_request *req, eco_sim **out);
+ * messages; may be NULL). Returns SYLVA_OK or a negative status with err set. */
+int eco_sim_new(const eco_random *rnd, const sylva_params *params, const eco_config *cfg, const char *only,
+                const sylva_ecology_request *req, eco_sim **out, plugin_err *err);
 void eco_sim_free(eco_sim *s);
 
 /* One year (Algorithm 9). SYLVA_ERR_LIMIT when the living plants would pass max_plants. */
-int eco_sim_step(eco_sim *s, const sylva_host_api *api, sylva_host *host);
+int eco_sim_step(eco_sim *s, const eco_random *rnd, plugin_err *err);
 
 /* The parts of a year, in the order eco_sim_step runs them. */
-int eco_reproduce(eco_sim *s, const sylva_host_api *api, sylva_host *host);  /* 4.30–4.31, Alg. 7 */
-void eco_grow(eco_sim *s);                                                     /* 4.32, 4.33, 4.18 */
-int eco_find_dominance(eco_sim *s, const sylva_host_api *api, sylva_host *host); /* Algorithm 8 */
-void eco_remove_dead(eco_sim *s, const sylva_host_api *api);                   /* 4.26, p_m, env */
+int eco_reproduce(eco_sim *s, const eco_random *rnd, plugin_err *err); /* 4.30–4.31, Alg. 7 */
+void eco_grow(eco_sim *s);                                            /* 4.32, 4.33, 4.18 */
+int eco_find_dominance(eco_sim *s, plugin_err *err);                     /* Algorithm 8 */
+void eco_remove_dead(eco_sim *s, const eco_random *rnd);              /* 4.26, p_m, env */
 
 uint32_t eco_sim_count(const eco_sim *s); /* living plants */
 
-/* Save and load the whole state (eco_state_io.c). */
-int eco_sim_save(const eco_sim *s, const sylva_host_api *api, sylva_host *host, const char *path);
-int eco_sim_load(eco_sim *s, const sylva_host_api *api, sylva_host *host, const char *path);
+/* Save and load the whole state (eco_state_io.c). save writes the file whole or not at all:
+ * through a new temporary file beside it (never an existing name, never through a symbolic
+ * link), synced, then renamed over `path`. Failures are SYLVA_ERR_IO (or SYLVA_ERR_PARAM for a
+ * state that does not fit the run, SYLVA_ERR_NOMEM) with err set. */
+int eco_sim_save(const eco_sim *s, const char *path, plugin_err *err);
+int eco_sim_load(eco_sim *s, const char *path, plugin_err *err);
 
 #endif

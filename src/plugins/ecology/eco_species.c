@@ -1,5 +1,5 @@
-/* eco_species.c — the species block's schema, sylva's profiles for the thesis's four species
- * (beech, maple, spruce, shrubs) and a generic one, and reading a block into an eco_species. */
+/* eco_species.c — sylva's profiles for the thesis's four species (beech, maple, spruce, shrubs)
+ * and a generic one, and reading a species block (eco_schema.h) into an eco_species. */
 #include "eco_species.h"
 
 #include <stddef.h>
@@ -16,9 +16,15 @@ const char *const eco_profile_names[ECO_N_PROFILES + 1] = {"generic", "beech", "
  * windiness are not, and lie near 0.5 and 1 on gentle terrain, hence the narrow tolerances.
  * Order of opt, tol and harm: altitude, slope (harm only: f_s), humidity, windiness, sunniness. */
 const eco_species eco_profiles[ECO_N_PROFILES] = {
-    [ECO_PROFILE_GENERIC] = {.opt = {0.5, 0, 0.5, 0.5, 0.5}, .tol = {0.3, 0, 0.3, 0.5, 0.3},
-                             .harm = {1.0, 1.0, 1.0, 1.0, 1.0}, .t_m = 20, .t_a = 60, .t_f = 150, .h_m = 0.5,
-                             .r_s = 4, .g_s = 4, .p_s = 0.8, .p_m = 0.2, .env_death = 0.1},
+    [ECO_PROFILE_GENERIC] = {.opt = {ECO_GENERIC_OPT_ALTITUDE, 0, ECO_GENERIC_OPT_HUMIDITY, ECO_GENERIC_OPT_WINDINESS,
+                                     ECO_GENERIC_OPT_SUNNINESS},
+                             .tol = {ECO_GENERIC_TOL_ALTITUDE, 0, ECO_GENERIC_TOL_HUMIDITY, ECO_GENERIC_TOL_WINDINESS,
+                                     ECO_GENERIC_TOL_SUNNINESS},
+                             .harm = {ECO_GENERIC_HARM_ALTITUDE, ECO_GENERIC_HARM_SLOPE, ECO_GENERIC_HARM_HUMIDITY,
+                                      ECO_GENERIC_HARM_WINDINESS, ECO_GENERIC_HARM_SUNNINESS},
+                             .t_m = ECO_GENERIC_T_M, .t_a = ECO_GENERIC_T_A, .t_f = ECO_GENERIC_T_F, .h_m = ECO_GENERIC_H_M,
+                             .r_s = ECO_GENERIC_R_S, .g_s = ECO_GENERIC_G_S, .p_s = ECO_GENERIC_P_S, .p_m = ECO_GENERIC_P_M,
+                             .env_death = ECO_GENERIC_ENV_DEATH},
     [ECO_PROFILE_BEECH] = {.opt = {0.45, 0, 0.1, 0.8, 0.48}, .tol = {0.2, 0, 0.3, 0.3, 0.04},
                            .harm = {3.0, 6.0, 1.0, 1.0, 6.0}, .t_m = 18, .t_a = 100, .t_f = 300, .h_m = 0.4,
                            .r_s = 6, .g_s = 12, .p_s = 0.75, .p_m = 0.2, .env_death = 0.15},
@@ -31,51 +37,6 @@ const eco_species eco_profiles[ECO_N_PROFILES] = {
     [ECO_PROFILE_SHRUB] = {.opt = {0.3, 0, 0.1, 1.0, 0.55}, .tol = {0.35, 0, 0.5, 0.5, 0.05},
                            .harm = {1.5, 1.0, 1.0, 1.0, 4.0}, .t_m = 3, .t_a = 8, .t_f = 30, .h_m = 0.6,
                            .r_s = 1.5, .g_s = 25, .p_s = 0.85, .p_m = 0.6, .env_death = 0.1},
-};
-
-#define G (eco_profiles[ECO_PROFILE_GENERIC])
-#define RANGE (SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX)
-#define POSITIVE (SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_MIN_EXCLUSIVE | SYLVA_PARAM_HAS_MAX)
-#define FACTOR_KEYS(NAME, IDX, WHAT)                                                                   \
-    {.name = NAME "_opt", .type = SYLVA_P_REAL, .flags = RANGE, .def = G.opt[IDX], .min = 0, .max = 1,    \
-     .help = "Optimal " WHAT " (normalised over the terrain, 0 to 1); default from the profile."},        \
-    {.name = NAME "_tol", .type = SYLVA_P_REAL, .flags = RANGE, .def = G.tol[IDX], .min = 0, .max = 1,    \
-     .help = "Deviation from the optimal " WHAT " that does no harm; default from the profile."},         \
-    {.name = NAME "_harm", .type = SYLVA_P_REAL, .flags = RANGE, .def = G.harm[IDX], .min = 0, .max = 100, \
-     .help = "Loss of favourability per unit of " WHAT " deviation beyond the tolerance; default from "    \
-             "the profile."}
-
-const sylva_param_spec eco_species_schema[ECO_SPECIES_KEYS] = {
-    {.name = "profile", .type = SYLVA_P_ENUM, .def_str = "generic", .choices = eco_profile_names,
-     .help = "Default values of every other key: generic, beech, maple, spruce or shrub; when not given, "
-             "the profile named like the species, else generic."},
-    FACTOR_KEYS("altitude", ECO_FAV_ALTITUDE, "altitude"),
-    FACTOR_KEYS("humidity", ECO_FAV_HUMIDITY, "humidity"),
-    FACTOR_KEYS("sunniness", ECO_FAV_SUNNINESS, "sunniness"),
-    FACTOR_KEYS("windiness", ECO_FAV_WINDINESS, "windiness"),
-    {.name = "slope_harm", .type = SYLVA_P_REAL, .flags = RANGE, .def = G.harm[ECO_FAV_SLOPE], .min = 0,
-     .max = 100, .help = "Slope harm f_s: favourability 1 - (f_s slope)^2; default from the profile."},
-    {.name = "t_m", .type = SYLVA_P_REAL, .flags = POSITIVE, .def = G.t_m, .min = 0, .max = 10000, .unit = "years",
-     .help = "Age at maturity, when the plant first seeds; default from the profile."},
-    {.name = "t_a", .type = SYLVA_P_REAL, .flags = POSITIVE, .def = G.t_a, .min = 0, .max = 10000, .unit = "years",
-     .help = "Age at which the plant stops growing (after t_m); default from the profile."},
-    {.name = "t_f", .type = SYLVA_P_REAL, .flags = POSITIVE, .def = G.t_f, .min = 0, .max = 10000, .unit = "years",
-     .help = "Greatest age a plant of the species reaches (at least t_a); default from the profile."},
-    {.name = "h_m", .type = SYLVA_P_REAL, .flags = POSITIVE, .def = G.h_m, .min = 0, .max = 1,
-     .help = "Height at maturity as a share of the full-grown height; default from the profile."},
-    {.name = "r_s", .type = SYLVA_P_REAL, .flags = POSITIVE, .def = G.r_s, .min = 0, .max = 20, .unit = "m",
-     .help = "Ecological radius of a full-grown plant (the radius is height times r_s); default from the "
-             "profile."},
-    {.name = "g_s", .type = SYLVA_P_REAL, .flags = RANGE, .def = G.g_s, .min = 0, .max = 100,
-     .help = "Reproduction factor: seedlings a year per unit of mature plants' power; default from the "
-             "profile."},
-    {.name = "p_s", .type = SYLVA_P_REAL, .flags = RANGE, .def = G.p_s, .min = 0, .max = 1,
-     .help = "Chance that a seedling lands beside a parent rather than anywhere; default from the profile."},
-    {.name = "p_m", .type = SYLVA_P_REAL, .flags = RANGE, .def = G.p_m, .min = 0, .max = 1,
-     .help = "Yearly chance that a dominated plant dies; default from the profile."},
-    {.name = "env_death", .type = SYLVA_P_REAL, .flags = RANGE, .def = G.env_death, .min = 0, .max = 1,
-     .help = "Yearly death chance for each terrain factor, times one minus that factor's favourability; "
-             "default from the profile."},
 };
 
 /* Where each key of the schema (after `profile`) goes in an eco_species. */
@@ -114,8 +75,7 @@ static int given(const sylva_params *block, const char *key)
     return v && v->is_set;
 }
 
-int eco_species_read(const sylva_host_api *api, sylva_host *host, const sylva_params *block, const char *name,
-                     eco_species *out)
+int eco_species_read(const sylva_params *block, const char *name, eco_species *out, plugin_err *err)
 {
     eco_profile prof = ECO_PROFILE_GENERIC;
     if (given(block, "profile")) {
@@ -130,13 +90,13 @@ int eco_species_read(const sylva_host_api *api, sylva_host *host, const sylva_pa
             *(double *)((char *)out + eco_species_fields[f].offset) = sylva_param(block, eco_species_fields[f].key)->r;
     }
     if (!(out->t_m < out->t_a))
-        return api->param_error(host, block, given(block, "t_m") ? "t_m" : "t_a",
-                                "species '%s': t_m = %g years is not before t_a = %g years; a plant matures "
-                                "(t_m) before it stops growing (t_a), so t_m < t_a", name, out->t_m, out->t_a);
+        return plugin_fail_param(err, block, given(block, "t_m") ? "t_m" : "t_a",
+                                 "species '%s': t_m = %g years is not before t_a = %g years; a plant matures "
+                                 "(t_m) before it stops growing (t_a), so t_m < t_a", name, out->t_m, out->t_a);
     if (!(out->t_a <= out->t_f))
-        return api->param_error(host, block, given(block, "t_a") ? "t_a" : "t_f",
-                                "species '%s': t_a = %g years is after t_f = %g years; a plant stops growing "
-                                "(t_a) no later than it dies of age (t_f), so t_a <= t_f", name, out->t_a,
-                                out->t_f);
+        return plugin_fail_param(err, block, given(block, "t_a") ? "t_a" : "t_f",
+                                 "species '%s': t_a = %g years is after t_f = %g years; a plant stops growing "
+                                 "(t_a) no later than it dies of age (t_f), so t_a <= t_f", name, out->t_a,
+                                 out->t_f);
     return SYLVA_OK;
 }

@@ -4,15 +4,16 @@
  * factor g_s, the chance p_s of seeding near a parent, the death chance p_m when dominated, and
  * sylva's environmental death rate. The thesis prints no values: the profiles are sylva's.
  *
- * The schema (eco_species_schema) is the `ecology:` block each species carries in a scene;
- * eco_species_read turns a validated block into an eco_species, taking every key the scene
- * does not give from the block's profile, and checks what the schema cannot express.
+ * eco_species_read turns a validated species `ecology:` block (eco_schema.h) into an
+ * eco_species, taking every key the scene does not give from the block's profile, and checks
+ * what the schema cannot express.
  */
 #ifndef ECO_SPECIES_H
 #define ECO_SPECIES_H
 
 #include <stdint.h>
 
+#include "plugin_err.h"
 #include "sylva/plugin.h"
 
 /* Favourability terms of the vigour (4.20), indexed like the factor maps. The fifth, slope, has
@@ -32,6 +33,31 @@ typedef struct eco_species {
     double env_death;     /* yearly death chance per fully unfavourable factor (sylva's rule) */
 } eco_species;
 
+/* The generic profile as constants: the species schema's defaults (eco_schema.c) are the same
+ * numbers, and a static initialiser may only take constants, not members of eco_profiles. */
+#define ECO_GENERIC_OPT_ALTITUDE 0.5
+#define ECO_GENERIC_OPT_HUMIDITY 0.5
+#define ECO_GENERIC_OPT_WINDINESS 0.5
+#define ECO_GENERIC_OPT_SUNNINESS 0.5
+#define ECO_GENERIC_TOL_ALTITUDE 0.3
+#define ECO_GENERIC_TOL_HUMIDITY 0.3
+#define ECO_GENERIC_TOL_WINDINESS 0.5
+#define ECO_GENERIC_TOL_SUNNINESS 0.3
+#define ECO_GENERIC_HARM_ALTITUDE 1.0
+#define ECO_GENERIC_HARM_SLOPE 1.0
+#define ECO_GENERIC_HARM_HUMIDITY 1.0
+#define ECO_GENERIC_HARM_WINDINESS 1.0
+#define ECO_GENERIC_HARM_SUNNINESS 1.0
+#define ECO_GENERIC_T_M 20
+#define ECO_GENERIC_T_A 60
+#define ECO_GENERIC_T_F 150
+#define ECO_GENERIC_H_M 0.5
+#define ECO_GENERIC_R_S 4
+#define ECO_GENERIC_G_S 4
+#define ECO_GENERIC_P_S 0.8
+#define ECO_GENERIC_P_M 0.2
+#define ECO_GENERIC_ENV_DEATH 0.1
+
 /* The profiles: default sets the `profile` key chooses. */
 typedef enum eco_profile {
     ECO_PROFILE_GENERIC = 0,
@@ -42,16 +68,13 @@ typedef enum eco_profile {
     ECO_N_PROFILES
 } eco_profile;
 
-#define ECO_SPECIES_KEYS 23 /* entries of eco_species_schema */
-extern const sylva_param_spec eco_species_schema[ECO_SPECIES_KEYS];
 extern const char *const eco_profile_names[ECO_N_PROFILES + 1]; /* NULL-terminated */
 extern const eco_species eco_profiles[ECO_N_PROFILES];
 
-/* Reads a species block validated against eco_species_schema. The profile is the block's
- * `profile` when given, else the profile named like the species (`name`), else generic.
- * Returns SYLVA_OK, or a negative status after api->param_error names the key and the rule
- * (t_m before t_a, t_a at most t_f). */
-int eco_species_read(const sylva_host_api *api, sylva_host *host, const sylva_params *block,
-                     const char *name, eco_species *out);
+/* Reads a species block validated against eco_species_schema (eco_schema.h). The profile is
+ * the block's `profile` when given, else the profile named like the species (`name`), else
+ * generic. Returns SYLVA_OK, or SYLVA_ERR_PARAM with err naming the key and the rule (t_m
+ * before t_a, t_a at most t_f). */
+int eco_species_read(const sylva_params *block, const char *name, eco_species *out, plugin_err *err);
 
 #endif

@@ -6,11 +6,14 @@
  * area, the species' names and parameters), so that a state is only ever continued on the run
  * that saved it. Layout: "SYLVAECO", format version, a byte-order mark, the fingerprint, then
  * the body, then an FNV-1a checksum of the body; numbers in the machine's byte order (the mark
- * refuses another). It is written to a temporary name and renamed into place, so a failed save
- * never leaves a half-written file.
+ * refuses another). It is written to a new temporary file beside the target (a random name
+ * created exclusively, never through a symbolic link), synced, and renamed into place, so a
+ * failed save never leaves a half-written file and a planted link redirects nothing.
  */
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -64,15 +67,43 @@ static void get_plant(state_file *r, eco_plant *p)
     get(r, &p->dominated, sizeof p->dominated);
 }
 
-int eco_sim_save(const eco_sim *s, const sylva_host_api *api, sylva_host *host, const char *path)
+/* Creates a new temporary file beside `path` for writing: a name no file has (O_EXCL) with a
+ * random part, never opened through a symbolic link (O_NOFOLLOW), mode 0666 less the umask as
+ * fopen would give. Returns the descriptor, or -1 with errno set and err filled. */
+static int create_temporary(const char *path, char *tmp, size_t n, plugin_err *err)
+{
+    static atomic_uint counter;
+    for (int attempt = 0; attempt < 64; attempt++) {
+        uint32_t random = 0;
+        if (getentropy(&random, sizeof random)) random = (uint32_t)attempt * 0x9e3779b9u;
+        unsigned c = atomic_fetch_add(&counter, 1);
+        if ((size_t)snprintf(tmp, n, "%s.tmp-%ld-%u-%08x", path, (long)getpid(), c, random) >= n) {
+            plugin_fail(err, SYLVA_ERR_IO, "%s: the path is too long to save the ecology state", path);
+            errno = ENAMETOOLONG;
+            return -1;
+        }
+        int fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+        if (fd >= 0 || errno != EEXIST) {
+            if (fd < 0) plugin_fail(err, SYLVA_ERR_IO, "%s: cannot write the ecology state: %s", path, strerror(errno));
+            return fd;
+        }
+    }
+    plugin_fail(err, SYLVA_ERR_IO, "%s: cannot write the ecology state: no free temporary name beside it", path);
+    errno = EEXIST;
+    return -1;
+}
+
+int eco_sim_save(const eco_sim *s, const char *path, plugin_err *err)
 {
     char tmp[4096];
-    if ((size_t)snprintf(tmp, sizeof tmp, "%s.tmp-%ld", path, (long)getpid()) >= sizeof tmp)
-        return api->error(host, "%s: the path is too long to save the ecology state", path);
-    FILE *f = fopen(tmp, "wb");
+    int fd = create_temporary(path, tmp, sizeof tmp, err);
+    if (fd < 0) return SYLVA_ERR_IO;
+    FILE *f = fdopen(fd, "wb");
     if (!f) {
-        api->error(host, "%s: cannot write the ecology state: %s", path, strerror(errno));
-        return SYLVA_ERR_IO;
+        int e = errno;
+        close(fd);
+        unlink(tmp);
+        return plugin_fail(err, SYLVA_ERR_IO, "%s: cannot write the ecology state: %s", path, strerror(e));
     }
     state_file w = {f, 0, 0};
     uint32_t version = ECO_STATE_VERSION, order = ECO_BYTE_ORDER;
@@ -98,12 +129,14 @@ int eco_sim_save(const eco_sim *s, const sylva_host_api *api, sylva_host *host, 
     }
     uint64_t sum = w.sum;
     if (!w.failed && fwrite(&sum, 8, 1, f) != 1) w.failed = 1;
-    int err_close = fclose(f);
-    if (w.failed || err_close || rename(tmp, path)) {
-        int e = errno;
-        remove(tmp);
-        api->error(host, "%s: cannot write the ecology state: %s", path, strerror(e ? e : EIO));
-        return SYLVA_ERR_IO;
+    /* On the disk before it takes the final name, so a crash leaves the old file or the new. */
+    int e = 0;
+    if (!w.failed && (fflush(f) || fsync(fileno(f)))) w.failed = 1, e = errno;
+    if (fclose(f) && !w.failed) w.failed = 1, e = errno;
+    if (!w.failed && rename(tmp, path)) w.failed = 1, e = errno;
+    if (w.failed) {
+        unlink(tmp);
+        return plugin_fail(err, SYLVA_ERR_IO, "%s: cannot write the ecology state: %s", path, strerror(e ? e : EIO));
     }
     return SYLVA_OK;
 }
@@ -121,13 +154,10 @@ static int plant_is_valid(const eco_sim *s, const eco_plant *p)
            eco_patch_of(t, p->x, p->y) >= 0;
 }
 
-int eco_sim_load(eco_sim *s, const sylva_host_api *api, sylva_host *host, const char *path)
+int eco_sim_load(eco_sim *s, const char *path, plugin_err *err)
 {
     FILE *f = fopen(path, "rb");
-    if (!f) {
-        api->error(host, "%s: cannot read the ecology state: %s", path, strerror(errno));
-        return SYLVA_ERR_IO;
-    }
+    if (!f) return plugin_fail(err, SYLVA_ERR_IO, "%s: cannot read the ecology state: %s", path, strerror(errno));
     char magic[8];
     uint32_t version = 0, order = 0;
     uint64_t fingerprint = 0;
@@ -136,18 +166,22 @@ int eco_sim_load(eco_sim *s, const sylva_host_api *api, sylva_host *host, const 
     double *seeds = NULL, *carry = NULL;
     sylva_rng *rng = NULL;
     if (fread(magic, 1, 8, f) != 8 || memcmp(magic, ECO_STATE_MAGIC, 8)) {
-        rc = api->error(host, "%s: not a sylva ecology state (it does not start with %s)", path, ECO_STATE_MAGIC);
+        rc = plugin_fail(err, SYLVA_ERR_PARAM, "%s: not a sylva ecology state (it does not start with %s)", path,
+                         ECO_STATE_MAGIC);
         goto done;
     }
     if (fread(&version, 4, 1, f) != 1 || fread(&order, 4, 1, f) != 1 || fread(&fingerprint, 8, 1, f) != 1 ||
         version != ECO_STATE_VERSION || order != ECO_BYTE_ORDER) {
-        rc = api->error(host, "%s: an ecology state of format %u%s; this sylva reads format %u in its own byte order",
-                        path, version, order == ECO_BYTE_ORDER ? "" : " in another byte order", ECO_STATE_VERSION);
+        rc = plugin_fail(err, SYLVA_ERR_PARAM,
+                         "%s: an ecology state of format %u%s; this sylva reads format %u in its own byte order", path,
+                         version, order == ECO_BYTE_ORDER ? "" : " in another byte order", ECO_STATE_VERSION);
         goto done;
     }
     if (fingerprint != s->fingerprint) {
-        rc = api->error(host, "%s: the state was saved from another terrain, growth area, species list or species "
-                        "parameters; continue it with the scene that saved it", path);
+        rc = plugin_fail(err, SYLVA_ERR_PARAM,
+                         "%s: the state was saved from another terrain, growth area, species list or species "
+                         "parameters; continue it with the scene that saved it",
+                         path);
         goto done;
     }
     state_file r = {f, 0xcbf29ce484222325ull, 0};
@@ -155,8 +189,9 @@ int eco_sim_load(eco_sim *s, const sylva_host_api *api, sylva_host *host, const 
     get(&r, &n_species, sizeof n_species);
     get(&r, &year, sizeof year);
     if (r.failed || n_species != s->n_species) {
-        rc = api->error(host, "%s: the state holds %u species, the scene %u; continue it with the scene that saved it",
-                        path, n_species, s->n_species);
+        rc = plugin_fail(err, SYLVA_ERR_PARAM,
+                         "%s: the state holds %u species, the scene %u; continue it with the scene that saved it", path,
+                         n_species, s->n_species);
         goto done;
     }
     uint32_t ns = n_species ? n_species : 1;
@@ -165,7 +200,7 @@ int eco_sim_load(eco_sim *s, const sylva_host_api *api, sylva_host *host, const 
     carry = calloc(ns, sizeof *carry);
     rng = calloc((size_t)ns * ECO_N_STREAMS, sizeof *rng);
     if (!pop || !seeds || !carry || !rng) {
-        rc = api->error(host, "out of memory loading %s", path);
+        rc = plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory loading %s", path);
         goto done;
     }
     uint64_t living = 0;
@@ -182,14 +217,17 @@ int eco_sim_load(eco_sim *s, const sylva_host_api *api, sylva_host *host, const 
         free(stored);
         if (r.failed) break;
         if (!same) {
-            rc = api->error(host, "%s: species %u of the state is not the scene's '%s'; continue it with the scene "
-                            "that saved it", path, j, name);
+            rc = plugin_fail(err, SYLVA_ERR_PARAM,
+                             "%s: species %u of the state is not the scene's '%s'; continue it with the scene "
+                             "that saved it",
+                             path, j, name);
             goto done;
         }
         get(&r, &seeds[j], sizeof seeds[j]);
         get(&r, &carry[j], sizeof carry[j]);
         if (!r.failed && !(isfinite(seeds[j]) && seeds[j] >= 0 && carry[j] >= 0 && carry[j] < 1)) {
-            rc = api->error(host, "%s: the seeds of '%s' are damaged (a value out of range)", path, name);
+            rc = plugin_fail(err, SYLVA_ERR_PARAM, "%s: the seeds of '%s' are damaged (a value out of range)", path,
+                             name);
             goto done;
         }
         for (int q = 0; q < ECO_N_STREAMS; q++) {
@@ -202,20 +240,21 @@ int eco_sim_load(eco_sim *s, const sylva_host_api *api, sylva_host *host, const 
         living += n;
         if (r.failed || living > s->config.max_plants) {
             if (!r.failed)
-                rc = api->error(host, "%s: the state holds more than max_plants = %llu living plants", path,
-                                (unsigned long long)s->config.max_plants);
+                rc = plugin_fail(err, SYLVA_ERR_PARAM, "%s: the state holds more than max_plants = %llu living plants",
+                                 path, (unsigned long long)s->config.max_plants);
             break;
         }
         pop[j].plants = malloc((n ? n : 1) * sizeof *pop[j].plants);
         if (!pop[j].plants) {
-            rc = api->error(host, "out of memory for the %u plants of '%s' in %s", n, name, path);
+            rc = plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for the %u plants of '%s' in %s", n, name, path);
             goto done;
         }
         pop[j].cap = n ? n : 1;
         for (uint32_t q = 0; q < n && !r.failed; q++) {
             get_plant(&r, &pop[j].plants[q]);
             if (!r.failed && !plant_is_valid(s, &pop[j].plants[q])) {
-                rc = api->error(host, "%s: plant %u of '%s' is damaged (a value out of range)", path, q, name);
+                rc = plugin_fail(err, SYLVA_ERR_PARAM, "%s: plant %u of '%s' is damaged (a value out of range)", path,
+                                 q, name);
                 goto done;
             }
             pop[j].n = q + 1;
@@ -225,7 +264,8 @@ int eco_sim_load(eco_sim *s, const sylva_host_api *api, sylva_host *host, const 
     uint64_t sum = 0;
     if (r.failed || fread(&sum, 8, 1, f) != 1 || sum != r.sum ||
         fgetc(f) != EOF) {
-        rc = api->error(host, "%s: the ecology state is truncated or damaged (its checksum does not match)", path);
+        rc = plugin_fail(err, SYLVA_ERR_PARAM,
+                         "%s: the ecology state is truncated or damaged (its checksum does not match)", path);
         goto done;
     }
     /* Everything read and checked: the run takes it over. */

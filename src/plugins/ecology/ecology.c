@@ -1,6 +1,11 @@
-/* ecology.c — the `ecology` plugin: its descriptor, the schema of the scene's `ecology:` block
- * and of each species' `ecology:` block, and create() / generate() / destroy(). generate()
- * simulates the scene's years (eco_sim.h) and adds every living plant that has grown through
+/* ecology.c — the `ecology` plugin: its descriptor, create() / generate() / destroy() and the
+ * "sylva.ecology.v1" interface (a run the host steps year by year, reads plants and factor maps
+ * from, saves and loads). This is the plugin's only file that calls the host: the model
+ * (eco_sim.h and below) reports failures in a plugin_err, which plugin_report() hands to
+ * api->error or api->param_error, and draws its random numbers from an eco_random made of the
+ * host's streams.
+ *
+ * generate() simulates the scene's years and adds every living plant that has grown through
  * api->plant_add: its position, a turn about the vertical, its height in metres (the normalised
  * height times the species' model height) and its normalised age t / t_a, which picks the
  * species' age variant. */
@@ -8,63 +13,66 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "eco_plugin.h"
-#include "eco_species.h"
 #include "eco_parallel.h"
+#include "eco_schema.h"
+#include "eco_sim.h"
+#include "plugin_host.h"
+#include "sylva/plugin.h"
 
-#define RANGE (SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX)
+/* The plugin's state between create() and destroy(): the run configuration read from the
+ * scene's `ecology:` block, and where each of its keys stands in the scene file, so that a
+ * problem found once the terrain is known (a growth area outside it) is still reported at its
+ * key. Owns every pointer in it (copies of the scene's values). */
+typedef struct eco_plugin_state {
+    eco_config cfg;         /* cfg.mask points at mask */
+    double *mask;           /* owned copy of growth_mask, or NULL */
+    char *only;             /* owned copy of `species`, or NULL */
+    char *file;             /* owned copy of the scene file's path, or NULL */
+    sylva_value *where;     /* owned: per parameter, only is_set, line and column */
+    sylva_params located;   /* the plugin's schema with `where`: for api->param_error */
+} eco_plugin_state;
 
-const sylva_param_spec eco_params[] = {
-    {.name = "years", .type = SYLVA_P_INT, .flags = RANGE, .def = 180, .min = 0, .max = 100000, .unit = "years",
-     .help = "Years of succession to simulate from bare land."},
-    {.name = "species", .type = SYLVA_P_STRING,
-     .help = "Species that take part, by name, separated by commas or spaces; empty: every species of the scene."},
-    {.name = "patches", .type = SYLVA_P_INT, .flags = RANGE, .def = 100, .min = 2, .max = 2048,
-     .help = "Patches of the factor grid along the terrain's longer side (the thesis uses 100)."},
-    {.name = "growth_area", .type = SYLVA_P_LIST, .flags = SYLVA_PARAM_HAS_MIN, .min = 0, .max_len = 4,
-     .help = "Patch rectangle [i0, k0, i1, k1] (whole numbers, inclusive, i west to east, k south to north) "
-             "where plants may grow; empty: the whole terrain."},
-    {.name = "growth_mask", .type = SYLVA_P_GRID,
-     .help = "Rows (south to north) of cells over the whole terrain; plants grow only on patches whose centre "
-             "falls in a non-zero cell."},
-    {.name = "water_altitude", .type = SYLVA_P_REAL, .flags = RANGE, .def = 0, .min = 0, .max = 1,
-     .help = "Normalised altitude below which patches are water (0: only the terrain's own water surface)."},
-    {.name = "rain", .type = SYLVA_P_REAL, .flags = RANGE, .def = 1, .min = 0, .max = 1000,
-     .help = "Precipitation every patch receives, m_climate."},
-    {.name = "water_humidity", .type = SYLVA_P_REAL, .flags = RANGE, .def = 10, .min = 0, .max = 1000000,
-     .help = "Humidity added to water patches, m_w."},
-    {.name = "runoff", .type = SYLVA_P_REAL, .flags = RANGE, .def = 1, .min = 0, .max = 1,
-     .help = "Runoff strength k_m: share of a patch's water times its slope that flows to lower patches."},
-    {.name = "humidity_blur", .type = SYLVA_P_INT, .flags = RANGE, .def = 10, .min = 0, .max = 1000,
-     .help = "Passes of the 5-point average over the humidity, N_mblur."},
-    {.name = "wind_azimuth", .type = SYLVA_P_REAL, .flags = RANGE, .def = 270, .min = -360, .max = 360,
-     .unit = "deg", .help = "Direction the wind comes from, clockwise from north (270: from the west)."},
-    {.name = "wind_samples", .type = SYLVA_P_INT, .flags = RANGE, .def = 10, .min = 1, .max = 1000,
-     .help = "Patches marched upwind to find a patch's shelter, N_w."},
-    {.name = "shelter_angle", .type = SYLVA_P_REAL,
-     .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_MIN_EXCLUSIVE | SYLVA_PARAM_HAS_MAX, .def = 45, .min = 0, .max = 90,
-     .unit = "deg", .help = "Shelter angle at which a patch is out of the wind entirely, Theta_0."},
-    {.name = "latitude", .type = SYLVA_P_REAL, .flags = RANGE, .def = 46, .min = -80, .max = 80, .unit = "deg",
-     .help = "Latitude of the terrain (north positive); sets the summer sun's path."},
-    {.name = "sun_samples", .type = SYLVA_P_INT, .flags = RANGE, .def = 9, .min = 3, .max = 101,
-     .help = "Sun positions along the day, an odd number, N_l."},
-    {.name = "ambient", .type = SYLVA_P_REAL,
-     .flags = RANGE | SYLVA_PARAM_MIN_EXCLUSIVE | SYLVA_PARAM_MAX_EXCLUSIVE, .def = 0.2, .min = 0, .max = 1,
-     .help = "Share of the light a patch gets in shadow or facing away from the sun, l_ambient."},
-    {.name = "stream_seeds", .type = SYLVA_P_LIST, .flags = RANGE, .min = 0, .max = 9007199254740992.0,
-     .max_len = 13,
-     .help = "Seeds of the 13 random streams (near, parent, side, anywhere, position i, position j, death by "
-             "dominance, altitude, humidity, sunniness, windiness, slope, death age); empty: all 0."},
-    {.name = "min_height", .type = SYLVA_P_REAL, .flags = RANGE, .def = 0.5, .min = 0, .max = 1000, .unit = "m",
-     .help = "Plants shorter than this are left out of the scene (they still live in the simulation)."},
-    {.name = "max_plants", .type = SYLVA_P_INT, .flags = RANGE, .def = 5000000, .min = 1, .max = 100000000,
-     .help = "Most living plants the simulation may hold; more is an error."},
-    {.name = "threads", .type = SYLVA_P_INT, .flags = RANGE, .def = 0, .min = 0, .max = 256,
-     .help = "Worker threads (0: one per processor); the forest does not depend on it."},
+/* A run of the "sylva.ecology.v1" interface. */
+struct sylva_ecology_run {
+    eco_sim *sim;          /* owned */
+    uint32_t years_wanted; /* the scene's `years` */
 };
-const uint32_t eco_params_count = sizeof eco_params / sizeof eco_params[0];
 
-void eco_destroy(void *state)
+/* ---- the model's failures and random numbers, through the host ------------------------------ */
+
+/* The model's random source: the host's keyed streams. */
+static eco_random host_random(plugin_host_ref *h)
+{
+    return (eco_random){.stream = plugin_host_stream, .uniform = h->api->rng_uniform, .ctx = h};
+}
+
+/* Starts a run for the plugin state and request (generate() and run_new). */
+static int run_start(const eco_plugin_state *st, const sylva_host_api *api, sylva_host *host,
+                     const sylva_ecology_request *req, eco_sim **out)
+{
+    plugin_host_ref h = {api, host};
+    eco_random rnd = host_random(&h);
+    plugin_err err = {0};
+    int rc = eco_sim_new(&rnd, &st->located, &st->cfg, st->only, req, out, &err);
+    return rc ? plugin_report(api, host, &err) : SYLVA_OK;
+}
+
+/* Simulates `years` more years with progress reports. */
+static int run_years(eco_sim *sim, const sylva_host_api *api, sylva_host *host, uint32_t years)
+{
+    plugin_host_ref h = {api, host};
+    eco_random rnd = host_random(&h);
+    plugin_err err = {0};
+    for (uint32_t y = 0; y < years; y++) {
+        if (eco_sim_step(sim, &rnd, &err)) return plugin_report(api, host, &err);
+        api->progress(host, "ecology", y + 1, years);
+    }
+    return SYLVA_OK;
+}
+
+/* ---- create, generate, destroy --------------------------------------------------------------- */
+
+static void eco_destroy(void *state)
 {
     eco_plugin_state *st = state;
     if (!st) return;
@@ -87,11 +95,14 @@ static int whole_numbers(const sylva_host_api *api, sylva_host *host, const sylv
     return SYLVA_OK;
 }
 
-int eco_create(const sylva_host_api *api, sylva_host *host, const sylva_params *params, void **state)
+static int eco_create(const sylva_host_api *api, sylva_host *host, const sylva_params *params, void **state)
 {
     *state = NULL;
     eco_plugin_state *st = calloc(1, sizeof *st);
-    if (!st) return api->error(host, "out of memory");
+    if (!st) {
+        api->error(host, "out of memory reading the ecology parameters");
+        return SYLVA_ERR_NOMEM;
+    }
     eco_config *c = &st->cfg;
     eco_factor_params *f = &c->factors;
     f->patches = (uint32_t)sylva_param_int(params, "patches");
@@ -147,13 +158,14 @@ int eco_create(const sylva_host_api *api, sylva_host *host, const sylva_params *
     *state = st;
     return SYLVA_OK;
 nomem:
-    rc = api->error(host, "out of memory reading the ecology parameters");
+    api->error(host, "out of memory reading the ecology parameters");
+    rc = SYLVA_ERR_NOMEM;
 fail:
     eco_destroy(st);
     return rc;
 }
 
-int eco_generate(void *state, const sylva_host_api *api, sylva_host *host, const void *request, void *out)
+static int eco_generate(void *state, const sylva_host_api *api, sylva_host *host, const void *request, void *out)
 {
     const eco_plugin_state *st = state;
     const sylva_ecology_request *req = request;
@@ -162,9 +174,9 @@ int eco_generate(void *state, const sylva_host_api *api, sylva_host *host, const
         return api->error(host, "the ecology request or output is smaller than this plugin expects");
     o->n_plants = 0;
     eco_sim *sim = NULL;
-    int rc = eco_run_start(st, api, host, req, &sim);
+    int rc = run_start(st, api, host, req, &sim);
     if (rc) return rc;
-    if ((rc = eco_run_years(sim, api, host, st->cfg.years))) goto done;
+    if ((rc = run_years(sim, api, host, st->cfg.years))) goto done;
     for (uint32_t j = 0; j < sim->n_species; j++) {
         const eco_species *sp = &sim->species[j];
         for (uint32_t q = 0; q < sim->pop[j].n; q++) {
@@ -185,12 +197,120 @@ done:
     return rc;
 }
 
+/* ---- the "sylva.ecology.v1" interface ------------------------------------------------------ */
+
+static int run_new(void *state, const sylva_host_api *api, sylva_host *host, const sylva_ecology_request *req,
+                   sylva_ecology_run **run)
+{
+    *run = NULL;
+    const eco_plugin_state *st = state;
+    if (!st || !req || req->size < sizeof *req)
+        return api->error(host, "run_new needs the plugin's state and a request");
+    sylva_ecology_run *r = calloc(1, sizeof *r);
+    if (!r) {
+        api->error(host, "out of memory starting the ecology");
+        return SYLVA_ERR_NOMEM;
+    }
+    int rc = run_start(st, api, host, req, &r->sim);
+    if (rc) {
+        free(r);
+        return rc;
+    }
+    r->years_wanted = st->cfg.years;
+    *run = r;
+    return SYLVA_OK;
+}
+
+static void run_free(sylva_ecology_run *run)
+{
+    if (!run) return;
+    eco_sim_free(run->sim);
+    free(run);
+}
+
+static uint32_t run_years_wanted(const sylva_ecology_run *run) { return run->years_wanted; }
+static uint32_t run_year(const sylva_ecology_run *run) { return run->sim->year; }
+
+static int run_step(sylva_ecology_run *run, const sylva_host_api *api, sylva_host *host, uint32_t years)
+{
+    return run_years(run->sim, api, host, years);
+}
+
+static uint32_t run_plant_count(const sylva_ecology_run *run, uint32_t species)
+{
+    const eco_sim *s = run->sim;
+    if (species == SYLVA_ECOLOGY_ALL_SPECIES) return eco_sim_count(s);
+    for (uint32_t j = 0; j < s->n_species; j++)
+        if (s->request_index[j] == species) return s->pop[j].n;
+    return 0;
+}
+
+static int run_plants(const sylva_ecology_run *run, const sylva_host_api *api, sylva_host *host, uint32_t first,
+                      uint32_t count, sylva_ecology_plant_record *out)
+{
+    const eco_sim *s = run->sim;
+    uint32_t total = eco_sim_count(s);
+    if (first > total || count > total - first)
+        return api->error(host, "plants %u to %u asked for; the run holds %u", first, first + count, total);
+    uint32_t j = 0, q = first;
+    while (j < s->n_species && q >= s->pop[j].n) q -= s->pop[j].n, j++;
+    for (uint32_t c = 0; c < count; c++) {
+        while (q >= s->pop[j].n) q = 0, j++;
+        const eco_plant *pl = &s->pop[j].plants[q++];
+        out[c] = (sylva_ecology_plant_record){.species = s->request_index[j], .position = {pl->x, pl->y, pl->z},
+                                              .age = pl->age, .height = pl->h * s->model_height[j], .radius = pl->r,
+                                              .vigour = pl->v};
+    }
+    return SYLVA_OK;
+}
+
+/* The five factors, then the water patches. */
+static uint32_t run_factor_count(const sylva_ecology_run *run) { return ECO_N_FACTORS + 1; }
+
+static int run_factor(const sylva_ecology_run *run, uint32_t index, sylva_ecology_factor_map *out)
+{
+    if (index > ECO_N_FACTORS) return SYLVA_ERR_PARAM;
+    const eco_terrain *t = &run->sim->terrain;
+    int water = index == ECO_N_FACTORS;
+    *out = (sylva_ecology_factor_map){.name = water ? "water" : eco_factor_names[index], .nx = t->ni, .ny = t->nk,
+                                      .x0 = t->x0, .y0 = t->y0, .dx = t->kx, .dy = t->ky,
+                                      .values = water ? t->water_map : t->factor[index]};
+    return SYLVA_OK;
+}
+
+static int run_save(const sylva_ecology_run *run, const sylva_host_api *api, sylva_host *host, const char *path)
+{
+    plugin_err err = {0};
+    return eco_sim_save(run->sim, path, &err) ? plugin_report(api, host, &err) : SYLVA_OK;
+}
+
+static int run_load(sylva_ecology_run *run, const sylva_host_api *api, sylva_host *host, const char *path)
+{
+    plugin_err err = {0};
+    return eco_sim_load(run->sim, path, &err) ? plugin_report(api, host, &err) : SYLVA_OK;
+}
+
+static const sylva_ecology_ext_v1 eco_extension_v1 = {
+    .size = sizeof(sylva_ecology_ext_v1),
+    .run_new = run_new,
+    .run_free = run_free,
+    .years_wanted = run_years_wanted,
+    .year = run_year,
+    .step = run_step,
+    .plant_count = run_plant_count,
+    .plants = run_plants,
+    .factor_count = run_factor_count,
+    .factor = run_factor,
+    .save = run_save,
+    .load = run_load,
+};
+
 static const void *eco_extension(const char *id)
 {
     return id && !strcmp(id, SYLVA_ECOLOGY_EXT_V1) ? &eco_extension_v1 : NULL;
 }
 
-const sylva_plugin eco_descriptor = {
+static const sylva_plugin eco_descriptor = {
     .size = sizeof(sylva_plugin),
     .abi_major = SYLVA_ABI_MAJOR,
     .abi_minor = SYLVA_ABI_MINOR,
@@ -200,7 +320,7 @@ const sylva_plugin eco_descriptor = {
     .summary = "Forest succession on the terrain by terrain factors, competition and seeding (Zamuda 2006).",
     .version = "1.0",
     .params = eco_params,
-    .n_params = sizeof eco_params / sizeof eco_params[0],
+    .n_params = ECO_PARAMS,
     .species_section = "ecology",
     .species_params = eco_species_schema,
     .n_species_params = ECO_SPECIES_KEYS,
@@ -209,3 +329,8 @@ const sylva_plugin eco_descriptor = {
     .destroy = eco_destroy,
     .extension = eco_extension,
 };
+
+SYLVA_EXPORT const sylva_plugin *sylva_plugin_get(uint32_t index)
+{
+    return index == 0 ? &eco_descriptor : (const sylva_plugin *)0;
+}

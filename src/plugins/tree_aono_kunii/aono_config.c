@@ -41,34 +41,33 @@ static void vec3(const sylva_params *p, const char *name, double out[3])
 
 /* A parameter that the chosen settings never read is refused, so that a scene never seems to
  * say something the tree ignores. */
-static int refuse_unread(const sylva_host_api *api, sylva_host *host, const sylva_params *p, const char *name,
-                         int unread, const char *why)
+static int refuse_unread(const sylva_params *p, const char *name, int unread, const char *why, plugin_err *err)
 {
     if (unread && sylva_param(p, name)->is_set)
-        return api->param_error(host, p, name, "%s is not read %s; remove it or change that setting", name, why);
+        return plugin_fail_param(err, p, name, "%s is not read %s; remove it or change that setting", name, why);
     return SYLVA_OK;
 }
 
-static int read_structure(const sylva_host_api *api, sylva_host *host, const sylva_params *p, aono_config *c)
+static int read_structure(const sylva_params *p, aono_config *c, plugin_err *err)
 {
     c->levels = (uint32_t)sylva_param_int(p, "levels");
     c->pattern = (aono_pattern)sylva_param_int(p, "pattern");
     c->lvt = (uint32_t)sylva_param_int(p, "lvt") - 1;
     c->ternary_probability = sylva_param_real(p, "ternary_probability");
     c->n_children = c->pattern == AONO_TERNARY || c->pattern == AONO_STOCHASTIC ? 3 : 2;
-    int rc = refuse_unread(api, host, p, "lvt", c->pattern != AONO_MONOPODIAL, "unless pattern is monopodial");
-    if (!rc) rc = refuse_unread(api, host, p, "ternary_probability", c->pattern != AONO_STOCHASTIC,
-                                "unless pattern is stochastic");
+    int rc = refuse_unread(p, "lvt", c->pattern != AONO_MONOPODIAL, "unless pattern is monopodial", err);
+    if (!rc) rc = refuse_unread(p, "ternary_probability", c->pattern != AONO_STOCHASTIC,
+                                "unless pattern is stochastic", err);
     if (rc) return rc;
     uint64_t worst = aono_segment_bound(c->n_children, c->levels);
     if (worst > AONO_MAX_SEGMENTS) {
         uint32_t fit = 0;
         while (fit < c->levels && aono_segment_bound(c->n_children, fit + 1) <= AONO_MAX_SEGMENTS) fit++;
-        return api->param_error(host, p, "levels",
-                                "%u levels of %s branching make up to %llu segments, more than the %u this "
-                                "plugin builds; use at most %u levels with this pattern",
-                                c->levels, pattern_names[c->pattern], (unsigned long long)worst,
-                                AONO_MAX_SEGMENTS, fit);
+        return plugin_fail_param(err, p, "levels",
+                                 "%u levels of %s branching make up to %llu segments, more than the %u this "
+                                 "plugin builds; use at most %u levels with this pattern",
+                                 c->levels, pattern_names[c->pattern], (unsigned long long)worst,
+                                 AONO_MAX_SEGMENTS, fit);
     }
     c->trunk_length = sylva_param_real(p, "trunk_length");
     c->height = sylva_param_real(p, "height");
@@ -77,12 +76,12 @@ static int read_structure(const sylva_host_api *api, sylva_host *host, const syl
     return SYLVA_OK;
 }
 
-static int read_angles(const sylva_host_api *api, sylva_host *host, const sylva_params *p, aono_config *c)
+static int read_angles(const sylva_params *p, aono_config *c, plugin_err *err)
 {
     const sylva_value *fi = sylva_param(p, "fi");
     if (fi->len != c->n_children)
-        return api->param_error(host, p, "fi", "pattern %s has %u children, so fi needs %u angles FI(i); got %u",
-                                pattern_names[c->pattern], c->n_children, c->n_children, fi->len);
+        return plugin_fail_param(err, p, "fi", "pattern %s has %u children, so fi needs %u angles FI(i); got %u",
+                                 pattern_names[c->pattern], c->n_children, c->n_children, fi->len);
     for (uint32_t i = 0; i < c->n_children; i++)
         c->fi[i] = (aono_angle_law){.kind = AONO_LAW_CONSTANT, .c = fi->list[i]};
     const sylva_value *laws = sylva_param(p, "fi_laws");
@@ -90,25 +89,25 @@ static int read_angles(const sylva_host_api *api, sylva_host *host, const sylva_
         const sylva_params *item = &laws->items[k];
         uint32_t child = (uint32_t)sylva_param_int(item, "child") - 1;
         if (child >= c->n_children)
-            return api->param_error(host, item, "child", "fi_laws[%u]: pattern %s has children 1 to %u, not %u", k,
-                                    pattern_names[c->pattern], c->n_children, child + 1);
+            return plugin_fail_param(err, item, "child", "fi_laws[%u]: pattern %s has children 1 to %u, not %u", k,
+                                     pattern_names[c->pattern], c->n_children, child + 1);
         if (c->fi[child].kind != AONO_LAW_CONSTANT)
-            return api->param_error(host, item, "child", "fi_laws[%u]: child %u already has a law; give one law "
-                                    "per child", k, child + 1);
+            return plugin_fail_param(err, item, "child", "fi_laws[%u]: child %u already has a law; give one law "
+                                     "per child", k, child + 1);
         const sylva_value *pts = sylva_param(item, "points");
         char why[400];
         aono_law_kind kind = (aono_law_kind)(sylva_param_int(item, "law") + 1);
         if (aono_law_fit(kind, pts->list, pts->len, &c->fi[child], why, sizeof why))
-            return api->param_error(host, item, "points", "fi_laws[%u]: %s", k, why);
+            return plugin_fail_param(err, item, "points", "fi_laws[%u]: %s", k, why);
     }
     if (c->pattern == AONO_MONOPODIAL) {
         const aono_angle_law *lead = &c->fi[c->lvt];
         if (lead->kind != AONO_LAW_CONSTANT || lead->c != 0.0)
-            return api->param_error(host, p, lead->kind != AONO_LAW_CONSTANT ? "fi_laws" : "fi",
-                                    "in the monopodial pattern child LVT = %u continues its mother's direction, "
-                                    "so its angle FI(%u) must be the constant 0; give 0 there (or choose "
-                                    "pattern dichotomous)",
-                                    c->lvt + 1, c->lvt + 1);
+            return plugin_fail_param(err, p, lead->kind != AONO_LAW_CONSTANT ? "fi_laws" : "fi",
+                                     "in the monopodial pattern child LVT = %u continues its mother's direction, "
+                                     "so its angle FI(%u) must be the constant 0; give 0 there (or choose "
+                                     "pattern dichotomous)",
+                                     c->lvt + 1, c->lvt + 1);
     }
     c->sf = sylva_param_real(p, "sf");
     c->del = sylva_param_real(p, "del");
@@ -117,53 +116,50 @@ static int read_angles(const sylva_host_api *api, sylva_host *host, const sylva_
     return SYLVA_OK;
 }
 
-static int read_ratios(const sylva_host_api *api, sylva_host *host, const sylva_params *p, aono_config *c)
+static int read_ratios(const sylva_params *p, aono_config *c, plugin_err *err)
 {
     c->ri_method = (aono_ri_method)sylva_param_int(p, "ri_method");
-    int rc = refuse_unread(api, host, p, "ri", c->ri_method != AONO_RI_CONSTANT, "unless ri_method is constant");
-    if (!rc) rc = refuse_unread(api, host, p, "ri_range", c->ri_method != AONO_RI_RANDOM,
-                                "unless ri_method is random");
-    if (!rc) rc = refuse_unread(api, host, p, "crown_diameter", c->ri_method != AONO_RI_DIMENSIONS,
-                                "unless ri_method is dimensions");
-    if (!rc) rc = refuse_unread(api, host, p, "height", c->ri_method != AONO_RI_DIMENSIONS,
-                                "unless ri_method is dimensions");
-    if (!rc) rc = refuse_unread(api, host, p, "rko",
+    int rc = refuse_unread(p, "ri", c->ri_method != AONO_RI_CONSTANT, "unless ri_method is constant", err);
+    if (!rc) rc = refuse_unread(p, "ri_range", c->ri_method != AONO_RI_RANDOM,
+                                "unless ri_method is random", err);
+    if (!rc) rc = refuse_unread(p, "crown_diameter", c->ri_method != AONO_RI_DIMENSIONS,
+                                "unless ri_method is dimensions", err);
+    if (!rc) rc = refuse_unread(p, "height", c->ri_method != AONO_RI_DIMENSIONS,
+                                "unless ri_method is dimensions", err);
+    if (!rc) rc = refuse_unread(p, "rko",
                                 c->ri_method != AONO_RI_DIMENSIONS || c->pattern != AONO_DICHOTOMOUS,
-                                "unless ri_method is dimensions and pattern dichotomous");
+                                "unless ri_method is dimensions and pattern dichotomous", err);
     if (rc) return rc;
     if (c->ri_method == AONO_RI_CONSTANT) {
         const sylva_value *ri = sylva_param(p, "ri");
         if (ri->len != c->n_children)
-            return api->param_error(host, p, "ri", "pattern %s has %u children, so ri needs %u ratios RI(i); "
-                                    "got %u", pattern_names[c->pattern], c->n_children, c->n_children, ri->len);
+            return plugin_fail_param(err, p, "ri", "pattern %s has %u children, so ri needs %u ratios RI(i); "
+                                     "got %u", pattern_names[c->pattern], c->n_children, c->n_children, ri->len);
         for (uint32_t i = 0; i < c->n_children; i++) c->ri[i] = ri->list[i];
     } else if (c->ri_method == AONO_RI_DIMENSIONS) {
         char why[400];
         if (aono_ratios_from_dimensions(c->pattern, c->lvt, c->height, c->trunk_length, c->crown_diameter,
                                         c->rko, c->ri, why, sizeof why))
-            return api->param_error(host, p, c->trunk_length >= c->height ? "trunk_length" : "crown_diameter",
-                                    "%s", why);
+            return plugin_fail_param(err, p, c->trunk_length >= c->height ? "trunk_length" : "crown_diameter",
+                                     "%s", why);
     } else {
         const sylva_value *range = sylva_param(p, "ri_range");
         c->ri_range[0] = range->list[0], c->ri_range[1] = range->list[1];
         if (c->ri_range[0] > c->ri_range[1])
-            return api->param_error(host, p, "ri_range", "ri_range [%g, %g] is empty; give [low, high] with "
-                                    "low <= high, both in (0, 1)", c->ri_range[0], c->ri_range[1]);
+            return plugin_fail_param(err, p, "ri_range", "ri_range [%g, %g] is empty; give [low, high] with "
+                                     "low <= high, both in (0, 1)", c->ri_range[0], c->ri_range[1]);
     }
     return SYLVA_OK;
 }
 
-static int read_deviations(const sylva_host_api *api, sylva_host *host, const sylva_params *p, aono_config *c)
+static int read_deviations(const sylva_params *p, aono_config *c, plugin_err *err)
 {
     vec3(p, "deviation", c->deviation);
     c->preserve_length = (int)sylva_param_int(p, "preserve_length");
     const sylva_value *list = sylva_param(p, "controllers");
     if (!list->len) return SYLVA_OK;
     c->controllers = calloc(list->len, sizeof *c->controllers); /* owned by cfg */
-    if (!c->controllers) {
-        api->error(host, "out of memory for %u controllers", list->len);
-        return SYLVA_ERR_NOMEM;
-    }
+    if (!c->controllers) return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for %u controllers", list->len);
     for (uint32_t i = 0; i < list->len; i++) {
         const sylva_params *item = &list->items[i];
         aono_controller *ctl = &c->controllers[i];
@@ -173,14 +169,14 @@ static int read_deviations(const sylva_host_api *api, sylva_host *host, const sy
         ctl->line = pos->line ? pos->line : item->line;
         ctl->column = pos->line ? pos->column : item->column;
         if (ctl->fac == 0.0)
-            return api->param_error(host, item, "fac", "controllers[%u]: fac 0 neither attracts nor repels; give "
-                                    "fac > 0 for an attractor or fac < 0 for an inhibitor", i);
+            return plugin_fail_param(err, item, "fac", "controllers[%u]: fac 0 neither attracts nor repels; give "
+                                     "fac > 0 for an attractor or fac < 0 for an inhibitor", i);
         c->n_controllers++;
     }
     return SYLVA_OK;
 }
 
-static int read_geometry(const sylva_host_api *api, sylva_host *host, const sylva_params *p, aono_config *c)
+static int read_geometry(const sylva_params *p, aono_config *c, plugin_err *err)
 {
     c->trunk_radius = sylva_param_real(p, "trunk_radius");
     c->radius_reduction = sylva_param_real(p, "radius_reduction");
@@ -188,8 +184,8 @@ static int read_geometry(const sylva_host_api *api, sylva_host *host, const sylv
     c->sides = (uint32_t)sylva_param_int(p, "sides");
     c->min_sides = (uint32_t)sylva_param_int(p, "min_sides");
     if (c->min_sides > c->sides)
-        return api->param_error(host, p, "min_sides", "min_sides %u is more than the trunk's sides %u; give "
-                                "min_sides <= sides", c->min_sides, c->sides);
+        return plugin_fail_param(err, p, "min_sides", "min_sides %u is more than the trunk's sides %u; give "
+                                 "min_sides <= sides", c->min_sides, c->sides);
     c->leaf_count = (uint32_t)sylva_param_int(p, "leaf_count");
     c->leaf_shape = (aono_leaf_shape)sylva_param_int(p, "leaf_shape");
     c->leaf_length = sylva_param_real(p, "leaf_length");
@@ -205,15 +201,15 @@ static int read_geometry(const sylva_host_api *api, sylva_host *host, const sylv
                                             "leaf_levels", "leaf_angle", "leaf_jitter", "leaf_color",
                                             "leaf_transmittance"};
     for (size_t k = 0; k < sizeof leaf_keys / sizeof leaf_keys[0]; k++) {
-        int rc = refuse_unread(api, host, p, leaf_keys[k], c->leaf_count == 0, "when leaf_count is 0");
+        int rc = refuse_unread(p, leaf_keys[k], c->leaf_count == 0, "when leaf_count is 0", err);
         if (rc) return rc;
     }
     for (int k = 0; k < 3; k++)
         if (c->leaf_color[k] + c->leaf_transmittance[k] > 1.0)
-            return api->param_error(host, p, "leaf_transmittance",
-                                    "leaf_color + leaf_transmittance is %g in channel %d; a leaf cannot scatter "
-                                    "more light than it receives, so keep the sum at most 1",
-                                    c->leaf_color[k] + c->leaf_transmittance[k], k);
+            return plugin_fail_param(err, p, "leaf_transmittance",
+                                     "leaf_color + leaf_transmittance is %g in channel %d; a leaf cannot scatter "
+                                     "more light than it receives, so keep the sum at most 1",
+                                     c->leaf_color[k] + c->leaf_transmittance[k], k);
     /* Leaves go by length: leaf_count on a branch of the mean outermost length H0 R̄^n, as many
      * per metre elsewhere. The full-grown tree's expected count (every branching with its most
      * children; read_structure has bounded the branch count) must stay within the limit. */
@@ -228,25 +224,22 @@ static int read_geometry(const sylva_host_api *api, sylva_host *host, const sylv
         if (k + c->leaf_levels > c->levels) expected += layer * c->leaf_count * pow(mean_ratio, (double)k - c->levels);
     }
     if (expected > AONO_MAX_LEAVES)
-        return api->param_error(host, p, "leaf_count", "%u leaves per outermost branch on the outermost %u levels "
-                                "make some %.0f leaves, more than the %u this plugin builds; lower leaf_count, "
-                                "leaf_levels or levels", c->leaf_count, c->leaf_levels, expected, AONO_MAX_LEAVES);
+        return plugin_fail_param(err, p, "leaf_count", "%u leaves per outermost branch on the outermost %u levels "
+                                 "make some %.0f leaves, more than the %u this plugin builds; lower leaf_count, "
+                                 "leaf_levels or levels", c->leaf_count, c->leaf_levels, expected, AONO_MAX_LEAVES);
     return SYLVA_OK;
 }
 
-int aono_config_read(const sylva_host_api *api, sylva_host *host, const sylva_params *params,
-                     aono_config *cfg)
+int aono_config_read(const sylva_params *params, aono_config *cfg, plugin_err *err)
 {
     memset(cfg, 0, sizeof *cfg);
-    int rc = read_structure(api, host, params, cfg);
-    if (!rc) rc = read_angles(api, host, params, cfg);
-    if (!rc) rc = read_ratios(api, host, params, cfg);
-    if (!rc) rc = read_deviations(api, host, params, cfg);
-    if (!rc) rc = read_geometry(api, host, params, cfg);
-    if (!rc && params->file && !(cfg->file = strdup(params->file))) {
-        api->error(host, "out of memory");
-        rc = SYLVA_ERR_NOMEM;
-    }
+    int rc = read_structure(params, cfg, err);
+    if (!rc) rc = read_angles(params, cfg, err);
+    if (!rc) rc = read_ratios(params, cfg, err);
+    if (!rc) rc = read_deviations(params, cfg, err);
+    if (!rc) rc = read_geometry(params, cfg, err);
+    if (!rc && params->file && !(cfg->file = strdup(params->file)))
+        rc = plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for the scene file's name");
     if (rc) aono_config_release(cfg);
     return rc;
 }

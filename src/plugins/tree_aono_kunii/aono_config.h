@@ -15,6 +15,7 @@
 #include <stdint.h>
 
 #include "aono_angle_law.h"
+#include "plugin_err.h"
 #include "sylva/plugin.h"
 
 #define AONO_MAX_LEVELS 30          /* schema bound on `levels` */
@@ -114,10 +115,9 @@ typedef struct aono_config {
 extern const sylva_param_spec aono_params[];
 
 /* Reads and checks `params` (validated against aono_params) into *cfg. Returns SYLVA_OK, or a
- * negative status after api->param_error / api->error has said what is wrong and what would
- * be valid; *cfg is then released. */
-int aono_config_read(const sylva_host_api *api, sylva_host *host, const sylva_params *params,
-                     aono_config *cfg);
+ * negative status with err saying what is wrong and what would be valid (and at which key of
+ * which block); *cfg is then released. */
+int aono_config_read(const sylva_params *params, aono_config *cfg, plugin_err *err);
 void aono_config_release(aono_config *cfg);
 
 /* Segments (trunk included) of a tree of `levels` levels when every branching has `children`

@@ -58,29 +58,24 @@ int aono_deviate(const aono_config *cfg, const double pb[3], double rho, double 
 }
 
 /* A standard normal deviate from two uniforms (Box–Muller). */
-static double normal_deviate(const sylva_host_api *api, sylva_rng *rng)
+static double normal_deviate(const aono_env *env, sylva_rng *rng)
 {
-    double u1 = api->rng_uniform(rng), u2 = api->rng_uniform(rng);
+    double u1 = env->uniform(rng), u2 = env->uniform(rng);
     return sqrt(-2.0 * log(1.0 - u1)) * cos(AONO_TWO_PI * u2);
 }
 
-static int reserve(const sylva_host_api *api, sylva_host *host, aono_skeleton *s, uint64_t need)
+static int reserve(aono_skeleton *s, uint64_t need, plugin_err *err)
 {
-    if (need > AONO_MAX_SEGMENTS) {
-        api->error(host, "the tree would have more than %u segments (the plugin's limit); lower levels "
-                         "or choose a pattern with fewer children",
-                   AONO_MAX_SEGMENTS);
-        return SYLVA_ERR_LIMIT;
-    }
+    if (need > AONO_MAX_SEGMENTS)
+        return plugin_fail(err, SYLVA_ERR_LIMIT, "the tree would have more than %u segments (the plugin's limit); "
+                           "lower levels or choose a pattern with fewer children", AONO_MAX_SEGMENTS);
     if (need <= s->cap) return SYLVA_OK;
     uint64_t cap = s->cap ? s->cap : 64;
     while (cap < need) cap *= 2;
     if (cap > AONO_MAX_SEGMENTS) cap = AONO_MAX_SEGMENTS;
     aono_segment *seg = realloc(s->seg, (size_t)cap * sizeof *seg);
-    if (!seg) {
-        api->error(host, "out of memory for %llu branch segments", (unsigned long long)cap);
-        return SYLVA_ERR_NOMEM;
-    }
+    if (!seg)
+        return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for %llu branch segments", (unsigned long long)cap);
     s->seg = seg, s->cap = (uint32_t)cap;
     return SYLVA_OK;
 }
@@ -117,47 +112,49 @@ static void classify_children(const aono_config *cfg, aono_skeleton *s, uint32_t
     }
 }
 
-static int controller_on_tip(const aono_config *cfg, const sylva_host_api *api, sylva_host *host,
-                             uint32_t which, uint32_t level, const double p[3])
+static int controller_on_tip(const aono_config *cfg, uint32_t which, uint32_t level, const double p[3],
+                             plugin_err *err)
 {
     const aono_controller *c = &cfg->controllers[which];
-    return api->error(host, "%s:%u:%u: 'position': controller %u at (%g, %g, %g) lies on the tip of a "
-                            "level-%u branch at (%g, %g, %g), where the direction (Q - P)/|Q - P| of (25) is "
-                            "undefined; move the controller off the branch tips (by more than 1 micrometre)",
-                      cfg->file ? cfg->file : "scene", c->line, c->column, which + 1, c->q[0], c->q[1],
-                      c->q[2], level, p[0], p[1], p[2]);
+    return plugin_fail(err, SYLVA_ERR_PARAM,
+                       "%s:%u:%u: 'position': controller %u at (%g, %g, %g) lies on the tip of a "
+                       "level-%u branch at (%g, %g, %g), where the direction (Q - P)/|Q - P| of (25) is "
+                       "undefined; move the controller off the branch tips (by more than 1 micrometre)",
+                       cfg->file ? cfg->file : "scene", c->line, c->column, which + 1, c->q[0], c->q[1],
+                       c->q[2], level, p[0], p[1], p[2]);
 }
 
 /* Appends the children of mother m (at level `level`, i.e. the children's level). */
-static int branch(const aono_config *cfg, uint32_t level, const sylva_host_api *api, sylva_host *host,
-                  aono_skeleton *s, uint32_t m)
+static int branch(const aono_config *cfg, uint32_t level, const aono_env *env, aono_skeleton *s, uint32_t m,
+                  plugin_err *err)
 {
     sylva_rng rng;
-    api->rng_init(host, &rng, "tree_aono_kunii.branching", s->seg[m].node);
+    env->stream(env->ctx, &rng, "tree_aono_kunii.branching", s->seg[m].node);
     uint32_t nc = cfg->n_children;
-    if (cfg->pattern == AONO_STOCHASTIC) nc = api->rng_uniform(&rng) < cfg->ternary_probability ? 3 : 2;
-    int rc = reserve(api, host, s, (uint64_t)s->n + nc);
+    if (cfg->pattern == AONO_STOCHASTIC) nc = env->uniform(&rng) < cfg->ternary_probability ? 3 : 2;
+    int rc = reserve(s, (uint64_t)s->n + nc, err);
     if (rc) return rc;
     aono_segment *mo = &s->seg[m];
     aono_frame frame;
     if (aono_frame_build(mo->base, mo->tip, &frame))
-        return api->error(host, "a level-%u branch has zero length, so its children have no frame", mo->level);
+        return plugin_fail(err, SYLVA_ERR_PARAM, "a level-%u branch has zero length, so its children have no frame",
+                           mo->level);
     mo->first_child = s->n;
     mo->n_children = (uint8_t)nc;
     for (uint32_t i = 0; i < nc; i++) {
         double phi = aono_child_angle(cfg, i, level);
         int leader = cfg->pattern == AONO_MONOPODIAL && i == cfg->lvt;
-        if (cfg->sf > 0.0 && !leader) phi += cfg->sf * normal_deviate(api, &rng);
+        if (cfg->sf > 0.0 && !leader) phi += cfg->sf * normal_deviate(env, &rng);
         phi = fmin(180.0, fmax(0.0, phi));
         double ratio = cfg->ri[i];
         if (cfg->ri_method == AONO_RI_RANDOM)
-            ratio = cfg->ri_range[0] + (cfg->ri_range[1] - cfg->ri_range[0]) * api->rng_uniform(&rng);
+            ratio = cfg->ri_range[0] + (cfg->ri_range[1] - cfg->ri_range[0]) * env->uniform(&rng);
         double rho = ratio * mo->length; /* ρ_i = R_i ρ_op */
         double tip[3];
         aono_frame_child(&frame, mo->tip, rho, phi, aono_child_azimuth(cfg, i, level), tip);
         uint32_t which = 0;
         if (aono_deviate(cfg, mo->tip, rho, tip, &which))
-            return controller_on_tip(cfg, api, host, which, level, tip);
+            return controller_on_tip(cfg, which, level, tip, err);
         aono_segment *ch = &s->seg[s->n++];
         memset(ch, 0, sizeof *ch);
         memcpy(ch->base, mo->tip, sizeof ch->base);
@@ -170,20 +167,18 @@ static int branch(const aono_config *cfg, uint32_t level, const sylva_host_api *
         ch->level = (uint8_t)level;
         ch->child_index = (uint8_t)i;
         if (!(dist(ch->base, ch->tip) > 0.0))
-            return api->error(host, "child %u of a level-%u branch came out with zero length after the "
-                                    "deviations (25); lower deviation or the controllers' fac",
-                              i + 1, level - 1);
+            return plugin_fail(err, SYLVA_ERR_PARAM,
+                               "child %u of a level-%u branch came out with zero length after the "
+                               "deviations (25); lower deviation or the controllers' fac", i + 1, level - 1);
     }
     classify_children(cfg, s, m);
     return SYLVA_OK;
 }
 
-int aono_grow(const aono_config *cfg, uint32_t levels, const sylva_host_api *api, sylva_host *host,
-              aono_skeleton *out)
+int aono_grow(const aono_config *cfg, uint32_t levels, const aono_env *env, aono_skeleton *out, plugin_err *err)
 {
     memset(out, 0, sizeof *out);
-    int rc = reserve(api, host, out, aono_segment_bound(cfg->pattern == AONO_STOCHASTIC ? 2 : cfg->n_children,
-                                                         levels));
+    int rc = reserve(out, aono_segment_bound(cfg->pattern == AONO_STOCHASTIC ? 2 : cfg->n_children, levels), err);
     if (rc) goto fail;
     aono_segment *trunk = &out->seg[out->n++];
     memset(trunk, 0, sizeof *trunk);
@@ -200,9 +195,9 @@ int aono_grow(const aono_config *cfg, uint32_t levels, const sylva_host_api *api
     uint32_t first = 0, end = 1;
     for (uint32_t level = 1; level <= levels; level++) {
         for (uint32_t m = first; m < end; m++)
-            if ((rc = branch(cfg, level, api, host, out, m))) goto fail;
+            if ((rc = branch(cfg, level, env, out, m, err))) goto fail;
         first = end, end = out->n;
-        api->progress(host, "tree_aono_kunii levels", level, levels);
+        if (env->progress) env->progress(env->ctx, level, levels);
     }
     out->levels = levels;
     return SYLVA_OK;

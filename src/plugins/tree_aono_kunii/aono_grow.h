@@ -4,9 +4,9 @@
  * deviated by (25).
  *
  * Segments are stored level by level (breadth first), so a mother always precedes its children
- * and the children of one mother are contiguous. Every random number comes from the host's
- * stream for the mother's node id (its path from the trunk), so the tree does not depend on the
- * order of work.
+ * and the children of one mother are contiguous. Every random number comes from the stream
+ * the caller's aono_env starts for the mother's node id (its path from the trunk; the plugin
+ * file hands in the host's streams), so the tree does not depend on the order of work.
  *
  * Ownership: an aono_skeleton owns its segment array; aono_skeleton_release() frees it and
  * accepts a zeroed skeleton.
@@ -17,9 +17,20 @@
 #include <stdint.h>
 
 #include "aono_config.h"
+#include "plugin_err.h"
 #include "sylva/plugin.h"
 
 #define AONO_NONE UINT32_MAX
+
+/* What the model takes from outside: `stream` starts the random stream for (purpose, index),
+ * `uniform` draws the next number in [0, 1) from one, `progress` (may be NULL) hears of each
+ * level grown. Borrowed for the duration of a call. */
+typedef struct aono_env {
+    void (*stream)(void *ctx, sylva_rng *rng, const char *purpose, uint64_t index);
+    double (*uniform)(sylva_rng *rng);
+    void (*progress)(void *ctx, uint32_t levels_done, uint32_t levels);
+    void *ctx;
+} aono_env;
 
 typedef struct aono_segment {
     double base[3], tip[3];  /* P_a and P_b of this branch, metres */
@@ -43,11 +54,10 @@ typedef struct aono_skeleton {
 
 /* Grows a tree of `levels` levels (1 ... cfg->levels; fewer for a younger variant, whose trunk
  * radius is trunk_radius times radius_reduction^(cfg->levels − levels)) into *out
- * (which must be zeroed or released). Returns SYLVA_OK, or a negative status after api->error
- * (a controller on a tip, SYLVA_ERR_PARAM; more than AONO_MAX_SEGMENTS, SYLVA_ERR_LIMIT; out of
+ * (which must be zeroed or released). Returns SYLVA_OK, or a negative status with err set (a
+ * controller on a tip, SYLVA_ERR_PARAM; more than AONO_MAX_SEGMENTS, SYLVA_ERR_LIMIT; out of
  * memory, SYLVA_ERR_NOMEM); *out is then released. */
-int aono_grow(const aono_config *cfg, uint32_t levels, const sylva_host_api *api, sylva_host *host,
-              aono_skeleton *out);
+int aono_grow(const aono_config *cfg, uint32_t levels, const aono_env *env, aono_skeleton *out, plugin_err *err);
 void aono_skeleton_release(aono_skeleton *s);
 
 /* Deviation (25) of a child tip p (in place): p += (Dx, Dy, Dz) + Σ FAC(i) (Q(i) − p)/|Q(i) − p|,

@@ -29,17 +29,17 @@
 uint32_t aono_ring_sides(const aono_config *cfg, double radius);
 
 /* Appends the bark of every segment with material `bark`. Returns SYLVA_OK, or a negative
- * status after api->error (out of memory, the host's mesh limits). */
-int aono_mesh_branches(const aono_config *cfg, const aono_skeleton *s, int32_t bark, const sylva_host_api *api,
-                       sylva_host *host, aono_mesh_buffer *b);
+ * status with err set (out of memory, the host's mesh limits). */
+int aono_mesh_branches(const aono_config *cfg, const aono_skeleton *s, int32_t bark, aono_mesh_buffer *b,
+                       plugin_err *err);
 
 /* Appends leaves with material `leaf` on each leaf-bearing segment: leaf_count per
  * leaf_reference_length of its nominal length ρ (the fraction drawn at random), so that younger
  * variants, whose outermost branches are longer, stay as leafy per metre. Positions and turns
- * come from the host's stream for each segment's node. Returns as above, or SYLVA_ERR_LIMIT past
+ * come from env's stream for each segment's node. Returns as above, or SYLVA_ERR_LIMIT past
  * AONO_MAX_LEAVES. */
-int aono_mesh_leaves(const aono_config *cfg, const aono_skeleton *s, int32_t leaf, const sylva_host_api *api,
-                     sylva_host *host, aono_mesh_buffer *b);
+int aono_mesh_leaves(const aono_config *cfg, const aono_skeleton *s, int32_t leaf, const aono_env *env,
+                     aono_mesh_buffer *b, plugin_err *err);
 
 /* Fills w x h RGBA8 texels (row 0 at the top, v = 1) with a leaf of `shape`: the blade's outline
  * in alpha (0 or 255), its stalk along the bottom tenth, veins lighter than the blade; colour

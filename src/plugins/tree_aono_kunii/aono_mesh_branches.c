@@ -132,23 +132,20 @@ static void cap(aono_mesh_buffer *b, uint32_t R, uint32_t sides, const double c[
     }
 }
 
-static int mesh_failed(const sylva_host_api *api, sylva_host *host, int rc)
+static int mesh_failed(int rc, plugin_err *err)
 {
-    if (rc == -2) {
-        api->error(host, "the tree's bark needs more than %u vertices or %u triangles (the host's per-mesh "
-                         "limits); lower levels or sides",
-                   AONO_MESH_MAX_VERTICES, AONO_MESH_MAX_TRIANGLES);
-        return SYLVA_ERR_LIMIT;
-    }
-    api->error(host, "out of memory building the tree's bark");
-    return SYLVA_ERR_NOMEM;
+    if (rc == -2)
+        return plugin_fail(err, SYLVA_ERR_LIMIT,
+                           "the tree's bark needs more than %u vertices or %u triangles (the host's per-mesh "
+                           "limits); lower levels or sides", AONO_MESH_MAX_VERTICES, AONO_MESH_MAX_TRIANGLES);
+    return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory building the tree's bark");
 }
 
-int aono_mesh_branches(const aono_config *cfg, const aono_skeleton *s, int32_t bark, const sylva_host_api *api,
-                       sylva_host *host, aono_mesh_buffer *b)
+int aono_mesh_branches(const aono_config *cfg, const aono_skeleton *s, int32_t bark, aono_mesh_buffer *b,
+                       plugin_err *err)
 {
     ring_memo *memo = malloc((size_t)(s->n ? s->n : 1) * sizeof *memo); /* owned here */
-    if (!memo) return mesh_failed(api, host, -1);
+    if (!memo) return mesh_failed(-1, err);
     int rc = 0;
     for (uint32_t k = 0; k < s->n && !rc; k++) {
         const aono_segment *sg = &s->seg[k];
@@ -192,5 +189,5 @@ int aono_mesh_branches(const aono_config *cfg, const aono_skeleton *s, int32_t b
         }
     }
     free(memo);
-    return rc ? mesh_failed(api, host, rc) : SYLVA_OK;
+    return rc ? mesh_failed(rc, err) : SYLVA_OK;
 }

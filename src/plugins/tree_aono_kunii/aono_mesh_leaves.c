@@ -69,8 +69,8 @@ static uint32_t leaves_on(const aono_config *cfg, const aono_segment *sg, double
     return (uint32_t)whole + (u < x - whole);
 }
 
-int aono_mesh_leaves(const aono_config *cfg, const aono_skeleton *s, int32_t leaf, const sylva_host_api *api,
-                     sylva_host *host, aono_mesh_buffer *b)
+int aono_mesh_leaves(const aono_config *cfg, const aono_skeleton *s, int32_t leaf, const aono_env *env,
+                     aono_mesh_buffer *b, plugin_err *err)
 {
     if (!cfg->leaf_count) return SYLVA_OK;
     uint32_t first_level = s->levels + 1 > cfg->leaf_levels ? s->levels + 1 - cfg->leaf_levels : 1;
@@ -81,37 +81,30 @@ int aono_mesh_leaves(const aono_config *cfg, const aono_skeleton *s, int32_t lea
         const aono_segment *sg = &s->seg[k];
         if (sg->level < first_level) continue;
         sylva_rng rng;
-        api->rng_init(host, &rng, "tree_aono_kunii.leaves", sg->node);
-        uint32_t count = leaves_on(cfg, sg, api->rng_uniform(&rng));
+        env->stream(env->ctx, &rng, "tree_aono_kunii.leaves", sg->node);
+        uint32_t count = leaves_on(cfg, sg, env->uniform(&rng));
         total += count;
-        if (total > AONO_MAX_LEAVES) {
-            api->error(host, "the tree would carry more than %u leaves (the plugin's limit); lower leaf_count "
-                             "or leaf_levels",
-                       AONO_MAX_LEAVES);
-            return SYLVA_ERR_LIMIT;
-        }
+        if (total > AONO_MAX_LEAVES)
+            return plugin_fail(err, SYLVA_ERR_LIMIT, "the tree would carry more than %u leaves (the plugin's limit); "
+                               "lower leaf_count or leaf_levels", AONO_MAX_LEAVES);
         int rc = aono_mesh_reserve(b, 4 * count, 2 * count);
-        if (rc == -2) {
-            api->error(host, "the tree's leaves need more than %u vertices or %u triangles (the host's "
-                             "per-mesh limits); lower leaf_count or leaf_levels",
-                       AONO_MESH_MAX_VERTICES, AONO_MESH_MAX_TRIANGLES);
-            return SYLVA_ERR_LIMIT;
-        }
-        if (rc) {
-            api->error(host, "out of memory building the tree's leaves");
-            return SYLVA_ERR_NOMEM;
-        }
+        if (rc == -2)
+            return plugin_fail(err, SYLVA_ERR_LIMIT,
+                               "the tree's leaves need more than %u vertices or %u triangles (the host's "
+                               "per-mesh limits); lower leaf_count or leaf_levels",
+                               AONO_MESH_MAX_VERTICES, AONO_MESH_MAX_TRIANGLES);
+        if (rc) return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory building the tree's leaves");
         double d[3] = {sg->tip[0] - sg->base[0], sg->tip[1] - sg->base[1], sg->tip[2] - sg->base[2]};
         double len = sqrt(dot(d, d)), p[3], q[3];
         if (normalise(d)) continue;
         basis(d, p, q);
-        double turn0 = 360.0 * api->rng_uniform(&rng);
+        double turn0 = 360.0 * env->uniform(&rng);
         for (uint32_t n = 0; n < count; n++) {
-            double u = api->rng_uniform(&rng);
+            double u = env->uniform(&rng);
             double t = cfg->leaf_placement == AONO_LEAVES_TIP ? 1.0 - 0.15 * u : 0.2 + 0.8 * (n + u) / count;
             double psi = (turn0 + n * AONO_GOLDEN_ANGLE) * AONO_DEG;
-            double a = cfg->leaf_angle * AONO_DEG + jitter * (2.0 * api->rng_uniform(&rng) - 1.0);
-            double roll = jitter * (2.0 * api->rng_uniform(&rng) - 1.0);
+            double a = cfg->leaf_angle * AONO_DEG + jitter * (2.0 * env->uniform(&rng) - 1.0);
+            double roll = jitter * (2.0 * env->uniform(&rng) - 1.0);
             double r = sg->radius_base + (sg->radius_tip - sg->radius_base) * t;
             double out[3], L[3], W[3], at[3];
             for (int i = 0; i < 3; i++) out[i] = cos(psi) * p[i] + sin(psi) * q[i];

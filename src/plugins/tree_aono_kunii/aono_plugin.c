@@ -1,5 +1,9 @@
-/* aono_plugin.c — the plugin's operations: parameters and materials in create(), one age
- * variant per generate() (skeleton, bark, leaves, one mesh_append), and destroy(). */
+/* aono_plugin.c — the plugin file: the descriptor and its operations — parameters and
+ * materials in create(), one age variant per generate() (skeleton, bark, leaves, one
+ * mesh_append), and destroy(). The only file of the plugin that calls the host: the model
+ * (aono_config, aono_grow, aono_mesh) reports failures in a plugin_err, which plugin_report()
+ * hands to api->error or api->param_error, and takes its random streams and progress from an aono_env
+ * made of the host's. tree_aono_kunii.c exports the descriptor. */
 #include "aono_plugin.h"
 
 #include <math.h>
@@ -9,6 +13,7 @@
 #include "aono_config.h"
 #include "aono_grow.h"
 #include "aono_mesh.h"
+#include "plugin_host.h"
 
 /* What create() keeps for generate(). Owned by the plugin until aono_destroy. */
 typedef struct aono_state {
@@ -16,6 +21,12 @@ typedef struct aono_state {
     int32_t bark_material;
     int32_t leaf_material; /* -1 without leaves */
 } aono_state;
+
+static void host_progress(void *ctx, uint32_t levels_done, uint32_t levels)
+{
+    const plugin_host_ref *h = ctx;
+    h->api->progress(h->host, "tree_aono_kunii levels", levels_done, levels);
+}
 
 uint32_t aono_variant_levels(uint32_t levels, double age)
 {
@@ -67,7 +78,8 @@ static int aono_create(const sylva_host_api *api, sylva_host *host, const sylva_
         api->error(host, "tree_aono_kunii: out of memory for its settings");
         return SYLVA_ERR_NOMEM;
     }
-    int rc = aono_config_read(api, host, params, &st->cfg);
+    plugin_err err = {0};
+    int rc = aono_config_read(params, &st->cfg, &err) ? plugin_report(api, host, &err) : SYLVA_OK;
     if (!rc) rc = make_materials(api, host, st);
     if (rc) {
         aono_destroy(st);
@@ -89,12 +101,17 @@ static int aono_generate(void *state, const sylva_host_api *api, sylva_host *hos
     }
     if (!(req->age > 0.0 && req->age <= 1.0))
         return api->error(host, "tree_aono_kunii: variant age %g is outside (0, 1]", req->age);
+    plugin_host_ref h = {api, host};
+    aono_env env = {.stream = plugin_host_stream, .uniform = api->rng_uniform, .progress = host_progress,
+                    .ctx = &h};
+    plugin_err err = {0};
     aono_skeleton skel;
     aono_mesh_buffer buf = {0};
-    int rc = aono_grow(&st->cfg, aono_variant_levels(st->cfg.levels, req->age), api, host, &skel);
-    if (rc) return rc;
-    rc = aono_mesh_branches(&st->cfg, &skel, st->bark_material, api, host, &buf);
-    if (!rc) rc = aono_mesh_leaves(&st->cfg, &skel, st->leaf_material, api, host, &buf);
+    if (aono_grow(&st->cfg, aono_variant_levels(st->cfg.levels, req->age), &env, &skel, &err))
+        return plugin_report(api, host, &err);
+    int rc = aono_mesh_branches(&st->cfg, &skel, st->bark_material, &buf, &err);
+    if (!rc) rc = aono_mesh_leaves(&st->cfg, &skel, st->leaf_material, &env, &buf, &err);
+    if (rc) rc = plugin_report(api, host, &err);
     aono_skeleton_release(&skel);
     if (!rc) rc = api->mesh_append(host, o->mesh, buf.pos, buf.nrm, buf.uv, buf.nv, buf.tri, buf.mat, buf.nt);
     if (!rc) {

@@ -8,14 +8,15 @@
 
 double branch_law_count(double n1, double h1, double h2, double d) { return n1 * pow(h1 / h2, -d / 2.0); }
 
-uint64_t branch_count(const unsigned char *s, size_t n)
+int branch_count(const unsigned char *s, size_t n, uint64_t *count, lsys_error *err)
 {
+    *count = 0;
     /* A stack of one flag per open bracket: "this block drew wood itself"; drew[0] is the main
      * axis. Wood inside a nested block belongs to that block, not to its parent. */
     size_t cap = 256, depth = 0;
     uint8_t *drew = calloc(cap, 1); /* owned here */
-    if (!drew) return 0;
-    uint64_t count = 0;
+    if (!drew) return lsys_fail(err, LSYS_ERR_NOMEM, "out of memory counting the branches");
+    uint64_t found = 0;
     for (size_t i = 0; i < n; i++) {
         unsigned char c = s[i];
         if (c == '(') {
@@ -26,18 +27,23 @@ uint64_t branch_count(const unsigned char *s, size_t n)
         } else if (c == '[') {
             if (depth + 1 == cap) {
                 uint8_t *g = realloc(drew, cap * 2);
-                if (!g) break;
+                if (!g) {
+                    free(drew);
+                    return lsys_fail(err, LSYS_ERR_NOMEM, "out of memory counting the branches of %zu nested "
+                                     "'[' blocks", depth + 1);
+                }
                 drew = g, cap *= 2;
             }
             drew[++depth] = 0;
         } else if (c == ']' && depth) {
-            count += drew[depth--];
+            found += drew[depth--];
         }
     }
-    for (; depth; depth--) count += drew[depth];
-    count += drew[0];
+    for (; depth; depth--) found += drew[depth];
+    found += drew[0];
     free(drew);
-    return count;
+    *count = found;
+    return LSYS_OK;
 }
 
 uint32_t branch_law_level(const uint64_t *branches, uint32_t levels, double target)

@@ -77,6 +77,14 @@ static int read_symbols(reader *r, const unsigned char *s, const uint32_t *cols,
             buf[k++] = s[i++];
             continue;
         }
+        size_t huge = s[i] == '(' ? lsys_arg_out_of_range(s + i, n - i) : 0;
+        if (huge) {
+            free(buf);
+            return lsys_fail(r->err, LSYS_ERR_SYNTAX,
+                             "%s:%u:%u: the argument %.*s in %s is beyond the range of numbers; an "
+                             "argument is a finite number of magnitude below 1.8e308, such as (30) or (1e-3)",
+                             r->name, r->line, cols[i], (int)huge, (const char *)s + i, what);
+        }
         char b[16];
         if (!r->opt || !r->opt->lenient) {
             free(buf);

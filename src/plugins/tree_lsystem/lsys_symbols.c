@@ -61,7 +61,7 @@ size_t lsys_parse_number(const unsigned char *s, size_t n, double *value)
         }
     }
     double v;
-    if (exponent == 0) v = mantissa;
+    if (mantissa == 0.0 || exponent == 0) v = mantissa; /* 0e400 is 0, not 0 * inf */
     else if (exponent > 0 && exponent <= 22) v = mantissa * pow(10.0, exponent);
     else if (exponent < 0 && exponent >= -22) v = mantissa / pow(10.0, -exponent);
     else v = mantissa * pow(10.0, exponent);
@@ -69,7 +69,8 @@ size_t lsys_parse_number(const unsigned char *s, size_t n, double *value)
     return i;
 }
 
-size_t lsys_arg_group(const unsigned char *s, size_t n, double *value)
+/* The length of the group at s and its number, finite or not; 0 when s does not start one. */
+static size_t arg_group_any(const unsigned char *s, size_t n, double *value)
 {
     if (n < 3 || s[0] != '(') return 0;
     if (n > LSYS_ARG_MAX) n = LSYS_ARG_MAX;
@@ -83,4 +84,20 @@ size_t lsys_arg_group(const unsigned char *s, size_t n, double *value)
     if (i >= n || s[i] != ')') return 0;
     if (value) *value = v;
     return i + 1;
+}
+
+size_t lsys_arg_group(const unsigned char *s, size_t n, double *value)
+{
+    double v = 0.0;
+    size_t g = arg_group_any(s, n, &v);
+    if (!g || !isfinite(v)) return 0;
+    if (value) *value = v;
+    return g;
+}
+
+size_t lsys_arg_out_of_range(const unsigned char *s, size_t n)
+{
+    double v = 0.0;
+    size_t g = arg_group_any(s, n, &v);
+    return g && !isfinite(v) ? g : 0;
 }

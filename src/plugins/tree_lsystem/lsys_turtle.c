@@ -211,7 +211,8 @@ static int polygon_end(turtle *t)
         return LSYS_OK;
     }
     uint32_t start = t->pstart[--t->npoly];
-    uint32_t n = drop_repeats(t->pv + 3 * (size_t)start, t->npv - start);
+    /* A polygon closed before any vertex was stored has no vertex buffer at all (pv is NULL). */
+    uint32_t n = t->npv > start ? drop_repeats(t->pv + 3 * (size_t)start, t->npv - start) : 0;
     if (n >= 3) {
         if (t->st.polygons >= t->cfg->max_polygons)
             return lsys_fail(t->err, LSYS_ERR_LIMIT,

@@ -1,7 +1,9 @@
 /* tree_lsystem.c — the tree plugin `tree_lsystem`: L-systems in the L-parser language (001,
  * MODELS.md §3) grown to the age each variant asks for by the branch-number law (002,
- * MODELS.md §4). This file owns the schema, the plugin state and the order of work; reading,
- * derivation, the turtle, the mesh, box counting and the law live in their own files.
+ * MODELS.md §4). This is the plugin file, the only one that calls the host: it owns the
+ * descriptor, the plugin state and the order of work; the schema (lsys_schema.c), reading,
+ * derivation, the turtle, the mesh, box counting and the law are the model, which reports
+ * failures in an lsys_error and takes warnings and random numbers as callbacks.
  *
  * generate() for one variant:
  *   1. the variant's height H(age) from height and height_by_age;
@@ -24,8 +26,10 @@
 #include "lsys_derive.h"
 #include "lsys_mesh.h"
 #include "lsys_palette.h"
+#include "lsys_schema.h"
 #include "lsys_system.h"
 #include "lsys_turtle.h"
+#include "plugin_host.h"
 #include "sylva/plugin.h"
 
 #define SILHOUETTE_LEVEL 10     /* the silhouette raster is 1024 x 1024 */
@@ -33,64 +37,6 @@
 #define SILHOUETTE_FIT_MAX 7    /* ... 128 x 128 (boxes of 8 pixels and more) */
 #define MAX_NESTING 65536       /* [ ] and { } nesting */
 #define START_COLOUR 2          /* Lparser's starting colour index */
-
-static const char *const shape_choices[] = {"auto", "prism", "cylinder", NULL};
-static const double default_height_by_age[] = {0.0, 0.0, 1.0, 1.0};
-
-static const sylva_param_spec palette_members[] = {
-    {.name = "index", .type = SYLVA_P_INT, .flags = SYLVA_PARAM_REQUIRED | SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX,
-     .min = 0, .max = 65535, .help = "Colour index as c(x) sets it."},
-    {.name = "albedo", .type = SYLVA_P_VEC3, .flags = SYLVA_PARAM_REQUIRED | SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX,
-     .min = 0, .max = 1, .help = "Linear RGB reflectance of wood and leaves drawn in this colour."},
-    {.name = "transmittance", .type = SYLVA_P_VEC3, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
-     .max = 1, .help = "Linear RGB transmittance of leaves (polygons) in this colour; default half the albedo."},
-};
-
-static const sylva_param_spec tree_params[] = {
-    {.name = "source", .type = SYLVA_P_STRING,
-     .help = "The L-system text itself, numeric (Lparser 4) or keyword (Lparser 2.1) dialect; give source or file."},
-    {.name = "file", .type = SYLVA_P_PATH,
-     .help = "An L-parser .ls file in either dialect, relative to the scene file; give source or file."},
-    {.name = "recursion", .type = SYLVA_P_INT, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
-     .max = LSYS_MAX_RECURSION, .help = "Derivation steps of the full-grown tree (default: the file's)."},
-    {.name = "angle", .type = SYLVA_P_REAL, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = -360,
-     .max = 360, .unit = "deg", .help = "Standard turning angle (default: the file's)."},
-    {.name = "thickness", .type = SYLVA_P_REAL, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
-     .max = 1e6, .unit = "%", .help = "Width of a segment in percent of its length at the start (default: the file's)."},
-    {.name = "min_thickness", .type = SYLVA_P_REAL, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
-     .max = 1e6, .unit = "%", .help = "Smallest width of a segment in percent of its length (default: the file's, else 0)."},
-    {.name = "base_length", .type = SYLVA_P_REAL, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
-     .max = 1e9, .help = "Length of F at the start in the file's units; 0 takes the dialect's (numeric 100, keyword 1)."},
-    {.name = "height", .type = SYLVA_P_REAL,
-     .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_MIN_EXCLUSIVE | SYLVA_PARAM_HAS_MAX, .def = 10, .min = 0,
-     .max = 10000, .unit = "m", .help = "Height of the full-grown tree (age 1); each variant is scaled to its own height."},
-    {.name = "unit_length", .type = SYLVA_P_REAL, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
-     .max = 1e6, .unit = "m", .help = "Metres per file unit; when positive the models keep the L-system's own size and height is not used."},
-    {.name = "segment_shape", .type = SYLVA_P_ENUM, .def_str = "auto", .choices = shape_choices,
-     .help = "Segments as prisms (Lparser's blocks) or joined cylinders; auto follows the file's shape line, else cylinders."},
-    {.name = "sides", .type = SYLVA_P_INT, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .def = 8, .min = 5,
-     .max = LSYS_MESH_MAX_SIDES, .help = "Corners of a cylinder's cross-section (prisms have 4)."},
-    {.name = "lenient", .type = SYLVA_P_BOOL, .def = 0,
-     .help = "Drop unknown symbols and ignore unsupported keywords with a warning instead of failing."},
-    {.name = "max_string", .type = SYLVA_P_INT, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .def = 33554432,
-     .min = 1, .max = 1e9, .unit = "bytes", .help = "Longest derived string; a derivation that would grow past it fails."},
-    {.name = "max_segments", .type = SYLVA_P_INT, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .def = 2000000,
-     .min = 1, .max = 1e8, .help = "Most segments (F, Z) a model may draw."},
-    {.name = "max_polygons", .type = SYLVA_P_INT, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .def = 2000000,
-     .min = 1, .max = 1e8, .help = "Most polygons (leaves) a model may draw."},
-    {.name = "max_polygon_vertices", .type = SYLVA_P_INT, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX,
-     .def = 4096, .min = 3, .max = 65536, .help = "Most vertices open polygons may hold at once."},
-    {.name = "height_by_age", .type = SYLVA_P_POLYLINE, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
-     .max = 1, .def_list = default_height_by_age, .def_len = 2, .min_len = 1,
-     .help = "Height as a fraction of height against the normalised age, points [age, fraction] with age in [0, 1]."},
-    {.name = "branch_law", .type = SYLVA_P_BOOL, .def = 1,
-     .help = "Choose each age variant's recursion level by the branch-number law N2 = N1 (H1/H2)^(-D/2)."},
-    {.name = "box_dimension", .type = SYLVA_P_REAL, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
-     .max = 3, .help = "D of the branch-number law; 0 measures it from the full-grown tree's silhouette."},
-    {.name = "palette", .type = SYLVA_P_GROUP_LIST, .group = palette_members,
-     .n_group = sizeof palette_members / sizeof palette_members[0],
-     .help = "Colours for colour indices, overriding the file's color lines and the default palette."},
-};
 
 typedef struct palette_override {
     int32_t index;
@@ -125,14 +71,9 @@ typedef struct tree_state {
     sylva_tree_stats last;
 } tree_state;
 
-typedef struct host_ref {
-    const sylva_host_api *api;
-    sylva_host *host;
-} host_ref;
-
 static void warn_to_host(void *ctx, const char *sentence)
 {
-    host_ref *h = ctx;
+    const plugin_host_ref *h = ctx;
     h->api->log(h->host, SYLVA_LOG_WARN, "%s", sentence);
 }
 
@@ -240,7 +181,7 @@ static int tree_create(const sylva_host_api *api, sylva_host *host, const sylva_
         api->error(host, "tree_lsystem: out of memory for its state");
         return SYLVA_ERR_NOMEM;
     }
-    host_ref ref = {api, host};
+    plugin_host_ref ref = {api, host};
     lsys_read_options ro = {.lenient = (int)sylva_param_int(params, "lenient"), .warn = warn_to_host, .warn_ctx = &ref};
     lsys_error e = {{0}};
     int rc = has_file ? lsys_read_file(file, &ro, &s->sys, &e)
@@ -322,11 +263,15 @@ static int silhouette_init(box_raster *r, const lsys_turtle_stats *st)
 
 /* ---- the branch-number law's figures of the full-grown tree ---------------------------------- */
 
+typedef struct level_counts {
+    uint64_t *branches; /* recursion + 1 counts */
+    lsys_error *err;
+} level_counts;
+
 static int count_level(void *ctx, uint32_t level, const unsigned char *s, size_t n)
 {
-    uint64_t *branches = ctx;
-    branches[level] = branch_count(s, n);
-    return 0;
+    level_counts *c = ctx;
+    return branch_count(s, n, &c->branches[level], c->err);
 }
 
 static int prepare_law(tree_state *s, const sylva_host_api *api, sylva_host *host)
@@ -340,7 +285,8 @@ static int prepare_law(tree_state *s, const sylva_host_api *api, sylva_host *hos
     lsys_error e = {{0}};
     unsigned char *str = NULL; /* owned here */
     size_t n = 0;
-    int rc = lsys_derive(s->sys, s->recursion, s->max_string, count_level, s->level_branches, &str, &n, &e);
+    level_counts counts = {s->level_branches, &e};
+    int rc = lsys_derive(s->sys, s->recursion, s->max_string, count_level, &counts, &str, &n, &e);
     if (rc) return fail(api, host, rc, &e);
     s->law_dimension = s->box_dimension;
     if (!(s->law_dimension > 0)) {
@@ -517,7 +463,8 @@ static int tree_generate(void *state, const sylva_host_api *api, sylva_host *hos
     rc = interpret(s, api, host, str, n, sinks, have_raster ? 2 : 1, &st, &e);
     if (!rc) rc = lsys_mesh_finish(mesh);
     uint64_t triangles = lsys_mesh_triangles(mesh);
-    uint64_t branches = rc ? 0 : branch_count(str, n);
+    uint64_t branches = 0;
+    if (!rc) rc = branch_count(str, n, &branches, &e);
     lsys_mesh_free(mesh);
     free(mo.mat);
     free(str);
@@ -570,8 +517,8 @@ static const sylva_plugin tree_lsystem = {
     .name = "tree_lsystem",
     .summary = "Trees from L-systems in the L-parser language, grown by the branch-number law.",
     .version = "1.0",
-    .params = tree_params,
-    .n_params = sizeof tree_params / sizeof tree_params[0],
+    .params = lsys_schema,
+    .n_params = LSYS_SCHEMA_COUNT,
     .create = tree_create,
     .generate = tree_generate,
     .destroy = tree_destroy,

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "eco_schema.h"
 #include "eco_sim.h"
 #include "eco_species.h"
 #include "harness.h"
@@ -43,13 +44,22 @@ static inline eco_config fixture_config(uint32_t patches)
     return c;
 }
 
-/* A host like the one scene_build gives an ecology plugin. */
+/* A host like the one scene_build gives an ecology plugin, and the model's random source made of
+ * its streams (as the plugin file makes it). */
 typedef struct fixture_host {
     scene *scene;
     sylva_host host;
     err_buf err;
     const sylva_host_api *api;
+    eco_random rnd;  /* ctx: this fixture */
+    plugin_err fail;    /* the model's last failure */
 } fixture_host;
+
+static inline void fixture_stream(void *ctx, sylva_rng *rng, const char *purpose, uint64_t index)
+{
+    fixture_host *f = ctx;
+    f->api->rng_init(&f->host, rng, purpose, index);
+}
 
 static inline void fixture_host_init(fixture_host *f, uint64_t seed)
 {
@@ -59,6 +69,7 @@ static inline void fixture_host_init(fixture_host *f, uint64_t seed)
     f->host.kind = SYLVA_KIND_ECOLOGY;
     f->host.quiet = 1;
     f->api = host_api_table();
+    f->rnd = (eco_random){.stream = fixture_stream, .uniform = f->api->rng_uniform, .ctx = f};
 }
 
 static inline void fixture_host_release(fixture_host *f)
@@ -104,7 +115,7 @@ static inline int fixture_sim(fixture_host *f, const sylva_heightfield *hf, cons
     sylva_ecology_request req = {.size = sizeof req, .seed = f->host.seed, .terrain = hf, .species = info,
                                  .n_species = n};
     f->host.n_species = n;
-    return eco_sim_new(f->api, &f->host, NULL, cfg, NULL, &req, out);
+    return eco_sim_new(&f->rnd, NULL, cfg, NULL, &req, out, &f->fail);
 }
 
 /* 1 when two runs hold the same plants, field by field, in the same order. */

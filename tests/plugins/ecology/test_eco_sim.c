@@ -2,11 +2,14 @@
  * on uniform terrain, a species outside its optimum dying out, the same seeds giving the same
  * plants on any thread count, save -> load -> continue equal to an uninterrupted run, and bad
  * input (unknown species, a growth area outside the terrain, a damaged state file). */
+#include <dirent.h>
 #include <stdio.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "eco_fixture.h"
 #include "eco_growth.h"
+#include "work_dir.h"
 
 static double flat(double x, double y) { return 0.0; }
 static double hills(double x, double y) { return 8 * sin(x / 17.0) * cos(y / 23.0) + 0.05 * x; }
@@ -16,7 +19,7 @@ static sylva_heightfield small_flat(void) { return fixture_heightfield(31, 31, 0
 
 static void run_years(fixture_host *f, eco_sim *s, uint32_t years)
 {
-    for (uint32_t y = 0; y < years; y++) CHECK_INT(eco_sim_step(s, f->api, &f->host), 0);
+    for (uint32_t y = 0; y < years; y++) CHECK_INT(eco_sim_step(s, &f->rnd, &f->fail), 0);
 }
 
 /* Algorithm 8 by brute force over all pairs; equal power goes to the older plant, then to the
@@ -49,7 +52,7 @@ TEST(dominance_grid_equals_all_pairs)
     for (int y = 0; y < 60; y++) {
         run_years(&f, s, 1);
         /* eco_sim_step removed the dead after the search; search again for the living */
-        CHECK_INT(eco_find_dominance(s, f.api, &f.host), 0);
+        CHECK_INT(eco_find_dominance(s, &f.fail), 0);
         for (uint32_t j = 0; j < s->n_species; j++)
             for (uint32_t q = 0; q < s->pop[j].n; q++) {
                 const eco_plant *a = &s->pop[j].plants[q];
@@ -188,9 +191,9 @@ TEST(save_load_continue_equals_uninterrupted)
     snprintf(path, sizeof path, "/tmp/sylva_eco_state_%ld.bin", (long)getpid());
     eco_sim *whole = grown(&f, &hf, 2, 80);
     eco_sim *first = grown(&f, &hf, 2, 35);
-    CHECK_INT(eco_sim_save(first, f.api, &f.host, path), 0);
+    CHECK_INT(eco_sim_save(first, path, &f.fail), 0);
     eco_sim *second = grown(&f, &hf, 1, 0);
-    CHECK_INT(eco_sim_load(second, f.api, &f.host, path), 0);
+    CHECK_INT(eco_sim_load(second, path, &f.fail), 0);
     CHECK_INT(second->year, 35);
     CHECK(fixture_same_plants(first, second));
     run_years(&f, second, 45);
@@ -201,20 +204,76 @@ TEST(save_load_continue_equals_uninterrupted)
     fseek(fp, 100, SEEK_SET);
     fputc(0x5a, fp);
     fclose(fp);
-    CHECK(eco_sim_load(second, f.api, &f.host, path) != 0);
-    CHECK_STR_CONTAINS(f.err.msg, "damaged");
+    CHECK(eco_sim_load(second, path, &f.fail) != 0);
+    CHECK_STR_CONTAINS(f.fail.msg, "damaged");
     CHECK(fixture_same_plants(whole, second));
     /* a state from another species list is refused */
-    CHECK_INT(eco_sim_save(first, f.api, &f.host, path), 0);
+    CHECK_INT(eco_sim_save(first, path, &f.fail), 0);
     eco_config cfg = fixture_config(25);
     const char *names[] = {"beech"};
     eco_sim *other = NULL;
     CHECK_INT(fixture_sim(&f, &hf, &cfg, 1, names, NULL, &other), 0);
-    CHECK(eco_sim_load(other, f.api, &f.host, path) != 0);
-    CHECK_STR_CONTAINS(f.err.msg, "saved from another terrain");
-    CHECK(eco_sim_load(other, f.api, &f.host, "/nonexistent/state.bin") == SYLVA_ERR_IO);
+    CHECK(eco_sim_load(other, path, &f.fail) != 0);
+    CHECK_STR_CONTAINS(f.fail.msg, "saved from another terrain");
+    CHECK(eco_sim_load(other, "/nonexistent/state.bin", &f.fail) == SYLVA_ERR_IO);
     remove(path);
     eco_sim_free(whole), eco_sim_free(first), eco_sim_free(second), eco_sim_free(other);
+    free(hf.z);
+    fixture_host_release(&f);
+}
+
+/* 1 when the file at path holds exactly `text`. */
+static int file_holds(const char *path, const char *text)
+{
+    char buf[256] = "";
+    FILE *fp = fopen(path, "rb");
+    size_t n = fp ? fread(buf, 1, sizeof buf - 1, fp) : 0;
+    if (fp) fclose(fp);
+    return n == strlen(text) && !memcmp(buf, text, n);
+}
+
+/* Entries of the work folder. */
+static int work_entries(void)
+{
+    int n = 0;
+    DIR *d = opendir(work_dir());
+    for (struct dirent *e; d && (e = readdir(d));) n += e->d_name[0] != '.';
+    if (d) closedir(d);
+    return n;
+}
+
+TEST(save_never_writes_through_a_planted_link)
+{
+    fixture_host f;
+    fixture_host_init(&f, 9);
+    sylva_heightfield hf = fixture_heightfield(21, 21, 0, 0, 2, hills);
+    eco_sim *s = grown(&f, &hf, 1, 10), *back = grown(&f, &hf, 1, 0);
+    char victim[1200], state[1200], planted[1300];
+    snprintf(victim, sizeof victim, "%s", work_file("victim.txt", "keep me\n"));
+    snprintf(state, sizeof state, "%s", work_path("state.bin"));
+    /* A link at the name the temporary file used to take (the state's path, ".tmp-", the pid). */
+    snprintf(planted, sizeof planted, "%s.tmp-%ld", state, (long)getpid());
+    CHECK(symlink(victim, planted) == 0);
+    CHECK_INT(eco_sim_save(s, state, &f.fail), 0);
+    CHECK(file_holds(victim, "keep me\n"));
+    struct stat st;
+    CHECK(lstat(state, &st) == 0 && S_ISREG(st.st_mode));
+    CHECK(s && back && eco_sim_load(back, state, &f.fail) == 0 && fixture_same_plants(s, back));
+    /* A link planted at the state's own name is replaced, not written through. */
+    unlink(state);
+    CHECK(symlink(victim, state) == 0);
+    CHECK_INT(eco_sim_save(s, state, &f.fail), 0);
+    CHECK(file_holds(victim, "keep me\n"));
+    CHECK(lstat(state, &st) == 0 && S_ISREG(st.st_mode));
+    CHECK_INT(work_entries(), 3); /* victim, link, state: no temporary left */
+    /* A save that cannot take its name (a folder stands there) removes its temporary. */
+    char folder[1200];
+    snprintf(folder, sizeof folder, "%s", work_path("folder"));
+    CHECK(mkdir(folder, 0700) == 0);
+    CHECK_INT(eco_sim_save(s, folder, &f.fail), SYLVA_ERR_IO);
+    CHECK_STR_CONTAINS(f.fail.msg, "cannot write the ecology state");
+    CHECK_INT(work_entries(), 4);
+    eco_sim_free(s), eco_sim_free(back);
     free(hf.z);
     fixture_host_release(&f);
 }
@@ -282,24 +341,24 @@ TEST(bad_growth_area_and_species)
     eco_sim *s = NULL;
     CHECK(fixture_sim(&f, &hf, &cfg, 2, names, NULL, &s) != 0);
     CHECK(s == NULL);
-    CHECK_STR_CONTAINS(f.err.msg, "reaches outside the terrain's 30 x 30 patches");
+    CHECK_STR_CONTAINS(f.fail.msg, "reaches outside the terrain's 30 x 30 patches");
     cfg = fixture_config(30);
     sylva_species_info info[2] = {{.size = sizeof info[0], .name = "shrub", .model_height = 2},
                                   {.size = sizeof info[1], .name = "beech", .model_height = 20}};
     sylva_ecology_request req = {.size = sizeof req, .terrain = &hf, .species = info, .n_species = 2};
-    CHECK(eco_sim_new(f.api, &f.host, NULL, &cfg, "beech, bech", &req, &s) != 0);
-    CHECK_STR_CONTAINS(f.err.msg, "unknown species 'bech'; the scene's species are shrub, beech");
-    CHECK_INT(eco_sim_new(f.api, &f.host, NULL, &cfg, "beech", &req, &s), 0);
+    CHECK(eco_sim_new(&f.rnd, NULL, &cfg, "beech, bech", &req, &s, &f.fail) != 0);
+    CHECK_STR_CONTAINS(f.fail.msg, "unknown species 'bech'; the scene's species are shrub, beech");
+    CHECK_INT(eco_sim_new(&f.rnd, NULL, &cfg, "beech", &req, &s, &f.fail), 0);
     CHECK_INT(s->n_species, 1);
     CHECK_INT(s->request_index[0], 1);
     eco_sim_free(s);
     /* the limit on living plants is an error, never a crash */
     cfg.max_plants = 50;
-    CHECK_INT(eco_sim_new(f.api, &f.host, NULL, &cfg, NULL, &req, &s), 0);
+    CHECK_INT(eco_sim_new(&f.rnd, NULL, &cfg, NULL, &req, &s, &f.fail), 0);
     int rc = 0;
-    for (int y = 0; y < 200 && !rc; y++) rc = eco_sim_step(s, f.api, &f.host);
+    for (int y = 0; y < 200 && !rc; y++) rc = eco_sim_step(s, &f.rnd, &f.fail);
     CHECK_INT(rc, SYLVA_ERR_LIMIT);
-    CHECK_STR_CONTAINS(f.err.msg, "max_plants = 50");
+    CHECK_STR_CONTAINS(f.fail.msg, "max_plants = 50");
     eco_sim_free(s);
     free(hf.z);
     fixture_host_release(&f);
@@ -308,4 +367,5 @@ TEST(bad_growth_area_and_species)
 TEST_LIST(TEST_CASE(dominance_grid_equals_all_pairs), TEST_CASE(single_species_self_thins),
           TEST_CASE(species_outside_its_optimum_dies_out), TEST_CASE(same_seeds_same_plants_any_threads),
           TEST_CASE(stream_seeds_change_only_their_purpose), TEST_CASE(save_load_continue_equals_uninterrupted),
+          TEST_CASE(save_never_writes_through_a_planted_link),
           TEST_CASE(growth_area_keeps_plants_inside), TEST_CASE(never_in_water), TEST_CASE(bad_growth_area_and_species))

@@ -8,6 +8,12 @@
 #include "params/validate.h"
 #include "params/yaml_doc.h"
 
+static void fixture_stream(void *ctx, sylva_rng *rng, const char *purpose, uint64_t index)
+{
+    aono_fixture *f = ctx;
+    host_api_table()->rng_init(&f->host, rng, purpose, index);
+}
+
 static int fixture_start(aono_fixture *f, uint64_t seed)
 {
     memset(f, 0, sizeof *f);
@@ -16,6 +22,7 @@ static int fixture_start(aono_fixture *f, uint64_t seed)
     if (!f->scene || !f->arena) return err_set(&f->err, "out of memory");
     host_init(&f->host, f->scene, ".", seed, "tree plugin 'tree_aono_kunii' for species 'test'", &f->err);
     f->host.quiet = 1;
+    f->env = (aono_env){.stream = fixture_stream, .uniform = host_api_table()->rng_uniform, .ctx = f};
     return 0;
 }
 
@@ -73,7 +80,7 @@ int aono_fixture_generate(aono_fixture *f, double age, mesh **out, double *heigh
 
 int aono_fixture_config(aono_fixture *f, aono_config *cfg)
 {
-    return aono_config_read(host_api_table(), &f->host, f->params, cfg);
+    return aono_config_read(f->params, cfg, &f->fail);
 }
 
 int aono_fixture_grow(aono_fixture *f, uint32_t levels, aono_skeleton *skel)
@@ -81,7 +88,7 @@ int aono_fixture_grow(aono_fixture *f, uint32_t levels, aono_skeleton *skel)
     aono_config cfg;
     int rc = aono_fixture_config(f, &cfg);
     if (rc) return rc;
-    rc = aono_grow(&cfg, levels, host_api_table(), &f->host, skel);
+    rc = aono_grow(&cfg, levels, &f->env, skel, &f->fail);
     aono_config_release(&cfg);
     return rc;
 }

@@ -25,6 +25,8 @@ typedef struct aono_fixture {
     sylva_host host;
     const sylva_params *params; /* in arena, NULL when validation failed */
     void *state;           /* the plugin's, NULL when create() failed */
+    aono_env env;          /* the model's streams: the host's (ctx: this fixture) */
+    plugin_err fail;         /* the model's last failure (aono_fixture_config, aono_fixture_grow) */
 } aono_fixture;
 
 /* Validates `yaml` (the plugin block's keys, e.g. "levels: 3\npattern: ternary\n") and runs
@@ -40,10 +42,11 @@ void aono_fixture_close(aono_fixture *f);
  * plugin's status; *height gets out->height. */
 int aono_fixture_generate(aono_fixture *f, double age, mesh **out, double *height);
 
-/* Reads the plugin's validated parameters into *cfg (aono_config_release after). */
+/* Reads the plugin's validated parameters into *cfg (aono_config_release after); a failure is
+ * in f->fail. */
 int aono_fixture_config(aono_fixture *f, aono_config *cfg);
 
-/* Grows the skeleton of `levels` levels with the fixture's configuration. */
+/* Grows the skeleton of `levels` levels with the fixture's configuration and f->env. */
 int aono_fixture_grow(aono_fixture *f, uint32_t levels, aono_skeleton *skel);
 
 #endif

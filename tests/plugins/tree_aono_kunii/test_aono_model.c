@@ -226,7 +226,7 @@ TEST(law_drives_branching_angle)
     CHECK_NEAR(aono_child_angle(&cfg, 1, 1), 60.0, 1e-12);
     CHECK_NEAR(aono_child_angle(&cfg, 1, 3), 40.0, 1e-12);
     aono_skeleton s = {0};
-    CHECK_INT(aono_grow(&cfg, 3, host_api_table(), &fx.host, &s), 0);
+    CHECK_INT(aono_grow(&cfg, 3, &fx.env, &s, &fx.fail), 0);
     /* angle between each level-3 second child and its mother is 40° */
     for (uint32_t k = 0; k < s.n; k++) {
         const aono_segment *c = &s.seg[k], *m = c->parent == AONO_NONE ? NULL : &s.seg[c->parent];
@@ -317,7 +317,7 @@ static int grow_tips(const char *yaml, uint32_t levels, aono_skeleton *s)
     aono_fixture fx;
     int rc = aono_fixture_open(&fx, yaml, 11);
     if (!rc) rc = aono_fixture_grow(&fx, levels, s);
-    if (rc) fprintf(stderr, "%s\n", fx.err.msg);
+    if (rc) fprintf(stderr, "%s%s\n", fx.err.msg, fx.fail.msg);
     aono_fixture_close(&fx);
     return rc;
 }

@@ -6,7 +6,16 @@
 
 #include "box_count.h"
 #include "branch_law.h"
+#include "fault_alloc.h"
 #include "lsys_test_util.h"
+
+/* branch_count's figure, or UINT64_MAX when it fails. */
+static uint64_t count_of(const char *str)
+{
+    uint64_t n = 0;
+    lsys_error e = {{0}};
+    return branch_count((const unsigned char *)str, strlen(str), &n, &e) ? UINT64_MAX : n;
+}
 
 TEST(eq6_test_vector)
 {
@@ -119,7 +128,7 @@ TEST(branch_count_of_strings)
         {"F]]F[F", 2},               /* unbalanced: stray ] ignored, open block counted */
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-        uint64_t got = branch_count((const unsigned char *)cases[i].s, strlen(cases[i].s));
+        uint64_t got = count_of(cases[i].s);
         if (got != cases[i].n) fprintf(stderr, "branch_count(\"%s\") = %llu\n", cases[i].s, (unsigned long long)got);
         CHECK_INT(got, cases[i].n);
     }
@@ -128,10 +137,32 @@ TEST(branch_count_of_strings)
     for (uint32_t k = 1; s && k <= 6; k++) {
         char *str = test_derive(s, k);
         CHECK(str != NULL);
-        if (str) CHECK_INT(branch_count((const unsigned char *)str, strlen(str)), 1u << (k - 1));
+        if (str) CHECK_INT(count_of(str), 1u << (k - 1));
         free(str);
     }
     lsys_system_free(s);
+}
+
+TEST(branch_count_reports_a_failed_allocation)
+{
+    /* 300 nested blocks each drawing wood: the bracket stack (256 flags) must grow once. */
+    static char str[601];
+    for (int i = 0; i < 300; i++) str[2 * i] = '[', str[2 * i + 1] = 'F';
+    CHECK_INT(count_of(str), 300);
+    /* Each of its two allocations failing in turn: a failure and its sentence, never a count
+     * that leaves out the blocks past the stack (255 before), and nothing left allocated. */
+    for (uint64_t k = 1; k <= 2; k++) {
+        uint64_t n = 7;
+        lsys_error e = {{0}};
+        size_t live = fault_alloc_live();
+        fault_alloc_arm(k, 0);
+        int rc = branch_count((const unsigned char *)str, strlen(str), &n, &e);
+        fault_alloc_arm(0, 0);
+        CHECK_INT(rc, LSYS_ERR_NOMEM);
+        CHECK_INT(n, 0);
+        CHECK_STR_CONTAINS(e.msg, "out of memory counting the branches");
+        CHECK_INT(fault_alloc_live(), live);
+    }
 }
 
 TEST(level_choice)
@@ -154,4 +185,5 @@ TEST(level_choice)
 
 TEST_LIST(TEST_CASE(eq6_test_vector), TEST_CASE(eq3_regression_of_the_papers_counts), TEST_CASE(line_has_dimension_one),
           TEST_CASE(filled_square_has_dimension_two), TEST_CASE(sierpinski_triangle_has_dimension_log3_log2),
-          TEST_CASE(branch_count_of_strings), TEST_CASE(level_choice))
+          TEST_CASE(branch_count_of_strings),
+          TEST_CASE(branch_count_reports_a_failed_allocation), TEST_CASE(level_choice))

@@ -184,6 +184,28 @@ TEST(header_and_keyword_errors)
     CHECK_STR_CONTAINS(e.msg, "'mutation 3' is not supported");
 }
 
+TEST(arguments_beyond_the_range_of_numbers)
+{
+    lsys_system *s = NULL;
+    lsys_error e = {{0}};
+    warnings w = {0};
+    /* 0e400 is zero, as strtod reads it, not 0 times infinity. */
+    double v = -1;
+    CHECK_INT(lsys_arg_group((const unsigned char *)"(0e400)", 7, &v), 7);
+    CHECK(v == 0.0 && !signbit(v));
+    CHECK_INT(read_with("axiom c(0e400)F\n", 0, &s, &e, &w), LSYS_OK);
+    lsys_system_free(s);
+    s = NULL;
+    /* A number past the largest double is refused where it stands, in both modes. */
+    CHECK_INT(lsys_arg_group((const unsigned char *)"(1e400)", 7, &v), 0);
+    CHECK_INT(read_with("axiom F c(1e400)F\n", 0, &s, &e, &w), LSYS_ERR_SYNTAX);
+    CHECK(s == NULL);
+    CHECK_STR_CONTAINS(e.msg, "t.ls:1:10: the argument (1e400) in the axiom is beyond the range of numbers");
+    CHECK_INT(read_with("2\n30\n10\nA\nA=F-(-2e99999)A\n", 1, &s, &e, &w), LSYS_ERR_SYNTAX);
+    CHECK(s == NULL);
+    CHECK_STR_CONTAINS(e.msg, "t.ls:5:5: the argument (-2e99999) in rule 'A' is beyond the range of numbers");
+}
+
 TEST(missing_file_is_an_io_error)
 {
     lsys_system *s = NULL;
@@ -194,4 +216,5 @@ TEST(missing_file_is_an_io_error)
 
 TEST_LIST(TEST_CASE(numeric_dialect_with_comments), TEST_CASE(keyword_dialect), TEST_CASE(keyword_defaults),
           TEST_CASE(argument_forms), TEST_CASE(unknown_symbol_is_located), TEST_CASE(header_and_keyword_errors),
+          TEST_CASE(arguments_beyond_the_range_of_numbers),
           TEST_CASE(missing_file_is_an_io_error))

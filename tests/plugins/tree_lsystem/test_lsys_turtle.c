@@ -320,6 +320,12 @@ TEST(colours)
     CHECK_INT(rec.n_seg, 6);
     int want[6] = {2, 3, 7, 3, 0, 0};
     for (int i = 0; i < 6; i++) CHECK_INT(rec.seg_colour[i], want[i]);
+    /* 0e400 is zero (not 0 times infinity, a NaN cast to an index); a number past the range of
+     * doubles is no argument, so c counts on by one. */
+    CHECK_INT(test_turtle("c(0e400)Fc(1e400)F", &cfg, &rec, NULL, &e), LSYS_OK);
+    CHECK_INT(rec.n_seg, 2);
+    CHECK_INT(rec.seg_colour[0], 0);
+    CHECK_INT(rec.seg_colour[1], 1);
 }
 
 TEST(limits_are_named)
@@ -366,6 +372,14 @@ TEST(unbalanced_strings_are_survived)
     CHECK_NEAR(st.lo[2], 0, 1e-12);
     CHECK_NEAR(st.lo[0], -0.05, 1e-12);
     CHECK_NEAR(st.hi[1], 0.05, 1e-12);
+    /* Polygons without enough vertices: the first `{` closes before any vertex was ever stored
+     * (no vertex buffer yet), the others hold one and two. */
+    CHECK_INT(test_turtle("{}F{.}{.f.}", &cfg, &rec, &st, &e), LSYS_OK);
+    CHECK_INT(rec.n_seg, 1);
+    CHECK_INT(rec.n_poly, 0);
+    CHECK_INT(st.polygons, 0);
+    CHECK_INT(st.stray_polygon_ends, 0);
+    CHECK_INT(st.open_at_end, 0);
 }
 
 TEST_LIST(TEST_CASE(rotation_matrices_of_table_2), TEST_CASE(turtle_starts_up_and_turns_as_table_2),

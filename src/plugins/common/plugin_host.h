@@ -1,0 +1,23 @@
+/* plugin_host.h — the adapters a plugin file uses to hand its model what the model takes as
+ * plain data and callbacks: the model's failure to the host, and the host's keyed random
+ * streams as a `stream` callback. Only plugin files call these (they call the host). */
+#ifndef PLUGIN_HOST_H
+#define PLUGIN_HOST_H
+
+#include "plugin_err.h"
+#include "sylva/plugin.h"
+
+/* The host of one call, as the ctx of a model's callbacks. Lives on the caller's stack. */
+typedef struct plugin_host_ref {
+    const sylva_host_api *api;
+    sylva_host *host;
+} plugin_host_ref;
+
+/* Hands err to the host (api->param_error at its key when it names one, else api->error) and
+ * returns its status (SYLVA_ERR_INTERNAL when none was set). */
+int plugin_report(const sylva_host_api *api, sylva_host *host, const plugin_err *err);
+
+/* A model's `stream` callback: api->rng_init on the host of ctx (a plugin_host_ref). */
+void plugin_host_stream(void *ctx, sylva_rng *rng, const char *purpose, uint64_t index);
+
+#endif

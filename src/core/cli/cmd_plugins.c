@@ -108,7 +108,13 @@ int cmd_plugins(int argc, char **argv)
             return EXIT_OK;
         }
         const char *value = NULL;
-        if (!strcmp(a, "--manifest") && i + 1 < argc && !manifest && !describe) {
+        if (!strcmp(a, "--manifest")) {
+            if (i + 1 >= argc || manifest || describe) {
+                fprintf(stderr, "sylva %s: %s\n", cmd, i + 1 >= argc ? "--manifest needs a module "
+                        "file" : "give one of --describe NAME and --manifest MODULE");
+                plugins_usage(stderr, cmd);
+                return EXIT_USAGE;
+            }
             manifest = argv[++i];
             continue;
         }

@@ -155,8 +155,9 @@ static int load_dtm(const sylva_host_api *api, sylva_host *host, const sylva_par
 static int cell_field(const sylva_host_api *api, sylva_host *host, const sylva_params *params,
                       const char *name, const ifs_dtm *d, const double **out)
 {
-    const sylva_value *v = sylva_param(params, name);
+    const sylva_value *v = api->param(host, params, name); /* NULL: not in the schema (message set) */
     *out = NULL;
+    if (!v) return SYLVA_ERR_INTERNAL;
     if (!v->is_set) return SYLVA_OK;
     if (v->rows != d->ny - 1 || v->cols != d->nx - 1)
         return api->param_error(host, params, name, "%s has %u rows of %u values; the DTM has %u "

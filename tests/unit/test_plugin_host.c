@@ -734,6 +734,32 @@ TEST(opening_the_registry_opens_no_module)
     plugin_registry_free(reg);
 }
 
+/* A plugin found first stays where it is while later lookups open more modules (more than the
+ * registry's first allocation holds). */
+TEST(found_plugins_stay_valid)
+{
+    err_buf err;
+    plugin_registry *reg = plugin_registry_open_path(PLUGIN_DIR ":" SYLVA_PLUGIN_BUILD_DIR, &err);
+    CHECK(reg != NULL);
+    if (!reg) return;
+    const loaded_plugin *first = plugin_registry_find(reg, "abi_one_zero", 0, &err);
+    CHECK(first != NULL);
+    CHECK_INT(plugin_registry_load_all(reg, &err), 0);
+    CHECK(plugin_registry_count(reg) > 8);
+    CHECK(plugin_registry_find(reg, "abi_one_zero", 0, &err) == first);
+    if (first) CHECK(!strcmp(first->desc->name, "abi_one_zero"));
+    /* a kind mismatch lists every plugin of the kind asked for, opened or not */
+    plugin_registry_free(reg);
+    reg = plugin_registry_open_path(PLUGIN_DIR ":" SYLVA_PLUGIN_BUILD_DIR, &err);
+    CHECK(reg != NULL);
+    if (!reg) return;
+    err_clear(&err);
+    CHECK(plugin_registry_find(reg, "abi_one_zero", SYLVA_KIND_TREE, &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "the tree plugins are: ");
+    CHECK_STR_CONTAINS(err.msg, "tree_vessel");
+    plugin_registry_free(reg);
+}
+
 TEST(abi_1_0_module_loads)
 {
     plugin_registry *reg = open_test_plugins();
@@ -954,7 +980,8 @@ TEST(presets_printed_with_values)
 }
 
 TEST_LIST(TEST_CASE(example_is_listed_with_schema), TEST_CASE(failing_operations_still_load),
-          TEST_CASE(opening_the_registry_opens_no_module), TEST_CASE(abi_1_0_module_loads),
+          TEST_CASE(opening_the_registry_opens_no_module), TEST_CASE(found_plugins_stay_valid),
+          TEST_CASE(abi_1_0_module_loads),
           TEST_CASE(manifest_mismatch_and_damage_are_refused),
           TEST_CASE(manifest_written_from_the_module),
           TEST_CASE(build_tree_search_only_from_the_build_tree),

@@ -61,7 +61,8 @@ typedef struct registry_problem {
 
 struct plugin_registry {
     arena *strings;                 /* owns every string and descriptor copy below */
-    loaded_plugin *plugins;         /* malloc'ed array */
+    loaded_plugin **plugins;        /* malloc'ed array of entries in the arena: a pointer handed
+                                       out stays valid while later lookups open more modules */
     uint32_t n_plugins, cap_plugins;
     registry_problem *problems;     /* malloc'ed array */
     uint32_t n_problems, cap_problems;
@@ -110,7 +111,7 @@ static int SYLVA_PRINTF(4, 5) record_problem(plugin_registry *reg, const char *f
 static const loaded_plugin *registry_lookup(const plugin_registry *reg, const char *name)
 {
     for (uint32_t i = 0; i < reg->n_plugins; i++)
-        if (!strcmp(reg->plugins[i].desc->name, name)) return &reg->plugins[i];
+        if (!strcmp(reg->plugins[i]->desc->name, name)) return reg->plugins[i];
     return NULL;
 }
 
@@ -275,11 +276,13 @@ static int registry_add_descriptor(plugin_registry *reg, const char *file, uint3
                               earlier->file) < 0 ? -1 : 0;
 
     sylva_plugin *copy = arena_alloc(reg->strings, sizeof *copy);
-    if (!copy) return -1;
+    loaded_plugin *lp = arena_alloc(reg->strings, sizeof *lp);
+    if (!copy || !lp) return -1;
     *copy = d;
+    *lp = (loaded_plugin){copy, file};
     if (grow((void **)&reg->plugins, &reg->cap_plugins, reg->n_plugins + 1, sizeof *reg->plugins))
         return -1;
-    reg->plugins[reg->n_plugins++] = (loaded_plugin){copy, file};
+    reg->plugins[reg->n_plugins++] = lp;
     return 1;
 }
 
@@ -339,7 +342,7 @@ static int registry_load_module(plugin_registry *reg, const char *file,
         if (r < 0) rc = -1;
         if (r > 0) {
             listed++;
-            taken[n_taken++] = reg->plugins[reg->n_plugins - 1].desc->name;
+            taken[n_taken++] = reg->plugins[reg->n_plugins - 1]->desc->name;
         } else if (r == 0 && reg->problems[reg->n_problems - 1].plugin) {
             taken[n_taken++] = reg->problems[reg->n_problems - 1].plugin;
         }
@@ -355,7 +358,7 @@ static int registry_load_module(plugin_registry *reg, const char *file,
     /* Nothing listed points into the module unless it was kept above; drop what was listed
      * from it when memory ran out so no descriptor outlives its code. */
     if (rc < 0) {
-        while (reg->n_plugins && reg->plugins[reg->n_plugins - 1].file == file) reg->n_plugins--;
+        while (reg->n_plugins && reg->plugins[reg->n_plugins - 1]->file == file) reg->n_plugins--;
     }
     dlclose(handle);
     return rc < 0 ? -1 : 0;
@@ -607,7 +610,7 @@ uint32_t plugin_registry_count(const plugin_registry *reg) { return reg ? reg->n
 
 const loaded_plugin *plugin_registry_at(const plugin_registry *reg, uint32_t i)
 {
-    return reg && i < reg->n_plugins ? &reg->plugins[i] : NULL;
+    return reg && i < reg->n_plugins ? reg->plugins[i] : NULL;
 }
 
 uint32_t plugin_registry_problem_count(const plugin_registry *reg)
@@ -657,7 +660,7 @@ static void err_append_inventory(err_buf *err, const plugin_registry *reg, sylva
     const char *kname = kind ? plugin_kind_name(kind) : NULL;
     uint32_t shown = 0;
     for (uint32_t i = 0; i < reg->n_plugins; i++) {
-        const sylva_plugin *d = reg->plugins[i].desc;
+        const sylva_plugin *d = reg->plugins[i]->desc;
         if (kind && d->kind != kind) continue;
         if (shown == 0) err_append(err, "; the %s%splugins are: ", kname ? kname : "",
                                    kname ? " " : "");
@@ -702,6 +705,7 @@ const loaded_plugin *plugin_registry_find(const plugin_registry *reg, const char
     if (!lp) lp = registry_lookup(reg, name);
     if (lp && kind && lp->desc->kind != kind) {
         sylva_kind has = lp->desc->kind;
+        if (plugin_registry_load_all(cache, err)) return NULL; /* the inventory lists them all */
         err_set(err, "plugin '%s' is %s %s plugin, not %s %s plugin", name,
                 has == SYLVA_KIND_ECOLOGY ? "an" : "a", plugin_kind_name(has),
                 kind == SYLVA_KIND_ECOLOGY ? "an" : "a", kname);
@@ -730,7 +734,7 @@ const loaded_plugin *plugin_registry_find(const plugin_registry *reg, const char
     const char *nearest = NULL;
     size_t best = edit_distance_near_limit(name) + 1;
     for (uint32_t i = 0; i < reg->n_plugins; i++) {
-        const sylva_plugin *d = reg->plugins[i].desc;
+        const sylva_plugin *d = reg->plugins[i]->desc;
         if (kind && d->kind != kind) continue;
         size_t dist = edit_distance(name, d->name);
         if (dist < best) best = dist, nearest = d->name;

@@ -71,7 +71,9 @@ const plugin_problem *plugin_registry_problem_at(const plugin_registry *reg, uin
  * is a cache of the search path and changes inside even through a const pointer; it is not for
  * use from several threads at once. When kind != 0 and the plugin has another kind, returns
  * NULL and sets err saying which kind it has. When no plugin has the name, every module is
- * opened and err lists the plugins of that kind and suggests the nearest name. */
+ * opened and err lists the plugins of that kind and suggests the nearest name. A loaded_plugin
+ * it (or plugin_registry_at) returns stays valid until plugin_registry_free, whatever is opened
+ * later. */
 const loaded_plugin *plugin_registry_find(const plugin_registry *reg, const char *name,
                                           sylva_kind kind, err_buf *err);
 

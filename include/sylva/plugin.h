@@ -2,8 +2,10 @@
  *
  * A plugin is a shared module that exports one function, `sylva_plugin_get`, returning const
  * descriptors (one per index, NULL past the end). A descriptor names the plugin, its kind, its
- * parameter schema and its operations. Listing plugins reads descriptors only: it allocates
- * nothing in the plugin and runs no plugin code beyond `sylva_plugin_get`.
+ * parameter schema, its presets and its operations. Listing plugins reads descriptors only: it
+ * allocates nothing in the plugin and runs no plugin code beyond `sylva_plugin_get`. The build
+ * writes a manifest beside each module (`sylva plugins --manifest`, docs/plugins.md) so that the
+ * host checks the ABI before opening the module and opens only the modules a command needs.
  *
  * The host validates every scene-file block against the schema before any plugin code runs,
  * fills defaults, and hands the plugin a `sylva_params` whose values are in schema order. Each
@@ -14,7 +16,10 @@
  *  - SYLVA_ABI_MAJOR changes when any existing field or function changes meaning or place; the
  *    host refuses a plugin built against another major.
  *  - SYLVA_ABI_MINOR grows when fields or API functions are appended. Every extensible struct
- *    starts with `size` (its sizeof as the writer compiled it); a reader reads no field past it.
+ *    starts with `size` (its sizeof as the writer compiled it); a reader reads no field past it:
+ *    SYLVA_HAS_FIELD(ptr, type, field) says whether a field is there. A plugin built against
+ *    a newer minor than its host tests each newer host function with SYLVA_API_HAS(api, name)
+ *    before calling it. ABI 1.0 plugins load unchanged in a 1.1 host.
  *  - Arrays the host indexes (parameter specs) must have the host's element size: the descriptor
  *    records `param_spec_size`, and the host refuses a mismatch.
  *  - Arrays the plugin indexes (sylva_params.values, sylva_value.items, the ecology request's
@@ -25,8 +30,11 @@
  * sentence through api->error() or api->param_error() (what is wrong, what would be valid). A
  * plugin never exits, never aborts on bad input and never writes to stdout.
  *
- * Ownership: everything the host hands in (params, requests, heightfields, the API table) is
- * borrowed for the duration of the call. Meshes, heightfields, materials and textures a plugin
+ * Ownership: everything the host hands in (requests, heightfields, the API table) is borrowed
+ * for the duration of the call. The `sylva_params` given to create() is the exception: it and
+ * every value in it (strings, lists, grids, groups, the file name) stay valid and unchanged
+ * until the host calls destroy() on the state create() returned, so a plugin keeps pointers
+ * into it instead of copying. Meshes, heightfields, materials and textures a plugin
  * creates through the API are owned by the host. Plugin state returned by create() is owned by
  * the plugin and released by destroy(), which accepts NULL.
  */
@@ -42,7 +50,14 @@ extern "C" {
 #endif
 
 #define SYLVA_ABI_MAJOR 1
-#define SYLVA_ABI_MINOR 0
+#define SYLVA_ABI_MINOR 1
+
+/* Bytes from the start of `type` to the end of `field`. */
+#define SYLVA_FIELD_END(type, field) (offsetof(type, field) + sizeof(((type *)0)->field))
+
+/* 1 when the size-versioned struct at `ptr` (one that starts with `uint32_t size`) is long
+ * enough to hold `field`, 0 when it was written by a version that did not have it. */
+#define SYLVA_HAS_FIELD(ptr, type, field) ((size_t)(ptr)->size >= SYLVA_FIELD_END(type, field))
 
 #if defined(_WIN32)
 #define SYLVA_EXPORT __declspec(dllexport)
@@ -146,6 +161,27 @@ struct sylva_params {
     const char *file;          /* scene file these came from (for messages) */
     uint32_t line, column;     /* where the block starts */
 };
+
+/* Presets (ABI 1.1): named sets of parameter values a plugin starts from, described in the
+ * descriptor so that `sylva plugins --describe` prints them and the host checks them against the
+ * schema. The scene chooses one through the descriptor's preset_param (an ENUM whose choices
+ * are the preset names); every key the scene gives replaces the preset's value, and a key the
+ * preset does not name keeps the schema's default. Static const data in the plugin; the layouts
+ * are fixed for the major version. */
+typedef struct sylva_preset_value {
+    const char *param;      /* a parameter of the descriptor's params */
+    double r;               /* BOOL, INT, REAL */
+    const char *s;          /* STRING, ENUM (choice name), PATH */
+    const double *list;     /* VEC3, LIST, POLYLINE (x y interleaved) */
+    uint32_t len;           /* elements of list (POLYLINE: points) */
+} sylva_preset_value;
+
+typedef struct sylva_preset {
+    const char *name;       /* one of preset_param's choices */
+    const char *help;       /* one sentence: what the preset is and where its values come from */
+    const sylva_preset_value *values;
+    uint32_t n_values;
+} sylva_preset;
 
 /* ---------------------------------------------------------------------------------------------
  * Shared data types.
@@ -262,7 +298,35 @@ typedef struct sylva_host_api {
     /* Scene-file paths: the absolute path of `rel` resolved against the scene file; the string
      * is owned by the host and lives as long as the scene. */
     const char *(*resolve_path)(sylva_host *, const char *rel);
+
+    /* ---- ABI 1.1 (test with SYLVA_API_HAS before calling from a plugin that may run in an
+     * older host) ---- */
+
+    /* Memory through the host's allocator, with the C library's contracts (mem_free accepts
+     * NULL). Blocks belong to the plugin and are freed with mem_free, never with free(). The
+     * functions need no sylva_host and stay valid as long as the module is loaded, so a plugin
+     * may keep mem_free in its state to release it in destroy(), which receives no table. The
+     * host's limits and its fault-injection tests reach what a plugin allocates here. */
+    void *(*mem_alloc)(size_t bytes);
+    void *(*mem_calloc)(size_t count, size_t size);
+    void *(*mem_realloc)(void *block, size_t bytes);
+    void (*mem_free)(void *block);
+
+    /* The value of parameter `name` of `params`. A name the schema does not have is the
+     * plugin's mistake: NULL, with the plugin's error set to a sentence naming the parameter
+     * and the parameters the schema has (return SYLVA_ERR_INTERNAL then). */
+    const sylva_value *(*param)(sylva_host *, const sylva_params *, const char *name);
 } sylva_host_api;
+
+/* The host table's size in each minor version: a table at least this long holds every
+ * function of that version. */
+#define SYLVA_HOST_API_SIZE_1_0 SYLVA_FIELD_END(sylva_host_api, resolve_path)
+#define SYLVA_HOST_API_SIZE_1_1 SYLVA_FIELD_END(sylva_host_api, param)
+
+/* 1 when the host that passed `api` offers function `member` (its table reaches that far and
+ * the entry is set), e.g. `if (SYLVA_API_HAS(api, mem_alloc)) ...`. */
+#define SYLVA_API_HAS(api, member)                                                               \
+    (SYLVA_HAS_FIELD(api, sylva_host_api, member) && (api)->member != 0)
 
 /* ---------------------------------------------------------------------------------------------
  * Requests and outputs of each kind. All start with `size`.
@@ -343,14 +407,28 @@ typedef struct sylva_plugin {
 
     /* Optional interfaces by id (NULL, or returns NULL for an unknown id). */
     const void *(*extension)(const char *id);
+
+    /* ---- ABI 1.1 ---- */
+
+    /* Presets (see sylva_preset): preset_param names the ENUM parameter that selects one; each
+     * of its choices has exactly one preset here. NULL / 0: the plugin has none. */
+    const char *preset_param;
+    const sylva_preset *presets;
+    uint32_t n_presets;
 } sylva_plugin;
+
+/* The descriptor's size in each minor version (an ABI 1.0 plugin declares the 1.0 size). */
+#define SYLVA_PLUGIN_SIZE_1_0 SYLVA_FIELD_END(sylva_plugin, extension)
+#define SYLVA_PLUGIN_SIZE_1_1 SYLVA_FIELD_END(sylva_plugin, n_presets)
 
 /* The one exported symbol: descriptor `index` of this module, NULL past the end. */
 #define SYLVA_PLUGIN_ENTRY "sylva_plugin_get"
 typedef const sylva_plugin *(*sylva_plugin_get_fn)(uint32_t index);
 
 /* ---------------------------------------------------------------------------------------------
- * Convenience readers (inline; no linkage to the host).
+ * Convenience readers (inline; no linkage to the host). They cannot report a name the schema
+ * does not have (sylva_param returns NULL, the typed readers 0); a plugin that has the table at
+ * hand reads through api->param (ABI 1.1), which does.
  */
 static inline int sylva_param_index(const sylva_params *p, const char *name)
 {

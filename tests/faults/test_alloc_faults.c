@@ -1,7 +1,7 @@
 /* test_alloc_faults.c — runs one `sylva` command again and again with the Nth allocation made by
  * sylva's code failing (fault_alloc.h), each run in a child process:
  *
- *   test_alloc_faults OUT_DIR [--sticky] [--max-runs K] [--only N] -- COMMAND ARGS...
+ *   test_alloc_faults OUT_DIR [--sticky] [--max-runs K] [--only N] [--expect TEXT] -- COMMAND ARGS...
  *
  * COMMAND ARGS are the command line after `sylva`; the word @OUT in them stands for OUT_DIR.
  * A first run without failures must succeed and counts the allocations, A. Then for N = 1 .. A
@@ -13,6 +13,8 @@
  *     for running out of memory, with a message on stderr that says the memory ran out,
  *   - free every block it allocated (the live count returns to what it was before the command),
  *   - leave no temporary file in OUT_DIR.
+ * With --expect TEXT, at least one failing run's stderr must contain TEXT (e.g. a plugin's own
+ * out-of-memory sentence, showing that its allocations are among those failed).
  * Prints one line per failing N and a summary; exit 0 when every run passed. --only N runs
  * allocation N alone (with FAULT_ALLOC_TRACE=1 in the environment its call stack is printed). */
 #include <dirent.h>
@@ -116,8 +118,8 @@ static int run_child(int argc, char **argv, uint64_t n, int sticky, const char *
     return 0;
 }
 
-/* 1 when the file at path mentions running out of memory. */
-static int says_out_of_memory(const char *path)
+/* 1 when the file at path contains text. */
+static int file_contains(const char *path, const char *text)
 {
     FILE *f = fopen(path, "r");
     if (!f) return 0;
@@ -125,7 +127,7 @@ static int says_out_of_memory(const char *path)
     size_t n = fread(buf, 1, sizeof buf - 1, f);
     fclose(f);
     buf[n] = '\0';
-    return strstr(buf, "out of memory") != NULL;
+    return strstr(buf, text) != NULL;
 }
 
 static void print_file(const char *path, int max_lines)
@@ -139,7 +141,7 @@ static void print_file(const char *path, int max_lines)
 
 int main(int argc, char **argv)
 {
-    const char *out_dir = NULL;
+    const char *out_dir = NULL, *expect = NULL;
     int sticky = 0, first = 0;
     uint64_t max_runs = 400, only = 0;
     for (int i = 1; i < argc; i++) {
@@ -148,6 +150,8 @@ int main(int argc, char **argv)
             break;
         } else if (!strcmp(argv[i], "--sticky")) {
             sticky = 1;
+        } else if (!strcmp(argv[i], "--expect") && i + 1 < argc) {
+            expect = argv[++i];
         } else if (!strcmp(argv[i], "--only") && i + 1 < argc) {
             only = strtoull(argv[++i], NULL, 10);
         } else if (!strcmp(argv[i], "--max-runs") && i + 1 < argc) {
@@ -157,7 +161,8 @@ int main(int argc, char **argv)
         }
     }
     if (!out_dir || !first || first >= argc || argc - first > MAX_ARGS || max_runs < ALWAYS_TESTED + 2) {
-        fprintf(stderr, "usage: test_alloc_faults OUT_DIR [--sticky] [--max-runs K>=%d] [--only N] -- COMMAND ARGS...\n",
+        fprintf(stderr, "usage: test_alloc_faults OUT_DIR [--sticky] [--max-runs K>=%d] [--only N] [--expect TEXT] -- "
+                "COMMAND ARGS...\n",
                 ALWAYS_TESTED + 2);
         return 2;
     }
@@ -188,7 +193,7 @@ int main(int argc, char **argv)
     uint64_t total = r.count;
     printf("%s: %llu allocations by sylva's code in a run without failures\n", cargv[0], (unsigned long long)total);
 
-    unsigned runs = 0, bad = 0, succeeded = 0;
+    unsigned runs = 0, bad = 0, succeeded = 0, expected_seen = 0;
     for (uint64_t k = 0;; k++) {
         uint64_t n;
         if (total <= max_runs) {
@@ -215,10 +220,11 @@ int main(int argc, char **argv)
         }
         if (only) print_file(err_path, 40);
         int temps = clear_dir(out_dir);
+        if (expect && r.rc != 0 && file_contains(err_path, expect)) expected_seen++;
         const char *problem = NULL;
         if (r.rc != 0 && r.rc != EXIT_OUT_OF_MEMORY)
             problem = "exit status other than 4 (out of memory)";
-        else if (r.rc != 0 && !says_out_of_memory(err_path))
+        else if (r.rc != 0 && !file_contains(err_path, "out of memory"))
             problem = "no 'out of memory' on stderr";
         if (!problem && r.leaked != 0) problem = "blocks leaked";
         if (!problem && temps) problem = "temporary files left behind";
@@ -236,5 +242,9 @@ int main(int argc, char **argv)
     unlink(err_path);
     printf("%s: %u runs with one allocation failing%s, %u failed as they should, %u succeeded without it, %u wrong\n",
            cargv[0], runs, sticky ? " (and every later one)" : "", runs - bad - succeeded, succeeded, bad);
+    if (expect) {
+        printf("%s: %u failing runs said \"%s\"\n", cargv[0], expected_seen, expect);
+        if (!expected_seen) bad++;
+    }
     return bad ? 1 : 0;
 }

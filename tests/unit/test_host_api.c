@@ -127,8 +127,80 @@ TEST(api_table_versions)
 {
     CHECK_INT(host_api_table()->size, sizeof(sylva_host_api));
     CHECK_INT(host_api_table()->abi_major, SYLVA_ABI_MAJOR);
+    CHECK_INT(host_api_table()->abi_minor, SYLVA_ABI_MINOR);
+    CHECK_INT(SYLVA_ABI_MINOR, 1);
 }
 
-TEST_LIST(TEST_CASE(api_table_versions), TEST_CASE(rng_streams_are_keyed), TEST_CASE(heightfield_only_for_terrain),
+TEST(param_by_unknown_name_is_an_error)
+{
+    scene *s = scene_new();
+    err_buf err = {{0}};
+    sylva_host h;
+    host_init(&h, s, "/tmp", 1, "tree plugin 'x'", &err);
+    static const sylva_param_spec spec[] = {{.name = "alpha", .type = SYLVA_P_REAL, .help = "a"},
+                                            {.name = "beta", .type = SYLVA_P_INT, .help = "b"}};
+    sylva_value v[2] = {{.is_set = 1, .r = 2.5}, {.i = 4}};
+    sylva_params p = {.spec = spec, .n = 2, .values = v, .file = "scene.yaml", .line = 5, .column = 1};
+    const sylva_host_api *api = host_api_table();
+    const sylva_value *got = api->param(&h, &p, "beta");
+    CHECK(got == &v[1]);
+    CHECK(!h.error_set);
+    CHECK(api->param(&h, &p, "alpah") == NULL);
+    CHECK(h.error_set);
+    CHECK_STR_CONTAINS(err.msg, "tree plugin 'x' read parameter 'alpah', which its schema does not have");
+    CHECK_STR_CONTAINS(err.msg, "the parameters are: alpha, beta");
+    sylva_params none = {.n = 0};
+    CHECK(api->param(&h, &none, "alpha") == NULL);
+    CHECK_STR_CONTAINS(err.msg, "the schema has no parameters");
+    host_release(&h);
+    scene_free(s);
+}
+
+TEST(allocation_through_the_host)
+{
+    const sylva_host_api *api = host_api_table();
+    CHECK(SYLVA_API_HAS(api, mem_alloc) && SYLVA_API_HAS(api, mem_free) && SYLVA_API_HAS(api, param));
+    unsigned char *a = api->mem_calloc(16, 2);
+    CHECK(a != NULL);
+    int zero = 1;
+    for (int i = 0; a && i < 32; i++) zero &= a[i] == 0;
+    CHECK(zero);
+    unsigned char *b = api->mem_realloc(a, 4096);
+    CHECK(b != NULL);
+    api->mem_free(b ? b : a);
+    api->mem_free(NULL);
+    void *c = api->mem_alloc(100);
+    CHECK(c != NULL);
+    api->mem_free(c);
+}
+
+/* A table as an ABI 1.0 host laid it out: SYLVA_API_HAS sees no 1.1 function in it, and a
+ * size-versioned struct from an older writer has no newer field. */
+TEST(version_markers)
+{
+    sylva_host_api old = *host_api_table();
+    old.size = (uint32_t)SYLVA_HOST_API_SIZE_1_0;
+    CHECK(SYLVA_API_HAS(&old, resolve_path));
+    CHECK(!SYLVA_API_HAS(&old, mem_alloc));
+    CHECK(!SYLVA_API_HAS(&old, param));
+    old.size = (uint32_t)SYLVA_HOST_API_SIZE_1_1;
+    CHECK(SYLVA_API_HAS(&old, mem_alloc) && SYLVA_API_HAS(&old, param));
+    old.mem_alloc = NULL;
+    CHECK(!SYLVA_API_HAS(&old, mem_alloc));
+    CHECK(SYLVA_HOST_API_SIZE_1_0 < SYLVA_HOST_API_SIZE_1_1);
+    CHECK(SYLVA_HOST_API_SIZE_1_1 <= sizeof(sylva_host_api));
+
+    sylva_plugin d = {.size = (uint32_t)SYLVA_PLUGIN_SIZE_1_0};
+    CHECK(SYLVA_HAS_FIELD(&d, sylva_plugin, extension));
+    CHECK(!SYLVA_HAS_FIELD(&d, sylva_plugin, preset_param));
+    CHECK(!SYLVA_HAS_FIELD(&d, sylva_plugin, n_presets));
+    d.size = sizeof d;
+    CHECK(SYLVA_HAS_FIELD(&d, sylva_plugin, n_presets));
+    sylva_tree_out o = {.size = (uint32_t)offsetof(sylva_tree_out, height)};
+    CHECK(SYLVA_HAS_FIELD(&o, sylva_tree_out, mesh) && !SYLVA_HAS_FIELD(&o, sylva_tree_out, height));
+}
+
+TEST_LIST(TEST_CASE(api_table_versions), TEST_CASE(param_by_unknown_name_is_an_error),
+          TEST_CASE(allocation_through_the_host), TEST_CASE(version_markers), TEST_CASE(rng_streams_are_keyed), TEST_CASE(heightfield_only_for_terrain),
           TEST_CASE(plants_only_for_ecology_and_checked), TEST_CASE(mesh_and_material_misuse),
           TEST_CASE(param_error_is_located))

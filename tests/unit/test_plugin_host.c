@@ -11,6 +11,7 @@
 #include "harness.h"
 #include "work_dir.h"
 #include "plugin/plugin_host.h"
+#include "plugin/plugin_manifest.h"
 
 #define PLUGIN_DIR SYLVA_TEST_PLUGIN_DIR
 
@@ -39,12 +40,14 @@ static int listed_from(const plugin_registry *reg, const char *module)
     return n;
 }
 
+/* The test modules, every one opened (as `sylva plugins` does). */
 static plugin_registry *open_test_plugins(void)
 {
     err_buf err;
     err_clear(&err);
     plugin_registry *reg = plugin_registry_open_path(PLUGIN_DIR, &err);
     CHECK(reg != NULL);
+    if (reg) CHECK_INT(plugin_registry_load_all(reg, &err), 0);
     if (!reg) fprintf(stderr, "open_path: %s\n", err.msg);
     return reg;
 }
@@ -109,8 +112,11 @@ TEST(each_broken_module_gives_one_problem)
 {
     static const broken_case cases[] = {
         {"broken_abi.so",
-         {"sylva_plugin_get(0)", "built against sylva plugin ABI 99.0, this host speaks 1.0; "
+         {"sylva_plugin_get(0)", "built against sylva plugin ABI 99.0, this host speaks 1.1; "
                                  "rebuild the plugin"}},
+        {"broken_manifest.so",
+         {"not opened: its manifest ", "broken_manifest.sylva-plugin says plugin "
+          "'broken_manifest' is built against sylva plugin ABI 2.0, this host speaks 1.1"}},
         {"broken_noentry.so", {"no entry point [sylva_plugin_get] in shared library [/",
                                "broken_noentry.so]"}},
         {"broken_schema.so",
@@ -158,7 +164,7 @@ TEST(descriptor_rules_one_problem_each)
         {5, "plugin 'mixed_ecology': the module already declares a plugin of this name"},
         {6, "the summary is more than one line"},
         {7, "declares size 8, too small to hold its ABI version"},
-        {8, "but sylva plugin ABI 1.0 defines"},
+        {8, "but sylva plugin ABI 1.1 defines"},
         {9, "parameter 'spacing' takes a key the host keeps for itself"},
         {10, "species_section \"shape\" is a key the host keeps for itself"},
     };
@@ -373,6 +379,7 @@ TEST(earlier_folder_shadows_later)
         const loaded_plugin *lp = plugin_registry_find(reg, "example_terrain", 0, &err);
         CHECK(lp != NULL);
         if (lp) CHECK_STR_CONTAINS(lp->file, dir);
+        CHECK_INT(plugin_registry_load_all(reg, &err), 0); /* the shadowed one is opened too */
         const char *msg = NULL;
         int n = 0;
         for (uint32_t i = 0; i < plugin_registry_problem_count(reg); i++) {
@@ -696,7 +703,289 @@ TEST(schema_print_for_people)
     free(text);
 }
 
+/* --------------------------------------------------------------------------------------------
+ * Lazy loading and manifests
+ */
+
+TEST(opening_the_registry_opens_no_module)
+{
+    err_buf err;
+    plugin_registry *reg = plugin_registry_open_path(PLUGIN_DIR, &err);
+    CHECK(reg != NULL);
+    if (!reg) return;
+    CHECK_INT(plugin_registry_opened_count(reg), 0);
+    CHECK_INT(plugin_registry_count(reg), 0);
+    /* abi_one_zero.so comes first and has a manifest: finding it opens it alone */
+    CHECK(plugin_registry_find(reg, "abi_one_zero", SYLVA_KIND_TERRAIN, &err) != NULL);
+    CHECK_INT(plugin_registry_opened_count(reg), 1);
+    CHECK(plugin_registry_find(reg, "abi_one_zero", SYLVA_KIND_TERRAIN, &err) != NULL);
+    CHECK_INT(plugin_registry_opened_count(reg), 1);
+    /* a name no manifest declares opens the modules without one, not those whose manifest
+     * names other plugins (probe_open.so, example_terrain.so, ...) */
+    CHECK(plugin_registry_find(reg, "mixed_ecology", SYLVA_KIND_ECOLOGY, &err) != NULL);
+    uint32_t opened = plugin_registry_opened_count(reg);
+    for (uint32_t i = 0; i < plugin_registry_count(reg); i++) {
+        CHECK(strstr(plugin_registry_at(reg, i)->file, "/probe_open.so") == NULL);
+        CHECK(strstr(plugin_registry_at(reg, i)->file, "/example_terrain.so") == NULL);
+    }
+    CHECK_INT(plugin_registry_load_all(reg, &err), 0);
+    CHECK(plugin_registry_opened_count(reg) > opened);
+    CHECK_INT(listed_from(reg, "/probe_open.so"), 1);
+    plugin_registry_free(reg);
+}
+
+/* A plugin found first stays where it is while later lookups open more modules (more than the
+ * registry's first allocation holds). */
+TEST(found_plugins_stay_valid)
+{
+    err_buf err;
+    plugin_registry *reg = plugin_registry_open_path(PLUGIN_DIR ":" SYLVA_PLUGIN_BUILD_DIR, &err);
+    CHECK(reg != NULL);
+    if (!reg) return;
+    const loaded_plugin *first = plugin_registry_find(reg, "abi_one_zero", 0, &err);
+    CHECK(first != NULL);
+    CHECK_INT(plugin_registry_load_all(reg, &err), 0);
+    CHECK(plugin_registry_count(reg) > 8);
+    CHECK(plugin_registry_find(reg, "abi_one_zero", 0, &err) == first);
+    if (first) CHECK(!strcmp(first->desc->name, "abi_one_zero"));
+    /* a kind mismatch lists every plugin of the kind asked for, opened or not */
+    plugin_registry_free(reg);
+    reg = plugin_registry_open_path(PLUGIN_DIR ":" SYLVA_PLUGIN_BUILD_DIR, &err);
+    CHECK(reg != NULL);
+    if (!reg) return;
+    err_clear(&err);
+    CHECK(plugin_registry_find(reg, "abi_one_zero", SYLVA_KIND_TREE, &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "the tree plugins are: ");
+    CHECK_STR_CONTAINS(err.msg, "tree_vessel");
+    plugin_registry_free(reg);
+}
+
+TEST(abi_1_0_module_loads)
+{
+    plugin_registry *reg = open_test_plugins();
+    if (!reg) return;
+    err_buf err;
+    const loaded_plugin *lp = plugin_registry_find(reg, "abi_one_zero", SYLVA_KIND_TERRAIN, &err);
+    CHECK(lp != NULL);
+    if (lp) {
+        CHECK_INT(lp->desc->abi_major, 1);
+        CHECK_INT(lp->desc->abi_minor, 0);
+        CHECK_INT(lp->desc->size, sizeof(sylva_plugin)); /* the host's copy, zero past 1.0 */
+        CHECK(lp->desc->preset_param == NULL && lp->desc->presets == NULL);
+        CHECK_INT(lp->desc->n_presets, 0);
+        CHECK_INT(lp->desc->n_params, 1);
+    }
+    const char *msg;
+    CHECK_INT(problems_for(reg, "abi_one_zero.so", &msg), 0);
+    plugin_registry_free(reg);
+}
+
+/* Writes text to path; 0 or -1. */
+static int write_text(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    if (!f) return -1;
+    int rc = fputs(text, f) < 0;
+    return fclose(f) || rc ? -1 : 0;
+}
+
+/* A folder holding a copy of example_terrain.so beside the given manifest text (NULL: none). */
+static const char *module_with_manifest(const char *name, const char *manifest)
+{
+    static char dir[1200];
+    snprintf(dir, sizeof dir, "%s", work_path(name));
+    CHECK(mkdir(dir, 0700) == 0);
+    char path[1400];
+    snprintf(path, sizeof path, "%s/example_terrain.so", dir);
+    CHECK_INT(copy_file(PLUGIN_DIR "/example_terrain.so", path), 0);
+    if (manifest) {
+        snprintf(path, sizeof path, "%s/example_terrain.sylva-plugin", dir);
+        CHECK_INT(write_text(path, manifest), 0);
+    }
+    return dir;
+}
+
+TEST(manifest_mismatch_and_damage_are_refused)
+{
+    static const struct {
+        const char *manifest;
+        int opened;          /* the module is opened to find the mismatch */
+        const char *fragment;
+    } cases[] = {
+        {"sylva-plugin-manifest 1\nplugin example_terrain tree 1.1\n", 1,
+         "plugin 'example_terrain' (terrain, ABI 1.1) does not match its manifest, which says "
+         "'example_terrain' (tree, ABI 1.1); rewrite the manifest with `sylva plugins --manifest "},
+        {"sylva-plugin-manifest 1\nplugin example_terrain terrain 1.0\n", 1,
+         "does not match its manifest, which says 'example_terrain' (terrain, ABI 1.0)"},
+        {"sylva-plugin-manifest 1\nplugin example_terrain terrain 1.1\nplugin other tree 1.1\n", 1,
+         "the module provides 1 plugin, its manifest names 2"},
+        {"sylva-plugin-manifest 1\nplugin example_terrain terrain 3.0\n", 0,
+         "built against sylva plugin ABI 3.0, this host speaks 1.1"},
+        {"# a comment\nsylva-plugin-manifest 1\nplugin example_terrain terrain\n", 0,
+         "example_terrain.sylva-plugin:3: expected `plugin NAME KIND MAJOR.MINOR`"},
+        {"plugin example_terrain terrain 1.1\n", 0,
+         "example_terrain.sylva-plugin:1: a plugin manifest starts with `sylva-plugin-manifest 1`"},
+        {"sylva-plugin-manifest 1\nplugin example_terrain forest 1.1\n", 0,
+         ":2: unknown kind 'forest'; kinds are terrain, tree and ecology"},
+        {"sylva-plugin-manifest 1\n", 0, "the plugin manifest names no plugin"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char name[32];
+        snprintf(name, sizeof name, "manifest%zu", i);
+        const char *dir = module_with_manifest(name, cases[i].manifest);
+        err_buf err;
+        plugin_registry *reg = plugin_registry_open_path(dir, &err);
+        CHECK(reg != NULL);
+        if (!reg) continue;
+        err_clear(&err);
+        CHECK(plugin_registry_find(reg, "example_terrain", 0, &err) == NULL);
+        CHECK_STR_CONTAINS(err.msg, cases[i].fragment);
+        CHECK_INT(plugin_registry_opened_count(reg), cases[i].opened);
+        if (!strstr(err.msg, cases[i].fragment)) fprintf(stderr, "case %zu: %s\n", i, err.msg);
+        plugin_registry_free(reg);
+    }
+}
+
+TEST(manifest_written_from_the_module)
+{
+    const char *dir = module_with_manifest("written", NULL);
+    char module[1400], manifest[1400];
+    snprintf(module, sizeof module, "%s/example_terrain.so", dir);
+    snprintf(manifest, sizeof manifest, "%s/example_terrain.sylva-plugin", dir);
+    err_buf err;
+    CHECK_INT(plugin_manifest_write(module, &err), 0);
+    plugin_manifest m;
+    CHECK_INT(plugin_manifest_read(manifest, &m, &err), 1);
+    CHECK_INT(m.n, 1);
+    CHECK(!strcmp(m.plugin[0].name, "example_terrain"));
+    CHECK_INT(m.plugin[0].kind, SYLVA_KIND_TERRAIN);
+    CHECK_INT(m.plugin[0].abi_major, SYLVA_ABI_MAJOR);
+    CHECK_INT(m.plugin[0].abi_minor, SYLVA_ABI_MINOR);
+    CHECK(plugin_manifest_declares(&m, "example_terrain") && !plugin_manifest_declares(&m, "x"));
+    plugin_registry *reg = plugin_registry_open_path(dir, &err);
+    CHECK(reg && plugin_registry_find(reg, "example_terrain", SYLVA_KIND_TERRAIN, &err) != NULL);
+    plugin_registry_free(reg);
+    /* no manifest for a module without descriptors; nothing for a file that is not a module */
+    CHECK_INT(plugin_manifest_write(PLUGIN_DIR "/broken_noentry.so", &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "no entry point [sylva_plugin_get]");
+    CHECK_INT(plugin_manifest_write(SYLVA_TEST_DATA_DIR "/harness.h", &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "ends in .so");
+    CHECK_INT(plugin_manifest_read("/nonexistent/x.sylva-plugin", &m, &err), 0);
+    CHECK_INT(plugin_manifest_read("/dev/null", &m, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "not a regular file");
+}
+
+TEST(build_tree_search_only_from_the_build_tree)
+{
+    /* this test runs from the build tree: it searches the build tree's plugin folder (the
+     * other side, a copy outside the tree, is tests/plugins/probe_loading.sh) */
+    CHECK_INT(plugin_running_from_build_tree(), 1);
+}
+
+/* --------------------------------------------------------------------------------------------
+ * Presets
+ */
+
+static const char *const shade_choices[] = {"light", "dark", NULL};
+static const sylva_param_spec preset_schema[] = {
+    {.name = "shade", .type = SYLVA_P_ENUM, .def_str = "light", .choices = shade_choices, .help = "s"},
+    {.name = "height", .type = SYLVA_P_REAL, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX,
+     .def = 1, .min = 0, .max = 10, .unit = "m", .help = "h"},
+    {.name = "count", .type = SYLVA_P_INT, .flags = SYLVA_PARAM_HAS_MIN, .def = 1, .min = 1, .help = "c"},
+    {.name = "curve", .type = SYLVA_P_POLYLINE, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX,
+     .min = 0, .max = 1, .min_len = 1, .max_len = 4, .help = "p"},
+    {.name = "colour", .type = SYLVA_P_VEC3, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX,
+     .min = 0, .max = 1, .def_list = (const double[]){0, 0, 0}, .def_len = 3, .help = "c"},
+};
+
+static const double light_curve[] = {0, 0.5, 3, 1}, light_colour[] = {0.1, 0.2, 0.3};
+static const double curve_backwards[] = {2, 0.5, 1, 0.5}, curve_high[] = {0, 2}, short_colour[] = {0, 0};
+static const sylva_preset_value light[] = {{.param = "height", .r = 2.5},
+                                           {.param = "curve", .list = light_curve, .len = 2},
+                                           {.param = "colour", .list = light_colour, .len = 3}};
+static const sylva_preset_value dark[] = {{.param = "count", .r = 3}};
+
+static int check_presets(const sylva_preset *presets, uint32_t n, err_buf *err)
+{
+    sylva_plugin d = {.size = sizeof d, .params = preset_schema, .n_params = 5,
+                      .preset_param = "shade", .presets = presets, .n_presets = n};
+    err_clear(err);
+    return plugin_presets_check(&d, err);
+}
+
+TEST(presets_checked_against_the_schema)
+{
+    sylva_preset good[] = {{"light", "Light.", light, 3}, {"dark", "Dark.", dark, 1}};
+    err_buf err;
+    CHECK_INT(check_presets(good, 2, &err), 0);
+
+    sylva_preset swapped[] = {good[1], good[0]};
+    CHECK_INT(check_presets(swapped, 2, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "preset 0 is called 'dark', but choice 0 of 'shade' is 'light'");
+    CHECK_INT(check_presets(good, 1, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "'shade' has 2 choices but the descriptor describes 1 presets");
+
+    static const struct {
+        sylva_preset_value v;
+        const char *fragment;
+    } bad[] = {
+        {{.param = "height", .r = 11}, "preset 'dark': 'height': 11 is outside the parameter's range"},
+        {{.param = "count", .r = 2.5}, "'count': 2.5 is not a whole number"},
+        {{.param = "weight", .r = 1}, "names 'weight', which is not a parameter of the schema"},
+        {{.param = "shade", .s = "dark"}, "which is the preset selector itself"},
+        {{.param = "curve", .list = curve_backwards, .len = 2},
+         "point 1's x is not at or after the point before it"},
+        {{.param = "curve", .list = curve_high, .len = 1},
+         "element 0, 2, is outside the parameter's range"},
+        {{.param = "colour", .list = short_colour, .len = 2},
+         "2 elements is not a length the parameter takes"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        sylva_preset flawed[] = {good[0], {"dark", "Dark.", &bad[i].v, 1}};
+        CHECK_INT(check_presets(flawed, 2, &err), -1);
+        CHECK_STR_CONTAINS(err.msg, bad[i].fragment);
+    }
+    sylva_preset_value count_twice[] = {{.param = "count", .r = 2}, {.param = "count", .r = 3}};
+    sylva_preset dup[] = {good[0], {"dark", "Dark.", count_twice, 2}};
+    CHECK_INT(check_presets(dup, 2, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "'count' is given twice");
+
+    sylva_plugin d = {.size = sizeof d, .params = preset_schema, .n_params = 5,
+                      .preset_param = "height", .presets = good, .n_presets = 2};
+    CHECK_INT(plugin_presets_check(&d, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "preset_param 'height' is not an enum parameter of the schema");
+    d = (sylva_plugin){.size = sizeof d, .params = preset_schema, .n_params = 5};
+    CHECK_INT(plugin_presets_check(&d, &err), 0); /* none is fine */
+}
+
+TEST(presets_printed_with_values)
+{
+    sylva_preset presets[] = {{"light", "Light.", light, 3}, {"dark", "Dark.", dark, 1}};
+    sylva_plugin d = {.size = sizeof d, .params = preset_schema, .n_params = 5,
+                      .preset_param = "shade", .presets = presets, .n_presets = 2};
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    CHECK(f != NULL);
+    if (!f) return;
+    plugin_presets_print(f, &d, 2);
+    fclose(f);
+    CHECK_STR_CONTAINS(text, "  light: Light.\n"
+                             "      height  2.5 m\n"
+                             "      curve   [[0, 0.5], [3, 1]]\n"
+                             "      colour  [0.1, 0.2, 0.3]\n"
+                             "  dark: Dark.\n"
+                             "      count   3\n");
+    free(text);
+}
+
 TEST_LIST(TEST_CASE(example_is_listed_with_schema), TEST_CASE(failing_operations_still_load),
+          TEST_CASE(opening_the_registry_opens_no_module), TEST_CASE(found_plugins_stay_valid),
+          TEST_CASE(abi_1_0_module_loads),
+          TEST_CASE(manifest_mismatch_and_damage_are_refused),
+          TEST_CASE(manifest_written_from_the_module),
+          TEST_CASE(build_tree_search_only_from_the_build_tree),
+          TEST_CASE(presets_checked_against_the_schema), TEST_CASE(presets_printed_with_values),
           TEST_CASE(each_broken_module_gives_one_problem),
           TEST_CASE(descriptor_rules_one_problem_each), TEST_CASE(problems_in_file_order),
           TEST_CASE(find_refused_plugin_says_why), TEST_CASE(find_wrong_kind),

@@ -263,7 +263,7 @@ static plugin_registry *test_registry(void)
     err_buf err;
     plugin_registry *reg = plugin_registry_open_path(SYLVA_TEST_PLUGIN_DIR, &err);
     CHECK(reg != NULL);
-    if (reg && plugin_registry_count(reg) == 0)
+    if (reg && plugin_registry_load_all(reg, &err) == 0 && plugin_registry_count(reg) == 0)
         fprintf(stderr, "no plugins in %s: build the test_plugin_* targets first\n",
                 SYLVA_TEST_PLUGIN_DIR);
     return reg;

@@ -15,6 +15,7 @@ TEST(every_scene_loads)
     plugin_registry *reg = plugin_registry_open(&err);
     CHECK(reg != NULL);
     if (!reg) return;
+    CHECK_INT(plugin_registry_load_all(reg, &err), 0);
     CHECK(plugin_registry_count(reg) >= 5); /* terrain_ifs, three tree plugins, ecology */
     DIR *d = opendir(SCENES);
     CHECK(d != NULL);

@@ -1,8 +1,11 @@
 /* cmd_plugins.c — `sylva plugins`: which plugins this host can use, and what each one takes.
  *
- * The listing goes to stdout; modules that could not be used are reported on stderr, one line
- * each, so a script reading the list is not confused by them. `--describe` prints from the
- * plugin's own schema, the same table the scene loader validates against.
+ * The listing opens every module of the search path; it goes to stdout, and modules that could
+ * not be used are reported on stderr, one line each, so a script reading the list is not
+ * confused by them. `--describe` opens only the module that provides the plugin and prints from
+ * its own schema and presets, the tables the scene loader validates against and the plugin
+ * starts from. `--manifest` writes the manifest a module needs to be checked before it is
+ * opened (plugin_manifest.h); the build runs it for every module it makes.
  */
 #include <stdio.h>
 #include <string.h>
@@ -11,22 +14,30 @@
 #include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "plugin/plugin_host.h"
+#include "plugin/plugin_manifest.h"
 
 static void plugins_usage(FILE *out, const char *cmd)
 {
     fprintf(out,
-            "usage: sylva %s [--describe NAME]\n"
+            "usage: sylva %s [--describe NAME | --manifest MODULE.so]\n"
             "\n"
             "Lists the plugins found in the search path (name, kind, version, summary, file);\n"
             "modules that could not be used are reported on stderr with the reason.\n"
             "\n"
-            "  --describe NAME  print one plugin's summary, kind, file and parameter schema\n"
-            "  --help           print this help\n"
+            "  --describe NAME      print one plugin's summary, kind, file, parameter schema and\n"
+            "                       presets with their values\n"
+            "  --manifest MODULE.so write MODULE.sylva-plugin beside the module (runs the module's\n"
+            "                       code once: a build step)\n"
+            "  --help               print this help\n"
             "\n"
             "Search path, first match wins: the folders of SYLVA_PLUGIN_PATH (colon-separated),\n"
-            "then %s, then %s.\n"
-            "Exit status: 0 done, 1 usage error, 2 no plugin called NAME, 4 out of memory.\n",
-            cmd, SYLVA_PLUGIN_BUILD_DIR, SYLVA_PLUGIN_INSTALL_DIR);
+            "%s%s%sthen %s.\n"
+            "Exit status: 0 done, 1 usage error, 2 no plugin called NAME or no manifest written,\n"
+            "4 out of memory.\n",
+            cmd, plugin_running_from_build_tree() ? "then " : "",
+            plugin_running_from_build_tree() ? SYLVA_PLUGIN_BUILD_DIR : "",
+            plugin_running_from_build_tree() ? " (this build tree), " : "",
+            SYLVA_PLUGIN_INSTALL_DIR);
 }
 
 static void plugins_list(const plugin_registry *reg)
@@ -74,6 +85,11 @@ static void plugins_describe(const loaded_plugin *lp)
     printf("\nparameters:\n");
     if (d->n_params) plugin_schema_print(stdout, d->params, d->n_params, 2);
     else printf("  (none)\n");
+    if (d->n_presets) {
+        printf("\npresets (chosen with `%s`; a key the scene gives replaces the preset's value, "
+               "a key the preset does not set keeps its default):\n", d->preset_param);
+        plugin_presets_print(stdout, d, 2);
+    }
     if (d->kind == SYLVA_KIND_ECOLOGY && d->species_section) {
         printf("\nspecies parameters (each species' `%s` block):\n", d->species_section);
         if (d->n_species_params)
@@ -85,7 +101,7 @@ static void plugins_describe(const loaded_plugin *lp)
 int cmd_plugins(int argc, char **argv)
 {
     const char *cmd = argc > 0 && argv[0] ? argv[0] : "plugins";
-    const char *describe = NULL;
+    const char *describe = NULL, *manifest = NULL;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
@@ -93,6 +109,16 @@ int cmd_plugins(int argc, char **argv)
             return EXIT_OK;
         }
         const char *value = NULL;
+        if (!strcmp(a, "--manifest")) {
+            if (i + 1 >= argc || manifest || describe) {
+                fprintf(stderr, "sylva %s: %s\n", cmd, i + 1 >= argc ? "--manifest needs a module "
+                        "file" : "give one of --describe NAME and --manifest MODULE");
+                plugins_usage(stderr, cmd);
+                return EXIT_USAGE;
+            }
+            manifest = argv[++i];
+            continue;
+        }
         if (!strcmp(a, "--describe")) {
             if (i + 1 >= argc) {
                 fprintf(stderr, "sylva %s: --describe needs a plugin name\n", cmd);
@@ -108,9 +134,9 @@ int cmd_plugins(int argc, char **argv)
             plugins_usage(stderr, cmd);
             return EXIT_USAGE;
         }
-        if (describe) {
-            fprintf(stderr, "sylva %s: --describe is given twice; describe one plugin at a time\n",
-                    cmd);
+        if (describe || manifest) {
+            fprintf(stderr, "sylva %s: %s; give one of --describe NAME and --manifest MODULE\n",
+                    cmd, describe ? "--describe is given twice" : "--manifest is given");
             return EXIT_USAGE;
         }
         if (!value[0]) {
@@ -122,10 +148,18 @@ int cmd_plugins(int argc, char **argv)
 
     err_buf err;
     err_clear(&err);
+    if (manifest) {
+        if (plugin_manifest_write(manifest, &err) == 0) return EXIT_OK;
+        return cli_fail(cmd, &err, ERR_INPUT);
+    }
     plugin_registry *reg = plugin_registry_open(&err); /* freed below */
     if (!reg) return cli_fail(cmd, &err, ERR_INTERNAL);
     int status = EXIT_OK;
     if (!describe) {
+        if (plugin_registry_load_all(reg, &err)) {
+            plugin_registry_free(reg);
+            return cli_fail(cmd, &err, ERR_INTERNAL);
+        }
         plugins_list(reg);
     } else {
         const loaded_plugin *lp = plugin_registry_find(reg, describe, 0, &err);

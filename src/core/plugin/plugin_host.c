@@ -1,11 +1,16 @@
 /* plugin_host.c — the plugin registry: the search path, loading modules, checking descriptors.
  *
- * Folders are searched most important first (SYLVA_PLUGIN_PATH, the build tree, the install
- * folder); inside a folder, *.so files are loaded in byte order of their names so that the
- * outcome never depends on the file system. A module is opened with RTLD_NOW | RTLD_LOCAL so a
- * missing symbol fails here, not in the middle of a render, and two modules cannot see each
- * other's symbols. Every descriptor is checked before it is listed; whatever fails becomes a
- * problem sentence and never stops the scan. Only `sylva_plugin_get` runs in the plugin.
+ * Folders are searched most important first (SYLVA_PLUGIN_PATH, the build tree when this
+ * program runs from it, the install folder); inside a folder, *.so files are taken in byte order
+ * of their names so that the outcome never depends on the file system. Scanning lists the
+ * modules and reads the manifest beside each (plugin_manifest.h) but opens none: a module is
+ * opened when a plugin it declares is first looked up (or when everything is listed), and a
+ * module whose manifest declares another ABI major is never opened. A module without a manifest
+ * can only be checked once open, so a lookup opens such modules in search order until the name
+ * turns up. A module is opened with RTLD_NOW | RTLD_LOCAL so a missing symbol fails here, not in
+ * the middle of a render, and two modules cannot see each other's symbols. Every descriptor is
+ * checked before it is listed; whatever fails becomes a problem sentence and never stops the
+ * scan. Only `sylva_plugin_get` runs in the plugin.
  *
  * The registry keeps a host-side copy of each accepted descriptor, zero-filled past the size
  * the plugin declared, so the rest of the host may read every field the host knows.
@@ -19,19 +24,30 @@
 #include <sys/stat.h>
 
 #include "plugin/plugin_host.h"
+#include "plugin/plugin_manifest.h"
 #include "util/arena.h"
 #include "util/edit_distance.h"
 
 /* A module returning descriptors for this many indices without a NULL is refused whole. */
-#define REGISTRY_MAX_DESCRIPTORS 64
+#define REGISTRY_MAX_DESCRIPTORS PLUGIN_MANIFEST_MAX_PLUGINS
 
-#define FIELD_END(type, field) (offsetof(type, field) + sizeof(((type *)0)->field))
+#define FIELD_END(type, field) SYLVA_FIELD_END(type, field)
 
 /* Bytes of sylva_plugin that each ABI minor defines: a descriptor that declares minor m must be
  * at least descriptor_bytes[m] long. A minor that appends fields appends an entry here. */
 static const size_t descriptor_bytes[SYLVA_ABI_MINOR + 1] = {
-    FIELD_END(sylva_plugin, extension),
+    SYLVA_PLUGIN_SIZE_1_0,
+    SYLVA_PLUGIN_SIZE_1_1,
 };
+
+/* One module file of the search path, in search order. */
+typedef struct module_entry {
+    const char *file;                 /* absolute path (owned by the registry's arena) */
+    const plugin_manifest *manifest;  /* the manifest beside it (arena), or NULL: none */
+    const char *manifest_error;       /* why the manifest cannot be used (arena), or NULL */
+    enum { MODULE_LISTED, MODULE_OPENED, MODULE_REFUSED } state; /* REFUSED: by its manifest,
+                                                                     never opened */
+} module_entry;
 
 typedef struct search_folder {
     const char *given; /* as named in the search path */
@@ -45,7 +61,8 @@ typedef struct registry_problem {
 
 struct plugin_registry {
     arena *strings;                 /* owns every string and descriptor copy below */
-    loaded_plugin *plugins;         /* malloc'ed array */
+    loaded_plugin **plugins;        /* malloc'ed array of entries in the arena: a pointer handed
+                                       out stays valid while later lookups open more modules */
     uint32_t n_plugins, cap_plugins;
     registry_problem *problems;     /* malloc'ed array */
     uint32_t n_problems, cap_problems;
@@ -53,6 +70,8 @@ struct plugin_registry {
     uint32_t n_modules, cap_modules;
     search_folder *folders;         /* malloc'ed array, in order of precedence */
     uint32_t n_folders, cap_folders;
+    module_entry *entries;          /* malloc'ed array: every module found, in search order */
+    uint32_t n_entries, cap_entries;
 };
 
 /* Makes room for `need` elements; returns 0 or -1 when memory runs out. */
@@ -92,7 +111,7 @@ static int SYLVA_PRINTF(4, 5) record_problem(plugin_registry *reg, const char *f
 static const loaded_plugin *registry_lookup(const plugin_registry *reg, const char *name)
 {
     for (uint32_t i = 0; i < reg->n_plugins; i++)
-        if (!strcmp(reg->plugins[i].desc->name, name)) return &reg->plugins[i];
+        if (!strcmp(reg->plugins[i]->desc->name, name)) return reg->plugins[i];
     return NULL;
 }
 
@@ -160,6 +179,10 @@ static void descriptor_fault(const sylva_plugin *d, char *why, size_t cap)
                      "a plugin's block (%s); rename it", d->params[k].name, keys);
             return;
         }
+    if (plugin_presets_check(d, &e)) {
+        snprintf(why, cap, "presets: %s", e.msg);
+        return;
+    }
     int has_species = d->species_section || d->species_params || d->n_species_params;
     if (d->kind != SYLVA_KIND_ECOLOGY) {
         if (has_species)
@@ -188,7 +211,8 @@ static void descriptor_fault(const sylva_plugin *d, char *why, size_t cap)
  * already declared (n_taken of them). Returns 1 listed, 0 refused (problem recorded), -1 out of
  * memory. */
 static int registry_add_descriptor(plugin_registry *reg, const char *file, uint32_t index,
-                                   const sylva_plugin *raw, const char **taken, uint32_t n_taken)
+                                   const sylva_plugin *raw, const manifest_plugin *expect,
+                                   const char **taken, uint32_t n_taken)
 {
     const char *sym = SYLVA_PLUGIN_ENTRY;
     if (raw->size < FIELD_END(sylva_plugin, abi_minor))
@@ -225,6 +249,14 @@ static int registry_add_descriptor(plugin_registry *reg, const char *file, uint3
                               "most %d bytes", file, sym, index, d.name ? "\"" : "",
                               PLUGIN_NAME_MAX + 1, d.name ? d.name : "NULL", d.name ? "\"" : "",
                               PLUGIN_NAME_MAX) < 0 ? -1 : 0;
+    if (expect && (strcmp(expect->name, d.name) || expect->kind != d.kind ||
+                   expect->abi_major != raw->abi_major || expect->abi_minor != raw->abi_minor))
+        return record_problem(reg, file, d.name, "%s: %s(%u): plugin '%s' (%s, ABI %u.%u) does "
+                              "not match its manifest, which says '%s' (%s, ABI %u.%u); rewrite "
+                              "the manifest with `sylva plugins --manifest %s`", file, sym, index,
+                              d.name, plugin_kind_name(d.kind), raw->abi_major, raw->abi_minor,
+                              expect->name, plugin_kind_name(expect->kind), expect->abi_major,
+                              expect->abi_minor, file) < 0 ? -1 : 0;
     for (uint32_t k = 0; k < n_taken; k++)
         if (!strcmp(taken[k], d.name))
             return record_problem(reg, file, d.name, "%s: %s(%u): plugin '%s': the module already "
@@ -244,11 +276,13 @@ static int registry_add_descriptor(plugin_registry *reg, const char *file, uint3
                               earlier->file) < 0 ? -1 : 0;
 
     sylva_plugin *copy = arena_alloc(reg->strings, sizeof *copy);
-    if (!copy) return -1;
+    loaded_plugin *lp = arena_alloc(reg->strings, sizeof *lp);
+    if (!copy || !lp) return -1;
     *copy = d;
+    *lp = (loaded_plugin){copy, file};
     if (grow((void **)&reg->plugins, &reg->cap_plugins, reg->n_plugins + 1, sizeof *reg->plugins))
         return -1;
-    reg->plugins[reg->n_plugins++] = (loaded_plugin){copy, file};
+    reg->plugins[reg->n_plugins++] = lp;
     return 1;
 }
 
@@ -256,9 +290,11 @@ static int registry_add_descriptor(plugin_registry *reg, const char *file, uint3
  * Modules
  */
 
-/* Loads `file` (an absolute path owned by the registry). Returns 0, or -1 when memory runs out;
- * everything else that goes wrong is recorded as a problem. */
-static int registry_load_module(plugin_registry *reg, const char *file)
+/* Loads `file` (an absolute path owned by the registry) and checks its descriptors against
+ * `manifest` (NULL: none). Returns 0, or -1 when memory runs out; everything else that goes
+ * wrong is recorded as a problem. */
+static int registry_load_module(plugin_registry *reg, const char *file,
+                                const plugin_manifest *manifest)
 {
     dlerror();
     void *handle = dlopen(file, RTLD_NOW | RTLD_LOCAL); /* owned here until kept or closed */
@@ -291,16 +327,22 @@ static int registry_load_module(plugin_registry *reg, const char *file)
     } else if (n == 0) {
         rc = record_problem(reg, file, NULL, "%s: %s(0) returned NULL: the module provides no "
                             "plugin", file, SYLVA_PLUGIN_ENTRY);
+    } else if (manifest && manifest->n != n) {
+        rc = record_problem(reg, file, NULL, "%s: the module provides %u plugin%s, its manifest "
+                            "names %u; rewrite the manifest with `sylva plugins --manifest %s`",
+                            file, n, n == 1 ? "" : "s", manifest->n, file);
+        n = 0;
     }
 
     const char *taken[REGISTRY_MAX_DESCRIPTORS]; /* names this module declared, validated */
     uint32_t n_taken = 0, listed = 0;
     for (uint32_t i = 0; i < n && rc >= 0; i++) {
-        int r = registry_add_descriptor(reg, file, i, found[i], taken, n_taken);
+        int r = registry_add_descriptor(reg, file, i, found[i],
+                                        manifest ? &manifest->plugin[i] : NULL, taken, n_taken);
         if (r < 0) rc = -1;
         if (r > 0) {
             listed++;
-            taken[n_taken++] = reg->plugins[reg->n_plugins - 1].desc->name;
+            taken[n_taken++] = reg->plugins[reg->n_plugins - 1]->desc->name;
         } else if (r == 0 && reg->problems[reg->n_problems - 1].plugin) {
             taken[n_taken++] = reg->problems[reg->n_problems - 1].plugin;
         }
@@ -316,10 +358,68 @@ static int registry_load_module(plugin_registry *reg, const char *file)
     /* Nothing listed points into the module unless it was kept above; drop what was listed
      * from it when memory ran out so no descriptor outlives its code. */
     if (rc < 0) {
-        while (reg->n_plugins && reg->plugins[reg->n_plugins - 1].file == file) reg->n_plugins--;
+        while (reg->n_plugins && reg->plugins[reg->n_plugins - 1]->file == file) reg->n_plugins--;
     }
     dlclose(handle);
     return rc < 0 ? -1 : 0;
+}
+
+/* Lists module `file` (absolute, owned by the registry) without opening it, with the manifest
+ * beside it read. Returns 0, or -1 when memory runs out. */
+static int registry_list_module(plugin_registry *reg, const char *file)
+{
+    if (grow((void **)&reg->entries, &reg->cap_entries, reg->n_entries + 1, sizeof *reg->entries))
+        return -1;
+    module_entry *e = &reg->entries[reg->n_entries++];
+    *e = (module_entry){file, NULL, NULL, MODULE_LISTED};
+    char path[4096];
+    if (plugin_manifest_path(file, path, sizeof path)) return 0;
+    plugin_manifest *m = arena_alloc(reg->strings, sizeof *m);
+    if (!m) return -1;
+    err_buf err;
+    int r = plugin_manifest_read(path, m, &err);
+    if (r > 0) e->manifest = m;
+    if (r < 0 && !(e->manifest_error = arena_strdup(reg->strings, err.msg))) return -1;
+    return 0;
+}
+
+/* Refuses entry e for its manifest (recording why) without opening it: a manifest that cannot
+ * be used, or one that declares no plugin of this host's ABI major. Returns 1 refused, 0 not,
+ * -1 when memory runs out. */
+static int registry_refuse_by_manifest(plugin_registry *reg, module_entry *e)
+{
+    if (e->manifest_error)
+        return record_problem(reg, e->file, NULL, "%s: not opened: %s", e->file,
+                              e->manifest_error);
+    const plugin_manifest *m = e->manifest;
+    uint32_t usable = 0;
+    for (uint32_t i = 0; m && i < m->n; i++) usable += m->plugin[i].abi_major == SYLVA_ABI_MAJOR;
+    if (!m || usable) return 0;
+    char path[4096];
+    plugin_manifest_path(e->file, path, sizeof path);
+    for (uint32_t i = 0; i < m->n; i++)
+        if (record_problem(reg, e->file, m->plugin[i].name, "%s: not opened: its manifest %s says "
+                           "plugin '%s' is built against sylva plugin ABI %u.%u, this host speaks "
+                           "%d.%d; rebuild the plugin", e->file, path, m->plugin[i].name,
+                           m->plugin[i].abi_major, m->plugin[i].abi_minor, SYLVA_ABI_MAJOR,
+                           SYLVA_ABI_MINOR) < 0)
+            return -1;
+    return 1;
+}
+
+/* Opens entry i if it is not open yet, unless its manifest refuses it. Returns 0, or -1 when
+ * memory runs out. */
+static int registry_open_entry(plugin_registry *reg, uint32_t i)
+{
+    module_entry *e = &reg->entries[i];
+    if (e->state != MODULE_LISTED) return 0;
+    int refused = registry_refuse_by_manifest(reg, e);
+    if (refused) {
+        e->state = MODULE_REFUSED;
+        return refused < 0 ? -1 : 0;
+    }
+    e->state = MODULE_OPENED;
+    return registry_load_module(reg, e->file, e->manifest);
 }
 
 static int name_is_module(const struct dirent *e)
@@ -375,8 +475,7 @@ static int registry_scan_folder(plugin_registry *reg, const char *folder)
                 rc = -1;
             } else {
                 snprintf(path, len, "%s/%s", stored_key, entries[i]->d_name);
-                if (stat(path, &st) == 0 && S_ISREG(st.st_mode))
-                    rc = registry_load_module(reg, path);
+                if (stat(path, &st) == 0 && S_ISREG(st.st_mode)) rc = registry_list_module(reg, path);
             }
         }
         free(entries[i]);
@@ -420,15 +519,43 @@ static plugin_registry *registry_out_of_memory(plugin_registry *reg, err_buf *er
     return NULL;
 }
 
+int plugin_running_from_build_tree(void)
+{
+    char *exe = realpath("/proc/self/exe", NULL); /* malloc'ed by libc, freed below */
+    char *root = realpath(SYLVA_BUILD_ROOT, NULL); /* likewise */
+    size_t n = root ? strlen(root) : 0;
+    int inside = exe && root && !strncmp(exe, root, n) && exe[n] == '/';
+    free(exe);
+    free(root);
+    return inside;
+}
+
 plugin_registry *plugin_registry_open(err_buf *err)
 {
     plugin_registry *reg = registry_new(err);
     if (!reg) return NULL;
     if (registry_scan_list(reg, getenv("SYLVA_PLUGIN_PATH")) ||
-        registry_scan_folder(reg, SYLVA_PLUGIN_BUILD_DIR) ||
+        (plugin_running_from_build_tree() && registry_scan_folder(reg, SYLVA_PLUGIN_BUILD_DIR)) ||
         registry_scan_folder(reg, SYLVA_PLUGIN_INSTALL_DIR))
         return registry_out_of_memory(reg, err);
     return reg;
+}
+
+int plugin_registry_load_all(plugin_registry *reg, err_buf *err)
+{
+    for (uint32_t i = 0; reg && i < reg->n_entries; i++)
+        if (registry_open_entry(reg, i))
+            return err_nomem(err, "out of memory while loading the plugin module %s",
+                           reg->entries[i].file);
+    return 0;
+}
+
+uint32_t plugin_registry_opened_count(const plugin_registry *reg)
+{
+    uint32_t n = 0;
+    for (uint32_t i = 0; reg && i < reg->n_entries; i++)
+        n += reg->entries[i].state == MODULE_OPENED;
+    return n;
 }
 
 plugin_registry *plugin_registry_open_path(const char *folders, err_buf *err)
@@ -454,7 +581,8 @@ int plugin_registry_add_file(plugin_registry *reg, const char *file, err_buf *er
     } else {
         char *path = arena_strdup(reg->strings, real);
         free(real);
-        rc = path ? registry_load_module(reg, path) : -1;
+        rc = path ? registry_list_module(reg, path) : -1;
+        if (rc == 0) rc = registry_open_entry(reg, reg->n_entries - 1);
     }
     if (rc < 0) return err_nomem(err, "out of memory while loading the plugin module %s", file);
     if (reg->n_problems > before) return err_set(err, "%s", reg->problems[before].pub.message);
@@ -469,6 +597,7 @@ void plugin_registry_free(plugin_registry *reg)
     free(reg->plugins);
     free(reg->problems);
     free(reg->folders);
+    free(reg->entries);
     arena_free(reg->strings);
     free(reg);
 }
@@ -481,7 +610,7 @@ uint32_t plugin_registry_count(const plugin_registry *reg) { return reg ? reg->n
 
 const loaded_plugin *plugin_registry_at(const plugin_registry *reg, uint32_t i)
 {
-    return reg && i < reg->n_plugins ? &reg->plugins[i] : NULL;
+    return reg && i < reg->n_plugins ? reg->plugins[i] : NULL;
 }
 
 uint32_t plugin_registry_problem_count(const plugin_registry *reg)
@@ -531,7 +660,7 @@ static void err_append_inventory(err_buf *err, const plugin_registry *reg, sylva
     const char *kname = kind ? plugin_kind_name(kind) : NULL;
     uint32_t shown = 0;
     for (uint32_t i = 0; i < reg->n_plugins; i++) {
-        const sylva_plugin *d = reg->plugins[i].desc;
+        const sylva_plugin *d = reg->plugins[i]->desc;
         if (kind && d->kind != kind) continue;
         if (shown == 0) err_append(err, "; the %s%splugins are: ", kname ? kname : "",
                                    kname ? " " : "");
@@ -558,9 +687,25 @@ const loaded_plugin *plugin_registry_find(const plugin_registry *reg, const char
         return NULL;
     }
     const char *kname = kind ? plugin_kind_name(kind) : "";
+    /* A registry is a cache of the search path: finding a plugin opens its module on first
+     * use, so the registry changes inside even through a const pointer. */
+    plugin_registry *cache = (plugin_registry *)reg;
     const loaded_plugin *lp = registry_lookup(reg, name);
+    for (uint32_t i = 0; !lp && i < reg->n_entries; i++) {
+        const module_entry *e = &reg->entries[i];
+        if (e->state != MODULE_LISTED || (e->manifest && !plugin_manifest_declares(e->manifest, name)))
+            continue;
+        if (registry_open_entry(cache, i)) {
+            err_nomem(err, "out of memory while loading the plugin module %s", e->file);
+            return NULL;
+        }
+        lp = registry_lookup(reg, name);
+    }
+    if (!lp && plugin_registry_load_all(cache, err)) return NULL; /* for the sentence below */
+    if (!lp) lp = registry_lookup(reg, name);
     if (lp && kind && lp->desc->kind != kind) {
         sylva_kind has = lp->desc->kind;
+        if (plugin_registry_load_all(cache, err)) return NULL; /* the inventory lists them all */
         err_set(err, "plugin '%s' is %s %s plugin, not %s %s plugin", name,
                 has == SYLVA_KIND_ECOLOGY ? "an" : "a", plugin_kind_name(has),
                 kind == SYLVA_KIND_ECOLOGY ? "an" : "a", kname);
@@ -589,7 +734,7 @@ const loaded_plugin *plugin_registry_find(const plugin_registry *reg, const char
     const char *nearest = NULL;
     size_t best = edit_distance_near_limit(name) + 1;
     for (uint32_t i = 0; i < reg->n_plugins; i++) {
-        const sylva_plugin *d = reg->plugins[i].desc;
+        const sylva_plugin *d = reg->plugins[i]->desc;
         if (kind && d->kind != kind) continue;
         size_t dist = edit_distance(name, d->name);
         if (dist < best) best = dist, nearest = d->name;

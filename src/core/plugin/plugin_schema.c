@@ -72,7 +72,7 @@ int plugin_name_is_valid(const char *name)
  * Ranges
  */
 
-static int value_in_range(const sylva_param_spec *p, double v)
+int plugin_value_in_range(const sylva_param_spec *p, double v)
 {
     if (isnan(v)) return 0;
     if (p->flags & SYLVA_PARAM_HAS_MIN) {
@@ -84,9 +84,7 @@ static int value_in_range(const sylva_param_spec *p, double v)
     return 1;
 }
 
-/* A number for people: whole numbers in full (2^53 as 9007199254740992), others with up to
- * ten significant digits. Returns buf. */
-static const char *format_number(char buf[32], double v)
+const char *plugin_number_format(char buf[32], double v)
 {
     if (v == floor(v) && fabs(v) < 1e17) snprintf(buf, 32, "%.0f", v);
     else snprintf(buf, 32, "%.10g", v);
@@ -101,12 +99,12 @@ static void format_range(char *buf, size_t cap, const sylva_param_spec *p)
     int hi_ex = (p->flags & SYLVA_PARAM_MAX_EXCLUSIVE) != 0;
     char a[32], b[32];
     if (lo && hi)
-        snprintf(buf, cap, "%c%s, %s%c", lo_ex ? '(' : '[', format_number(a, p->min),
-                 format_number(b, p->max), hi_ex ? ')' : ']');
+        snprintf(buf, cap, "%c%s, %s%c", lo_ex ? '(' : '[', plugin_number_format(a, p->min),
+                 plugin_number_format(b, p->max), hi_ex ? ')' : ']');
     else if (lo)
-        snprintf(buf, cap, "%s %s", lo_ex ? ">" : ">=", format_number(a, p->min));
+        snprintf(buf, cap, "%s %s", lo_ex ? ">" : ">=", plugin_number_format(a, p->min));
     else if (hi)
-        snprintf(buf, cap, "%s %s", hi_ex ? "<" : "<=", format_number(b, p->max));
+        snprintf(buf, cap, "%s %s", hi_ex ? "<" : "<=", plugin_number_format(b, p->max));
     else if (cap)
         buf[0] = '\0';
 }
@@ -157,9 +155,9 @@ static int check_number_default(const sylva_param_spec *p, const char *path, err
     if (p->type == SYLVA_P_INT && (p->def != floor(p->def) || fabs(p->def) > 9007199254740992.0))
         return spec_fail(err, path, "an int's default must be a whole number (at most 2^53 in "
                          "magnitude), not %.17g", p->def);
-    if (!value_in_range(p, p->def))
+    if (!plugin_value_in_range(p, p->def))
         return spec_fail(err, path, "the default %s%s%s is outside the range %s%s%s",
-                         format_number(a, p->def), sp, unit, range, sp, unit);
+                         plugin_number_format(a, p->def), sp, unit, range, sp, unit);
     return 0;
 }
 
@@ -212,7 +210,7 @@ static int check_list_default(const sylva_param_spec *p, const char *path, const
             if (k > 0 && x < p->def_list[2 * k - 2])
                 return spec_fail(err, path, "default point %u has x %g, less than the previous "
                                  "point's %g; x must not decrease", k, x, p->def_list[2 * k - 2]);
-            if (!value_in_range(p, y))
+            if (!plugin_value_in_range(p, y))
                 return spec_fail(err, path, "default point %u has y %g, outside the range %s", k,
                                  y, range);
         }
@@ -221,7 +219,7 @@ static int check_list_default(const sylva_param_spec *p, const char *path, const
     for (uint32_t k = 0; k < p->def_len; k++) {
         double v = p->def_list[k];
         if (!isfinite(v)) return spec_fail(err, path, "default element %u is not finite", k);
-        if (!value_in_range(p, v))
+        if (!plugin_value_in_range(p, v))
             return spec_fail(err, path, "default element %u is %g, outside the range %s", k, v,
                              range);
     }
@@ -396,7 +394,7 @@ static void format_default(char *buf, size_t cap, const sylva_param_spec *p)
     switch (p->type) {
     case SYLVA_P_BOOL: text_add(&t, "default %s", p->def != 0.0 ? "true" : "false"); break;
     case SYLVA_P_INT:
-    case SYLVA_P_REAL: text_add(&t, "default %s%s%s", format_number(a, p->def), sp, unit); break;
+    case SYLVA_P_REAL: text_add(&t, "default %s%s%s", plugin_number_format(a, p->def), sp, unit); break;
     case SYLVA_P_STRING:
     case SYLVA_P_PATH:
         if (p->def_str) text_add(&t, "default \"%s\"", p->def_str);
@@ -411,14 +409,14 @@ static void format_default(char *buf, size_t cap, const sylva_param_spec *p)
         }
         text_add(&t, "default [");
         for (uint32_t k = 0; k < p->def_len; k++)
-            text_add(&t, "%s%s", k ? ", " : "", format_number(a, p->def_list[k]));
+            text_add(&t, "%s%s", k ? ", " : "", plugin_number_format(a, p->def_list[k]));
         text_add(&t, "]%s%s", sp, unit);
         break;
     case SYLVA_P_POLYLINE:
         text_add(&t, "default [");
         for (uint32_t k = 0; p->def_list && k < p->def_len; k++)
-            text_add(&t, "%s[%s, %s]", k ? ", " : "", format_number(a, p->def_list[2 * k]),
-                     format_number(b, p->def_list[2 * k + 1]));
+            text_add(&t, "%s[%s, %s]", k ? ", " : "", plugin_number_format(a, p->def_list[2 * k]),
+                     plugin_number_format(b, p->def_list[2 * k + 1]));
         text_add(&t, "]");
         break;
     case SYLVA_P_GRID: text_add(&t, "default none"); break;

@@ -232,6 +232,34 @@ static const char *host_resolve_path(sylva_host *h, const char *rel)
     return s;
 }
 
+/* The plugin allocator is the host's: its limits and the fault-injection tests reach it. */
+static void *host_mem_alloc(size_t bytes) { return malloc(bytes); }
+static void *host_mem_calloc(size_t count, size_t size) { return calloc(count, size); }
+static void *host_mem_realloc(void *block, size_t bytes) { return realloc(block, bytes); }
+static void host_mem_free(void *block) { free(block); }
+
+static const sylva_value *host_param(sylva_host *h, const sylva_params *p, const char *name)
+{
+    if (!p || !name) {
+        host_error(h, "param called without %s", p ? "a parameter name" : "parameters");
+        return NULL;
+    }
+    int k = sylva_param_index(p, name);
+    if (k >= 0) return &p->values[k];
+    char names[ERR_MSG_MAX / 2];
+    size_t len = 0;
+    names[0] = '\0';
+    for (uint32_t i = 0; i < p->n && len < sizeof names; i++) {
+        int w = snprintf(names + len, sizeof names - len, "%s%s", i ? ", " : "", p->spec[i].name);
+        if (w < 0) break;
+        len += (size_t)w;
+    }
+    host_error(h, "%s read parameter '%s', which its schema does not have; %s%s",
+               h->context ? h->context : "the plugin", name,
+               p->n ? "the parameters are: " : "the schema has no parameters", names);
+    return NULL;
+}
+
 static const sylva_host_api api_table = {
     .size = sizeof(sylva_host_api),
     .abi_major = SYLVA_ABI_MAJOR,
@@ -252,6 +280,11 @@ static const sylva_host_api api_table = {
     .terrain_normal = host_terrain_normal,
     .plant_add = host_plant_add,
     .resolve_path = host_resolve_path,
+    .mem_alloc = host_mem_alloc,
+    .mem_calloc = host_mem_calloc,
+    .mem_realloc = host_mem_realloc,
+    .mem_free = host_mem_free,
+    .param = host_param,
 };
 
 const sylva_host_api *host_api_table(void) { return &api_table; }

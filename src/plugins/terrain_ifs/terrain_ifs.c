@@ -6,7 +6,9 @@
  * generate() builds the maps, computes the heights by random iteration or deterministic
  * evaluation, classifies the ground and fills the host's heightfield. Every random number comes
  * from host streams ("terrain_ifs.dtm", "terrain_ifs.chaos" chain c); the plugin keeps no
- * global state and writes nothing to stdout.
+ * global state and writes nothing to stdout. What this file allocates goes through the host's
+ * allocator (ABI 1.1), so the host's limits and fault tests reach it; per-cell fields are read in
+ * place, since the parameters stay valid until destroy().
  */
 #include <math.h>
 #include <stdio.h>
@@ -24,11 +26,13 @@
 #include "sylva/plugin.h"
 #include "terrain_ifs_schema.h"
 
-/* What create() keeps for generate(). Owned by the plugin until terrain_ifs_destroy. */
+/* What create() keeps for generate(). Owned by the plugin until terrain_ifs_destroy, which frees
+ * it with the host's mem_free it keeps (destroy receives no table). */
 typedef struct terrain_ifs_state {
+    void (*mem_free)(void *);    /* the host's: frees the state and humidity */
     ifs_dtm *dtm;                /* owned; heights after z_scale and z_offset */
-    double *alpha_field;         /* owned copy, (N-1)(M-1), or NULL */
-    double *probability_field;   /* owned copy, or NULL */
+    const double *alpha_field;   /* the parameter's values, (N-1)(M-1), or NULL */
+    const double *probability_field; /* likewise, or NULL */
     ifs_mode mode;
     double alpha;
     int random;                  /* 1: random iteration, 0: deterministic evaluation */
@@ -42,7 +46,7 @@ typedef struct terrain_ifs_state {
     int classes;                 /* 1: ground-cover classes, 0: the scene's material */
     double water_level;          /* normalised, 0: none */
     ifs_surface_rules rules;
-    float *humidity;             /* owned: humidity at each output node, or NULL */
+    float *humidity;             /* owned (host allocator): humidity at each output node, or NULL */
     float albedo[IFS_SURFACE_CLASSES][3];
     float water_albedo[3];
     char source[512];            /* what the DTM is, for the log */
@@ -52,8 +56,8 @@ static void state_free(terrain_ifs_state *s)
 {
     if (!s) return;
     ifs_dtm_free(s->dtm);
-    free(s->alpha_field), free(s->probability_field), free(s->humidity);
-    free(s);
+    s->mem_free(s->humidity);
+    s->mem_free(s);
 }
 
 static int is_whole(double v) { return v == floor(v) && isfinite(v); }
@@ -147,23 +151,19 @@ static int load_dtm(const sylva_host_api *api, sylva_host *host, const sylva_par
     return SYLVA_OK;
 }
 
-/* A per-cell field copied out of the parameters after checking it matches the DTM's cells. */
-static int copy_cell_field(const sylva_host_api *api, sylva_host *host, const sylva_params *params,
-                           const char *name, const ifs_dtm *d, double **out)
+/* A per-cell field of the parameters, after checking it matches the DTM's cells. */
+static int cell_field(const sylva_host_api *api, sylva_host *host, const sylva_params *params,
+                      const char *name, const ifs_dtm *d, const double **out)
 {
-    const sylva_value *v = sylva_param(params, name);
+    const sylva_value *v = api->param(host, params, name); /* NULL: not in the schema (message set) */
     *out = NULL;
+    if (!v) return SYLVA_ERR_INTERNAL;
     if (!v->is_set) return SYLVA_OK;
     if (v->rows != d->ny - 1 || v->cols != d->nx - 1)
         return api->param_error(host, params, name, "%s has %u rows of %u values; the DTM has %u "
                                 "rows of %u cells (one value per cell, rows from south to north)",
                                 name, v->rows, v->cols, d->ny - 1, d->nx - 1);
-    *out = malloc((size_t)v->rows * v->cols * sizeof **out); /* owned by the state */
-    if (!*out) {
-        api->error(host, "terrain_ifs: out of memory copying %s", name);
-        return SYLVA_ERR_NOMEM;
-    }
-    memcpy(*out, v->list, (size_t)v->rows * v->cols * sizeof **out);
+    *out = v->list; /* valid until destroy(): the host's promise */
     return SYLVA_OK;
 }
 
@@ -232,17 +232,21 @@ static int terrain_ifs_create(const sylva_host_api *api, sylva_host *host,
     *state = NULL;
     int rc = check_relations(api, host, params);
     if (rc) return rc;
-    terrain_ifs_state *s = calloc(1, sizeof *s); /* owned by the plugin until destroy */
+    if (!SYLVA_API_HAS(api, mem_alloc))
+        return api->error(host, "terrain_ifs needs a host with sylva plugin ABI 1.1 or newer (for "
+                          "its allocator); this host speaks %u.%u", api->abi_major, api->abi_minor);
+    terrain_ifs_state *s = api->mem_calloc(1, sizeof *s); /* owned by the plugin until destroy */
     if (!s) {
         api->error(host, "terrain_ifs: out of memory for its settings");
         return SYLVA_ERR_NOMEM;
     }
+    s->mem_free = api->mem_free;
     if ((rc = load_dtm(api, host, params, s))) goto fail;
     ifs_dtm *d = s->dtm;
     double zs = sylva_param_real(params, "z_scale"), zo = sylva_param_real(params, "z_offset");
     for (size_t k = 0; k < (size_t)d->nx * d->ny; k++) d->z[k] = d->z[k] * zs + zo;
-    if ((rc = copy_cell_field(api, host, params, "alpha_field", d, &s->alpha_field))) goto fail;
-    if ((rc = copy_cell_field(api, host, params, "probability_field", d, &s->probability_field)))
+    if ((rc = cell_field(api, host, params, "alpha_field", d, &s->alpha_field))) goto fail;
+    if ((rc = cell_field(api, host, params, "probability_field", d, &s->probability_field)))
         goto fail;
 
     const sylva_value *out = sylva_param(params, "output_nodes");
@@ -319,7 +323,7 @@ static int terrain_ifs_create(const sylva_host_api *api, sylva_host *host,
                                    .band = (uint32_t)sylva_param_int(params, "humidity_band"),
                                    .has_range = hrange->is_set};
         if (hrange->is_set) src.range[0] = hrange->list[0], src.range[1] = hrange->list[1];
-        s->humidity = malloc((size_t)s->nx_out * s->ny_out * sizeof *s->humidity);
+        s->humidity = api->mem_alloc((size_t)s->nx_out * s->ny_out * sizeof *s->humidity);
         if (!s->humidity) {
             api->error(host, "terrain_ifs: out of memory for the humidity of %u x %u nodes",
                        s->nx_out, s->ny_out);
@@ -369,7 +373,7 @@ static int compute_heights(const terrain_ifs_state *s, const ifs_maps *maps, uin
         return SYLVA_OK;
     }
     uint64_t chains = ifs_chaos_chain_count(s->iterations);
-    sylva_rng *streams = malloc(chains * sizeof *streams); /* owned here */
+    sylva_rng *streams = api->mem_alloc(chains * sizeof *streams); /* owned here */
     if (!streams) {
         api->error(host, "terrain_ifs: out of memory for %llu random streams",
                    (unsigned long long)chains);
@@ -383,7 +387,7 @@ static int compute_heights(const terrain_ifs_state *s, const ifs_maps *maps, uin
                          .progress = report_progress, .pctx = &p};
     ifs_chaos_stats stats;
     rc = ifs_chaos_grid(maps, &job, hf->z, &stats, &err);
-    free(streams);
+    api->mem_free(streams);
     if (rc) {
         api->error(host, "%s", err.msg);
         return rc;
@@ -400,7 +404,7 @@ static int apply_surface(const terrain_ifs_state *s, const sylva_host_api *api, 
                          sylva_heightfield *hf)
 {
     size_t n = (size_t)hf->nx * hf->ny;
-    uint8_t *cls = malloc(n); /* owned here */
+    uint8_t *cls = api->mem_alloc(n); /* owned here */
     int rc = SYLVA_OK;
     if (!cls) {
         api->error(host, "terrain_ifs: out of memory classifying %zu nodes", n);
@@ -431,7 +435,7 @@ static int apply_surface(const terrain_ifs_state *s, const sylva_host_api *api, 
         if ((hf->water_material = api->material_new(host, &w)) < 0) rc = hf->water_material;
     }
 done:
-    free(cls);
+    api->mem_free(cls);
     return rc;
 }
 

@@ -5,29 +5,32 @@
  * the branch structure for the request's age and level of detail (vessel_structure.h), then
  * its mesh (vessel_mesh.h), which it hands to the host in one mesh_append. The plugin keeps no
  * global state; the wind phases come from the host's stream "tree_vessel.wind" for the
- * variant. */
+ * variant. What this file allocates goes through the host's allocator (ABI 1.1), so the host's
+ * limits and fault tests reach it; the model's own buffers use the C library's. */
 #include <stddef.h>
 #include <stdio.h>
-#include <stdlib.h>
 
 #include "sylva/plugin.h"
 #include "vessel_config.h"
 #include "vessel_mesh.h"
+#include "vessel_presets.h"
 #include "vessel_structure.h"
 #include "vessel_texture.h"
 
-/* The plugin's state for one species: owned by the plugin, freed by tree_vessel_destroy. */
+/* The plugin's state for one species: owned by the plugin, freed by tree_vessel_destroy with the
+ * host's mem_free it keeps (destroy receives no table). */
 typedef struct tree_vessel_state {
     vessel_params params;
     int32_t bark_material, leaf_material;
+    void (*mem_free)(void *);
 } tree_vessel_state;
 
 /* Textures and materials for the species; returns 0 or a negative status (message set). */
 static int make_materials(const sylva_host_api *api, sylva_host *host, tree_vessel_state *s)
 {
     const vessel_params *p = &s->params;
-    uint8_t *bark = malloc(VESSEL_BARK_TEXTURE_SIZE * VESSEL_BARK_TEXTURE_SIZE * 4); /* owned here */
-    uint8_t *leaf = malloc(VESSEL_LEAF_TEXTURE_SIZE * VESSEL_LEAF_TEXTURE_SIZE * 4); /* owned here */
+    uint8_t *bark = api->mem_alloc(VESSEL_BARK_TEXTURE_SIZE * VESSEL_BARK_TEXTURE_SIZE * 4); /* owned here */
+    uint8_t *leaf = api->mem_alloc(VESSEL_LEAF_TEXTURE_SIZE * VESSEL_LEAF_TEXTURE_SIZE * 4); /* owned here */
     int rc = SYLVA_OK;
     if (!bark || !leaf) {
         api->error(host, "tree_vessel: out of memory for the bark and leaf textures");
@@ -58,8 +61,8 @@ static int make_materials(const sylva_host_api *api, sylva_host *host, tree_vess
     if (s->bark_material < 0 || s->leaf_material < 0)
         rc = s->bark_material < 0 ? s->bark_material : s->leaf_material;
 done:
-    free(bark);
-    free(leaf);
+    api->mem_free(bark);
+    api->mem_free(leaf);
     return rc;
 }
 
@@ -67,21 +70,25 @@ static int tree_vessel_create(const sylva_host_api *api, sylva_host *host,
                               const sylva_params *params, void **state)
 {
     *state = NULL;
-    tree_vessel_state *s = calloc(1, sizeof *s); /* owned by the plugin until destroy */
+    if (!SYLVA_API_HAS(api, mem_alloc))
+        return api->error(host, "tree_vessel needs a host with sylva plugin ABI 1.1 or newer (for "
+                          "its allocator); this host speaks %u.%u", api->abi_major, api->abi_minor);
+    tree_vessel_state *s = api->mem_calloc(1, sizeof *s); /* owned by the plugin until destroy */
     if (!s) {
         api->error(host, "tree_vessel: out of memory for the species' parameters");
         return SYLVA_ERR_NOMEM;
     }
+    s->mem_free = api->mem_free;
     vessel_err err = {0};
     if (vessel_config_read(params, &s->params, &err)) {
-        free(s);
+        api->mem_free(s);
         if (err.param[0]) api->param_error(host, params, err.param, "%s", err.msg);
         else api->error(host, "tree_vessel: %s", err.msg);
         return (int)err.fault;
     }
     int rc = make_materials(api, host, s);
     if (rc) {
-        free(s);
+        api->mem_free(s);
         return rc;
     }
     *state = s;
@@ -139,7 +146,11 @@ done:
     return rc;
 }
 
-static void tree_vessel_destroy(void *state) { free(state); }
+static void tree_vessel_destroy(void *state)
+{
+    tree_vessel_state *s = state;
+    if (s) s->mem_free(s);
+}
 
 static const sylva_plugin tree_vessel = {
     .size = sizeof(sylva_plugin),
@@ -155,6 +166,9 @@ static const sylva_plugin tree_vessel = {
     .create = tree_vessel_create,
     .generate = tree_vessel_generate,
     .destroy = tree_vessel_destroy,
+    .preset_param = "preset",
+    .presets = vessel_presets,
+    .n_presets = VESSEL_PRESETS,
 };
 
 SYLVA_EXPORT const sylva_plugin *sylva_plugin_get(uint32_t index)

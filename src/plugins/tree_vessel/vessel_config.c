@@ -1,7 +1,10 @@
 /* vessel_config.c — the tree_vessel parameter schema (defaults: the beech preset of 004 §3.4.1)
- * and the preset-then-overrides reading of a scene block. */
+ * and the preset-then-overrides reading of a scene block. A preset (vessel_presets.c) and a scene
+ * block are read by the same code: a preset becomes a block that gives every key, its own value
+ * or else the schema's default. */
 #include "vessel_config.h"
 
+#include <stdint.h>
 #include <string.h>
 
 #include "vessel_presets.h"
@@ -127,12 +130,9 @@ static int read_polyline(const sylva_params *params, const vessel_polyline_rule 
                                err);
 }
 
-int vessel_config_read(const sylva_params *params, vessel_params *out, vessel_err *err)
+/* Copies the keys `params` gives onto *out. Returns 0, or -1 with err set. */
+static int read_given(const sylva_params *params, vessel_params *out, vessel_err *err)
 {
-    const sylva_value *preset = sylva_param(params, "preset");
-    if (!preset || vessel_preset_get((vessel_preset)preset->i, out))
-        return vessel_fail(err, VESSEL_FAULT_PARAM, "preset", "unknown preset; the presets are beech, spruce, "
-                           "weeping_willow and maple");
     const sylva_value *v;
     if ((v = given(params, "vessels"))) {
         if (v->i < 1 || v->i > VESSEL_MAX_VESSELS)
@@ -173,5 +173,47 @@ int vessel_config_read(const sylva_params *params, vessel_params *out, vessel_er
         for (int k = 0; k < 3; k++) out->wind_direction[k] = v->list[k];
     read_real(params, "flexibility", &out->flexibility);
     read_real(params, "wind_time", &out->wind_time);
+    return 0;
+}
+
+static int64_t choice_index(const sylva_param_spec *spec, const char *s)
+{
+    for (int64_t k = 0; s && spec->choices && spec->choices[k]; k++)
+        if (!strcmp(spec->choices[k], s)) return k;
+    return -1;
+}
+
+int vessel_preset_get(vessel_preset which, vessel_params *out)
+{
+    if ((unsigned)which >= VESSEL_PRESETS) return -1;
+    const sylva_preset *preset = &vessel_presets[which];
+    sylva_value values[VESSEL_SCHEMA_COUNT];
+    for (uint32_t k = 0; k < VESSEL_SCHEMA_COUNT; k++) {
+        const sylva_param_spec *spec = &vessel_schema[k];
+        sylva_value v = {.is_set = 1, .r = spec->def, .i = (int64_t)spec->def, .s = spec->def_str,
+                         .list = spec->def_list, .len = spec->def_len};
+        for (uint32_t j = 0; j < preset->n_values; j++) {
+            const sylva_preset_value *pv = &preset->values[j];
+            if (strcmp(pv->param, spec->name)) continue;
+            v = (sylva_value){.is_set = 1, .r = pv->r, .i = (int64_t)pv->r, .s = pv->s,
+                              .list = pv->list, .len = pv->len};
+        }
+        if (spec->type == SYLVA_P_ENUM) v.i = choice_index(spec, v.s);
+        values[k] = v;
+    }
+    values[0].i = which; /* the preset key itself */
+    sylva_params block = {.spec = vessel_schema, .n = VESSEL_SCHEMA_COUNT, .values = values};
+    vessel_err err = {0};
+    memset(out, 0, sizeof *out);
+    return read_given(&block, out, &err) ? -1 : 0;
+}
+
+int vessel_config_read(const sylva_params *params, vessel_params *out, vessel_err *err)
+{
+    const sylva_value *preset = sylva_param(params, "preset");
+    if (!preset || vessel_preset_get((vessel_preset)preset->i, out))
+        return vessel_fail(err, VESSEL_FAULT_PARAM, "preset", "unknown preset; the presets are beech, spruce, "
+                           "weeping_willow and maple");
+    if (read_given(params, out, err)) return -1;
     return vessel_params_check(out, err);
 }

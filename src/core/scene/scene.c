@@ -52,6 +52,7 @@ void scene_free(scene *s)
     for (uint32_t i = 0; i < s->n_prototypes; i++) mesh_free(s->prototypes[i].mesh);
     for (uint32_t i = 0; i < s->n_objects; i++) free(s->objects[i].name), mesh_free(s->objects[i].mesh);
     free(s->materials);
+    name_index_free(&s->material_names);
     free(s->textures);
     free(s->species);
     free(s->prototypes);
@@ -65,7 +66,10 @@ int32_t scene_add_material(scene *s, const sylva_material_desc *d, err_buf *err)
     if (grow((void **)&s->materials, &s->cap_materials, s->n_materials + 1, sizeof(material)))
         return err_set(err, "out of memory adding a material");
     char *name = strdup(d->name ? d->name : "unnamed");
-    if (!name) return err_set(err, "out of memory adding a material");
+    if (!name || name_index_add(&s->material_names, name, s->n_materials) < 0) {
+        free(name);
+        return err_set(err, "out of memory adding a material");
+    }
     material *m = &s->materials[s->n_materials];
     *m = (material){.name = name, .bsdf = d->bsdf == SYLVA_BSDF_LEAF ? SYLVA_BSDF_LEAF : SYLVA_BSDF_LAMBERT,
                     .albedo = v3(d->albedo[0], d->albedo[1], d->albedo[2]),
@@ -132,9 +136,7 @@ int32_t scene_add_object(scene *s, const char *name, mesh *m, err_buf *err)
 
 int32_t scene_find_material(const scene *s, const char *name)
 {
-    for (uint32_t i = 0; i < s->n_materials; i++)
-        if (!strcmp(s->materials[i].name, name)) return (int32_t)i;
-    return -1;
+    return (int32_t)name_index_find(&s->material_names, name);
 }
 
 uint32_t scene_variant_for_age(const scene *s, uint32_t sp, double t)

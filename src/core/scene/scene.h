@@ -15,6 +15,7 @@
 #include "scene/mesh.h"
 #include "scene/scene_file.h"
 #include "util/err.h"
+#include "util/name_index.h"
 #include "util/vec3.h"
 
 typedef struct material {
@@ -68,6 +69,7 @@ typedef struct scene {
     int32_t water_material;
 
     material *materials; uint32_t n_materials, cap_materials; /* owned */
+    name_index material_names;  /* name → first material of that name; owned (its table) */
     texture *textures; uint32_t n_textures, cap_textures;     /* owned */
     species *species; uint32_t n_species;                     /* owned */
     prototype *prototypes; uint32_t n_prototypes, cap_prototypes; /* owned */
@@ -87,6 +89,7 @@ int32_t scene_add_prototype(scene *s, uint32_t species, uint32_t variant, double
                             double height, mesh *m, err_buf *err); /* takes m */
 int32_t scene_add_instance(scene *s, uint32_t prototype, const xform3x4 *xf, err_buf *err);
 int32_t scene_add_object(scene *s, const char *name, mesh *m, err_buf *err); /* takes m */
+/* The first material named `name`, or -1 (a hash lookup). */
 int32_t scene_find_material(const scene *s, const char *name);
 
 /* 1 when hits on material m are cut where its texture's alpha is below one half: it asks for

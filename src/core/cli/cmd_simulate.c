@@ -11,7 +11,7 @@
 #include "cli/cli_ecology.h"
 #include "cli/commands.h"
 #include "io/atomic_file.h"
-#include "io/ecology_maps.h"
+#include "scene/ecology_maps.h"
 #include "io/population_plot.h"
 #include "util/progress.h"
 

@@ -13,7 +13,7 @@
 #include "io/image_io.h"
 #include "pov/pov_names.h"
 #include "pov/pov_write.h"
-#include "render/texture_lookup.h"
+#include "geometry/texture_lookup.h"
 #include "scene/scene_build.h"
 #include "scene/shapes.h"
 

@@ -151,7 +151,7 @@ TEST(sun_cone_sampling)
             vec3 wi;
             float pdf = lights_sun_sample(&l, (i + 0.5f) / 32, (j + 0.5f) / 32, &wi);
             CHECK(lights_in_sun(&l, wi));
-            e += l.sun_radiance.x * v3_dot(wi, l.sun_dir) / pdf;
+            e += l.summary.sun_radiance.x * v3_dot(wi, l.summary.sun_dir) / pdf;
             n++;
         }
     CHECK_NEAR(e / n, 2.0, 1e-3);

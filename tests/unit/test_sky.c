@@ -3,7 +3,8 @@
  * agreement of sample and pdf, an unbiased estimate of sky irradiance). */
 #include "harness.h"
 
-#include "render/sky.h"
+#include "geometry/sky_preetham.h"
+#include "render/sky_table.h"
 
 #include <stdint.h>
 

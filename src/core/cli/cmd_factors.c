@@ -11,7 +11,7 @@
 #include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "io/atomic_file.h"
-#include "io/ecology_maps.h"
+#include "scene/ecology_maps.h"
 
 static void factors_usage(FILE *out)
 {

@@ -12,7 +12,7 @@
 #include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "io/atomic_file.h"
-#include "io/ecology_maps.h"
+#include "scene/ecology_maps.h"
 #include "io/population_plot.h"
 #include "util/progress.h"
 

@@ -11,9 +11,9 @@
 #include <sys/stat.h>
 
 #include "crosscheck/crosscheck_report.h"
+#include "geometry/light_summary.h"
 #include "io/image_io.h"
 #include "pov/pov_write.h"
-#include "render/lights.h"
 #include "render/render.h"
 #include "util/progress.h"
 
@@ -199,8 +199,6 @@ int crosscheck_run(const scene *s, const char *out_dir, const crosscheck_options
     film *f = NULL;
     image_f32 img = {0};
     float *pov_rgb = NULL, *pov_alpha = NULL;
-    lights l;
-    memset(&l, 0, sizeof l);
     char path[4300];
 
     /* sylva's verification render */
@@ -259,7 +257,8 @@ int crosscheck_run(const scene *s, const char *out_dir, const crosscheck_options
         err_set(err, "%s has %u channels; the cross-check needs POV-Ray's alpha (RGBA)", r->pov_image, img.channels);
         goto done;
     }
-    if (lights_init(&l, &s->sun, &s->sky, err)) goto done;
+    light_summary l;
+    if (light_summary_init(&l, &s->sun, &s->sky, err)) goto done;
     size_t n = (size_t)r->width * r->height;
     pov_rgb = malloc(n * 3 * sizeof(float));
     pov_alpha = malloc(n * sizeof(float));
@@ -292,7 +291,6 @@ int crosscheck_run(const scene *s, const char *out_dir, const crosscheck_options
     if (crosscheck_write_report(out_dir, r, o, HEATMAP_SCALE_OVER * t->over_error, err)) goto done;
     rc = 0;
 done:
-    lights_free(&l);
     free(pov_rgb);
     free(pov_alpha);
     image_free(&img);

@@ -8,12 +8,6 @@
 #define VECTORS_PER_LINE 4
 #define FACES_PER_LINE 6
 
-uint32_t pov_mesh_material(const scene *s, const mesh *m, uint32_t t)
-{
-    int32_t id = m->mat[t];
-    return id >= 0 && (uint32_t)id < s->n_materials ? (uint32_t)id : (uint32_t)s->default_material;
-}
-
 /* Writes one vector list: `name { n, <..>, <..>, ... }` of `dims` floats per entry. */
 static void write_vectors(pov_file *pf, const char *name, const float *v, uint32_t n, int dims, int *bad)
 {
@@ -49,7 +43,7 @@ int pov_write_mesh(pov_file *pf, const char *ident, const mesh *m, const scene *
     uint32_t n_used = 0;
     int need_uv = 0;
     for (uint32_t t = 0; t < m->nt; t++) {
-        uint32_t mt = pov_mesh_material(s, m, t);
+        uint32_t mt = scene_triangle_material(s, m, t);
         if (slot[mt] >= 0) continue;
         slot[mt] = (int32_t)n_used;
         used[n_used++] = mt;
@@ -85,7 +79,7 @@ int pov_write_mesh(pov_file *pf, const char *ident, const mesh *m, const scene *
         p = pov_append_text(p, ">");
         if (n_used > 1) {
             *p++ = ',';
-            p = pov_append_uint(p, (uint64_t)slot[pov_mesh_material(s, m, t)]);
+            p = pov_append_uint(p, (uint64_t)slot[scene_triangle_material(s, m, t)]);
         }
         pov_put(pf, line);
     }

@@ -1,7 +1,7 @@
 /* pov_mesh.h — a mesh as a POV-Ray mesh2 declaration: vertex positions, the shading normals,
  * uv coordinates when a textured material needs them, and a texture per triangle (one texture
  * for the whole mesh, or a texture_list when it uses several materials). Material ids resolve
- * as the renderer resolves them: an id outside the scene's table means the default material.
+ * as the renderer resolves them (scene_triangle_material).
  * Textures are referred to by the identifiers of pov_names.h, declared elsewhere. */
 #ifndef SYLVA_POV_MESH_H
 #define SYLVA_POV_MESH_H
@@ -10,9 +10,6 @@
 #include "scene/mesh.h"
 #include "scene/scene.h"
 #include "util/err.h"
-
-/* The scene material triangle t of m is shaded with. */
-uint32_t pov_mesh_material(const scene *s, const mesh *m, uint32_t t);
 
 /* Writes `#declare ident = mesh2 { ... }` for m (which must have triangles). Returns 0, or -1
  * with err set when a position, normal or uv is not finite or memory runs out. */

@@ -7,14 +7,12 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "geometry/geometry.h"
 #include "io/image_io.h"
 #include "pov/pov_file.h"
 #include "pov/pov_mesh.h"
 #include "pov/pov_names.h"
 #include "pov/pov_number.h"
-#include "render/accel.h"
-#include "render/lights.h"
-#include "render/texture_lookup.h"
 
 #define LINEAR_DIGITS 7   /* rotation and scale of a plant's matrix */
 #define SETTING_DIGITS 9  /* camera, light and colours */
@@ -85,7 +83,7 @@ static int write_material_image(const scene *s, uint32_t i, const export_paths *
 {
     const material *m = &s->materials[i];
     const texture *t = &s->textures[m->texture];
-    int cut = scene_material_cuts_alpha(s, m), grey = material_is_grey(m);
+    int cut = cutout_material(s, m), grey = material_is_grey(m);
     uint32_t ch = cut ? 4 : 3;
     size_t n = (size_t)t->width * t->height;
     uint8_t *px = malloc(n * ch);
@@ -96,7 +94,7 @@ static int write_material_image(const scene *s, uint32_t i, const export_paths *
         uint8_t *dst = px + k * ch;
         for (int c = 0; c < 3; c++)
             dst[c] = grey ? src[c] : srgb_encode(albedo[c] * texture_srgb_to_linear(src[c]));
-        if (cut) dst[3] = src[3] >= 128 ? 255 : 0;
+        if (cut) dst[3] = cutout_texel_kept(src[3]) ? 255 : 0;
     }
     char ident[POV_IDENT_MAX], name[POV_PATH_MAX], path[POV_PATH_MAX];
     pov_material_identifier(s, i, ident);
@@ -131,7 +129,7 @@ static void write_material(pov_file *pf, const scene *s, uint32_t i, const expor
     int grey = material_is_grey(m);
     pov_printf(pf, "; albedo %s %s%s\n", line,
                grey ? "in the finish" : "multiplied into the image",
-               scene_material_cuts_alpha(s, m) ? "; alpha cut at one half" : "");
+               cutout_material(s, m) ? "; alpha cut at one half" : "");
     pov_printf(pf, "#declare %s = texture {\n  uv_mapping pigment { image_map { png \"%s\" gamma srgb } }\n", ident, image);
     if (grey) {
         char a[POV_NUMBER_MAX];
@@ -191,9 +189,10 @@ static void scene_bounds(const scene *s, const mesh *terrain, double lo[3], doub
     for (int d = 0; d < 3; d++) lo[d] = INFINITY, hi[d] = -INFINITY;
     bounds_add_mesh(lo, hi, terrain);
     if (s->terrain && s->terrain->has_water) {
-        const sylva_heightfield *hf = s->terrain;
-        bounds_add(lo, hi, hf->x0, hf->y0, hf->water_level);
-        bounds_add(lo, hi, hf->x0 + (hf->nx - 1) * hf->dx, hf->y0 + (hf->ny - 1) * hf->dy, hf->water_level);
+        double a[3], b[3];
+        water_surface_extent(s->terrain, a, b);
+        bounds_add(lo, hi, a[0], a[1], a[2]);
+        bounds_add(lo, hi, b[0], b[1], b[2]);
     }
     for (uint32_t o = 0; o < s->n_objects; o++) bounds_add_mesh(lo, hi, s->objects[o].mesh);
     for (uint32_t i = 0; i < s->n_instances; i++) {
@@ -207,28 +206,6 @@ static void scene_bounds(const scene *s, const mesh *terrain, double lo[3], doub
         }
     }
     bounds_add(lo, hi, s->camera.position[0], s->camera.position[1], s->camera.position[2]);
-}
-
-/* The water surface exactly as the renderer builds it. */
-static mesh *water_mesh_build(const scene *s, err_buf *err)
-{
-    const sylva_heightfield *hf = s->terrain;
-    float x0 = (float)hf->x0, y0 = (float)hf->y0, z = (float)hf->water_level;
-    float x1 = (float)(hf->x0 + (hf->nx - 1) * hf->dx), y1 = (float)(hf->y0 + (hf->ny - 1) * hf->dy);
-    float pos[12] = {x0, y0, z, x1, y0, z, x1, y1, z, x0, y1, z};
-    float uv[8] = {0, 0, 1, 0, 1, 1, 0, 1};
-    uint32_t tri[6] = {0, 1, 2, 0, 2, 3};
-    int32_t wm = hf->water_material >= 0 ? hf->water_material : s->water_material;
-    mesh *m = mesh_new();
-    if (!m) {
-        err_nomem(err, "out of memory for the water surface");
-        return NULL;
-    }
-    if (mesh_append(m, pos, NULL, uv, 4, tri, NULL, wm, 2, err)) {
-        mesh_free(m);
-        return NULL;
-    }
-    return m;
 }
 
 static void write_header(pov_file *pf, const char *file, const char *what, const char *source)
@@ -433,7 +410,7 @@ static void write_camera(pov_file *pf, const camera_settings *c, uint32_t width,
                a, u, aspect, fov, b);
 }
 
-static void write_sun(pov_file *pf, const scene *s, const lights *l, const double lo[3], const double hi[3])
+static void write_sun(pov_file *pf, const scene *s, const light_summary *l, const double lo[3], const double hi[3])
 {
     if (!l->sun_on) {
         pov_put(pf, "// No sun (sun.enabled is false or its irradiance 0): ambient light only.\n\n");
@@ -459,7 +436,7 @@ static void write_sun(pov_file *pf, const scene *s, const lights *l, const doubl
                s->sun.azimuth_deg, s->sun.elevation_deg, loc, col, pt);
 }
 
-static int write_main(const scene *s, const lights *l, const export_paths *ep, const char *pov_path,
+static int write_main(const scene *s, const light_summary *l, const export_paths *ep, const char *pov_path,
                       const pov_export_options *o, const double lo[3], const double hi[3], int has_water,
                       pov_export_stats *st, err_buf *err)
 {
@@ -519,14 +496,14 @@ int pov_export_scene(const scene *s, const char *pov_path, const pov_export_opti
     export_paths ep;
     if (split_path(pov_path, ".pov", &ep, err)) return -1;
     const char *source = o ? o->source : NULL;
-    lights l;
-    if (lights_init(&l, &s->sun, &s->sky, err)) return -1;
+    light_summary l;
+    if (light_summary_init(&l, &s->sun, &s->sky, err)) return -1;
     int rc = -1;
     mesh *terrain = NULL, *water = NULL;
     if (s->terrain) {
         terrain = terrain_mesh_build(s->terrain, s->terrain_material, err);
         if (!terrain) goto done;
-        if (s->terrain->has_water && !(water = water_mesh_build(s, err))) goto done;
+        if (water_surface_build(s, &water, err)) goto done;
     }
     char path[POV_PATH_MAX], name[POV_PATH_MAX];
     if (path_with(&ep, "_materials.inc", path, err)) goto done;
@@ -551,7 +528,6 @@ int pov_export_scene(const scene *s, const char *pov_path, const pov_export_opti
 done:
     mesh_free(terrain);
     mesh_free(water);
-    lights_free(&l);
     if (st_out) *st_out = st;
     return rc;
 }
@@ -637,7 +613,7 @@ int pov_export_species(const scene *s, uint32_t species_index, int32_t variant, 
         if (variant >= 0 && k != (uint32_t)variant) continue;
         uint32_t p = sp->first_prototype + k;
         wanted_proto[p] = 1;
-        for (uint32_t t = 0; t < s->prototypes[p].mesh->nt; t++) wanted_mat[pov_mesh_material(s, s->prototypes[p].mesh, t)] = 1;
+        for (uint32_t t = 0; t < s->prototypes[p].mesh->nt; t++) wanted_mat[scene_triangle_material(s, s->prototypes[p].mesh, t)] = 1;
         chosen += s->prototypes[p].mesh->nt > 0;
     }
     if (!chosen) {

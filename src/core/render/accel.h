@@ -1,47 +1,70 @@
 /* accel.h — the scene in Embree 3: one BVH (RTCScene) per prototype, every instance a
- * single-level instance of its prototype's BVH in the top scene, and the terrain (heightfield
- * as triangles), the water surface and the objects as plain meshes in the top scene. Materials
- * with an alpha mask sit in their own geometry with intersection and occlusion filters that
- * discard hits where the texture's alpha is below one half.
+ * single-level instance of its prototype's BVH in the top scene, and the terrain, the water
+ * surface and the objects as plain meshes in the top scene, as the scene geometry builds them
+ * (geometry/terrain_mesh.h, geometry/water_surface.h). Each mesh enters as two geometries, its
+ * opaque triangles and its cut-out triangles (geometry/cutout.h); the cut-out ones carry
+ * intersection and occlusion filters that discard hits where the texture's alpha is below one
+ * half.
  *
  * accel_shade() turns an Embree hit into world-space shading data. Embree's hit.Ng is in
  * instance space, so normals are computed here from the mesh and transformed by the instance's
  * inverse transpose.
  *
+ * Embree reports errors through a callback on whichever thread meets them (its build workers
+ * included); an accel records the first one and reports it on the calling thread: from
+ * accel_build, and from accel_device_error after tracing.
+ *
  * Ownership: an accel borrows the scene (which must outlive it) and owns the Embree device and
- * scenes, the terrain and water meshes it tessellates, and the index buffers it makes.
+ * scenes, the terrain and water meshes it builds, the triangle parts and the error record.
  */
 #ifndef SYLVA_ACCEL_H
 #define SYLVA_ACCEL_H
 
 #include <embree3/rtcore.h>
 
+#include "geometry/cutout.h"
 #include "scene/scene.h"
 #include "util/err.h"
 #include "util/vec3.h"
+
+/* Geometry ids. A mesh's two parts sit at consecutive ids, opaque first:
+ *   in a prototype's scene:  ACCEL_PART_OPAQUE (0) and ACCEL_PART_CUTOUT (1);
+ *   in the top scene:        the terrain at ACCEL_TOP_TERRAIN + part (0, 1), the water at
+ *                            ACCEL_TOP_WATER (2, opaque only), object o at
+ *                            ACCEL_TOP_FIRST_OBJECT + 2 o + part (3 + 2 o, 4 + 2 o), and
+ *                            instance i at first_instance + i, after the last object. */
+typedef enum accel_part { ACCEL_PART_OPAQUE = 0, ACCEL_PART_CUTOUT = 1, ACCEL_PARTS = 2 } accel_part;
+enum { ACCEL_TOP_TERRAIN = 0, ACCEL_TOP_WATER = 2, ACCEL_TOP_FIRST_OBJECT = 3 };
+
+static inline unsigned accel_top_object_id(uint32_t o, accel_part part)
+{
+    return ACCEL_TOP_FIRST_OBJECT + ACCEL_PARTS * o + part;
+}
 
 typedef enum geom_kind { GEOM_TERRAIN = 1, GEOM_WATER, GEOM_OBJECT, GEOM_PROTOTYPE } geom_kind;
 
 typedef struct geom_info {
     geom_kind kind;
     const mesh *mesh;          /* shading source */
-    uint32_t *prim_to_tri;     /* Embree primID → mesh triangle; owned */
-    uint32_t *indices;         /* the geometry's index buffer; owned */
+    cutout_part part;          /* the mesh's triangles in this geometry (Embree's primIDs); owned */
     const scene *scene;        /* for materials and textures in the filter */
-    int alpha;                 /* 1: filtered by texture alpha */
+    int alpha;                 /* 1: the cut-out part, filtered by texture alpha */
 } geom_info;
+
+struct accel_errors;
 
 typedef struct accel {
     RTCDevice device;
     RTCScene top;
     const scene *scene;
     RTCScene *proto_scenes;    /* n_prototypes; owned (released) */
-    geom_info *proto_geoms;    /* 2 per prototype: [0] opaque, [1] alpha-masked; owned */
+    geom_info *proto_geoms;    /* ACCEL_PARTS per prototype, at p * ACCEL_PARTS + part; owned */
     geom_info *top_geoms;      /* per top-level non-instance geometry id; owned */
     uint32_t n_top_geoms;
     uint32_t first_instance;   /* top geomID of instance 0 */
     mesh *terrain_mesh;        /* owned */
     mesh *water_mesh;          /* owned */
+    struct accel_errors *errors; /* what Embree's error callback recorded; owned */
     float bounds_lo[3], bounds_hi[3]; /* of the whole scene */
 } accel;
 
@@ -62,11 +85,11 @@ typedef struct hit_info {
 int accel_build(accel *a, const scene *s, unsigned threads, err_buf *err);
 void accel_free(accel *a); /* accepts a zeroed accel */
 
+/* The first error Embree reported on a's device since it was built, into err: returns -1 with
+ * it, or 0 when there was none. Call it on the thread that owns err, after tracing. */
+int accel_device_error(const accel *a, err_buf *err);
+
 /* Shading data for a hit of ray (org, dir). */
 void accel_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h);
-
-/* Tessellates a heightfield into a mesh (2 triangles per cell, per-node materials with
- * `fallback` where the node has none). Caller frees. */
-mesh *terrain_mesh_build(const sylva_heightfield *hf, int32_t fallback, err_buf *err);
 
 #endif

@@ -83,11 +83,11 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
                 float w = power_heuristic(prev_pdf, sky_table_pdf(&l->table, fd, rgb));
                 L = v3_add(L, v3_scale(v3_mul(beta, v3(rgb[0], rgb[1], rgb[2])), w));
             } else {
-                L = v3_add(L, v3_mul(beta, lights_sky(l, d)));
+                L = v3_add(L, v3_mul(beta, light_summary_sky(&l->summary, d)));
             }
             if (lights_in_sun(l, d)) {
-                float ws = prev_pdf > 0.0f ? power_heuristic(prev_pdf, 1.0f / l->solid_angle) : 1.0f;
-                L = v3_add(L, v3_scale(v3_mul(beta, l->sun_radiance), ws));
+                float ws = prev_pdf > 0.0f ? power_heuristic(prev_pdf, 1.0f / l->summary.solid_angle) : 1.0f;
+                L = v3_add(L, v3_scale(v3_mul(beta, l->summary.sun_radiance), ws));
             }
             break;
         }
@@ -100,7 +100,7 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
         uint32_t base = 2 + depth * DIMS_PER_VERTEX;
 
         /* next-event estimation: the sun */
-        if (l->sun_on) {
+        if (l->summary.sun_on) {
             vec3 wi;
             float pdf_l = lights_sun_sample(l, sampler_at(smp, base + DIM_SUN), sampler_at(smp, base + DIM_SUN + 1), &wi);
             float pdf_b;
@@ -108,10 +108,10 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
             float c = fabsf(v3_dot(n, wi));
             if (v3_max(f) > 0.0f && c > 0.0f && visible(ctx, offset_point(h.p, ng, wi), wi, INFINITY)) {
                 vec3 contrib;
-                if (l->solid_angle > 0.0f)
-                    contrib = v3_scale(v3_mul(f, l->sun_radiance), c / pdf_l * power_heuristic(pdf_l, pdf_b));
+                if (l->summary.solid_angle > 0.0f)
+                    contrib = v3_scale(v3_mul(f, l->summary.sun_radiance), c / pdf_l * power_heuristic(pdf_l, pdf_b));
                 else
-                    contrib = v3_scale(v3_mul(f, l->sun_irradiance), c);
+                    contrib = v3_scale(v3_mul(f, l->summary.sun_irradiance), c);
                 L = v3_add(L, v3_mul(beta, contrib));
             }
         }
@@ -156,7 +156,7 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
 static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t grid, vec3 *rgb, float *coverage)
 {
     const accel *a = ctx->accel;
-    const lights *l = ctx->lights;
+    const light_summary *l = &ctx->lights->summary;
     const uint32_t n = grid > 1 ? grid * grid + 1 : 1;
     struct RTCRayHit rh[VERIFY_STREAM];
     struct RTCRay shadow[VERIFY_STREAM];

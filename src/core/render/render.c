@@ -103,6 +103,10 @@ film *render_scene(const scene *s, const render_options *opt, render_stats *stat
         stats->render_seconds = t2 - t1;
         stats->samples = (uint64_t)w * h * ctx.spp;
     }
+    if (accel_device_error(&acc, err)) {
+        film_free(f);
+        f = NULL;
+    }
     lights_free(&lt);
     accel_free(&acc);
     return f;

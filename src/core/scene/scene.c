@@ -2,9 +2,10 @@
  * instances and objects, and terrain queries. */
 #include "scene/scene.h"
 
-#include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "scene/heightfield.h"
 
 /* Grows *arr (element size sz) to hold at least need elements. */
 static int grow(void **arr, uint32_t *cap, uint32_t need, size_t sz)
@@ -52,6 +53,7 @@ void scene_free(scene *s)
     for (uint32_t i = 0; i < s->n_prototypes; i++) mesh_free(s->prototypes[i].mesh);
     for (uint32_t i = 0; i < s->n_objects; i++) free(s->objects[i].name), mesh_free(s->objects[i].mesh);
     free(s->materials);
+    name_index_free(&s->material_names);
     free(s->textures);
     free(s->species);
     free(s->prototypes);
@@ -65,7 +67,10 @@ int32_t scene_add_material(scene *s, const sylva_material_desc *d, err_buf *err)
     if (grow((void **)&s->materials, &s->cap_materials, s->n_materials + 1, sizeof(material)))
         return err_nomem(err, "out of memory adding a material");
     char *name = strdup(d->name ? d->name : "unnamed");
-    if (!name) return err_nomem(err, "out of memory adding a material");
+    if (!name || name_index_add(&s->material_names, name, s->n_materials) < 0) {
+        free(name);
+        return err_nomem(err, "out of memory adding a material");
+    }
     material *m = &s->materials[s->n_materials];
     *m = (material){.name = name, .bsdf = d->bsdf == SYLVA_BSDF_LEAF ? SYLVA_BSDF_LEAF : SYLVA_BSDF_LAMBERT,
                     .albedo = v3(d->albedo[0], d->albedo[1], d->albedo[2]),
@@ -111,7 +116,7 @@ int32_t scene_add_prototype(scene *s, uint32_t sp, uint32_t variant, double age,
 int32_t scene_add_instance(scene *s, uint32_t proto, const xform3x4 *xf, err_buf *err)
 {
     if (s->n_instances >= 100000000u)
-        return err_fail(err, ERR_LIMIT, "more than 100000000 instances (the scene limit)");
+        return err_set(err, "more than 100000000 instances (the scene limit)");
     if (grow((void **)&s->instances, &s->cap_instances, s->n_instances + 1, sizeof(instance)))
         return err_nomem(err, "out of memory adding instance %u", s->n_instances);
     s->instances[s->n_instances] = (instance){.prototype = proto, .xf = *xf};
@@ -132,9 +137,7 @@ int32_t scene_add_object(scene *s, const char *name, mesh *m, err_buf *err)
 
 int32_t scene_find_material(const scene *s, const char *name)
 {
-    for (uint32_t i = 0; i < s->n_materials; i++)
-        if (!strcmp(s->materials[i].name, name)) return (int32_t)i;
-    return -1;
+    return (int32_t)name_index_find(&s->material_names, name);
 }
 
 uint32_t scene_variant_for_age(const scene *s, uint32_t sp, double t)
@@ -149,40 +152,12 @@ uint32_t scene_variant_for_age(const scene *s, uint32_t sp, double t)
     return best;
 }
 
-/* Cell (i, j) and fractions (fx, fy) of (x, y); -1 outside. */
-static int terrain_cell(const sylva_heightfield *h, double x, double y, uint32_t *i, uint32_t *j,
-                        double *fx, double *fy)
-{
-    double gx = (x - h->x0) / h->dx, gy = (y - h->y0) / h->dy;
-    if (!(gx >= 0.0 && gy >= 0.0 && gx <= h->nx - 1 && gy <= h->ny - 1)) return -1;
-    uint32_t ci = (uint32_t)gx, cj = (uint32_t)gy;
-    if (ci >= h->nx - 1) ci = h->nx - 2;
-    if (cj >= h->ny - 1) cj = h->ny - 2;
-    *i = ci, *j = cj, *fx = gx - ci, *fy = gy - cj;
-    return 0;
-}
-
 int scene_terrain_height(const scene *s, double x, double y, double *z)
 {
-    const sylva_heightfield *h = s->terrain;
-    uint32_t i, j;
-    double fx, fy;
-    if (!h || terrain_cell(h, x, y, &i, &j, &fx, &fy)) return -1;
-    const float *r0 = h->z + (size_t)j * h->nx, *r1 = r0 + h->nx;
-    *z = (1 - fy) * ((1 - fx) * r0[i] + fx * r0[i + 1]) + fy * ((1 - fx) * r1[i] + fx * r1[i + 1]);
-    return 0;
+    return s->terrain ? heightfield_height(s->terrain, x, y, z) : -1;
 }
 
 int scene_terrain_normal(const scene *s, double x, double y, double n[3])
 {
-    const sylva_heightfield *h = s->terrain;
-    uint32_t i, j;
-    double fx, fy;
-    if (!h || terrain_cell(h, x, y, &i, &j, &fx, &fy)) return -1;
-    const float *r0 = h->z + (size_t)j * h->nx, *r1 = r0 + h->nx;
-    double dzdx = ((1 - fy) * (r0[i + 1] - r0[i]) + fy * (r1[i + 1] - r1[i])) / h->dx;
-    double dzdy = ((1 - fx) * (r1[i] - r0[i]) + fx * (r1[i + 1] - r0[i + 1])) / h->dy;
-    double l = sqrt(dzdx * dzdx + dzdy * dzdy + 1.0);
-    n[0] = -dzdx / l, n[1] = -dzdy / l, n[2] = 1.0 / l;
-    return 0;
+    return s->terrain ? heightfield_normal(s->terrain, x, y, n) : -1;
 }

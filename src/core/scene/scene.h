@@ -15,6 +15,7 @@
 #include "scene/mesh.h"
 #include "scene/scene_file.h"
 #include "util/err.h"
+#include "util/name_index.h"
 #include "util/vec3.h"
 
 typedef struct material {
@@ -68,6 +69,7 @@ typedef struct scene {
     int32_t water_material;
 
     material *materials; uint32_t n_materials, cap_materials; /* owned */
+    name_index material_names;  /* name → first material of that name; owned (its table) */
     texture *textures; uint32_t n_textures, cap_textures;     /* owned */
     species *species; uint32_t n_species;                     /* owned */
     prototype *prototypes; uint32_t n_prototypes, cap_prototypes; /* owned */
@@ -87,21 +89,22 @@ int32_t scene_add_prototype(scene *s, uint32_t species, uint32_t variant, double
                             double height, mesh *m, err_buf *err); /* takes m */
 int32_t scene_add_instance(scene *s, uint32_t prototype, const xform3x4 *xf, err_buf *err);
 int32_t scene_add_object(scene *s, const char *name, mesh *m, err_buf *err); /* takes m */
+/* The first material named `name`, or -1 (a hash lookup). */
 int32_t scene_find_material(const scene *s, const char *name);
 
-/* 1 when hits on material m are cut where its texture's alpha is below one half: it asks for
- * the mask and its texture has some alpha. The renderer and the POV-Ray export both decide by
- * this. */
-static inline int scene_material_cuts_alpha(const scene *s, const material *m)
+/* The material of triangle t of m: its id, or the default material where the id is -1 or names
+ * no material of the scene. */
+static inline uint32_t scene_triangle_material(const scene *s, const mesh *m, uint32_t t)
 {
-    return m->alpha_mask && m->texture >= 0 && s->textures[m->texture].has_alpha;
+    int32_t id = m->mat[t];
+    return id >= 0 && (uint32_t)id < s->n_materials ? (uint32_t)id : (uint32_t)s->default_material;
 }
 
 /* The variant of `species` for normalised age t: the youngest variant at least as old as t. */
 uint32_t scene_variant_for_age(const scene *s, uint32_t species, double t);
 
-/* Terrain height and unit normal at (x, y) by bilinear interpolation of the heightfield;
- * -1 outside it or when there is no terrain. */
+/* Terrain height and unit normal at (x, y) (heightfield.h); -1 outside it or when there is no
+ * terrain. */
 int scene_terrain_height(const scene *s, double x, double y, double *z);
 int scene_terrain_normal(const scene *s, double x, double y, double n[3]);
 

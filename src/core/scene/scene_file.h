@@ -16,6 +16,7 @@
 
 #include "sylva/plugin.h"
 #include "util/err.h"
+#include "util/name_index.h"
 
 struct plugin_registry;
 
@@ -147,7 +148,9 @@ typedef struct scene_file {
     ecology_spec ecology;
     object_spec *objects; uint32_t n_objects;
     material_spec *materials; uint32_t n_materials;
-    struct arena *arena;        /* owns all of the above */
+    name_index material_names;  /* name → index into materials; owned (its table) */
+    name_index species_names;   /* name → index into species; owned (its table) */
+    struct arena *arena;        /* owns all of the above but the two indexes' tables */
 } scene_file;
 
 /* Reads and validates `path`. plugins may be NULL only for scenes that name no plugin.
@@ -155,7 +158,7 @@ typedef struct scene_file {
 scene_file *scene_file_load(const char *path, const struct plugin_registry *plugins, err_buf *err);
 void scene_file_free(scene_file *sf); /* accepts NULL */
 
-/* Index of a material or species by name, or -1. */
+/* Index of a material or species by name, or -1 (a hash lookup). */
 int scene_file_material_index(const scene_file *sf, const char *name);
 int scene_file_species_index(const scene_file *sf, const char *name);
 

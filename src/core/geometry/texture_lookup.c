@@ -1,5 +1,5 @@
 /* texture_lookup.c — the sRGB decoding table. */
-#include "render/texture_lookup.h"
+#include "geometry/texture_lookup.h"
 
 float texture_srgb_to_linear(uint8_t v)
 {

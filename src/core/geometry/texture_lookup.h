@@ -20,12 +20,6 @@ static inline const uint8_t *texture_texel(const texture *t, float u, float v)
     return t->rgba + ((size_t)y * t->width + x) * 4;
 }
 
-/* The alpha (0..1) of the texel nearest to (u, v): what the alpha-mask test reads. */
-static inline float texture_alpha(const texture *t, float u, float v)
-{
-    return texture_texel(t, u, v)[3] * (1.0f / 255.0f);
-}
-
 static inline void texture_sample(const texture *t, float u, float v, float rgba[4])
 {
     const uint8_t *p = texture_texel(t, u, v);

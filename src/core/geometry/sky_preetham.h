@@ -1,5 +1,5 @@
-/* sky.h — the Preetham et al. (1999) analytic daylight sky ("A Practical Analytic Model for
- * Daylight"), plus importance sampling of any sky radiance over the sphere.
+/* sky_preetham.h — the Preetham et al. (1999) analytic daylight sky ("A Practical Analytic Model
+ * for Daylight"): radiance toward any direction for a sun direction and turbidity.
  *
  * Units: Preetham's luminance Y is in kcd/m^2; sylva's radiance unit is chosen so that a sun
  * irradiance of 1 corresponds to 100 klx, so sky radiance = Y / 100 * scale, converted from
@@ -7,8 +7,8 @@
  * sylva's frame (Z up). Below the horizon the model is not defined: the sky returns a ground
  * colour (ground_albedo times the horizon-average radiance).
  */
-#ifndef SYLVA_SKY_H
-#define SYLVA_SKY_H
+#ifndef SYLVA_SKY_PREETHAM_H
+#define SYLVA_SKY_PREETHAM_H
 
 #include <stdint.h>
 
@@ -37,29 +37,5 @@ void sky_preetham_zenith(double turbidity, double theta_s, double Yxy[3]);
 /* Perez et al. luminance distribution F(theta, gamma) with coefficients c[5] (A..E);
  * cos(theta) is clamped to >= 1e-3 so the horizon stays finite. */
 double sky_perez(const double c[5], double theta, double gamma);
-
-/* A tabulated sky for importance sampling: a lat-long grid (theta from 0 at +Z to pi, phi from
- * 0 at +X counter-clockwise) of radiance and a piecewise-constant 2-D distribution
- * proportional to luminance times sin(theta). */
-typedef struct sky_table {
-    uint32_t nt, np;       /* rows (theta) and columns (phi) */
-    float *rgb;            /* nt*np*3 radiance; owned */
-    float *cdf_rows;       /* nt+1 marginal CDF; owned */
-    float *cdf_cols;       /* nt*(np+1) conditional CDFs; owned */
-    float *pdf;            /* nt*np solid-angle pdf of each cell's directions; owned */
-} sky_table;
-
-/* radiance(dir, rgb, user) is evaluated at each cell centre. Returns 0 or -1 (out of memory,
- * nt or np zero, or radiance NULL; *t is then zeroed). *t is overwritten, not freed. */
-int sky_table_build(sky_table *t, uint32_t nt, uint32_t np,
-                    void (*radiance)(const double dir[3], double rgb[3], const void *user),
-                    const void *user);
-void sky_table_free(sky_table *t); /* accepts NULL and a zeroed table; zeroes *t */
-/* Samples a direction from (u1, u2) in [0,1)^2; returns its solid-angle pdf and cell radiance.
- * A table without radiance anywhere returns pdf 0 (dir +Z, rgb 0). */
-float sky_table_sample(const sky_table *t, float u1, float u2, float dir[3], float rgb[3]);
-/* Solid-angle pdf of sampling dir (any length), and the tabulated radiance there; 0 and rgb 0
- * for a zeroed table. */
-float sky_table_pdf(const sky_table *t, const float dir[3], float rgb[3]);
 
 #endif

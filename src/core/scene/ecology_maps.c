@@ -1,5 +1,5 @@
 /* ecology_maps.c — factor maps and plant maps on a raster canvas. */
-#include "io/ecology_maps.h"
+#include "scene/ecology_maps.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "io/raster_canvas.h"
+#include "scene/heightfield.h"
 
 static void factor_color(const char *name, uint8_t rgb[3])
 {
@@ -43,20 +44,6 @@ int factor_map_write(const char *path, const sylva_ecology_factor_map *map, err_
     int rc = canvas_write_png(&c, path, err);
     canvas_free(&c);
     return rc;
-}
-
-/* Height at a point, bilinear and clamped. */
-static double height_at(const sylva_heightfield *t, double x, double y)
-{
-    double gx = (x - t->x0) / t->dx, gy = (y - t->y0) / t->dy;
-    gx = gx < 0 ? 0 : gx > t->nx - 1 ? t->nx - 1 : gx;
-    gy = gy < 0 ? 0 : gy > t->ny - 1 ? t->ny - 1 : gy;
-    uint32_t i = (uint32_t)gx, j = (uint32_t)gy;
-    if (i > t->nx - 2) i = t->nx - 2;
-    if (j > t->ny - 2) j = t->ny - 2;
-    double fx = gx - i, fy = gy - j;
-    const float *r0 = t->z + (size_t)j * t->nx, *r1 = r0 + t->nx;
-    return (1 - fy) * ((1 - fx) * r0[i] + fx * r0[i + 1]) + fy * ((1 - fx) * r1[i] + fx * r1[i + 1]);
 }
 
 typedef struct plant_order {
@@ -96,9 +83,9 @@ int plant_map_write(const char *path, const sylva_heightfield *t, const sylva_ec
     for (uint32_t py = 0; py < h; py++)
         for (uint32_t px = 0; px < w; px++) {
             double x = t->x0 + (px + 0.5) / scale, y = t->y0 + ly - (py + 0.5) / scale;
-            double z = height_at(t, x, y), a = (z - zlo) / span;
-            double gx = (height_at(t, x + e, y) - height_at(t, x - e, y)) / (2 * e);
-            double gy = (height_at(t, x, y + e) - height_at(t, x, y - e)) / (2 * e);
+            double z = heightfield_height_clamped(t, x, y), a = (z - zlo) / span;
+            double gx = (heightfield_height_clamped(t, x + e, y) - heightfield_height_clamped(t, x - e, y)) / (2 * e);
+            double gy = (heightfield_height_clamped(t, x, y + e) - heightfield_height_clamped(t, x, y - e)) / (2 * e);
             double shade = 0.75 + 0.25 * (-gx + gy) / sqrt(1 + gx * gx + gy * gy); /* light from the north-west */
             uint8_t col[3];
             if ((t->has_water && z < t->water_level) || on_water_patch(water, x, y)) {

@@ -1,0 +1,28 @@
+/* geometry.h — the scene geometry every back end draws the same way, built from the scene graph
+ * and shared by the path tracer, the POV-Ray export and the commands that map or composite a
+ * scene (a back end never reaches into another's internals for it):
+ *
+ *   terrain_mesh.h    the terrain heightfield as triangles, normals, uvs and materials
+ *   water_surface.h   the water over the terrain: its rectangle and its mesh
+ *   cutout.h          alpha cut-outs: which materials and triangles, the alpha test, the split
+ *                     of a mesh into opaque and cut-out triangles
+ *   texture_lookup.h  the nearest texel of a texture, sRGB decoding
+ *   light_summary.h   the sun and the sky, with the ambient term and the sky's mean radiance
+ *   sky_preetham.h    the Preetham daylight sky model the light summary evaluates
+ *
+ * The height and normal of the terrain at any point are the scene's (scene/heightfield.h), since
+ * the plugin host answers those queries below this layer. Including this header includes them
+ * all; each part's header says what it owns.
+ */
+#ifndef SYLVA_GEOMETRY_H
+#define SYLVA_GEOMETRY_H
+
+#include "geometry/cutout.h"
+#include "geometry/light_summary.h"
+#include "geometry/sky_preetham.h"
+#include "geometry/terrain_mesh.h"
+#include "geometry/texture_lookup.h"
+#include "geometry/water_surface.h"
+#include "scene/heightfield.h"
+
+#endif

@@ -1,0 +1,68 @@
+/* heightfield.c — bilinear height and normal of a heightfield (see heightfield.h). */
+#include "scene/heightfield.h"
+
+#include <math.h>
+#include <stddef.h>
+
+/* The cell (i, j) of a point at grid coordinates (gx, gy) inside the grid, and its fractions
+ * (fx, fy) within the cell. */
+typedef struct cell {
+    uint32_t i, j;
+    double fx, fy;
+} cell;
+
+static cell cell_at(const sylva_heightfield *h, double gx, double gy)
+{
+    uint32_t i = (uint32_t)gx, j = (uint32_t)gy;
+    if (i > h->nx - 2) i = h->nx - 2;
+    if (j > h->ny - 2) j = h->ny - 2;
+    return (cell){i, j, gx - i, gy - j};
+}
+
+/* The cell of (x, y); -1 outside the grid. */
+static int cell_of(const sylva_heightfield *h, double x, double y, cell *c)
+{
+    double gx = (x - h->x0) / h->dx, gy = (y - h->y0) / h->dy;
+    if (!(gx >= 0.0 && gy >= 0.0 && gx <= h->nx - 1 && gy <= h->ny - 1)) return -1;
+    *c = cell_at(h, gx, gy);
+    return 0;
+}
+
+static double bilinear(const sylva_heightfield *h, cell c)
+{
+    const float *r0 = h->z + (size_t)c.j * h->nx, *r1 = r0 + h->nx;
+    double fx = c.fx, fy = c.fy;
+    uint32_t i = c.i;
+    return (1 - fy) * ((1 - fx) * r0[i] + fx * r0[i + 1]) + fy * ((1 - fx) * r1[i] + fx * r1[i + 1]);
+}
+
+int heightfield_height(const sylva_heightfield *h, double x, double y, double *z)
+{
+    cell c;
+    if (cell_of(h, x, y, &c)) return -1;
+    *z = bilinear(h, c);
+    return 0;
+}
+
+double heightfield_height_clamped(const sylva_heightfield *h, double x, double y)
+{
+    double gx = (x - h->x0) / h->dx, gy = (y - h->y0) / h->dy;
+    double mx = h->nx - 1, my = h->ny - 1;
+    gx = gx < 0 ? 0 : gx > mx ? mx : gx;
+    gy = gy < 0 ? 0 : gy > my ? my : gy;
+    return bilinear(h, cell_at(h, gx, gy));
+}
+
+int heightfield_normal(const sylva_heightfield *h, double x, double y, double n[3])
+{
+    cell c;
+    if (cell_of(h, x, y, &c)) return -1;
+    const float *r0 = h->z + (size_t)c.j * h->nx, *r1 = r0 + h->nx;
+    double fx = c.fx, fy = c.fy;
+    uint32_t i = c.i;
+    double dzdx = ((1 - fy) * (r0[i + 1] - r0[i]) + fy * (r1[i + 1] - r1[i])) / h->dx;
+    double dzdy = ((1 - fx) * (r1[i] - r0[i]) + fx * (r1[i + 1] - r0[i + 1])) / h->dy;
+    double l = sqrt(dzdx * dzdx + dzdy * dzdy + 1.0);
+    n[0] = -dzdx / l, n[1] = -dzdy / l, n[2] = 1.0 / l;
+    return 0;
+}

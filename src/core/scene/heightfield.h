@@ -1,0 +1,24 @@
+/* heightfield.h — the terrain heightfield as a surface: the height and unit normal at any point
+ * by bilinear interpolation of the four nodes around it. The one place that interpolates a
+ * sylva_heightfield: the plugin host's terrain queries, the scene build's plants on the ground,
+ * the scene geometry and the ecology maps all ask here.
+ *
+ * Node (i, j) stands at (x0 + i dx, y0 + j dy) with height z[j nx + i]; a point on the
+ * heightfield's last row or column belongs to the cell before it. Nothing is allocated.
+ */
+#ifndef SYLVA_HEIGHTFIELD_H
+#define SYLVA_HEIGHTFIELD_H
+
+#include "sylva/plugin.h"
+
+/* Height at (x, y) into *z; returns 0, or -1 (z untouched) when (x, y) lies outside the
+ * heightfield's nodes (or is not a number). */
+int heightfield_height(const sylva_heightfield *h, double x, double y, double *z);
+
+/* Height at the point of the heightfield nearest to (x, y), for any finite (x, y). */
+double heightfield_height_clamped(const sylva_heightfield *h, double x, double y);
+
+/* Unit normal of the interpolated surface at (x, y) into n; returns 0, or -1 outside. */
+int heightfield_normal(const sylva_heightfield *h, double x, double y, double n[3]);
+
+#endif

@@ -1,0 +1,119 @@
+/* scene_file_loader.h — the scene loader's state and what its files share; internal to the
+ * scene_file*.c files (the public interface is scene_file.h). Each concern has its own file:
+ *
+ *   scene_file.c            the file as a whole: its sections in order, load and free, lookups
+ *   scene_file_messages.c   messages at file:line:column, unknown names with suggestions
+ *   scene_file_keys.c       keys two schemas share, host keys, vectors and strings
+ *   scene_file_settings.c   image, camera, sun, sky
+ *   scene_file_materials.c  materials, and references to them by name
+ *   scene_file_plugins.c    the plugin a block names
+ *   scene_file_ecology.c    the ecology section
+ *   scene_file_terrain.c    the terrain section
+ *   scene_file_shapes.c     built-in shapes (of species and objects)
+ *   scene_file_includes.c   gathering species across included files
+ *   scene_file_species.c    each species' keys, plugin or shape, ecology block
+ *   scene_file_plants.c     the plants section
+ *   scene_file_objects.c    the objects section
+ *
+ * Every function returns 0, or -1 with L->err set (a message located in the file). Everything
+ * allocated lives in L->a, the scene_file's arena, except the scene_file's name indexes.
+ */
+#ifndef SYLVA_SCENE_FILE_LOADER_H
+#define SYLVA_SCENE_FILE_LOADER_H
+
+#include "params/validate.h"
+#include "params/yaml_doc.h"
+#include "plugin/plugin_host.h"
+#include "scene/host_schema.h"
+#include "scene/scene_file.h"
+#include "util/arena.h"
+
+#define INCLUDE_MAX_DEPTH 16
+
+/* A species as found in the scene file or an included file, before validation. */
+typedef struct species_entry {
+    const char *name;
+    const ynode *node;
+    uint32_t line, column;  /* of the name */
+    const char *file, *dir; /* the file that defines it, for messages and paths */
+} species_entry;
+
+typedef struct included_file {
+    const char *real;       /* canonical path */
+    const char *file;       /* as named in messages */
+    uint32_t line, column;  /* where it was included (0 for the scene file itself) */
+    const char *from;       /* the including file */
+} included_file;
+
+typedef struct loader {
+    arena *a;
+    const plugin_registry *reg;
+    err_buf *err;
+    scene_file *sf;
+    const char *file, *dir;      /* the scene file: name in messages, absolute folder */
+    const ynode *root;
+
+    species_entry *entries;      /* entry i becomes sf->species[i]; sf->species_names indexes them */
+    uint32_t n_entries, cap_entries;
+    included_file chain[INCLUDE_MAX_DEPTH + 1]; /* the include chain from the scene file down */
+    uint32_t chain_len;
+    included_file *seen;         /* every file read so far */
+    uint32_t n_seen, cap_seen;
+
+    const sylva_plugin *ecology; /* NULL: the scene has no ecology block */
+    const char *species_section; /* the ecology plugin's species_section, or "ecology" */
+} loader;
+
+/* --- messages (scene_file_messages.c) --- */
+int sf_located(err_buf *err, const char *file, uint32_t line, uint32_t column, const char *fmt, ...)
+    __attribute__((format(printf, 5, 6)));
+int sf_out_of_memory(loader *L);
+/* node must be a list (a YAML sequence), as `example` shows. */
+int sf_expect_list(loader *L, const ynode *node, const char *section, const char *example);
+/* "a, b, c" into buf (cut when long). */
+void sf_name_list(const char *const *names, uint32_t n, char *buf, size_t size);
+/* v names no defined `kind` ("material", "species"; plural: "materials"). */
+int sf_unknown_name(loader *L, const char *file, const sylva_value *v, const char *kind, const char *plural,
+                    const char *where, const char *const *defined, uint32_t n_defined);
+
+/* --- keys (scene_file_keys.c) --- */
+const char *sf_arena_printf(arena *a, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* Validates a mapping that two schemas share: `own` (host keys) and `other` (a plugin's or a
+ * shape's keys), plus an optional extra key owned by neither (the species' ecology block). */
+int sf_validate_shared(loader *L, const ynode *map, const param_scope *base, const sylva_param_spec *own,
+                       uint32_t n_own, const sylva_param_spec *other, uint32_t n_other, const char *extra,
+                       const sylva_params **own_out, const sylva_params **other_out);
+void sf_copy3(double out[3], const sylva_value *v);
+double sf_length3(const double v[3]);
+/* The spec of one host key (tables are static; every name asked for exists). */
+const sylva_param_spec *sf_host_key(const host_schema *schema, const char *name);
+
+/* --- references and plugins --- */
+/* Checks that a material key names a defined material; *out is the name or NULL when unset. */
+int sf_material_ref(loader *L, const char *file, const sylva_value *v, const char *where, const char **out);
+/* Looks up the plugin named in map's `plugin:` key (spec: the host table's `plugin` entry). */
+int sf_find_plugin(loader *L, const param_scope *scope, const ynode_pair *pair, const sylva_param_spec *plugin_spec,
+                   sylva_kind kind, const sylva_plugin **out, const char **name_out);
+/* Fills a shape_spec from validated shape keys. */
+int sf_read_shape(loader *L, const char *file, shape_kind kind, const sylva_params *p, const ynode *map,
+                  shape_spec *s);
+
+/* --- includes (scene_file_includes.c) --- */
+/* The folder of path, in the arena ("." when it has none). */
+const char *sf_folder_of(arena *a, const char *path);
+/* Gathers the species of one `species:` mapping into L->entries, expanding `include:`. */
+int sf_collect_species(loader *L, const ynode *map, const char *file, const char *dir);
+
+/* --- the sections, in the order they are read --- */
+int sf_read_image(loader *L);
+int sf_read_camera(loader *L);
+int sf_read_sun(loader *L);
+int sf_read_sky(loader *L);
+int sf_read_materials(loader *L, const ynode *node);
+int sf_read_ecology(loader *L, const ynode *node, uint32_t line, uint32_t column);
+int sf_read_terrain(loader *L, const ynode *node, uint32_t line, uint32_t column);
+int sf_read_species(loader *L, const ynode *node);
+int sf_read_plants(loader *L, const ynode *node);
+int sf_read_objects(loader *L, const ynode *node);
+
+#endif

@@ -1,0 +1,134 @@
+/* test_accel.c — the Embree scene: its geometry-id layout (terrain, water, objects, instances;
+ * opaque and cut-out parts) seen through real hits, and Embree's errors: recorded by the accel,
+ * reported on the calling thread, never written into a caller's buffer by the callback (which
+ * may run on any thread). */
+#include <pthread.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "harness.h"
+#include "render/accel.h"
+
+static void add_quad(mesh *m, float x0, float y0, float x1, float y1, float z, err_buf *err)
+{
+    const float pos[12] = {x0, y0, z, x1, y0, z, x1, y1, z, x0, y1, z};
+    const uint32_t tri[6] = {0, 1, 2, 0, 2, 3};
+    CHECK_INT(mesh_append(m, pos, NULL, NULL, 4, tri, NULL, -1, 2, err), 0);
+}
+
+/* A 10 m x 10 m flat terrain at z 0 under water at z 1, two objects (quads at z 5 over
+ * x in [1, 2] and [4, 5]) and one plant (a quad at z 3 over x in [7, 8]). */
+static scene *small_scene(void)
+{
+    err_buf err;
+    scene *s = scene_new();
+    sylva_heightfield *hf = calloc(1, sizeof *hf);
+    float *z = calloc(4, sizeof *z);
+    mesh *o0 = mesh_new(), *o1 = mesh_new(), *p = mesh_new();
+    if (!s || !hf || !z || !o0 || !o1 || !p) {
+        scene_free(s), free(hf), free(z), mesh_free(o0), mesh_free(o1), mesh_free(p);
+        return NULL;
+    }
+    *hf = (sylva_heightfield){.nx = 2, .ny = 2, .dx = 10, .dy = 10, .z = z, .has_water = 1, .water_level = 1,
+                              .water_material = -1};
+    s->terrain = hf;
+    add_quad(o0, 1, 4, 2, 6, 5, &err);
+    add_quad(o1, 4, 4, 5, 6, 5, &err);
+    add_quad(p, -0.5f, -1, 0.5f, 1, 3, &err);
+    CHECK_INT(scene_add_object(s, "first", o0, &err), 0);
+    CHECK_INT(scene_add_object(s, "second", o1, &err), 1);
+    CHECK_INT(scene_add_prototype(s, 0, 0, 1, 3, p, &err), 0);
+    xform3x4 xf = {{{1, 0, 0, 7.5f}, {0, 1, 0, 5}, {0, 0, 1, 0}}};
+    CHECK_INT(scene_add_instance(s, 0, &xf, &err), 0);
+    return s;
+}
+
+/* The hit of a vertical ray from (x, y, z0) going down (or up). */
+static struct RTCRayHit cast(const accel *a, float x, float y, float z0, float dz)
+{
+    struct RTCRayHit rh = {.ray = {.org_x = x, .org_y = y, .org_z = z0, .dir_z = dz, .tnear = 0, .tfar = INFINITY,
+                                   .mask = 0xffffffffu},
+                           .hit = {.geomID = RTC_INVALID_GEOMETRY_ID, .instID = {RTC_INVALID_GEOMETRY_ID}}};
+    struct RTCIntersectContext ic;
+    rtcInitIntersectContext(&ic);
+    rtcIntersect1(a->top, &ic, &rh);
+    return rh;
+}
+
+TEST(geometry_id_layout)
+{
+    scene *s = small_scene();
+    CHECK(s != NULL);
+    if (!s) return;
+    accel a;
+    err_buf err;
+    CHECK_INT(accel_build(&a, s, 1, &err), 0);
+    CHECK_INT(a.n_top_geoms, 3 + 2 * 2);
+    CHECK_INT(a.first_instance, 7);
+    CHECK_INT(accel_top_object_id(1, ACCEL_PART_CUTOUT), 6);
+    hit_info h;
+    struct RTCRayHit rh = cast(&a, 1.5f, 5, 10, -1);
+    CHECK_INT(rh.hit.geomID, accel_top_object_id(0, ACCEL_PART_OPAQUE));
+    accel_shade(&a, &rh, &h);
+    CHECK_INT(h.kind, GEOM_OBJECT);
+    CHECK_NEAR(h.p.z, 5, 1e-6);
+    rh = cast(&a, 4.5f, 5, 10, -1);
+    CHECK_INT(rh.hit.geomID, accel_top_object_id(1, ACCEL_PART_OPAQUE));
+    rh = cast(&a, 7.5f, 5, 10, -1);
+    CHECK_INT(rh.hit.instID[0], a.first_instance);
+    CHECK_INT(rh.hit.geomID, ACCEL_PART_OPAQUE);
+    accel_shade(&a, &rh, &h);
+    CHECK_INT(h.kind, GEOM_PROTOTYPE);
+    CHECK_INT(h.instance_id, 1);
+    CHECK_NEAR(h.p.z, 3, 1e-6);
+    rh = cast(&a, 9, 9, 10, -1);
+    CHECK_INT(rh.hit.geomID, ACCEL_TOP_WATER);
+    accel_shade(&a, &rh, &h);
+    CHECK_INT(h.kind, GEOM_WATER);
+    CHECK_NEAR(h.p.z, 1, 1e-6);
+    CHECK_INT(h.mat - s->materials, s->water_material);
+    rh = cast(&a, 9, 9, 0.5f, -1); /* under the water */
+    CHECK_INT(rh.hit.geomID, ACCEL_TOP_TERRAIN + ACCEL_PART_OPAQUE);
+    accel_shade(&a, &rh, &h);
+    CHECK_INT(h.kind, GEOM_TERRAIN);
+    CHECK_INT(accel_device_error(&a, &err), 0);
+    accel_free(&a);
+    scene_free(s);
+}
+
+/* Calls into Embree that it refuses (an unknown geometry type), from several threads at once. */
+#define REFUSERS 4
+static void *refuse(void *device)
+{
+    for (int k = 0; k < 50; k++) CHECK(rtcNewGeometry(device, (enum RTCGeometryType)999) == NULL);
+    return NULL;
+}
+
+TEST(embree_errors_recorded_and_reported_by_the_caller)
+{
+    scene *s = small_scene();
+    CHECK(s != NULL);
+    if (!s) return;
+    accel a;
+    err_buf build_err = {{0}};
+    CHECK_INT(accel_build(&a, s, 2, &build_err), 0);
+    build_err.msg[0] = '\0';
+    pthread_t t[REFUSERS];
+    for (int i = 0; i < REFUSERS; i++) CHECK_INT(pthread_create(&t[i], NULL, refuse, a.device), 0);
+    for (int i = 0; i < REFUSERS; i++) pthread_join(t[i], NULL);
+    /* the callback wrote into no caller's buffer: not the one accel_build was given */
+    CHECK_INT(build_err.msg[0], '\0');
+    err_buf err = {{0}};
+    CHECK_INT(accel_device_error(&a, &err), -1);
+    CHECK(!strncmp(err.msg, "Embree error ", 13)); /* one whole message */
+    CHECK_STR_CONTAINS(err.msg, ": invalid geometry type");
+    char first[sizeof err.msg];
+    memcpy(first, err.msg, sizeof first);
+    refuse(a.device); /* a later error does not replace the first */
+    CHECK_INT(accel_device_error(&a, &err), -1);
+    CHECK(!strcmp(err.msg, first));
+    accel_free(&a);
+    scene_free(s);
+}
+
+TEST_LIST(TEST_CASE(geometry_id_layout), TEST_CASE(embree_errors_recorded_and_reported_by_the_caller))

@@ -15,6 +15,7 @@
 #include "scene/scene_file.h"
 
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -24,6 +25,7 @@
 #include "params/validate.h"
 #include "plugin/plugin_host.h"
 #include "scene/host_schema.h"
+#include "scene/scene_estimate.h"
 #include "params/yaml_doc.h"
 #include "util/arena.h"
 
@@ -137,6 +139,24 @@ static void copy3(double out[3], const sylva_value *v)
 }
 
 static double length3(const double v[3]) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+/* Scales v to unit length without overflow or underflow (components of 1e300 or 1e-320 give a
+ * direction too); returns 0, or -1 when v is zero or not finite. */
+static int normalize3(double v[3])
+{
+    double m = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+    if (!(m > 0.0) || !isfinite(m)) return -1;
+    for (int k = 0; k < 3; k++) v[k] /= m;
+    double l = length3(v);
+    for (int k = 0; k < 3; k++) v[k] /= l;
+    return 0;
+}
+
+/* The renderer works in single precision: a coordinate beyond its range becomes infinite. */
+static int beyond_float(const double v[3])
+{
+    return fabs(v[0]) > FLT_MAX || fabs(v[1]) > FLT_MAX || fabs(v[2]) > FLT_MAX;
+}
 
 /* The spec of one host key (tables are static; every name asked for exists). */
 static const sylva_param_spec *host_key(const host_schema *schema, const char *name)
@@ -839,25 +859,42 @@ static int read_camera(loader *L)
     copy3(c->up, up);
     c->has_look_at = look->is_set;
     const sylva_value *view = look->is_set ? look : dir;
+    if (beyond_float(c->position))
+        return located(L->err, L->file, pos->line, pos->column,
+                       "the camera 'position' lies beyond single precision (+-%g m), where the "
+                       "renderer cannot place it", (double)FLT_MAX);
     if (look->is_set) {
         copy3(c->look_at, look);
-        for (int k = 0; k < 3; k++) c->direction[k] = c->look_at[k] - c->position[k];
-        if (length3(c->direction) == 0.0)
+        if (beyond_float(c->look_at))
             return located(L->err, L->file, look->line, look->column,
-                           "'look_at' must differ from the camera 'position'");
+                           "'look_at' lies beyond single precision (+-%g m), where the renderer "
+                           "cannot aim; give a nearer point on the same line, or 'direction'",
+                           (double)FLT_MAX);
+        int same = 1;
+        for (int k = 0; k < 3; k++) {
+            c->direction[k] = c->look_at[k] - c->position[k];
+            same &= (float)c->look_at[k] == (float)c->position[k];
+        }
+        if (same)
+            return located(L->err, L->file, look->line, look->column,
+                           "'look_at' must differ from the camera 'position' (in single "
+                           "precision, as the renderer holds them)");
     } else {
         copy3(c->direction, dir);
-        if (length3(c->direction) == 0.0)
-            return located(L->err, L->file, dir->line, dir->column, "'direction' must not be zero");
     }
-    double dl = length3(c->direction), ul = length3(c->up);
-    if (ul == 0.0)
+    if (normalize3(c->direction))
+        return located(L->err, L->file, view->line, view->column,
+                       look->is_set ? "the view from 'position' to 'look_at' has no usable "
+                                      "direction; give a nearer 'look_at'"
+                                    : "'direction' must not be zero");
+    double u[3]; /* the unit up, for the check; c->up keeps the value given */
+    copy3(u, up);
+    if (normalize3(u))
         return located(L->err, L->file, up->line, up->column, "'up' must not be zero");
-    for (int k = 0; k < 3; k++) c->direction[k] /= dl;
-    double cr[3] = {c->direction[1] * c->up[2] - c->direction[2] * c->up[1],
-                    c->direction[2] * c->up[0] - c->direction[0] * c->up[2],
-                    c->direction[0] * c->up[1] - c->direction[1] * c->up[0]};
-    if (length3(cr) / ul < 1e-9) {
+    double cr[3] = {c->direction[1] * u[2] - c->direction[2] * u[1],
+                    c->direction[2] * u[0] - c->direction[0] * u[2],
+                    c->direction[0] * u[1] - c->direction[1] * u[0]};
+    if (length3(cr) < 1e-9) {
         const sylva_value *at = up->is_set ? up : view->is_set ? view : pos;
         return located(L->err, L->file, at->line, at->column,
                        "the viewing direction is parallel to 'up' [%g, %g, %g]; give another "
@@ -875,6 +912,8 @@ static int read_camera(loader *L)
     return 0;
 }
 
+#define SUN_IRRADIANCE_MAX 1e6 /* sylva's unit: 1 is about 100 klx; 1e6 is beyond any sun */
+
 static int read_sun(loader *L)
 {
     const sylva_params *p;
@@ -889,10 +928,8 @@ static int read_sun(loader *L)
     }
     if (dir->is_set) {
         copy3(s->direction, dir);
-        double len = length3(s->direction);
-        if (len == 0.0)
+        if (normalize3(s->direction))
             return located(L->err, L->file, dir->line, dir->column, "'direction' must not be zero");
-        for (int k = 0; k < 3; k++) s->direction[k] /= len;
         double azimuth = atan2(s->direction[0], s->direction[1]) / DEG;
         s->azimuth_deg = azimuth < 0.0 ? azimuth + 360.0 : azimuth;
         s->elevation_deg = asin(fmax(-1.0, fmin(1.0, s->direction[2]))) / DEG;
@@ -906,6 +943,15 @@ static int read_sun(loader *L)
     s->enabled = (int)sylva_param_int(p, "enabled");
     s->irradiance = sylva_param_real(p, "irradiance");
     copy3(s->color, sylva_param(p, "color"));
+    double brightest = s->irradiance * fmax(s->color[0], fmax(s->color[1], s->color[2]));
+    if (!(brightest <= SUN_IRRADIANCE_MAX)) {
+        const sylva_value *irr = sylva_param(p, "irradiance"), *col = sylva_param(p, "color");
+        const sylva_value *at = irr->is_set ? irr : col->is_set ? col : NULL;
+        return located(L->err, L->file, at ? at->line : 1, at ? at->column : 1,
+                       "the sun's irradiance times its colour reaches %g; it must stay at most "
+                       "%g (1 is about 100 klx), or the image overflows to black",
+                       brightest, SUN_IRRADIANCE_MAX);
+    }
     s->angular_diameter_deg = sylva_param_real(p, "angular_diameter");
     return 0;
 }
@@ -993,6 +1039,7 @@ static int load(loader *L, const char *path)
         read_plants(L, ynode_get(L->root, "plants")) ||
         read_objects(L, ynode_get(L->root, "objects")))
         return -1;
+    if (scene_estimate_check(L->sf, L->err)) return -1; /* before any mesh is built */
     if (L->sf->ecology.plugin && L->sf->terrain.source == TERRAIN_NONE)
         return located(L->err, L->file, L->sf->ecology.line, L->sf->ecology.column,
                        "the ecology plugin '%s' places plants on the terrain, but the scene has no "

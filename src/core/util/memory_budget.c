@@ -2,6 +2,7 @@
 #include "util/memory_budget.h"
 
 #include <errno.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <unistd.h>
 
@@ -31,14 +32,24 @@ uint64_t memory_budget(void)
     return (uint64_t)1 << 32; /* unknown: plan for 4 GiB */
 }
 
+/* "1.5 GiB" or "340 MiB" */
+static void format_size(uint64_t bytes, char *out, size_t n)
+{
+    const double mib = 1024.0 * 1024.0, gib = 1024.0 * mib;
+    if ((double)bytes >= gib) snprintf(out, n, "%.1f GiB", (double)bytes / gib);
+    else snprintf(out, n, "%.0f MiB", (double)bytes / mib);
+}
+
 int memory_check(uint64_t need, const char *what, err_buf *err)
 {
     uint64_t budget = memory_budget();
     if (need <= budget) return 0;
-    const double gib = 1024.0 * 1024.0 * 1024.0;
+    char need_s[32], budget_s[32];
+    format_size(need, need_s, sizeof need_s);
+    format_size(budget, budget_s, sizeof budget_s);
     if (limit_from_environment())
-        return err_set(err, "%s needs about %.1f GiB of memory, more than the %.1f GiB "
-                       "SYLVA_MEMORY_LIMIT allows", what, (double)need / gib, (double)budget / gib);
-    return err_set(err, "%s needs about %.1f GiB of memory, more than the %.1f GiB this machine "
-                   "has", what, (double)need / gib, (double)budget / gib);
+        return err_set(err, "%s needs about %s of memory, more than the %s SYLVA_MEMORY_LIMIT "
+                       "allows", what, need_s, budget_s);
+    return err_set(err, "%s needs about %s of memory, more than the %s this machine has", what,
+                   need_s, budget_s);
 }

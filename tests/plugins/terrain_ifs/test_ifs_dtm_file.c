@@ -16,6 +16,7 @@
 #include <netinet/in.h>
 #include <sys/socket.h>
 
+#include <cpl_conv.h>
 #include <gdal.h>
 #include <ogr_srs_api.h>
 
@@ -498,7 +499,14 @@ TEST(local_vrt_stays_offline)
     write_text(path, vrt);
     ifs_dtm *d = NULL;
     ifs_err err = {{0}};
+    /* should GDAL connect, the silent server would keep it waiting: let it give up soon */
+    CPLSetConfigOption("GDAL_HTTP_TIMEOUT", "2");
+    CPLSetConfigOption("GDAL_HTTP_MAX_RETRY", "0");
+    alarm(30);
     CHECK(ifs_dtm_read_file(path, &defaults, &d, NULL, &err) != 0);
+    alarm(0);
+    CPLSetConfigOption("GDAL_HTTP_TIMEOUT", NULL);
+    CPLSetConfigOption("GDAL_HTTP_MAX_RETRY", NULL);
     CHECK(d == NULL);
     fcntl(srv, F_SETFL, O_NONBLOCK);
     int conn = accept(srv, NULL, NULL);

@@ -39,12 +39,11 @@ TEST(write_and_commit)
     const char *path = work_path("plants.csv");
     atomic_file af;
     err_buf err = {{0}};
-    CHECK_INT(atomic_file_open(&af, path, &err), 0);
+    FILE *f = atomic_file_open_stream(&af, path, &err);
     CHECK_STR_CONTAINS(af.tmp, "/.plants.tmp-");
     CHECK_STR_CONTAINS(af.tmp, ".csv");
     struct stat st;
     CHECK(lstat(af.tmp, &st) == 0 && S_ISREG(st.st_mode));
-    FILE *f = atomic_file_stream(&af, &err);
     CHECK(f != NULL);
     if (f) fputs("species,x\n", f);
     CHECK_INT(access(path, F_OK), -1); /* nothing at the target before the commit */
@@ -86,8 +85,7 @@ TEST(link_at_the_target_is_replaced_not_followed)
     CHECK_INT(symlink("victim.txt", target), 0);
     atomic_file af;
     err_buf err = {{0}};
-    CHECK_INT(atomic_file_open(&af, target, &err), 0);
-    FILE *f = atomic_file_stream(&af, &err);
+    FILE *f = atomic_file_open_stream(&af, target, &err);
     if (f) fputs("new\n", f);
     CHECK_INT(atomic_file_commit(&af, &err), 0);
     char text[64];

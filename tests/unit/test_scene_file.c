@@ -427,13 +427,6 @@ TEST(docs_list_every_key)
     }
 }
 
-/* Seconds since an arbitrary start, for the "fails fast" checks. */
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
 
 /* A FIFO named as an include fails at once with a sentence (it used to block in open); an alarm
  * ends the test as a failure should it hang again. */
@@ -446,10 +439,10 @@ TEST(scene_include_fifo)
     CHECK(scene != NULL);
     if (!scene) return;
     alarm(10);
-    double t0 = now_seconds();
+    double t0 = harness_seconds();
     err_buf err;
     scene_file *sf = scene_file_load(scene, NULL, &err);
-    double took = now_seconds() - t0;
+    double took = harness_seconds() - t0;
     alarm(0);
     CHECK(sf == NULL);
     scene_file_free(sf);

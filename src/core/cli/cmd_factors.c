@@ -32,12 +32,8 @@ static void factors_usage(FILE *out)
 static int write_csv(const char *path, const sylva_ecology_factor_map *maps, uint32_t n, err_buf *err)
 {
     atomic_file out;
-    if (atomic_file_open(&out, path, err)) return -1;
-    FILE *f = atomic_file_stream(&out, err);
-    if (!f) {
-        atomic_file_abort(&out);
-        return -1;
-    }
+    FILE *f = atomic_file_open_stream(&out, path, err);
+    if (!f) return -1;
     fprintf(f, "i,k,x,y");
     for (uint32_t m = 0; m < n; m++) fprintf(f, ",%s", maps[m].name);
     fputc('\n', f);

@@ -65,12 +65,8 @@ static int write_plants_csv(const char *path, const scene_file *sf, const sylva_
                             err_buf *err)
 {
     atomic_file out;
-    if (atomic_file_open(&out, path, err)) return -1;
-    FILE *f = atomic_file_stream(&out, err);
-    if (!f) {
-        atomic_file_abort(&out);
-        return -1;
-    }
+    FILE *f = atomic_file_open_stream(&out, path, err);
+    if (!f) return -1;
     fprintf(f, "species,x,y,z,age,height,radius,vigour\n");
     for (uint32_t i = 0; i < n; i++)
         fprintf(f, "%s,%.3f,%.3f,%.3f,%.0f,%.3f,%.3f,%.4f\n", sf->species[p[i].species].name, p[i].position[0],
@@ -82,12 +78,8 @@ static int write_population_csv(const char *path, const scene_file *sf, const ui
                                 const uint32_t *counts, uint32_t rows, err_buf *err)
 {
     atomic_file out;
-    if (atomic_file_open(&out, path, err)) return -1;
-    FILE *f = atomic_file_stream(&out, err);
-    if (!f) {
-        atomic_file_abort(&out);
-        return -1;
-    }
+    FILE *f = atomic_file_open_stream(&out, path, err);
+    if (!f) return -1;
     fprintf(f, "year");
     for (uint32_t s = 0; s < sf->n_species; s++) fprintf(f, ",%s", sf->species[s].name);
     fputc('\n', f);

@@ -11,14 +11,6 @@
 /* ------------------------------------------------------------------------------------------ */
 /* shared                                                                                      */
 
-static FILE *open_temp(const char *path, atomic_file *out, err_buf *err)
-{
-    if (atomic_file_open(out, path, err)) return NULL;
-    FILE *f = atomic_file_stream(out, err);
-    if (!f) atomic_file_abort(out);
-    return f;
-}
-
 /* POV-Ray's parse + trace time over sylva's BVH + render time, or -1 when unknown. */
 static double time_ratio(const crosscheck_result *r)
 {
@@ -75,7 +67,7 @@ static int write_json(const char *out_dir, const crosscheck_result *r, const cro
     char path[4300];
     atomic_file out;
     snprintf(path, sizeof path, "%s/metrics.json", out_dir);
-    FILE *f = open_temp(path, &out, err);
+    FILE *f = atomic_file_open_stream(&out, path, err);
     if (!f) return -1;
     const crosscheck_thresholds *t = &o->thresholds;
     fputs("{\n  \"scene\": ", f);
@@ -197,7 +189,7 @@ static int write_html(const char *out_dir, const crosscheck_result *r, const cro
     char path[4300];
     atomic_file out;
     snprintf(path, sizeof path, "%s/report.html", out_dir);
-    FILE *f = open_temp(path, &out, err);
+    FILE *f = atomic_file_open_stream(&out, path, err);
     if (!f) return -1;
     const crosscheck_thresholds *t = &o->thresholds;
     uint64_t n = (uint64_t)r->width * r->height;

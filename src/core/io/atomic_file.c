@@ -148,15 +148,14 @@ int atomic_file_open(atomic_file *af, const char *path, err_buf *err)
     return 0;
 }
 
-FILE *atomic_file_stream(atomic_file *af, err_buf *err)
+FILE *atomic_file_open_stream(atomic_file *af, const char *path, err_buf *err)
 {
-    if (af->stream) return af->stream;
-    if (af->fd < 0) {
-        err_set(err, "%s: the output file is not open", af->path);
-        return NULL;
-    }
+    if (atomic_file_open(af, path, err)) return NULL;
     af->stream = fdopen(af->fd, "w");
-    if (!af->stream) err_set(err, "%s: cannot write: %s", af->path, strerror(errno));
+    if (!af->stream) {
+        err_set(err, "%s: cannot write: %s", af->path, strerror(errno));
+        atomic_file_abort(af);
+    }
     return af->stream;
 }
 

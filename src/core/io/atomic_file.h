@@ -20,16 +20,16 @@ typedef struct atomic_file {
     char path[ATOMIC_PATH_MAX]; /* the target */
     char tmp[ATOMIC_PATH_MAX];  /* the temporary; "" when none is live */
     int fd;                     /* open on tmp for writing; -1 when closed */
-    FILE *stream;               /* stdio stream on fd (atomic_file_stream), or NULL */
+    FILE *stream;               /* stdio stream on fd (atomic_file_open_stream), or NULL */
     int slot;                   /* index in the signal-cleanup registry, or -1 */
 } atomic_file;
 
 /* Creates the temporary for path (keeping path's extension, so a format can be told from it)
  * and opens it for writing. Returns 0, or -1 with err set and nothing created. */
 int atomic_file_open(atomic_file *af, const char *path, err_buf *err);
-/* A buffered stdio stream on the temporary, owned by af (commit or abort closes it); NULL with
- * err set when it cannot be made. */
-FILE *atomic_file_stream(atomic_file *af, err_buf *err);
+/* atomic_file_open, then a buffered stdio stream on the temporary, owned by af (commit or
+ * abort closes it). NULL with err set, and nothing created, when either fails. */
+FILE *atomic_file_open_stream(atomic_file *af, const char *path, err_buf *err);
 /* Flushes the stream, fsyncs, closes and renames the temporary onto the target. On any failure
  * the temporary is removed and err says why. af is closed afterwards either way. */
 int atomic_file_commit(atomic_file *af, err_buf *err);

@@ -111,9 +111,7 @@ int write_u8(const char *path, atomic_file *tmp, uint32_t width, uint32_t height
         return err_set(err, "%s: no image format can be chosen from this file name; use .png, "
                        ".jpg, .tif or .exr", path);
     }
-    FILE *stream = atomic_file_stream(tmp, err);
-    if (!stream) return -1;
-    OIIO::Filesystem::IOFile proxy(stream, OIIO::Filesystem::IOProxy::Write);
+    OIIO::Filesystem::IOFile proxy(tmp->stream, OIIO::Filesystem::IOProxy::Write);
     if (out->supports("ioproxy")) out->set_ioproxy(&proxy);
     OIIO::ImageSpec spec(static_cast<int>(width), static_cast<int>(height),
                          static_cast<int>(channels), OIIO::TypeDesc::UINT8);
@@ -177,7 +175,7 @@ extern "C" int image_write_u8(const char *path, uint32_t width, uint32_t height,
         return err_set(err, "%s: cannot write %u channels; 1 to 4 (grey, grey+alpha, RGB, RGBA) "
                        "are supported", path, channels);
     atomic_file tmp;
-    if (atomic_file_open(&tmp, path, err)) return -1;
+    if (!atomic_file_open_stream(&tmp, path, err)) return -1;
     int status;
     try {
         status = write_u8(path, &tmp, width, height, channels, pixels, err);

@@ -15,11 +15,7 @@ int pov_file_open(pov_file *pf, const char *path, err_buf *err)
 {
     memset(pf, 0, sizeof *pf);
     if (strlen(path) >= POV_PATH_MAX) return err_set(err, "%s: output path is too long", path);
-    if (atomic_file_open(&pf->out, path, err)) return -1;
-    if (!(pf->f = atomic_file_stream(&pf->out, err))) {
-        atomic_file_abort(&pf->out);
-        return -1;
-    }
+    if (!(pf->f = atomic_file_open_stream(&pf->out, path, err))) return -1;
     pf->buffer = malloc(POV_FILE_BUFFER);
     if (pf->buffer) setvbuf(pf->f, pf->buffer, _IOFBF, POV_FILE_BUFFER);
     return 0;

@@ -420,12 +420,6 @@ TEST(shared_dem_corpus)
     fprintf(stderr, "  %d of %d files loaded\n", loaded, n);
 }
 
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
 
 /* A 300 x 300 ESRI ASCII grid cut off after 150 rows fails in well under 2 s with a sentence
  * naming the missing row (read bottom-up it kept GDAL busy for minutes); an alarm fails the test
@@ -443,9 +437,9 @@ TEST(truncated_ascii_grid_fails_fast)
     ifs_dtm *d = NULL;
     ifs_err err = {{0}};
     alarm(30);
-    double t0 = now_seconds();
+    double t0 = harness_seconds();
     CHECK(ifs_dtm_read_file(path, &defaults, &d, NULL, &err) == SYLVA_ERR_IO);
-    double took = now_seconds() - t0;
+    double took = harness_seconds() - t0;
     alarm(0);
     fprintf(stderr, "  truncated grid refused in %.2f s: %s\n", took, err.msg);
     CHECK(took < 2.0);

@@ -105,13 +105,14 @@ int read_into(const char *path, image_f32 *img, err_buf *err)
 int write_u8(const char *path, atomic_file *tmp, uint32_t width, uint32_t height,
              uint32_t channels, const uint8_t *pixels, err_buf *err)
 {
+    // declared before the writer, so the writer (whose destructor may still write) goes first
+    OIIO::Filesystem::IOFile proxy(tmp->stream, OIIO::Filesystem::IOProxy::Write);
     auto out = OIIO::ImageOutput::create(path);
     if (!out) {
         (void)OIIO::geterror();
         return err_set(err, "%s: no image format can be chosen from this file name; use .png, "
                        ".jpg, .tif or .exr", path);
     }
-    OIIO::Filesystem::IOFile proxy(tmp->stream, OIIO::Filesystem::IOProxy::Write);
     if (out->supports("ioproxy")) out->set_ioproxy(&proxy);
     OIIO::ImageSpec spec(static_cast<int>(width), static_cast<int>(height),
                          static_cast<int>(channels), OIIO::TypeDesc::UINT8);

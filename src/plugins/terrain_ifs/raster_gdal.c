@@ -22,6 +22,7 @@
 #include <gdal.h>
 #include <ogr_srs_api.h>
 
+#include "ascii_grid.h"
 #include "sylva/plugin.h"
 
 /* GDAL's last message on this thread, or a fallback when it left none. */
@@ -111,6 +112,8 @@ int ifs_raster_open(const char *path, uint32_t band, const char *what, ifs_raste
                                                 : S_ISFIFO(st.st_mode) ? "a FIFO (named pipe)"
                                                 : S_ISCHR(st.st_mode)  ? "a character device"
                                                                        : "a special file");
+        int rc = ifs_ascii_grid_check(path, what, err);
+        if (rc) return rc;
     }
     GDALAllRegister();
     char *saved;

@@ -443,7 +443,29 @@ TEST(truncated_ascii_grid_fails_fast)
     alarm(0);
     fprintf(stderr, "  truncated grid refused in %.2f s: %s\n", took, err.msg);
     CHECK(took < 2.0);
-    CHECK_STR_CONTAINS(err.msg, "truncated.asc': cannot read row 150 of the DTM");
+    CHECK_STR_CONTAINS(err.msg, "truncated.asc' is an ESRI ASCII grid of 300 x 300 values but "
+                                "holds 45000: it is truncated");
+    CHECK(d == NULL);
+}
+
+/* GDAL reads a word where a number belongs as 0 and a short last row as complete; the grid is
+ * refused instead, without quoting the word. */
+TEST(ascii_grid_with_junk_is_refused)
+{
+    const char *junk = out_path("junk_value.asc");
+    write_text(junk, "ncols 3\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 10\n"
+                     "1 2 3\n4 SECRETWORD 6\n7 8 9\n");
+    ifs_dtm *d = NULL;
+    ifs_err err = {{0}};
+    CHECK(ifs_dtm_read_file(junk, &defaults, &d, NULL, &err) == SYLVA_ERR_IO);
+    CHECK_STR_CONTAINS(err.msg, "junk_value.asc' is an ESRI ASCII grid whose value 5 (row 2, "
+                                "column 2, on line 7) is not a number");
+    CHECK(!strstr(err.msg, "SECRET"));
+    const char *short_row = out_path("short_row.asc");
+    write_text(short_row, "ncols 3\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 10\n"
+                          "1 2 3\n4 5 6\n7 8\n");
+    CHECK(ifs_dtm_read_file(short_row, &defaults, &d, NULL, &err) == SYLVA_ERR_IO);
+    CHECK_STR_CONTAINS(err.msg, "grid of 3 x 3 values but holds 8: it is truncated");
     CHECK(d == NULL);
 }
 
@@ -546,6 +568,7 @@ TEST_LIST(TEST_CASE(geotiff_projected),
           TEST_CASE(humidity_from_a_colour_ramp_png),
           TEST_CASE(shared_dem_corpus),
           TEST_CASE(truncated_ascii_grid_fails_fast),
+          TEST_CASE(ascii_grid_with_junk_is_refused),
           TEST_CASE(special_files_are_refused),
           TEST_CASE(local_vrt_stays_offline),
           TEST_CASE(corrupted_heights_are_refused))

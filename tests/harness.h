@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 static int harness_failures;
 
@@ -46,6 +47,14 @@ static int harness_failures;
             harness_failures++;                                                              \
         }                                                                                    \
     } while (0)
+
+/* Seconds on a monotonic clock, for checks that something ends in time. */
+static inline double harness_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
 
 typedef struct harness_case {
     const char *name;

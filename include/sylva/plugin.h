@@ -296,7 +296,9 @@ typedef struct sylva_host_api {
     int (*plant_add)(sylva_host *, const sylva_plant *);
 
     /* Scene-file paths: the absolute path of `rel` resolved against the scene file; the string
-     * is owned by the host and lives as long as the scene. */
+     * is owned by the host and lives as long as the scene. NULL (with the reason as the host
+     * error) for a FIFO, device or folder, and for a GDAL virtual path, URL or connection string
+     * unless the user allowed those (returned as written then). */
     const char *(*resolve_path)(sylva_host *, const char *rel);
 
     /* ---- ABI 1.1 (test with SYLVA_API_HAS before calling from a plugin that may run in an

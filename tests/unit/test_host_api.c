@@ -1,9 +1,13 @@
 /* test_host_api.c — the host API table as plugins see it: every misuse becomes a sentence, never
  * a crash; streams are keyed; ownership stays with the scene. */
+#include <sys/stat.h>
+
 #include "harness.h"
+#include "work_dir.h"
 
 #include "scene/host.h"
 #include "scene/scene.h"
+#include "util/file_check.h"
 
 TEST(rng_streams_are_keyed)
 {
@@ -200,7 +204,32 @@ TEST(version_markers)
     CHECK(SYLVA_HAS_FIELD(&o, sylva_tree_out, mesh) && !SYLVA_HAS_FIELD(&o, sylva_tree_out, height));
 }
 
+/* Paths a plugin resolves follow the scene's rules: no FIFO, device or folder, and GDAL virtual
+ * paths only when the command line allowed them. */
+TEST(resolve_path_refuses_special_files)
+{
+    scene *s = scene_new();
+    err_buf err = {{0}};
+    sylva_host h;
+    host_init(&h, s, work_dir(), 1, "tree plugin 'x'", &err);
+    CHECK(mkfifo(work_path("shrub.ls"), 0600) == 0);
+    CHECK(host_api_table()->resolve_path(&h, "shrub.ls") == NULL);
+    CHECK_STR_CONTAINS(err.msg, "shrub.ls: not a regular file: it is a FIFO (named pipe)");
+    CHECK(host_api_table()->resolve_path(&h, "/dev/zero") == NULL);
+    CHECK_STR_CONTAINS(err.msg, "/dev/zero: not a regular file: it is a character device");
+    CHECK(host_api_table()->resolve_path(&h, "/vsicurl/http://127.0.0.1:9/a.ls") == NULL);
+    CHECK_STR_CONTAINS(err.msg, "run with --allow-gdal-virtual");
+    file_allow_gdal_virtual(1);
+    const char *v = host_api_table()->resolve_path(&h, "/vsicurl/http://127.0.0.1:9/a.ls");
+    file_allow_gdal_virtual(0);
+    CHECK(v && !strcmp(v, "/vsicurl/http://127.0.0.1:9/a.ls"));
+    const char *missing = host_api_table()->resolve_path(&h, "not_yet.ls"); /* reported by its reader */
+    CHECK(missing && strstr(missing, "/not_yet.ls"));
+    host_release(&h);
+    scene_free(s);
+}
+
 TEST_LIST(TEST_CASE(api_table_versions), TEST_CASE(param_by_unknown_name_is_an_error),
           TEST_CASE(allocation_through_the_host), TEST_CASE(version_markers), TEST_CASE(rng_streams_are_keyed), TEST_CASE(heightfield_only_for_terrain),
           TEST_CASE(plants_only_for_ecology_and_checked), TEST_CASE(mesh_and_material_misuse),
-          TEST_CASE(param_error_is_located))
+          TEST_CASE(param_error_is_located), TEST_CASE(resolve_path_refuses_special_files))

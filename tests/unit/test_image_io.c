@@ -170,6 +170,45 @@ TEST(failed_writes_leave_nothing)
     CHECK_INT(count_other_entries(NULL, NULL), 0);
 }
 
+/* A device or a FIFO named as an image is refused at once (both used to hang OpenImageIO's
+ * format detection or open); an alarm fails the test should it hang again. */
+TEST(devices_and_fifos_are_refused)
+{
+    err_buf err = {{0}};
+    image_f32 img = {0};
+    const char *fifo = work_path("texture.png");
+    CHECK_INT(mkfifo(fifo, 0600), 0);
+    alarm(10);
+    CHECK_INT(image_read(fifo, &img, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "texture.png: cannot read the image: not a regular file: it is a "
+                                "FIFO (named pipe)");
+    CHECK_INT(image_read("/dev/zero", &img, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "/dev/zero: cannot read the image: not a regular file: it is a "
+                                "character device");
+    alarm(0);
+    CHECK(img.pixels == NULL);
+    remove(fifo);
+}
+
+/* A file that is not an image is refused without quoting its bytes: OpenImageIO's reasons for
+ * TIFF and JPEG include the file's first bytes as a "magic number". */
+TEST(foreign_files_are_not_quoted)
+{
+    static const char *const names[] = {"secret.tif", "secret.jpg", "secret.png", "secret.exr"};
+    for (int k = 0; k < 4; k++) {
+        const char *path = work_file(names[k], "root:x:0:0:root:/root:/bin/bash\n");
+        CHECK(path != NULL);
+        if (!path) continue;
+        err_buf err = {{0}};
+        image_f32 img = {0};
+        CHECK_INT(image_read(path, &img, &err), -1);
+        CHECK_STR_CONTAINS(err.msg, "is not in an image format OpenImageIO reads");
+        CHECK(!strstr(err.msg, "0x") && !strstr(err.msg, "magic") && !strstr(err.msg, "root"));
+        remove(path);
+    }
+}
+
 TEST_LIST(TEST_CASE(png_rgb_round_trip), TEST_CASE(png_rgba_round_trip),
           TEST_CASE(png_grey_round_trip), TEST_CASE(overwrite_replaces_the_file),
-          TEST_CASE(unreadable_files), TEST_CASE(failed_writes_leave_nothing))
+          TEST_CASE(unreadable_files), TEST_CASE(failed_writes_leave_nothing),
+          TEST_CASE(devices_and_fifos_are_refused), TEST_CASE(foreign_files_are_not_quoted))

@@ -3,6 +3,7 @@
 
 #include "render/bsdf.h"
 #include "render/camera.h"
+#include "render/film.h"
 #include "render/lights.h"
 #include "render/sampler.h"
 #include "scene/mesh.h"
@@ -198,7 +199,45 @@ TEST(mesh_append_checks)
     mesh_free(m);
 }
 
+/* The frame stays finite whatever the scale of the numbers: a look_at whose offset from the
+ * position is beyond float range, or below it, still aims the camera (both used to give NaN
+ * directions and a black image). */
+TEST(camera_frame_extreme_offsets)
+{
+    camera_settings far = {.position = {-3e38, 0, 0}, .has_look_at = 1, .look_at = {3e38, 0, 0},
+                           .up = {0, 0, 1e300}, .fov_deg = 60};
+    camera_settings near = {.position = {0, 0, 2}, .has_look_at = 1, .look_at = {0, 1e-30, 2},
+                            .up = {0, 0, 1e-40}, .fov_deg = 60};
+    camera c;
+    camera_init(&c, &far, 64, 32);
+    vec3 d = camera_direction(&c, 32, 16);
+    CHECK_NEAR(d.x, 1.0, 1e-6);
+    CHECK(isfinite(c.right.y) && isfinite(c.up.z));
+    camera_init(&c, &near, 64, 32);
+    d = camera_direction(&c, 32, 16);
+    CHECK_NEAR(d.y, 1.0, 1e-6);
+    CHECK_NEAR(c.up.z, 1.0, 1e-6);
+}
+
+/* A frame that cannot fit, and absurd work, are refused before anything is built. */
+TEST(film_refuses_what_cannot_be_rendered)
+{
+    err_buf err = {{0}};
+    CHECK_INT(film_check(640, 360, 16, &err), 0);
+    CHECK_INT(film_check(16384, 16384, 1000000, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "16384x16384 pixels at 1000000 samples per pixel is 2.68e+14 "
+                                "camera samples, more than the 1e+13");
+    setenv("SYLVA_MEMORY_LIMIT", "100M", 1);
+    CHECK_INT(film_check(4096, 4096, 1, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "a 4096x4096 frame needs about 1.2 GiB of memory, more than the "
+                                "100 MiB SYLVA_MEMORY_LIMIT allows; lower the image size");
+    CHECK(film_new(4096, 4096, &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "a 4096x4096 frame needs");
+    unsetenv("SYLVA_MEMORY_LIMIT");
+}
+
 TEST_LIST(TEST_CASE(normal_transform_rotation), TEST_CASE(normal_transform_nonuniform_scale),
           TEST_CASE(trs_composition), TEST_CASE(sampler_keyed_and_uniform), TEST_CASE(camera_frame),
           TEST_CASE(lambert_sampling_matches_eval), TEST_CASE(leaf_transmits_to_the_other_side),
-          TEST_CASE(sun_cone_sampling), TEST_CASE(shapes_closed_and_outward), TEST_CASE(mesh_append_checks))
+          TEST_CASE(sun_cone_sampling), TEST_CASE(shapes_closed_and_outward), TEST_CASE(mesh_append_checks),
+          TEST_CASE(camera_frame_extreme_offsets), TEST_CASE(film_refuses_what_cannot_be_rendered))

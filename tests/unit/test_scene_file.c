@@ -7,6 +7,8 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "harness.h"
@@ -15,6 +17,7 @@
 #include "scene/host_schema.h"
 #include "scene/scene_file.h"
 #include "params/yaml_doc.h"
+#include "util/file_check.h"
 
 #define SCENES SYLVA_TEST_DATA_DIR "/scenes"
 
@@ -424,8 +427,144 @@ TEST(docs_list_every_key)
     }
 }
 
+
+/* A FIFO named as an include fails at once with a sentence (it used to block in open); an alarm
+ * ends the test as a failure should it hang again. */
+TEST(scene_include_fifo)
+{
+    const char *fifo = work_path("species.fifo");
+    CHECK(mkfifo(fifo, 0600) == 0);
+    const char *scene = work_file("fifo_include.yaml", "camera:\n  position: [0, -10, 2]\n"
+                                                      "species:\n  include: species.fifo\n");
+    CHECK(scene != NULL);
+    if (!scene) return;
+    alarm(10);
+    double t0 = harness_seconds();
+    err_buf err;
+    scene_file *sf = scene_file_load(scene, NULL, &err);
+    double took = harness_seconds() - t0;
+    alarm(0);
+    CHECK(sf == NULL);
+    scene_file_free(sf);
+    CHECK(took < 2.0);
+    CHECK_STR_CONTAINS(err.msg, "fifo_include.yaml:4:12: cannot include 'species.fifo'");
+    CHECK_STR_CONTAINS(err.msg, "not a regular file: it is a FIFO (named pipe)");
+    /* the scene file itself */
+    CHECK(scene_file_load(fifo, NULL, &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "species.fifo: not a regular file: it is a FIFO");
+}
+
+/* A texture (any path parameter) naming a FIFO is refused where it is written. */
+TEST(scene_texture_fifo)
+{
+    const char *fifo = work_path("bark.fifo");
+    CHECK(mkfifo(fifo, 0600) == 0);
+    const char *scene = work_file("fifo_texture.yaml", "camera:\n  position: [0, -10, 2]\n"
+                                                      "materials:\n  bark:\n    texture: bark.fifo\n");
+    CHECK(scene != NULL);
+    if (!scene) return;
+    err_buf err;
+    scene_file *sf = scene_file_load(scene, NULL, &err);
+    CHECK(sf == NULL);
+    scene_file_free(sf);
+    CHECK_STR_CONTAINS(err.msg, "fifo_texture.yaml:5:14: 'texture': bark.fifo: not a regular "
+                                "file: it is a FIFO (named pipe)");
+}
+
+/* A GDAL virtual path is refused by default and kept as written when the command line allowed
+ * it. */
+TEST(scene_gdal_virtual_opt_in)
+{
+    const char *scene = work_file("vsi.yaml", "camera:\n  position: [0, -10, 2]\n"
+                                              "materials:\n  bark:\n    texture: /vsizip/x.zip/b.png\n");
+    CHECK(scene != NULL);
+    if (!scene) return;
+    err_buf err;
+    CHECK(scene_file_load(scene, NULL, &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "run with --allow-gdal-virtual");
+    file_allow_gdal_virtual(1);
+    scene_file *sf = scene_file_load(scene, NULL, &err);
+    file_allow_gdal_virtual(0);
+    CHECK(sf != NULL);
+    if (sf && sf->n_materials > 0)
+        CHECK_STR_CONTAINS(sf->materials[0].texture_path, "/vsizip/x.zip/b.png");
+    scene_file_free(sf);
+    CHECK(file_is_gdal_virtual("PG:dbname=x"));
+    CHECK(file_is_gdal_virtual("https://example.org/a.tif"));
+    CHECK(file_is_gdal_virtual("/vsicurl/http://a/b.tif"));
+    CHECK(!file_is_gdal_virtual("dem/a.tif"));
+    CHECK(!file_is_gdal_virtual("C:/dem.tif"));
+    CHECK(!file_is_gdal_virtual("./x:y.tif"));
+}
+
+/* Directions with huge or tiny components are normalised without overflow: the sun keeps its
+ * direction (it used to become zero, and the image black). */
+TEST(scene_extreme_directions)
+{
+    const char *scene = work_file("directions.yaml",
+                                  "camera:\n  position: [0, 0, 0]\n  direction: [1e-320, 0, 0]\n"
+                                  "sun:\n  direction: [1e300, 1e300, 1e300]\n");
+    CHECK(scene != NULL);
+    if (!scene) return;
+    scene_file *sf = load_ok(scene, NULL);
+    if (!sf) return;
+    for (int k = 0; k < 3; k++) CHECK_NEAR(sf->sun.direction[k], 1.0 / sqrt(3.0), 1e-12);
+    CHECK_NEAR(sf->sun.elevation_deg, asin(1.0 / sqrt(3.0)) * 180.0 / M_PI, 1e-9);
+    CHECK_NEAR(sf->camera.direction[0], 1.0, 0);
+    scene_file_free(sf);
+}
+
+/* 3,000 finely subdivided spheres (a 180 KB file) would need far more memory than allowed:
+ * refused at load, before any mesh is built. */
+TEST(scene_shapes_beyond_memory)
+{
+    static char text[200000];
+    size_t n = (size_t)snprintf(text, sizeof text, "camera:\n  position: [0, -50, 5]\nobjects:\n");
+    for (int i = 0; i < 3000; i++)
+        n += (size_t)snprintf(text + n, sizeof text - n,
+                              "  - {shape: sphere, subdivisions: 7, position: [%d, 0, 1]}\n", i);
+    const char *scene = work_file("spheres.yaml", text);
+    CHECK(scene != NULL);
+    if (!scene) return;
+    setenv("SYLVA_MEMORY_LIMIT", "4G", 1);
+    err_buf err;
+    scene_file *sf = scene_file_load(scene, NULL, &err);
+    CHECK(sf == NULL);
+    scene_file_free(sf);
+    CHECK_STR_CONTAINS(err.msg, "spheres.yaml:4:5: building the scene's shapes (983040000 "
+                                "triangles) needs about 131.8 GiB of memory, more than the 4.0 GiB");
+    /* one such sphere fits */
+    sf = load_ok(work_file("few_spheres.yaml", "camera:\n  position: [0, -50, 5]\nobjects:\n"
+                                               "  - {shape: sphere, subdivisions: 7}\n"), NULL);
+    scene_file_free(sf);
+    unsetenv("SYLVA_MEMORY_LIMIT");
+}
+
+/* A scene file whose node tree cannot fit is refused before it is read. */
+TEST(scene_file_beyond_memory)
+{
+    const char *path = work_path("plants.yaml");
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (!f) return;
+    fputs("camera:\n  position: [0, -10, 2]\nplants:\n", f);
+    for (int i = 0; i < 60000; i++) fputs("  - {species: oak, position: [1, 2, 3]}\n", f);
+    fclose(f);
+    setenv("SYLVA_MEMORY_LIMIT", "64M", 1);
+    err_buf err;
+    scene_file *sf = scene_file_load(path, NULL, &err);
+    unsetenv("SYLVA_MEMORY_LIMIT");
+    CHECK(sf == NULL);
+    scene_file_free(sf);
+    CHECK_STR_CONTAINS(err.msg, "plants.yaml: reading this 2.3 MiB file needs about 137 MiB of "
+                                "memory, more than the 64 MiB SYLVA_MEMORY_LIMIT allows");
+}
+
 TEST_LIST(TEST_CASE(scene_minimal_defaults), TEST_CASE(scene_full), TEST_CASE(scene_bad_corpus),
           TEST_CASE(scene_bad_plugin_corpus), TEST_CASE(scene_plugins),
           TEST_CASE(scene_file_errors), TEST_CASE(scene_file_size_limit),
           TEST_CASE(host_schemas_are_well_formed), TEST_CASE(host_reserved_keys),
-          TEST_CASE(docs_list_every_key))
+          TEST_CASE(docs_list_every_key), TEST_CASE(scene_include_fifo),
+          TEST_CASE(scene_texture_fifo), TEST_CASE(scene_gdal_virtual_opt_in),
+          TEST_CASE(scene_extreme_directions), TEST_CASE(scene_shapes_beyond_memory),
+          TEST_CASE(scene_file_beyond_memory))

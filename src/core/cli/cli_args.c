@@ -1,4 +1,5 @@
-/* cli_args.c — number and size parsing for the command line, and a scene file's stem. */
+/* cli_args.c — number and size parsing for the command line, the scene argument (and the
+ * --allow-gdal-virtual choice every scene command takes), and a scene file's stem. */
 #include "cli/cli_args.h"
 
 #include <errno.h>
@@ -6,6 +7,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "util/file_check.h"
 
 int cli_parse_u64(const char *cmd, const char *opt, const char *s, uint64_t lo, uint64_t hi, uint64_t *out)
 {
@@ -36,6 +39,10 @@ int cli_parse_size(const char *cmd, const char *opt, const char *s, uint32_t *w,
 
 int cli_scene_argument(const char *cmd, const char *arg, const char **scene_path)
 {
+    if (!strcmp(arg, "--allow-gdal-virtual")) {
+        file_allow_gdal_virtual(1);
+        return 0;
+    }
     if (arg[0] == '-') {
         fprintf(stderr, "sylva %s: unknown option '%s' (see sylva %s --help)\n", cmd, arg, cmd);
         return -1;

@@ -32,10 +32,9 @@ static void factors_usage(FILE *out)
 /* factors.csv: i, k, the patch centre, then each map's value. */
 static int write_csv(const char *path, const sylva_ecology_factor_map *maps, uint32_t n, err_buf *err)
 {
-    char tmp[4200];
-    if (atomic_temp_name(path, tmp, sizeof tmp, err)) return -1;
-    FILE *f = fopen(tmp, "w");
-    if (!f) return err_set(err, "%s: cannot write: %s", path, strerror(errno));
+    atomic_file out;
+    FILE *f = atomic_file_open_stream(&out, path, err);
+    if (!f) return -1;
     fprintf(f, "i,k,x,y");
     for (uint32_t m = 0; m < n; m++) fprintf(f, ",%s", maps[m].name);
     fputc('\n', f);
@@ -46,12 +45,7 @@ static int write_csv(const char *path, const sylva_ecology_factor_map *maps, uin
             for (uint32_t m = 0; m < n; m++) fprintf(f, ",%.6f", maps[m].values[(size_t)k * g->nx + i]);
             fputc('\n', f);
         }
-    int bad = ferror(f);
-    if (fclose(f) || bad) {
-        remove(tmp);
-        return err_set(err, "%s: cannot write: %s", path, strerror(errno ? errno : EIO));
-    }
-    return atomic_commit(tmp, path, err);
+    return atomic_file_commit(&out, err);
 }
 
 int cmd_factors(int argc, char **argv)

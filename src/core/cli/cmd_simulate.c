@@ -65,29 +65,22 @@ static int parse_years_list(const char *s, uint32_t *years, uint32_t *n)
 static int write_plants_csv(const char *path, const scene_file *sf, const sylva_ecology_plant_record *p, uint32_t n,
                             err_buf *err)
 {
-    char tmp[4200];
-    if (atomic_temp_name(path, tmp, sizeof tmp, err)) return -1;
-    FILE *f = fopen(tmp, "w");
-    if (!f) return err_set(err, "%s: cannot write: %s", path, strerror(errno));
+    atomic_file out;
+    FILE *f = atomic_file_open_stream(&out, path, err);
+    if (!f) return -1;
     fprintf(f, "species,x,y,z,age,height,radius,vigour\n");
     for (uint32_t i = 0; i < n; i++)
         fprintf(f, "%s,%.3f,%.3f,%.3f,%.0f,%.3f,%.3f,%.4f\n", sf->species[p[i].species].name, p[i].position[0],
                 p[i].position[1], p[i].position[2], p[i].age, p[i].height, p[i].radius, p[i].vigour);
-    int bad = ferror(f);
-    if (fclose(f) || bad) {
-        remove(tmp);
-        return err_set(err, "%s: cannot write: %s", path, strerror(errno ? errno : EIO));
-    }
-    return atomic_commit(tmp, path, err);
+    return atomic_file_commit(&out, err);
 }
 
 static int write_population_csv(const char *path, const scene_file *sf, const uint32_t *years,
                                 const uint32_t *counts, uint32_t rows, err_buf *err)
 {
-    char tmp[4200];
-    if (atomic_temp_name(path, tmp, sizeof tmp, err)) return -1;
-    FILE *f = fopen(tmp, "w");
-    if (!f) return err_set(err, "%s: cannot write: %s", path, strerror(errno));
+    atomic_file out;
+    FILE *f = atomic_file_open_stream(&out, path, err);
+    if (!f) return -1;
     fprintf(f, "year");
     for (uint32_t s = 0; s < sf->n_species; s++) fprintf(f, ",%s", sf->species[s].name);
     fputc('\n', f);
@@ -96,12 +89,7 @@ static int write_population_csv(const char *path, const scene_file *sf, const ui
         for (uint32_t s = 0; s < sf->n_species; s++) fprintf(f, ",%u", counts[(size_t)r * sf->n_species + s]);
         fputc('\n', f);
     }
-    int bad = ferror(f);
-    if (fclose(f) || bad) {
-        remove(tmp);
-        return err_set(err, "%s: cannot write: %s", path, strerror(errno ? errno : EIO));
-    }
-    return atomic_commit(tmp, path, err);
+    return atomic_file_commit(&out, err);
 }
 
 static int write_map(cli_ecology *e, const char *dir, const char *const *names, err_buf *err)

@@ -11,25 +11,6 @@
 /* ------------------------------------------------------------------------------------------ */
 /* shared                                                                                      */
 
-static FILE *open_temp(const char *path, char *tmp, size_t n, err_buf *err)
-{
-    if (atomic_temp_name(path, tmp, n, err)) return NULL;
-    FILE *f = fopen(tmp, "w");
-    if (!f) err_set(err, "%s: cannot create the file: %s", path, strerror(errno));
-    return f;
-}
-
-static int close_commit(FILE *f, const char *tmp, const char *path, err_buf *err)
-{
-    int bad = fflush(f) != 0 || ferror(f);
-    bad |= fclose(f) != 0;
-    if (bad) {
-        remove(tmp);
-        return err_set(err, "%s: writing failed", path);
-    }
-    return atomic_commit(tmp, path, err);
-}
-
 /* POV-Ray's parse + trace time over sylva's BVH + render time, or -1 when unknown. */
 static double time_ratio(const crosscheck_result *r)
 {
@@ -83,9 +64,10 @@ static void json_stats(FILE *f, const image_diff_stats *d)
 
 static int write_json(const char *out_dir, const crosscheck_result *r, const crosscheck_options *o, err_buf *err)
 {
-    char path[4300], tmp[4400];
+    char path[4300];
+    atomic_file out;
     snprintf(path, sizeof path, "%s/metrics.json", out_dir);
-    FILE *f = open_temp(path, tmp, sizeof tmp, err);
+    FILE *f = atomic_file_open_stream(&out, path, err);
     if (!f) return -1;
     const crosscheck_thresholds *t = &o->thresholds;
     fputs("{\n  \"scene\": ", f);
@@ -150,7 +132,7 @@ static int write_json(const char *out_dir, const crosscheck_result *r, const cro
     fputs(", \"povray_log\": ", f);
     json_string(f, r->pov_log);
     fputs(", \"difference\": \"difference.png\", \"classes\": \"classes.png\", \"report\": \"report.html\"}\n}\n", f);
-    return close_commit(f, tmp, path, err);
+    return atomic_file_commit(&out, err);
 }
 
 /* ------------------------------------------------------------------------------------------ */
@@ -204,9 +186,10 @@ static void html_seconds(FILE *f, const char *label, double s)
 static int write_html(const char *out_dir, const crosscheck_result *r, const crosscheck_options *o,
                       double heatmap_scale, err_buf *err)
 {
-    char path[4300], tmp[4400];
+    char path[4300];
+    atomic_file out;
     snprintf(path, sizeof path, "%s/report.html", out_dir);
-    FILE *f = open_temp(path, tmp, sizeof tmp, err);
+    FILE *f = atomic_file_open_stream(&out, path, err);
     if (!f) return -1;
     const crosscheck_thresholds *t = &o->thresholds;
     uint64_t n = (uint64_t)r->width * r->height;
@@ -287,7 +270,7 @@ static int write_html(const char *out_dir, const crosscheck_result *r, const cro
     fputs("</code> &middot; <code>", f);
     html_text(f, r->pov_log);
     fputs("</code> &middot; <a href=\"metrics.json\">metrics.json</a></p>\n</body>\n</html>\n", f);
-    return close_commit(f, tmp, path, err);
+    return atomic_file_commit(&out, err);
 }
 
 int crosscheck_write_report(const char *out_dir, const crosscheck_result *r, const crosscheck_options *o,

@@ -218,16 +218,9 @@ int exr_write(const char *path, const exr_frame *f, err_buf *err)
         return err_set(err, "%s: the frame has no layers; give at least one of rgb, depth, "
                        "normal, albedo, instance_id, species_id", path);
 
-    char tmp[4096];
-    if (atomic_temp_name(path, tmp, sizeof tmp, err)) return -1;
-
-    exr_stream s = {.fd = -1, .path = path, .err = err};
-    s.fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (s.fd < 0) {
-        int e = errno;
-        return err_set(err, "%s: cannot create the output file: %s (the folder must exist and "
-                       "be writable)", path, strerror(e));
-    }
+    atomic_file out;
+    if (atomic_file_open(&out, path, err)) return -1;
+    exr_stream s = {.fd = out.fd, .path = path, .err = err};
 
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     init.error_handler_fn = exr_on_error;
@@ -243,12 +236,9 @@ int exr_write(const char *path, const exr_frame *f, err_buf *err)
         rc = exr_finish(&ctx); /* writes the chunk offset table */
         if (rc && !status) status = exr_fail(&s, rc, "writing the chunk offset table");
     }
-    if (close(s.fd) != 0 && !status)
-        status = err_set(err, "%s: writing the file failed when closing it: %s", path,
-                         strerror(errno));
     if (status) {
-        remove(tmp);
+        atomic_file_abort(&out);
         return -1;
     }
-    return atomic_commit(tmp, path, err);
+    return atomic_file_commit(&out, err);
 }

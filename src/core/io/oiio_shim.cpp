@@ -5,14 +5,15 @@
 extern "C" {
 #include "io/atomic_file.h"
 #include "util/err.h"
+#include "util/file_check.h"
 }
 #include "io/image_io.h"
 
 #include <unistd.h>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
-#include <atomic>
 #include <cerrno>
 #include <climits>
 #include <cstdio>
@@ -23,21 +24,6 @@ extern "C" {
 #include <vector>
 
 namespace {
-
-// "dir/.stem.tmp-<pid>-<n>.ext" beside path, keeping the extension so a reader can tell the
-// format from the temporary file too.
-std::string temp_name_beside(const std::string &path)
-{
-    static std::atomic<unsigned> counter{0};
-    std::string::size_type slash = path.rfind('/');
-    std::string dir = slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
-    std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
-    std::string::size_type dot = base.rfind('.');
-    std::string stem = dot == std::string::npos || dot == 0 ? base : base.substr(0, dot);
-    std::string ext = dot == std::string::npos || dot == 0 ? std::string() : base.substr(dot);
-    return dir + "." + stem + ".tmp-" + std::to_string(static_cast<long>(getpid())) + "-" +
-           std::to_string(counter.fetch_add(1)) + ext;
-}
 
 // OpenImageIO scales integer samples into [0, 1] when it converts them to float. That suits
 // 8- and 16-bit photographs; 32-bit integer channels hold ids and counts, so they are read
@@ -62,14 +48,21 @@ int read_integer_channel(OIIO::ImageInput *in, int c, image_f32 *img, err_buf *e
 
 int read_into(const char *path, image_f32 *img, err_buf *err)
 {
+    // A FIFO or device would block OpenImageIO's format detection or feed it without end.
+    const std::string label = std::string(path) + ": cannot read the image";
+    if (file_check_regular(path, label.c_str(), err)) return -1;
     if (access(path, R_OK) != 0) // OpenImageIO would only say it could not open the file
         return err_set(err, "%s: cannot read the image: %s", path, std::strerror(errno));
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
     auto in = OIIO::ImageInput::open(path, &config);
     if (!in) {
-        std::string why = OIIO::geterror();
-        return err_set(err, "%s: cannot read the image: %s", path, why.c_str());
+        // OpenImageIO's reasons quote the file's first bytes ("bad magic number 0x726f"), which
+        // may belong to any file a scene names; the sentence says what is wrong without them.
+        (void)OIIO::geterror();
+        return err_set(err, "%s: cannot read the image: it is not in an image format "
+                       "OpenImageIO reads (PNG, JPEG, TIFF, OpenEXR, ...), or it is damaged",
+                       path);
     }
     const OIIO::ImageSpec &spec = in->spec();
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth != 1)
@@ -107,19 +100,24 @@ int read_into(const char *path, image_f32 *img, err_buf *err)
     return 0;
 }
 
-int write_u8(const char *path, const std::string &tmp, uint32_t width, uint32_t height,
+// Writes through an IO proxy on the temporary's stream where the format allows it, so
+// OpenImageIO never opens a file by name; other formats open the (already created) temporary.
+int write_u8(const char *path, atomic_file *tmp, uint32_t width, uint32_t height,
              uint32_t channels, const uint8_t *pixels, err_buf *err)
 {
+    // declared before the writer, so the writer (whose destructor may still write) goes first
+    OIIO::Filesystem::IOFile proxy(tmp->stream, OIIO::Filesystem::IOProxy::Write);
     auto out = OIIO::ImageOutput::create(path);
     if (!out) {
-        std::string why = OIIO::geterror();
-        return err_set(err, "%s: no image format can be chosen from this file name: %s", path,
-                       why.c_str());
+        (void)OIIO::geterror();
+        return err_set(err, "%s: no image format can be chosen from this file name; use .png, "
+                       ".jpg, .tif or .exr", path);
     }
+    if (out->supports("ioproxy")) out->set_ioproxy(&proxy);
     OIIO::ImageSpec spec(static_cast<int>(width), static_cast<int>(height),
                          static_cast<int>(channels), OIIO::TypeDesc::UINT8);
     spec.attribute("oiio:UnassociatedAlpha", 1);
-    if (!out->open(tmp, spec)) {
+    if (!out->open(tmp->tmp, spec)) {
         std::string why = out->geterror();
         return err_set(err, "%s: cannot create the image file: %s", path, why.c_str());
     }
@@ -177,19 +175,19 @@ extern "C" int image_write_u8(const char *path, uint32_t width, uint32_t height,
     if (channels < 1 || channels > 4)
         return err_set(err, "%s: cannot write %u channels; 1 to 4 (grey, grey+alpha, RGB, RGBA) "
                        "are supported", path, channels);
-    std::string tmp;
+    atomic_file tmp;
+    if (!atomic_file_open_stream(&tmp, path, err)) return -1;
     int status;
     try {
-        tmp = temp_name_beside(path);
-        status = write_u8(path, tmp, width, height, channels, pixels, err);
+        status = write_u8(path, &tmp, width, height, channels, pixels, err);
     } catch (const std::exception &e) {
         status = err_set(err, "%s: cannot write the image: %s", path, e.what());
     } catch (...) {
         status = err_set(err, "%s: cannot write the image: unknown failure in OpenImageIO", path);
     }
     if (status) {
-        if (!tmp.empty()) std::remove(tmp.c_str());
+        atomic_file_abort(&tmp);
         return -1;
     }
-    return atomic_commit(tmp.c_str(), path, err);
+    return atomic_file_commit(&tmp, err);
 }

@@ -11,8 +11,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "util/edit_distance.h"
+#include "util/file_check.h"
 
 #define LABEL_MAX 160
 
@@ -372,6 +374,30 @@ const char *param_resolve_path(arena *a, const char *dir, const char *rel)
     return p;
 }
 
+/* A PATH value names a file to read: a GDAL virtual path, URL or connection string only when the
+ * command line allowed it (kept as written), otherwise a path resolved against the scene's
+ * folder that, when it exists, must be a regular file (a FIFO or device would hang a reader). */
+static int read_input_path(arena *a, const param_scope *scope, const ynode *n, const char *label,
+                           const char *rel, const char **out, err_buf *err)
+{
+    if (file_is_gdal_virtual(rel)) {
+        if (!file_gdal_virtual_allowed())
+            return err_set(err, "%s:%u:%u: %s: '%s' is a GDAL virtual path, URL or connection "
+                           "string, which may reach the network; name a local file, or run with "
+                           "--allow-gdal-virtual to let GDAL open it", scope->file, n->line,
+                           n->column, label, rel);
+        if (!(*out = arena_strdup(a, rel))) return out_of_memory(scope, err);
+        return 0;
+    }
+    if (!(*out = param_resolve_path(a, scope->dir, rel))) return out_of_memory(scope, err);
+    struct stat st;
+    err_buf why;
+    if (stat(*out, &st) == 0 && file_check_regular(*out, rel, &why))
+        return err_set(err, "%s:%u:%u: %s: %s; name a file", scope->file, n->line, n->column,
+                       label, why.msg);
+    return 0;
+}
+
 static int read_group_list(arena *a, const ynode *n, const sylva_param_spec *spec,
                            const param_scope *scope, sylva_value *v, err_buf *err)
 {
@@ -446,7 +472,7 @@ int param_value_read(arena *a, const ynode *node, const sylva_param_spec *spec,
         if (!rc && !rel[0])
             rc = err_set(err, "%s:%u:%u: %s must be a file path, got an empty string",
                          scope->file, node->line, node->column, label);
-        if (!rc && !(v->s = param_resolve_path(a, scope->dir, rel))) rc = out_of_memory(scope, err);
+        if (!rc) rc = read_input_path(a, scope, node, label, rel, &v->s, err);
         break;
     }
     case SYLVA_P_VEC3:

@@ -14,7 +14,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 #include <yaml.h>
+
+#include "util/file_check.h"
+#include "util/memory_budget.h"
 
 typedef struct open_collection {
     ynode *node;          /* allocated in the arena when the collection starts */
@@ -312,12 +316,20 @@ static int unreadable(err_buf *err, const char *fmt, ...)
 int yaml_doc_load(arena *a, const char *path, const char *file_label, yaml_doc *doc, err_buf *err)
 {
     const char *file = file_label ? file_label : path;
-    FILE *f = fopen(path, "rb");
-    if (!f) return unreadable(err, "%s: cannot open: %s", file, strerror(errno));
+    int fd = file_open_regular(path, file, err); /* a FIFO or device would block or never end */
+    if (fd < 0) {
+        err_buf why = *err;
+        return unreadable(err, "%s", why.msg);
+    }
+    FILE *f = fdopen(fd, "rb");
+    if (!f) {
+        close(fd);
+        return unreadable(err, "%s: cannot open: %s", file, strerror(errno));
+    }
     struct stat st;
-    if (fstat(fileno(f), &st) != 0 || !S_ISREG(st.st_mode)) {
+    if (fstat(fileno(f), &st) != 0) {
         fclose(f);
-        return unreadable(err, "%s: not a regular file", file);
+        return unreadable(err, "%s: cannot open: %s", file, strerror(errno));
     }
     if ((unsigned long long)st.st_size > YAML_DOC_MAX_FILE_BYTES) {
         fclose(f);
@@ -325,6 +337,15 @@ int yaml_doc_load(arena *a, const char *path, const char *file_label, yaml_doc *
                        (long long)st.st_size, YAML_DOC_MAX_FILE_BYTES >> 20);
     }
     size_t size = (size_t)st.st_size;
+    /* the node tree takes up to YAML_DOC_BYTES_PER_BYTE times the text (measured on lists of
+     * small mappings and numbers); a file that cannot fit is refused before it is read */
+    char what[64];
+    snprintf(what, sizeof what, "reading this %.1f MiB file", (double)size / (1024.0 * 1024.0));
+    if (memory_check((uint64_t)size * YAML_DOC_BYTES_PER_BYTE, what, err)) {
+        fclose(f);
+        err_buf why = *err;
+        return unreadable(err, "%s: %s", file, why.msg);
+    }
     char *text = malloc(size + 1); /* owned here; freed below */
     if (!text) {
         fclose(f);

@@ -19,6 +19,7 @@
 #include "util/err.h"
 
 #define YAML_DOC_MAX_FILE_BYTES ((size_t)64 << 20) /* larger files are refused */
+#define YAML_DOC_BYTES_PER_BYTE 60u /* memory to load a file, per byte of it (estimate) */
 #define YAML_DOC_MAX_DEPTH 64                      /* nested sequences/mappings */
 #define YAML_DOC_MAX_SCALAR_BYTES ((size_t)1 << 16) /* one scalar's text */
 

@@ -151,7 +151,7 @@ static int manifest_from_module(void *handle, const char *module, plugin_manifes
 
 int plugin_manifest_write(const char *module, err_buf *err)
 {
-    char path[4096], tmp[4200];
+    char path[4096];
     if (plugin_manifest_path(module, path, sizeof path))
         return err_set(err, "%s: a plugin module's file name ends in .so", module);
     dlerror();
@@ -164,9 +164,9 @@ int plugin_manifest_write(const char *module, err_buf *err)
     int rc = m ? manifest_from_module(handle, module, m, err)
                : err_nomem(err, "out of memory while reading %s", module);
     dlclose(handle);
-    if (rc == 0) rc = atomic_temp_name(path, tmp, sizeof tmp, err);
-    FILE *f = rc == 0 ? fopen(tmp, "w") : NULL; /* closed below */
-    if (rc == 0 && !f) rc = err_set(err, "%s: cannot write: %s", tmp, strerror(errno));
+    atomic_file af;
+    FILE *f = rc == 0 ? atomic_file_open_stream(&af, path, err) : NULL; /* af owns it */
+    if (rc == 0 && !f) rc = -1;
     if (f) {
         const char *base = strrchr(module, '/');
         fprintf(f, "# %s: the plugins of %s, read before the module is opened.\n"
@@ -177,13 +177,7 @@ int plugin_manifest_write(const char *module, err_buf *err)
             fprintf(f, "plugin %s %s %u.%u\n", m->plugin[i].name,
                     plugin_kind_name(m->plugin[i].kind), m->plugin[i].abi_major,
                     m->plugin[i].abi_minor);
-        int bad = ferror(f);
-        if (fclose(f) || bad) {
-            remove(tmp);
-            rc = err_set(err, "%s: cannot write the plugin manifest", path);
-        } else {
-            rc = atomic_commit(tmp, path, err);
-        }
+        rc = atomic_file_commit(&af, err);
     }
     free(m);
     return rc ? -1 : 0;

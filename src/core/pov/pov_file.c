@@ -14,12 +14,8 @@
 int pov_file_open(pov_file *pf, const char *path, err_buf *err)
 {
     memset(pf, 0, sizeof *pf);
-    size_t n = strlen(path);
-    if (n >= sizeof pf->path) return err_set(err, "%s: output path is too long", path);
-    memcpy(pf->path, path, n + 1);
-    if (atomic_temp_name(path, pf->tmp, sizeof pf->tmp, err)) return -1;
-    pf->f = fopen(pf->tmp, "w");
-    if (!pf->f) return err_set(err, "%s: cannot create the file: %s", path, strerror(errno));
+    if (strlen(path) >= POV_PATH_MAX) return err_set(err, "%s: output path is too long", path);
+    if (!(pf->f = atomic_file_open_stream(&pf->out, path, err))) return -1;
     pf->buffer = malloc(POV_FILE_BUFFER);
     if (pf->buffer) setvbuf(pf->f, pf->buffer, _IOFBF, POV_FILE_BUFFER);
     return 0;
@@ -27,30 +23,21 @@ int pov_file_open(pov_file *pf, const char *path, err_buf *err)
 
 int pov_file_finish(pov_file *pf, uint64_t *bytes, err_buf *err)
 {
-    if (!pf->f) return err_set(err, "%s: the file was not open", pf->path);
+    if (!pf->f) return err_set(err, "%s: the file was not open", pf->out.path);
     long size = ftell(pf->f);
-    int bad = fflush(pf->f) != 0 || ferror(pf->f);
-    int e = errno;
-    bad |= fclose(pf->f) != 0;
+    int rc = atomic_file_commit(&pf->out, err); /* closes the stream before its buffer goes */
     pf->f = NULL;
     free(pf->buffer);
     pf->buffer = NULL;
-    if (bad) {
-        remove(pf->tmp);
-        return err_set(err, "%s: writing failed: %s", pf->path, strerror(e ? e : EIO));
-    }
-    if (atomic_commit(pf->tmp, pf->path, err)) return -1;
+    if (rc) return -1;
     if (bytes && size > 0) *bytes += (uint64_t)size;
     return 0;
 }
 
 void pov_file_abort(pov_file *pf)
 {
-    if (pf->f) {
-        fclose(pf->f);
-        pf->f = NULL;
-        remove(pf->tmp);
-    }
+    atomic_file_abort(&pf->out);
+    pf->f = NULL;
     free(pf->buffer);
     pf->buffer = NULL;
 }

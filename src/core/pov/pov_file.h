@@ -11,15 +11,15 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "io/atomic_file.h"
 #include "util/err.h"
 
 #define POV_PATH_MAX 4096
 
 typedef struct pov_file {
-    FILE *f;
+    FILE *f;                      /* the temporary's stream (owned by out) */
     char *buffer;                 /* stdio buffer; owned */
-    char path[POV_PATH_MAX];
-    char tmp[POV_PATH_MAX + 64];
+    atomic_file out;              /* the temporary beside the target */
 } pov_file;
 
 int pov_file_open(pov_file *pf, const char *path, err_buf *err);

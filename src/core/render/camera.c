@@ -1,20 +1,35 @@
-/* camera.c — primary ray directions. */
+/* camera.c — primary ray directions. The frame is built in double precision from the scene's
+ * numbers and only the unit vectors are rounded to float, so a look_at far away (or very close)
+ * still gives a finite frame; the scene loader refuses what cannot be aimed at all. */
 #include "render/camera.h"
 
 #include <math.h>
 
+/* v scaled to unit length without overflow or underflow; zero stays zero. */
+static void unit_d(double v[3])
+{
+    double m = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+    if (!(m > 0.0) || !isfinite(m)) return;
+    for (int k = 0; k < 3; k++) v[k] /= m;
+    double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    for (int k = 0; k < 3; k++) v[k] /= l;
+}
+
+static vec3 to_float(const double v[3]) { return v3((float)v[0], (float)v[1], (float)v[2]); }
+
 void camera_init(camera *c, const camera_settings *s, uint32_t width, uint32_t height)
 {
-    c->origin = v3((float)s->position[0], (float)s->position[1], (float)s->position[2]);
-    vec3 f;
-    if (s->has_look_at)
-        f = v3((float)(s->look_at[0] - s->position[0]), (float)(s->look_at[1] - s->position[1]),
-               (float)(s->look_at[2] - s->position[2]));
-    else
-        f = v3((float)s->direction[0], (float)s->direction[1], (float)s->direction[2]);
-    c->forward = v3_norm(f);
-    vec3 up = v3_norm(v3((float)s->up[0], (float)s->up[1], (float)s->up[2]));
-    c->right = v3_norm(v3_cross(c->forward, up));
+    c->origin = to_float(s->position);
+    double f[3], up[3] = {s->up[0], s->up[1], s->up[2]};
+    for (int k = 0; k < 3; k++)
+        f[k] = s->has_look_at ? s->look_at[k] - s->position[k] : s->direction[k];
+    unit_d(f);
+    unit_d(up);
+    double r[3] = {f[1] * up[2] - f[2] * up[1], f[2] * up[0] - f[0] * up[2],
+                   f[0] * up[1] - f[1] * up[0]};
+    unit_d(r);
+    c->forward = to_float(f);
+    c->right = to_float(r);
     c->up = v3_cross(c->right, c->forward);
     c->width = width, c->height = height;
     c->tan_half_x = tanf((float)(s->fov_deg * M_PI / 360.0));

@@ -2,13 +2,40 @@
 #include "render/film.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "io/exr_write.h"
 #include "io/image_io.h"
+#include "util/memory_budget.h"
+
+static int film_memory_check(uint32_t w, uint32_t h, err_buf *err)
+{
+    char what[96];
+    snprintf(what, sizeof what, "a %ux%u frame", w, h);
+    if (memory_check((uint64_t)w * h * FILM_BYTES_PER_PIXEL, what, err)) {
+        size_t n = strlen(err->msg);
+        snprintf(err->msg + n, sizeof err->msg - n, "; lower the image size");
+        return -1;
+    }
+    return 0;
+}
+
+int film_check(uint32_t w, uint32_t h, uint32_t spp, err_buf *err)
+{
+    if (film_memory_check(w, h, err)) return -1;
+    double samples = (double)w * h * spp;
+    if (samples > FILM_MAX_SAMPLES)
+        return err_set(err, "%ux%u pixels at %u samples per pixel is %.3g camera samples, more "
+                       "than the %.0e a render may take (weeks of tracing); lower spp or the "
+                       "image size", w, h, spp, samples, FILM_MAX_SAMPLES);
+    return 0;
+}
 
 film *film_new(uint32_t w, uint32_t h, err_buf *err)
 {
+    if (film_memory_check(w, h, err)) return NULL;
     size_t n = (size_t)w * h;
     film *f = calloc(1, sizeof *f);
     if (f) {

@@ -37,6 +37,18 @@ typedef struct film {
     float *coverage;       /* 1 per pixel: share of the camera samples that hit a surface */
 } film;
 
+/* Bytes a frame needs per pixel: the layers above, the 8-bit copy for PNG and the EXR writer's
+ * half-float and line buffers (estimated from above). */
+#define FILM_BYTES_PER_PIXEL 80u
+/* Camera samples (width x height x spp) beyond which a render is refused as absurd work: 1e13
+ * samples are weeks of tracing on a workstation. */
+#define FILM_MAX_SAMPLES 1e13
+
+/* Refuses, with a sentence saying what to lower, a frame whose layers do not fit the memory
+ * budget (util/memory_budget.h) or whose sample count passes FILM_MAX_SAMPLES; 0 when it can be
+ * rendered. Called before the scene's acceleration structure is built. */
+int film_check(uint32_t width, uint32_t height, uint32_t spp, err_buf *err);
+/* Allocates the layers (after the same memory check); NULL with err set on failure. */
 film *film_new(uint32_t width, uint32_t height, err_buf *err);
 void film_free(film *f); /* accepts NULL */
 

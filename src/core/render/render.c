@@ -65,6 +65,7 @@ film *render_scene(const scene *s, const render_options *opt, render_stats *stat
     uint32_t w = o.width ? o.width : s->image.width, h = o.height ? o.height : s->image.height;
     unsigned threads = o.recorder ? 1 : o.threads ? o.threads : render_default_threads();
     double t0 = progress_now();
+    if (film_check(w, h, o.spp ? o.spp : s->image.spp, err)) return NULL; /* before any build */
     accel acc;
     if (accel_build(&acc, s, threads, err)) return NULL;
     double t1 = progress_now();

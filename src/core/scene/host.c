@@ -6,7 +6,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
+#include "util/file_check.h"
 #include "util/rng.h"
 
 void host_init(sylva_host *h, scene *sc, const char *scene_dir, uint64_t seed, const char *context,
@@ -215,9 +217,18 @@ static int host_plant_add(sylva_host *h, const sylva_plant *p)
     return SYLVA_OK;
 }
 
+/* A plugin opens what this returns, so the rules of scene paths hold here too: a GDAL virtual
+ * path only when the command line allowed it (returned as written), and never a FIFO, device or
+ * folder (NULL, with the reason as the host error). */
 static const char *host_resolve_path(sylva_host *h, const char *rel)
 {
     if (!rel) return NULL;
+    int virtual_path = file_is_gdal_virtual(rel);
+    if (virtual_path && !file_gdal_virtual_allowed()) {
+        host_error(h, "'%s' is a GDAL virtual path, URL or connection string, which may reach the "
+                   "network; name a local file, or run with --allow-gdal-virtual", rel);
+        return NULL;
+    }
     size_t n = strlen(h->scene_dir) + strlen(rel) + 2;
     char *s = malloc(n), **list = realloc(h->paths, (h->n_paths + 1) * sizeof(char *));
     if (list) h->paths = list;
@@ -226,8 +237,15 @@ static const char *host_resolve_path(sylva_host *h, const char *rel)
         host_out_of_memory(h, "out of memory resolving path '%s'", rel);
         return NULL;
     }
-    if (rel[0] == '/') snprintf(s, n, "%s", rel);
+    if (rel[0] == '/' || virtual_path) snprintf(s, n, "%s", rel);
     else snprintf(s, n, "%s/%s", h->scene_dir, rel);
+    struct stat st;
+    err_buf why;
+    if (!virtual_path && stat(s, &st) == 0 && file_check_regular(s, rel, &why)) {
+        free(s);
+        host_error(h, "%s", why.msg);
+        return NULL;
+    }
     h->paths[h->n_paths++] = s;
     return s;
 }

@@ -18,6 +18,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "scene/scene_estimate.h"
+
 int scene_file_material_index(const scene_file *sf, const char *name)
 {
     return sf ? (int)name_index_find(&sf->material_names, name) : -1;
@@ -89,6 +91,7 @@ static int load(loader *L, const char *path)
         sf_read_plants(L, ynode_get(L->root, "plants")) ||
         sf_read_objects(L, ynode_get(L->root, "objects")))
         return -1;
+    if (scene_estimate_check(L->sf, L->err)) return -1; /* before any mesh is built */
     if (L->sf->ecology.plugin && L->sf->terrain.source == TERRAIN_NONE)
         return sf_located(L->err, L->file, L->sf->ecology.line, L->sf->ecology.column,
                           "the ecology plugin '%s' places plants on the terrain, but the scene has no "

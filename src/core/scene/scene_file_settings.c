@@ -3,9 +3,28 @@
  * (direction or azimuth and elevation) and sky (keys that apply to its model only). */
 #include "scene/scene_file_loader.h"
 
+#include <float.h>
 #include <math.h>
 
 #define DEG (M_PI / 180.0)
+
+/* Scales v to unit length without overflow or underflow (components of 1e300 or 1e-320 give a
+ * direction too); returns 0, or -1 when v is zero or not finite. */
+static int normalize3(double v[3])
+{
+    double m = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+    if (!(m > 0.0) || !isfinite(m)) return -1;
+    for (int k = 0; k < 3; k++) v[k] /= m;
+    double l = sf_length3(v);
+    for (int k = 0; k < 3; k++) v[k] /= l;
+    return 0;
+}
+
+/* The renderer works in single precision: a coordinate beyond its range becomes infinite. */
+static int beyond_float(const double v[3])
+{
+    return fabs(v[0]) > FLT_MAX || fabs(v[1]) > FLT_MAX || fabs(v[2]) > FLT_MAX;
+}
 
 static int read_section(loader *L, const char *name, const host_schema *schema,
                         const sylva_params **out)
@@ -42,8 +61,8 @@ int sf_read_camera(loader *L)
 {
     if (!ynode_get(L->root, "camera"))
         return sf_located(L->err, L->file, L->root->line, L->root->column,
-                          "missing required section 'camera' (at least camera: {position: [x, y, z], "
-                          "look_at: [x, y, z]})");
+                       "missing required section 'camera' (at least camera: {position: [x, y, z], "
+                       "look_at: [x, y, z]})");
     const sylva_params *p;
     if (read_section(L, "camera", &host_schema_camera, &p)) return -1;
     camera_settings *c = &L->sf->camera;
@@ -54,45 +73,62 @@ int sf_read_camera(loader *L)
     if (look->is_set && dir->is_set) {
         const sylva_value *at = later_of(look, dir);
         return sf_located(L->err, L->file, at->line, at->column,
-                          "the camera takes 'look_at' or 'direction', not both");
+                       "the camera takes 'look_at' or 'direction', not both");
     }
     if (fov->is_set && focal->is_set) {
         const sylva_value *at = later_of(fov, focal);
         return sf_located(L->err, L->file, at->line, at->column,
-                          "the camera takes 'fov' or 'focal_length' (with sensor_width), not both");
+                       "the camera takes 'fov' or 'focal_length' (with sensor_width), not both");
     }
     if (sensor->is_set && !focal->is_set)
         return sf_located(L->err, L->file, sensor->line, sensor->column,
-                          "'sensor_width' is used only with 'focal_length'; give focal_length too "
-                          "or remove it");
+                       "'sensor_width' is used only with 'focal_length'; give focal_length too "
+                       "or remove it");
     sf_copy3(c->position, pos);
     sf_copy3(c->up, up);
     c->has_look_at = look->is_set;
     const sylva_value *view = look->is_set ? look : dir;
+    if (beyond_float(c->position))
+        return sf_located(L->err, L->file, pos->line, pos->column,
+                       "the camera 'position' lies beyond single precision (+-%g m), where the "
+                       "renderer cannot place it", (double)FLT_MAX);
     if (look->is_set) {
         sf_copy3(c->look_at, look);
-        for (int k = 0; k < 3; k++) c->direction[k] = c->look_at[k] - c->position[k];
-        if (sf_length3(c->direction) == 0.0)
+        if (beyond_float(c->look_at))
             return sf_located(L->err, L->file, look->line, look->column,
-                              "'look_at' must differ from the camera 'position'");
+                           "'look_at' lies beyond single precision (+-%g m), where the renderer "
+                           "cannot aim; give a nearer point on the same line, or 'direction'",
+                           (double)FLT_MAX);
+        int same = 1;
+        for (int k = 0; k < 3; k++) {
+            c->direction[k] = c->look_at[k] - c->position[k];
+            same &= (float)c->look_at[k] == (float)c->position[k];
+        }
+        if (same)
+            return sf_located(L->err, L->file, look->line, look->column,
+                           "'look_at' must differ from the camera 'position' (in single "
+                           "precision, as the renderer holds them)");
     } else {
         sf_copy3(c->direction, dir);
-        if (sf_length3(c->direction) == 0.0)
-            return sf_located(L->err, L->file, dir->line, dir->column, "'direction' must not be zero");
     }
-    double dl = sf_length3(c->direction), ul = sf_length3(c->up);
-    if (ul == 0.0)
+    if (normalize3(c->direction))
+        return sf_located(L->err, L->file, view->line, view->column,
+                       look->is_set ? "the view from 'position' to 'look_at' has no usable "
+                                      "direction; give a nearer 'look_at'"
+                                    : "'direction' must not be zero");
+    double u[3]; /* the unit up, for the check; c->up keeps the value given */
+    sf_copy3(u, up);
+    if (normalize3(u))
         return sf_located(L->err, L->file, up->line, up->column, "'up' must not be zero");
-    for (int k = 0; k < 3; k++) c->direction[k] /= dl;
-    double cr[3] = {c->direction[1] * c->up[2] - c->direction[2] * c->up[1],
-                    c->direction[2] * c->up[0] - c->direction[0] * c->up[2],
-                    c->direction[0] * c->up[1] - c->direction[1] * c->up[0]};
-    if (sf_length3(cr) / ul < 1e-9) {
+    double cr[3] = {c->direction[1] * u[2] - c->direction[2] * u[1],
+                    c->direction[2] * u[0] - c->direction[0] * u[2],
+                    c->direction[0] * u[1] - c->direction[1] * u[0]};
+    if (sf_length3(cr) < 1e-9) {
         const sylva_value *at = up->is_set ? up : view->is_set ? view : pos;
         return sf_located(L->err, L->file, at->line, at->column,
-                          "the viewing direction is parallel to 'up' [%g, %g, %g]; give another "
-                          "'up' or turn the view",
-                          c->up[0], c->up[1], c->up[2]);
+                       "the viewing direction is parallel to 'up' [%g, %g, %g]; give another "
+                       "'up' or turn the view",
+                       c->up[0], c->up[1], c->up[2]);
     }
     c->sensor_width_mm = sensor->r;
     if (focal->is_set) {
@@ -105,6 +141,8 @@ int sf_read_camera(loader *L)
     return 0;
 }
 
+#define SUN_IRRADIANCE_MAX 1e6 /* sylva's unit: 1 is about 100 klx; 1e6 is beyond any sun */
+
 int sf_read_sun(loader *L)
 {
     const sylva_params *p;
@@ -115,14 +153,12 @@ int sf_read_sun(loader *L)
     if (dir->is_set && (az->is_set || el->is_set)) {
         const sylva_value *at = later_of(dir, az->is_set ? az : el);
         return sf_located(L->err, L->file, at->line, at->column,
-                          "the sun takes 'direction' or 'azimuth'/'elevation', not both");
+                       "the sun takes 'direction' or 'azimuth'/'elevation', not both");
     }
     if (dir->is_set) {
         sf_copy3(s->direction, dir);
-        double len = sf_length3(s->direction);
-        if (len == 0.0)
+        if (normalize3(s->direction))
             return sf_located(L->err, L->file, dir->line, dir->column, "'direction' must not be zero");
-        for (int k = 0; k < 3; k++) s->direction[k] /= len;
         double azimuth = atan2(s->direction[0], s->direction[1]) / DEG;
         s->azimuth_deg = azimuth < 0.0 ? azimuth + 360.0 : azimuth;
         s->elevation_deg = asin(fmax(-1.0, fmin(1.0, s->direction[2]))) / DEG;
@@ -136,6 +172,15 @@ int sf_read_sun(loader *L)
     s->enabled = (int)sylva_param_int(p, "enabled");
     s->irradiance = sylva_param_real(p, "irradiance");
     sf_copy3(s->color, sylva_param(p, "color"));
+    double brightest = s->irradiance * fmax(s->color[0], fmax(s->color[1], s->color[2]));
+    if (!(brightest <= SUN_IRRADIANCE_MAX)) {
+        const sylva_value *irr = sylva_param(p, "irradiance"), *col = sylva_param(p, "color");
+        const sylva_value *at = irr->is_set ? irr : col->is_set ? col : NULL;
+        return sf_located(L->err, L->file, at ? at->line : 1, at ? at->column : 1,
+                       "the sun's irradiance times its colour reaches %g; it must stay at most "
+                       "%g (1 is about 100 klx), or the image overflows to black",
+                       brightest, SUN_IRRADIANCE_MAX);
+    }
     s->angular_diameter_deg = sylva_param_real(p, "angular_diameter");
     return 0;
 }

@@ -112,6 +112,26 @@ static int dtm_spacing(const ifs_raster *r, const ifs_dtm_file_options *opt, con
     return SYLVA_OK;
 }
 
+/* Every height read lies in the plausible range: a corrupted file (heights of +-1e34, or a
+ * nodata value the file does not declare) is refused instead of becoming a wall of terrain. */
+static int dtm_check_heights(const ifs_dtm *d, const ifs_dtm_file_options *opt, const char *path,
+                             ifs_err *err)
+{
+    double lo = opt->height_range[0], hi = opt->height_range[1];
+    if (lo == 0.0 && hi == 0.0) lo = IFS_DTM_HEIGHT_MIN, hi = IFS_DTM_HEIGHT_MAX;
+    for (uint32_t j = 0; j < d->ny; j++)
+        for (uint32_t i = 0; i < d->nx; i++) {
+            double z = d->z[(size_t)j * d->nx + i];
+            if (isnan(z) || (z >= lo && z <= hi)) continue; /* NaN: nodata, filled later */
+            return ifs_fail(err, SYLVA_ERR_PARAM,
+                            "'%s' holds the height %g m at DTM node (%u, %u) (column from the "
+                            "west, row from the south), outside the plausible range [%g, %g] m: "
+                            "the file is damaged or has an undeclared nodata value; if the "
+                            "heights are real, widen height_range", path, z, i, j, lo, hi);
+        }
+    return SYLVA_OK;
+}
+
 int ifs_dtm_read_file(const char *path, const ifs_dtm_file_options *opt, ifs_dtm **out,
                       ifs_dtm_file_info *info_out, ifs_err *err)
 {
@@ -136,10 +156,13 @@ int ifs_dtm_read_file(const char *path, const ifs_dtm_file_options *opt, ifs_dtm
         goto done;
     }
     /* DTM row 0 is the south edge: the file's last row of the window when the raster is
-     * north-up (negative y pixel size, or no georeferencing: image order). */
+     * north-up (negative y pixel size, or no georeferencing: image order). File rows are read
+     * in file order whatever the orientation: asked for the rows of a truncated ESRI ASCII grid
+     * bottom-up, GDAL 3.6's reader works for minutes before it fails; top-down it stops at the
+     * first missing row at once. */
     int south_up = r.has_transform && r.transform[5] > 0;
-    for (uint32_t j = 0; j < ny; j++) {
-        uint32_t file_row = win[1] + (south_up ? j : ny - 1 - j) * step;
+    for (uint32_t k = 0; k < ny; k++) {
+        uint32_t j = south_up ? k : ny - 1 - k, file_row = win[1] + k * step;
         if ((rc = ifs_raster_read_row(&r, file_row, win[0], win[2], row, "DTM", err))) {
             ifs_err inner = *err;
             rc = ifs_fail(err, rc, "'%s': %s", path, inner.msg);
@@ -147,6 +170,7 @@ int ifs_dtm_read_file(const char *path, const ifs_dtm_file_options *opt, ifs_dtm
         }
         for (uint32_t i = 0; i < nx; i++) d->z[(size_t)j * nx + i] = row[(size_t)i * step];
     }
+    if ((rc = dtm_check_heights(d, opt, path, err))) goto done;
     if ((rc = ifs_dtm_fill_nodata(d, &info.nodata_filled, err))) {
         ifs_err inner = *err;
         rc = ifs_fail(err, rc, "'%s': %s", path, inner.msg);

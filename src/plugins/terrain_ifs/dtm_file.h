@@ -34,7 +34,14 @@ typedef struct ifs_dtm_file_options {
     uint32_t step;          /* >= 1 */
     ifs_units units;
     double cell_size[2];    /* > 0: node spacing in metres along x and y, replacing the file's */
+    double height_range[2]; /* plausible heights [low, high] in the file; a height outside it
+                               is refused as damage. {0, 0}: the default range below */
 } ifs_dtm_file_options;
+
+/* The default plausible heights of a DTM file in metres: the Dead Sea shore (-430 m) to Everest
+ * (8,849 m) with a margin. A corrupted file (heights of +-1e34) fails instead of loading. */
+#define IFS_DTM_HEIGHT_MIN (-500.0)
+#define IFS_DTM_HEIGHT_MAX 9000.0
 
 typedef struct ifs_dtm_file_info {
     char driver[32];        /* GDAL driver short name */

@@ -1,16 +1,28 @@
-/* raster_gdal.c — reading one band of a raster through GDAL's C API, quietly. */
+/* raster_gdal.c — reading one band of a raster through GDAL's C API, quietly and offline.
+ *
+ * GDAL can reach the network on its own: a local VRT may name "/vsicurl/http://..." sources,
+ * and drivers such as WMS fetch over HTTP. Unless the path handed in is itself such a name
+ * (the host passes those only when the user allowed them with --allow-gdal-virtual), every GDAL
+ * call here runs with the network shut for the calling thread: /vsicurl/ (and the cloud file
+ * systems built on it) sees only one impossible file name (CPL_VSIL_CURL_ALLOWED_FILENAME) and
+ * every CPLHTTPFetch is answered by a callback that refuses it. */
 #include "raster_gdal.h"
 
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <cpl_conv.h>
 #include <cpl_error.h>
+#include <cpl_http.h>
+#include <cpl_string.h>
 #include <gdal.h>
 #include <ogr_srs_api.h>
 
+#include "ascii_grid.h"
 #include "sylva/plugin.h"
 
 /* GDAL's last message on this thread, or a fallback when it left none. */
@@ -18,6 +30,55 @@ static const char *gdal_reason(const char *fallback)
 {
     const char *m = CPLGetLastErrorMsg();
     return m && m[0] ? m : fallback;
+}
+
+/* --- the network switch ----------------------------------------------------------------------- */
+
+#define OFFLINE_FILENAME "sylva-network-is-off:"
+
+/* 1 when path names something GDAL reads through its virtual file systems or a driver prefix
+ * rather than a local file: "/vsi...", "scheme://...", "DRIVER:...". */
+static int names_virtual_source(const char *path)
+{
+    if (!strncmp(path, "/vsi", 4)) return 1;
+    size_t n = 0;
+    while ((path[n] >= 'a' && path[n] <= 'z') || (path[n] >= 'A' && path[n] <= 'Z') ||
+           (path[n] >= '0' && path[n] <= '9') || path[n] == '_' || path[n] == '+' ||
+           path[n] == '-' || path[n] == '.')
+        n++;
+    return n >= 2 && path[n] == ':';
+}
+
+static CPLHTTPResult *refuse_http(const char *url, CSLConstList options, GDALProgressFunc progress,
+                                  void *progress_arg, CPLHTTPFetchWriteFunc write, void *write_arg,
+                                  void *user)
+{
+    (void)url, (void)options, (void)progress, (void)progress_arg, (void)write, (void)write_arg;
+    (void)user;
+    CPLHTTPResult *r = CPLCalloc(1, sizeof *r); /* freed by GDAL (CPLHTTPDestroyResult) */
+    r->nStatus = 1;
+    r->pszErrBuf = CPLStrdup("network access is off in sylva (see --allow-gdal-virtual)");
+    return r;
+}
+
+/* The network switch around GDAL calls on this thread; off unless r->network is set. */
+static void offline_begin(const ifs_raster *r, char **saved)
+{
+    *saved = NULL;
+    if (r->network) return;
+    const char *old = CPLGetThreadLocalConfigOption("CPL_VSIL_CURL_ALLOWED_FILENAME", NULL);
+    *saved = CPLStrdup(old ? old : "");
+    CPLSetThreadLocalConfigOption("CPL_VSIL_CURL_ALLOWED_FILENAME", OFFLINE_FILENAME);
+    CPLHTTPPushFetchCallback(refuse_http, NULL);
+}
+
+static void offline_end(const ifs_raster *r, char **saved)
+{
+    if (r->network) return;
+    CPLHTTPPopFetchCallback();
+    CPLSetThreadLocalConfigOption("CPL_VSIL_CURL_ALLOWED_FILENAME", (*saved)[0] ? *saved : NULL);
+    CPLFree(*saved);
+    *saved = NULL;
 }
 
 static double integer_type_max(GDALDataType t)
@@ -37,19 +98,37 @@ int ifs_raster_open(const char *path, uint32_t band, const char *what, ifs_raste
     memset(r, 0, sizeof *r);
     r->metres_per_unit = 1.0, r->scale = 1.0;
     if (!path || !path[0]) return ifs_fail(err, SYLVA_ERR_PARAM, "no %s file was named", what);
-    /* GDAL's virtual file systems (/vsizip/, /vsicurl/, ...) are not files to check here */
-    if (strncmp(path, "/vsi", 4) && access(path, R_OK))
-        return ifs_fail(err, SYLVA_ERR_IO, "cannot read the %s '%s': %s", what, path,
-                        strerror(errno));
+    /* GDAL's virtual file systems (/vsizip/, /vsicurl/, ...) and connection strings are not
+     * files to check here; the host lets them through only when the user allowed them */
+    r->network = names_virtual_source(path);
+    if (!r->network) {
+        struct stat st;
+        if (stat(path, &st) || access(path, R_OK))
+            return ifs_fail(err, SYLVA_ERR_IO, "cannot read the %s '%s': %s", what, path,
+                            strerror(errno));
+        if (!S_ISREG(st.st_mode)) /* a FIFO would block the open, a device never end */
+            return ifs_fail(err, SYLVA_ERR_IO, "cannot read the %s '%s': it is %s, not a regular "
+                            "file", what, path, S_ISDIR(st.st_mode)    ? "a folder"
+                                                : S_ISFIFO(st.st_mode) ? "a FIFO (named pipe)"
+                                                : S_ISCHR(st.st_mode)  ? "a character device"
+                                                                       : "a special file");
+        int rc = ifs_ascii_grid_check(path, what, err);
+        if (rc) return rc;
+    }
     GDALAllRegister();
+    char *saved;
+    offline_begin(r, &saved);
     CPLPushErrorHandler(CPLQuietErrorHandler);
     CPLErrorReset();
     int rc = SYLVA_OK;
     GDALDatasetH ds = GDALOpenEx(path, GDAL_OF_RASTER | GDAL_OF_READONLY, NULL, NULL, NULL);
     if (!ds) {
+        /* GDAL's reasons for refusing a file can quote its first bytes, which may belong to any
+         * file a scene names; the sentence says what is wrong without them */
         rc = ifs_fail(err, SYLVA_ERR_IO,
-                      "cannot read the %s '%s': %s; give a raster GDAL reads (GeoTIFF, ESRI ASCII "
-                      "grid, PNG, ...)", what, path, gdal_reason("GDAL does not recognise it"));
+                      "cannot read the %s '%s': GDAL does not recognise it as a raster, or it is "
+                      "damaged; give a raster GDAL reads (GeoTIFF, ESRI ASCII grid, PNG, ...)",
+                      what, path);
         goto done;
     }
     r->dataset = ds;
@@ -97,6 +176,7 @@ int ifs_raster_open(const char *path, uint32_t band, const char *what, ifs_raste
     if (r->type_max == 0.0 && r->has_nodata && type == GDT_Float32) r->nodata = (float)r->nodata;
 done:
     CPLPopErrorHandler();
+    offline_end(r, &saved);
     if (rc) ifs_raster_close(r);
     return rc;
 }
@@ -105,9 +185,12 @@ void ifs_raster_close(ifs_raster *r)
 {
     if (!r) return;
     if (r->dataset) {
+        char *saved;
+        offline_begin(r, &saved);
         CPLPushErrorHandler(CPLQuietErrorHandler);
         GDALClose((GDALDatasetH)r->dataset);
         CPLPopErrorHandler();
+        offline_end(r, &saved);
     }
     r->dataset = NULL, r->band = NULL;
 }
@@ -115,6 +198,8 @@ void ifs_raster_close(ifs_raster *r)
 int ifs_raster_read_row(ifs_raster *r, uint32_t row, uint32_t col, uint32_t count, double *out,
                         const char *what, ifs_err *err)
 {
+    char *saved;
+    offline_begin(r, &saved);
     CPLPushErrorHandler(CPLQuietErrorHandler);
     CPLErrorReset();
     CPLErr e = GDALRasterIO((GDALRasterBandH)r->band, GF_Read, (int)col, (int)row, (int)count, 1,
@@ -124,6 +209,7 @@ int ifs_raster_read_row(ifs_raster *r, uint32_t row, uint32_t col, uint32_t coun
         rc = ifs_fail(err, SYLVA_ERR_IO, "cannot read row %u of the %s: %s", row, what,
                       gdal_reason("GDAL reported a read failure"));
     CPLPopErrorHandler();
+    offline_end(r, &saved);
     if (rc) return rc;
     for (uint32_t k = 0; k < count; k++) {
         double v = out[k];

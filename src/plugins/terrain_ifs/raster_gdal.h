@@ -36,6 +36,8 @@ typedef struct ifs_raster {
     char driver[32];          /* GDAL driver short name, e.g. "GTiff", "AAIGrid" */
     char type_name[16];       /* sample type, e.g. "Int16", "Float32" */
     double type_max;          /* largest value of an integer sample type (0 for floating types) */
+    int network;              /* 1: the path names a GDAL virtual source, which may use the
+                                 network; 0: GDAL's network access is off for this raster */
 } ifs_raster;
 
 /* Opens band `band` (1-based) of `path`. `what` names the file's role in messages ("DTM",

@@ -88,11 +88,17 @@ static int load_dtm(const sylva_host_api *api, sylva_host *host, const sylva_par
     int rc;
     if (dtm->s) {
         const sylva_value *crop = sylva_param(params, "crop");
+        const sylva_value *range = sylva_param(params, "height_range");
         ifs_dtm_file_options o = {.band = (uint32_t)sylva_param_int(params, "band"),
                                   .has_crop = crop->len == 4,
                                   .step = (uint32_t)sylva_param_int(params, "step"),
                                   .units = (ifs_units)sylva_param_int(params, "units"),
-                                  .cell_size = {cs[0], cs[1]}};
+                                  .cell_size = {cs[0], cs[1]},
+                                  .height_range = {range->list[0], range->list[1]}};
+        if (!(range->list[0] < range->list[1]))
+            return api->param_error(host, params, "height_range", "height_range [%g, %g] is "
+                                    "empty; give [low, high] with low < high", range->list[0],
+                                    range->list[1]);
         if (crop->len != 0 && crop->len != 4)
             return api->param_error(host, params, "crop", "crop has %u numbers; give 4, [first "
                                     "column, first row, columns, rows], or leave it out", crop->len);

@@ -1,6 +1,7 @@
 /* terrain_ifs_schema.c — the terrain_ifs parameter table. */
 #include "terrain_ifs_schema.h"
 
+#include "dtm_file.h"
 #include "ifs_chaos.h"
 #include "ifs_eval.h"
 
@@ -14,6 +15,7 @@ static const char *const surface_choices[] = {"classes", "scene", NULL};
 
 static const double def_generated_nodes[] = {17, 17};
 static const double def_centre[] = {0, 0};
+static const double def_height_range[] = {IFS_DTM_HEIGHT_MIN, IFS_DTM_HEIGHT_MAX};
 static const double def_grass[] = {0.10, 0.17, 0.05};
 static const double def_dry_grass[] = {0.30, 0.26, 0.12};
 static const double def_scree[] = {0.34, 0.32, 0.29};
@@ -44,6 +46,11 @@ const sylva_param_spec terrain_ifs_params[] = {
              "at the top (north), as gdal_translate -srcwin; empty: the whole file."},
     {.name = "step", .type = SYLVA_P_INT, .flags = RANGE, .def = 1, .min = 1, .max = 4096,
      .help = "Resampling step: keep every step-th node of the dtm window along both axes."},
+    {.name = "height_range", .type = SYLVA_P_LIST, .def_list = def_height_range, .def_len = 2,
+     .min_len = 2, .max_len = 2, .unit = "m",
+     .help = "Lowest and highest plausible height [low, high] in the dtm file (before z_scale "
+             "and z_offset); a height outside it stops loading as a damaged file. The default "
+             "spans the Dead Sea shore to Everest; widen it for heights in feet."},
     {.name = "units", .type = SYLVA_P_ENUM, .def_str = "auto", .choices = units_choices,
      .help = "Horizontal units of the dtm file: auto (from its coordinate system), metres, or "
              "degrees (converted to metres at the window's centre latitude)."},

@@ -9,7 +9,14 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+#include <fcntl.h>
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
 
+#include <cpl_conv.h>
 #include <gdal.h>
 #include <ogr_srs_api.h>
 
@@ -413,6 +420,144 @@ TEST(shared_dem_corpus)
     fprintf(stderr, "  %d of %d files loaded\n", loaded, n);
 }
 
+
+/* A 300 x 300 ESRI ASCII grid cut off after 150 rows fails in well under 2 s with a sentence
+ * naming the missing row (read bottom-up it kept GDAL busy for minutes); an alarm fails the test
+ * should it hang again. */
+TEST(truncated_ascii_grid_fails_fast)
+{
+    const char *path = out_path("truncated.asc");
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (!f) return;
+    fprintf(f, "ncols 300\nnrows 300\nxllcorner 0\nyllcorner 0\ncellsize 10\n");
+    for (int r = 0; r < 150; r++)
+        for (int c = 0; c < 300; c++) fprintf(f, "%d%c", (r * 7 + c) % 100, c == 299 ? '\n' : ' ');
+    fclose(f);
+    ifs_dtm *d = NULL;
+    ifs_err err = {{0}};
+    alarm(30);
+    double t0 = harness_seconds();
+    CHECK(ifs_dtm_read_file(path, &defaults, &d, NULL, &err) == SYLVA_ERR_IO);
+    double took = harness_seconds() - t0;
+    alarm(0);
+    fprintf(stderr, "  truncated grid refused in %.2f s: %s\n", took, err.msg);
+    CHECK(took < 2.0);
+    CHECK_STR_CONTAINS(err.msg, "truncated.asc' is an ESRI ASCII grid of 300 x 300 values but "
+                                "holds 45000: it is truncated");
+    CHECK(d == NULL);
+}
+
+/* GDAL reads a word where a number belongs as 0 and a short last row as complete; the grid is
+ * refused instead, without quoting the word. */
+TEST(ascii_grid_with_junk_is_refused)
+{
+    const char *junk = out_path("junk_value.asc");
+    write_text(junk, "ncols 3\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 10\n"
+                     "1 2 3\n4 SECRETWORD 6\n7 8 9\n");
+    ifs_dtm *d = NULL;
+    ifs_err err = {{0}};
+    CHECK(ifs_dtm_read_file(junk, &defaults, &d, NULL, &err) == SYLVA_ERR_IO);
+    CHECK_STR_CONTAINS(err.msg, "junk_value.asc' is an ESRI ASCII grid whose value 5 (row 2, "
+                                "column 2, on line 7) is not a number");
+    CHECK(!strstr(err.msg, "SECRET"));
+    const char *short_row = out_path("short_row.asc");
+    write_text(short_row, "ncols 3\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 10\n"
+                          "1 2 3\n4 5 6\n7 8\n");
+    CHECK(ifs_dtm_read_file(short_row, &defaults, &d, NULL, &err) == SYLVA_ERR_IO);
+    CHECK_STR_CONTAINS(err.msg, "grid of 3 x 3 values but holds 8: it is truncated");
+    CHECK(d == NULL);
+}
+
+/* A FIFO or a device named as the DTM is refused before GDAL opens it (the FIFO used to block
+ * the open for ever). */
+TEST(special_files_are_refused)
+{
+    const char *fifo = out_path("dtm.fifo");
+    remove(fifo);
+    CHECK(mkfifo(fifo, 0600) == 0);
+    ifs_dtm *d = NULL;
+    ifs_err err = {{0}};
+    alarm(10);
+    CHECK(ifs_dtm_read_file(fifo, &defaults, &d, NULL, &err) == SYLVA_ERR_IO);
+    CHECK_STR_CONTAINS(err.msg, "dtm.fifo': it is a FIFO (named pipe), not a regular file");
+    CHECK(ifs_dtm_read_file("/dev/zero", &defaults, &d, NULL, &err) == SYLVA_ERR_IO);
+    CHECK_STR_CONTAINS(err.msg, "'/dev/zero': it is a character device, not a regular file");
+    alarm(0);
+    CHECK(d == NULL);
+    remove(fifo);
+}
+
+/* A local VRT whose source is an HTTP URL: GDAL must not connect. A listening socket on the
+ * loopback stands in for the server; it must see no connection. */
+TEST(local_vrt_stays_offline)
+{
+    int srv = socket(AF_INET, SOCK_STREAM, 0);
+    CHECK(srv >= 0);
+    if (srv < 0) return;
+    struct sockaddr_in a = {.sin_family = AF_INET, .sin_addr.s_addr = htonl(INADDR_LOOPBACK)};
+    socklen_t len = sizeof a;
+    CHECK(bind(srv, (struct sockaddr *)&a, sizeof a) == 0);
+    CHECK(listen(srv, 4) == 0);
+    CHECK(getsockname(srv, (struct sockaddr *)&a, &len) == 0);
+    char vrt[1024];
+    snprintf(vrt, sizeof vrt,
+             "<VRTDataset rasterXSize=\"4\" rasterYSize=\"4\">\n"
+             "  <GeoTransform>0, 10, 0, 40, 0, -10</GeoTransform>\n"
+             "  <VRTRasterBand dataType=\"Float32\" band=\"1\">\n"
+             "    <SimpleSource>\n"
+             "      <SourceFilename relativeToVRT=\"0\">/vsicurl/http://127.0.0.1:%u/dem.tif</SourceFilename>\n"
+             "      <SourceBand>1</SourceBand>\n"
+             "    </SimpleSource>\n"
+             "  </VRTRasterBand>\n"
+             "</VRTDataset>\n", (unsigned)ntohs(a.sin_port));
+    const char *path = out_path("remote_source.vrt");
+    write_text(path, vrt);
+    ifs_dtm *d = NULL;
+    ifs_err err = {{0}};
+    /* should GDAL connect, the silent server would keep it waiting: let it give up soon */
+    CPLSetConfigOption("GDAL_HTTP_TIMEOUT", "2");
+    CPLSetConfigOption("GDAL_HTTP_MAX_RETRY", "0");
+    alarm(30);
+    CHECK(ifs_dtm_read_file(path, &defaults, &d, NULL, &err) != 0);
+    alarm(0);
+    CPLSetConfigOption("GDAL_HTTP_TIMEOUT", NULL);
+    CPLSetConfigOption("GDAL_HTTP_MAX_RETRY", NULL);
+    CHECK(d == NULL);
+    fcntl(srv, F_SETFL, O_NONBLOCK);
+    int conn = accept(srv, NULL, NULL);
+    if (conn >= 0) {
+        fprintf(stderr, "  GDAL connected to the loopback server\n");
+        close(conn);
+    }
+    CHECK(conn < 0);
+    close(srv);
+}
+
+/* Heights of +-1e34 (a damaged file) are refused; real heights beyond the default range load
+ * once height_range is widened. */
+TEST(corrupted_heights_are_refused)
+{
+    const char *path = out_path("corrupt.asc");
+    write_text(path, "ncols 3\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 10\n"
+                     "100 101 102\n103 -1e34 105\n106 107 108\n");
+    ifs_dtm *d = NULL;
+    ifs_err err = {{0}};
+    CHECK(ifs_dtm_read_file(path, &defaults, &d, NULL, &err) == SYLVA_ERR_PARAM);
+    CHECK_STR_CONTAINS(err.msg, "corrupt.asc' holds the height -1e+34 m at DTM node (1, 1)");
+    CHECK_STR_CONTAINS(err.msg, "outside the plausible range [-500, 9000] m");
+    CHECK(d == NULL);
+    const char *feet = out_path("feet.asc");
+    write_text(feet, "ncols 3\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 10\n"
+                     "29000 29010 29020\n29030 29032 29020\n29000 29010 29020\n");
+    CHECK(ifs_dtm_read_file(feet, &defaults, &d, NULL, &err) == SYLVA_ERR_PARAM);
+    ifs_dtm_file_options wide = defaults;
+    wide.height_range[0] = -1000, wide.height_range[1] = 30000;
+    CHECK(ifs_dtm_read_file(feet, &wide, &d, NULL, &err) == 0);
+    if (d) CHECK_NEAR(d->z[1 * 3 + 1], 29032, 0);
+    ifs_dtm_free(d);
+}
+
 TEST_LIST(TEST_CASE(geotiff_projected),
           TEST_CASE(geotiff_geographic_in_degrees),
           TEST_CASE(ascii_grid_with_nodata),
@@ -421,4 +566,9 @@ TEST_LIST(TEST_CASE(geotiff_projected),
           TEST_CASE(bad_files_give_clear_errors),
           TEST_CASE(humidity_map_is_resampled),
           TEST_CASE(humidity_from_a_colour_ramp_png),
-          TEST_CASE(shared_dem_corpus))
+          TEST_CASE(shared_dem_corpus),
+          TEST_CASE(truncated_ascii_grid_fails_fast),
+          TEST_CASE(ascii_grid_with_junk_is_refused),
+          TEST_CASE(special_files_are_refused),
+          TEST_CASE(local_vrt_stays_offline),
+          TEST_CASE(corrupted_heights_are_refused))

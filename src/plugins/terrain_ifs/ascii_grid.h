@@ -1,0 +1,17 @@
+/* ascii_grid.h — a cheap completeness check of an ESRI ASCII grid before GDAL reads it.
+ *
+ * GDAL's AAIGrid reader takes a word where a number belongs as 0 and a short last row as
+ * complete, and works for minutes on a grid cut off early when rows are asked for out of order.
+ * One pass over the text finds all three: the header's ncols and nrows, then exactly
+ * ncols x nrows values, each a number. Messages say where the grid goes wrong, never what the
+ * file holds there. */
+#ifndef TERRAIN_IFS_ASCII_GRID_H
+#define TERRAIN_IFS_ASCII_GRID_H
+
+#include "ifs_err.h"
+
+/* SYLVA_OK when path is not an ESRI ASCII grid (its first word is not "ncols") or is a complete
+ * one; SYLVA_ERR_IO with a sentence naming `what` and path otherwise. */
+int ifs_ascii_grid_check(const char *path, const char *what, ifs_err *err);
+
+#endif

@@ -335,14 +335,21 @@ static int read_keyword_line(reader *r, text_line ln)
     int which = -1;
     for (int k = 0; keywords[k]; k++)
         if (strlen(keywords[k]) == kn && !memcmp(keywords[k], ln.s + start, kn)) which = k;
-    if (which < 0 || (i < ln.n && !is_blank(ln.s[i]) && ln.s[i] != '#')) {
-        size_t e = start;
-        while (e < ln.n && !is_blank(ln.s[e]) && e - start < 40) e++;
+    int word_ends = i >= ln.n || is_blank(ln.s[i]) || ln.s[i] == '#';
+    if (which < 0 || !word_ends) {
+        /* A lower-case word alone is quoted (a misspelt keyword); anything else may be some
+         * other file's content and is not repeated. */
+        if (word_ends && kn > 0 && kn <= 24)
+            return lsys_fail(r->err, LSYS_ERR_SYNTAX,
+                             "%s:%u:%u: unknown keyword '%.*s'; a keyword-dialect line starts with "
+                             "recursion, angle, thickness, min_thickness, shape, switch_yz, no_wait, "
+                             "poly_limit, mutation, color, axiom or rule",
+                             r->name, r->line, kcol, (int)kn, (const char *)ln.s + start);
         return lsys_fail(r->err, LSYS_ERR_SYNTAX,
-                         "%s:%u:%u: unknown keyword '%.*s'; a keyword-dialect line starts with recursion, "
-                         "angle, thickness, min_thickness, shape, switch_yz, no_wait, poly_limit, mutation, "
-                         "color, axiom or rule",
-                         r->name, r->line, kcol, (int)(e - start), (const char *)ln.s + start);
+                         "%s:%u:%u: this line does not start with a keyword; is this an L-system file? "
+                         "A keyword-dialect line starts with recursion, angle, thickness, min_thickness, "
+                         "shape, switch_yz, no_wait, poly_limit, mutation, color, axiom or rule",
+                         r->name, r->line, kcol);
     }
     const char *kw = keywords[which];
     double v[4];
@@ -456,6 +463,10 @@ int lsys_read(const char *text, size_t len, const char *name, const lsys_read_op
     if (len > LSYS_FILE_MAX_BYTES)
         return lsys_fail(err, LSYS_ERR_LIMIT, "%s: %zu bytes is more than the %u bytes an L-system may have",
                          name, len, LSYS_FILE_MAX_BYTES);
+    const char *nul = memchr(text, '\0', len);
+    if (nul)
+        return lsys_fail(err, LSYS_ERR_SYNTAX, "%s: not a text file (byte %zu is a NUL); an L-system is a text file",
+                         name, (size_t)(nul - text) + 1);
     lsys_system *sys = calloc(1, sizeof *sys); /* owned here until handed to *out */
     if (!sys || !(sys->name = strdup(name))) {
         free(sys);

@@ -214,7 +214,26 @@ TEST(missing_file_is_an_io_error)
     CHECK_STR_CONTAINS(e.msg, "/nonexistent/dir/x.ls: cannot open the L-system file");
 }
 
+/* A file that is not an L-system (a password list, an image) is refused without repeating
+ * its content in the message. */
+TEST(foreign_files_are_not_quoted)
+{
+    lsys_system *s = NULL;
+    lsys_error e = {{0}};
+    warnings w = {0};
+    CHECK_INT(read_with("root:x:0:0:root:/root:/bin/bash\ndaemon:x:1:1::/usr/sbin\n", 0, &s, &e, &w),
+              LSYS_ERR_SYNTAX);
+    CHECK_STR_CONTAINS(e.msg, "t.ls:1:1: this line does not start with a keyword");
+    CHECK(!strstr(e.msg, "root") && !strstr(e.msg, "bash"));
+    const char gif[] = "GIF89a\x01\x00\x01\x00\x80\x00\x00secret";
+    lsys_read_options o = {.warn = collect, .warn_ctx = &w};
+    CHECK_INT(lsys_read(gif, sizeof gif - 1, "t.ls", &o, &s, &e), LSYS_ERR_SYNTAX);
+    CHECK_STR_CONTAINS(e.msg, "t.ls: not a text file (byte 8 is a NUL)");
+    CHECK(!strstr(e.msg, "GIF") && !strstr(e.msg, "secret"));
+    CHECK(s == NULL);
+}
+
 TEST_LIST(TEST_CASE(numeric_dialect_with_comments), TEST_CASE(keyword_dialect), TEST_CASE(keyword_defaults),
           TEST_CASE(argument_forms), TEST_CASE(unknown_symbol_is_located), TEST_CASE(header_and_keyword_errors),
           TEST_CASE(arguments_beyond_the_range_of_numbers),
-          TEST_CASE(missing_file_is_an_io_error))
+          TEST_CASE(missing_file_is_an_io_error), TEST_CASE(foreign_files_are_not_quoted))

@@ -1,9 +1,10 @@
 /* model_import.c — a model file through Assimp into one sylva mesh: the file is checked
- * (readable, a supported extension), Assimp reads it with triangulation, missing normals made,
+ * (readable, a supported extension; a PLY walked whole), Assimp reads it triangulated with
  * points and lines dropped; the triangle count over all node instances is checked against the
  * limit before the mesh is allocated at its exact size; then every node's meshes are copied
  * with the node's accumulated transform, the file's frame turned to sylva's (metres, +Z up)
- * and the caller's scale applied. Materials are made on first use (model_material.c). */
+ * and the caller's scale applied; missing normals are made from the triangles. Materials are
+ * made on first use (model_material.c). */
 #include "scene/model_import.h"
 
 #include <assimp/cimport.h>
@@ -21,6 +22,7 @@
 #include <unistd.h>
 
 #include "scene/model_material.h"
+#include "scene/ply_check.h"
 
 /* The formats read, by extension, and the up axis each states as Assimp hands it over:
  * Assimp turns COLLADA (whatever its <up_axis>) and 3DS to +Y; glTF is +Y by specification;
@@ -157,6 +159,37 @@ static int count_uses(const struct aiScene *ai, const struct aiNode *n, int dept
     return 0;
 }
 
+/* n = w / |w|; +Z and 1 when w has no length or direction. */
+static int store_unit(float n[3], const double w[3])
+{
+    double len = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    int none = !(len > 0) || !isfinite(len);
+    for (int i = 0; i < 3; i++) n[i] = none ? (float)(i == 2) : (float)(w[i] / len);
+    return none;
+}
+
+/* Normals for a mesh the file gives none (or some without direction, as STL's zero facet
+ * normals): each vertex the area-weighted mean of its triangles'
+ * normals (vertices [v0, v0 + nv), triangles [t0, t0 + nt), already in sylva's frame). Shared
+ * vertices come out smooth, unshared ones flat, as the file's indexing says. */
+static void area_weighted_normals(mesh *m, uint32_t v0, uint32_t nv, uint32_t t0, uint32_t nt)
+{
+    double *sum = calloc((size_t)nv * 3, sizeof *sum);
+    for (uint32_t t = t0; sum && t < t0 + nt; t++) {
+        const uint32_t *k = m->tri + (size_t)t * 3;
+        const float *a = m->pos + (size_t)k[0] * 3, *b = m->pos + (size_t)k[1] * 3, *c = m->pos + (size_t)k[2] * 3;
+        double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        double f[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+        for (int j = 0; j < 3; j++)
+            for (int d = 0; d < 3; d++) sum[(size_t)(k[j] - v0) * 3 + d] += f[d];
+    }
+    for (uint32_t v = 0; v < nv; v++) { /* out of memory for the sums: +Z, as for no area */
+        double zero[3] = {0, 0, 0};
+        store_unit(m->nrm + (size_t)(v0 + v) * 3, sum ? sum + (size_t)v * 3 : zero);
+    }
+    free(sum);
+}
+
 typedef struct copy_state {
     const struct aiScene *ai;
     const char *path;
@@ -170,7 +203,8 @@ static int copy_mesh(copy_state *cs, const struct aiMesh *am, const affine *xf, 
 {
     int32_t mat = model_material_id(&cs->mats, cs->s, am->mMaterialIndex, err);
     if (mat < 0) return -1;
-    /* normals: the cofactor matrix (inverse transpose up to a positive factor, sign kept) */
+    /* normals: the cofactor matrix, the inverse transpose times the determinant; a mirror
+     * (negative determinant) turns them back and swaps the winding so both still agree */
     const double (*a)[4] = xf->m;
     double cof[3][3] = {
         {a[1][1] * a[2][2] - a[1][2] * a[2][1], a[1][2] * a[2][0] - a[1][0] * a[2][2], a[1][0] * a[2][1] - a[1][1] * a[2][0]},
@@ -180,6 +214,7 @@ static int copy_mesh(copy_state *cs, const struct aiMesh *am, const affine *xf, 
     int mirrored = det < 0;
     mesh *m = cs->m;
     uint32_t v0 = m->nv;
+    int make_normals = !am->mNormals; /* or when one of the file's has no direction */
     for (unsigned v = 0; v < am->mNumVertices; v++) {
         const struct aiVector3D *p = &am->mVertices[v];
         float *dst = m->pos + (size_t)(v0 + v) * 3;
@@ -190,15 +225,13 @@ static int copy_mesh(copy_state *cs, const struct aiMesh *am, const affine *xf, 
                                 cs->path, am->mName.data, v);
             dst[i] = (float)x;
         }
-        float *n = m->nrm + (size_t)(v0 + v) * 3;
-        double w[3] = {0, 0, 1};
         if (am->mNormals) {
             const struct aiVector3D *q = &am->mNormals[v];
-            for (int i = 0; i < 3; i++) w[i] = cof[i][0] * q->x + cof[i][1] * q->y + cof[i][2] * q->z;
+            double w[3];
+            for (int i = 0; i < 3; i++)
+                w[i] = (cof[i][0] * q->x + cof[i][1] * q->y + cof[i][2] * q->z) * (mirrored ? -1 : 1);
+            make_normals |= store_unit(m->nrm + (size_t)(v0 + v) * 3, w);
         }
-        double len = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-        if (!(len > 0) || !isfinite(len)) w[0] = 0, w[1] = 0, w[2] = 1, len = 1;
-        for (int i = 0; i < 3; i++) n[i] = (float)(w[i] / len);
         float *uv = m->uv + (size_t)(v0 + v) * 2;
         uv[0] = am->mTextureCoords[0] ? am->mTextureCoords[0][v].x : 0.0f;
         uv[1] = am->mTextureCoords[0] ? am->mTextureCoords[0][v].y : 0.0f;
@@ -221,6 +254,7 @@ static int copy_mesh(copy_state *cs, const struct aiMesh *am, const affine *xf, 
     }
     m->nv += am->mNumVertices;
     m->nt += am->mNumFaces;
+    if (make_normals) area_weighted_normals(m, v0, am->mNumVertices, t0, am->mNumFaces);
     return 0;
 }
 
@@ -251,8 +285,8 @@ static const char *assimp_reason(char *buf, size_t cap)
     return buf[0] ? buf : "no reason given";
 }
 
-/* Reads the file with Assimp: triangulated, normals made where missing, points and lines
- * dropped, the data structure checked. */
+/* Reads the file with Assimp: triangulated, points and lines dropped, the data structure
+ * checked. */
 static const struct aiScene *read_with_assimp(const char *path, err_buf *err)
 {
     struct aiPropertyStore *props = aiCreatePropertyStore();
@@ -261,9 +295,7 @@ static const struct aiScene *read_with_assimp(const char *path, err_buf *err)
         return NULL;
     }
     aiSetImportPropertyInteger(props, AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    aiSetImportPropertyFloat(props, AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 60.0f);
-    unsigned flags = aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_GenSmoothNormals |
-                     aiProcess_ValidateDataStructure;
+    unsigned flags = aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure;
     const struct aiScene *ai = aiImportFileExWithProperties(path, flags, NULL, props);
     aiReleasePropertyStore(props);
     if (!ai) {
@@ -291,6 +323,7 @@ int model_import(scene *s, const char *path, const model_import_options *opt, me
                         ".obj, .gltf, .glb, .ply, .stl, .fbx, .dae and .3ds", path);
     if (access(path, R_OK) != 0)
         return err_fail(err, ERR_INPUT, "%s: cannot read the model: %s", path, strerror(errno));
+    if (!strcmp(f->ext, "ply") && ply_check(path, err)) return -1; /* Assimp hangs on a cut PLY */
 
     const struct aiScene *ai = read_with_assimp(path, err);
     if (!ai) return -1;

@@ -1,14 +1,15 @@
 /* model_import_bench.c — the speed of model_import on a large model against Assimp alone.
  *
- * Writes a binary STL of a wavy height grid (default 708 x 708 cells, two triangles each:
- * 1,002,528 triangles, 50 MB) to a fresh folder under $TMPDIR (or /tmp), then times, best of
- * K runs (default 3) each:
+ * Writes a wavy height grid (default 708 x 708 cells, two triangles each: 1,002,528
+ * triangles) as a binary STL (50 MB, no shared vertices) or a binary little-endian PLY (17 MB,
+ * shared vertices, walked whole by ply_check before Assimp reads it) to a fresh folder under
+ * $TMPDIR (or /tmp), then times, best of K runs (default 3) each:
  *   - Assimp alone: aiImportFile with no post-processing (the baseline);
  *   - model_import: the whole import into a sylva mesh (Assimp's reading with triangulation,
  *     type sorting and validation, the copy with transforms, normals, materials).
  * Prints the machine, both times, the ratio model_import / Assimp alone, the mesh's bytes per
  * triangle, and the goal (<= 2 s). The folder is removed at the end.
- * Usage: model_import_bench [--cells N] [--runs K] */
+ * Usage: model_import_bench [--cells N] [--runs K] [--ply] */
 #include <assimp/cimport.h>
 #include <assimp/scene.h>
 
@@ -62,14 +63,41 @@ static int write_grid_stl(const char *path, uint32_t cells)
     return fclose(f) == 0 ? 0 : -1;
 }
 
+static int write_grid_ply(const char *path, uint32_t cells)
+{
+    FILE *f = fopen(path, "wb");
+    if (!f) return -1;
+    uint32_t side = cells + 1;
+    fprintf(f, "ply\nformat binary_little_endian 1.0\ncomment sylva model_import_bench grid\n"
+               "element vertex %u\nproperty float x\nproperty float y\nproperty float z\n"
+               "element face %u\nproperty list uchar int vertex_indices\nend_header\n",
+            side * side, cells * cells * 2);
+    for (uint32_t j = 0; j < side; j++)
+        for (uint32_t i = 0; i < side; i++) {
+            float p[3] = {(float)i, (float)j, height(i, j)};
+            fwrite(p, sizeof p, 1, f);
+        }
+    for (uint32_t j = 0; j < cells; j++)
+        for (uint32_t i = 0; i < cells; i++) {
+            uint8_t three = 3;
+            int32_t a = (int32_t)(j * side + i), b = a + 1, c = a + (int32_t)side + 1, d = a + (int32_t)side;
+            int32_t t0[3] = {a, b, c}, t1[3] = {a, c, d};
+            fwrite(&three, 1, 1, f), fwrite(t0, sizeof t0, 1, f);
+            fwrite(&three, 1, 1, f), fwrite(t1, sizeof t1, 1, f);
+        }
+    return fclose(f) == 0 ? 0 : -1;
+}
+
 int main(int argc, char **argv)
 {
     uint32_t cells = 708, runs = 3;
+    int ply = 0;
     for (int a = 1; a < argc; a++) {
         if (!strcmp(argv[a], "--cells") && a + 1 < argc) cells = (uint32_t)atoi(argv[++a]);
         else if (!strcmp(argv[a], "--runs") && a + 1 < argc) runs = (uint32_t)atoi(argv[++a]);
+        else if (!strcmp(argv[a], "--ply")) ply = 1;
         else {
-            fprintf(stderr, "usage: model_import_bench [--cells N] [--runs K]\n");
+            fprintf(stderr, "usage: model_import_bench [--cells N] [--runs K] [--ply]\n");
             return 2;
         }
     }
@@ -85,14 +113,15 @@ int main(int argc, char **argv)
         perror("model_import_bench: mkdtemp");
         return 4;
     }
-    snprintf(path, sizeof path, "%s/grid.stl", dir);
+    snprintf(path, sizeof path, "%s/grid.%s", dir, ply ? "ply" : "stl");
     int rc = 4;
     double t0 = progress_now();
-    if (write_grid_stl(path, cells)) {
+    if (ply ? write_grid_ply(path, cells) : write_grid_stl(path, cells)) {
         fprintf(stderr, "model_import_bench: cannot write %s\n", path);
         goto done;
     }
-    printf("model: binary STL, %u triangles, written in %.2f s\n", cells * cells * 2, progress_now() - t0);
+    printf("model: binary %s, %u triangles, written in %.2f s\n", ply ? "PLY" : "STL", cells * cells * 2,
+           progress_now() - t0);
 
     double best_raw = INFINITY, best_import = INFINITY;
     uint32_t nt = 0, nv = 0;

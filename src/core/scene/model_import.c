@@ -276,10 +276,12 @@ static int copy_node(copy_state *cs, const struct aiNode *n, const affine *paren
     return 0;
 }
 
-/* Assimp's message, with anything unprintable (it may quote the file) shown as '?'. */
+/* Assimp's message, with anything unprintable (it may quote the file) shown as '?' and cut at
+ * 200 characters. */
 static const char *assimp_reason(char *buf, size_t cap)
 {
-    snprintf(buf, cap, "%s", aiGetErrorString());
+    snprintf(buf, cap < 204 ? cap : 204, "%s", aiGetErrorString());
+    if (strlen(buf) == 203) strcpy(buf + 200, "...");
     for (char *c = buf; *c; c++)
         if ((unsigned char)*c < 0x20 || (unsigned char)*c >= 0x7f) *c = '?';
     return buf[0] ? buf : "no reason given";

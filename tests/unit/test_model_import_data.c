@@ -1,13 +1,14 @@
 /* test_model_import_data.c — every model of the shared data set (models/README.md) read
  * through model_import: triangle counts (instances counted), size and orientation in metres
  * with +Z up after the file's unit and up axis, materials and textures (embedded, beside the
- * model, glTF MASK cutoffs), and clear errors for a truncated copy, a missing texture and an
- * unsupported format. Without the shared data the test reports itself skipped (status 77). */
+ * model, glTF MASK cutoffs; one small render shows the embedded texture), and clear errors for
+ * a truncated copy, a missing texture and an unsupported format. Without the shared data the test reports itself skipped (status 77). */
 #include <stdint.h>
 #include <sys/stat.h>
 
 #include "harness.h"
 #include "work_dir.h"
+#include "render/render.h"
 #include "scene/model_import.h"
 #include "scene/scene.h"
 
@@ -259,6 +260,57 @@ TEST(gltf_vertex_colours_default_material)
     unload(&l);
 }
 
+/* Distinct albedo colours (to 1/64) among the pixels that see the box, in a small top-down
+ * render of the scene. */
+static int distinct_albedos(const scene *s)
+{
+    render_options ro = {.threads = 1, .quiet = 1, .spp = 1, .width = 24, .height = 24};
+    err_buf err = {{0}};
+    film *f = render_scene(s, &ro, NULL, &err);
+    CHECK(f != NULL);
+    if (!f) {
+        fprintf(stderr, "%s\n", err.msg);
+        return -1;
+    }
+    uint32_t seen[24 * 24];
+    int n = 0, hits = 0;
+    for (uint32_t i = 0; i < f->width * f->height; i++) {
+        if (f->coverage[i] < 0.99f) continue;
+        hits++;
+        uint32_t key = 0;
+        for (int c = 0; c < 3; c++) key = key * 64 + (uint32_t)lrintf(f->albedo[i * 3 + c] * 63.0f);
+        int known = 0;
+        for (int k = 0; k < n; k++) known |= seen[k] == key;
+        if (!known) seen[n++] = key;
+    }
+    CHECK(hits > 100); /* the box fills the middle of the view */
+    film_free(f);
+    return n;
+}
+
+/* Image test: the embedded texture reaches the renderer. Seen from above, the textured box
+ * shows many albedo colours; with its material's texture taken away, one. */
+TEST(gltf_embedded_texture_renders)
+{
+    loaded l;
+    if (load("gltf-edge-cases/BoxTextured/BoxTextured.glb", 0, &l)) return;
+    err_buf err = {{0}};
+    l.s->image = (image_settings){.width = 24, .height = 24, .spp = 1, .seed = 1, .max_depth = 1};
+    l.s->camera = (camera_settings){.position = {0, 0, 3}, .has_look_at = 1, .look_at = {0, 0, 0},
+                                    .up = {0, 1, 0}, .fov_deg = 30};
+    l.s->sky = (sky_settings){.model = SKY_CONSTANT, .scale = 1, .color = {1, 1, 1}, .ambient = {1, 1, 1}};
+    int32_t mat = l.m->mat[0];
+    CHECK_INT(scene_add_object(l.s, "box", l.m, &err), 0);
+    l.m = NULL; /* the scene owns it now */
+    int textured = distinct_albedos(l.s);
+    l.s->materials[mat].texture = -1;
+    int plain = distinct_albedos(l.s);
+    fprintf(stderr, "albedo colours seen: %d textured, %d plain\n", textured, plain);
+    CHECK(textured >= 4);
+    CHECK_INT(plain, 1);
+    unload(&l);
+}
+
 /* Copies the first `keep` bytes (all when 0) of src into the work folder as name. */
 static const char *copy_prefix(const char *src, const char *name, long keep)
 {
@@ -356,7 +408,8 @@ TEST(triangle_limit)
 TEST_LIST(TEST_CASE(stl_tower), TEST_CASE(stl_blade), TEST_CASE(collada_radio_tower),
           TEST_CASE(collada_post_office), TEST_CASE(collada_truss_bridge_node_transform),
           TEST_CASE(gltf_simple_pole), TEST_CASE(gltf_building_no_indices), TEST_CASE(obj_cloverleaf),
-          TEST_CASE(gltf_embedded_texture), TEST_CASE(gltf_alpha_mask_cutoffs),
+          TEST_CASE(gltf_embedded_texture), TEST_CASE(gltf_embedded_texture_renders),
+          TEST_CASE(gltf_alpha_mask_cutoffs),
           TEST_CASE(gltf_instanced_mesh), TEST_CASE(gltf_external_buffer_and_textures),
           TEST_CASE(gltf_vertex_colours_default_material), TEST_CASE(truncated_files),
           TEST_CASE(missing_texture), TEST_CASE(unsupported_format_and_missing_file),

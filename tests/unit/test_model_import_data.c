@@ -2,7 +2,8 @@
  * through model_import: triangle counts (instances counted), size and orientation in metres
  * with +Z up after the file's unit and up axis, materials and textures (embedded, beside the
  * model, glTF MASK cutoffs; one small render shows the embedded texture), and clear errors for
- * a truncated copy, a missing texture and an unsupported format. Without the shared data the test reports itself skipped (status 77). */
+ * a truncated copy, a missing texture and an unsupported format. Without the shared data the
+ * test reports itself skipped (status 77). */
 #include <stdint.h>
 #include <sys/stat.h>
 

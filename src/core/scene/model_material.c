@@ -223,8 +223,11 @@ int32_t model_material_id(model_materials *mm, scene *s, unsigned index, err_buf
     const struct aiMaterial *am = mm->ai->mMaterials[index];
 
     struct aiString ai_name = {0};
-    const char *mat_name = aiGetMaterialString(am, AI_MATKEY_NAME, &ai_name) == aiReturn_SUCCESS &&
-                                   ai_name.length ? ai_name.data : "unnamed";
+    char mat_name[256]; /* the file's name for it, unprintable bytes shown as '?' */
+    snprintf(mat_name, sizeof mat_name, "%s", aiGetMaterialString(am, AI_MATKEY_NAME, &ai_name) == aiReturn_SUCCESS &&
+                                                  ai_name.length ? ai_name.data : "unnamed");
+    for (char *c = mat_name; *c; c++)
+        if ((unsigned char)*c < 0x20 || (unsigned char)*c == 0x7f) *c = '?';
     struct aiColor4D colour = {1, 1, 1, 1};
     if (aiGetMaterialColor(am, AI_MATKEY_BASE_COLOR, &colour) != aiReturn_SUCCESS &&
         aiGetMaterialColor(am, AI_MATKEY_COLOR_DIFFUSE, &colour) != aiReturn_SUCCESS)

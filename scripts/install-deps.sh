@@ -11,6 +11,7 @@ packages=(
   libyaml-dev            # scene files
   libgdal-dev            # DTM input (terrain plugin)
   povray                 # cross-check renders
+  libassimp-dev          # 3-D model import (OBJ, glTF, PLY, STL, FBX, COLLADA, 3DS)
 )
 
 missing=()

@@ -4,6 +4,7 @@
 #ifndef SYLVA_IMAGE_IO_H
 #define SYLVA_IMAGE_IO_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "util/err.h"
@@ -22,6 +23,11 @@ typedef struct image_f32 {
  * (8- and 16-bit values scaled to [0, 1], 32-bit integers such as EXR id channels kept by
  * value, alpha unassociated, no colour conversion). Returns 0 or -1 with err set. */
 int image_read(const char *path, image_f32 *out, err_buf *err);
+/* The same for an image held in memory (a texture embedded in a model file): `format` is the
+ * file extension that names its encoding ("png", "jpg"), `name` names it in messages. The
+ * bytes stay the caller's. */
+int image_read_memory(const void *bytes, size_t size, const char *format, const char *name,
+                      image_f32 *out, err_buf *err);
 void image_free(image_f32 *img); /* accepts a zeroed image */
 
 /* Writes 8-bit pixels (channels 1..4) to path; the format follows the extension. */

@@ -46,16 +46,24 @@ int read_integer_channel(OIIO::ImageInput *in, int c, image_f32 *img, err_buf *e
     return 0;
 }
 
-int read_into(const char *path, image_f32 *img, err_buf *err)
+// Reads the file `path`, or the bytes behind `proxy` when it is not NULL (OpenImageIO then
+// takes the format from the extension of `open_name`); `path` names the image in messages.
+int read_into(const char *path, const char *open_name, OIIO::Filesystem::IOProxy *proxy,
+              image_f32 *img, err_buf *err)
 {
-    // A FIFO or device would block OpenImageIO's format detection or feed it without end.
-    const std::string label = std::string(path) + ": cannot read the image";
-    if (file_check_regular(path, label.c_str(), err)) return -1;
-    if (access(path, R_OK) != 0) // OpenImageIO would only say it could not open the file
-        return err_set(err, "%s: cannot read the image: %s", path, std::strerror(errno));
+    if (!proxy) {
+        // A FIFO or device would block OpenImageIO's format detection or feed it without end.
+        const std::string label = std::string(path) + ": cannot read the image";
+        if (file_check_regular(path, label.c_str(), err)) return -1;
+        if (access(path, R_OK) != 0) // OpenImageIO would only say it could not open the file
+            return err_set(err, "%s: cannot read the image: %s", path, std::strerror(errno));
+    }
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
-    auto in = OIIO::ImageInput::open(path, &config);
+    // The readers take the proxy from the configuration when they open; passing it only as
+    // the argument leaves them looking for a file of that name.
+    if (proxy) config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    auto in = OIIO::ImageInput::open(open_name, &config, proxy);
     if (!in) {
         // OpenImageIO's reasons quote the file's first bytes ("bad magic number 0x726f"), which
         // may belong to any file a scene names; the sentence says what is wrong without them.
@@ -133,15 +141,22 @@ int write_u8(const char *path, atomic_file *tmp, uint32_t width, uint32_t height
     return 0;
 }
 
-} // namespace
-
-extern "C" int image_read(const char *path, image_f32 *out, err_buf *err)
+// read_into with whatever OpenImageIO throws turned into a sentence; *out is set only on
+// success. bytes == NULL reads the file `path`; otherwise the image is the `size` bytes in
+// memory, encoded as `format`, and `path` only names it.
+int read_guarded(const char *path, const void *bytes, size_t size, const char *format,
+                 image_f32 *out, err_buf *err)
 {
-    if (!path || !out) return err_set(err, "image_read needs a path and an output image");
     image_f32 img{};
     int status;
     try {
-        status = read_into(path, &img, err);
+        if (bytes) {
+            OIIO::Filesystem::IOMemReader proxy(bytes, size);
+            std::string open_name = std::string("memory.") + format;
+            status = read_into(path, open_name.c_str(), &proxy, &img, err);
+        } else {
+            status = read_into(path, path, nullptr, &img, err);
+        }
     } catch (const std::exception &e) {
         status = err_set(err, "%s: cannot read the image: %s", path, e.what());
     } catch (...) {
@@ -153,6 +168,22 @@ extern "C" int image_read(const char *path, image_f32 *out, err_buf *err)
     }
     *out = img;
     return 0;
+}
+
+} // namespace
+
+extern "C" int image_read(const char *path, image_f32 *out, err_buf *err)
+{
+    if (!path || !out) return err_set(err, "image_read needs a path and an output image");
+    return read_guarded(path, nullptr, 0, nullptr, out, err);
+}
+
+extern "C" int image_read_memory(const void *bytes, size_t size, const char *format,
+                                 const char *name, image_f32 *out, err_buf *err)
+{
+    if (!bytes || !size || !format || !name || !out)
+        return err_set(err, "image_read_memory needs bytes, a format and a name");
+    return read_guarded(name, bytes, size, format, out, err);
 }
 
 extern "C" void image_free(image_f32 *img)

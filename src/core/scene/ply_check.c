@@ -1,0 +1,261 @@
+/* ply_check.c — a PLY file's header parsed and its body walked, to refuse a truncated or
+ * malformed file with a sentence before Assimp sees it (see ply_check.h). The format: a header
+ * of lines "ply", "format ascii|binary_little_endian|binary_big_endian 1.0", "element NAME
+ * COUNT", "property TYPE NAME" or "property list COUNT_TYPE ITEM_TYPE NAME", "comment ...",
+ * "obj_info ...", ending with "end_header"; then each element's COUNT items, each holding its
+ * properties in order. */
+#include "scene/ply_check.h"
+
+#include <errno.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PLY_MAX_ELEMENTS 64
+#define PLY_MAX_PROPERTIES 64
+#define PLY_MAX_BYTES ((uint64_t)1 << 34) /* 16 GiB: far above the triangle limit's files */
+
+typedef struct ply_property {
+    int list;                 /* 1: a list */
+    int size, count_size;     /* bytes of a value; of the list's count */
+    int count_signed;
+} ply_property;
+
+typedef struct ply_element {
+    char name[64];
+    uint64_t count;
+    ply_property props[PLY_MAX_PROPERTIES];
+    int n_props;
+} ply_element;
+
+typedef enum ply_format { PLY_ASCII, PLY_BINARY_LE, PLY_BINARY_BE } ply_format;
+
+/* Bytes of a PLY scalar type name, 0 for an unknown name; *is_signed for the integer types. */
+static int type_size(const char *t, int *is_signed)
+{
+    static const struct { const char *name; int size, is_signed; } types[] = {
+        {"char", 1, 1},  {"int8", 1, 1},   {"uchar", 1, 0},  {"uint8", 1, 0},  {"short", 2, 1},
+        {"int16", 2, 1}, {"ushort", 2, 0}, {"uint16", 2, 0}, {"int", 4, 1},    {"int32", 4, 1},
+        {"uint", 4, 0},  {"uint32", 4, 0}, {"float", 4, 1},  {"float32", 4, 1}, {"double", 8, 1},
+        {"float64", 8, 1}};
+    for (size_t i = 0; i < sizeof types / sizeof types[0]; i++)
+        if (!strcmp(t, types[i].name)) {
+            if (is_signed) *is_signed = types[i].is_signed;
+            return types[i].size;
+        }
+    return 0;
+}
+
+typedef struct ply_header {
+    ply_format format;
+    ply_element elements[PLY_MAX_ELEMENTS];
+    int n_elements;
+    size_t body;     /* offset of the body */
+    uint32_t line;   /* line of the body's start */
+} ply_header;
+
+static int bad(err_buf *err, const char *path, uint32_t line, const char *what)
+{
+    return err_at(err, ERR_INPUT, path, line, 1, "%s", what);
+}
+
+/* Parses the header in data[0, size). */
+static int parse_header(const char *path, const char *data, size_t size, ply_header *h, err_buf *err)
+{
+    size_t at = 0;
+    uint32_t line = 0;
+    int have_format = 0;
+    h->n_elements = 0;
+    for (;;) {
+        line++;
+        const char *nl = memchr(data + at, '\n', size - at);
+        if (!nl)
+            return bad(err, path, line, "the PLY header has no end_header line (the file is cut short "
+                       "or not a PLY file)");
+        char text[256];
+        size_t len = (size_t)(nl - (data + at));
+        if (len && data[at + len - 1] == '\r') len--;
+        if (len >= sizeof text) return bad(err, path, line, "a PLY header line is longer than 255 characters");
+        memcpy(text, data + at, len);
+        text[len] = '\0';
+        at = (size_t)(nl - data) + 1;
+        char w[5][64] = {{0}};
+        int n = sscanf(text, "%63s %63s %63s %63s %63s", w[0], w[1], w[2], w[3], w[4]);
+        if (line == 1) {
+            if (n != 1 || strcmp(w[0], "ply")) return bad(err, path, line, "a PLY file starts with the line 'ply'");
+            continue;
+        }
+        if (n <= 0 || !strcmp(w[0], "comment") || !strcmp(w[0], "obj_info")) continue;
+        if (!strcmp(w[0], "end_header")) break;
+        if (!strcmp(w[0], "format")) {
+            if (n != 3 || strcmp(w[2], "1.0"))
+                return bad(err, path, line, "the format line reads 'format ascii|binary_little_endian|"
+                           "binary_big_endian 1.0'");
+            if (!strcmp(w[1], "ascii")) h->format = PLY_ASCII;
+            else if (!strcmp(w[1], "binary_little_endian")) h->format = PLY_BINARY_LE;
+            else if (!strcmp(w[1], "binary_big_endian")) h->format = PLY_BINARY_BE;
+            else return bad(err, path, line, "unknown PLY format; ascii, binary_little_endian or "
+                            "binary_big_endian is valid");
+            have_format = 1;
+        } else if (!strcmp(w[0], "element")) {
+            char *end;
+            errno = 0;
+            unsigned long long count = n == 3 ? strtoull(w[2], &end, 10) : 0;
+            if (n != 3 || *end || errno || w[2][0] == '-')
+                return bad(err, path, line, "an element line reads 'element NAME COUNT'");
+            if (h->n_elements == PLY_MAX_ELEMENTS)
+                return bad(err, path, line, "more than 64 PLY elements");
+            ply_element *e = &h->elements[h->n_elements++];
+            memset(e, 0, sizeof *e);
+            snprintf(e->name, sizeof e->name, "%s", w[1]);
+            e->count = count;
+        } else if (!strcmp(w[0], "property")) {
+            if (!h->n_elements) return bad(err, path, line, "a property comes before any element");
+            ply_element *e = &h->elements[h->n_elements - 1];
+            if (e->n_props == PLY_MAX_PROPERTIES)
+                return bad(err, path, line, "more than 64 properties in one PLY element");
+            ply_property *p = &e->props[e->n_props++];
+            memset(p, 0, sizeof *p);
+            if (!strcmp(w[1], "list")) {
+                p->list = 1;
+                p->count_size = n == 5 ? type_size(w[2], &p->count_signed) : 0;
+                p->size = n == 5 ? type_size(w[3], NULL) : 0;
+                if (!p->count_size || !p->size || !strncmp(w[2], "float", 5) || !strcmp(w[2], "double"))
+                    return bad(err, path, line, "a list property reads 'property list INTEGER_TYPE TYPE "
+                               "NAME' with PLY type names (uchar, int, float, ...)");
+            } else {
+                p->size = n == 3 ? type_size(w[1], NULL) : 0;
+                if (!p->size)
+                    return bad(err, path, line, "a property reads 'property TYPE NAME' with a PLY type "
+                               "name (char, uchar, short, ushort, int, uint, float, double)");
+            }
+        } else {
+            return bad(err, path, line, "unknown PLY header line; ply, format, element, property, "
+                       "comment, obj_info and end_header are valid");
+        }
+    }
+    if (!have_format) return bad(err, path, line, "the PLY header has no format line");
+    h->body = at;
+    h->line = line + 1;
+    return 0;
+}
+
+/* A binary list count of `size` bytes at p; -1 when it is negative. */
+static int64_t binary_count(const unsigned char *p, int size, int is_signed, int big)
+{
+    uint64_t v = 0;
+    for (int i = 0; i < size; i++) v |= (uint64_t)p[big ? size - 1 - i : i] << (8 * i);
+    if (is_signed && size < 8 && (v >> (8 * size - 1)) & 1) return -1;
+    return (int64_t)v;
+}
+
+static int walk_binary(const char *path, const ply_header *h, const unsigned char *d, size_t size,
+                       err_buf *err)
+{
+    size_t at = h->body;
+    int big = h->format == PLY_BINARY_BE;
+    for (int e = 0; e < h->n_elements; e++) {
+        const ply_element *el = &h->elements[e];
+        for (uint64_t i = 0; i < el->count; i++) {
+            for (int k = 0; k < el->n_props; k++) {
+                const ply_property *p = &el->props[k];
+                uint64_t need = p->list ? (uint64_t)p->count_size : (uint64_t)p->size;
+                if (need > size - at) goto short_body;
+                if (p->list) {
+                    int64_t n = binary_count(d + at, p->count_size, p->count_signed, big);
+                    at += (size_t)p->count_size;
+                    if (n < 0)
+                        return err_fail(err, ERR_INPUT, "%s: element '%s' item %llu has a negative list "
+                                        "length", path, el->name, (unsigned long long)i);
+                    if ((uint64_t)n > (size - at) / (uint64_t)p->size) goto short_body;
+                    at += (size_t)n * (size_t)p->size;
+                } else {
+                    at += (size_t)p->size;
+                }
+            }
+            continue;
+        short_body:
+            return err_fail(err, ERR_INPUT, "%s: the file ends inside element '%s' (item %llu of %llu); "
+                            "the file is cut short", path, el->name, (unsigned long long)i + 1,
+                            (unsigned long long)el->count);
+        }
+    }
+    return 0;
+}
+
+/* The next whitespace-separated token at *at as a number; -1 at the end of the data or when it
+ * is not a number. *line follows the newlines passed. */
+static int ascii_number(const char *d, size_t size, size_t *at, uint32_t *line, double *v)
+{
+    while (*at < size && (d[*at] == ' ' || d[*at] == '\t' || d[*at] == '\r' || d[*at] == '\n'))
+        *line += d[(*at)++] == '\n';
+    if (*at >= size) return -1;
+    char tok[64];
+    size_t n = 0;
+    while (*at < size && !(d[*at] == ' ' || d[*at] == '\t' || d[*at] == '\r' || d[*at] == '\n')) {
+        if (n + 1 < sizeof tok) tok[n++] = d[*at];
+        (*at)++;
+    }
+    tok[n] = '\0';
+    char *end;
+    *v = strtod(tok, &end);
+    return *end || end == tok ? -2 : 0;
+}
+
+static int walk_ascii(const char *path, const ply_header *h, const char *d, size_t size, err_buf *err)
+{
+    size_t at = h->body;
+    uint32_t line = h->line;
+    for (int e = 0; e < h->n_elements; e++) {
+        const ply_element *el = &h->elements[e];
+        for (uint64_t i = 0; i < el->count; i++) {
+            for (int k = 0; k < el->n_props; k++) {
+                const ply_property *p = &el->props[k];
+                double v;
+                int rc = ascii_number(d, size, &at, &line, &v);
+                double n = p->list ? v : 0;
+                if (!rc && p->list && (n < 0 || n != (double)(uint64_t)n || n > 1e9)) rc = -2;
+                for (uint64_t j = 0; !rc && j < (uint64_t)n; j++) rc = ascii_number(d, size, &at, &line, &v);
+                if (rc == -1)
+                    return err_at(err, ERR_INPUT, path, line, 1, "the file ends inside element '%s' (item "
+                                  "%llu of %llu); the file is cut short", el->name,
+                                  (unsigned long long)i + 1, (unsigned long long)el->count);
+                if (rc)
+                    return err_at(err, ERR_INPUT, path, line, 1, "element '%s' item %llu holds something "
+                                  "that is not a number%s", el->name, (unsigned long long)i + 1,
+                                  p->list ? " (or a list length that is not a whole number)" : "");
+            }
+        }
+    }
+    return 0;
+}
+
+int ply_check(const char *path, err_buf *err)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return err_fail(err, ERR_INPUT, "%s: cannot read the model: %s", path, strerror(errno));
+    char *data = NULL;
+    int rc = -1;
+    long size = fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
+    if (size < 0 || fseek(f, 0, SEEK_SET) != 0) {
+        err_fail(err, ERR_INPUT, "%s: cannot read the model: %s", path, strerror(errno));
+    } else if ((uint64_t)size > PLY_MAX_BYTES) {
+        err_fail(err, ERR_LIMIT, "%s: the PLY file is %ld bytes; at most %llu are read", path, size,
+                 (unsigned long long)PLY_MAX_BYTES);
+    } else if (!(data = malloc((size_t)size + 1))) {
+        err_nomem(err, "%s: out of memory reading %ld bytes", path, size);
+    } else if (fread(data, 1, (size_t)size, f) != (size_t)size) {
+        err_fail(err, ERR_INPUT, "%s: cannot read the model: a read error", path);
+    } else {
+        ply_header *h = malloc(sizeof *h);
+        if (!h) err_nomem(err, "%s: out of memory for the PLY header", path);
+        else if (!parse_header(path, data, (size_t)size, h, err))
+            rc = h->format == PLY_ASCII ? walk_ascii(path, h, data, (size_t)size, err)
+                                        : walk_binary(path, h, (const unsigned char *)data, (size_t)size, err);
+        free(h);
+    }
+    free(data);
+    fclose(f);
+    return rc;
+}

@@ -1,0 +1,360 @@
+/* test_model_import.c — model_import on small files written by the test, one per format the
+ * shared data set lacks (PLY, binary STL, 3DS, FBX) and for the cases it does not show: the
+ * same tetrahedron, 1 x 2 x 3 units along x, y, z, must come out 1 x 2 x 3 m with +Z up from
+ * every Z-up file, turned from Y-up files, scaled by the file's unit and the caller's scale; an
+ * OBJ's points and lines are dropped and its MTL texture read; a mirroring node keeps the
+ * triangles facing the way their normals do; bad options and files without triangles give
+ * clear errors. */
+#include <stdint.h>
+
+#include "harness.h"
+#include "work_dir.h"
+#include "io/image_io.h"
+#include "geometry/cutout.h"
+#include "scene/model_import.h"
+#include "scene/scene.h"
+
+static const float tet_pos[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 2, 0}, {0, 0, 3}};
+static const uint16_t tet_tri[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}; /* outward */
+
+static const char *write_text(const char *name, const char *text)
+{
+    const char *path = work_path(name);
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (f) fputs(text, f), fclose(f);
+    return path;
+}
+
+/* The file as bytes: n bytes from p appended to the open file. */
+static void put(FILE *f, const void *p, size_t n) { fwrite(p, 1, n, f); }
+
+static const char *write_binary_stl(void)
+{
+    const char *path = work_path("tet.stl");
+    FILE *f = fopen(path, "wb");
+    CHECK(f != NULL);
+    if (!f) return path;
+    char header[80] = "sylva test tetrahedron";
+    uint32_t n = 4;
+    put(f, header, sizeof header), put(f, &n, 4);
+    for (int t = 0; t < 4; t++) {
+        float zero[3] = {0, 0, 0}; /* no facet normal: the reader makes one */
+        uint16_t attr = 0;
+        put(f, zero, sizeof zero);
+        for (int k = 0; k < 3; k++) put(f, tet_pos[tet_tri[t][k]], 12);
+        put(f, &attr, 2);
+    }
+    fclose(f);
+    return path;
+}
+
+/* A 3DS chunk header: id and length including the header. */
+static void chunk(FILE *f, uint16_t id, uint32_t body)
+{
+    uint32_t len = body + 6;
+    put(f, &id, 2), put(f, &len, 4);
+}
+
+static const char *write_3ds(void)
+{
+    const char *path = work_path("tet.3ds");
+    FILE *f = fopen(path, "wb");
+    CHECK(f != NULL);
+    if (!f) return path;
+    const uint32_t verts = 2 + 4 * 12, faces = 2 + 4 * 8, trimesh = 6 + verts + 6 + faces;
+    const uint32_t named = 4 + 6 + trimesh, version = 4;
+    chunk(f, 0x4D4D, 6 + version + 6 + 6 + named);
+    chunk(f, 0x0002, version);
+    uint32_t v3 = 3;
+    put(f, &v3, 4);
+    chunk(f, 0x3D3D, 6 + named);
+    chunk(f, 0x4000, named);
+    put(f, "tet", 4);
+    chunk(f, 0x4100, trimesh);
+    chunk(f, 0x4110, verts);
+    uint16_t n = 4;
+    put(f, &n, 2);
+    put(f, tet_pos, sizeof tet_pos);
+    chunk(f, 0x4120, faces);
+    put(f, &n, 2);
+    for (int t = 0; t < 4; t++) {
+        uint16_t flags = 0;
+        put(f, tet_tri[t], 6), put(f, &flags, 2);
+    }
+    fclose(f);
+    return path;
+}
+
+/* An ASCII FBX 7.4 with the given up axis (1: Y, 2: Z) and centimetres per unit. */
+static const char *write_fbx(const char *name, int up_axis, double cm_per_unit)
+{
+    char text[2048];
+    snprintf(text, sizeof text,
+             "; FBX 7.4.0 project file\n"
+             "FBXHeaderExtension:  {\n\tFBXHeaderVersion: 1003\n\tFBXVersion: 7400\n}\n"
+             "GlobalSettings:  {\n\tVersion: 1000\n\tProperties70:  {\n"
+             "\t\tP: \"UpAxis\", \"int\", \"Integer\", \"\",%d\n"
+             "\t\tP: \"UpAxisSign\", \"int\", \"Integer\", \"\",1\n"
+             "\t\tP: \"UnitScaleFactor\", \"double\", \"Number\", \"\",%g\n\t}\n}\n"
+             "Objects:  {\n\tGeometry: 1000, \"Geometry::tet\", \"Mesh\" {\n"
+             "\t\tVertices: *12 {\n\t\t\ta: 0,0,0,1,0,0,0,2,0,0,0,3\n\t\t}\n"
+             "\t\tPolygonVertexIndex: *12 {\n\t\t\ta: 0,2,-2,0,1,-4,0,3,-3,1,2,-4\n\t\t}\n"
+             "\t\tGeometryVersion: 124\n\t}\n"
+             "\tModel: 2000, \"Model::tet\", \"Mesh\" {\n\t\tVersion: 232\n\t}\n}\n"
+             "Connections:  {\n\tC: \"OO\",2000,0\n\tC: \"OO\",1000,2000\n}\n",
+             up_axis, cm_per_unit);
+    return write_text(name, text);
+}
+
+static const char *ply_text =
+    "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+    "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n"
+    "0 0 0\n1 0 0\n0 2 0\n0 0 3\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+
+/* Imports path; the test fails when it does not load. */
+static mesh *load(scene *s, const char *path, double scale, model_up up, model_import_info *info)
+{
+    err_buf err = {{0}};
+    model_import_options o = {.scale = scale, .up = up};
+    mesh *m = NULL;
+    int rc = model_import(s, path, &o, &m, info, &err);
+    CHECK_INT(rc, 0);
+    if (rc) fprintf(stderr, "%s\n", err.msg);
+    return m;
+}
+
+/* The mesh's extent along x, y, z. */
+static void check_extent(const mesh *m, double x, double y, double z)
+{
+    float lo[3], hi[3];
+    mesh_bounds(m, lo, hi);
+    CHECK_NEAR(hi[0] - lo[0], x, 1e-5);
+    CHECK_NEAR(hi[1] - lo[1], y, 1e-5);
+    CHECK_NEAR(hi[2] - lo[2], z, 1e-5);
+}
+
+/* The mesh is one convex body (the tetrahedron, moved and turned): every triangle's winding
+ * faces away from the body's centre, and every vertex normal is unit length and points away
+ * from it too. */
+static void check_outward(const mesh *m)
+{
+    double c[3] = {0, 0, 0};
+    for (uint32_t v = 0; v < m->nv; v++)
+        for (int d = 0; d < 3; d++) c[d] += m->pos[v * 3 + d] / m->nv;
+    int bad = 0;
+    for (uint32_t t = 0; t < m->nt; t++) {
+        const uint32_t *k = m->tri + t * 3;
+        const float *a = m->pos + k[0] * 3, *b = m->pos + k[1] * 3, *p = m->pos + k[2] * 3;
+        double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
+        double g[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+        double out = 0;
+        for (int d = 0; d < 3; d++) out += g[d] * ((a[d] + b[d] + p[d]) / 3 - c[d]);
+        bad += out <= 0;
+    }
+    for (uint32_t v = 0; v < m->nv; v++) {
+        const float *n = m->nrm + v * 3, *p = m->pos + v * 3;
+        bad += n[0] * (p[0] - c[0]) + n[1] * (p[1] - c[1]) + n[2] * (p[2] - c[2]) <= 0;
+        bad += fabs(sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) - 1.0) > 1e-5;
+    }
+    CHECK_INT(bad, 0);
+}
+
+TEST(z_up_formats_keep_their_axes)
+{
+    for (int i = 0; i < 4; i++) {
+        char path[1200]; /* work_path's buffer is reused by the next call */
+        snprintf(path, sizeof path, "%s",
+                 i == 0 ? write_binary_stl() : i == 1 ? write_text("tet.ply", ply_text)
+                 : i == 2 ? write_3ds() : write_fbx("metres.fbx", 2, 100.0));
+        int before = harness_failures;
+        scene *s = scene_new();
+        mesh *m = load(s, path, 0, MODEL_UP_FILE, NULL);
+        if (m) {
+            CHECK_INT(m->nt, 4);
+            check_extent(m, 1, 2, 3);
+            check_outward(m);
+        }
+        if (harness_failures > before) fprintf(stderr, "  (in %s)\n", path);
+        mesh_free(m);
+        scene_free(s);
+    }
+}
+
+/* A Y-up PLY (the caller says so) and a Y-up FBX in centimetres: file y becomes +z, file z
+ * becomes -y. */
+TEST(y_up_files_are_turned)
+{
+    scene *s = scene_new();
+    mesh *m = load(s, write_text("tet-y.ply", ply_text), 0, MODEL_UP_Y, NULL);
+    if (m) check_extent(m, 1, 3, 2), check_outward(m);
+    mesh_free(m);
+    m = load(s, write_fbx("centimetres.fbx", 1, 1.0), 0, MODEL_UP_FILE, NULL);
+    if (m) check_extent(m, 0.01, 0.03, 0.02), check_outward(m);
+    mesh_free(m);
+    scene_free(s);
+}
+
+/* Points and lines are dropped; the MTL's texture is read beside the OBJ, its alpha asks for
+ * the mask; the caller's scale applies; missing normals are made. */
+TEST(obj_with_mtl_texture_points_lines)
+{
+    uint8_t px[2 * 2 * 4] = {255, 0, 0, 255, 0, 255, 0, 0, 0, 0, 255, 255, 255, 255, 255, 128};
+    err_buf err = {{0}};
+    CHECK_INT(image_write_u8(work_path("leaf.png"), 2, 2, 4, px, &err), 0);
+    write_text("tet.mtl", "newmtl Bark\nKd 0.5 0.25 0.125\nmap_Kd leaf.png\n");
+    const char *obj = write_text("tet.obj",
+                                 "mtllib tet.mtl\nv 0 0 0\nv 1 0 0\nv 0 2 0\nv 0 0 3\n"
+                                 "vt 0 0\nvt 1 0\nvt 0 1\nusemtl Bark\n"
+                                 "f 1/1 3/3 2/2\nf 1/1 2/2 4/3\nf 1/1 4/3 3/3\nf 2/2 3/3 4/1\n"
+                                 "l 1 2\np 3\n");
+    scene *s = scene_new();
+    model_import_info info;
+    mesh *m = load(s, obj, 2.0, MODEL_UP_FILE, &info);
+    if (m) {
+        CHECK_INT(m->nt, 4);
+        check_extent(m, 2, 4, 6);
+        check_outward(m);
+        CHECK_INT(info.materials, 1);
+        CHECK_INT(info.textures, 1);
+        const material *mat = &s->materials[m->mat[0]];
+        CHECK_STR_CONTAINS(mat->name, "tet.obj:Bark");
+        CHECK_NEAR(mat->albedo.y, 0.25, 1e-6);
+        CHECK(mat->texture >= 0);
+        CHECK(cutout_material(s, mat));
+    }
+    mesh_free(m);
+    scene_free(s);
+}
+
+static void base64(const uint8_t *in, size_t n, char *out)
+{
+    static const char tab[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    size_t o = 0;
+    for (size_t i = 0; i < n; i += 3) {
+        uint32_t v = (uint32_t)in[i] << 16 | (i + 1 < n ? (uint32_t)in[i + 1] << 8 : 0) | (i + 2 < n ? in[i + 2] : 0);
+        out[o++] = tab[v >> 18 & 63], out[o++] = tab[v >> 12 & 63];
+        out[o++] = i + 1 < n ? tab[v >> 6 & 63] : '=';
+        out[o++] = i + 2 < n ? tab[v & 63] : '=';
+    }
+    out[o] = '\0';
+}
+
+/* A glTF whose node mirrors x (scale -1, 1, 1) under a parent lifted 5 units: the triangles
+ * must still face the way their normals point, and glTF's +Y must become +Z. */
+static const char *write_mirrored_gltf(void)
+{
+    uint8_t buf[48 + 24];
+    memcpy(buf, tet_pos, 48);
+    memcpy(buf + 48, tet_tri, 24);
+    char b64[200], text[2048];
+    base64(buf, sizeof buf, b64);
+    snprintf(text, sizeof text,
+             "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[0]}],"
+             "\"nodes\":[{\"translation\":[0,5,0],\"children\":[1]},{\"mesh\":0,\"scale\":[-1,1,1]}],"
+             "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":1}]}],"
+             "\"buffers\":[{\"byteLength\":72,\"uri\":\"data:application/octet-stream;base64,%s\"}],"
+             "\"bufferViews\":[{\"buffer\":0,\"byteLength\":48},{\"buffer\":0,\"byteOffset\":48,\"byteLength\":24}],"
+             "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":4,\"type\":\"VEC3\","
+             "\"min\":[0,0,0],\"max\":[1,2,3]},{\"bufferView\":1,\"componentType\":5123,\"count\":12,"
+             "\"type\":\"SCALAR\"}]}",
+             b64);
+    return write_text("mirrored.gltf", text);
+}
+
+TEST(gltf_mirrored_node_keeps_winding)
+{
+    scene *s = scene_new();
+    mesh *m = load(s, write_mirrored_gltf(), 0, MODEL_UP_FILE, NULL);
+    if (m) {
+        CHECK_INT(m->nt, 4);
+        float lo[3], hi[3];
+        mesh_bounds(m, lo, hi);
+        CHECK_NEAR(lo[0], -1, 1e-6); /* mirrored */
+        CHECK_NEAR(lo[2], 5, 1e-6);  /* glTF +Y lift is +Z */
+        CHECK_NEAR(hi[2], 7, 1e-6);
+        CHECK_NEAR(hi[1] - lo[1], 3, 1e-6); /* glTF z extent 3 lies along y */
+        check_outward(m);
+    }
+    mesh_free(m);
+    scene_free(s);
+}
+
+static void expect_error(const char *path, const model_import_options *o, err_status status, const char *want)
+{
+    scene *s = scene_new();
+    mesh *m = NULL;
+    err_buf err = {{0}};
+    CHECK_INT(model_import(s, path, o, &m, NULL, &err), -1);
+    CHECK(m == NULL);
+    CHECK_INT(err.status, status);
+    CHECK_STR_CONTAINS(err.msg, path);
+    CHECK_STR_CONTAINS(err.msg, want);
+    scene_free(s);
+}
+
+TEST(clear_errors)
+{
+    expect_error(write_text("lines.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\np 1\n"), NULL, ERR_INPUT,
+                 "cannot read the model");
+    model_import_options up_y = {.up = MODEL_UP_Y};
+    expect_error(write_mirrored_gltf(), &up_y, ERR_INPUT, "states its own up axis");
+    model_import_options negative = {.scale = -2};
+    expect_error(write_text("scaled.ply", ply_text), &negative, ERR_INPUT, "a finite number above 0");
+    expect_error(write_text("broken.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"),
+                 NULL, ERR_INPUT, "broken.ply:5:1: the PLY header has no end_header line");
+    expect_error(write_text("model.xyz", "0 0 0\n"), NULL, ERR_INPUT, "not a model format sylva reads");
+    CHECK(model_import_supports("a/b/Model.GLB"));
+    CHECK(!model_import_supports("a.b/model"));
+}
+
+/* Assimp's PLY reader hangs, aborts or crashes on a cut PLY; every cut of a binary and an
+ * ASCII PLY must instead give a sentence (the walk in ply_check). */
+TEST(cut_ply_files)
+{
+    char whole[2][1200]; /* ASCII, binary */
+    snprintf(whole[0], sizeof whole[0], "%s", write_text("whole.ply", ply_text));
+    snprintf(whole[1], sizeof whole[1], "%s", work_path("whole-binary.ply"));
+    FILE *f = fopen(whole[1], "wb");
+    CHECK(f != NULL);
+    if (f) {
+        const char *h = "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\n"
+                        "property float y\nproperty float z\nelement face 4\n"
+                        "property list uchar int vertex_indices\nend_header\n";
+        put(f, h, strlen(h));
+        put(f, tet_pos, sizeof tet_pos);
+        for (int t = 0; t < 4; t++) {
+            uint8_t three = 3;
+            int32_t k[3] = {tet_tri[t][0], tet_tri[t][1], tet_tri[t][2]};
+            put(f, &three, 1), put(f, k, sizeof k);
+        }
+        fclose(f);
+    }
+    for (int w = 0; w < 2; w++) {
+        FILE *in = fopen(whole[w], "rb");
+        char bytes[1024];
+        size_t n = in ? fread(bytes, 1, sizeof bytes, in) : 0;
+        if (in) fclose(in);
+        scene *s = scene_new();
+        mesh *m = load(s, whole[w], 0, MODEL_UP_FILE, NULL); /* the whole file reads */
+        if (m) CHECK_INT(m->nt, 4);
+        mesh_free(m);
+        scene_free(s);
+        for (size_t cut = 1; cut + 1 < n; cut += 7) {
+            const char *path = work_path("cut.ply");
+            FILE *out = fopen(path, "wb");
+            if (out) put(out, bytes, w == 0 && bytes[cut - 1] == '\n' ? cut - 1 : cut), fclose(out);
+            s = scene_new();
+            m = NULL;
+            err_buf err = {{0}};
+            CHECK_INT(model_import(s, path, NULL, &m, NULL, &err), -1);
+            CHECK_INT(err.status, ERR_INPUT);
+            CHECK_STR_CONTAINS(err.msg, "cut.ply");
+            scene_free(s);
+        }
+    }
+}
+
+TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TEST_CASE(y_up_files_are_turned),
+          TEST_CASE(obj_with_mtl_texture_points_lines), TEST_CASE(gltf_mirrored_node_keeps_winding),
+          TEST_CASE(clear_errors))

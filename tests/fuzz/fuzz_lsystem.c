@@ -4,6 +4,7 @@
  * limits small enough that one input takes milliseconds. Every step must end in LSYS_OK or a
  * status with a sentence; the mesh handed over must index only its own vertices, all finite.
  * A crash, a sanitizer report, a leak or a hang is a finding. */
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -74,6 +75,11 @@ static void draw(const lsys_system *sys, const unsigned char *s, size_t n)
     double size = ext[2] > 1e-6 * widest ? ext[2] : widest;
     double scale = 10.0 / size;
     if (!(size > 0) || !isfinite(scale) || !isfinite(widest * scale) || widest * scale > 1e7) return;
+    /* A small model far from where the turtle started (`z(1e38)&Z`) passes the extent check but
+     * its vertices overflow float; the host refuses them (mesh_append: "vertex 0 is not
+     * finite"), so such a model ends in an error, not in a mesh, and is not meshed here. */
+    for (int k = 0; k < 3; k++)
+        if (!(fabs(st.lo[k] * scale) < FLT_MAX && fabs(st.hi[k] * scale) < FLT_MAX)) return;
 
     lsys_mesh_config mc = {.sides = sys->shape == 0 ? 4 : 8, .flat = sys->shape == 0, .scale = scale,
                            .max_polygon_vertices = MAX_POLYGON_VERTICES, .flush = check_chunk};

@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
+  clang libclang-rt-dev  # the clang build and the libFuzzer targets (tests/fuzz)
   libembree-dev          # Embree 3: ray tracing kernels
   libopenexr-dev         # OpenEXR Core C API: EXR output
   libopenimageio-dev openimageio-tools  # PNG output, image reading and comparison

@@ -1,20 +1,40 @@
 #!/usr/bin/env bash
-# test.sh — the whole test suite: installs dependencies, builds sylva (Release) and runs every
-# ctest test, then builds again with AddressSanitizer + UndefinedBehaviorSanitizer and runs the
-# suite there too.
+# test.sh — the whole test suite: installs the dependencies, then builds sylva four ways and
+# tests each (15 to 20 minutes on 2 cores):
+#   build/        gcc, Release: every ctest test
+#   build-asan/   gcc, AddressSanitizer + UndefinedBehaviorSanitizer: every test but the slow ones
+#   build-clang/  clang, Release, warnings as errors: every test but the slow ones
+#   build-fuzz/   clang with libFuzzer: each fuzz target for a short fixed number of runs
+# Stops at the first build or stage that fails. Tests that cannot run here (no POV-Ray, no
+# ../shared/data) are reported as skipped.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install-deps.sh"
+jobs=$(nproc)
+start=$SECONDS
+stage() { echo "== $* ($((SECONDS - start)) s)"; }
 
-echo "== Release build"
+stage "gcc Release build"
 "$root/scripts/build.sh" "$root/build"
-(cd "$root/build" && ctest --output-on-failure -j"$(nproc)")
+(cd "$root/build" && ctest --output-on-failure -j"$jobs")
 
-echo "== AddressSanitizer + UndefinedBehaviorSanitizer build"
-"$root/scripts/build.sh" "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSYLVA_SANITIZE=ON
 # Embree's and OpenImageIO's own threads keep memory until exit; leaks are checked in sylva's
 # code by the tests' own frees, so leak reports from the libraries are suppressed.
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export LSAN_OPTIONS=suppressions="$root/tests/lsan.supp"
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-(cd "$root/build-asan" && ctest --output-on-failure -j"$(nproc)")
+
+stage "gcc AddressSanitizer + UndefinedBehaviorSanitizer build"
+"$root/scripts/build.sh" "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSYLVA_SANITIZE=ON
+(cd "$root/build-asan" && ctest --output-on-failure -j"$jobs" -LE slow)
+
+stage "clang Release build, warnings as errors"
+CC=clang CXX=clang++ "$root/scripts/build.sh" "$root/build-clang" -DSYLVA_WERROR=ON
+(cd "$root/build-clang" && ctest --output-on-failure -j"$jobs" -LE slow)
+
+stage "clang libFuzzer build: short fuzz runs"
+CC=clang CXX=clang++ cmake -S "$root" -B "$root/build-fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSYLVA_FUZZ=ON >/dev/null
+cmake --build "$root/build-fuzz" -j"$jobs" --target fuzz_scene_load fuzz_lsystem
+(cd "$root/build-fuzz" && ctest --output-on-failure -j"$jobs" -L fuzz)
+
+stage "all passed"

@@ -1,6 +1,8 @@
 /* harness.h — the unit-test harness: CHECK macros that print got vs. expected with file and
  * line, and a main that runs the file's tests by name (all, or the names given on the command
- * line). A test file defines its tests with TEST(name) and lists them in TEST_LIST. */
+ * line). A test file defines its tests with TEST(name) and lists them in TEST_LIST. A test that
+ * cannot run here ends with SKIP("why"); when every test that ran was skipped, the process exits
+ * 77, which ctest reports as skipped (cmake/SylvaTest.cmake). */
 #ifndef SYLVA_TEST_HARNESS_H
 #define SYLVA_TEST_HARNESS_H
 
@@ -9,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <sys/stat.h>
 
 static int harness_failures;
 
@@ -56,6 +59,31 @@ static inline double harness_seconds(void)
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
+static int harness_skipped; /* set by SKIP in the running test */
+
+/* Ends the running test as skipped, printing "skipped: " and the printf-style reason. */
+#define SKIP(...)                                                                            \
+    do {                                                                                     \
+        fprintf(stderr, "skipped: ");                                                        \
+        fprintf(stderr, __VA_ARGS__);                                                        \
+        fputc('\n', stderr);                                                                 \
+        harness_skipped = 1;                                                                 \
+        return;                                                                              \
+    } while (0)
+
+/* The folder SUB of the shared data (DEMs, L-parser corpus beside the clone), whose root ctest
+ * passes in SYLVA_SHARED_DATA_DIR to tests registered NEEDS_SHARED_DATA; NULL when it is not
+ * there. The string lives until the next call. */
+static inline const char *harness_shared_data(const char *sub)
+{
+    static char path[4096];
+    const char *root = getenv("SYLVA_SHARED_DATA_DIR");
+    if (!root || !*root) return NULL;
+    snprintf(path, sizeof path, "%s/%s", root, sub);
+    struct stat st;
+    return stat(path, &st) == 0 ? path : NULL;
+}
+
 typedef struct harness_case {
     const char *name;
     void (*fn)(void);
@@ -66,23 +94,26 @@ typedef struct harness_case {
     static const harness_case harness_cases[] = {__VA_ARGS__};                               \
     int main(int argc, char **argv)                                                          \
     {                                                                                        \
-        int ran = 0;                                                                         \
+        int ran = 0, skipped = 0;                                                            \
         for (size_t i = 0; i < sizeof harness_cases / sizeof harness_cases[0]; i++) {        \
             int want = argc < 2;                                                             \
             for (int a = 1; a < argc; a++)                                                   \
                 if (!strcmp(argv[a], harness_cases[i].name)) want = 1;                       \
             if (!want) continue;                                                             \
             int before = harness_failures;                                                   \
+            harness_skipped = 0;                                                             \
             harness_cases[i].fn();                                                           \
             ran++;                                                                           \
-            fprintf(stderr, "%s %s\n", harness_failures == before ? "ok  " : "FAIL",          \
+            skipped += harness_skipped && harness_failures == before;                        \
+            fprintf(stderr, "%s %s\n",                                                       \
+                    harness_failures != before ? "FAIL" : harness_skipped ? "skip" : "ok  ",  \
                     harness_cases[i].name);                                                  \
         }                                                                                    \
         if (!ran) {                                                                          \
             fprintf(stderr, "no test matched\n");                                            \
             return 2;                                                                        \
         }                                                                                    \
-        return harness_failures ? 1 : 0;                                                     \
+        return harness_failures ? 1 : skipped == ran ? 77 : 0;                               \
     }
 
 #endif

@@ -1,7 +1,7 @@
 /* test_ifs_dtm_file.c — DTM input through GDAL: a GeoTIFF written with GDAL's API and ESRI ASCII
  * grids written as text by the test itself, nodata, a degree grid, crop and step, a humidity
- * map, bad files; and, when ../shared/data/dem exists, every DEM there loads or gives a clear
- * error. */
+ * map, bad files; and, when the shared data (SYLVA_SHARED_DATA_DIR) has dem/, every DEM there loads
+ * or gives a clear error (skipped otherwise). */
 #include <dirent.h>
 #include <errno.h>
 #include <math.h>
@@ -379,13 +379,10 @@ static int by_name(const void *a, const void *b) { return strcmp(a, b); }
 
 TEST(shared_dem_corpus)
 {
+    const char *shared = harness_shared_data("dem");
+    if (!shared) SKIP("the shared DEMs (dem/ in SYLVA_SHARED_DATA_DIR) are not there");
     char dir[512];
-    snprintf(dir, sizeof dir, "%s/dem", SYLVA_SHARED_DATA_DIR);
-    struct stat st;
-    if (stat(dir, &st) || !S_ISDIR(st.st_mode)) {
-        fprintf(stderr, "  skipped: %s is absent (the shared data is not part of a clone)\n", dir);
-        return;
-    }
+    snprintf(dir, sizeof dir, "%s", shared);
     static char paths[256][512];
     int n = corpus_files(dir, paths, 256, 0);
     qsort(paths, (size_t)n, sizeof paths[0], by_name);

@@ -36,7 +36,6 @@
 #define UNDER_ASAN 0
 #endif
 
-#define CORPUS_DIR SYLVA_SHARED_DATA_DIR "/lparser"
 #define CPU_LIMIT_S 60                     /* per file */
 #define MEMORY_LIMIT ((rlim_t)2 << 30)     /* address space per file (not under ASan) */
 #define RSS_LIMIT_KB (1024L * 1024L)       /* peak resident memory per file: 1 GiB */
@@ -175,15 +174,10 @@ static const char *base_name(const char *p)
 
 TEST(every_file_builds_or_fails_clearly)
 {
-    DIR *probe = opendir(CORPUS_DIR);
-    if (!probe) {
-        fprintf(stderr, "skipped: the shared L-parser corpus %s is not there (a clone alone has no shared data)\n",
-                CORPUS_DIR);
-        return;
-    }
-    closedir(probe);
+    const char *dir = harness_shared_data("lparser");
+    if (!dir) SKIP("the shared L-parser corpus (lparser/ in SYLVA_SHARED_DATA_DIR) is not there");
     corpus c = {0};
-    find_ls(&c, CORPUS_DIR, 0);
+    find_ls(&c, dir, 0);
     CHECK(c.n >= 100);
     uint32_t strict_built = 0, lenient_built = 0;
     double slowest = 0;
@@ -223,13 +217,12 @@ TEST(every_file_builds_or_fails_clearly)
  * 5 petal polygons (shared/data/lparser/reference-outputs/k3d: 63 faces = 6 x 8 + 5 x 3). */
 TEST(k3d_reference_counts)
 {
-    const char *path = CORPUS_DIR "/lparser4-k3d/abop-nested-polygon-leaves.ls";
+    const char *path = harness_shared_data("lparser/lparser4-k3d/abop-nested-polygon-leaves.ls");
+    if (!path) SKIP("the shared L-parser corpus (lparser/ in SYLVA_SHARED_DATA_DIR) is not there");
     lsys_system *s = NULL;
     lsys_error e = {{0}};
-    if (lsys_read_file(path, NULL, &s, &e)) {
-        fprintf(stderr, "skipped: %s\n", e.msg);
-        return;
-    }
+    CHECK_INT(lsys_read_file(path, NULL, &s, &e), LSYS_OK);
+    if (!s) return;
     unsigned char *str = NULL;
     size_t n = 0;
     CHECK_INT(lsys_derive(s, 2, 1u << 20, NULL, NULL, &str, &n, &e), LSYS_OK);

@@ -36,12 +36,36 @@ static void cross(const double a[3], const double b[3], double o[3])
 
 static double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
+static double largest_component(const double v[3]) { return fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2]))); }
+
+/* Scales v to unit length; 0 when it has no usable direction (zero, or not finite). A vector
+ * whose squared length over- or underflows (a model drawn far out) is scaled by its largest
+ * component first. */
 static int normalize(double v[3])
 {
     double n = sqrt(dot(v, v));
-    if (!(n > 1e-300)) return 0;
+    if (!(n > 1e-300) || !isfinite(n)) {
+        double big = largest_component(v);
+        if (!(big > 0) || !isfinite(v[0] + v[1] + v[2])) return 0;
+        v[0] /= big, v[1] /= big, v[2] /= big;
+        n = sqrt(dot(v, v));
+    }
     v[0] /= n, v[1] /= n, v[2] /= n;
     return 1;
+}
+
+/* The unit normal e x f of a face from its diagonals. A model drawn far out (coordinates of
+ * 1e150 before its scale is applied) makes the product overflow; the same direction then comes
+ * from the diagonals scaled to unit size. Returns 0 when the face has no direction. */
+static int face_normal(const double e[3], const double f[3], double n[3])
+{
+    cross(e, f, n);
+    if (normalize(n)) return 1;
+    double se = largest_component(e), sf = largest_component(f);
+    if (!(se > 0 && sf > 0) || !isfinite(e[0] + e[1] + e[2] + f[0] + f[1] + f[2])) return 0;
+    double a[3] = {e[0] / se, e[1] / se, e[2] / se}, b[3] = {f[0] / sf, f[1] / sf, f[2] / sf};
+    cross(a, b, n);
+    return normalize(n);
 }
 
 static int flush(lsys_mesh *m)
@@ -158,8 +182,7 @@ static int side_faces_flat(lsys_mesh *m, const lsys_joint *bottom, const lsys_jo
         ring_corner(m, top, k1, t1, d);
         /* The face's diagonals: their cross product points out of the tube. */
         for (int i = 0; i < 3; i++) e[i] = b1[i] - t0[i], f[i] = t1[i] - b0[i];
-        cross(e, f, nrm);
-        if (!normalize(nrm)) {
+        if (!face_normal(e, f, nrm)) {
             /* A face of no area (zero radius): its normal does not matter. */
             nrm[0] = d[0], nrm[1] = d[1], nrm[2] = d[2];
         }

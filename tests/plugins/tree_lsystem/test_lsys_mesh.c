@@ -263,6 +263,24 @@ TEST(concave_polygons_are_ear_clipped)
     CHECK_INT(polygon_fill(&line[0][0], 3, tri, nrm, xy, idx), 0);
 }
 
+/* A model drawn far out (lengths of 1e155 before its scale of 1e-155): the face normals, whose
+ * products overflow a double, are still unit vectors. */
+TEST(flat_faces_far_out_have_unit_normals)
+{
+    collected c;
+    CHECK_INT(build("F(1e155)+F(1e155)&(50)F(1e155)", 4, 1, 1e-155, &c), 0);
+    CHECK(c.nv > 0);
+    int bad = 0;
+    for (uint32_t v = 0; v < c.nv; v++) {
+        const float *n = c.nrm + 3 * v;
+        double len = sqrt((double)n[0] * n[0] + (double)n[1] * n[1] + (double)n[2] * n[2]);
+        bad += !(fabs(len - 1.0) < 1e-4);
+    }
+    CHECK_INT(bad, 0);
+    collected_free(&c);
+}
+
 TEST_LIST(TEST_CASE(bent_branch_is_one_closed_tube), TEST_CASE(flat_prisms_join_without_gaps),
           TEST_CASE(branches_are_closed_tubes_of_their_own), TEST_CASE(joints_survive_chunk_boundaries),
-          TEST_CASE(normals_scale_and_keys), TEST_CASE(concave_polygons_are_ear_clipped))
+          TEST_CASE(normals_scale_and_keys), TEST_CASE(concave_polygons_are_ear_clipped),
+          TEST_CASE(flat_faces_far_out_have_unit_normals))

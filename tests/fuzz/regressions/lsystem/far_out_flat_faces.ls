@@ -1,0 +1,4 @@
+recursion 20
+shape 0
+axiom a
+rule a=Fa?????a

@@ -38,6 +38,8 @@ static void crosscheck_usage(FILE *out)
             "  --max-over F         share of over pixels at most F (default %g)\n"
             "  --max-class-mae X    MAE within each class covering >= %g of the picture (default %g)\n"
             "  -q, --quiet          no progress output\n"
+            "  --allow-gdal-virtual let the scene name GDAL virtual paths, URLs and connection\n"
+            "                      strings (these may reach the network; refused otherwise)\n"
             "  -v, --verbose        plugin debug messages\n"
             "  -h, --help           this text\n\n"
             "Prints the verdict and the report's path.\n"

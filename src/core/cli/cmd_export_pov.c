@@ -31,6 +31,8 @@ static void export_pov_usage(FILE *out)
             "                      small scene showing them side by side\n"
             "  --variant K         with --species: variant K only (0 is the youngest)\n"
             "  -q, --quiet         no progress output\n"
+            "  --allow-gdal-virtual let the scene name GDAL virtual paths, URLs and connection\n"
+            "                      strings (these may reach the network; refused otherwise)\n"
             "  -v, --verbose       plugin debug messages\n"
             "  -h, --help          this text\n\n"
             "Prints the path of the main file written.\n"

@@ -23,6 +23,8 @@ static void factors_usage(FILE *out)
             "options:\n"
             "  -o, --output DIR    folder for the maps (required)\n"
             "  -q, --quiet         no progress output\n"
+            "  --allow-gdal-virtual let the scene name GDAL virtual paths, URLs and connection\n"
+            "                      strings (these may reach the network; refused otherwise)\n"
             "  -v, --verbose       plugin debug messages\n"
             "  -h, --help          this text\n\n"
             "exit status: 0 done, 1 usage, 2 bad scene or plugin failure, 3 output not written,\n"

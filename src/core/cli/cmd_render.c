@@ -27,6 +27,8 @@ static void render_usage(FILE *out)
             "  --verify            verification mode: direct sun with hard shadows plus the\n"
             "                      constant ambient term, no indirect light (as POV-Ray)\n"
             "  -q, --quiet         no progress output\n"
+            "  --allow-gdal-virtual let the scene name GDAL virtual paths, URLs and connection\n"
+            "                      strings (these may reach the network; refused otherwise)\n"
             "  -v, --verbose       plugin debug messages\n"
             "  -h, --help          this text\n\n"
             "exit status: 0 done, 1 usage, 2 bad scene or plugin failure, 3 output not written,\n"

@@ -36,6 +36,8 @@ static void simulate_usage(FILE *out)
             "  --maps Y,Y,...      the years to map with --stats (default 0,20,60,80,180 and the\n"
             "                      last year)\n"
             "  -q, --quiet         no progress output\n"
+            "  --allow-gdal-virtual let the scene name GDAL virtual paths, URLs and connection\n"
+            "                      strings (these may reach the network; refused otherwise)\n"
             "  -v, --verbose       plugin debug messages\n"
             "  -h, --help          this text\n\n"
             "A run continued from a state gives the same plants as one run without stopping.\n\n"

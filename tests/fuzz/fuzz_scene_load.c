@@ -21,7 +21,12 @@ static void close_registry(void) { plugin_registry_free(registry); }
 int LLVMFuzzerInitialize(int *argc, char ***argv)
 {
     err_buf err = {{0}};
+    /* Every module opened once here, so each input sees every plugin's schema the same way. */
     registry = plugin_registry_open(&err);
+    if (registry && plugin_registry_load_all(registry, &err)) {
+        plugin_registry_free(registry);
+        registry = NULL;
+    }
     if (!registry || plugin_registry_count(registry) == 0) {
         fprintf(stderr, "fuzz_scene_load: no plugins found (%s); build the plugins first\n", err.msg);
         exit(2);

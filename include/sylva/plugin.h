@@ -50,7 +50,7 @@ extern "C" {
 #endif
 
 #define SYLVA_ABI_MAJOR 1
-#define SYLVA_ABI_MINOR 1
+#define SYLVA_ABI_MINOR 2
 
 /* Bytes from the start of `type` to the end of `field`. */
 #define SYLVA_FIELD_END(type, field) (offsetof(type, field) + sizeof(((type *)0)->field))
@@ -324,6 +324,7 @@ typedef struct sylva_host_api {
  * function of that version. */
 #define SYLVA_HOST_API_SIZE_1_0 SYLVA_FIELD_END(sylva_host_api, resolve_path)
 #define SYLVA_HOST_API_SIZE_1_1 SYLVA_FIELD_END(sylva_host_api, param)
+#define SYLVA_HOST_API_SIZE_1_2 SYLVA_HOST_API_SIZE_1_1 /* 1.2 appended to the terrain request only */
 
 /* 1 when the host that passed `api` offers function `member` (its table reaches that far and
  * the entry is set), e.g. `if (SYLVA_API_HAS(api, mem_alloc)) ...`. */
@@ -336,6 +337,14 @@ typedef struct sylva_host_api {
 typedef struct sylva_terrain_request {
     uint32_t size;
     uint64_t seed;        /* the scene seed */
+    /* ---- ABI 1.2 (test with SYLVA_HAS_FIELD) ---- */
+    const char *site_crs; /* the scene's coordinate reference system as WKT, or NULL when the
+                             scene is in local metres only; owned by the host */
+    double site_origin[3]; /* map coordinates of the local frame's origin: the map point
+                             (E, N, h) stands at local (E - origin[0], N - origin[1],
+                             h - origin[2]); zeros without a CRS */
+    double eye[3];        /* the camera's position in the local frame; eye[2] is NaN while the
+                             camera's height is given above a ground not yet built */
 } sylva_terrain_request;
 
 typedef struct sylva_terrain_out {
@@ -422,6 +431,7 @@ typedef struct sylva_plugin {
 /* The descriptor's size in each minor version (an ABI 1.0 plugin declares the 1.0 size). */
 #define SYLVA_PLUGIN_SIZE_1_0 SYLVA_FIELD_END(sylva_plugin, extension)
 #define SYLVA_PLUGIN_SIZE_1_1 SYLVA_FIELD_END(sylva_plugin, n_presets)
+#define SYLVA_PLUGIN_SIZE_1_2 SYLVA_PLUGIN_SIZE_1_1 /* 1.2 appended to the terrain request only */
 
 /* The one exported symbol: descriptor `index` of this module, NULL past the end. */
 #define SYLVA_PLUGIN_ENTRY "sylva_plugin_get"

@@ -153,7 +153,10 @@ int plugin_call_open_ecology(plugin_call *c, const scene_file *sf, scene *s, con
 int plugin_call_terrain(plugin_call *c, err_buf *err)
 {
     scene *s = c->host.scene;
-    sylva_terrain_request req = {.size = sizeof req, .seed = c->host.seed};
+    const scene_file *sf = c->sf;
+    sylva_terrain_request req = {.size = sizeof req, .seed = c->host.seed, .site_crs = sf->site.crs_wkt,
+                                 .site_origin = {sf->site.origin[0], sf->site.origin[1], sf->site.origin[2]},
+                                 .eye = {sf->camera.position[0], sf->camera.position[1], sf->camera.position[2]}};
     sylva_terrain_out out = {.size = sizeof out};
     int rc = c->plugin->desc->generate(c->state, host_api_table(), &c->host, &req, &out);
     if (rc) return plugin_call_failed(c, "generate", rc, err);

@@ -49,6 +49,15 @@ typedef struct sun_settings {
     double angular_diameter_deg;
 } sun_settings;
 
+/* Where the scene stands on the Earth (docs/sites.md). Without a `site:` section crs_wkt is
+ * NULL and every position is in local metres. With one, local = map - origin: a map point
+ * (easting, northing, height) stands at (E - origin[0], N - origin[1], h - origin[2]). */
+typedef struct site_settings {
+    const char *crs_wkt;    /* the site's projected CRS as WKT, or NULL: local metres only */
+    const char *crs_name;   /* its short name for messages (e.g. "WGS 84 / UTM zone 14N"), or NULL */
+    double origin[3];       /* map coordinates of the local origin */
+} site_settings;
+
 typedef enum sky_model { SKY_NONE = 0, SKY_CONSTANT = 1, SKY_PREETHAM = 2 } sky_model;
 
 typedef struct sky_settings {
@@ -138,6 +147,7 @@ typedef struct ecology_spec {
 typedef struct scene_file {
     const char *path;           /* as given */
     const char *dir;            /* absolute folder of the file */
+    site_settings site;
     image_settings image;
     camera_settings camera;
     sun_settings sun;

@@ -5,13 +5,8 @@
  * POV-Ray export declaring a model once. The models are small files the test writes. */
 #include <stdint.h>
 
-#include "harness.h"
-#include "work_dir.h"
+#include "scene_text.h"
 #include "pov/pov_write.h"
-#include "render/film.h"
-#include "render/render.h"
-#include "scene/scene_build.h"
-#include "scene/scene_file.h"
 
 /* A tetrahedron 1 x 2 x 3 m (x, y, z) with a corner at the origin, as ASCII STL. */
 static const char *tet_stl =
@@ -42,49 +37,30 @@ static void terrain_header(char *buf, size_t n)
     }
 }
 
-/* Writes scene.yaml (the terrain header, then body) and builds it; NULL with err on failure. */
+/* Builds the terrain header followed by body; NULL with err on failure. */
 static scene *build(const char *body, err_buf *err)
 {
     static char text[1 << 16];
     terrain_header(text, sizeof text);
     size_t used = strlen(text);
     snprintf(text + used, sizeof text - used, "%s", body);
-    const char *path = work_file("scene.yaml", text);
-    scene_file *sf = scene_file_load(path, NULL, err);
-    if (!sf) return NULL;
-    scene *s = scene_build(sf, NULL, NULL, err);
-    scene_file_free(sf);
-    return s;
+    return scene_text_build(text, err);
 }
 
 static scene *build_ok(const char *body)
 {
-    err_buf err = {{0}};
-    scene *s = build(body, &err);
-    if (!s) fprintf(stderr, "%s\n", err.msg);
-    CHECK(s != NULL);
-    return s;
-}
-
-/* The world bounds of object o. */
-static void object_bounds(const scene *s, uint32_t o, double lo[3], double hi[3])
-{
-    const xform3x4 *xf;
-    const mesh *m = scene_object_mesh(s, o, &xf);
-    for (int d = 0; d < 3; d++) lo[d] = INFINITY, hi[d] = -INFINITY;
-    for (uint32_t v = 0; v < m->nv; v++) {
-        vec3 p = v3(m->pos[v * 3], m->pos[v * 3 + 1], m->pos[v * 3 + 2]);
-        if (xf) p = xf_point(xf, p);
-        double q[3] = {p.x, p.y, p.z};
-        for (int d = 0; d < 3; d++) lo[d] = fmin(lo[d], q[d]), hi[d] = fmax(hi[d], q[d]);
-    }
+    static char text[1 << 16];
+    terrain_header(text, sizeof text);
+    size_t used = strlen(text);
+    snprintf(text + used, sizeof text - used, "%s", body);
+    return scene_text_build_ok(text);
 }
 
 static void check_bounds(const scene *s, uint32_t o, double x0, double x1, double y0, double y1, double z0,
                          double z1)
 {
     double lo[3], hi[3];
-    object_bounds(s, o, lo, hi);
+    scene_text_object_bounds(s, o, lo, hi);
     CHECK_NEAR(lo[0], x0, 1e-4);
     CHECK_NEAR(hi[0], x1, 1e-4);
     CHECK_NEAR(lo[1], y0, 1e-4);
@@ -249,12 +225,8 @@ TEST(object_id_and_development_layers)
     if (!s) return;
     s->camera = (camera_settings){.position = {0, -60, 12}, .has_look_at = 1, .look_at = {0, 0, 8},
                                   .up = {0, 0, 1}, .fov_deg = 30};
-    render_options ro = {.threads = 2, .quiet = 1};
-    err_buf err = {{0}};
-    film *f = render_scene(s, &ro, NULL, &err);
-    CHECK(f != NULL);
+    film *f = scene_text_render(s);
     if (!f) {
-        fprintf(stderr, "%s\n", err.msg);
         scene_free(s);
         return;
     }

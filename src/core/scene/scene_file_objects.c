@@ -44,7 +44,10 @@ static int find_group(loader *L, const ynode *item, const char *name, const char
 {
     const scene_file *sf = L->sf;
     for (uint32_t g = 0; g < sf->n_groups; g++)
-        if (!strcmp(sf->groups[g].name, name)) return (int)(*out = g), 0;
+        if (!strcmp(sf->groups[g].name, name)) {
+            *out = g;
+            return 0;
+        }
     const ynode *at = ynode_get(item, "group");
     if (!sf->n_groups)
         return sf_located(L->err, L->file, at->line, at->column,

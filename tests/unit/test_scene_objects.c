@@ -211,6 +211,8 @@ TEST(clear_errors)
     expect_error("groups:\n  g:\n    - {model: tet.stl, development: true}\nobjects:\n  - {group: g}\n",
                  "'groups.g[0]' is a part of a group: 'development' belongs on the objects entry", NULL);
     expect_error("objects:\n  - {model: tet.stl, position: [80, 0]}\n", "lies outside the terrain", NULL);
+    expect_error("groups:\n  g:\n    - {name: top, model: absent.stl}\nobjects:\n  - {name: G1, group: g}\n",
+                 "scene.yaml:21:5: object 'G1': group 'g', part 'top': ", "absent.stl: cannot read the model");
 }
 
 /* Pixels of the development's model carry its object id and a coverage of 1, the ground none;

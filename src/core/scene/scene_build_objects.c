@@ -63,7 +63,11 @@ static int32_t model_for_part(object_builder *b, uint32_t g, uint32_t i, err_buf
     if (*slot >= 0) return *slot;
     const group_spec *gs = &b->sf->groups[g];
     const object_spec *part = &gs->parts[i];
-    if (part->kind == OBJECT_MODEL) return *slot = model_for_file(b, part, err);
+    if (part->kind == OBJECT_MODEL) {
+        *slot = model_for_file(b, part, err);
+        if (*slot < 0 && !err_has_place(err)) err_prefix(err, "group '%s', part '%s': ", gs->name, part->name);
+        return *slot;
+    }
     mesh *m = scene_shape_mesh(b->s, &part->shape, part->material, part->file, part->line, part->column, "part",
                                part->name, err);
     if (!m) return -1;

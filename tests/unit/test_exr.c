@@ -30,7 +30,8 @@ static int count_entries(const char *dir)
 /* Distinctive layers: no two channels share a value at the same pixel. */
 typedef struct test_layers {
     float rgb[3 * N], depth[N], normal[3 * N], albedo[3 * N];
-    uint32_t instance[N], species[N];
+    uint32_t instance[N], species[N], object[N];
+    float development[N];
 } test_layers;
 
 static void fill_layers(test_layers *l)
@@ -47,6 +48,8 @@ static void fill_layers(test_layers *l)
             l->depth[i] = (y == 0 || x == W - 1) ? INFINITY : 10.25f + 3.5f * (float)i;
             l->instance[i] = x == W - 1 ? 0u : 1000u + (uint32_t)i;
             l->species[i] = (uint32_t)(i % 4);
+            l->object[i] = (uint32_t)(i % 3);
+            l->development[i] = (float)(i % 5) * 0.25f;
         }
     l->rgb[3 * 5] = 70000.0f; /* beyond the half range: stored as +inf when half */
     l->rgb[3 * 6 + 1] = 1e-8f; /* below the smallest half subnormal: stored as 0 */
@@ -96,7 +99,7 @@ static void round_trip(int rgb_half)
     fill_layers(&l);
     exr_frame f = {.width = W, .height = H, .rgb = l.rgb, .depth = l.depth, .normal = l.normal,
                    .albedo = l.albedo, .instance_id = l.instance, .species_id = l.species,
-                   .rgb_half = rgb_half};
+                   .object_id = l.object, .development = l.development, .rgb_half = rgb_half};
     const char *path = work_path(rgb_half ? "half.exr" : "float.exr");
     err_buf err = {{0}};
     int rc = exr_write(path, &f, &err);
@@ -114,9 +117,10 @@ static void round_trip(int rgb_half)
     }
     CHECK_INT(img.width, W);
     CHECK_INT(img.height, H);
-    CHECK_INT(img.channels, 12);
+    CHECK_INT(img.channels, 14);
     static const char *const names[] = {"R", "G", "B", "Z", "N.X", "N.Y", "N.Z", "albedo.R",
-                                        "albedo.G", "albedo.B", "id.instance", "id.species"};
+                                        "albedo.G", "albedo.B", "id.instance", "id.species",
+                                        "id.object", "development.A"};
     for (size_t k = 0; k < sizeof names / sizeof names[0]; k++)
         CHECK(channel_index(&img, names[k]) >= 0);
 
@@ -132,6 +136,8 @@ static void round_trip(int rgb_half)
     check_float_channel(&img, "albedo.B", l.albedo + 2, 3, 0);
     check_id_channel(&img, "id.instance", l.instance);
     check_id_channel(&img, "id.species", l.species);
+    check_id_channel(&img, "id.object", l.object);
+    check_float_channel(&img, "development.A", l.development, 1, 0);
 
     int r = channel_index(&img, "R"), g = channel_index(&img, "G"), z = channel_index(&img, "Z");
     if (r >= 0 && g >= 0 && z >= 0) {

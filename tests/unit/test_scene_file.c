@@ -373,12 +373,13 @@ TEST(host_schemas_are_well_formed)
         CHECK_INT(rc, 0);
         for (uint32_t k = 0; k < s->n_params; k++) CHECK(s->params[k].help && s->params[k].help[0]);
     }
-    CHECK_INT(n, 15);
+    CHECK_INT(n, 17);
     CHECK(host_schema_shape(SHAPE_DISK) == &host_schema_shape_disk);
     /* enum orders the loader relies on */
     CHECK(!strcmp(host_sky_models[SKY_PREETHAM], "preetham"));
     CHECK(!strcmp(host_shape_names[SHAPE_SPHERE], "sphere"));
     CHECK(!strcmp(host_material_types[SYLVA_BSDF_LEAF - 1], "leaf"));
+    CHECK(!strcmp(host_model_up_axes[1], "y") && !strcmp(host_model_up_axes[2], "z")); /* MODEL_UP_Y, _Z */
 }
 
 TEST(host_reserved_keys)

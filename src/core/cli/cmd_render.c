@@ -111,8 +111,9 @@ int cmd_render(int argc, char **argv)
     if (rc) goto done;
     const scene *sc = cs.scene;
     if (!ro.quiet)
-        fprintf(stderr, "scene: %u species, %u prototypes, %u instances, %u objects%s (built in %.2fs)\n",
-                sc->n_species, sc->n_prototypes, sc->n_instances, sc->n_objects, sc->terrain ? ", terrain" : "", cs.seconds);
+        fprintf(stderr, "scene: %u species, %u prototypes, %u instances, %u objects (%u shared models)%s (built in "
+                "%.2fs)\n", sc->n_species, sc->n_prototypes, sc->n_instances, sc->n_objects, sc->n_models,
+                sc->terrain ? ", terrain" : "", cs.seconds);
     render_stats st;
     f = render_scene(sc, &ro, &st, &err);
     if (!f) {

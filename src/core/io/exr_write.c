@@ -19,7 +19,7 @@
 #include "io/half_float.h"
 
 /* EXR_MAX_SIDE keeps a scanline's byte stride (12 bytes per pixel at most) within int32. */
-enum { EXR_MAX_CHANNELS = 13, EXR_MAX_SIDE = 1 << 24 };
+enum { EXR_MAX_CHANNELS = 15, EXR_MAX_SIDE = 1 << 24 };
 
 /* The OpenEXR context's user data: where the bytes go and where the first error is told. */
 typedef struct exr_stream {
@@ -110,6 +110,12 @@ static int exr_frame_channels(const exr_frame *f, exr_channel_src *ch)
     if (f->species_id)
         ch[n++] = (exr_channel_src){"id.species", EXR_PIXEL_UINT, EXR_PERCEPTUALLY_LINEAR,
                                     (const uint8_t *)f->species_id, sizeof(uint32_t), -1};
+    if (f->object_id)
+        ch[n++] = (exr_channel_src){"id.object", EXR_PIXEL_UINT, EXR_PERCEPTUALLY_LINEAR,
+                                    (const uint8_t *)f->object_id, sizeof(uint32_t), -1};
+    if (f->development)
+        ch[n++] = (exr_channel_src){"development.A", EXR_PIXEL_FLOAT, EXR_PERCEPTUALLY_LINEAR,
+                                    (const uint8_t *)f->development, sizeof(float), -1};
     return n;
 }
 
@@ -216,7 +222,7 @@ int exr_write(const char *path, const exr_frame *f, err_buf *err)
     int n_ch = exr_frame_channels(f, ch);
     if (n_ch == 0)
         return err_set(err, "%s: the frame has no layers; give at least one of rgb, depth, "
-                       "normal, albedo, instance_id, species_id", path);
+                       "normal, albedo, instance_id, species_id, object_id, development", path);
 
     atomic_file out;
     if (atomic_file_open(&out, path, err)) return -1;

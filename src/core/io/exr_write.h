@@ -1,6 +1,7 @@
 /* exr_write.h — writing a rendered frame as a multi-layer OpenEXR file through the OpenEXR Core
  * C API (openexr.h). Channels: R, G, B (linear, HALF or FLOAT), Z (depth, FLOAT), N.X N.Y N.Z
- * (world normal), albedo.R albedo.G albedo.B, id.instance and id.species (UINT). Any layer
+ * (world normal), albedo.R albedo.G albedo.B, id.instance, id.species and id.object (UINT),
+ * development.A (the development's coverage, FLOAT 0..1). Any layer
  * pointer may be NULL and is then left out. The file is written under a temporary name in the
  * same folder and renamed into place, so a failure never leaves a partial file at `path`. */
 #ifndef SYLVA_EXR_WRITE_H
@@ -18,6 +19,8 @@ typedef struct exr_frame {
     const float *albedo;       /* 3 per pixel */
     const uint32_t *instance_id; /* 1 per pixel: 0 = none, else instance index + 1 */
     const uint32_t *species_id;  /* 1 per pixel: 0 = none, else species index + 1 */
+    const uint32_t *object_id;   /* 1 per pixel: 0 = none, else object index + 1 */
+    const float *development;    /* 1 per pixel: coverage of the development, 0..1 */
     int rgb_half;              /* 1: store R, G, B as HALF; 0: FLOAT */
 } exr_frame;
 

@@ -48,6 +48,13 @@ void pov_object_identifier(const scene *s, uint32_t index, char out[POV_IDENT_MA
     snprintf(out, POV_IDENT_MAX, "O%u_%s", index, clean);
 }
 
+void pov_model_identifier(const scene *s, uint32_t index, char out[POV_IDENT_MAX])
+{
+    char clean[POV_CLEAN_MAX + 1];
+    pov_clean_name(index < s->n_models ? s->models[index].name : NULL, clean);
+    snprintf(out, POV_IDENT_MAX, "D%u_%s", index, clean);
+}
+
 void pov_prototype_identifier(const scene *s, uint32_t p, char out[POV_IDENT_MAX])
 {
     uint32_t sp = p < s->n_prototypes ? s->prototypes[p].species : 0;
@@ -61,7 +68,7 @@ void pov_prototype_identifier(const scene *s, uint32_t p, char out[POV_IDENT_MAX
         shared = !strcmp(clean, other);
     }
     int digit = clean[0] >= '0' && clean[0] <= '9';
-    int reserved = (clean[0] == 'M' || clean[0] == 'O') && clean[1] >= '0' && clean[1] <= '9';
+    int reserved = (clean[0] == 'M' || clean[0] == 'O' || clean[0] == 'D') && clean[1] >= '0' && clean[1] <= '9';
     const char *prefix = digit || reserved ? "S__" : "";
     if (shared)
         snprintf(out, POV_IDENT_MAX, "%s%s__%u_%u", prefix, clean, sp, variant);

@@ -5,6 +5,7 @@
  * starts upper-case (POV-Ray's keywords are all lower-case, so no identifier is a keyword).
  * Identifiers:
  *   materials   M<index>_<clean>          objects   O<index>_<clean>
+ *   models      D<index>_<clean> (the meshes objects share)
  *   prototypes  <Species>_<variant>, where <Species> is the clean species name, prefixed "S__"
  *               when it would start with a digit or look like a material or object name, and
  *               suffixed "__<index>" when another species cleans up to the same name.
@@ -26,6 +27,7 @@ void pov_clean_name(const char *name, char out[POV_CLEAN_MAX + 1]);
 
 void pov_material_identifier(const scene *s, uint32_t index, char out[POV_IDENT_MAX]);
 void pov_object_identifier(const scene *s, uint32_t index, char out[POV_IDENT_MAX]);
+void pov_model_identifier(const scene *s, uint32_t index, char out[POV_IDENT_MAX]);
 /* The identifier of prototype p ("Oak_0" for variant 0 of species "oak"). */
 void pov_prototype_identifier(const scene *s, uint32_t p, char out[POV_IDENT_MAX]);
 

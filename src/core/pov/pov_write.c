@@ -183,6 +183,19 @@ static void bounds_add_mesh(double lo[3], double hi[3], const mesh *m)
     bounds_add(lo, hi, b[0], b[1], b[2]);
 }
 
+/* Grows the bounds by m's bounding box carried through xf (per instance: cheap next to writing
+ * its line). */
+static void bounds_add_placed(double lo[3], double hi[3], const mesh *m, const xform3x4 *xf)
+{
+    if (!m->nv) return;
+    float a[3], b[3];
+    mesh_bounds(m, a, b);
+    for (int c = 0; c < 8; c++) {
+        vec3 q = xf_point(xf, v3(c & 1 ? b[0] : a[0], c & 2 ? b[1] : a[1], c & 4 ? b[2] : a[2]));
+        bounds_add(lo, hi, q.x, q.y, q.z);
+    }
+}
+
 /* Bounds of everything POV-Ray will see, for placing the sun beyond it. */
 static void scene_bounds(const scene *s, const mesh *terrain, double lo[3], double hi[3])
 {
@@ -194,17 +207,14 @@ static void scene_bounds(const scene *s, const mesh *terrain, double lo[3], doub
         bounds_add(lo, hi, a[0], a[1], a[2]);
         bounds_add(lo, hi, b[0], b[1], b[2]);
     }
-    for (uint32_t o = 0; o < s->n_objects; o++) bounds_add_mesh(lo, hi, s->objects[o].mesh);
-    for (uint32_t i = 0; i < s->n_instances; i++) {
-        const prototype *pr = &s->prototypes[s->instances[i].prototype];
-        if (!pr->mesh->nv) continue;
-        float a[3], b[3];
-        mesh_bounds(pr->mesh, a, b); /* per instance: cheap next to writing its line */
-        for (int c = 0; c < 8; c++) {
-            vec3 q = xf_point(&s->instances[i].xf, v3(c & 1 ? b[0] : a[0], c & 2 ? b[1] : a[1], c & 4 ? b[2] : a[2]));
-            bounds_add(lo, hi, q.x, q.y, q.z);
-        }
+    for (uint32_t o = 0; o < s->n_objects; o++) {
+        const xform3x4 *xf;
+        const mesh *m = scene_object_mesh(s, o, &xf);
+        if (xf) bounds_add_placed(lo, hi, m, xf);
+        else bounds_add_mesh(lo, hi, m);
     }
+    for (uint32_t i = 0; i < s->n_instances; i++)
+        bounds_add_placed(lo, hi, s->prototypes[s->instances[i].prototype].mesh, &s->instances[i].xf);
     bounds_add(lo, hi, s->camera.position[0], s->camera.position[1], s->camera.position[2]);
 }
 
@@ -242,6 +252,28 @@ fail:
     return -1;
 }
 
+/* Appends " matrix <m00,m10,m20, m01,m11,m21, m02,m12,m22, tx,ty,tz>": the columns of xf;
+ * counts non-finite numbers in *bad. */
+static char *append_matrix(char *p, const xform3x4 *xf, int *bad)
+{
+    /* rounding noise of a rotation (sin 90 degrees = 4e-8) is written as 0 */
+    float big = 0.0f;
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++) big = fmaxf(big, fabsf(xf->m[r][c]));
+    p = pov_append_text(p, " matrix <");
+    for (int c = 0; c < 3; c++)
+        for (int r = 0; r < 3; r++) {
+            float v = xf->m[r][c];
+            p = pov_append_real(p, fabsf(v) <= 1e-6f * big ? 0.0 : v, LINEAR_DIGITS, bad);
+            *p++ = ',';
+        }
+    for (int r = 0; r < 3; r++) {
+        p = pov_append_float(p, xf->m[r][3], bad);
+        *p++ = r < 2 ? ',' : '>';
+    }
+    return p;
+}
+
 static int write_objects(const scene *s, const export_paths *ep, const char *source, pov_export_stats *st,
                          err_buf *err)
 {
@@ -250,8 +282,48 @@ static int write_objects(const scene *s, const export_paths *ep, const char *sou
     snprintf(name, sizeof name, "%s_objects.inc", ep->stem);
     pov_file pf;
     if (pov_file_open(&pf, path, err)) return -1;
-    write_header(&pf, name, "the objects, each a mesh2 in world coordinates", source);
+    write_header(&pf, name, "the objects: shared models declared once as mesh2 and placed by matrix, other "
+                            "objects each a mesh2 in world coordinates", source);
+    char line[2 * POV_IDENT_MAX + 12 * POV_NUMBER_MAX + 64];
+    int bad = 0;
+    for (uint32_t m = 0; m < s->n_models; m++) {
+        const mesh *mm = s->models[m].mesh;
+        pov_model_identifier(s, m, ident);
+        pov_comment_text(s->models[m].name, text, sizeof text);
+        pov_printf(&pf, "// model \"%s\": %u triangles, shared by the objects that place it\n", text, mm->nt);
+        if (!mm->nt) {
+            pov_put(&pf, "// (no triangles: not declared, its objects are left out)\n\n");
+            continue;
+        }
+        if (pov_write_mesh(&pf, ident, mm, s, err)) goto fail;
+        pov_put(&pf, "\n");
+    }
     for (uint32_t o = 0; o < s->n_objects; o++) {
+        const object *ob = &s->objects[o];
+        if (ob->mesh) continue;
+        pov_object_identifier(s, o, ident);
+        pov_comment_text(ob->name, text, sizeof text);
+        if (!s->models[ob->model].mesh->nt) {
+            pov_printf(&pf, "// object \"%s\" has no triangles: left out\n", text);
+            continue;
+        }
+        char model_ident[POV_IDENT_MAX];
+        pov_model_identifier(s, (uint32_t)ob->model, model_ident);
+        char *p = pov_append_text(line, "#declare ");
+        p = pov_append_text(p, ident);
+        p = pov_append_text(p, " = object { ");
+        p = pov_append_text(p, model_ident);
+        p = append_matrix(p, &ob->xf, &bad);
+        p = pov_append_text(p, " }  // \"");
+        pov_put(&pf, line);
+        pov_printf(&pf, "%s\"\n", text);
+    }
+    if (bad) {
+        err_set(err, "%s: %d object transforms hold non-finite numbers", path, bad);
+        goto fail;
+    }
+    for (uint32_t o = 0; o < s->n_objects; o++) {
+        if (!s->objects[o].mesh) continue;
         pov_object_identifier(s, o, ident);
         pov_comment_text(s->objects[o].name, text, sizeof text);
         if (!s->objects[o].mesh->nt) {
@@ -353,23 +425,9 @@ static int write_plants(const scene *s, const export_paths *ep, const char *sour
             skipped++;
             continue;
         }
-        /* rounding noise of a rotation (sin 90 degrees = 4e-8) is written as 0 */
-        float big = 0.0f;
-        for (int r = 0; r < 3; r++)
-            for (int c = 0; c < 3; c++) big = fmaxf(big, fabsf(in->xf.m[r][c]));
         char *p = pov_append_text(line, "object { ");
         p = pov_append_text(p, ident[in->prototype]);
-        p = pov_append_text(p, " matrix <");
-        for (int c = 0; c < 3; c++)
-            for (int r = 0; r < 3; r++) {
-                float v = in->xf.m[r][c];
-                p = pov_append_real(p, fabsf(v) <= 1e-6f * big ? 0.0 : v, LINEAR_DIGITS, &bad);
-                *p++ = ',';
-            }
-        for (int r = 0; r < 3; r++) {
-            p = pov_append_float(p, in->xf.m[r][3], &bad);
-            *p++ = r < 2 ? ',' : '>';
-        }
+        p = append_matrix(p, &in->xf, &bad);
         p = pov_append_text(p, " }\n");
         pov_put(&pf, line);
     }
@@ -478,7 +536,7 @@ static int write_main(const scene *s, const light_summary *l, const export_paths
     if (has_water) pov_put(&pf, "object { Water }\n");
     char ident[POV_IDENT_MAX], text[256];
     for (uint32_t i = 0; i < s->n_objects; i++) {
-        if (!s->objects[i].mesh->nt) continue;
+        if (!scene_object_mesh(s, i, NULL)->nt) continue;
         pov_object_identifier(s, i, ident);
         pov_comment_text(s->objects[i].name, text, sizeof text);
         pov_printf(&pf, "object { %s }  // \"%s\"\n", ident, text);

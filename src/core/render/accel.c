@@ -76,6 +76,16 @@ static void cutout_filter(const struct RTCFilterFunctionNArguments *args)
     }
 }
 
+/* --- what a hit is ---------------------------------------------------------------------- */
+
+uint32_t accel_hit_object(const accel *a, const struct RTCRayHit *rh)
+{
+    unsigned inst = rh->hit.instID[0];
+    unsigned id = inst != RTC_INVALID_GEOMETRY_ID ? inst : rh->hit.geomID;
+    if (id == RTC_INVALID_GEOMETRY_ID || id < ACCEL_TOP_FIRST_OBJECT || id >= a->first_instance) return 0;
+    return (id - ACCEL_TOP_FIRST_OBJECT) / ACCEL_PARTS + 1;
+}
+
 /* --- building ----------------------------------------------------------------------------- */
 
 /* Adds one part of m (its opaque or its cut-out triangles) to rs as geometry `id`. Attaches
@@ -112,18 +122,42 @@ static int add_mesh(accel *a, RTCScene rs, const mesh *m, geom_kind kind, unsign
     return add_part(a, rs, m, ACCEL_PART_CUTOUT, kind, first + ACCEL_PART_CUTOUT, &g[ACCEL_PART_CUTOUT], err);
 }
 
+/* One BVH holding mesh m (its two parts in g[0] and g[1]), for instances to share. */
+static int build_shared(accel *a, const mesh *m, geom_kind kind, RTCScene *out, geom_info g[ACCEL_PARTS],
+                        err_buf *err)
+{
+    RTCScene ps = rtcNewScene(a->device);
+    if (!ps) return accel_device_error(a, err) ? -1 : err_set(err, "Embree could not create a scene");
+    *out = ps;
+    rtcSetSceneBuildQuality(ps, RTC_BUILD_QUALITY_HIGH);
+    if (add_mesh(a, ps, m, kind, 0, g, err)) return -1;
+    rtcCommitScene(ps);
+    return accel_device_error(a, err);
+}
+
 static int build_prototypes(accel *a, const scene *s, err_buf *err)
 {
-    for (uint32_t p = 0; p < s->n_prototypes; p++) {
-        RTCScene ps = rtcNewScene(a->device);
-        if (!ps) return accel_device_error(a, err) ? -1 : err_set(err, "Embree could not create a scene");
-        a->proto_scenes[p] = ps;
-        rtcSetSceneBuildQuality(ps, RTC_BUILD_QUALITY_HIGH);
-        if (add_mesh(a, ps, s->prototypes[p].mesh, GEOM_PROTOTYPE, 0, &a->proto_geoms[p * ACCEL_PARTS], err))
+    for (uint32_t p = 0; p < s->n_prototypes; p++)
+        if (build_shared(a, s->prototypes[p].mesh, GEOM_PROTOTYPE, &a->proto_scenes[p],
+                         &a->proto_geoms[p * ACCEL_PARTS], err))
             return -1;
-        rtcCommitScene(ps);
-        if (accel_device_error(a, err)) return -1;
-    }
+    for (uint32_t m = 0; m < s->n_models; m++)
+        if (build_shared(a, s->models[m].mesh, GEOM_OBJECT, &a->model_scenes[m], &a->model_geoms[m * ACCEL_PARTS],
+                         err))
+            return -1;
+    return 0;
+}
+
+/* An instance of the shared BVH sc at top-level id, placed by xf. */
+static int add_instance(accel *a, RTCScene sc, const xform3x4 *xf, unsigned id, err_buf *err)
+{
+    RTCGeometry g = rtcNewGeometry(a->device, RTC_GEOMETRY_TYPE_INSTANCE);
+    if (!g) return accel_device_error(a, err) ? -1 : err_nomem(err, "out of memory building the BVH");
+    rtcSetGeometryInstancedScene(g, sc);
+    rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, &xf->m[0][0]);
+    rtcCommitGeometry(g);
+    rtcAttachGeometryByID(a->top, g, id);
+    rtcReleaseGeometry(g);
     return 0;
 }
 
@@ -143,18 +177,16 @@ static int build_top(accel *a, const scene *s, err_buf *err)
             return -1;
     }
     for (uint32_t o = 0; o < s->n_objects; o++) {
+        const object *ob = &s->objects[o];
         unsigned id = accel_top_object_id(o, ACCEL_PART_OPAQUE);
-        if (add_mesh(a, a->top, s->objects[o].mesh, GEOM_OBJECT, id, &a->top_geoms[id], err)) return -1;
+        if (ob->mesh ? add_mesh(a, a->top, ob->mesh, GEOM_OBJECT, id, &a->top_geoms[id], err)
+                     : add_instance(a, a->model_scenes[ob->model], &ob->xf, id, err))
+            return -1;
     }
-    for (uint32_t i = 0; i < s->n_instances; i++) {
-        RTCGeometry g = rtcNewGeometry(a->device, RTC_GEOMETRY_TYPE_INSTANCE);
-        if (!g) return accel_device_error(a, err) ? -1 : err_nomem(err, "out of memory building the BVH");
-        rtcSetGeometryInstancedScene(g, a->proto_scenes[s->instances[i].prototype]);
-        rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, &s->instances[i].xf.m[0][0]);
-        rtcCommitGeometry(g);
-        rtcAttachGeometryByID(a->top, g, a->first_instance + i);
-        rtcReleaseGeometry(g);
-    }
+    for (uint32_t i = 0; i < s->n_instances; i++)
+        if (add_instance(a, a->proto_scenes[s->instances[i].prototype], &s->instances[i].xf, a->first_instance + i,
+                         err))
+            return -1;
     rtcCommitScene(a->top);
     return accel_device_error(a, err);
 }
@@ -178,10 +210,12 @@ int accel_build(accel *a, const scene *s, unsigned threads, err_buf *err)
 
     a->proto_scenes = calloc(s->n_prototypes ? s->n_prototypes : 1, sizeof(RTCScene));
     a->proto_geoms = calloc(s->n_prototypes ? (size_t)s->n_prototypes * ACCEL_PARTS : 1, sizeof(geom_info));
+    a->model_scenes = calloc(s->n_models ? s->n_models : 1, sizeof(RTCScene));
+    a->model_geoms = calloc(s->n_models ? (size_t)s->n_models * ACCEL_PARTS : 1, sizeof(geom_info));
     a->n_top_geoms = accel_top_object_id(s->n_objects, ACCEL_PART_OPAQUE);
     a->first_instance = a->n_top_geoms;
     a->top_geoms = calloc(a->n_top_geoms, sizeof(geom_info));
-    if (!a->proto_scenes || !a->proto_geoms || !a->top_geoms) {
+    if (!a->proto_scenes || !a->proto_geoms || !a->model_scenes || !a->model_geoms || !a->top_geoms) {
         err_nomem(err, "out of memory building the BVH");
         goto fail;
     }
@@ -204,9 +238,15 @@ void accel_free(accel *a)
         if (a->proto_scenes[p]) rtcReleaseScene(a->proto_scenes[p]);
     for (uint32_t g = 0; a->proto_geoms && g < ACCEL_PARTS * s->n_prototypes; g++)
         cutout_part_free(&a->proto_geoms[g].part);
+    for (uint32_t m = 0; a->model_scenes && m < s->n_models; m++)
+        if (a->model_scenes[m]) rtcReleaseScene(a->model_scenes[m]);
+    for (uint32_t g = 0; a->model_geoms && g < ACCEL_PARTS * s->n_models; g++)
+        cutout_part_free(&a->model_geoms[g].part);
     for (uint32_t g = 0; a->top_geoms && g < a->n_top_geoms; g++) cutout_part_free(&a->top_geoms[g].part);
     free(a->proto_scenes);
     free(a->proto_geoms);
+    free(a->model_scenes);
+    free(a->model_geoms);
     free(a->top_geoms);
     mesh_free(a->terrain_mesh);
     mesh_free(a->water_mesh);
@@ -222,8 +262,12 @@ void accel_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h)
     const geom_info *g;
     const xform3x4 *xf = NULL;
     unsigned inst = rh->hit.instID[0];
-    h->instance_id = 0, h->species_id = 0;
-    if (inst != RTC_INVALID_GEOMETRY_ID) {
+    h->instance_id = 0, h->species_id = 0, h->object_id = accel_hit_object(a, rh);
+    if (h->object_id && inst != RTC_INVALID_GEOMETRY_ID) {
+        const object *ob = &s->objects[h->object_id - 1];
+        g = &a->model_geoms[(uint32_t)ob->model * ACCEL_PARTS + rh->hit.geomID];
+        xf = &ob->xf;
+    } else if (inst != RTC_INVALID_GEOMETRY_ID) {
         uint32_t i = inst - a->first_instance;
         uint32_t p = s->instances[i].prototype;
         g = &a->proto_geoms[p * ACCEL_PARTS + rh->hit.geomID];

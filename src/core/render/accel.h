@@ -1,6 +1,7 @@
-/* accel.h — the scene in Embree 3: one BVH (RTCScene) per prototype, every instance a
- * single-level instance of its prototype's BVH in the top scene, and the terrain, the water
- * surface and the objects as plain meshes in the top scene, as the scene geometry builds them
+/* accel.h — the scene in Embree 3: one BVH (RTCScene) per prototype and per shared object
+ * model, every plant instance and every object that places a model a single-level instance of
+ * that BVH in the top scene, and the terrain, the water surface and the other objects (their
+ * own meshes) as plain meshes in the top scene, as the scene geometry builds them
  * (geometry/terrain_mesh.h, geometry/water_surface.h). Each mesh enters as two geometries, its
  * opaque triangles and its cut-out triangles (geometry/cutout.h); the cut-out ones carry
  * intersection and occlusion filters that discard hits where the texture's alpha is below one
@@ -31,8 +32,10 @@
  *   in a prototype's scene:  ACCEL_PART_OPAQUE (0) and ACCEL_PART_CUTOUT (1);
  *   in the top scene:        the terrain at ACCEL_TOP_TERRAIN + part (0, 1), the water at
  *                            ACCEL_TOP_WATER (2, opaque only), object o at
- *                            ACCEL_TOP_FIRST_OBJECT + 2 o + part (3 + 2 o, 4 + 2 o), and
- *                            instance i at first_instance + i, after the last object. */
+ *                            ACCEL_TOP_FIRST_OBJECT + 2 o + part (3 + 2 o, 4 + 2 o), or, when
+ *                            it places a model, the instance of the model's BVH at 3 + 2 o
+ *                            (whose own geometries are parts 0 and 1), and plant instance i
+ *                            at first_instance + i, after the last object. */
 typedef enum accel_part { ACCEL_PART_OPAQUE = 0, ACCEL_PART_CUTOUT = 1, ACCEL_PARTS = 2 } accel_part;
 enum { ACCEL_TOP_TERRAIN = 0, ACCEL_TOP_WATER = 2, ACCEL_TOP_FIRST_OBJECT = 3 };
 
@@ -59,6 +62,8 @@ typedef struct accel {
     const scene *scene;
     RTCScene *proto_scenes;    /* n_prototypes; owned (released) */
     geom_info *proto_geoms;    /* ACCEL_PARTS per prototype, at p * ACCEL_PARTS + part; owned */
+    RTCScene *model_scenes;    /* n_models; owned (released) */
+    geom_info *model_geoms;    /* ACCEL_PARTS per model, at m * ACCEL_PARTS + part; owned */
     geom_info *top_geoms;      /* per top-level non-instance geometry id; owned */
     uint32_t n_top_geoms;
     uint32_t first_instance;   /* top geomID of instance 0 */
@@ -78,6 +83,7 @@ typedef struct hit_info {
     vec3 albedo;               /* material albedo times texture colour */
     uint32_t instance_id;      /* instance index + 1, 0 when not an instance */
     uint32_t species_id;       /* species index + 1, 0 when not a plant */
+    uint32_t object_id;        /* object index + 1, 0 when not an object */
     geom_kind kind;
 } hit_info;
 
@@ -88,6 +94,9 @@ void accel_free(accel *a); /* accepts a zeroed accel */
 /* The first error Embree reported on a's device since it was built, into err: returns -1 with
  * it, or 0 when there was none. Call it on the thread that owns err, after tracing. */
 int accel_device_error(const accel *a, err_buf *err);
+
+/* The object a hit lies on: its index + 1, or 0 when it is not on an object. */
+uint32_t accel_hit_object(const accel *a, const struct RTCRayHit *rh);
 
 /* Shading data for a hit of ray (org, dir). */
 void accel_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h);

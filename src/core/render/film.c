@@ -46,10 +46,13 @@ film *film_new(uint32_t w, uint32_t h, err_buf *err)
         f->albedo = calloc(n * 3, sizeof(float));
         f->instance_id = calloc(n, sizeof(uint32_t));
         f->species_id = calloc(n, sizeof(uint32_t));
+        f->object_id = calloc(n, sizeof(uint32_t));
+        f->development = calloc(n, sizeof(float));
         f->pixel_class = calloc(n, 1);
         f->coverage = calloc(n, sizeof(float));
     }
     if (!f || !f->rgb || !f->depth || !f->normal || !f->albedo || !f->instance_id || !f->species_id ||
+        !f->object_id || !f->development ||
         !f->pixel_class || !f->coverage) {
         film_free(f);
         err_nomem(err, "out of memory for a %ux%u frame", w, h);
@@ -62,7 +65,7 @@ void film_free(film *f)
 {
     if (!f) return;
     free(f->rgb), free(f->depth), free(f->normal), free(f->albedo), free(f->instance_id), free(f->species_id);
-    free(f->pixel_class), free(f->coverage);
+    free(f->object_id), free(f->development), free(f->pixel_class), free(f->coverage);
     free(f);
 }
 
@@ -88,7 +91,8 @@ uint8_t *film_tonemap(const film *f, double exposure_stops)
 int film_write_exr(const film *f, const char *path, err_buf *err)
 {
     exr_frame fr = {.width = f->width, .height = f->height, .rgb = f->rgb, .depth = f->depth, .normal = f->normal,
-                    .albedo = f->albedo, .instance_id = f->instance_id, .species_id = f->species_id, .rgb_half = 0};
+                    .albedo = f->albedo, .instance_id = f->instance_id, .species_id = f->species_id,
+                    .object_id = f->object_id, .development = f->development, .rgb_half = 0};
     return exr_write(path, &fr, err);
 }
 

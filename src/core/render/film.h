@@ -8,7 +8,8 @@
  * values.
  *
  * The class and coverage layers serve comparisons (the POV-Ray cross-check); they are not
- * written to the EXR.
+ * written to the EXR. The development layer is: the antialiased coverage of the objects marked
+ * as the development, for compositing them over a photograph.
  *
  * Ownership: film_new allocates all layers; film_free releases them. */
 #ifndef SYLVA_FILM_H
@@ -33,6 +34,8 @@ typedef struct film {
     float *albedo;         /* 3 per pixel */
     uint32_t *instance_id; /* 1 per pixel */
     uint32_t *species_id;  /* 1 per pixel */
+    uint32_t *object_id;   /* 1 per pixel: object index + 1, 0 for none */
+    float *development;    /* 1 per pixel: share of the camera samples that hit the development */
     uint8_t *pixel_class;  /* 1 per pixel: a pixel_class */
     float *coverage;       /* 1 per pixel: share of the camera samples that hit a surface */
 } film;

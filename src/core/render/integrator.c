@@ -63,7 +63,15 @@ static vec3 offset_point(vec3 p, vec3 ng, vec3 d)
     return v3_madd(p, ng, v3_dot(ng, d) >= 0.0f ? eps : -eps);
 }
 
-/* *hit: 1 when the camera ray hit a surface. */
+/* 1 when the camera ray's hit rh lies on an object of the development. */
+static int on_development(const accel *a, const struct RTCRayHit *rh)
+{
+    uint32_t o = accel_hit_object(a, rh);
+    return o && a->scene->objects[o - 1].development;
+}
+
+/* *hit: 0 when the camera ray hit nothing, 1 when it hit a surface, 2 when that surface is part
+ * of the development. */
 static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec3 d, int *hit)
 {
     const accel *a = ctx->accel;
@@ -74,7 +82,7 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
         struct RTCRayHit rh;
         ray_init(&rh, o, d, 0.0f, INFINITY);
         int found = trace(ctx, &rh);
-        if (depth == 0) *hit = found;
+        if (depth == 0) *hit = found ? 1 + on_development(a, &rh) : 0;
         if (!found) {
             /* The camera sees the exact sky; light reaching surfaces uses the tabulated sky, the
              * same function next-event estimation samples, so both MIS strategies agree. */
@@ -152,8 +160,10 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
 
 /* The verification samples of pixel (x, y): the centre, then (grid > 1) a grid x grid grid;
  * camera rays go to Embree as coherent streams, then the shadow rays of the hits the sun can
- * light. Sets *rgb to the samples' mean and *coverage to the share that hit a surface. */
-static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t grid, vec3 *rgb, float *coverage)
+ * light. Sets *rgb to the samples' mean, *coverage to the share that hit a surface and
+ * *development to the share that hit the development. */
+static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t grid, vec3 *rgb, float *coverage,
+                         float *development)
 {
     const accel *a = ctx->accel;
     const light_summary *l = &ctx->lights->summary;
@@ -162,7 +172,7 @@ static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t
     struct RTCRay shadow[VERIFY_STREAM];
     vec3 albedo[VERIFY_STREAM];
     float cosine[VERIFY_STREAM]; /* n.l where the sun may light the hit, else 0 */
-    uint32_t owner[VERIFY_STREAM], hits = 0;
+    uint32_t owner[VERIFY_STREAM], hits = 0, dev_hits = 0;
     struct RTCIntersectContext ic;
     vec3 sum = v3(0, 0, 0);
     for (uint32_t s0 = 0; s0 < n; s0 += VERIFY_STREAM) {
@@ -181,6 +191,7 @@ static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t
             cosine[i] = 0.0f;
             if (rh[i].hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
             hits++;
+            dev_hits += (uint32_t)on_development(a, &rh[i]);
             hit_info h;
             accel_shade(a, &rh[i], &h);
             vec3 wo = v3(-rh[i].ray.dir_x, -rh[i].ray.dir_y, -rh[i].ray.dir_z);
@@ -214,6 +225,7 @@ static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t
     }
     *rgb = v3_scale(sum, 1.0f / (float)n);
     *coverage = (float)hits / (float)n;
+    *development = (float)dev_hits / (float)n;
 }
 
 static void aux_layers(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_result *out)
@@ -224,7 +236,7 @@ static void aux_layers(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_resu
     if (!trace(ctx, &rh)) {
         out->depth = INFINITY;
         out->normal = v3(0, 0, 0), out->albedo = v3(0, 0, 0);
-        out->instance_id = out->species_id = 0;
+        out->instance_id = out->species_id = out->object_id = 0;
         out->pixel_class = PIXEL_SKY;
         return;
     }
@@ -235,6 +247,7 @@ static void aux_layers(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_resu
     out->albedo = h.albedo;
     out->instance_id = h.instance_id;
     out->species_id = h.species_id;
+    out->object_id = h.object_id;
     switch (h.kind) {
     case GEOM_TERRAIN:
     case GEOM_WATER: out->pixel_class = PIXEL_TERRAIN; break;
@@ -248,13 +261,13 @@ void integrate_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_result
     if (ctx->verify) {
         uint32_t grid = 1; /* spp rounded down to a square */
         while ((grid + 1) * (grid + 1) <= ctx->spp) grid++;
-        verify_pixel(ctx, x, y, grid, &out->rgb, &out->coverage);
+        verify_pixel(ctx, x, y, grid, &out->rgb, &out->coverage, &out->development);
         aux_layers(ctx, x, y, out);
         return;
     }
     uint64_t pixel = (uint64_t)y * ctx->camera.width + x;
     vec3 sum = v3(0, 0, 0);
-    uint32_t n = ctx->spp, hits = 0;
+    uint32_t n = ctx->spp, hits = 0, dev_hits = 0;
     for (uint32_t s = 0; s < n; s++) {
         sampler smp;
         sampler_start(&smp, ctx->seed, pixel, s);
@@ -264,8 +277,10 @@ void integrate_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_result
         if (!(isfinite(L.x) && isfinite(L.y) && isfinite(L.z))) L = v3(0, 0, 0);
         sum = v3_add(sum, L);
         hits += hit != 0;
+        dev_hits += hit == 2;
     }
     out->rgb = v3_scale(sum, 1.0f / (float)n);
     out->coverage = (float)hits / (float)n;
+    out->development = (float)dev_hits / (float)n;
     aux_layers(ctx, x, y, out);
 }

@@ -13,7 +13,8 @@
  * regular R x R grid of rays at sub-pixel offsets (i + 0.5) / R - 0.5.
  *
  * Auxiliary layers (depth, normal, albedo, ids, class) come from one ray through the pixel
- * centre; coverage is the share of the camera samples whose first ray hit a surface. */
+ * centre; coverage is the share of the camera samples whose first ray hit a surface, and
+ * development the share whose first ray hit an object marked as part of the development. */
 #ifndef SYLVA_INTEGRATOR_H
 #define SYLVA_INTEGRATOR_H
 
@@ -42,9 +43,10 @@ typedef struct pixel_result {
     float depth;
     vec3 normal;
     vec3 albedo;
-    uint32_t instance_id, species_id;
+    uint32_t instance_id, species_id, object_id;
     uint8_t pixel_class;  /* a pixel_class (render/film.h) */
     float coverage;
+    float development;
 } pixel_result;
 
 void integrate_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_result *out);

@@ -41,6 +41,8 @@ static void render_tile(render_job *job, uint32_t tile)
             f->albedo[k * 3] = r.albedo.x, f->albedo[k * 3 + 1] = r.albedo.y, f->albedo[k * 3 + 2] = r.albedo.z;
             f->instance_id[k] = r.instance_id;
             f->species_id[k] = r.species_id;
+            f->object_id[k] = r.object_id;
+            f->development[k] = r.development;
             f->pixel_class[k] = r.pixel_class;
             f->coverage[k] = r.coverage;
         }

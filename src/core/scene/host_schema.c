@@ -17,7 +17,8 @@
 #define REQ SYLVA_PARAM_REQUIRED
 
 const char *const host_sections[] = {"image",   "camera",  "sun",     "sky",     "materials",
-                                     "terrain", "species", "plants",  "ecology", "objects", NULL};
+                                     "terrain", "species", "plants",  "ecology", "groups",
+                                     "objects", NULL};
 
 const char *const host_shape_names[] = {"mesh", "box", "sphere", "quad", "disk", NULL};
 const char *const host_sky_models[] = {"none", "constant", "preetham", NULL};
@@ -265,13 +266,29 @@ const host_schema host_schema_plant = {"plants item", "One plant placed by hand.
                                        COUNT(plant_params)};
 
 /* --- objects -------------------------------------------------------------------------------- */
+/* Keys every kind of object has: its name, where it stands and how it is turned, whether it is
+ * part of the development, and the CSV layout that places it many times. */
+#define OBJECT_COMMON_KEYS                                                                          \
+    {.name = "name", .type = SYLVA_P_STRING,                                                        \
+     .help = "Label used in messages and in the object-id layer (default: objects[<index>])."},    \
+    {.name = "position", .type = SYLVA_P_LIST, .min_len = 2, .max_len = 3, .def_list = zero3,      \
+     .def_len = 3, .unit = "m",                                                                     \
+     .help = "[x, y, z] of the object's origin, or [x, y] to stand on the terrain."},              \
+    {.name = "heading", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = -360,           \
+     .max = 360, .unit = "deg",                                                                     \
+     .help = "Compass bearing the object's +Y axis turns to, clockwise from north (+Y)."},         \
+    {.name = "height_above_ground", .type = SYLVA_P_REAL, .unit = "m",                             \
+     .help = "With a 2-number position: the origin stands this high above the terrain."},          \
+    {.name = "development", .type = SYLVA_P_BOOL, .def = 0,                                        \
+     .help = "Part of the development: drawn into the EXR's coverage mask layer."},                \
+    {.name = "layout", .type = SYLVA_P_PATH,                                                       \
+     .help = "CSV of placements (id, easting/northing or x/y, heading, height_above_ground): one " \
+             "object per row."}
+
 static const sylva_param_spec object_params[] = {
-    {.name = "name", .type = SYLVA_P_STRING,
-     .help = "Label used in messages and in the object-id layer (default: objects[<index>])."},
+    OBJECT_COMMON_KEYS,
     {.name = "shape", .type = SYLVA_P_ENUM, .flags = REQ, .choices = host_shape_names,
      .help = "Built-in shape: mesh, box, sphere, quad or disk; its keys sit beside this one."},
-    {.name = "position", .type = SYLVA_P_VEC3, .def_list = zero3, .def_len = 3, .unit = "m",
-     .help = "Where the shape's origin goes."},
     {.name = "rotation", .type = SYLVA_P_VEC3, .def_list = zero3, .def_len = 3, .unit = "deg",
      .help = "Rotations about X, then Y, then Z."},
     {.name = "scale", .type = SYLVA_P_VEC3, .flags = MIN_X, .min = 0, .def_list = one3,
@@ -281,6 +298,32 @@ static const sylva_param_spec object_params[] = {
 };
 const host_schema host_schema_object = {"objects item", "A man-made object built from a shape.",
                                         object_params, COUNT(object_params)};
+
+const char *const host_model_up_axes[] = {"file", "y", "z", NULL};
+
+static const sylva_param_spec object_model_params[] = {
+    OBJECT_COMMON_KEYS,
+    {.name = "model", .type = SYLVA_P_PATH, .flags = REQ,
+     .help = "3-D model file: .obj, .gltf, .glb, .ply, .stl, .fbx, .dae or .3ds."},
+    {.name = "rotation", .type = SYLVA_P_VEC3, .def_list = zero3, .def_len = 3, .unit = "deg",
+     .help = "Rotations of the model about X, then Y, then Z, before the heading."},
+    {.name = "scale", .type = SYLVA_P_REAL, .flags = MIN_X, .def = 1, .min = 0, .unit = "m",
+     .help = "Metres per model unit, after the file's own unit (0.0254 for a model in inches)."},
+    {.name = "up_axis", .type = SYLVA_P_ENUM, .def_str = "file", .choices = host_model_up_axes,
+     .help = "Up axis of an OBJ, STL or PLY file (y or z); other formats state their own."},
+};
+const host_schema host_schema_object_model = {
+    "objects item with a model", "A man-made object read from a 3-D model file.",
+    object_model_params, COUNT(object_model_params)};
+
+static const sylva_param_spec object_group_params[] = {
+    OBJECT_COMMON_KEYS,
+    {.name = "group", .type = SYLVA_P_STRING, .flags = REQ,
+     .help = "Name of a group under groups:, placed as one object."},
+};
+const host_schema host_schema_object_group = {
+    "objects item with a group", "A group's parts placed as one object.", object_group_params,
+    COUNT(object_group_params)};
 
 /* --- ecology -------------------------------------------------------------------------------- */
 static const sylva_param_spec ecology_params[] = {
@@ -363,7 +406,8 @@ const host_schema *host_schema_at(uint32_t i)
         &host_schema_image,        &host_schema_camera,       &host_schema_sun,
         &host_schema_sky,          &host_schema_material,     &host_schema_terrain,
         &host_schema_species,      &host_schema_plant,        &host_schema_ecology,
-        &host_schema_object,       &host_schema_shape_box,    &host_schema_shape_sphere,
+        &host_schema_object,       &host_schema_object_model, &host_schema_object_group,
+        &host_schema_shape_box,    &host_schema_shape_sphere,
         &host_schema_shape_quad,   &host_schema_shape_disk,   &host_schema_shape_mesh};
     return i < COUNT(all) ? all[i] : NULL;
 }

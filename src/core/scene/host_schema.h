@@ -33,6 +33,8 @@ extern const host_schema host_schema_terrain;      /* terrain's host keys */
 extern const host_schema host_schema_species;      /* a species' host keys */
 extern const host_schema host_schema_plant;        /* one item of plants: */
 extern const host_schema host_schema_object;       /* one item of objects: (without shape keys) */
+extern const host_schema host_schema_object_model; /* one item of objects: with model: */
+extern const host_schema host_schema_object_group; /* one item of objects: with group: */
 extern const host_schema host_schema_ecology;      /* ecology's host keys */
 extern const host_schema host_schema_shape_box;
 extern const host_schema host_schema_shape_sphere;
@@ -58,6 +60,7 @@ const char *host_reserved_key_clash(const sylva_param_spec *params, uint32_t n,
 extern const char *const host_shape_names[];
 extern const char *const host_sky_models[];
 extern const char *const host_material_types[];
+extern const char *const host_model_up_axes[]; /* model_up order: file, y, z */
 
 /* Image size limit (width and height), pixels. */
 #define HOST_IMAGE_MAX_SIZE 16384

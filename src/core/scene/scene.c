@@ -1,5 +1,5 @@
 /* scene.c — the scene graph's storage: growable arrays of materials, textures, prototypes,
- * instances and objects, and terrain queries. */
+ * instances, objects and shared models, and terrain queries. */
 #include "scene/scene.h"
 
 #include <stdlib.h>
@@ -52,6 +52,7 @@ void scene_free(scene *s)
     for (uint32_t i = 0; i < s->n_species; i++) free(s->species[i].name);
     for (uint32_t i = 0; i < s->n_prototypes; i++) mesh_free(s->prototypes[i].mesh);
     for (uint32_t i = 0; i < s->n_objects; i++) free(s->objects[i].name), mesh_free(s->objects[i].mesh);
+    for (uint32_t i = 0; i < s->n_models; i++) free(s->models[i].name), mesh_free(s->models[i].mesh);
     free(s->materials);
     name_index_free(&s->material_names);
     free(s->textures);
@@ -59,6 +60,7 @@ void scene_free(scene *s)
     free(s->prototypes);
     free(s->instances);
     free(s->objects);
+    free(s->models);
     free(s);
 }
 
@@ -123,16 +125,50 @@ int32_t scene_add_instance(scene *s, uint32_t proto, const xform3x4 *xf, err_buf
     return (int32_t)s->n_instances++;
 }
 
-int32_t scene_add_object(scene *s, const char *name, mesh *m, err_buf *err)
+/* Adds ob (its name copied); frees ob.mesh on failure. */
+static int32_t add_object(scene *s, const char *name, object ob, err_buf *err)
 {
-    char *nm = strdup(name ? name : "object");
-    if (!nm || grow((void **)&s->objects, &s->cap_objects, s->n_objects + 1, sizeof(object))) {
-        free(nm);
-        mesh_free(m);
+    ob.name = strdup(name ? name : "object");
+    if (!ob.name || grow((void **)&s->objects, &s->cap_objects, s->n_objects + 1, sizeof(object))) {
+        free(ob.name);
+        mesh_free(ob.mesh);
         return err_nomem(err, "out of memory adding object '%s'", name ? name : "object");
     }
-    s->objects[s->n_objects] = (object){.name = nm, .mesh = m};
+    s->objects[s->n_objects] = ob;
     return (int32_t)s->n_objects++;
+}
+
+int32_t scene_add_object(scene *s, const char *name, mesh *m, err_buf *err)
+{
+    return add_object(s, name, (object){.mesh = m, .model = -1, .xf = xf_identity()}, err);
+}
+
+int32_t scene_add_model_object(scene *s, const char *name, uint32_t model_index, const xform3x4 *xf, err_buf *err)
+{
+    return add_object(s, name, (object){.mesh = NULL, .model = (int32_t)model_index, .xf = *xf}, err);
+}
+
+int32_t scene_add_model(scene *s, const char *name, mesh *m, err_buf *err)
+{
+    char *nm = strdup(name ? name : "model");
+    if (!nm || grow((void **)&s->models, &s->cap_models, s->n_models + 1, sizeof(object_model))) {
+        free(nm);
+        mesh_free(m);
+        return err_nomem(err, "out of memory adding model '%s'", name ? name : "model");
+    }
+    s->models[s->n_models] = (object_model){.name = nm, .mesh = m};
+    return (int32_t)s->n_models++;
+}
+
+const mesh *scene_object_mesh(const scene *s, uint32_t o, const xform3x4 **xf)
+{
+    const object *ob = &s->objects[o];
+    if (ob->mesh) {
+        if (xf) *xf = NULL;
+        return ob->mesh;
+    }
+    if (xf) *xf = &ob->xf;
+    return s->models[ob->model].mesh;
 }
 
 int32_t scene_find_material(const scene *s, const char *name)

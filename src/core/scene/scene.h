@@ -1,6 +1,6 @@
 /* scene.h — the scene graph a back end renders: terrain, species prototypes (meshes, several
- * age variants per species), instances of them, objects, materials and textures, the camera,
- * sun, sky and image settings.
+ * age variants per species), instances of them, objects (each its own mesh, or an instance of
+ * a shared model mesh), materials and textures, the camera, sun, sky and image settings.
  *
  * Ownership: a scene owns everything in it: meshes, the terrain heightfield, textures,
  * material names and the arrays. scene_free releases it all. Settings are copied from the
@@ -53,9 +53,21 @@ typedef struct instance {
     xform3x4 xf;              /* prototype frame → world */
 } instance;
 
+/* A mesh that several objects share: an imported model file or a part of a group. Objects
+ * place it as instances, as plants place a species' prototype: 20 turbines hold one copy. */
+typedef struct object_model {
+    char *name;               /* owned; the file or part it came from, for messages and exports */
+    mesh *mesh;               /* owned; in the model's own frame (metres, Z up) */
+} object_model;
+
+/* An object is either its own mesh in world space (a built-in shape of the objects section)
+ * or an instance of a model: mesh NULL, model >= 0, xf its placement. */
 typedef struct object {
     char *name;               /* owned */
-    mesh *mesh;               /* owned; world space (the object's transform applied) */
+    mesh *mesh;               /* owned; world space (the object's transform applied), or NULL */
+    int32_t model;            /* index into scene.models when mesh is NULL, else -1 */
+    xform3x4 xf;              /* model frame → world (model instances only) */
+    int development;          /* 1: part of the development's coverage mask */
 } object;
 
 typedef struct scene {
@@ -75,6 +87,7 @@ typedef struct scene {
     prototype *prototypes; uint32_t n_prototypes, cap_prototypes; /* owned */
     instance *instances; uint32_t n_instances, cap_instances;  /* owned */
     object *objects; uint32_t n_objects, cap_objects;          /* owned */
+    object_model *models; uint32_t n_models, cap_models;              /* owned */
     int32_t default_material;   /* grey Lambertian, always present */
 } scene;
 
@@ -89,6 +102,13 @@ int32_t scene_add_prototype(scene *s, uint32_t species, uint32_t variant, double
                             double height, mesh *m, err_buf *err); /* takes m */
 int32_t scene_add_instance(scene *s, uint32_t prototype, const xform3x4 *xf, err_buf *err);
 int32_t scene_add_object(scene *s, const char *name, mesh *m, err_buf *err); /* takes m */
+int32_t scene_add_model(scene *s, const char *name, mesh *m, err_buf *err);  /* takes m */
+/* An object that places model model_index by xf (model frame → world). */
+int32_t scene_add_model_object(scene *s, const char *name, uint32_t model_index, const xform3x4 *xf,
+                               err_buf *err);
+/* The mesh an object shows (its own, or its model's) and its transform to world space (NULL
+ * when the mesh is already in world space). */
+const mesh *scene_object_mesh(const scene *s, uint32_t o, const xform3x4 **xf);
 /* The first material named `name`, or -1 (a hash lookup). */
 int32_t scene_find_material(const scene *s, const char *name);
 

@@ -103,10 +103,8 @@ static int build_terrain(scene *s, const scene_file *sf, const plugin_registry *
     return rc;
 }
 
-/* A new mesh (the caller frees it) of a built-in shape in the named material (NULL: the
- * default), or NULL with err placed at the shape's block, whose kind and name it gives. */
-static mesh *build_shape(const scene *s, const shape_spec *shape, const char *material_name, const scene_file *sf,
-                         uint32_t line, uint32_t column, const char *kind, const char *name, err_buf *err)
+mesh *scene_shape_mesh(const scene *s, const shape_spec *shape, const char *material_name, const char *file,
+                       uint32_t line, uint32_t column, const char *kind, const char *name, err_buf *err)
 {
     int32_t mat = material_name ? scene_find_material(s, material_name) : s->default_material;
     mesh *m = mesh_new();
@@ -117,7 +115,7 @@ static mesh *build_shape(const scene *s, const shape_spec *shape, const char *ma
     }
     if (!m) {
         err_prefix(err, "%s '%s': ", kind, name ? name : "");
-        err_locate(err, sf->path, line, column);
+        err_locate(err, file, line, column);
     }
     return m;
 }
@@ -126,7 +124,7 @@ static mesh *build_shape(const scene *s, const shape_spec *shape, const char *ma
 static int build_shape_species(scene *s, const scene_file *sf, uint32_t i, err_buf *err)
 {
     const species_spec *sp = &sf->species[i];
-    mesh *m = build_shape(s, &sp->shape, sp->material, sf, sp->line, sp->column, "species", sp->name, err);
+    mesh *m = scene_shape_mesh(s, &sp->shape, sp->material, sf->path, sp->line, sp->column, "species", sp->name, err);
     if (!m) return -1;
     float lo[3], hi[3];
     mesh_bounds(m, lo, hi);
@@ -250,26 +248,6 @@ static int build_ecology(scene *s, const scene_file *sf, const plugin_registry *
     return rc;
 }
 
-static int build_objects(scene *s, const scene_file *sf, err_buf *err)
-{
-    for (uint32_t i = 0; i < sf->n_objects; i++) {
-        const object_spec *o = &sf->objects[i];
-        mesh *m = build_shape(s, &o->shape, o->material, sf, o->line, o->column, "object", o->name, err);
-        if (!m) return -1;
-        xform3x4 xf = xf_trs(v3((float)o->position[0], (float)o->position[1], (float)o->position[2]),
-                             v3((float)o->rotation_deg[0], (float)o->rotation_deg[1], (float)o->rotation_deg[2]),
-                             v3((float)o->scale[0], (float)o->scale[1], (float)o->scale[2]));
-        for (uint32_t v = 0; v < m->nv; v++) {
-            vec3 p = xf_point(&xf, v3(m->pos[v * 3], m->pos[v * 3 + 1], m->pos[v * 3 + 2]));
-            vec3 n = v3_norm(xf_normal(&xf, v3(m->nrm[v * 3], m->nrm[v * 3 + 1], m->nrm[v * 3 + 2])));
-            m->pos[v * 3] = p.x, m->pos[v * 3 + 1] = p.y, m->pos[v * 3 + 2] = p.z;
-            m->nrm[v * 3] = n.x, m->nrm[v * 3 + 1] = n.y, m->nrm[v * 3 + 2] = n.z;
-        }
-        if (scene_add_object(s, o->name, m, err) < 0) return -1;
-    }
-    return 0;
-}
-
 scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const build_options *opt, err_buf *err)
 {
     build_options defaults = {0};
@@ -283,7 +261,7 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
     plugin_call_output out = {.verbose = opt->verbose, .quiet = opt->quiet};
     if (add_materials(s, sf, err) || build_terrain(s, sf, plugins, &out, err) ||
         build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) ||
-        build_ecology(s, sf, plugins, opt, &out, err) || build_objects(s, sf, err)) {
+        build_ecology(s, sf, plugins, opt, &out, err) || scene_build_objects(s, sf, err)) {
         scene_free(s);
         return NULL;
     }

@@ -26,6 +26,17 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
  * the terrain when snap_to_terrain is set. Returns 0, or -1 with err naming the plant. */
 int scene_place_plants(scene *s, const sylva_plant *plants, uint32_t n, err_buf *err);
 
+/* The objects: built-in shapes as meshes in world space, model files and groups' parts as
+ * shared models placed by instances (one model per file, scale and up axis, however many
+ * objects use it), heights resolved against the terrain (scene_build_objects.c). Returns 0, or
+ * -1 with err located at the object. Materials and the terrain must be built first. */
+int scene_build_objects(scene *s, const scene_file *sf, err_buf *err);
+
+/* A new mesh (the caller frees it) of a built-in shape in the named material (NULL: the
+ * default), or NULL with err placed at file:line:column and naming the kind and name. */
+mesh *scene_shape_mesh(const scene *s, const shape_spec *shape, const char *material_name, const char *file,
+                       uint32_t line, uint32_t column, const char *kind, const char *name, err_buf *err);
+
 /* The transform of a plant: translate to p, rotate by rot_deg about +Z, scale uniformly. */
 xform3x4 plant_transform(const double p[3], double rot_deg, double scale);
 

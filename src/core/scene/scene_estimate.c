@@ -41,6 +41,7 @@ int scene_estimate_check(const scene_file *sf, err_buf *err)
     uint32_t line = 1, column = 1;
     for (uint32_t i = 0; i < sf->n_objects; i++) {
         const object_spec *o = &sf->objects[i];
+        if (o->kind != OBJECT_SHAPE) continue; /* models are counted as they are read */
         uint64_t b = shape_bytes(&o->shape), v, t;
         shape_counts(&o->shape, &v, &t);
         total += b, triangles += t;

@@ -89,6 +89,7 @@ static int load(loader *L, const char *path)
                         ter ? ter->key_column : 0) ||
         sf_read_species(L, ynode_get(L->root, "species")) ||
         sf_read_plants(L, ynode_get(L->root, "plants")) ||
+        sf_read_groups(L, ynode_get(L->root, "groups")) ||
         sf_read_objects(L, ynode_get(L->root, "objects")))
         return -1;
     if (scene_estimate_check(L->sf, L->err)) return -1; /* before any mesh is built */

@@ -97,13 +97,40 @@ typedef struct material_spec {
     uint32_t line, column;
 } material_spec;
 
+/* What an object is: a built-in shape, a model file, or a group of parts placed as one. */
+typedef enum object_kind { OBJECT_SHAPE = 0, OBJECT_MODEL = 1, OBJECT_GROUP = 2 } object_kind;
+
+/* How an object's height is found (docs/scene-file.md, objects). */
+typedef enum object_base {
+    OBJECT_AT_Z = 0,          /* position gave z */
+    OBJECT_ABOVE_GROUND = 1,  /* origin height_above_ground above the terrain at (x, y) */
+    OBJECT_ON_GROUND = 2      /* lowest point on the lowest terrain under the footprint */
+} object_base;
+
 typedef struct object_spec {
     const char *name;
-    shape_spec shape;
+    object_kind kind;
+    shape_spec shape;         /* OBJECT_SHAPE */
+    const char *model_path;   /* OBJECT_MODEL: resolved path */
+    double model_scale;       /* OBJECT_MODEL: metres per file unit (after the file's own unit) */
+    int model_up;             /* OBJECT_MODEL: a model_up (model_import.h) */
+    uint32_t group;           /* OBJECT_GROUP: index into scene_file.groups */
     double position[3], rotation_deg[3], scale[3];
+    double heading_deg;       /* clockwise from north (+Y) about +Z, after rotation */
+    object_base base;
+    double height_above_ground; /* OBJECT_ABOVE_GROUND */
+    int development;          /* 1: in the development's coverage mask */
     const char *material;     /* a material name (checked to exist), or NULL for the default */
+    const char *file;         /* where it is written: the scene file, or a layout CSV */
     uint32_t line, column;
 } object_spec;
+
+/* A group: parts (shapes or models, positioned in the group's frame) placed as one object. */
+typedef struct group_spec {
+    const char *name;
+    object_spec *parts; uint32_t n_parts;
+    uint32_t line, column;
+} group_spec;
 
 typedef struct species_spec {
     const char *name;
@@ -156,7 +183,8 @@ typedef struct scene_file {
     species_spec *species; uint32_t n_species;
     plant_spec *plants; uint32_t n_plants;
     ecology_spec ecology;
-    object_spec *objects; uint32_t n_objects;
+    group_spec *groups; uint32_t n_groups;
+    object_spec *objects; uint32_t n_objects; /* layouts expanded: one per CSV row */
     material_spec *materials; uint32_t n_materials;
     name_index material_names;  /* name → index into materials; owned (its table) */
     name_index species_names;   /* name → index into species; owned (its table) */

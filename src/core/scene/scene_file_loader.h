@@ -13,7 +13,9 @@
  *   scene_file_includes.c   gathering species across included files
  *   scene_file_species.c    each species' keys, plugin or shape, ecology block
  *   scene_file_plants.c     the plants section
- *   scene_file_objects.c    the objects section
+ *   scene_file_groups.c     the groups section (parts placed as one object)
+ *   scene_file_objects.c    the objects section, and one object entry (also a group's part)
+ *   scene_file_layout.c     a layout CSV of placements
  *
  * Every function returns 0, or -1 with L->err set (a message located in the file). Everything
  * allocated lives in L->a, the scene_file's arena, except the scene_file's name indexes.
@@ -114,6 +116,25 @@ int sf_read_ecology(loader *L, const ynode *node, uint32_t line, uint32_t column
 int sf_read_terrain(loader *L, const ynode *node, uint32_t line, uint32_t column);
 int sf_read_species(loader *L, const ynode *node);
 int sf_read_plants(loader *L, const ynode *node);
+int sf_read_groups(loader *L, const ynode *node);
 int sf_read_objects(loader *L, const ynode *node);
+
+/* --- objects (scene_file_objects.c) --- */
+/* Reads one objects entry (a shape, a model or a group) into o. part: 1 for a group's part,
+ * which is a shape or a model at an [x, y, z] of the group's frame. *layout is the entry's
+ * layout CSV path (resolved), or NULL. */
+int sf_read_object(loader *L, const ynode *item, const char *where, int part, object_spec *o,
+                   const char **layout);
+
+/* --- layouts (scene_file_layout.c) --- */
+typedef struct layout_row {
+    const char *id;
+    double xy[2];               /* local metres (map coordinates less the site origin) */
+    int has_heading, has_height;
+    double heading_deg, height_above_ground;
+    uint32_t line;
+} layout_row;
+/* Reads the CSV at path (shown: its name in messages) into rows in the arena. */
+int sf_read_layout(loader *L, const char *path, const char *shown, layout_row **rows, uint32_t *n);
 
 #endif

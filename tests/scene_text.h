@@ -1,0 +1,68 @@
+/* scene_text.h — scene files written by a test into its work folder (work_dir.h), loaded and
+ * built without plugins, rendered, and the world bounds of a built object. Header-only, for the test
+ * executables. */
+#ifndef SYLVA_TEST_SCENE_TEXT_H
+#define SYLVA_TEST_SCENE_TEXT_H
+
+#include <math.h>
+
+#include "harness.h"
+#include "work_dir.h"
+#include "render/film.h"
+#include "render/render.h"
+#include "scene/scene_build.h"
+#include "scene/scene_file.h"
+
+/* Writes text as scene.yaml in the work folder and builds it; NULL with err on failure. The
+ * caller frees the scene with scene_free. */
+static inline scene *scene_text_build(const char *text, err_buf *err)
+{
+    const char *path = work_file("scene.yaml", text);
+    if (!path) {
+        err_set(err, "cannot write scene.yaml in the work folder");
+        return NULL;
+    }
+    scene_file *sf = scene_file_load(path, NULL, err);
+    if (!sf) return NULL;
+    scene *s = scene_build(sf, NULL, NULL, err);
+    scene_file_free(sf);
+    return s;
+}
+
+/* As scene_text_build; the test fails (and the message is printed) when it does not build. */
+static inline scene *scene_text_build_ok(const char *text)
+{
+    err_buf err = {{0}};
+    scene *s = scene_text_build(text, &err);
+    if (!s) fprintf(stderr, "%s\n", err.msg);
+    CHECK(s != NULL);
+    return s;
+}
+
+/* Renders s at its own settings on two threads; the test fails (and the message is printed)
+ * when it cannot. The caller frees the film with film_free. */
+static inline film *scene_text_render(const scene *s)
+{
+    render_options ro = {.threads = 2, .quiet = 1};
+    err_buf err = {{0}};
+    film *f = render_scene(s, &ro, NULL, &err);
+    if (!f) fprintf(stderr, "%s\n", err.msg);
+    CHECK(f != NULL);
+    return f;
+}
+
+/* The world bounds of object o's vertices. */
+static inline void scene_text_object_bounds(const scene *s, uint32_t o, double lo[3], double hi[3])
+{
+    const xform3x4 *xf;
+    const mesh *m = scene_object_mesh(s, o, &xf);
+    for (int d = 0; d < 3; d++) lo[d] = INFINITY, hi[d] = -INFINITY;
+    for (uint32_t v = 0; v < m->nv; v++) {
+        vec3 p = v3(m->pos[v * 3], m->pos[v * 3 + 1], m->pos[v * 3 + 2]);
+        if (xf) p = xf_point(xf, p);
+        double q[3] = {p.x, p.y, p.z};
+        for (int d = 0; d < 3; d++) lo[d] = fmin(lo[d], q[d]), hi[d] = fmax(hi[d], q[d]);
+    }
+}
+
+#endif

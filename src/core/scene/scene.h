@@ -59,6 +59,7 @@ typedef struct object {
 } object;
 
 typedef struct scene {
+    site_settings site;         /* its crs_wkt and crs_name owned (copies), or NULL */
     image_settings image;
     camera_settings camera;
     sun_settings sun;
@@ -89,6 +90,8 @@ int32_t scene_add_prototype(scene *s, uint32_t species, uint32_t variant, double
                             double height, mesh *m, err_buf *err); /* takes m */
 int32_t scene_add_instance(scene *s, uint32_t prototype, const xform3x4 *xf, err_buf *err);
 int32_t scene_add_object(scene *s, const char *name, mesh *m, err_buf *err); /* takes m */
+/* Copies site (its strings too) into s->site. Returns 0 or -1 with err set (out of memory). */
+int scene_set_site(scene *s, const site_settings *site, err_buf *err);
 /* The first material named `name`, or -1 (a hash lookup). */
 int32_t scene_find_material(const scene *s, const char *name);
 

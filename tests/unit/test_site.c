@@ -134,8 +134,9 @@ TEST(site_from_geographic_dtm)
     CHECK_NEAR(sf->camera.position[0], centre[0] - sf->site.origin[0], 1e-6);
     CHECK_NEAR(sf->camera.position[1], centre[1] - sf->site.origin[1], 1e-6);
     CHECK(fabs(sf->camera.position[0]) <= 0.5 && fabs(sf->camera.position[1]) <= 0.5);
-    CHECK(isnan(sf->camera.position[2]) && sf->camera.eye_ground.above == 1.6);
-    CHECK(sf->camera.look_at_ground.above == 0.0); /* a look_at of two numbers is on the ground */
+    CHECK(isnan(sf->camera.position[2]) && sf->camera.eye_ground.given && sf->camera.eye_ground.above == 1.6);
+    /* a look_at of two numbers is on the ground */
+    CHECK(sf->camera.look_at_ground.given && sf->camera.look_at_ground.above == 0.0);
     site_frame_free(f);
     scene_file_free(sf);
 }

@@ -30,14 +30,15 @@ typedef struct image_settings {
 
 /* A height given above the terrain, resolved once the terrain exists (scene_build.c). */
 typedef struct ground_height {
-    double above;           /* metres above the terrain; NaN when the height was given directly */
+    int given;              /* 1: the height is `above` the terrain; 0: it was given directly */
+    double above;           /* metres above the terrain */
     uint32_t line, column;  /* where it was given, for messages */
 } ground_height;
 
 typedef struct camera_settings {
     double position[3];     /* position[2] is NaN in a scene_file while eye_ground applies */
-    ground_height eye_ground;     /* the eye's height above the terrain, or above = NaN */
-    ground_height look_at_ground; /* look_at's height above the terrain (look_at[2] NaN), or NaN */
+    ground_height eye_ground;     /* the eye's height above the terrain, when given */
+    ground_height look_at_ground; /* look_at's height above the terrain (look_at[2] NaN), when given */
     int has_look_at;        /* 1: look_at given; 0: direction given (or default) */
     double look_at[3];
     double direction[3];    /* unit after loading; with a height above ground, final once the

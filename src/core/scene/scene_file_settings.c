@@ -79,9 +79,9 @@ static int read_camera_points(loader *L, const sylva_params *p, sylva_value *pos
                           "the camera 'position' gives no height; give [x, y, z], or "
                           "height_above_ground: 1.6 (an eye height above the terrain)");
     if (look.given && !look.has_height && isnan(look.above_ground)) look.above_ground = 0.0;
-    c->eye_ground = (ground_height){pos.above_ground, eye->is_set ? eye->line : pos.line,
-                                    eye->is_set ? eye->column : pos.column};
-    c->look_at_ground = (ground_height){look.above_ground, look.line, look.column};
+    c->eye_ground = (ground_height){!isnan(pos.above_ground), pos.above_ground,
+                                    eye->is_set ? eye->line : pos.line, eye->is_set ? eye->column : pos.column};
+    c->look_at_ground = (ground_height){!isnan(look.above_ground), look.above_ground, look.line, look.column};
     if (!isnan(pos.above_ground)) pos.local[2] = pos.above_ground;
     if (!isnan(look.above_ground)) look.local[2] = look.above_ground;
     for (int k = 0; k < 3; k++) c->position[k] = pos.local[k], c->look_at[k] = look.local[k];
@@ -176,8 +176,8 @@ int sf_read_camera(loader *L)
         c->focal_length_mm = 0.0;
         c->fov_deg = fov->r;
     }
-    if (!isnan(c->eye_ground.above)) c->position[2] = NAN;   /* known once the terrain is built */
-    if (!isnan(c->look_at_ground.above)) c->look_at[2] = NAN;
+    if (c->eye_ground.given) c->position[2] = NAN;   /* known once the terrain is built */
+    if (c->look_at_ground.given) c->look_at[2] = NAN;
     return 0;
 }
 

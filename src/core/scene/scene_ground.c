@@ -10,7 +10,7 @@
 int scene_ground_point(const scene *s, const scene_file *sf, const char *what, const ground_height *g,
                        double p[3], err_buf *err)
 {
-    if (isnan(g->above)) return 0;
+    if (!g->given) return 0;
     double z;
     if (s->terrain && !heightfield_surface_height(s->terrain, p[0], p[1], &z)) {
         p[2] = z + g->above;
@@ -37,7 +37,7 @@ int scene_ground_point(const scene *s, const scene_file *sf, const char *what, c
 int scene_ground_camera(scene *s, const scene_file *sf, err_buf *err)
 {
     camera_settings *c = &s->camera;
-    if (isnan(c->eye_ground.above) && isnan(c->look_at_ground.above)) return 0;
+    if (!c->eye_ground.given && !c->look_at_ground.given) return 0;
     if (scene_ground_point(s, sf, "the camera 'position'", &c->eye_ground, c->position, err)) return -1;
     if (!c->has_look_at) return 0;
     if (scene_ground_point(s, sf, "the camera's 'look_at'", &c->look_at_ground, c->look_at, err)) return -1;
@@ -47,7 +47,7 @@ int scene_ground_camera(scene *s, const scene_file *sf, err_buf *err)
     double ul = sqrt(c->up[0] * c->up[0] + c->up[1] * c->up[1] + c->up[2] * c->up[2]);
     double cr[3] = {d[1] * c->up[2] - d[2] * c->up[1], d[2] * c->up[0] - d[0] * c->up[2],
                     d[0] * c->up[1] - d[1] * c->up[0]};
-    const ground_height *at = isnan(c->look_at_ground.above) ? &c->eye_ground : &c->look_at_ground;
+    const ground_height *at = c->look_at_ground.given ? &c->look_at_ground : &c->eye_ground;
     if (!(l > 0.0) || !isfinite(l))
         return err_at(err, ERR_INPUT, sf->path, at->line, at->column,
                       "the camera stands at its 'look_at' once placed above the ground; give "

@@ -8,7 +8,7 @@
 #include "scene/scene.h"
 #include "scene/scene_file.h"
 
-/* Sets p[2] to the terrain height at (p[0], p[1]) plus g->above; nothing when g->above is NaN.
+/* Sets p[2] to the terrain height at (p[0], p[1]) plus g->above; nothing unless g->given.
  * `what` names the point in messages ("the camera 'position'"). Returns 0, or -1 with err set
  * at sf's file, g's line and column. */
 int scene_ground_point(const scene *s, const scene_file *sf, const char *what, const ground_height *g,

@@ -60,7 +60,17 @@ TEST(crs_rules)
     CHECK_NEAR(map[0], 4321000.0, 1e-3); /* the projection's false easting at its centre */
     CHECK_NEAR(map[1], 3210000.0, 1e-3);
     site_frame_free(f);
-    CHECK(site_crs_is_geographic("EPSG:4326") && !site_crs_is_geographic("EPSG:32614"));
+    /* UTM 14N with NAVD88 heights: a compound CRS whose horizontal part is checked */
+    f = site_frame_new("EPSG:32614+5703", NULL, &err);
+    if (!f) fprintf(stderr, "%s\n", err.msg);
+    CHECK(f != NULL);
+    if (f) CHECK_INT(site_frame_from_lonlat(f, -99.0, 32.0, map, &err), 0);
+    CHECK_NEAR(map[0], 500000.0, 1e-3); /* zone 14's central meridian */
+    site_frame_free(f);
+    CHECK(site_frame_new("EPSG:4326+5703", NULL, &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "is geographic, in degrees");
+    CHECK(site_frame_new("EPSG:32614+1", NULL, &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "'EPSG:32614+1' is not a horizontal and a vertical CRS");
 }
 
 TEST(utm_zones)

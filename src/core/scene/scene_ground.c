@@ -19,7 +19,7 @@ int scene_ground_point(const scene *s, const scene_file *sf, const char *what, c
     const sylva_heightfield *t = s->terrain;
     if (!t)
         return err_at(err, ERR_INPUT, sf->path, g->line, g->column,
-                      "%s is given by height above ground, but the scene has no terrain; give its "
+                      "%s stands on or above the ground, but the scene has no terrain; give its "
                       "height instead", what);
     const double *o = sf->site.origin;
     if (sf->site.crs_wkt)

@@ -29,14 +29,29 @@ static PJ_CONTEXT *quiet_context(void)
     return ctx;
 }
 
+/* The length of a run of 1 to 9 digits at d, or 0. */
+static size_t code_digits(const char *d)
+{
+    size_t n = 0;
+    while (isdigit((unsigned char)d[n])) n++;
+    return n <= 9 ? n : 0;
+}
+
 /* Digits of an "EPSG:NNNN" text (any case, no spaces), or NULL when it is not one. */
 static const char *epsg_code(const char *text)
 {
     if (strncasecmp(text, "EPSG:", 5)) return NULL;
-    const char *d = text + 5;
-    size_t n = 0;
-    while (isdigit((unsigned char)d[n])) n++;
-    return n > 0 && n <= 9 && !d[n] ? d : NULL;
+    size_t n = code_digits(text + 5);
+    return n && !text[5 + n] ? text + 5 : NULL;
+}
+
+/* 1 for "EPSG:NNNN+MMMM": a horizontal CRS with a vertical one (a compound CRS). */
+static int epsg_compound(const char *text)
+{
+    if (strncasecmp(text, "EPSG:", 5)) return 0;
+    size_t n = code_digits(text + 5);
+    size_t m = n && text[5 + n] == '+' ? code_digits(text + 6 + n) : 0;
+    return m && !text[6 + n + m];
 }
 
 /* The CRS of crs_text (EPSG:NNNN or WKT), or NULL with err set. */
@@ -51,9 +66,20 @@ static PJ *crs_parse(PJ_CONTEXT *ctx, const char *text, err_buf *err)
                     "an existing code (EPSG:32614 is WGS 84 / UTM zone 14N) or the CRS as WKT", text);
         return crs;
     }
+    if (epsg_compound(text)) {
+        crs = proj_create(ctx, text);
+        if (!crs || !proj_is_crs(crs)) {
+            proj_destroy(crs);
+            err_set(err, "'%s' is not a horizontal and a vertical CRS of PROJ's EPSG database; give "
+                    "existing codes (EPSG:32614+5703 is UTM zone 14N with NAVD88 heights)", text);
+            return NULL;
+        }
+        return crs;
+    }
     if (strncasecmp(text, "EPSG", 4) == 0 || text[0] == '+' || !strchr(text, '[')) {
         err_set(err, "'%.80s' is neither 'EPSG:NNNN' nor WKT; give the CRS as EPSG:NNNN (such as "
-                "EPSG:32614) or as WKT (PROJCRS[...] or PROJCS[...])", text);
+                "EPSG:32614; EPSG:NNNN+MMMM adds a vertical CRS) or as WKT (PROJCRS[...] or "
+                "PROJCS[...])", text);
         return NULL;
     }
     PROJ_STRING_LIST warnings = NULL, errors = NULL;
@@ -232,18 +258,4 @@ int site_frame_from_crs(site_frame *f, const char *from_crs, double x, double y,
     int rc = transform_point(f, op, x, y, map, "the point", err);
     proj_destroy(op);
     return rc;
-}
-
-int site_crs_is_geographic(const char *crs_text)
-{
-    PJ_CONTEXT *ctx = quiet_context();
-    if (!ctx) return 0;
-    err_buf ignored = {{0}};
-    PJ *crs = crs_parse(ctx, crs_text, &ignored);
-    PJ *h = crs ? horizontal_part(ctx, crs) : NULL;
-    PJ_TYPE t = h ? proj_get_type(h) : PJ_TYPE_UNKNOWN;
-    proj_destroy(h);
-    proj_destroy(crs);
-    proj_context_destroy(ctx);
-    return t == PJ_TYPE_GEOGRAPHIC_2D_CRS || t == PJ_TYPE_GEOGRAPHIC_3D_CRS;
 }

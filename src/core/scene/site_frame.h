@@ -18,7 +18,8 @@
 
 typedef struct site_frame site_frame;
 
-/* A frame for the CRS given as "EPSG:NNNN" or as WKT (1 or 2). A CRS that is not projected in
+/* A frame for the CRS given as "EPSG:NNNN", "EPSG:NNNN+MMMM" (with a vertical CRS, whose
+ * horizontal part is the one checked) or as WKT (1 or 2). A CRS that is not projected in
  * metres is refused with a sentence that suggests a UTM zone: the zone of `near_lonlat`
  * (longitude, latitude) when not NULL. Returns the frame (free with site_frame_free) or NULL
  * with err set (the message names the CRS as given; the caller adds where it was given). */
@@ -37,10 +38,6 @@ int site_frame_from_lonlat(site_frame *f, double lon, double lat, double map[2],
  * then northing, or longitude then latitude) into the site CRS. Returns 0 or -1 with err set. */
 int site_frame_from_crs(site_frame *f, const char *from_crs, double x, double y, double map[2],
                         err_buf *err);
-
-/* 1 when crs_text (EPSG:NNNN or WKT) parses as a geographic CRS (degrees); 0 otherwise, also
- * when it does not parse. */
-int site_crs_is_geographic(const char *crs_text);
 
 /* The EPSG code of the WGS 84 UTM zone holding (lon, lat): 32601..32660 north of the equator,
  * 32701..32760 south of it. */

@@ -76,7 +76,8 @@ static int read_site(loader *L, const ynode_pair *pr, site_dtm *d)
     if (dtm && (!crs->is_set || !origin->is_set)) {
         err_buf why = {{0}};
         if (site_dtm_read(path, d, &why))
-            return sf_located(L->err, L->file, dtm->line, dtm->column, "%s", why.msg);
+            return why.status == ERR_NOMEM ? sf_out_of_memory(L)
+                                           : sf_located(L->err, L->file, dtm->line, dtm->column, "%s", why.msg);
     }
     const char *text = crs->is_set ? crs->s : crs_from_dtm(L, dtm, path, d);
     if (!text) return -1;
@@ -85,6 +86,7 @@ static int read_site(loader *L, const ynode_pair *pr, site_dtm *d)
     const double *near = origin->is_set ? origin->list : d->geographic ? d->centre : NULL;
     err_buf why = {{0}};
     if (!(L->site = site_frame_new(text, near, &why))) {
+        if (why.status == ERR_NOMEM) return sf_out_of_memory(L);
         if (crs->is_set) return sf_located(L->err, L->file, crs->line, crs->column, "%s", why.msg);
         return sf_located(L->err, L->file, dtm->line, dtm->column,
                           "the site's CRS is taken from the DTM '%s': %s; or give site: crs:", path,

@@ -1,12 +1,15 @@
 /* test_site.c — the site frame and the site section: PROJ's conversion of longitude/latitude to
  * UTM against a published value, the CRS rules (EPSG code or WKT; projected in metres), the UTM
  * zone of a point, the site's CRS and origin taken from a DTM (a GeoTIFF made here through GDAL,
- * in degrees and in metres), and positions in map coordinates becoming local ones. */
+ * in degrees and in metres, or an ASCII grid with its .prj through the terrain plugin), and
+ * positions in map coordinates becoming local ones. */
 #include <gdal.h>
 #include <ogr_srs_api.h>
 
 #include "harness.h"
 #include "plugin/plugin_host.h"
+#include "scene/heightfield.h"
+#include "scene/scene_build.h"
 #include "scene/scene_file.h"
 #include "scene/site_frame.h"
 #include "work_dir.h"
@@ -186,5 +189,32 @@ TEST(site_from_projected_dtm)
     CHECK_STR_CONTAINS(err.msg, "is not a raster GDAL reads");
 }
 
+/* tests/scenes/site/dtm_site.yaml: an ESRI ASCII grid with its .prj, read through the terrain
+ * plugin; the site from the DTM, the camera 1.6 m above the built terrain at a map position. */
+TEST(site_scene_from_dtm)
+{
+    err_buf err = {{0}};
+    plugin_registry *reg = plugin_registry_open(&err);
+    scene_file *sf = reg ? scene_file_load(SYLVA_TEST_DATA_DIR "/scenes/site/dtm_site.yaml", reg, &err) : NULL;
+    if (!sf) fprintf(stderr, "%s\n", err.msg);
+    CHECK(sf != NULL);
+    if (sf) {
+        CHECK(!strcmp(sf->site.crs_name, "WGS 84 / UTM zone 11N"));
+        CHECK(sf->site.origin[0] == 440135.0 && sf->site.origin[1] == 3760135.0 && sf->site.origin[2] == 0.0);
+        CHECK(sf->camera.position[0] == -75.0 && sf->camera.position[1] == -95.0);
+        build_options quiet = {.quiet = 1};
+        scene *s = scene_build(sf, reg, &quiet, &err);
+        if (!s) fprintf(stderr, "%s\n", err.msg);
+        CHECK(s != NULL);
+        double ground = NAN;
+        if (s) CHECK_INT(heightfield_surface_height(s->terrain, -75.0, -95.0, &ground), 0);
+        if (s) CHECK_NEAR(s->camera.position[2] - ground, 1.6, 1e-9);
+        CHECK(ground > 600 && ground < 760); /* the DTM's heights, in its own datum */
+        scene_free(s);
+    }
+    scene_file_free(sf);
+    plugin_registry_free(reg);
+}
+
 TEST_LIST(TEST_CASE(lonlat_to_utm), TEST_CASE(crs_rules), TEST_CASE(utm_zones),
-          TEST_CASE(site_from_geographic_dtm), TEST_CASE(site_from_projected_dtm))
+          TEST_CASE(site_from_geographic_dtm), TEST_CASE(site_from_projected_dtm), TEST_CASE(site_scene_from_dtm))

@@ -116,7 +116,9 @@ int sf_read_position(loader *L, const ynode *map, const sylva_param_spec *spec, 
         return sf_located(L->err, L->file, node->line, node->column,
                           "'%s' must be %s in local metres, or a mapping in map coordinates "
                           "{easting: E, northing: N%s}, got %s", spec->name,
-                          flat ? "[x, y]" : spec->min_len == 3 ? "[x, y, z]" : "[x, y, z] or [x, y]",
+                          flat                                                ? "[x, y]"
+                          : spec->type == SYLVA_P_VEC3 || spec->min_len == 3 ? "[x, y, z]"
+                                                                              : "[x, y, z] or [x, y]",
                           flat ? "" : ", height: h", ynode_kind_phrase(node));
     }
     param_scope scope = {L->file, L->dir, where, NULL, 0, node->line, node->column};

@@ -10,7 +10,8 @@ packages=(
   libopenexr-dev         # OpenEXR Core C API: EXR output
   libopenimageio-dev openimageio-tools  # PNG output, image reading and comparison
   libyaml-dev            # scene files
-  libgdal-dev            # DTM input (terrain plugin)
+  libgdal-dev            # DTM input (terrain plugin), a site's CRS from its DTM
+  libproj-dev            # site CRS: EPSG codes, WKT, longitude/latitude to map coordinates
   povray                 # cross-check renders
   libassimp-dev          # 3-D model import (OBJ, glTF, PLY, STL, FBX, COLLADA, 3DS)
 )

@@ -120,7 +120,7 @@ int cmd_render(int argc, char **argv)
         rc = cli_fail("render", &err, ERR_INTERNAL);
         goto done;
     }
-    if (film_write_exr(f, exr, &err) || film_write_png(f, png, sc->image.exposure, &err)) {
+    if (film_write_exr(f, &sc->site, exr, &err) || film_write_png(f, png, sc->image.exposure, &err)) {
         rc = cli_fail("render", &err, ERR_OUTPUT);
         goto done;
     }

@@ -274,7 +274,7 @@ int crosscheck_run(const scene *s, const char *out_dir, const crosscheck_options
     /* images and the report */
     rc = CROSSCHECK_NOT_WRITTEN;
     snprintf(path, sizeof path, "%s/sylva.exr", out_dir);
-    if (film_write_exr(f, path, err)) goto done;
+    if (film_write_exr(f, &s->site, path, err)) goto done;
     /* The verification formula has no 1/pi: show both pictures as bright as a path-traced
      * render of the scene would be. */
     double exposure = s->image.exposure - log2(M_PI);

@@ -135,6 +135,14 @@ static int exr_write_part(exr_context_t ctx, exr_stream *s, const exr_frame *f,
         rc = exr_add_channel(ctx, part, ch[i].name, ch[i].type, ch[i].percept, 1, 1);
         if (rc) return exr_fail(s, rc, "adding a channel");
     }
+    if (f->crs_wkt) {
+        static const char *const origin_names[3] = {"siteOriginEasting", "siteOriginNorthing",
+                                                    "siteOriginHeight"};
+        rc = exr_attr_set_string(ctx, part, "siteCrsWkt", f->crs_wkt);
+        if (!rc) rc = exr_attr_set_string(ctx, part, "siteCrsName", f->crs_name ? f->crs_name : "");
+        for (int k = 0; k < 3 && !rc; k++) rc = exr_attr_set_double(ctx, part, origin_names[k], f->origin[k]);
+        if (rc) return exr_fail(s, rc, "adding the site's CRS and origin");
+    }
     rc = exr_write_header(ctx);
     if (rc) return exr_fail(s, rc, "writing the header");
 

@@ -88,11 +88,15 @@ uint8_t *film_tonemap(const film *f, double exposure_stops)
     return out;
 }
 
-int film_write_exr(const film *f, const char *path, err_buf *err)
+int film_write_exr(const film *f, const site_settings *site, const char *path, err_buf *err)
 {
     exr_frame fr = {.width = f->width, .height = f->height, .rgb = f->rgb, .depth = f->depth, .normal = f->normal,
                     .albedo = f->albedo, .instance_id = f->instance_id, .species_id = f->species_id,
                     .object_id = f->object_id, .development = f->development, .rgb_half = 0};
+    if (site && site->crs_wkt) {
+        fr.crs_wkt = site->crs_wkt, fr.crs_name = site->crs_name;
+        for (int k = 0; k < 3; k++) fr.origin[k] = site->origin[k];
+    }
     return exr_write(path, &fr, err);
 }
 

@@ -17,6 +17,7 @@
 
 #include <stdint.h>
 
+#include "scene/scene_file.h"
 #include "util/err.h"
 
 /* What a pixel's centre ray sees first. Plant surfaces are leaves when their material is a leaf
@@ -59,7 +60,8 @@ void film_free(film *f); /* accepts NULL */
 uint8_t *film_tonemap(const film *f, double exposure_stops);
 float film_tonemap_value(float linear); /* the curve plus sRGB encoding, for one channel */
 
-int film_write_exr(const film *f, const char *path, err_buf *err);
+/* The EXR carries the site's CRS and origin in its header when site is not NULL and has a CRS. */
+int film_write_exr(const film *f, const site_settings *site, const char *path, err_buf *err);
 int film_write_png(const film *f, const char *path, double exposure_stops, err_buf *err);
 
 #endif

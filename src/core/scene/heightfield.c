@@ -44,6 +44,19 @@ int heightfield_height(const sylva_heightfield *h, double x, double y, double *z
     return 0;
 }
 
+int heightfield_surface_height(const sylva_heightfield *h, double x, double y, double *z)
+{
+    cell c;
+    if (cell_of(h, x, y, &c)) return -1;
+    const float *r0 = h->z + (size_t)c.j * h->nx, *r1 = r0 + h->nx;
+    uint32_t i = c.i;
+    if (c.fx >= c.fy) /* the triangle (i, j), (i + 1, j), (i + 1, j + 1) */
+        *z = r0[i] + c.fx * ((double)r0[i + 1] - r0[i]) + c.fy * ((double)r1[i + 1] - r0[i + 1]);
+    else /* the triangle (i, j), (i + 1, j + 1), (i, j + 1) */
+        *z = r0[i] + c.fy * ((double)r1[i] - r0[i]) + c.fx * ((double)r1[i + 1] - r1[i]);
+    return 0;
+}
+
 double heightfield_height_clamped(const sylva_heightfield *h, double x, double y)
 {
     double gx = (x - h->x0) / h->dx, gy = (y - h->y0) / h->dy;

@@ -15,6 +15,12 @@
  * heightfield's nodes (or is not a number). */
 int heightfield_height(const sylva_heightfield *h, double x, double y, double *z);
 
+/* Height at (x, y) of the surface as it is drawn (geometry/terrain_mesh.h): two triangles per
+ * cell, split along the diagonal from node (i, j) to (i + 1, j + 1). Where a cell is not planar
+ * it differs from the bilinear height; a point placed above the rendered ground asks here.
+ * Returns 0, or -1 (z untouched) outside the heightfield. */
+int heightfield_surface_height(const sylva_heightfield *h, double x, double y, double *z);
+
 /* Height at the point of the heightfield nearest to (x, y), for any finite (x, y). */
 double heightfield_height_clamped(const sylva_heightfield *h, double x, double y);
 

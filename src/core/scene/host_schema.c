@@ -16,9 +16,9 @@
 #define MAX_X (SYLVA_PARAM_HAS_MAX | SYLVA_PARAM_MAX_EXCLUSIVE)
 #define REQ SYLVA_PARAM_REQUIRED
 
-const char *const host_sections[] = {"image",   "camera",  "sun",     "sky",     "materials",
-                                     "terrain", "species", "plants",  "ecology", "groups",
-                                     "objects", NULL};
+const char *const host_sections[] = {"image",   "site",    "camera",  "sun",     "sky",     "materials",
+                                     "terrain", "species", "plants",  "ecology", "groups",  "objects",
+                                     NULL};
 
 const char *const host_shape_names[] = {"mesh", "box", "sphere", "quad", "disk", NULL};
 const char *const host_sky_models[] = {"none", "constant", "preetham", NULL};
@@ -84,12 +84,53 @@ static const sylva_param_spec image_params[] = {
 const host_schema host_schema_image = {"image", "Output size, sampling and the scene seed.",
                                        image_params, COUNT(image_params)};
 
+/* --- site ----------------------------------------------------------------------------------- */
+static const sylva_param_spec site_params[] = {
+    {.name = "crs", .type = SYLVA_P_STRING,
+     .help = "The site's projected CRS in metres, as EPSG:NNNN or WKT; default: the DTM's CRS (the "
+             "UTM zone of its centre when the DTM is in degrees)."},
+    {.name = "origin", .type = SYLVA_P_LIST, .min_len = 2, .max_len = 3, .def_list = zero2,
+     .def_len = 2, .unit = "m",
+     .help = "Map coordinates [E, N] or [E, N, h] of the local origin; default: the DTM "
+             "footprint's centre rounded to whole metres, at height 0."},
+};
+const host_schema host_schema_site = {
+    "site", "Where the scene stands on the Earth: its CRS and the origin of the local frame.",
+    site_params, COUNT(site_params)};
+
+/* --- positions in map coordinates ------------------------------------------------------------ */
+static const sylva_param_spec position_params[] = {
+    {.name = "easting", .type = SYLVA_P_REAL, .unit = "m",
+     .help = "Easting in the site CRS (with northing)."},
+    {.name = "northing", .type = SYLVA_P_REAL, .unit = "m",
+     .help = "Northing in the site CRS (with easting)."},
+    {.name = "longitude", .type = SYLVA_P_REAL, .flags = MIN | MAX, .min = -180, .max = 180,
+     .unit = "deg", .help = "WGS 84 longitude, east positive (with latitude)."},
+    {.name = "latitude", .type = SYLVA_P_REAL, .flags = MIN | MAX, .min = -90, .max = 90,
+     .unit = "deg", .help = "WGS 84 latitude, north positive (with longitude)."},
+    {.name = "height", .type = SYLVA_P_REAL, .unit = "m",
+     .help = "Height in the site's vertical datum (the DTM's heights)."},
+    {.name = "height_above_ground", .type = SYLVA_P_REAL, .unit = "m",
+     .help = "Height above the terrain under the point, instead of height."},
+};
+const host_schema host_schema_position = {
+    "position in map coordinates",
+    "A point given as {easting, northing} or {longitude, latitude}, with a height or a height "
+    "above ground (needs site:).",
+    position_params, COUNT(position_params)};
+
 /* --- camera --------------------------------------------------------------------------------- */
 static const sylva_param_spec camera_params[] = {
-    {.name = "position", .type = SYLVA_P_VEC3, .flags = REQ, .unit = "m",
-     .help = "Position of the camera's eye point."},
-    {.name = "look_at", .type = SYLVA_P_VEC3, .unit = "m",
-     .help = "A point the camera looks at (give look_at or direction, not both)."},
+    {.name = "position", .type = SYLVA_P_LIST, .flags = REQ, .min_len = 2, .max_len = 3, .unit = "m",
+     .help = "Position of the camera's eye point: [x, y, z], [x, y] with height_above_ground, or "
+             "a map position."},
+    {.name = "height_above_ground", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 1.6, .min = 0,
+     .max = 100000, .unit = "m",
+     .help = "Eye height above the terrain under the position (1.5 to 1.7 is a standing eye)."},
+    {.name = "look_at", .type = SYLVA_P_LIST, .min_len = 2, .max_len = 3, .def_list = zero3,
+     .def_len = 3, .unit = "m",
+     .help = "A point the camera looks at (give look_at or direction, not both); [x, y] is on the "
+             "ground."},
     {.name = "direction", .type = SYLVA_P_VEC3, .def_list = north, .def_len = 3,
      .help = "Viewing direction, any length but not zero (used when look_at is absent)."},
     {.name = "up", .type = SYLVA_P_VEC3, .def_list = z_up, .def_len = 3,
@@ -203,7 +244,8 @@ static const sylva_param_spec terrain_params[] = {
     {.name = "grid", .type = SYLVA_P_GRID, .unit = "m",
      .help = "Inline heights, rows from south to north, columns from west to east (>= 2 x 2)."},
     {.name = "origin", .type = SYLVA_P_LIST, .min_len = 2, .max_len = 2, .def_list = zero2,
-     .def_len = 2, .unit = "m", .help = "x and y of the grid's first node (row 0, column 0)."},
+     .def_len = 2, .unit = "m",
+     .help = "x and y of the grid's first node (row 0, column 0), or a map position."},
     {.name = "spacing", .type = SYLVA_P_LIST, .flags = MIN_X, .min = 0, .min_len = 2,
      .max_len = 2, .def_list = one2, .def_len = 2, .unit = "m",
      .help = "Distance between grid nodes along x and along y."},
@@ -239,7 +281,7 @@ static const sylva_param_spec plant_params[] = {
      .min_len = 2,
      .max_len = 3,
      .unit = "m",
-     .help = "[x, y, z], or [x, y] to stand on the terrain."},
+     .help = "[x, y, z], or [x, y] to stand on the terrain, or a map position."},
     {.name = "rotation",
      .type = SYLVA_P_REAL,
      .flags = MIN | MAX,
@@ -403,7 +445,8 @@ const host_schema *host_schema_shape(shape_kind kind)
 const host_schema *host_schema_at(uint32_t i)
 {
     static const host_schema *const all[] = {
-        &host_schema_image,        &host_schema_camera,       &host_schema_sun,
+        &host_schema_image,        &host_schema_site,         &host_schema_position,
+        &host_schema_camera,       &host_schema_sun,
         &host_schema_sky,          &host_schema_material,     &host_schema_terrain,
         &host_schema_species,      &host_schema_plant,        &host_schema_ecology,
         &host_schema_object,       &host_schema_object_model, &host_schema_object_group,

@@ -25,6 +25,8 @@ typedef struct host_schema {
 } host_schema;
 
 extern const host_schema host_schema_image;
+extern const host_schema host_schema_site;
+extern const host_schema host_schema_position;     /* a position in map coordinates (a mapping) */
 extern const host_schema host_schema_camera;
 extern const host_schema host_schema_sun;
 extern const host_schema host_schema_sky;

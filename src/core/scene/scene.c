@@ -61,7 +61,19 @@ void scene_free(scene *s)
     free(s->instances);
     free(s->objects);
     free(s->models);
+    free((char *)s->site.crs_wkt), free((char *)s->site.crs_name);
     free(s);
+}
+
+int scene_set_site(scene *s, const site_settings *site, err_buf *err)
+{
+    free((char *)s->site.crs_wkt), free((char *)s->site.crs_name);
+    s->site = *site;
+    s->site.crs_wkt = site->crs_wkt ? strdup(site->crs_wkt) : NULL;
+    s->site.crs_name = site->crs_name ? strdup(site->crs_name) : NULL;
+    if ((site->crs_wkt && !s->site.crs_wkt) || (site->crs_name && !s->site.crs_name))
+        return err_nomem(err, "out of memory copying the site's CRS");
+    return 0;
 }
 
 int32_t scene_add_material(scene *s, const sylva_material_desc *d, err_buf *err)

@@ -71,6 +71,7 @@ typedef struct object {
 } object;
 
 typedef struct scene {
+    site_settings site;         /* its crs_wkt and crs_name owned (copies), or NULL */
     image_settings image;
     camera_settings camera;
     sun_settings sun;
@@ -109,6 +110,8 @@ int32_t scene_add_model_object(scene *s, const char *name, uint32_t model_index,
 /* The mesh an object shows (its own, or its model's) and its transform to world space (NULL
  * when the mesh is already in world space). */
 const mesh *scene_object_mesh(const scene *s, uint32_t o, const xform3x4 **xf);
+/* Copies site (its strings too) into s->site. Returns 0 or -1 with err set (out of memory). */
+int scene_set_site(scene *s, const site_settings *site, err_buf *err);
 /* The first material named `name`, or -1 (a hash lookup). */
 int32_t scene_find_material(const scene *s, const char *name);
 

@@ -9,6 +9,7 @@
 #include "io/image_io.h"
 #include "scene/host.h"
 #include "scene/plugin_call.h"
+#include "scene/scene_ground.h"
 #include "scene/shapes.h"
 
 xform3x4 plant_transform(const double p[3], double rot_deg, double scale)
@@ -182,13 +183,14 @@ static int build_species(scene *s, const scene_file *sf, const plugin_registry *
     return 0;
 }
 
-/* Places one plant as an instance; age selects the variant. */
-static int place_plant(scene *s, uint32_t sp, double pos[3], int snap, double rot_deg, double scale,
-                       double age, err_buf *err)
+/* Places one plant as an instance; age selects the variant. With snap, the plant stands
+ * `above` metres above the terrain. */
+static int place_plant(scene *s, uint32_t sp, double pos[3], int snap, double above, double rot_deg,
+                       double scale, double age, err_buf *err)
 {
     if (snap) {
         double z = 0;
-        if (!scene_terrain_height(s, pos[0], pos[1], &z)) pos[2] = z;
+        if (!scene_terrain_height(s, pos[0], pos[1], &z)) pos[2] = z + above;
         else if (s->terrain) return err_set(err, "position (%g, %g) lies outside the terrain", pos[0], pos[1]);
         else pos[2] = 0;
     }
@@ -202,7 +204,8 @@ static int build_plants(scene *s, const scene_file *sf, err_buf *err)
     for (uint32_t i = 0; i < sf->n_plants; i++) {
         const plant_spec *p = &sf->plants[i];
         double pos[3] = {p->position[0], p->position[1], p->position[2]};
-        if (place_plant(s, p->species, pos, p->snap_to_terrain, p->rotation_deg, p->scale, p->age, err)) {
+        if (place_plant(s, p->species, pos, p->snap_to_terrain, p->above_ground, p->rotation_deg, p->scale,
+                        p->age, err)) {
             err_prefix(err, "plant %u: ", i);
             return err_locate(err, sf->path, p->line, p->column);
         }
@@ -228,7 +231,8 @@ int scene_place_plants(scene *s, const sylva_plant *plants, uint32_t n, err_buf 
         double ph = s->prototypes[sp->first_prototype + v].height;
         double scale = p->height > 0 && ph > 0 ? p->height / ph : 1.0;
         double pos[3] = {p->position[0], p->position[1], p->position[2]};
-        if (place_plant(s, p->species, pos, p->snap_to_terrain, p->rotation * 180.0 / M_PI, scale, p->age, err))
+        if (place_plant(s, p->species, pos, p->snap_to_terrain, 0.0, p->rotation * 180.0 / M_PI, scale, p->age,
+                        err))
             return err_prefix(err, "plant %u: ", i);
     }
     return 0;
@@ -259,7 +263,8 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
     }
     s->image = sf->image, s->camera = sf->camera, s->sun = sf->sun, s->sky = sf->sky;
     plugin_call_output out = {.verbose = opt->verbose, .quiet = opt->quiet};
-    if (add_materials(s, sf, err) || build_terrain(s, sf, plugins, &out, err) ||
+    if (scene_set_site(s, &sf->site, err) || add_materials(s, sf, err) ||
+        build_terrain(s, sf, plugins, &out, err) || scene_ground_camera(s, sf, err) ||
         build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) ||
         build_ecology(s, sf, plugins, opt, &out, err) || scene_build_objects(s, sf, err)) {
         scene_free(s);

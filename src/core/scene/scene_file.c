@@ -8,9 +8,9 @@
  * names) are checked here, each at the location of the key that breaks them. No plugin code
  * beyond the registry's descriptor lookup runs.
  *
- * Sections are read in a fixed order: image, camera, sun, sky, materials, ecology, terrain,
- * species (with includes), plants, objects — materials before their users, the ecology before
- * the species blocks it defines, species before plants.
+ * Sections are read in a fixed order: image, site, camera, sun, sky, materials, ecology,
+ * terrain, species (with includes), plants, objects — the site before every position, materials
+ * before their users, the ecology before the species blocks it defines, species before plants.
  */
 #include "scene/scene_file_loader.h"
 
@@ -78,7 +78,8 @@ static int load(loader *L, const char *path)
     L->chain[0] = (included_file){canon, L->file, 0, 0, NULL};
     L->chain_len = 1;
 
-    if (check_sections(L) || sf_read_image(L) || sf_read_camera(L) || sf_read_sun(L) || sf_read_sky(L) ||
+    if (check_sections(L) || sf_read_image(L) || sf_read_site(L) || sf_read_camera(L) || sf_read_sun(L) ||
+        sf_read_sky(L) ||
         sf_read_materials(L, ynode_get(L->root, "materials")))
         return -1;
     const ynode_pair *eco = ynode_get_pair(L->root, "ecology");
@@ -116,7 +117,9 @@ scene_file *scene_file_load(const char *path, const struct plugin_registry *plug
     }
     sf->arena = a;
     loader L = {.a = a, .reg = plugins, .err = err, .sf = sf, .file = path};
-    if (load(&L, path)) {
+    int rc = load(&L, path);
+    site_frame_free(L.site);
+    if (rc) {
         scene_file_free(sf);
         return NULL;
     }

@@ -28,11 +28,21 @@ typedef struct image_settings {
     double exposure;        /* stops applied before tone mapping (PNG only) */
 } image_settings;
 
+/* A height given above the terrain, resolved once the terrain exists (scene_build.c). */
+typedef struct ground_height {
+    int given;              /* 1: the height is `above` the terrain; 0: it was given directly */
+    double above;           /* metres above the terrain */
+    uint32_t line, column;  /* where it was given, for messages */
+} ground_height;
+
 typedef struct camera_settings {
-    double position[3];
+    double position[3];     /* position[2] is NaN in a scene_file while eye_ground applies */
+    ground_height eye_ground;     /* the eye's height above the terrain, when given */
+    ground_height look_at_ground; /* look_at's height above the terrain (look_at[2] NaN), when given */
     int has_look_at;        /* 1: look_at given; 0: direction given (or default) */
     double look_at[3];
-    double direction[3];    /* unit after loading */
+    double direction[3];    /* unit after loading; with a height above ground, final once the
+                               scene is built (scene_build.c) */
     double up[3];
     double fov_deg;         /* horizontal field of view; derived from focal length when given */
     double focal_length_mm; /* 0 when fov was given */
@@ -146,7 +156,8 @@ typedef struct species_spec {
 typedef struct plant_spec {
     uint32_t species;         /* index into scene_file.species */
     double position[3];
-    int snap_to_terrain;      /* 1 when the position gave no z (two numbers) */
+    int snap_to_terrain;      /* 1 when the position gave no z (two numbers) or a height above ground */
+    double above_ground;      /* with snap_to_terrain: metres above the terrain (0 for [x, y]) */
     double rotation_deg;      /* about +Z */
     double scale;
     double age;               /* (0, 1] */

@@ -4,6 +4,8 @@
  *   scene_file.c            the file as a whole: its sections in order, load and free, lookups
  *   scene_file_messages.c   messages at file:line:column, unknown names with suggestions
  *   scene_file_keys.c       keys two schemas share, host keys, vectors and strings
+ *   scene_file_site.c       the site section: CRS and origin of the local frame
+ *   scene_file_position.c   positions in local metres or map coordinates
  *   scene_file_settings.c   image, camera, sun, sky
  *   scene_file_materials.c  materials, and references to them by name
  *   scene_file_plugins.c    the plugin a block names
@@ -28,6 +30,7 @@
 #include "plugin/plugin_host.h"
 #include "scene/host_schema.h"
 #include "scene/scene_file.h"
+#include "scene/site_frame.h"
 #include "util/arena.h"
 
 #define INCLUDE_MAX_DEPTH 16
@@ -62,6 +65,8 @@ typedef struct loader {
     included_file *seen;         /* every file read so far */
     uint32_t n_seen, cap_seen;
 
+    site_frame *site;            /* the site's CRS, or NULL without a site section; owned (freed
+                                    when loading ends) */
     const sylva_plugin *ecology; /* NULL: the scene has no ecology block */
     const char *species_section; /* the ecology plugin's species_section, or "ecology" */
 } loader;
@@ -106,8 +111,36 @@ const char *sf_folder_of(arena *a, const char *path);
 /* Gathers the species of one `species:` mapping into L->entries, expanding `include:`. */
 int sf_collect_species(loader *L, const ynode *map, const char *file, const char *dir);
 
+/* --- positions (scene_file_position.c) --- */
+/* A position as a scene file gives it: [x, y, z] or [x, y] in local metres, or a mapping in map
+ * coordinates {easting: E, northing: N} or {longitude: L, latitude: B}, with `height: h` or
+ * `height_above_ground: a` or neither (which needs a site: section). Map coordinates become local
+ * ones here: local = map - site origin. */
+typedef struct sf_position {
+    int given;              /* 0: the key is absent; local holds the spec's default */
+    double local[3];        /* local metres; local[2] is 0 unless has_height */
+    int has_height;         /* 1: local[2] is the height; 0: no height, or one above ground */
+    double above_ground;    /* height_above_ground when given, else NaN */
+    uint32_t line, column;  /* of the value (of the mapping holding the key when absent) */
+} sf_position;
+
+/* Reads the key `spec->name` of the mapping `map` as a position. spec is the key's entry in a
+ * host table (sf_host_key): the list form is checked against it (its min_len/max_len say whether
+ * a height may be given: max_len 2 refuses heights in every form), SYLVA_PARAM_REQUIRED makes an
+ * absent key an error, and its default fills an absent one. `where` names the block in messages
+ * ("camera", "objects[2]"). Returns 0 or -1 with L->err set at the offending value. The key must
+ * be left out of the validation of `map` (sf_keys_without). */
+int sf_read_position(loader *L, const ynode *map, const sylva_param_spec *spec, const char *where,
+                     sf_position *out);
+/* The keys of `schema` without those named in `drop` (the position keys, read with
+ * sf_read_position), as a table in L's arena; NULL when out of memory (L->err set). Validate the
+ * mapping against it with `drop` as the scope's host keys. */
+const sylva_param_spec *sf_keys_without(loader *L, const host_schema *schema, const char *const *drop,
+                                        uint32_t n_drop, uint32_t *n_out);
+
 /* --- the sections, in the order they are read --- */
 int sf_read_image(loader *L);
+int sf_read_site(loader *L);
 int sf_read_camera(loader *L);
 int sf_read_sun(loader *L);
 int sf_read_sky(loader *L);

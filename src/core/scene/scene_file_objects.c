@@ -1,24 +1,26 @@
 /* scene_file_objects.c — the objects section: each object a built-in shape, a model file or a
  * group (by name), with its placement (position, rotation, heading, height above ground), name,
  * development flag and material; an entry with `layout:` becomes one object per CSV row. */
+#include <math.h>
 #include <string.h>
 
 #include "scene/scene_file_loader.h"
 
-/* The object's position and how its height is found. Positions are local metres; this is the
- * one place objects read them. */
-static int read_object_position(loader *L, const sylva_params *p, const char *where, object_spec *o)
+/* The object's position (pos, read by sf_read_position: local metres or map coordinates) and its
+ * height_above_ground key: at a height, above the ground, or on it at the footprint. */
+static int read_object_position(loader *L, const sylva_params *p, const sf_position *pos, const char *where,
+                                object_spec *o)
 {
-    const sylva_value *pos = sylva_param(p, "position"), *hag = sylva_param(p, "height_above_ground");
-    o->position[0] = pos->list[0], o->position[1] = pos->list[1];
-    o->position[2] = pos->len == 3 ? pos->list[2] : 0.0;
-    uint32_t len = pos->is_set ? pos->len : hag->is_set ? 2 : 3; /* unset: [0, 0, 0] or [0, 0] */
-    if (hag->is_set && len == 3)
+    const sylva_value *hag = sylva_param(p, "height_above_ground");
+    for (int k = 0; k < 3; k++) o->position[k] = pos->local[k];
+    int above = !isnan(pos->above_ground);
+    if (hag->is_set && (above || (pos->given && pos->has_height)))
         return sf_located(L->err, L->file, hag->line, hag->column,
-                          "'%s' gives both a height (position [x, y, z]) and 'height_above_ground'; give "
+                          "'%s' gives both a height (in its position) and 'height_above_ground'; give "
                           "position [x, y] with height_above_ground, or [x, y, z] alone", where);
-    o->base = len == 3 ? OBJECT_AT_Z : hag->is_set ? OBJECT_ABOVE_GROUND : OBJECT_ON_GROUND;
-    o->height_above_ground = hag->is_set ? hag->r : 0.0;
+    int at_z = pos->given ? pos->has_height : !hag->is_set; /* no position: [0, 0, 0] */
+    o->base = at_z ? OBJECT_AT_Z : (hag->is_set || above) ? OBJECT_ABOVE_GROUND : OBJECT_ON_GROUND;
+    o->height_above_ground = hag->is_set ? hag->r : above ? pos->above_ground : 0.0;
     return 0;
 }
 
@@ -33,8 +35,13 @@ static int check_part_keys(loader *L, const sylva_params *p, const char *where)
                               "'%s' is a part of a group: '%s' belongs on the objects entry that places "
                               "the group", where, whole_only[k]);
     }
-    const sylva_value *pos = sylva_param(p, "position");
-    if (pos->is_set && pos->len != 3)
+    return 0;
+}
+
+/* A group's part stands at [x, y, z] in the group's frame, never on the ground or on the map. */
+static int check_part_position(loader *L, const sf_position *pos, const char *where)
+{
+    if (pos->given && (!pos->has_height || !isnan(pos->above_ground)))
         return sf_located(L->err, L->file, pos->line, pos->column,
                           "'%s' is a part of a group: its position is [x, y, z] in the group's frame", where);
     return 0;
@@ -82,6 +89,15 @@ int sf_read_object(loader *L, const ynode *item, const char *where, int part, ob
                           "'%s': a group's part is a shape or a model, not another group", where);
     memset(o, 0, sizeof *o);
     o->file = L->file, o->line = item->line, o->column = item->column;
+    static const char *const placed[] = {"position"};
+    scope.host_keys = placed, scope.n_host_keys = 1;
+    const host_schema *schema = shape_node ? &host_schema_object
+                                : model_node ? &host_schema_object_model : &host_schema_object_group;
+    uint32_t n_own;
+    const sylva_param_spec *own = sf_keys_without(L, schema, placed, 1, &n_own);
+    if (!own) return -1;
+    sf_position pos;
+    if (sf_read_position(L, item, sf_host_key(schema, "position"), where, &pos)) return -1;
     const sylva_params *p;
     if (shape_node) {
         sylva_value kind;
@@ -89,16 +105,14 @@ int sf_read_object(loader *L, const ynode *item, const char *where, int part, ob
             return -1;
         const host_schema *shape = host_schema_shape((shape_kind)kind.i);
         const sylva_params *sp;
-        if (sf_validate_shared(L, item, &scope, host_schema_object.params, host_schema_object.n_params,
-                               shape->params, shape->n_params, NULL, &p, &sp) ||
+        if (sf_validate_shared(L, item, &scope, own, n_own, shape->params, shape->n_params, "position", &p, &sp) ||
             sf_read_shape(L, L->file, (shape_kind)kind.i, sp, item, &o->shape))
             return -1;
         o->kind = OBJECT_SHAPE;
         sf_copy3(o->scale, sylva_param(p, "scale"));
         if (sf_material_ref(L, L->file, sylva_param(p, "material"), where, &o->material)) return -1;
     } else {
-        const host_schema *own = model_node ? &host_schema_object_model : &host_schema_object_group;
-        if (params_validate(L->a, item, own->params, own->n_params, &scope, &p, L->err)) return -1;
+        if (params_validate(L->a, item, own, n_own, &scope, &p, L->err)) return -1;
         o->scale[0] = o->scale[1] = o->scale[2] = 1;
         if (model_node) {
             o->kind = OBJECT_MODEL;
@@ -110,16 +124,16 @@ int sf_read_object(loader *L, const ynode *item, const char *where, int part, ob
             if (find_group(L, item, sylva_param(p, "group")->s, where, &o->group)) return -1;
         }
     }
-    if (part && check_part_keys(L, p, where)) return -1;
+    if (part && (check_part_keys(L, p, where) || check_part_position(L, &pos, where))) return -1;
     const sylva_value *name = sylva_param(p, "name");
     o->name = name->is_set ? name->s : where;
     if (o->kind != OBJECT_GROUP) sf_copy3(o->rotation_deg, sylva_param(p, "rotation"));
     o->heading_deg = sylva_param_real(p, "heading");
     o->development = (int)sylva_param(p, "development")->i;
-    if (read_object_position(L, p, where, o)) return -1;
+    if (read_object_position(L, p, &pos, where, o)) return -1;
     const sylva_value *lay = sylva_param(p, "layout");
     *layout = lay->is_set ? lay->s : NULL;
-    if (lay->is_set && sylva_param(p, "position")->is_set)
+    if (lay->is_set && pos.given)
         return sf_located(L->err, L->file, lay->line, lay->column,
                           "'%s' has a layout, which gives the positions; remove 'position'", where);
     return 0;

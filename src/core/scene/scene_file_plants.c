@@ -1,6 +1,8 @@
 /* scene_file_plants.c — the plants section: each plant's species (by name), position (on the
- * terrain when z is left out), rotation, scale and age. */
+ * terrain, or above it, when z is left out), rotation, scale and age. */
 #include "scene/scene_file_loader.h"
+
+#include <math.h>
 
 int sf_read_plants(loader *L, const ynode *node)
 {
@@ -11,6 +13,10 @@ int sf_read_plants(loader *L, const ynode *node)
     const char **names = arena_alloc(L->a, ((size_t)sf->n_species + 1) * sizeof *names);
     if (!sf->plants || !names) return sf_out_of_memory(L);
     for (uint32_t i = 0; i < sf->n_species; i++) names[i] = sf->species[i].name;
+    static const char *const position_key[] = {"position"};
+    uint32_t n_keys;
+    const sylva_param_spec *keys = sf_keys_without(L, &host_schema_plant, position_key, 1, &n_keys);
+    if (!keys) return -1;
     for (uint32_t i = 0; i < node->n_items; i++) {
         const ynode *item = node->items[i];
         param_scope scope = {L->file, L->dir, sf_arena_printf(L->a, "plants[%u]", i), NULL, 0,
@@ -21,19 +27,21 @@ int sf_read_plants(loader *L, const ynode *node)
             return sf_located(L->err, L->file, item->line, item->column,
                               "'%s' must be a mapping (species: ..., position: ...), got %s",
                               scope.where, ynode_kind_phrase(item));
-        if (params_validate(L->a, item, host_schema_plant.params, host_schema_plant.n_params,
-                            &scope, &p, L->err))
+        scope.host_keys = position_key, scope.n_host_keys = 1;
+        sf_position pos;
+        if (params_validate(L->a, item, keys, n_keys, &scope, &p, L->err) ||
+            sf_read_position(L, item, sf_host_key(&host_schema_plant, "position"), scope.where, &pos))
             return -1;
         plant_spec *pl = &sf->plants[sf->n_plants];
-        const sylva_value *species = sylva_param(p, "species"), *pos = sylva_param(p, "position");
+        const sylva_value *species = sylva_param(p, "species");
         int index = scene_file_species_index(sf, species->s);
         if (index < 0)
             return sf_unknown_name(L, L->file, species, "species", "species", scope.where, names,
                                    sf->n_species);
         pl->species = (uint32_t)index;
-        pl->position[0] = pos->list[0], pl->position[1] = pos->list[1];
-        pl->position[2] = pos->len == 3 ? pos->list[2] : 0.0;
-        pl->snap_to_terrain = pos->len == 2;
+        for (int k = 0; k < 3; k++) pl->position[k] = pos.local[k];
+        pl->snap_to_terrain = !pos.has_height;
+        pl->above_ground = isnan(pos.above_ground) ? 0.0 : pos.above_ground;
         pl->rotation_deg = sylva_param_real(p, "rotation");
         pl->scale = sylva_param_real(p, "scale");
         pl->age = sylva_param_real(p, "age");

@@ -57,16 +57,56 @@ static const sylva_value *later_of(const sylva_value *a, const sylva_value *b)
     return a->column > b->column ? a : b;
 }
 
+/* The camera's position and look_at, in local metres or map coordinates (sf_read_position),
+ * with the eye's height above ground; each point's z is provisional while its height is above a
+ * terrain not yet built: the height above ground itself, for the checks below. */
+static int read_camera_points(loader *L, const sylva_params *p, sylva_value *pos_at, sylva_value *look_at)
+{
+    const ynode *map = ynode_get(L->root, "camera");
+    camera_settings *c = &L->sf->camera;
+    sf_position pos, look;
+    if (sf_read_position(L, map, sf_host_key(&host_schema_camera, "position"), "camera", &pos) ||
+        sf_read_position(L, map, sf_host_key(&host_schema_camera, "look_at"), "camera", &look))
+        return -1;
+    const sylva_value *eye = sylva_param(p, "height_above_ground");
+    if (eye->is_set && (pos.has_height || !isnan(pos.above_ground)))
+        return sf_located(L->err, L->file, eye->line, eye->column,
+                          "the camera takes its height from 'position' or from "
+                          "'height_above_ground', not both; give position: [x, y] with it");
+    if (eye->is_set) pos.above_ground = eye->r;
+    if (!pos.has_height && isnan(pos.above_ground))
+        return sf_located(L->err, L->file, pos.line, pos.column,
+                          "the camera 'position' gives no height; give [x, y, z], or "
+                          "height_above_ground: 1.6 (an eye height above the terrain)");
+    if (look.given && !look.has_height && isnan(look.above_ground)) look.above_ground = 0.0;
+    c->eye_ground = (ground_height){!isnan(pos.above_ground), pos.above_ground,
+                                    eye->is_set ? eye->line : pos.line, eye->is_set ? eye->column : pos.column};
+    c->look_at_ground = (ground_height){!isnan(look.above_ground), look.above_ground, look.line, look.column};
+    if (!isnan(pos.above_ground)) pos.local[2] = pos.above_ground;
+    if (!isnan(look.above_ground)) look.local[2] = look.above_ground;
+    for (int k = 0; k < 3; k++) c->position[k] = pos.local[k], c->look_at[k] = look.local[k];
+    *pos_at = (sylva_value){.is_set = 1, .line = pos.line, .column = pos.column};
+    *look_at = (sylva_value){.is_set = look.given, .line = look.line, .column = look.column};
+    return 0;
+}
+
 int sf_read_camera(loader *L)
 {
     if (!ynode_get(L->root, "camera"))
         return sf_located(L->err, L->file, L->root->line, L->root->column,
                        "missing required section 'camera' (at least camera: {position: [x, y, z], "
                        "look_at: [x, y, z]})");
+    static const char *const points[] = {"position", "look_at"};
     const sylva_params *p;
-    if (read_section(L, "camera", &host_schema_camera, &p)) return -1;
+    uint32_t n_keys;
+    const sylva_param_spec *keys = sf_keys_without(L, &host_schema_camera, points, 2, &n_keys);
+    const ynode_pair *pr = ynode_get_pair(L->root, "camera");
+    param_scope scope = {L->file, L->dir, "camera", points, 2, pr->key_line, pr->key_column};
+    if (!keys || params_validate(L->a, pr->value, keys, n_keys, &scope, &p, L->err)) return -1;
+    sylva_value pos_at = {0}, look_at = {0};
+    if (read_camera_points(L, p, &pos_at, &look_at)) return -1;
     camera_settings *c = &L->sf->camera;
-    const sylva_value *pos = sylva_param(p, "position"), *look = sylva_param(p, "look_at"),
+    const sylva_value *pos = &pos_at, *look = &look_at,
                       *dir = sylva_param(p, "direction"), *up = sylva_param(p, "up"),
                       *fov = sylva_param(p, "fov"), *focal = sylva_param(p, "focal_length"),
                       *sensor = sylva_param(p, "sensor_width");
@@ -84,7 +124,6 @@ int sf_read_camera(loader *L)
         return sf_located(L->err, L->file, sensor->line, sensor->column,
                        "'sensor_width' is used only with 'focal_length'; give focal_length too "
                        "or remove it");
-    sf_copy3(c->position, pos);
     sf_copy3(c->up, up);
     c->has_look_at = look->is_set;
     const sylva_value *view = look->is_set ? look : dir;
@@ -93,7 +132,6 @@ int sf_read_camera(loader *L)
                        "the camera 'position' lies beyond single precision (+-%g m), where the "
                        "renderer cannot place it", (double)FLT_MAX);
     if (look->is_set) {
-        sf_copy3(c->look_at, look);
         if (beyond_float(c->look_at))
             return sf_located(L->err, L->file, look->line, look->column,
                            "'look_at' lies beyond single precision (+-%g m), where the renderer "
@@ -138,6 +176,8 @@ int sf_read_camera(loader *L)
         c->focal_length_mm = 0.0;
         c->fov_deg = fov->r;
     }
+    if (c->eye_ground.given) c->position[2] = NAN;   /* known once the terrain is built */
+    if (c->look_at_ground.given) c->look_at[2] = NAN;
     return 0;
 }
 

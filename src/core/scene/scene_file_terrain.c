@@ -13,20 +13,24 @@ int sf_read_terrain(loader *L, const ynode *node, uint32_t line, uint32_t column
                           "'terrain' must be a mapping (grid: ... or plugin: ...), got %s",
                           ynode_kind_phrase(node));
     t->line = node->line, t->column = node->column;
+    static const char *const origin_key[] = {"origin"};
+    uint32_t n_keys;
+    const sylva_param_spec *keys = sf_keys_without(L, &host_schema_terrain, origin_key, 1, &n_keys);
+    if (!keys) return -1;
+    sf_position origin;
     const ynode_pair *pp = ynode_get_pair(node, "plugin");
     if (pp) {
         const sylva_plugin *d;
         if (sf_find_plugin(L, &scope, pp, sf_host_key(&host_schema_terrain, "plugin"), SYLVA_KIND_TERRAIN,
                            &d, &t->plugin))
             return -1;
-        if (sf_validate_shared(L, node, &scope, host_schema_terrain.params,
-                               host_schema_terrain.n_params, d->params, d->n_params, NULL, &host,
+        if (sf_validate_shared(L, node, &scope, keys, n_keys, d->params, d->n_params, "origin", &host,
                                &t->params))
             return -1;
         static const char *const inline_keys[] = {"grid", "origin", "spacing"};
         for (int k = 0; k < 3; k++) {
-            const sylva_value *v = sylva_param(host, inline_keys[k]);
-            if (v->is_set)
+            const ynode *v = ynode_get(node, inline_keys[k]);
+            if (v)
                 return sf_located(L->err, L->file, v->line, v->column,
                                   "'%s' belongs to an inline terrain; with plugin: the plugin '%s' "
                                   "builds the heights (remove '%s' or 'plugin')",
@@ -34,8 +38,9 @@ int sf_read_terrain(loader *L, const ynode *node, uint32_t line, uint32_t column
         }
         t->source = TERRAIN_PLUGIN;
     } else {
-        if (params_validate(L->a, node, host_schema_terrain.params, host_schema_terrain.n_params,
-                            &scope, &host, L->err))
+        scope.host_keys = origin_key, scope.n_host_keys = 1;
+        if (params_validate(L->a, node, keys, n_keys, &scope, &host, L->err) ||
+            sf_read_position(L, node, sf_host_key(&host_schema_terrain, "origin"), "terrain", &origin))
             return -1;
         const sylva_value *grid = sylva_param(host, "grid");
         if (!grid->is_set)
@@ -46,11 +51,10 @@ int sf_read_terrain(loader *L, const ynode *node, uint32_t line, uint32_t column
             return sf_located(L->err, L->file, grid->line, grid->column,
                               "'grid' needs at least 2 rows and 2 columns of heights, got %u x %u",
                               grid->rows, grid->cols);
-        const sylva_value *origin = sylva_param(host, "origin"),
-                          *spacing = sylva_param(host, "spacing");
+        const sylva_value *spacing = sylva_param(host, "spacing");
         t->source = TERRAIN_GRID;
         t->grid = grid->list, t->nx = grid->cols, t->ny = grid->rows;
-        t->origin[0] = origin->list[0], t->origin[1] = origin->list[1];
+        t->origin[0] = origin.local[0], t->origin[1] = origin.local[1];
         t->spacing[0] = spacing->list[0], t->spacing[1] = spacing->list[1];
     }
     return sf_material_ref(L, L->file, sylva_param(host, "material"), "terrain", &t->material);

@@ -150,6 +150,9 @@ int cmd_crosscheck(int argc, char **argv)
         rc = cli_failf("crosscheck", ERR_NOMEM, "out of memory");
         goto done;
     }
+    if (sc->earth.curvature && !co.quiet)
+        fprintf(stderr, "sylva crosscheck: note: POV-Ray cannot bend rays for the Earth's curvature "
+                        "(earth.curvature is on); both renderers draw this scene on a flat Earth here\n");
     int status = crosscheck_run(sc, out, &co, r, &err);
     if (status) {
         rc = cli_fail("crosscheck", &err, status == CROSSCHECK_NOT_WRITTEN ? ERR_OUTPUT : ERR_INTERNAL);

@@ -134,6 +134,10 @@ int cmd_export_pov(int argc, char **argv)
         }
     } else {
         po.source = scene_path;
+        if (sc->earth.curvature && !bo.quiet)
+            fprintf(stderr, "sylva export-pov: note: POV-Ray cannot bend rays for the Earth's curvature "
+                            "(earth.curvature is on); the exported scene shows it on a flat Earth, as "
+                            "sylva render --flat-earth would\n");
         if (pov_export_scene(sc, out, &po, &st, &err)) {
             rc = cli_fail("export-pov", &err, ERR_OUTPUT);
             goto done;

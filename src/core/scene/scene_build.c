@@ -280,6 +280,7 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
         return NULL;
     }
     s->image = sf->image, s->camera = sf->camera, s->sun = sf->sun, s->sky = sf->sky;
+    s->earth = sf->earth;
     plugin_call_output out = {.verbose = opt->verbose, .quiet = opt->quiet};
     if (add_materials(s, sf, err) || build_terrain(s, sf, plugins, &out, err) ||
         build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) ||

@@ -9,8 +9,9 @@
  * beyond the registry's descriptor lookup runs.
  *
  * Sections are read in a fixed order: image, camera, sun, sky, materials, ecology, terrain,
- * species (with includes), plants, objects — materials before their users, the ecology before
- * the species blocks it defines, species before plants.
+ * species (with includes), plants, objects, earth — materials before their users, the ecology
+ * before the species blocks it defines, species before plants, the earth (whose default follows
+ * the site) last.
  */
 #include "scene/scene_file_loader.h"
 
@@ -89,7 +90,7 @@ static int load(loader *L, const char *path)
                         ter ? ter->key_column : 0) ||
         sf_read_species(L, ynode_get(L->root, "species")) ||
         sf_read_plants(L, ynode_get(L->root, "plants")) ||
-        sf_read_objects(L, ynode_get(L->root, "objects")))
+        sf_read_objects(L, ynode_get(L->root, "objects")) || sf_read_earth(L))
         return -1;
     if (scene_estimate_check(L->sf, L->err)) return -1; /* before any mesh is built */
     if (L->sf->ecology.plugin && L->sf->terrain.source == TERRAIN_NONE)

@@ -5,29 +5,14 @@
 #include <math.h>
 
 #include "harness.h"
+#include "scene_fixture.h"
 #include "render/curved_ray.h"
 #include "render/film.h"
 #include "render/render.h"
-#include "scene/scene_build.h"
 #include "scene/scene_file.h"
 
 #define SCENES SYLVA_TEST_DATA_DIR "/scenes"
 #define MAST_SCENE SCENES "/earth/mast_20km.yaml"
-
-static scene *build(const char *path)
-{
-    err_buf err = {{0}};
-    scene_file *sf = scene_file_load(path, NULL, &err);
-    if (!sf) fprintf(stderr, "%s\n", err.msg);
-    CHECK(sf != NULL);
-    if (!sf) return NULL;
-    build_options bo = {.quiet = 1};
-    scene *s = scene_build(sf, NULL, &bo, &err);
-    if (!s) fprintf(stderr, "%s\n", err.msg);
-    CHECK(s != NULL);
-    scene_file_free(sf);
-    return s;
-}
 
 /* The first row from the top whose centre ray, in column x, sees an object; -1 for none. */
 static int first_object_row(const film *f, uint32_t x)
@@ -47,7 +32,7 @@ static double row_of(const scene *s, double dz, double dist)
 
 TEST(mast_drops_by_the_formula)
 {
-    scene *s = build(MAST_SCENE);
+    scene *s = fixture_scene(MAST_SCENE);
     if (!s) return;
     CHECK_INT(s->earth.curvature, 1);
     CHECK_NEAR(s->earth.refraction, 0.13, 0);
@@ -86,7 +71,7 @@ TEST(mast_drops_by_the_formula)
  * for bit. */
 TEST(refraction_one_is_flat)
 {
-    scene *s = build(MAST_SCENE);
+    scene *s = fixture_scene(MAST_SCENE);
     if (!s) return;
     render_options ro = {.threads = 1, .verify = 1, .quiet = 1, .width = 160, .height = 120};
     err_buf err = {{0}};

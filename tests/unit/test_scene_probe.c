@@ -1,6 +1,6 @@
 /* test_scene_probe.c — what scene_probe reports at a point of tests/scenes/probe_grid.yaml: the
  * terrain's height (bilinear, as plants stand on it), slope and aspect, water, the plants within
- * a radius nearest first, the objects over the point; a point off the terrain and a scene
+ * a radius nearest first (one standing height_above_ground over the terrain), the objects over the point; a point off the terrain and a scene
  * without terrain are refused with a sentence. */
 #include <math.h>
 
@@ -41,6 +41,13 @@ TEST(ground_plants_and_objects)
     CHECK_NEAR(r.ground, 20, 1e-9);
     CHECK_INT(r.n_plants, 0);
     CHECK_INT(r.n_objects, 1); /* the mast */
+    probe_result_free(&r);
+
+    /* a plant 12 m above the ground (16 m there) */
+    CHECK_INT(scene_probe(s, 16, 2, 0.1, &r, &err), 0);
+    CHECK_NEAR(r.ground, 16, 1e-9);
+    CHECK_INT(r.n_plants, 1);
+    if (r.n_plants == 1) CHECK_NEAR(r.plants[0].position[2], 28, 1e-5);
     probe_result_free(&r);
 
     /* water over the low western edge only */

@@ -281,6 +281,9 @@ static const sylva_param_spec plant_params[] = {
      .min = 0,
      .max = 1,
      .help = "Normalised age; picks the nearest age variant (1 is full grown)."},
+    {.name = "height_above_ground", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0,
+     .min = -10000, .max = 10000, .unit = "m",
+     .help = "Height of the plant's base above the terrain at [x, y] (a plant on a roof)."},
 };
 const host_schema host_schema_plant = {"plants item", "One plant placed by hand.", plant_params,
                                        COUNT(plant_params)};

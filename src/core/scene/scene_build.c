@@ -184,15 +184,16 @@ static int build_species(scene *s, const scene_file *sf, const plugin_registry *
     return 0;
 }
 
-/* Places one plant as an instance; age selects the variant. */
-static int place_plant(scene *s, uint32_t sp, double pos[3], int snap, double rot_deg, double scale,
+/* Places one plant as an instance; age selects the variant. With snap it stands `lift` metres
+ * above the terrain. */
+static int place_plant(scene *s, uint32_t sp, double pos[3], int snap, double lift, double rot_deg, double scale,
                        double age, err_buf *err)
 {
     if (snap) {
         double z = 0;
-        if (!scene_terrain_height(s, pos[0], pos[1], &z)) pos[2] = z;
+        if (!scene_terrain_height(s, pos[0], pos[1], &z)) pos[2] = z + lift;
         else if (s->terrain) return err_set(err, "position (%g, %g) lies outside the terrain", pos[0], pos[1]);
-        else pos[2] = 0;
+        else pos[2] = lift;
     }
     uint32_t proto = s->species[sp].first_prototype + scene_variant_for_age(s, sp, age);
     xform3x4 xf = plant_transform(pos, rot_deg, scale);
@@ -204,7 +205,8 @@ static int build_plants(scene *s, const scene_file *sf, err_buf *err)
     for (uint32_t i = 0; i < sf->n_plants; i++) {
         const plant_spec *p = &sf->plants[i];
         double pos[3] = {p->position[0], p->position[1], p->position[2]};
-        if (place_plant(s, p->species, pos, p->snap_to_terrain, p->rotation_deg, p->scale, p->age, err)) {
+        if (place_plant(s, p->species, pos, p->snap_to_terrain, p->height_above_ground, p->rotation_deg, p->scale,
+                        p->age, err)) {
             err_prefix(err, "plant %u: ", i);
             return err_locate(err, sf->path, p->line, p->column);
         }
@@ -230,7 +232,7 @@ int scene_place_plants(scene *s, const sylva_plant *plants, uint32_t n, err_buf 
         double ph = s->prototypes[sp->first_prototype + v].height;
         double scale = p->height > 0 && ph > 0 ? p->height / ph : 1.0;
         double pos[3] = {p->position[0], p->position[1], p->position[2]};
-        if (place_plant(s, p->species, pos, p->snap_to_terrain, p->rotation * 180.0 / M_PI, scale, p->age, err))
+        if (place_plant(s, p->species, pos, p->snap_to_terrain, 0.0, p->rotation * 180.0 / M_PI, scale, p->age, err))
             return err_prefix(err, "plant %u: ", i);
     }
     return 0;

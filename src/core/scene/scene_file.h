@@ -129,6 +129,7 @@ typedef struct plant_spec {
     uint32_t species;         /* index into scene_file.species */
     double position[3];
     int snap_to_terrain;      /* 1 when the position gave no z (two numbers) */
+    double height_above_ground; /* with snap_to_terrain: the base stands this far above it */
     double rotation_deg;      /* about +Z */
     double scale;
     double age;               /* (0, 1] */

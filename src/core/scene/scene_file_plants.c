@@ -1,6 +1,19 @@
 /* scene_file_plants.c — the plants section: each plant's species (by name), position (on the
- * terrain when z is left out), rotation, scale and age. */
+ * terrain when z is left out, or a height above it), rotation, scale and age. */
 #include "scene/scene_file_loader.h"
+
+/* height_above_ground: the base stands that far above the terrain at [x, y] (a plant on a roof
+ * or a raised bed); with a z of its own the plant is placed already. */
+static int read_plant_lift(loader *L, const sylva_params *p, plant_spec *pl)
+{
+    const sylva_value *lift = sylva_param(p, "height_above_ground");
+    pl->height_above_ground = lift->r;
+    if (lift->is_set && !pl->snap_to_terrain)
+        return sf_located(L->err, L->file, lift->line, lift->column,
+                          "'height_above_ground' places the plant above the terrain at [x, y]; give "
+                          "'position' as [x, y] with it, or [x, y, z] without it");
+    return 0;
+}
 
 int sf_read_plants(loader *L, const ynode *node)
 {
@@ -34,6 +47,7 @@ int sf_read_plants(loader *L, const ynode *node)
         pl->position[0] = pos->list[0], pl->position[1] = pos->list[1];
         pl->position[2] = pos->len == 3 ? pos->list[2] : 0.0;
         pl->snap_to_terrain = pos->len == 2;
+        if (read_plant_lift(L, p, pl)) return -1;
         pl->rotation_deg = sylva_param_real(p, "rotation");
         pl->scale = sylva_param_real(p, "scale");
         pl->age = sylva_param_real(p, "age");

@@ -99,12 +99,11 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
         struct RTCRayHit rh;
         int found;
         if (depth == 0) {
-            found = trace_camera(ctx, d, &rh);
+            found = *hit = trace_camera(ctx, d, &rh);
         } else {
             ray_init(&rh, o, d, 0.0f, INFINITY);
             found = trace(ctx, &rh);
         }
-        if (depth == 0) *hit = found;
         if (!found) {
             /* The camera sees the exact sky; light reaching surfaces uses the tabulated sky, the
              * same function next-event estimation samples, so both MIS strategies agree. */

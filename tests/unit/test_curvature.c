@@ -1,5 +1,6 @@
 /* test_curvature.c — the Earth's curvature and refraction in the renderer (render/curved_ray.h):
- * a 100 m mast 20 km away drops in the image by (1 - k) d^2 / (2 R) to within a pixel, the
+ * a 100 m mast 20 km away drops in the image by (1 - k) d^2 / (2 R) to within a pixel (in the
+ * verification mode and the path tracer alike), the
  * chain of chords stays within its angular tolerance of the curved path, and the `earth:`
  * section reads as documented. */
 #include <math.h>
@@ -62,6 +63,18 @@ TEST(mast_drops_by_the_formula)
         size_t k = (size_t)(r_curved + 2) * curved->width + x;
         CHECK_NEAR(curved->depth[k], dist, 1.0);
     }
+    /* The path tracer bends its camera rays alike: the same top row, and the sky (coverage 0)
+     * just above it where the flat render's mast stood. */
+    ro = (render_options){.threads = 2, .quiet = 1, .spp = 1};
+    film *traced = render_scene(s, &ro, NULL, &err);
+    CHECK(traced != NULL);
+    if (traced && curved) {
+        uint32_t x = s->image.width / 2;
+        int r = first_object_row(traced, x);
+        CHECK_INT(r, first_object_row(curved, x));
+        if (r > 0) CHECK_NEAR(traced->coverage[(size_t)(r - 1) * traced->width + x], 0, 0);
+    }
+    film_free(traced);
     film_free(curved);
     film_free(flat);
     scene_free(s);

@@ -1,8 +1,7 @@
 /* test_curvature.c — the Earth's curvature and refraction in the renderer (render/curved_ray.h):
  * a 100 m mast 20 km away drops in the image by (1 - k) d^2 / (2 R) to within a pixel (in the
- * verification mode and the path tracer alike), the
- * chain of chords stays within its angular tolerance of the curved path, and the `earth:`
- * section reads as documented. */
+ * verification mode and the path tracer alike), the chain of chords stays within its angular
+ * tolerance of the curved path, and the `earth:` section reads as documented. */
 #include <math.h>
 
 #include "harness.h"

@@ -23,7 +23,9 @@ static void crosscheck_usage(FILE *out)
             "same size with the same camera samples (pixel centre plus a regular grid, no jitter),\n"
             "compares the two in linear float overall and per class (terrain, bark, leaves,\n"
             "objects, sky) and writes DIR/report.html and DIR/metrics.json with both pictures, a\n"
-            "difference heatmap and both renderers' timing (see docs/crosscheck.md).\n\n"
+            "difference heatmap and both renderers' timing (see docs/crosscheck.md). POV-Ray cannot\n"
+            "bend rays: a scene with earth.curvature on is compared on a flat Earth, and the report\n"
+            "says so.\n\n"
             "options:\n"
             "  -o, --output DIR     output folder (default: crosscheck-<scene name>)\n"
             "  --size WxH           image size (default: the scene's)\n"
@@ -150,6 +152,9 @@ int cmd_crosscheck(int argc, char **argv)
         rc = cli_failf("crosscheck", ERR_NOMEM, "out of memory");
         goto done;
     }
+    if (sc->earth.curvature && !co.quiet)
+        fprintf(stderr, "sylva crosscheck: note: POV-Ray cannot bend rays for the Earth's curvature "
+                        "(earth.curvature is on); both renderers draw this scene on a flat Earth here\n");
     int status = crosscheck_run(sc, out, &co, r, &err);
     if (status) {
         rc = cli_fail("crosscheck", &err, status == CROSSCHECK_NOT_WRITTEN ? ERR_OUTPUT : ERR_INTERNAL);

@@ -19,7 +19,9 @@ static void export_pov_usage(FILE *out)
             "sun, sky and includes beside it for the materials, terrain, objects, species (each\n"
             "variant declared once as a mesh2) and plants (one `object { Species_k matrix <..> }`\n"
             "each), plus the images of textured materials. Rendered by POV-Ray from the output\n"
-            "folder, it gives the picture of `sylva render --verify` (see docs/crosscheck.md).\n\n"
+            "folder, it gives the picture of `sylva render --verify` (see docs/crosscheck.md); a scene\n"
+            "with earth.curvature on is written as seen on a flat Earth (render --flat-earth), as\n"
+            "POV-Ray cannot bend rays.\n\n"
             "options:\n"
             "  -o, --output FILE   OUT.pov (default: the scene's name with .pov in the current folder);\n"
             "                      with --species also OUT.inc alone\n"
@@ -134,6 +136,10 @@ int cmd_export_pov(int argc, char **argv)
         }
     } else {
         po.source = scene_path;
+        if (sc->earth.curvature && !bo.quiet)
+            fprintf(stderr, "sylva export-pov: note: POV-Ray cannot bend rays for the Earth's curvature "
+                            "(earth.curvature is on); the exported scene shows it on a flat Earth, as "
+                            "sylva render --flat-earth would\n");
         if (pov_export_scene(sc, out, &po, &st, &err)) {
             rc = cli_fail("export-pov", &err, ERR_OUTPUT);
             goto done;

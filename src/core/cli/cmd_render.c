@@ -26,6 +26,8 @@ static void render_usage(FILE *out)
             "  --seed N            random seed (overrides image.seed)\n"
             "  --verify            verification mode: direct sun with hard shadows plus the\n"
             "                      constant ambient term, no indirect light (as POV-Ray)\n"
+            "  --flat-earth        straight camera rays even when the scene's earth.curvature\n"
+            "                      is on (the view POV-Ray's export gives)\n"
             "  -q, --quiet         no progress output\n"
             "  --allow-gdal-virtual let the scene name GDAL virtual paths, URLs and connection\n"
             "                      strings (these may reach the network; refused otherwise)\n"
@@ -84,6 +86,8 @@ int cmd_render(int argc, char **argv)
             i++;
         } else if (!strcmp(a, "--verify")) {
             ro.verify = 1;
+        } else if (!strcmp(a, "--flat-earth")) {
+            ro.flat_earth = 1;
         } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
             ro.quiet = bo.quiet = 1;
         } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {

@@ -12,6 +12,7 @@ int cmd_crosscheck(int argc, char **argv); /* cmd_crosscheck.c */
 int cmd_simulate(int argc, char **argv);   /* cmd_simulate.c */
 int cmd_factors(int argc, char **argv);    /* cmd_factors.c */
 int cmd_tree_stats(int argc, char **argv); /* cmd_tree_stats.c */
+int cmd_probe(int argc, char **argv);      /* cmd_probe.c */
 
 typedef struct sylva_command {
     const char *name;                 /* as typed after `sylva` */

@@ -202,8 +202,9 @@ int crosscheck_run(const scene *s, const char *out_dir, const crosscheck_options
     char path[4300];
 
     /* sylva's verification render */
+    r->flat_earth = s->earth.curvature;
     render_options ro = {.threads = o->threads, .verify = 1, .quiet = o->quiet, .spp = r->spp, .width = r->width,
-                         .height = r->height};
+                         .height = r->height, .flat_earth = 1};
     render_stats rs;
     f = render_scene(s, &ro, &rs, err);
     if (!f) goto done;

@@ -8,7 +8,8 @@
  * surface, POV-Ray's its alpha), and over RGB: mean absolute error, RMSE, PSNR, the largest
  * error and the share of pixels with an error over a threshold — overall and per class of
  * what the pixel's centre ray sees (terrain, bark, leaves, objects, sky; render/film.h).
- * The thresholds and their reasons are in docs/crosscheck.md.
+ * The thresholds and their reasons are in docs/crosscheck.md. A scene with earth.curvature on
+ * is compared as if the Earth were flat (sylva's rays straight too), and the result says so.
  *
  * Files written into the output folder: sylva.exr and sylva.png (the verification render),
  * povray.png (POV-Ray's picture, tone-mapped alike), difference.png (heatmap of the largest
@@ -62,6 +63,8 @@ typedef struct crosscheck_result {
     mask_agreement coverage;
     double coverage_mae;          /* mean |sylva coverage - POV-Ray alpha| */
 
+    int flat_earth;               /* 1: the scene bends camera rays for the Earth's curvature, which
+                                     POV-Ray's straight rays cannot; sylva rendered it flat here */
     double sylva_bvh_seconds, sylva_render_seconds, export_seconds;
     povray_result povray;
 

@@ -76,6 +76,7 @@ static int write_json(const char *out_dir, const crosscheck_result *r, const cro
     json_string(f, r->pov_scene);
     fprintf(f, ",\n  \"width\": %u, \"height\": %u, \"spp\": %u, \"samples_per_pixel\": %u,\n", r->width, r->height,
             r->spp, r->samples);
+    fprintf(f, "  \"flat_earth\": %s,\n", r->flat_earth ? "true" : "false");
     fprintf(f, "  \"pass\": %s,\n  \"verdict\": ", r->pass ? "true" : "false");
     json_string(f, r->verdict);
     fprintf(f, ",\n  \"checks\": {\"coverage\": %s, \"mae\": %s, \"over\": %s, \"classes\": %s},\n",
@@ -220,6 +221,11 @@ static int write_html(const char *out_dir, const crosscheck_result *r, const cro
                "<figure><img src=\"classes.png\" alt=\"classes\"><figcaption>classes: sky (light blue), terrain "
                "(ochre), bark (brown), leaves (green), objects (light grey)</figcaption></figure>\n",
             heatmap_scale);
+    if (r->flat_earth)
+        fputs("<p>The scene bends its camera rays for the Earth's curvature and refraction "
+              "(<code>earth.curvature</code>); POV-Ray's rays are straight, so both pictures here show "
+              "the scene on a flat Earth, and <code>sylva render</code> of this scene differs from them "
+              "(docs/models/curvature.md).</p>\n", f);
     fputs("<p>Both pictures are tone-mapped alike for viewing; every metric is computed on linear float values "
           "(sylva's EXR and POV-Ray's half-float EXR).</p>\n", f);
 

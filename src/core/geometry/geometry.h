@@ -9,6 +9,7 @@
  *   texture_lookup.h  the nearest texel of a texture, sRGB decoding
  *   light_summary.h   the sun and the sky, with the ambient term and the sky's mean radiance
  *   sky_preetham.h    the Preetham daylight sky model the light summary evaluates
+ *   camera_frame.h    the camera's forward, right and up vectors, turned by its roll
  *
  * The height and normal of the terrain at any point are the scene's (scene/heightfield.h), since
  * the plugin host answers those queries below this layer. Including this header includes them
@@ -17,6 +18,7 @@
 #ifndef SYLVA_GEOMETRY_H
 #define SYLVA_GEOMETRY_H
 
+#include "geometry/camera_frame.h"
 #include "geometry/cutout.h"
 #include "geometry/light_summary.h"
 #include "geometry/sky_preetham.h"

@@ -454,12 +454,16 @@ static int write_plants(const scene *s, const export_paths *ep, const char *sour
 
 static void write_camera(pov_file *pf, const camera_settings *c, uint32_t width, uint32_t height)
 {
-    double look[3];
+    double look[3], f[3], r[3], up[3];
     for (int d = 0; d < 3; d++) look[d] = c->has_look_at ? c->look_at[d] : c->position[d] + c->direction[d];
+    /* The rolled frame's up as POV-Ray's sky: POV-Ray builds right and up from sky and the view
+     * as sylva does, so the turned view is the same. Unrolled, the up vector as given. */
+    camera_frame(c, f, r, up);
+    const double *sky = c->roll_deg != 0.0 ? up : c->up;
     char a[128], b[128], u[128], aspect[POV_NUMBER_MAX], fov[POV_NUMBER_MAX];
     pov_append_vec3(a, c->position, SETTING_DIGITS, NULL);
     pov_append_vec3(b, look, SETTING_DIGITS, NULL);
-    pov_append_vec3(u, c->up, SETTING_DIGITS, NULL);
+    pov_append_vec3(u, sky, SETTING_DIGITS, NULL);
     pov_format_real(aspect, (double)width / height, SETTING_DIGITS);
     pov_format_real(fov, c->fov_deg, SETTING_DIGITS);
     pov_printf(pf, "camera {\n  perspective\n  location %s\n  sky %s  // sylva's up vector\n"
@@ -525,6 +529,10 @@ static int write_main(const scene *s, const light_summary *l, const export_paths
     pov_printf(&pf, "#ifndef (Sylva_sky_transmit)\n  #declare Sylva_sky_transmit = 0;\n#end\n"
                     "// The sky's mean radiance over the upper hemisphere.\n"
                     "background { rgbt <%s, %s, %s, Sylva_sky_transmit> }\n\n", sky[0], sky[1], sky[2]);
+    if (s->earth.curvature)
+        pov_put(&pf, "// The scene file bends sylva's camera rays for the Earth's curvature and refraction\n"
+                     "// (earth.curvature); POV-Ray's rays are straight, so this file shows it on a flat Earth:\n"
+                     "// distant things stand higher here than in sylva's render (docs/models/curvature.md).\n\n");
     write_camera(&pf, &s->camera, w, h);
     write_sun(&pf, s, l, lo, hi);
     pov_printf(&pf, "#include \"%s_materials.inc\"\n", ep->stem);

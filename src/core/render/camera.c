@@ -1,33 +1,20 @@
-/* camera.c — primary ray directions. The frame is built in double precision from the scene's
- * numbers and only the unit vectors are rounded to float, so a look_at far away (or very close)
- * still gives a finite frame; the scene loader refuses what cannot be aimed at all. */
+/* camera.c — primary ray directions. The frame (with its roll) is built in double precision
+ * from the scene's numbers (geometry/camera_frame.h) and only the unit vectors are rounded to
+ * float, so a look_at far away (or very close) still gives a finite frame; the scene loader
+ * refuses what cannot be aimed at all. */
 #include "render/camera.h"
 
 #include <math.h>
 
-/* v scaled to unit length without overflow or underflow; zero stays zero. */
-static void unit_d(double v[3])
-{
-    double m = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
-    if (!(m > 0.0) || !isfinite(m)) return;
-    for (int k = 0; k < 3; k++) v[k] /= m;
-    double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    for (int k = 0; k < 3; k++) v[k] /= l;
-}
+#include "geometry/camera_frame.h"
 
 static vec3 to_float(const double v[3]) { return v3((float)v[0], (float)v[1], (float)v[2]); }
 
 void camera_init(camera *c, const camera_settings *s, uint32_t width, uint32_t height)
 {
     c->origin = to_float(s->position);
-    double f[3], up[3] = {s->up[0], s->up[1], s->up[2]};
-    for (int k = 0; k < 3; k++)
-        f[k] = s->has_look_at ? s->look_at[k] - s->position[k] : s->direction[k];
-    unit_d(f);
-    unit_d(up);
-    double r[3] = {f[1] * up[2] - f[2] * up[1], f[2] * up[0] - f[0] * up[2],
-                   f[0] * up[1] - f[1] * up[0]};
-    unit_d(r);
+    double f[3], r[3], u[3];
+    camera_frame(s, f, r, u);
     c->forward = to_float(f);
     c->right = to_float(r);
     c->up = v3_cross(c->right, c->forward);

@@ -39,6 +39,31 @@ static int trace(const render_ctx *ctx, struct RTCRayHit *rh)
     return rh->hit.geomID != RTC_INVALID_GEOMETRY_ID;
 }
 
+/* Traces the camera ray along unit d: straight, or chord by chord along the Earth's curved path
+ * (curved_ray.h). On a hit, rh holds it as if a straight ray from the camera along d had met the
+ * surface at the hit's path parameter (ray.tfar), so depth and shading read it as any hit. */
+static int trace_camera(const render_ctx *ctx, vec3 d, struct RTCRayHit *rh)
+{
+    curved_path p;
+    curved_path_begin(&p, &ctx->curved, d);
+    vec3 org, dir;
+    float len;
+    double t0, dt;
+    while (curved_path_next(&p, &org, &dir, &len, &t0, &dt)) {
+        /* Chords overlap by a hundred-thousandth so that no hit falls between two of them. */
+        ray_init(rh, org, dir, 0.0f, isinf(len) ? INFINITY : len * (1.0f + 1e-5f));
+        if (!trace(ctx, rh)) continue;
+        if (isinf(len)) return 1;
+        float t = (float)(t0 + rh->ray.tfar / len * dt);
+        rh->ray.org_x = ctx->camera.origin.x, rh->ray.org_y = ctx->camera.origin.y, rh->ray.org_z = ctx->camera.origin.z;
+        rh->ray.dir_x = d.x, rh->ray.dir_y = d.y, rh->ray.dir_z = d.z;
+        rh->ray.tfar = t;
+        return 1;
+    }
+    ray_init(rh, ctx->camera.origin, d, 0.0f, INFINITY);
+    return 0;
+}
+
 /* 1 when nothing blocks o + t d for t in (0, far). */
 static int visible(const render_ctx *ctx, vec3 o, vec3 d, float far)
 {
@@ -80,9 +105,14 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
     float prev_pdf = 0.0f; /* 0: the previous vertex was the camera (no MIS on emission) */
     for (uint32_t depth = 0;; depth++) {
         struct RTCRayHit rh;
-        ray_init(&rh, o, d, 0.0f, INFINITY);
-        int found = trace(ctx, &rh);
-        if (depth == 0) *hit = found ? 1 + on_development(a, &rh) : 0;
+        int found;
+        if (depth == 0) {
+            found = trace_camera(ctx, d, &rh);
+            *hit = found ? 1 + on_development(a, &rh) : 0;
+        } else {
+            ray_init(&rh, o, d, 0.0f, INFINITY);
+            found = trace(ctx, &rh);
+        }
         if (!found) {
             /* The camera sees the exact sky; light reaching surfaces uses the tabulated sky, the
              * same function next-event estimation samples, so both MIS strategies agree. */
@@ -181,12 +211,18 @@ static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t
             uint32_t s = s0 + i, g = s ? s - 1 : 0;
             float sx = s ? ((g % grid) + 0.5f) / grid : 0.5f, sy = s ? ((g / grid) + 0.5f) / grid : 0.5f;
             vec3 d = camera_direction(&ctx->camera, x + sx, y + sy);
+            if (ctx->curved.on) {
+                trace_camera(ctx, d, &rh[i]); /* chord by chord, one ray at a time */
+                continue;
+            }
             ray_init(&rh[i], ctx->camera.origin, d, 0.0f, INFINITY);
             if (ctx->recorder) ctx->recorder->record(ctx->recorder->user, ctx->camera.origin, d, INFINITY, 0);
         }
-        rtcInitIntersectContext(&ic);
-        ic.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-        rtcIntersect1M(a->top, &ic, rh, m, sizeof rh[0]);
+        if (!ctx->curved.on) {
+            rtcInitIntersectContext(&ic);
+            ic.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+            rtcIntersect1M(a->top, &ic, rh, m, sizeof rh[0]);
+        }
         for (uint32_t i = 0; i < m; i++) {
             cosine[i] = 0.0f;
             if (rh[i].hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
@@ -232,8 +268,7 @@ static void aux_layers(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_resu
 {
     vec3 d = camera_direction(&ctx->camera, x + 0.5f, y + 0.5f);
     struct RTCRayHit rh;
-    ray_init(&rh, ctx->camera.origin, d, 0.0f, INFINITY);
-    if (!trace(ctx, &rh)) {
+    if (!trace_camera(ctx, d, &rh)) {
         out->depth = INFINITY;
         out->normal = v3(0, 0, 0), out->albedo = v3(0, 0, 0);
         out->instance_id = out->species_id = out->object_id = 0;

@@ -14,12 +14,17 @@
  *
  * Auxiliary layers (depth, normal, albedo, ids, class) come from one ray through the pixel
  * centre; coverage is the share of the camera samples whose first ray hit a surface, and
- * development the share whose first ray hit an object marked as part of the development. */
+ * development the share whose first ray hit an object marked as part of the development.
+ *
+ * Camera rays follow the Earth's curvature when ctx->curved is on (curved_ray.h), in both modes;
+ * the rays after the first hit (shadows, bounces) are straight, and a camera ray that misses
+ * sees the sky in the direction it left the camera. */
 #ifndef SYLVA_INTEGRATOR_H
 #define SYLVA_INTEGRATOR_H
 
 #include "render/accel.h"
 #include "render/camera.h"
+#include "render/curved_ray.h"
 #include "render/lights.h"
 
 /* Receives every ray the integrator casts (benchmarks replay them on bare Embree). */
@@ -32,6 +37,7 @@ typedef struct render_ctx {
     const accel *accel;
     const lights *lights;
     camera camera;
+    curved_rays curved;  /* camera rays over the curved Earth, or straight (curved.on 0) */
     uint32_t spp, max_depth;
     uint64_t seed;
     int verify;

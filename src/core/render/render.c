@@ -86,6 +86,7 @@ film *render_scene(const scene *s, const render_options *opt, render_stats *stat
                       .max_depth = s->image.max_depth, .seed = o.seed_set ? o.seed : s->image.seed, .verify = o.verify,
                       .recorder = o.recorder};
     camera_init(&ctx.camera, &s->camera, w, h);
+    curved_rays_init(&ctx.curved, o.flat_earth ? NULL : &s->earth, &ctx.camera, acc.bounds_lo, acc.bounds_hi);
     render_job job = {.ctx = &ctx, .film = f, .tiles_x = (w + TILE - 1) / TILE, .tiles_y = (h + TILE - 1) / TILE};
     atomic_init(&job.next_tile, 0);
     progress prog;

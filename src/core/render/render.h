@@ -11,6 +11,7 @@
 typedef struct render_options {
     unsigned threads;   /* 0: one per core */
     int verify;         /* verification mode (see integrator.h) */
+    int flat_earth;     /* 1: straight camera rays even when the scene's earth.curvature is on */
     int quiet;          /* no progress output */
     uint32_t spp;       /* 0: the scene's */
     uint32_t width, height; /* 0: the scene's */

@@ -18,7 +18,7 @@
 
 const char *const host_sections[] = {"image",   "site",    "camera",  "sun",     "sky",     "materials",
                                      "terrain", "species", "plants",  "ecology", "groups",  "objects",
-                                     NULL};
+                                     "earth",   NULL};
 
 const char *const host_shape_names[] = {"mesh", "box", "sphere", "quad", "disk", NULL};
 const char *const host_sky_models[] = {"none", "constant", "preetham", NULL};
@@ -142,6 +142,14 @@ static const sylva_param_spec camera_params[] = {
      .help = "Lens focal length; when given, the field of view follows from it and sensor_width."},
     {.name = "sensor_width", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 36, .min = 0,
      .max = 1000, .unit = "mm", .help = "Sensor width, used with focal_length (36 is full frame)."},
+    {.name = "heading", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = -360, .max = 360,
+     .unit = "deg",
+     .help = "Compass direction of the view, clockwise from north (+Y), instead of look_at."},
+    {.name = "pitch", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = -90, .max = 90,
+     .unit = "deg", .help = "Angle of the view above the horizon (negative looks down), with heading."},
+    {.name = "roll", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = -180, .max = 180,
+     .unit = "deg",
+     .help = "Turn of the camera about its view, clockwise as seen from behind it."},
 };
 const host_schema host_schema_camera = {
     "camera", "A pinhole camera: where it stands, where it looks and how wide it sees.",
@@ -215,6 +223,19 @@ static const sylva_param_spec sky_params[] = {
 };
 const host_schema host_schema_sky = {"sky", "The sky dome that lights the scene from every side.",
                                      sky_params, COUNT(sky_params)};
+
+/* --- earth ---------------------------------------------------------------------------------- */
+static const sylva_param_spec earth_params[] = {
+    {.name = "curvature", .type = SYLVA_P_BOOL, .def = 0,
+     .help = "Bend camera rays for the Earth's curvature (default: on with a site, else off)."},
+    {.name = "refraction", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0.13, .min = -2,
+     .max = 2, .help = "Atmospheric refraction coefficient k; objects drop by (1 - k) d^2 / 2R."},
+    {.name = "radius", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 6371000, .min = 1000,
+     .max = 1e9, .unit = "m", .help = "Radius R of the Earth (the mean radius by default)."},
+};
+const host_schema host_schema_earth = {
+    "earth", "The Earth's curvature and the atmosphere's refraction over long views.",
+    earth_params, COUNT(earth_params)};
 
 /* --- materials ------------------------------------------------------------------------------ */
 static const sylva_param_spec material_params[] = {
@@ -303,6 +324,9 @@ static const sylva_param_spec plant_params[] = {
      .min = 0,
      .max = 1,
      .help = "Normalised age; picks the nearest age variant (1 is full grown)."},
+    {.name = "height_above_ground", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0,
+     .min = -10000, .max = 10000, .unit = "m",
+     .help = "Height of the plant's base above the terrain at [x, y] (a plant on a roof)."},
 };
 const host_schema host_schema_plant = {"plants item", "One plant placed by hand.", plant_params,
                                        COUNT(plant_params)};
@@ -446,8 +470,8 @@ const host_schema *host_schema_at(uint32_t i)
 {
     static const host_schema *const all[] = {
         &host_schema_image,        &host_schema_site,         &host_schema_position,
-        &host_schema_camera,       &host_schema_sun,
-        &host_schema_sky,          &host_schema_material,     &host_schema_terrain,
+        &host_schema_camera,       &host_schema_sun,          &host_schema_sky,
+        &host_schema_earth,        &host_schema_material,     &host_schema_terrain,
         &host_schema_species,      &host_schema_plant,        &host_schema_ecology,
         &host_schema_object,       &host_schema_object_model, &host_schema_object_group,
         &host_schema_shape_box,    &host_schema_shape_sphere,

@@ -76,6 +76,7 @@ typedef struct scene {
     camera_settings camera;
     sun_settings sun;
     sky_settings sky;
+    earth_settings earth;
 
     sylva_heightfield *terrain; /* owned (with its z and material arrays), or NULL */
     int32_t terrain_material;   /* default material of terrain nodes without one */

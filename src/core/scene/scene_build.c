@@ -192,7 +192,7 @@ static int place_plant(scene *s, uint32_t sp, double pos[3], int snap, double ab
         double z = 0;
         if (!scene_terrain_height(s, pos[0], pos[1], &z)) pos[2] = z + above;
         else if (s->terrain) return err_set(err, "position (%g, %g) lies outside the terrain", pos[0], pos[1]);
-        else pos[2] = 0;
+        else pos[2] = above;
     }
     uint32_t proto = s->species[sp].first_prototype + scene_variant_for_age(s, sp, age);
     xform3x4 xf = plant_transform(pos, rot_deg, scale);
@@ -262,6 +262,7 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
         return NULL;
     }
     s->image = sf->image, s->camera = sf->camera, s->sun = sf->sun, s->sky = sf->sky;
+    s->earth = sf->earth;
     plugin_call_output out = {.verbose = opt->verbose, .quiet = opt->quiet};
     if (scene_set_site(s, &sf->site, err) || add_materials(s, sf, err) ||
         build_terrain(s, sf, plugins, &out, err) || scene_ground_camera(s, sf, err) ||

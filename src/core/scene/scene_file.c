@@ -9,8 +9,9 @@
  * beyond the registry's descriptor lookup runs.
  *
  * Sections are read in a fixed order: image, site, camera, sun, sky, materials, ecology,
- * terrain, species (with includes), plants, objects — the site before every position, materials
- * before their users, the ecology before the species blocks it defines, species before plants.
+ * terrain, species (with includes), plants, groups, objects, earth — the site before every
+ * position, materials before their users, the ecology before the species blocks it defines,
+ * species before plants, the earth (whose default follows the site) last.
  */
 #include "scene/scene_file_loader.h"
 
@@ -91,7 +92,7 @@ static int load(loader *L, const char *path)
         sf_read_species(L, ynode_get(L->root, "species")) ||
         sf_read_plants(L, ynode_get(L->root, "plants")) ||
         sf_read_groups(L, ynode_get(L->root, "groups")) ||
-        sf_read_objects(L, ynode_get(L->root, "objects")))
+        sf_read_objects(L, ynode_get(L->root, "objects")) || sf_read_earth(L))
         return -1;
     if (scene_estimate_check(L->sf, L->err)) return -1; /* before any mesh is built */
     if (L->sf->ecology.plugin && L->sf->terrain.source == TERRAIN_NONE)

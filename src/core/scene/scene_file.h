@@ -44,6 +44,7 @@ typedef struct camera_settings {
     double direction[3];    /* unit after loading; with a height above ground, final once the
                                scene is built (scene_build.c) */
     double up[3];
+    double roll_deg;        /* turn about the view, clockwise seen from behind (camera_frame.h) */
     double fov_deg;         /* horizontal field of view; derived from focal length when given */
     double focal_length_mm; /* 0 when fov was given */
     double sensor_width_mm;
@@ -67,6 +68,14 @@ typedef struct site_settings {
     const char *crs_name;   /* its short name for messages (e.g. "WGS 84 / UTM zone 14N"), or NULL */
     double origin[3];       /* map coordinates of the local origin */
 } site_settings;
+
+/* The Earth under a site (docs/models/curvature.md): camera rays bend so that a point at
+ * horizontal distance d from the camera appears lower by (1 - refraction) d^2 / (2 radius). */
+typedef struct earth_settings {
+    int curvature;          /* 1: camera rays follow the curved path; 0: straight (a flat Earth) */
+    double refraction;      /* refraction coefficient k (0.13 is the usual daytime value) */
+    double radius;          /* metres */
+} earth_settings;
 
 typedef enum sky_model { SKY_NONE = 0, SKY_CONSTANT = 1, SKY_PREETHAM = 2 } sky_model;
 
@@ -190,6 +199,7 @@ typedef struct scene_file {
     camera_settings camera;
     sun_settings sun;
     sky_settings sky;
+    earth_settings earth;
     terrain_spec terrain;
     species_spec *species; uint32_t n_species;
     plant_spec *plants; uint32_t n_plants;

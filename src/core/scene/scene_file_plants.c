@@ -1,8 +1,21 @@
 /* scene_file_plants.c — the plants section: each plant's species (by name), position (on the
- * terrain, or above it, when z is left out), rotation, scale and age. */
+ * terrain when no height is given, or a height above it), rotation, scale and age. */
 #include "scene/scene_file_loader.h"
 
 #include <math.h>
+
+/* The plant's height above the terrain: from its map position, or its height_above_ground key
+ * (a plant on a roof or a raised bed), which goes with a position of no height. */
+static int read_plant_lift(loader *L, const sylva_params *p, const sf_position *pos, plant_spec *pl)
+{
+    const sylva_value *lift = sylva_param(p, "height_above_ground");
+    pl->above_ground = isnan(pos->above_ground) ? lift->r : pos->above_ground;
+    if (lift->is_set && (pos->has_height || !isnan(pos->above_ground)))
+        return sf_located(L->err, L->file, lift->line, lift->column,
+                          "'height_above_ground' places the plant above the terrain at [x, y]; give "
+                          "'position' as [x, y] with it, or [x, y, z] without it");
+    return 0;
+}
 
 int sf_read_plants(loader *L, const ynode *node)
 {
@@ -41,7 +54,7 @@ int sf_read_plants(loader *L, const ynode *node)
         pl->species = (uint32_t)index;
         for (int k = 0; k < 3; k++) pl->position[k] = pos.local[k];
         pl->snap_to_terrain = !pos.has_height;
-        pl->above_ground = isnan(pos.above_ground) ? 0.0 : pos.above_ground;
+        if (read_plant_lift(L, p, &pos, pl)) return -1;
         pl->rotation_deg = sylva_param_real(p, "rotation");
         pl->scale = sylva_param_real(p, "scale");
         pl->age = sylva_param_real(p, "age");

@@ -1,6 +1,7 @@
 /* scene_file_settings.c — the sections that set one thing each: image, camera (look_at or
  * direction, fov or focal length with sensor width, an up vector not parallel to the view), sun
- * (direction or azimuth and elevation) and sky (keys that apply to its model only). */
+ * (direction or azimuth and elevation), sky (keys that apply to its model only) and earth
+ * (curvature on by default only for a scene with a site, so read after the site). */
 #include "scene/scene_file_loader.h"
 
 #include <float.h>
@@ -90,6 +91,41 @@ static int read_camera_points(loader *L, const sylva_params *p, sylva_value *pos
     return 0;
 }
 
+/* heading and pitch: the view as a compass bearing and an angle above the horizon, instead of
+ * look_at or direction; the image's up is then the vertical tilted with the view, defined even
+ * straight down. roll: a turn of the image about the view, with any way of aiming. The keys
+ * heading and pitch exclude (checked first, before anything is aimed with them): */
+static int camera_angles_clash(loader *L, const sylva_params *p, const sylva_value *look)
+{
+    const sylva_value *heading = sylva_param(p, "heading"), *pitch = sylva_param(p, "pitch"),
+                      *dir = sylva_param(p, "direction"), *up = sylva_param(p, "up");
+    if (!heading->is_set && !pitch->is_set) return 0;
+    const sylva_value *angle = heading->is_set ? heading : pitch;
+    const sylva_value *aim = look->is_set ? look : dir->is_set ? dir : NULL;
+    if (aim) {
+        const sylva_value *at = later_of(angle, aim);
+        return sf_located(L->err, L->file, at->line, at->column,
+                          "the camera takes 'look_at', 'direction' or 'heading'/'pitch', not two "
+                          "of them");
+    }
+    if (up->is_set)
+        return sf_located(L->err, L->file, up->line, up->column,
+                          "'up' goes with look_at or direction; with 'heading'/'pitch' the image's "
+                          "up is the vertical, turned by 'roll'");
+    return 0;
+}
+
+static void read_camera_angles(const sylva_params *p, camera_settings *c)
+{
+    const sylva_value *heading = sylva_param(p, "heading"), *pitch = sylva_param(p, "pitch");
+    c->roll_deg = sylva_param_real(p, "roll");
+    if (!heading->is_set && !pitch->is_set) return;
+    double h = heading->r * DEG, e = pitch->r * DEG;
+    c->has_look_at = 0;
+    c->direction[0] = sin(h) * cos(e), c->direction[1] = cos(h) * cos(e), c->direction[2] = sin(e);
+    c->up[0] = -sin(h) * sin(e), c->up[1] = -cos(h) * sin(e), c->up[2] = cos(e);
+}
+
 int sf_read_camera(loader *L)
 {
     if (!ynode_get(L->root, "camera"))
@@ -115,6 +151,7 @@ int sf_read_camera(loader *L)
         return sf_located(L->err, L->file, at->line, at->column,
                        "the camera takes 'look_at' or 'direction', not both");
     }
+    if (camera_angles_clash(L, p, look)) return -1;
     if (fov->is_set && focal->is_set) {
         const sylva_value *at = later_of(fov, focal);
         return sf_located(L->err, L->file, at->line, at->column,
@@ -178,6 +215,7 @@ int sf_read_camera(loader *L)
     }
     if (c->eye_ground.given) c->position[2] = NAN;   /* known once the terrain is built */
     if (c->look_at_ground.given) c->look_at[2] = NAN;
+    read_camera_angles(p, c);
     return 0;
 }
 
@@ -244,5 +282,19 @@ int sf_read_sky(loader *L)
     sf_copy3(s->color, color);
     s->ground_albedo = sylva_param_real(p, "ground_albedo");
     sf_copy3(s->ambient, sylva_param(p, "ambient"));
+    return 0;
+}
+
+int sf_read_earth(loader *L)
+{
+    const sylva_params *p;
+    if (read_section(L, "earth", &host_schema_earth, &p)) return -1;
+    earth_settings *e = &L->sf->earth;
+    const sylva_value *curvature = sylva_param(p, "curvature");
+    /* A site is a real place, seen over real distances; a scene in local metres alone keeps the
+     * flat Earth it always had unless it asks. */
+    e->curvature = curvature->is_set ? (int)curvature->i : L->sf->site.crs_wkt != NULL;
+    e->refraction = sylva_param_real(p, "refraction");
+    e->radius = sylva_param_real(p, "radius");
     return 0;
 }

@@ -1,0 +1,17 @@
+/* camera_frame.h — the camera's orthonormal frame as every back end aims it: forward from
+ * look_at (or direction), right = forward x up, the image's up = right x forward, then right and
+ * up turned by the roll about forward — clockwise as seen from behind the camera, so a positive
+ * roll lowers the image's right side and the scene appears turned the other way. The path
+ * tracer builds its rays from this frame and the POV-Ray export writes its up as `sky`, so both
+ * show the same view. Computed in double precision from the scene's numbers; nothing allocated.
+ */
+#ifndef SYLVA_CAMERA_FRAME_H
+#define SYLVA_CAMERA_FRAME_H
+
+#include "scene/scene_file.h"
+
+/* Unit forward, right and up vectors of s's camera (the loader has refused a view parallel to
+ * up or of zero length). */
+void camera_frame(const camera_settings *s, double forward[3], double right[3], double up[3]);
+
+#endif

@@ -7,6 +7,7 @@
 
 #include "scene_text.h"
 #include "pov/pov_write.h"
+#include "scene/scene_probe.h"
 
 /* A tetrahedron 1 x 2 x 3 m (x, y, z) with a corner at the origin, as ASCII STL. */
 static const char *tet_stl =
@@ -94,6 +95,25 @@ TEST(model_placement)
     check_bounds(s, 3, 19, 20, -2, 0, 1.9, 4.9);        /* turned west: x in [19, 20], lowest 1.9 m */
     check_bounds(s, 4, -20, -18, -20, -16, 0, 6);       /* the PLY's +Y is up, doubled: 6 m tall */
     CHECK_STR_CONTAINS(s->objects[2].name, "snapped");
+    scene_free(s);
+}
+
+/* A probe finds a placed model's top over a point through the object's transform: the
+ * tetrahedron at [10, 20, 5] has its slanted face x + (y - 20) / 2 + (z - 5) / 3 = 1 there. */
+TEST(probe_finds_a_placed_model)
+{
+    write_models();
+    scene *s = build_ok("objects:\n  - {name: tet, model: tet.stl, position: [10, 20, 5]}\n");
+    if (!s) return;
+    probe_result r;
+    err_buf err = {{0}};
+    CHECK_INT(scene_probe(s, 10.1, 20.1, 5.0, &r, &err), 0);
+    CHECK_INT(r.n_objects, 1);
+    if (r.n_objects) CHECK_NEAR(r.objects[0].top, 5.0 + 3.0 * (1.0 - 0.1 - 0.05), 1e-4);
+    probe_result_free(&r);
+    CHECK_INT(scene_probe(s, 12.0, 20.1, 5.0, &r, &err), 0);
+    CHECK_INT(r.n_objects, 0);
+    probe_result_free(&r);
     scene_free(s);
 }
 
@@ -282,6 +302,6 @@ TEST(pov_export_declares_a_model_once)
     scene_free(s);
 }
 
-TEST_LIST(TEST_CASE(model_placement), TEST_CASE(instances_share_one_mesh), TEST_CASE(group_layout),
+TEST_LIST(TEST_CASE(model_placement), TEST_CASE(probe_finds_a_placed_model), TEST_CASE(instances_share_one_mesh), TEST_CASE(group_layout),
           TEST_CASE(layout_in_map_coordinates), TEST_CASE(clear_errors),
           TEST_CASE(object_id_and_development_layers), TEST_CASE(pov_export_declares_a_model_once))

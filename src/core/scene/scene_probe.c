@@ -46,15 +46,24 @@ static int probe_plants(const scene *s, double x, double y, double radius, probe
 
 /* The height of triangle (a, b, c) above (x, y), or NAN when (x, y) lies outside its outline
  * seen from above (or the triangle stands edge-on to that view). Edges count as inside. */
-static double height_above(const float *a, const float *b, const float *c, double x, double y)
+static double height_above(vec3 a, vec3 b, vec3 c, double x, double y)
 {
-    double d = ((double)b[1] - c[1]) * ((double)a[0] - c[0]) + ((double)c[0] - b[0]) * ((double)a[1] - c[1]);
+    double d = ((double)b.y - c.y) * ((double)a.x - c.x) + ((double)c.x - b.x) * ((double)a.y - c.y);
     if (d == 0.0) return NAN;
-    double l0 = (((double)b[1] - c[1]) * (x - c[0]) + ((double)c[0] - b[0]) * (y - c[1])) / d;
-    double l1 = (((double)c[1] - a[1]) * (x - c[0]) + ((double)a[0] - c[0]) * (y - c[1])) / d;
+    double l0 = (((double)b.y - c.y) * (x - c.x) + ((double)c.x - b.x) * (y - c.y)) / d;
+    double l1 = (((double)c.y - a.y) * (x - c.x) + ((double)a.x - c.x) * (y - c.y)) / d;
     double l2 = 1.0 - l0 - l1;
     if (l0 < 0.0 || l1 < 0.0 || l2 < 0.0) return NAN;
-    return l0 * a[2] + l1 * b[2] + l2 * c[2];
+    return l0 * a.z + l1 * b.z + l2 * c.z;
+}
+
+/* Vertex k of m in world space: an object's own mesh is already there; a placed model's mesh
+ * goes through the object's transform. */
+static vec3 world_vertex(const mesh *m, const xform3x4 *xf, uint32_t k)
+{
+    const float *p = m->pos + (size_t)k * 3;
+    vec3 v = v3(p[0], p[1], p[2]);
+    return xf ? xf_point(xf, v) : v;
 }
 
 static int probe_objects(const scene *s, double x, double y, probe_result *r, err_buf *err)
@@ -63,11 +72,12 @@ static int probe_objects(const scene *s, double x, double y, probe_result *r, er
     if (!(r->objects = malloc((size_t)s->n_objects * sizeof *r->objects)))
         return err_nomem(err, "out of memory listing %u objects", s->n_objects);
     for (uint32_t o = 0; o < s->n_objects; o++) {
-        const mesh *m = s->objects[o].mesh;
+        const xform3x4 *xf;
+        const mesh *m = scene_object_mesh(s, o, &xf);
         double top = -INFINITY;
         for (uint32_t t = 0; t < m->nt; t++) {
             const uint32_t *k = m->tri + (size_t)t * 3;
-            double z = height_above(m->pos + (size_t)k[0] * 3, m->pos + (size_t)k[1] * 3, m->pos + (size_t)k[2] * 3, x, y);
+            double z = height_above(world_vertex(m, xf, k[0]), world_vertex(m, xf, k[1]), world_vertex(m, xf, k[2]), x, y);
             if (z > top) top = z;
         }
         if (top > -INFINITY) r->objects[r->n_objects++] = (probe_object){.object = o, .top = top};

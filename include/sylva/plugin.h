@@ -318,13 +318,22 @@ typedef struct sylva_host_api {
      * plugin's mistake: NULL, with the plugin's error set to a sentence naming the parameter
      * and the parameters the schema has (return SYLVA_ERR_INTERNAL then). */
     const sylva_value *(*param)(sylva_host *, const sylva_params *, const char *name);
+
+    /* ---- ABI 1.2 ---- */
+
+    /* Whether `bytes` of the plugin's own memory plus a heightfield of `heightfield_nodes` nodes
+     * (which the host then holds and renders at its own cost per node, docs/rendering.md) fit
+     * this run's memory budget: the machine's memory, or SYLVA_MEMORY_LIMIT. Returns SYLVA_OK,
+     * or SYLVA_ERR_LIMIT with the error set to a sentence that starts with `what` (the work,
+     * e.g. "the 10000 x 10000 DTM 'x.tif'") and gives both sizes. Ask before allocating. */
+    int (*memory_check)(sylva_host *, uint64_t bytes, uint64_t heightfield_nodes, const char *what);
 } sylva_host_api;
 
 /* The host table's size in each minor version: a table at least this long holds every
  * function of that version. */
 #define SYLVA_HOST_API_SIZE_1_0 SYLVA_FIELD_END(sylva_host_api, resolve_path)
 #define SYLVA_HOST_API_SIZE_1_1 SYLVA_FIELD_END(sylva_host_api, param)
-#define SYLVA_HOST_API_SIZE_1_2 SYLVA_HOST_API_SIZE_1_1 /* 1.2 appended to the terrain request only */
+#define SYLVA_HOST_API_SIZE_1_2 SYLVA_FIELD_END(sylva_host_api, memory_check)
 
 /* 1 when the host that passed `api` offers function `member` (its table reaches that far and
  * the entry is set), e.g. `if (SYLVA_API_HAS(api, mem_alloc)) ...`. */

@@ -7,9 +7,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "geometry/terrain_mesh.h"
 #include "geometry/texture_lookup.h"
 #include "geometry/water_surface.h"
+#include "render/accel_terrain.h"
 
 /* --- Embree's errors --------------------------------------------------------------------- */
 
@@ -133,10 +133,7 @@ static int build_top(accel *a, const scene *s, err_buf *err)
     a->top = rtcNewScene(a->device);
     if (!a->top) return accel_device_error(a, err) ? -1 : err_set(err, "Embree could not create a scene");
     if (s->terrain) {
-        a->terrain_mesh = terrain_mesh_build(s->terrain, s->terrain_material, err);
-        if (!a->terrain_mesh ||
-            add_mesh(a, a->top, a->terrain_mesh, GEOM_TERRAIN, ACCEL_TOP_TERRAIN, &a->top_geoms[ACCEL_TOP_TERRAIN], err) ||
-            water_surface_build(s, &a->water_mesh, err))
+        if (accel_terrain_add(a, a->top, ACCEL_TOP_TERRAIN, err) || water_surface_build(s, &a->water_mesh, err))
             return -1;
         if (a->water_mesh && add_part(a, a->top, a->water_mesh, ACCEL_PART_OPAQUE, GEOM_WATER, ACCEL_TOP_WATER,
                                       &a->top_geoms[ACCEL_TOP_WATER], err))
@@ -208,7 +205,7 @@ void accel_free(accel *a)
     free(a->proto_scenes);
     free(a->proto_geoms);
     free(a->top_geoms);
-    mesh_free(a->terrain_mesh);
+    free(a->terrain_vertices);
     mesh_free(a->water_mesh);
     if (a->device) rtcReleaseDevice(a->device);
     if (a->errors) pthread_mutex_destroy(&a->errors->lock);
@@ -232,6 +229,10 @@ void accel_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h)
         h->species_id = s->prototypes[p].species + 1;
     } else {
         g = &a->top_geoms[rh->hit.geomID];
+        if (g->kind == GEOM_TERRAIN) {
+            accel_terrain_shade(a, rh, h);
+            return;
+        }
     }
     const mesh *m = g->mesh;
     uint32_t t = g->part.to_mesh[rh->hit.primID];

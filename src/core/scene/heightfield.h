@@ -11,6 +11,12 @@
 
 #include "sylva/plugin.h"
 
+/* What one heightfield node costs the host from the plugin's hands to the first pixel: 4 bytes
+ * of height and 4 of material id in the heightfield, and 32 in the renderer (a 12-byte grid
+ * vertex and Embree's grid BVH at the peak of its build, render/accel_terrain.h). */
+#define HEIGHTFIELD_NODE_BYTES 8u
+#define HEIGHTFIELD_RENDER_NODE_BYTES 32u
+
 /* Height at (x, y) into *z; returns 0, or -1 (z untouched) when (x, y) lies outside the
  * heightfield's nodes (or is not a number). */
 int heightfield_height(const sylva_heightfield *h, double x, double y, double *z);

@@ -8,7 +8,9 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "scene/heightfield.h"
 #include "util/file_check.h"
+#include "util/memory_budget.h"
 #include "util/rng.h"
 
 void host_init(sylva_host *h, scene *sc, const char *scene_dir, uint64_t seed, const char *context,
@@ -156,6 +158,18 @@ static int32_t host_material_new(sylva_host *h, const sylva_material_desc *d)
     return id < 0 ? host_pass_on(h, &e) : id;
 }
 
+static int host_memory_check(sylva_host *h, uint64_t bytes, uint64_t heightfield_nodes, const char *what)
+{
+    const uint64_t per_node = HEIGHTFIELD_NODE_BYTES + HEIGHTFIELD_RENDER_NODE_BYTES;
+    err_buf e;
+    if (heightfield_nodes > UINT64_MAX / per_node || bytes > UINT64_MAX - heightfield_nodes * per_node)
+        bytes = UINT64_MAX;
+    else bytes += heightfield_nodes * per_node;
+    if (!memory_check(bytes, what ? what : "the plugin's work", &e)) return SYLVA_OK;
+    host_error(h, "%s", e.msg);
+    return SYLVA_ERR_LIMIT;
+}
+
 static sylva_heightfield *host_heightfield_new(sylva_host *h, uint32_t nx, uint32_t ny, int with_material)
 {
     if (h->kind && h->kind != SYLVA_KIND_TERRAIN) {
@@ -168,6 +182,9 @@ static sylva_heightfield *host_heightfield_new(sylva_host *h, uint32_t nx, uint3
                    "most 2^28 nodes", nx, ny);
         return NULL;
     }
+    char what[96];
+    snprintf(what, sizeof what, "a terrain of %u x %u nodes", nx, ny);
+    if (host_memory_check(h, 0, (uint64_t)nx * ny, what)) return NULL;
     sylva_heightfield *hf = calloc(1, sizeof *hf);
     float *z = calloc((size_t)nx * ny, sizeof(float));
     int32_t *mat = with_material ? malloc((size_t)nx * ny * sizeof(int32_t)) : NULL;
@@ -303,6 +320,7 @@ static const sylva_host_api api_table = {
     .mem_realloc = host_mem_realloc,
     .mem_free = host_mem_free,
     .param = host_param,
+    .memory_check = host_memory_check,
 };
 
 const sylva_host_api *host_api_table(void) { return &api_table; }

@@ -148,6 +148,7 @@ int ifs_dtm_read_file(const char *path, const ifs_dtm_file_options *opt, ifs_dtm
     double dx = 0, dy = 0, *row = NULL;
     ifs_dtm *d = NULL;
     if ((rc = dtm_window(&r, opt, path, win, &nx, &ny, err))) goto done;
+    if (opt->check_size && (rc = opt->check_size(opt->check_ctx, nx, ny, err))) goto done;
     if ((rc = dtm_spacing(&r, opt, path, win, &dx, &dy, &info, err))) goto done;
     if ((rc = ifs_dtm_new(nx, ny, dx, dy, &d, err))) goto done;
     row = malloc((size_t)win[2] * sizeof *row); /* owned here: one file row of the window */

@@ -36,6 +36,10 @@ typedef struct ifs_dtm_file_options {
     double cell_size[2];    /* > 0: node spacing in metres along x and y, replacing the file's */
     double height_range[2]; /* plausible heights [low, high] in the file; a height outside it
                                is refused as damage. {0, 0}: the default range below */
+    /* NULL, or called with the DTM's size once it is known and before anything is read or
+     * allocated for it; a non-zero return (with err set) stops the read with that status. */
+    int (*check_size)(void *ctx, uint32_t nx, uint32_t ny, ifs_err *err);
+    void *check_ctx;
 } ifs_dtm_file_options;
 
 /* The default plausible heights of a DTM file in metres: the Dead Sea shore (-430 m) to Everest

@@ -29,7 +29,8 @@ typedef struct chaos_run {
 /* One step of the iteration: w_{n,m} (12) applied to (u, v, z). */
 static inline void chaos_step(const ifs_maps *m, uint64_t r, double *u, double *v, double *z)
 {
-    const ifs_map *w = &m->map[ifs_maps_pick(m, r)];
+    ifs_map map = ifs_maps_cell(m, ifs_maps_pick(m, r));
+    const ifs_map *w = &map;
     double uu = *u, vv = *v;
     *z = w->c0 + w->cu * uu + w->cv * vv + w->cuv * uu * vv + w->alpha * *z;
     *u = w->u0 + uu * m->su;

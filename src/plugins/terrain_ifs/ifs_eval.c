@@ -30,7 +30,8 @@ double ifs_eval_at(const ifs_maps *m, double sx, double sy, uint32_t depth)
     for (uint32_t k = 0; k < depth; k++) {
         double u, v;
         uint32_t cn = cell_of(sx, m->ncx, &u), cm = cell_of(sy, m->ncy, &v);
-        const ifs_map *w = &m->map[cm * m->ncx + cn];
+        ifs_map map = ifs_maps_cell(m, cm * m->ncx + cn);
+        const ifs_map *w = &map;
         /* (u, v) = (L_n^-1(x), V_m^-1(y)) in unit coordinates; F without its alpha z term there */
         sum += weight * (w->c0 + w->cu * u + w->cv * v + w->cuv * u * v);
         weight *= w->alpha;

@@ -147,6 +147,10 @@ int ifs_raster_open(const char *path, uint32_t band, const char *what, ifs_raste
         goto done;
     }
     r->band = b;
+    int bw = 0, bh = 0;
+    GDALGetBlockSize(b, &bw, &bh);
+    r->block_rows = bh > 0 ? (uint32_t)bh : 1;
+    r->cached_block = UINT32_MAX;
     snprintf(r->driver, sizeof r->driver, "%s", GDALGetDriverShortName(GDALGetDatasetDriver(ds)));
     GDALDataType type = GDALGetRasterDataType(b);
     snprintf(r->type_name, sizeof r->type_name, "%s", GDALGetDataTypeName(type));
@@ -202,6 +206,11 @@ int ifs_raster_read_row(ifs_raster *r, uint32_t row, uint32_t col, uint32_t coun
     offline_begin(r, &saved);
     CPLPushErrorHandler(CPLQuietErrorHandler);
     CPLErrorReset();
+    uint32_t block = row / (r->block_rows ? r->block_rows : 1);
+    if (block != r->cached_block) {
+        if (r->cached_block != UINT32_MAX) GDALFlushRasterCache((GDALRasterBandH)r->band);
+        r->cached_block = block;
+    }
     CPLErr e = GDALRasterIO((GDALRasterBandH)r->band, GF_Read, (int)col, (int)row, (int)count, 1,
                             out, (int)count, 1, GDT_Float64, 0, 0);
     int rc = SYLVA_OK;

@@ -36,6 +36,8 @@ typedef struct ifs_raster {
     char driver[32];          /* GDAL driver short name, e.g. "GTiff", "AAIGrid" */
     char type_name[16];       /* sample type, e.g. "Int16", "Float32" */
     double type_max;          /* largest value of an integer sample type (0 for floating types) */
+    uint32_t block_rows;      /* rows of the band's blocks */
+    uint32_t cached_block;    /* block row the last read went through (UINT32_MAX: none) */
     int network;              /* 1: the path names a GDAL virtual source, which may use the
                                  network; 0: GDAL's network access is off for this raster */
 } ifs_raster;
@@ -47,7 +49,9 @@ int ifs_raster_open(const char *path, uint32_t band, const char *what, ifs_raste
 void ifs_raster_close(ifs_raster *r);
 
 /* Reads `count` pixels of file row `row` from column `col` as doubles, converted with scale and
- * offset; nodata pixels (and NaN) become NaN. */
+ * offset; nodata pixels (and NaN) become NaN. GDAL's cached blocks of a band are dropped when a
+ * read moves on to another row of blocks, so reading a raster row by row holds one row of
+ * blocks, not as many as GDAL's cache (5 % of the machine's memory) can take. */
 int ifs_raster_read_row(ifs_raster *r, uint32_t row, uint32_t col, uint32_t count, double *out,
                         const char *what, ifs_err *err);
 

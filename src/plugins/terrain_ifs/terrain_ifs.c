@@ -19,6 +19,7 @@
 #include "dtm_file.h"
 #include "dtm_generate.h"
 #include "humidity_map.h"
+#include "ifs_parallel.h"
 #include "ifs_chaos.h"
 #include "ifs_eval.h"
 #include "ifs_maps.h"
@@ -76,6 +77,53 @@ static int is_set(const sylva_params *p, const char *name)
     return v && v->is_set;
 }
 
+/* The output grid for an nx x ny DTM: output_nodes, or (N - 1) refine + 1 along each axis. */
+static void output_size(const sylva_params *params, uint32_t nx, uint32_t ny, uint64_t *nxo,
+                        uint64_t *nyo)
+{
+    const sylva_value *out = sylva_param(params, "output_nodes");
+    uint64_t refine = (uint64_t)sylva_param_int(params, "refine");
+    *nxo = out->is_set ? (uint64_t)out->list[0] : (nx - 1) * refine + 1;
+    *nyo = out->is_set ? (uint64_t)out->list[1] : (ny - 1) * refine + 1;
+}
+
+/* What the memory check needs beside the DTM's size. */
+typedef struct memory_ask {
+    const sylva_host_api *api;
+    sylva_host *host;
+    const sylva_params *params;
+    const char *source;          /* the DTM, for the sentence */
+} memory_ask;
+
+/* The plugin's own bytes for an nx x ny DTM and its output grid, and the output grid itself (the
+ * host adds its own cost per heightfield node), against the host's memory budget (ABI 1.2). The
+ * plugin holds the DTM (IFS_DTM_BYTES_PER_NODE a node; the maps are computed from it, not
+ * stored), one class byte per output node while classifying, 4 bytes of humidity per output node
+ * with a humidity map, and for the random iteration 16 bytes per output node and worker. */
+static int memory_fits(void *ctx, uint32_t nx, uint32_t ny, ifs_err *err)
+{
+    const memory_ask *m = ctx;
+    if (!SYLVA_API_HAS(m->api, memory_check)) return SYLVA_OK;
+    uint64_t nxo, nyo;
+    output_size(m->params, nx, ny, &nxo, &nyo);
+    if (nxo > 65536 || nyo > 65536) return SYLVA_OK; /* refused with its own sentence later */
+    uint64_t out = nxo * nyo, per_out = 1;
+    if (sylva_param_str(m->params, "humidity_map")) per_out += 4;
+    if (sylva_param_int(m->params, "method") == 0) {
+        uint64_t threads = (uint64_t)sylva_param_int(m->params, "threads");
+        per_out += 16 * (threads ? threads : ifs_online_processors());
+    }
+    char what[600];
+    snprintf(what, sizeof what, "terrain_ifs: the %u x %u node DTM %s refined to %llu x %llu "
+             "nodes", nx, ny, m->source, (unsigned long long)nxo, (unsigned long long)nyo);
+    if (m->api->memory_check(m->host, (uint64_t)nx * ny * IFS_DTM_BYTES_PER_NODE + out * per_out,
+                             out, what) == SYLVA_OK)
+        return SYLVA_OK;
+    /* the host's sentence is set; the plugin's error carries the status only */
+    err->msg[0] = '\0';
+    return SYLVA_ERR_LIMIT;
+}
+
 /* Loads the DTM from the one source the scene names. */
 static int load_dtm(const sylva_host_api *api, sylva_host *host, const sylva_params *params,
                     terrain_ifs_state *s)
@@ -95,6 +143,10 @@ static int load_dtm(const sylva_host_api *api, sylva_host *host, const sylva_par
                                   .units = (ifs_units)sylva_param_int(params, "units"),
                                   .cell_size = {cs[0], cs[1]},
                                   .height_range = {range->list[0], range->list[1]}};
+        char quoted[520];
+        snprintf(quoted, sizeof quoted, "'%s'", dtm->s);
+        memory_ask ask = {api, host, params, quoted};
+        o.check_size = memory_fits, o.check_ctx = &ask;
         if (!(range->list[0] < range->list[1]))
             return api->param_error(host, params, "height_range", "height_range [%g, %g] is "
                                     "empty; give [low, high] with low < high", range->list[0],
@@ -110,7 +162,7 @@ static int load_dtm(const sylva_host_api *api, sylva_host *host, const sylva_par
         }
         ifs_dtm_file_info info;
         if ((rc = ifs_dtm_read_file(dtm->s, &o, &s->dtm, &info, &err))) {
-            api->param_error(host, params, "dtm", "%s", err.msg);
+            if (err.msg[0]) api->param_error(host, params, "dtm", "%s", err.msg);
             return rc;
         }
         snprintf(s->source, sizeof s->source, "%s (%s %s; %u x %u pixels from column %u, row %u; "
@@ -256,16 +308,20 @@ static int terrain_ifs_create(const sylva_host_api *api, sylva_host *host,
         goto fail;
 
     const sylva_value *out = sylva_param(params, "output_nodes");
-    uint64_t refine = (uint64_t)sylva_param_int(params, "refine");
-    uint64_t nxo = out->is_set ? (uint64_t)out->list[0] : (d->nx - 1) * refine + 1;
-    uint64_t nyo = out->is_set ? (uint64_t)out->list[1] : (d->ny - 1) * refine + 1;
+    uint64_t nxo, nyo;
+    output_size(params, d->nx, d->ny, &nxo, &nyo);
     if (nxo > 65536 || nyo > 65536 || nxo * nyo > TERRAIN_IFS_MAX_OUTPUT_NODES) {
         rc = api->param_error(host, params, out->is_set ? "output_nodes" : "refine",
                               "the output grid would have %llu x %llu nodes; at most %u nodes "
-                              "(4097 x 4097) and 65536 along a side are made: lower %s",
+                              "(16384 x 16384) and 65536 along a side are made: lower %s",
                               (unsigned long long)nxo, (unsigned long long)nyo,
                               TERRAIN_IFS_MAX_OUTPUT_NODES, out->is_set ? "output_nodes" : "refine");
         goto fail;
+    }
+    if (!sylva_param_str(params, "dtm")) {
+        ifs_err err = {{0}};
+        memory_ask ask = {api, host, params, s->source};
+        if ((rc = memory_fits(&ask, d->nx, d->ny, &err))) goto fail;
     }
     s->nx_out = (uint32_t)nxo, s->ny_out = (uint32_t)nyo;
 

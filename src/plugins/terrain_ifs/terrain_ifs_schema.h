@@ -13,6 +13,6 @@ extern const sylva_param_spec terrain_ifs_params[TERRAIN_IFS_N_PARAMS];
 
 /* Defaults the plugin needs beside the schema. */
 #define TERRAIN_IFS_DEFAULT_CELL 25.0          /* m: node spacing of inline and generated DTMs */
-#define TERRAIN_IFS_MAX_OUTPUT_NODES 16785409u /* 4097 x 4097 output nodes */
+#define TERRAIN_IFS_MAX_OUTPUT_NODES (1u << 28) /* the host's largest heightfield */
 
 #endif

@@ -1,0 +1,33 @@
+/* accel_terrain.h — the terrain heightfield in Embree 3 as grid geometry (RTC_GEOMETRY_TYPE_GRID):
+ * one float3 vertex per node and tiles of at most ACCEL_TERRAIN_TILE cells a side over that one
+ * vertex buffer, with no index buffer, no normals and no uvs. Embree splits each grid quad along
+ * the diagonal from its second to its fourth vertex; the vertex rows are stored from north to
+ * south so that this is the diagonal from node (i, j) to (i+1, j+1), the one every back end draws
+ * (geometry/terrain_mesh.h). A hit is turned back into that tessellation's triangle, and its
+ * barycentrics are computed again in double precision from the ray and the triangle, so shading
+ * sees the same triangles, normals, uvs and materials as from a triangle mesh.
+ *
+ * Memory per node: 12 bytes of vertices plus Embree's grid BVH, about 20 bytes at the peak of its
+ * build (HEIGHTFIELD_RENDER_NODE_BYTES in scene/heightfield.h, measured by bench/terrain_big.c):
+ * a 10,000 x 10,000 terrain takes about 3 GB here, where the same triangles as a triangle mesh
+ * take about 19 GB.
+ *
+ * Ownership: the accel owns the vertex buffer (accel_terrain_free); Embree owns the tile buffer.
+ */
+#ifndef SYLVA_ACCEL_TERRAIN_H
+#define SYLVA_ACCEL_TERRAIN_H
+
+#include <embree3/rtcore.h>
+
+#include "render/accel.h"
+
+#define ACCEL_TERRAIN_TILE 32766u /* cells along a tile's side: Embree's largest grid */
+
+/* Attaches the scene's terrain to rs as geometry `id` (a cut-out filter on it when a terrain
+ * material is a cut-out). Returns 0 or -1 with err. */
+int accel_terrain_add(accel *a, RTCScene rs, unsigned id, err_buf *err);
+
+/* Shading data for a hit on the terrain geometry. */
+void accel_terrain_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h);
+
+#endif

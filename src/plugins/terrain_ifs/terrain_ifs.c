@@ -45,8 +45,10 @@ typedef struct terrain_ifs_state {
     uint32_t threads;
     double centre[2];
     int classes;                 /* 1: ground-cover classes, 0: the scene's material */
-    double water_level;          /* normalised, 0: none */
+    int has_water;               /* 1: a water surface at water_z */
+    double water_z;              /* metres, heightfield heights */
     ifs_surface_rules rules;
+    double zmin, zmax;           /* the DTM's height range, metres */
     float *humidity;             /* owned (host allocator): humidity at each output node, or NULL */
     float albedo[IFS_SURFACE_CLASSES][3];
     float water_albedo[3];
@@ -65,7 +67,8 @@ static int is_whole(double v) { return v == floor(v) && isfinite(v); }
 
 /* Parameters that only one DTM source or one setting reads. */
 static const char *const file_only[] = {"band", "crop", "step", "units"};
-static const char *const classes_only[] = {"snow_line", "scree_line", "scree_slope", "rock_slope",
+static const char *const classes_only[] = {"snow_line", "scree_line", "snow_altitude",
+                                           "scree_altitude", "scree_slope", "rock_slope",
                                            "humidity_map", "humidity_band", "humidity_range",
                                            "dry_humidity", "grass_albedo",
                                            "dry_grass_albedo", "scree_albedo", "rock_albedo",
@@ -271,11 +274,38 @@ static int check_relations(const sylva_host_api *api, sylva_host *host, const sy
                                 "%g; scree lies on gentler slopes than rock",
                                 sylva_param_real(params, "scree_slope"),
                                 sylva_param_real(params, "rock_slope"));
-    if (sylva_param_real(params, "scree_line") > sylva_param_real(params, "snow_line"))
+    static const char *const older[3][2] = {{"snow_altitude", "snow_line"},
+                                             {"scree_altitude", "scree_line"},
+                                             {"water_altitude", "water_level"}};
+    for (int k = 0; k < 3; k++)
+        if (is_set(params, older[k][0]) && is_set(params, older[k][1]))
+            return api->param_error(host, params, older[k][1], "give %s (metres) or %s (a fraction "
+                                    "of the DTM's height range), not both", older[k][0],
+                                    older[k][1]);
+    if (is_set(params, "scree_line") && is_set(params, "snow_line") &&
+        sylva_param_real(params, "scree_line") > sylva_param_real(params, "snow_line"))
         return api->param_error(host, params, "scree_line", "scree_line %g is above snow_line %g; "
                                 "scree lies below the snow", sylva_param_real(params, "scree_line"),
                                 sylva_param_real(params, "snow_line"));
+    if (!is_set(params, "scree_line") && !is_set(params, "snow_line") &&
+        sylva_param_real(params, "scree_altitude") > sylva_param_real(params, "snow_altitude"))
+        return api->param_error(host, params, "scree_altitude", "scree_altitude %g m is above "
+                                "snow_altitude %g m; scree lies below the snow",
+                                sylva_param_real(params, "scree_altitude"),
+                                sylva_param_real(params, "snow_altitude"));
     return SYLVA_OK;
+}
+
+/* A height in metres from parameter `metres`, or from the older `fraction` of the DTM's height
+ * range [zmin, zmax] when that is given. A fraction on a flat DTM: its height when the fraction
+ * is 0, above every height otherwise (all points had normalised altitude 0). */
+static double height_of(const sylva_params *params, const char *metres, const char *fraction,
+                        double zmin, double zmax)
+{
+    if (!is_set(params, fraction)) return sylva_param_real(params, metres);
+    double f = sylva_param_real(params, fraction);
+    if (!(zmax > zmin)) return f > 0 ? INFINITY : zmin;
+    return zmin + f * (zmax - zmin);
 }
 
 static void read_albedo(const sylva_params *params, const char *name, float out[3])
@@ -353,10 +383,16 @@ static int terrain_ifs_create(const sylva_host_api *api, sylva_host *host,
     }
 
     s->classes = sylva_param_int(params, "surface") == 0;
-    s->water_level = sylva_param_real(params, "water_level");
-    ifs_dtm_range(d, &s->rules.zmin, &s->rules.zmax);
-    s->rules.snow_line = sylva_param_real(params, "snow_line");
-    s->rules.scree_line = sylva_param_real(params, "scree_line");
+    /* Altitudes in metres; the older fractions of the DTM's height range when given. */
+    double zmin, zmax;
+    ifs_dtm_range(d, &zmin, &zmax);
+    s->zmin = zmin, s->zmax = zmax;
+    s->rules.snow_z = height_of(params, "snow_altitude", "snow_line", zmin, zmax);
+    s->rules.scree_z = height_of(params, "scree_altitude", "scree_line", zmin, zmax);
+    s->has_water = is_set(params, "water_altitude") || sylva_param_real(params, "water_level") > 0;
+    s->water_z = is_set(params, "water_level")
+                     ? zmin + sylva_param_real(params, "water_level") * (zmax - zmin)
+                     : sylva_param_real(params, "water_altitude");
     s->rules.scree_slope = sylva_param_real(params, "scree_slope");
     s->rules.rock_slope = sylva_param_real(params, "rock_slope");
     s->rules.dry_humidity = sylva_param_real(params, "dry_humidity");
@@ -490,7 +526,7 @@ static int apply_surface(const terrain_ifs_state *s, const sylva_host_api *api, 
     api->log(host, SYLVA_LOG_INFO, "ground: %.1f%% grass, %.1f%% dry grass, %.1f%% scree, "
              "%.1f%% rock, %.1f%% snow", 100.0 * counts[0] / n, 100.0 * counts[1] / n,
              100.0 * counts[2] / n, 100.0 * counts[3] / n, 100.0 * counts[4] / n);
-    if (s->water_level > 0) {
+    if (s->has_water) {
         sylva_material_desc w = {.size = sizeof w, .name = "terrain_ifs water",
                                  .bsdf = SYLVA_BSDF_LAMBERT, .texture = -1};
         memcpy(w.albedo, s->water_albedo, sizeof w.albedo);
@@ -532,16 +568,16 @@ static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_ho
     api->log(host, SYLVA_LOG_INFO, "%s: %u x %u nodes %.3g x %.3g m apart, heights %.1f to %.1f m; "
              "%s maps, alpha %s (largest |alpha| %g: detail up to about %.3g m per cell, alpha "
              "times the DTM's %.3g m departure from the surface of its corners)", s->source,
-             s->dtm->nx, s->dtm->ny, s->dtm->dx, s->dtm->dy, s->rules.zmin, s->rules.zmax,
+             s->dtm->nx, s->dtm->ny, s->dtm->dx, s->dtm->dy, s->zmin, s->zmax,
              s->mode == IFS_MODE_AFFINE ? "affine" : "bilinear",
              s->alpha_field ? "per cell" : "global", maps->alpha_max,
              maps->alpha_max * maps->corner_departure, maps->corner_departure);
     rc = compute_heights(s, maps, depth, api, host, hf);
     ifs_maps_free(maps);
     if (rc) return rc;
-    if (s->water_level > 0) {
+    if (s->has_water) {
         hf->has_water = 1;
-        hf->water_level = s->rules.zmin + s->water_level * (s->rules.zmax - s->rules.zmin);
+        hf->water_level = s->water_z;
     }
     if (s->classes && (rc = apply_surface(s, api, host, hf))) return rc;
     o->terrain = hf;

@@ -111,13 +111,27 @@ const sylva_param_spec terrain_ifs_params[] = {
     {.name = "surface", .type = SYLVA_P_ENUM, .def_str = "classes", .choices = surface_choices,
      .help = "classes: grass, dry grass, scree, rock and snow by slope, altitude and humidity; "
              "scene: the terrain's material from the scene everywhere."},
+    {.name = "water_altitude", .type = SYLVA_P_REAL, .flags = RANGE, .def = 0, .min = -100000,
+     .max = 100000, .unit = "m",
+     .help = "Height of a water surface in metres of the DTM's heights (after z_scale and "
+             "z_offset); leave out for no water (or give water_level)."},
     {.name = "water_level", .type = SYLVA_P_REAL, .flags = RANGE, .def = 0, .min = 0, .max = 1,
-     .help = "Normalised altitude y_w of the water surface over the DTM's height range; 0: no "
-             "water."},
+     .help = "Older form of water_altitude: the normalised altitude y_w of the water surface over "
+             "the DTM's height range; 0: no water."},
+    {.name = "snow_altitude", .type = SYLVA_P_REAL, .flags = RANGE,
+     .def = TERRAIN_IFS_DEFAULT_SNOW_ALTITUDE, .min = -100000, .max = 100000, .unit = "m",
+     .help = "Height above which snow lies (on slopes below rock_slope), metres of the DTM's "
+             "heights; the default is about the summer snow line of the Alps."},
+    {.name = "scree_altitude", .type = SYLVA_P_REAL, .flags = RANGE,
+     .def = TERRAIN_IFS_DEFAULT_SCREE_ALTITUDE, .min = -100000, .max = 100000, .unit = "m",
+     .help = "Height above which grass gives way to scree, metres of the DTM's heights; the "
+             "default is about the upper limit of closed alpine grassland."},
     {.name = "snow_line", .type = SYLVA_P_REAL, .flags = RANGE, .def = 0.8, .min = 0, .max = 2,
-     .help = "Normalised altitude above which snow lies (slopes below rock_slope)."},
+     .help = "Older form of snow_altitude: a normalised altitude over the DTM's height range "
+             "(used only when given)."},
     {.name = "scree_line", .type = SYLVA_P_REAL, .flags = RANGE, .def = 0.6, .min = 0, .max = 2,
-     .help = "Normalised altitude above which grass gives way to scree."},
+     .help = "Older form of scree_altitude: a normalised altitude over the DTM's height range "
+             "(used only when given)."},
     {.name = "scree_slope", .type = SYLVA_P_REAL, .flags = RANGE, .def = 30, .min = 0, .max = 90,
      .unit = "deg", .help = "Slope from which the ground is scree."},
     {.name = "rock_slope", .type = SYLVA_P_REAL, .flags = RANGE, .def = 42, .min = 0, .max = 90,

@@ -8,11 +8,13 @@
 
 #include "sylva/plugin.h"
 
-#define TERRAIN_IFS_N_PARAMS 39u
+#define TERRAIN_IFS_N_PARAMS 42u
 extern const sylva_param_spec terrain_ifs_params[TERRAIN_IFS_N_PARAMS];
 
 /* Defaults the plugin needs beside the schema. */
 #define TERRAIN_IFS_DEFAULT_CELL 25.0          /* m: node spacing of inline and generated DTMs */
+#define TERRAIN_IFS_DEFAULT_SNOW_ALTITUDE 2800.0  /* m */
+#define TERRAIN_IFS_DEFAULT_SCREE_ALTITUDE 2300.0 /* m */
 #define TERRAIN_IFS_MAX_OUTPUT_NODES (1u << 28) /* the host's largest heightfield */
 
 #endif

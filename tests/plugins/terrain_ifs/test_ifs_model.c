@@ -516,14 +516,14 @@ TEST(nodata_is_filled_from_neighbours)
 
 TEST(ground_cover_rules)
 {
-    ifs_surface_rules r = {.zmin = 0, .zmax = 100, .snow_line = 0.8, .scree_line = 0.6,
-                           .scree_slope = 30, .rock_slope = 42, .dry_humidity = 0.3};
-    CHECK_INT(ifs_surface_class_of(10, 0.2, 1.0, &r), IFS_SURFACE_GRASS);
-    CHECK_INT(ifs_surface_class_of(10, 0.2, 0.1, &r), IFS_SURFACE_DRY_GRASS);
-    CHECK_INT(ifs_surface_class_of(35, 0.2, 1.0, &r), IFS_SURFACE_SCREE);
-    CHECK_INT(ifs_surface_class_of(10, 0.7, 1.0, &r), IFS_SURFACE_SCREE);
-    CHECK_INT(ifs_surface_class_of(50, 0.9, 1.0, &r), IFS_SURFACE_ROCK);
-    CHECK_INT(ifs_surface_class_of(20, 0.9, 1.0, &r), IFS_SURFACE_SNOW);
+    ifs_surface_rules r = {.snow_z = 80, .scree_z = 60, .scree_slope = 30, .rock_slope = 42,
+                           .dry_humidity = 0.3};
+    CHECK_INT(ifs_surface_class_of(10, 20, 1.0, &r), IFS_SURFACE_GRASS);
+    CHECK_INT(ifs_surface_class_of(10, 20, 0.1, &r), IFS_SURFACE_DRY_GRASS);
+    CHECK_INT(ifs_surface_class_of(35, 20, 1.0, &r), IFS_SURFACE_SCREE);
+    CHECK_INT(ifs_surface_class_of(10, 70, 1.0, &r), IFS_SURFACE_SCREE);
+    CHECK_INT(ifs_surface_class_of(50, 90, 1.0, &r), IFS_SURFACE_ROCK);
+    CHECK_INT(ifs_surface_class_of(20, 90, 1.0, &r), IFS_SURFACE_SNOW);
     /* a ramp rising 1 m per metre (45 degrees) along x on a grid 1 m apart */
     float z[5 * 3];
     for (int j = 0; j < 3; j++)

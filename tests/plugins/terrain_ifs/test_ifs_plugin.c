@@ -81,7 +81,7 @@ TEST(descriptor_and_schema)
     err_buf err;
     const loaded_plugin *lp = plugin_registry_find(reg, "terrain_ifs", SYLVA_KIND_TERRAIN, &err);
     if (lp) {
-        CHECK_INT(lp->desc->n_params, 39);
+        CHECK_INT(lp->desc->n_params, 42);
         CHECK(plugin_schema_check(lp->desc->params, lp->desc->n_params, &err) == 0);
         CHECK_STR_CONTAINS(lp->desc->summary, "IFS");
     }
@@ -311,7 +311,64 @@ TEST(bad_input_is_refused_clearly)
     plugin_registry_free(reg);
 }
 
+/* The share of heightfield nodes whose material is the named ground-cover class. */
+static double class_share(const scene *s, const char *class_name)
+{
+    const sylva_heightfield *t = s->terrain;
+    uint64_t n = 0, total = (uint64_t)t->nx * t->ny;
+    char want[48];
+    snprintf(want, sizeof want, "terrain_ifs %s", class_name);
+    for (uint64_t k = 0; k < total; k++)
+        if (t->material[k] >= 0 && !strcmp(s->materials[t->material[k]].name, want)) n++;
+    return (double)n / total;
+}
+
+/* Snow and scree lie by altitude in metres and slope in degrees: a 50 m-relief site has no
+ * snow by default (the fractions of the height range put 20 % of it under snow before), a site
+ * from 2,000 to 3,200 m has snow exactly on the gentle nodes from snow_altitude up, the older
+ * fractions still work when given, and giving both forms is refused. */
+TEST(snow_and_scree_in_metres)
+{
+    plugin_registry *reg = registry();
+    if (!reg) return;
+    scene *s = scene_ok("low_relief", 3, "method: deterministic\ngenerated: {nodes: [17, 17], "
+                        "relief: 50}", reg);
+    if (s && s->terrain) {
+        CHECK(class_share(s, "snow") == 0.0);
+        CHECK(class_share(s, "grass") > 0.5);
+    }
+    scene_free(s);
+    s = scene_ok("alpine", 3, "method: deterministic\nz_offset: 2000\nsnow_altitude: 2900\n"
+                 "generated: {nodes: [17, 17], relief: 1200}\ncell_size: [400, 400]", reg);
+    if (s && s->terrain) {
+        const sylva_heightfield *t = s->terrain;
+        uint32_t wrong = 0, snow = 0;
+        for (uint32_t j = 0; j < t->ny; j++)
+            for (uint32_t i = 0; i < t->nx; i++) {
+                size_t k = (size_t)j * t->nx + i;
+                const char *name = s->materials[t->material[k]].name;
+                int is_snow = !strcmp(name, "terrain_ifs snow"), is_rock = !strcmp(name, "terrain_ifs rock");
+                snow += is_snow;
+                if (is_snow != (t->z[k] >= 2900 && !is_rock)) wrong++;
+            }
+        CHECK_INT(wrong, 0);
+        CHECK(snow > 0);
+    }
+    scene_free(s);
+    s = scene_ok("fractions", 3, "method: deterministic\nsnow_line: 0.8\nscree_line: 0.6\n"
+                 "generated: {nodes: [17, 17], relief: 50}", reg);
+    if (s && s->terrain) CHECK(class_share(s, "snow") > 0.0);
+    scene_free(s);
+    err_buf err;
+    s = scene_from(scene_write("both_forms", 3, "snow_line: 0.8\nsnow_altitude: 2000"), reg, &err);
+    CHECK(s == NULL);
+    scene_free(s);
+    CHECK_STR_CONTAINS(err.msg, "give snow_altitude (metres) or snow_line");
+    plugin_registry_free(reg);
+}
+
 TEST_LIST(TEST_CASE(descriptor_and_schema),
+          TEST_CASE(snow_and_scree_in_metres),
           TEST_CASE(inline_dtm_deterministic),
           TEST_CASE(generated_dtm_random_iteration),
           TEST_CASE(surface_from_scene),

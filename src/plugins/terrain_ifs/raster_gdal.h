@@ -21,7 +21,9 @@ typedef enum ifs_crs_kind {
 } ifs_crs_kind;
 
 typedef struct ifs_raster {
-    void *dataset;            /* GDALDatasetH, owned */
+    void *dataset;            /* GDALDatasetH, owned: the file, or the warped VRT over it */
+    void *source;             /* GDALDatasetH of the file under a warped VRT, owned; or NULL */
+    int warped;               /* 1: read through a warped VRT into the target CRS */
     void *band;               /* GDALRasterBandH of the band asked for (borrowed from dataset) */
     uint32_t cols, rows;      /* raster size in pixels; row 0 is the file's first row */
     uint32_t bands;
@@ -46,6 +48,13 @@ typedef struct ifs_raster {
  * "humidity map"). Fails with SYLVA_ERR_IO when the file cannot be read or is not a raster,
  * SYLVA_ERR_PARAM when the band does not exist. */
 int ifs_raster_open(const char *path, uint32_t band, const char *what, ifs_raster *r, ifs_err *err);
+
+/* As ifs_raster_open, and when target_wkt is not NULL and names another coordinate system than
+ * the file's, the raster is read through a GDAL warped VRT into target_wkt (bilinear
+ * resampling, GDAL's choice of pixel size and extent; pixels the file does not cover are
+ * nodata). A file without a coordinate system cannot be warped and is refused. */
+int ifs_raster_open_in(const char *path, uint32_t band, const char *what, const char *target_wkt,
+                       ifs_raster *r, ifs_err *err);
 void ifs_raster_close(ifs_raster *r);
 
 /* Reads `count` pixels of file row `row` from column `col` as doubles, converted with scale and

@@ -19,6 +19,7 @@
 #include "dtm_file.h"
 #include "dtm_generate.h"
 #include "humidity_map.h"
+#include "raster_gdal.h"
 #include "ifs_parallel.h"
 #include "ifs_chaos.h"
 #include "ifs_eval.h"
@@ -53,6 +54,12 @@ typedef struct terrain_ifs_state {
     float albedo[IFS_SURFACE_CLASSES][3];
     float water_albedo[3];
     char source[512];            /* what the DTM is, for the log */
+    const sylva_params *params;  /* create()'s, valid until destroy (the host's promise) */
+    int georeferenced;           /* 1: the DTM file's node (0, 0) is at node0 in its CRS */
+    double node0[2];             /* map coordinates of DTM node (0, 0) (after a warp: the site's) */
+    const char *crs_read;        /* the CRS the DTM was read in: NULL (the file's) or the site's */
+    int crs_checked;             /* 1: the file's CRS was compared with the site's */
+    double z_shift;              /* metres taken off every DTM height (the site origin's height) */
 } terrain_ifs_state;
 
 static void state_free(terrain_ifs_state *s)
@@ -129,7 +136,7 @@ static int memory_fits(void *ctx, uint32_t nx, uint32_t ny, ifs_err *err)
 
 /* Loads the DTM from the one source the scene names. */
 static int load_dtm(const sylva_host_api *api, sylva_host *host, const sylva_params *params,
-                    terrain_ifs_state *s)
+                    terrain_ifs_state *s, const char *target_wkt)
 {
     const sylva_value *dtm = sylva_param(params, "dtm"), *heights = sylva_param(params, "heights");
     const sylva_value *cell = sylva_param(params, "cell_size");
@@ -149,7 +156,7 @@ static int load_dtm(const sylva_host_api *api, sylva_host *host, const sylva_par
         char quoted[520];
         snprintf(quoted, sizeof quoted, "'%s'", dtm->s);
         memory_ask ask = {api, host, params, quoted};
-        o.check_size = memory_fits, o.check_ctx = &ask;
+        o.check_size = memory_fits, o.check_ctx = &ask, o.target_wkt = target_wkt;
         if (!(range->list[0] < range->list[1]))
             return api->param_error(host, params, "height_range", "height_range [%g, %g] is "
                                     "empty; give [low, high] with low < high", range->list[0],
@@ -168,9 +175,13 @@ static int load_dtm(const sylva_host_api *api, sylva_host *host, const sylva_par
             if (err.msg[0]) api->param_error(host, params, "dtm", "%s", err.msg);
             return rc;
         }
-        snprintf(s->source, sizeof s->source, "%s (%s %s; %u x %u pixels from column %u, row %u; "
-                 "step %u)", dtm->s, info.driver, info.type_name, info.window[2], info.window[3],
-                 info.window[0], info.window[1], o.step);
+        snprintf(s->source, sizeof s->source, "%s (%s %s%s; %u x %u pixels from column %u, row %u; "
+                 "step %u)", dtm->s, info.driver, info.type_name, info.warped ? ", warped into the "
+                 "site's coordinate system" : "", info.window[2], info.window[3], info.window[0],
+                 info.window[1], o.step);
+        s->georeferenced = !info.degrees && !o.cell_size[0];
+        s->node0[0] = info.node0_x, s->node0[1] = info.node0_y;
+        s->crs_read = target_wkt;
         if (info.nodata_filled)
             api->log(host, SYLVA_LOG_INFO, "%s: %llu nodata node%s filled from their neighbours",
                      dtm->s, (unsigned long long)info.nodata_filled,
@@ -314,22 +325,14 @@ static void read_albedo(const sylva_params *params, const char *name, float out[
     for (int k = 0; k < 3; k++) out[k] = (float)v[k];
 }
 
-static int terrain_ifs_create(const sylva_host_api *api, sylva_host *host,
-                              const sylva_params *params, void **state)
+/* Everything the plugin derives from its DTM: loads it (in target_wkt when given, else in the
+ * file's own coordinate system), checks the fields that depend on its size, and sizes the
+ * output, the ground-cover rules and the humidity. */
+static int terrain_setup(const sylva_host_api *api, sylva_host *host, const sylva_params *params,
+                         terrain_ifs_state *s, const char *target_wkt)
 {
-    *state = NULL;
-    int rc = check_relations(api, host, params);
-    if (rc) return rc;
-    if (!SYLVA_API_HAS(api, mem_alloc))
-        return api->error(host, "terrain_ifs needs a host with sylva plugin ABI 1.1 or newer (for "
-                          "its allocator); this host speaks %u.%u", api->abi_major, api->abi_minor);
-    terrain_ifs_state *s = api->mem_calloc(1, sizeof *s); /* owned by the plugin until destroy */
-    if (!s) {
-        api->error(host, "terrain_ifs: out of memory for its settings");
-        return SYLVA_ERR_NOMEM;
-    }
-    s->mem_free = api->mem_free;
-    if ((rc = load_dtm(api, host, params, s))) goto fail;
+    int rc;
+    if ((rc = load_dtm(api, host, params, s, target_wkt))) goto fail;
     ifs_dtm *d = s->dtm;
     double zs = sylva_param_real(params, "z_scale"), zo = sylva_param_real(params, "z_offset");
     for (size_t k = 0; k < (size_t)d->nx * d->ny; k++) d->z[k] = d->z[k] * zs + zo;
@@ -433,6 +436,28 @@ static int terrain_ifs_create(const sylva_host_api *api, sylva_host *host,
             goto fail;
         }
     }
+    return SYLVA_OK;
+fail:
+    return rc;
+}
+
+static int terrain_ifs_create(const sylva_host_api *api, sylva_host *host,
+                              const sylva_params *params, void **state)
+{
+    *state = NULL;
+    int rc = check_relations(api, host, params);
+    if (rc) return rc;
+    if (!SYLVA_API_HAS(api, mem_alloc))
+        return api->error(host, "terrain_ifs needs a host with sylva plugin ABI 1.1 or newer (for "
+                          "its allocator); this host speaks %u.%u", api->abi_major, api->abi_minor);
+    terrain_ifs_state *s = api->mem_calloc(1, sizeof *s); /* owned by the plugin until destroy */
+    if (!s) {
+        api->error(host, "terrain_ifs: out of memory for its settings");
+        return SYLVA_ERR_NOMEM;
+    }
+    s->mem_free = api->mem_free;
+    s->params = params;
+    if ((rc = terrain_setup(api, host, params, s, NULL))) goto fail;
     *state = s;
     return SYLVA_OK;
 fail:
@@ -501,6 +526,8 @@ static int compute_heights(const terrain_ifs_state *s, const ifs_maps *maps, uin
 static int apply_surface(const terrain_ifs_state *s, const sylva_host_api *api, sylva_host *host,
                          sylva_heightfield *hf)
 {
+    ifs_surface_rules rules = s->rules; /* altitudes are the DTM's; the heights are local */
+    rules.snow_z -= s->z_shift, rules.scree_z -= s->z_shift;
     size_t n = (size_t)hf->nx * hf->ny;
     uint8_t *cls = api->mem_alloc(n); /* owned here */
     int rc = SYLVA_OK;
@@ -508,7 +535,7 @@ static int apply_surface(const terrain_ifs_state *s, const sylva_host_api *api, 
         api->error(host, "terrain_ifs: out of memory classifying %zu nodes", n);
         return SYLVA_ERR_NOMEM;
     }
-    ifs_surface_classify(hf->z, hf->nx, hf->ny, hf->dx, hf->dy, s->humidity, &s->rules, cls);
+    ifs_surface_classify(hf->z, hf->nx, hf->ny, hf->dx, hf->dy, s->humidity, &rules, cls);
     int32_t ids[IFS_SURFACE_CLASSES];
     uint64_t counts[IFS_SURFACE_CLASSES] = {0};
     for (int c = 0; c < IFS_SURFACE_CLASSES; c++) {
@@ -537,21 +564,64 @@ done:
     return rc;
 }
 
+/* A site (ABI 1.2 request): the DTM file read in the site's CRS (warped when the file's
+ * differs), its heights taken down by the origin's height. Sets *placed when the DTM's own
+ * georeferencing places it (a file read in metres of its CRS), 0 when it keeps `centre`. */
+static int site_prepare(terrain_ifs_state *s, const sylva_host_api *api, sylva_host *host,
+                        const sylva_terrain_request *req, int *placed)
+{
+    *placed = 0;
+    const char *path = sylva_param_str(s->params, "dtm");
+    if (!path) {
+        api->log(host, SYLVA_LOG_INFO, "the scene has a site; the %s has no coordinates of its own "
+                 "and stands at centre", s->source);
+    } else if (!s->crs_checked) {
+        ifs_raster r;
+        ifs_err err = {{0}};
+        int rc = ifs_raster_open_in(path, (uint32_t)sylva_param_int(s->params, "band"), "DTM",
+                                    req->site_crs, &r, &err);
+        int warp = r.warped;
+        ifs_raster_close(&r);
+        if (rc) return api->param_error(host, s->params, "dtm", "%s", err.msg);
+        s->crs_checked = 1;
+        if (warp) { /* read it again, in the site's CRS */
+            ifs_dtm_free(s->dtm), s->dtm = NULL;
+            s->mem_free(s->humidity), s->humidity = NULL;
+            s->z_shift = 0;
+            if ((rc = terrain_setup(api, host, s->params, s, req->site_crs))) return rc;
+        }
+    }
+    if (path && !s->georeferenced)
+        api->log(host, SYLVA_LOG_WARN, "%s: its node spacing is not its coordinate system's (cell_size "
+                 "or degrees), so it stands at centre, not at its map position", path);
+    *placed = path && s->georeferenced;
+    double shift = req->site_origin[2] - s->z_shift;
+    if (shift != 0.0) {
+        for (size_t k = 0; k < (size_t)s->dtm->nx * s->dtm->ny; k++) s->dtm->z[k] -= shift;
+        if (!s->has_start) s->start_z -= shift;
+        s->z_shift = req->site_origin[2];
+    }
+    return SYLVA_OK;
+}
+
 static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_host *host,
                                 const void *request, void *out)
 {
-    const terrain_ifs_state *s = state;
+    terrain_ifs_state *s = state;
+    const sylva_terrain_request *req = request;
     sylva_terrain_out *o = out;
-    (void)request; /* the scene seed reaches the plugin through api->rng_init */
     if (o->size < offsetof(sylva_terrain_out, terrain) + sizeof o->terrain) {
         api->error(host, "terrain_ifs: the host's terrain output is too small (%u bytes)", o->size);
         return SYLVA_ERR_INTERNAL;
     }
+    int placed = 0, rc;
+    const int site = req && SYLVA_HAS_FIELD(req, sylva_terrain_request, eye) && req->site_crs;
+    if (site && (rc = site_prepare(s, api, host, req, &placed))) return rc;
     ifs_err err = {{0}};
     ifs_maps *maps = NULL;
     ifs_maps_params mp = {.mode = s->mode, .alpha = s->alpha, .alpha_field = s->alpha_field,
                           .probability = s->probability_field};
-    int rc = ifs_maps_build(s->dtm, &mp, &maps, &err);
+    rc = ifs_maps_build(s->dtm, &mp, &maps, &err);
     if (rc) {
         api->error(host, "%s", err.msg);
         return rc;
@@ -563,6 +633,8 @@ static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_ho
     }
     double width = (s->dtm->nx - 1) * s->dtm->dx, depth_m = (s->dtm->ny - 1) * s->dtm->dy;
     hf->x0 = s->centre[0] - 0.5 * width, hf->y0 = s->centre[1] - 0.5 * depth_m;
+    if (placed) /* node (E, N) at local (E - origin E, N - origin N) */
+        hf->x0 = s->node0[0] - req->site_origin[0], hf->y0 = s->node0[1] - req->site_origin[1];
     hf->dx = width / (s->nx_out - 1), hf->dy = depth_m / (s->ny_out - 1);
     uint32_t depth = s->depth ? s->depth : ifs_eval_auto_depth(maps, s->nx_out, s->ny_out);
     api->log(host, SYLVA_LOG_INFO, "%s: %u x %u nodes %.3g x %.3g m apart, heights %.1f to %.1f m; "
@@ -577,7 +649,7 @@ static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_ho
     if (rc) return rc;
     if (s->has_water) {
         hf->has_water = 1;
-        hf->water_level = s->water_z;
+        hf->water_level = s->water_z - s->z_shift;
     }
     if (s->classes && (rc = apply_surface(s, api, host, hf))) return rc;
     o->terrain = hf;

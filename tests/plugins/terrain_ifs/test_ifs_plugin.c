@@ -9,11 +9,14 @@
 #include <sys/stat.h>
 
 #include <gdal.h>
+#include <cpl_conv.h>
+#include <ogr_srs_api.h>
 
 #include "harness.h"
 #include "plugin/plugin_host.h"
 #include "scene/scene.h"
 #include "scene/scene_build.h"
+#include "scene/heightfield.h"
 #include "scene/scene_file.h"
 
 #define OUT_DIR SYLVA_TEST_OUT_DIR
@@ -53,16 +56,29 @@ static const char *scene_write(const char *name, int seed, const char *terrain_k
     return path;
 }
 
-/* Loads and builds a scene; NULL with err set on failure. */
-static scene *scene_from(const char *path, plugin_registry *reg, err_buf *err)
+/* Loads and builds a scene with the site (CRS as WKT, or NULL for none, and origin) filled in as
+ * the scene's site section would: the plugin receives them in its terrain request. NULL with err
+ * set on failure. */
+static scene *scene_with_site(const char *path, plugin_registry *reg, const char *wkt,
+                              const double origin[3], err_buf *err)
 {
     err_clear(err);
     scene_file *sf = scene_file_load(path, reg, err);
     if (!sf) return NULL;
+    sf->site.crs_wkt = wkt;
+    memcpy(sf->site.origin, origin, sizeof sf->site.origin);
     build_options opt = {.quiet = 1};
     scene *s = scene_build(sf, reg, &opt, err);
+    sf->site.crs_wkt = NULL; /* the test's string */
     scene_file_free(sf);
     return s;
+}
+
+/* Loads and builds a scene without a site; NULL with err set on failure. */
+static scene *scene_from(const char *path, plugin_registry *reg, err_buf *err)
+{
+    const double origin[3] = {0, 0, 0};
+    return scene_with_site(path, reg, NULL, origin, err);
 }
 
 static scene *scene_ok(const char *name, int seed, const char *keys, plugin_registry *reg)
@@ -367,7 +383,104 @@ TEST(snow_and_scree_in_metres)
     plugin_registry_free(reg);
 }
 
+/* The height of the site test's DTM at map point (e, n) of EPSG:32611: a tilted plane. */
+static double site_plane(double e, double n) { return 1000.0 + 0.05 * (e - 500000) + 0.03 * (n - 4098800); }
+
+static char *wkt_of_epsg(int code)
+{
+    OGRSpatialReferenceH srs = OSRNewSpatialReference(NULL);
+    char *wkt = NULL, *copy = NULL;
+    if (srs && OSRImportFromEPSG(srs, code) == OGRERR_NONE && OSRExportToWkt(srs, &wkt) == OGRERR_NONE)
+        copy = strdup(wkt);
+    CPLFree(wkt);
+    OSRDestroySpatialReference(srs);
+    return copy;
+}
+
+/* A site places the DTM by its georeferencing: in the DTM's own CRS node (E, N) stands at
+ * (E - origin E, N - origin N), heights minus the origin's; in another CRS (UTM zone 10 for a
+ * zone 11 file) the DTM is warped (bilinear) so that every local point carries the height of
+ * its map point, found back in the file's CRS through PROJ. */
+TEST(site_places_and_warps_the_dtm)
+{
+    plugin_registry *reg = registry();
+    if (!reg) return;
+    char tif[512];
+    snprintf(tif, sizeof tif, "%s/site_dtm.tif", OUT_DIR);
+    mkdir(OUT_DIR, 0755);
+    GDALAllRegister();
+    GDALDatasetH ds = GDALCreate(GDALGetDriverByName("GTiff"), tif, 50, 40, 1, GDT_Float32, NULL);
+    CHECK(ds != NULL);
+    if (!ds) return;
+    double gt[6] = {500000, 30, 0, 4100000, 0, -30};
+    GDALSetGeoTransform(ds, gt);
+    OGRSpatialReferenceH srs = OSRNewSpatialReference(NULL);
+    OSRImportFromEPSG(srs, 32611);
+    GDALSetSpatialRef(ds, srs);
+    float v[40][50];
+    for (int r = 0; r < 40; r++)
+        for (int c = 0; c < 50; c++) v[r][c] = (float)site_plane(500000 + 30 * (c + 0.5), 4100000 - 30 * (r + 0.5));
+    CHECK(GDALRasterIO(GDALGetRasterBand(ds, 1), GF_Write, 0, 0, 50, 40, v, 50, 40, GDT_Float32, 0, 0) == CE_None);
+    GDALClose(ds);
+    const char *keys = "dtm: site_dtm.tif\nrefine: 1\nmethod: deterministic\nalpha: 0\ncentre: [7, 9]";
+    const double origin[3] = {500600, 4099400, 900};
+    char *utm11 = wkt_of_epsg(32611), *utm10 = wkt_of_epsg(32610);
+    CHECK(utm11 && utm10);
+    err_buf err;
+    scene *s = utm11 ? scene_with_site(scene_write("site_same_crs", 1, keys), reg, utm11, origin, &err) : NULL;
+    CHECK(s && s->terrain);
+    if (!s) fprintf(stderr, "%s\n", err.msg);
+    if (s && s->terrain) {
+        const sylva_heightfield *t = s->terrain;
+        CHECK_INT(t->nx, 50);
+        CHECK_NEAR(t->x0, 500015 - origin[0], 1e-9); /* node (0, 0): the south-west pixel centre */
+        CHECK_NEAR(t->y0, 4098815 - origin[1], 1e-9);
+        CHECK_NEAR(t->z[0], site_plane(500015, 4098815) - origin[2], 1e-3);
+        CHECK_NEAR(t->z[39 * 50 + 49], site_plane(501485, 4099985) - origin[2], 1e-3);
+    }
+    scene_free(s);
+    s = utm10 ? scene_with_site(scene_write("site_other_crs", 1, keys), reg, utm10, origin, &err) : NULL;
+    CHECK(s && s->terrain);
+    if (!s) fprintf(stderr, "%s\n", err.msg);
+    if (s && s->terrain) {
+        /* every local point inside the file's footprint: its zone 10 map point, back in zone 11 */
+        OGRSpatialReferenceH z10 = OSRNewSpatialReference(utm10);
+        OSRSetAxisMappingStrategy(z10, OAMS_TRADITIONAL_GIS_ORDER);
+        OSRSetAxisMappingStrategy(srs, OAMS_TRADITIONAL_GIS_ORDER);
+        OGRCoordinateTransformationH to11 = OCTNewCoordinateTransformation(z10, srs);
+        const sylva_heightfield *t = s->terrain;
+        double worst = 0;
+        int inside = 0;
+        for (uint32_t j = 1; j + 1 < t->ny; j += 3)
+            for (uint32_t i = 1; i + 1 < t->nx; i += 3) {
+                double x = t->x0 + i * t->dx + 0.37 * t->dx, y = t->y0 + j * t->dy + 0.61 * t->dy, z;
+                double e = x + origin[0], n = y + origin[1];
+                if (!OCTTransform(to11, 1, &e, &n, NULL)) continue;
+                /* away from the file's edge, where the warped raster has no data of its own */
+                if (e < 500000 + 60 || e > 501500 - 60 || n < 4098800 + 60 || n > 4100000 - 60) continue;
+                if (heightfield_height(t, x, y, &z)) continue;
+                inside++;
+                worst = fmax(worst, fabs(z - (site_plane(e, n) - origin[2])));
+            }
+        fprintf(stderr, "warped: %u x %u nodes %.2f x %.2f m apart; %d points, worst %.4f m\n", t->nx, t->ny,
+                t->dx, t->dy, inside, worst);
+        CHECK(inside > 50);
+        CHECK(worst < 0.05);
+        OCTDestroyCoordinateTransformation(to11);
+        OSRDestroySpatialReference(z10);
+    }
+    scene_free(s);
+    /* without a site, the DTM stands at centre as before */
+    s = scene_ok("site_none", 1, keys, reg);
+    if (s && s->terrain) CHECK_NEAR(s->terrain->x0, 7 - 0.5 * 49 * 30, 1e-9);
+    scene_free(s);
+    OSRDestroySpatialReference(srs);
+    free(utm11), free(utm10);
+    plugin_registry_free(reg);
+}
+
 TEST_LIST(TEST_CASE(descriptor_and_schema),
+          TEST_CASE(site_places_and_warps_the_dtm),
           TEST_CASE(snow_and_scree_in_metres),
           TEST_CASE(inline_dtm_deterministic),
           TEST_CASE(generated_dtm_random_iteration),

@@ -192,10 +192,11 @@ TEST(terrain_grid_matches_the_tessellation)
             double fx = gx - i, fy = gy - j;
             if (fabs(fx - fy) < 1e-3 || fx < 1e-3 || fy < 1e-3 || fx > 1 - 1e-3 || fy > 1 - 1e-3)
                 continue; /* on a cell's edge or diagonal: either triangle */
-            uint32_t t = terrain_triangle_of_cell(hf, i, j, fy > fx), n[3];
-            terrain_triangle_nodes(hf, t, n);
+            terrain_grid g = terrain_grid_of(hf, 0);
+            uint32_t t = terrain_triangle_of_cell(&g, i, j, fy > fx), n[3];
+            terrain_triangle_nodes(&g, t, n);
             float p[3][3];
-            for (int q = 0; q < 3; q++) terrain_node_vertex(hf, n[q] % hf->nx, n[q] / hf->nx, p[q], NULL, NULL);
+            for (int q = 0; q < 3; q++) terrain_node_vertex(&g, n[q] % hf->nx, n[q] / hf->nx, p[q], NULL, NULL);
             /* the plane through the triangle at (x, y) */
             double e1[3], e2[3];
             for (int q = 0; q < 3; q++) e1[q] = p[1][q] - p[0][q], e2[q] = p[2][q] - p[0][q];
@@ -209,7 +210,7 @@ TEST(terrain_grid_matches_the_tessellation)
             }
             hit_info h;
             accel_shade(&a, &rh, &h);
-            uint32_t want = (uint32_t)terrain_triangle_material(hf, t, s->terrain_material);
+            uint32_t want = (uint32_t)terrain_triangle_material(&g, t, s->terrain_material);
             if (fabs(h.p.z - zt) > 1e-3 || h.mat != &s->materials[want] || h.kind != GEOM_TERRAIN ||
                 fabs(h.ng.z * sqrt(nz * nz + nxp * nxp + nyp * nyp) - nz) > 1e-4 * fabs(nz)) {
                 if (wrong++ < 5)

@@ -205,7 +205,7 @@ void accel_free(accel *a)
     free(a->proto_scenes);
     free(a->proto_geoms);
     free(a->top_geoms);
-    free(a->terrain_vertices);
+    accel_terrain_free(a->terrain);
     mesh_free(a->water_mesh);
     if (a->device) rtcReleaseDevice(a->device);
     if (a->errors) pthread_mutex_destroy(&a->errors->lock);

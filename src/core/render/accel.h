@@ -49,10 +49,12 @@ typedef struct geom_info {
     const mesh *mesh;          /* shading source; NULL for the terrain (its heightfield is) */
     cutout_part part;          /* the mesh's triangles in this geometry (Embree's primIDs); owned */
     const scene *scene;        /* for materials and textures in the filter */
+    const struct accel_terrain *terrain; /* the terrain's tiles (GEOM_TERRAIN only) */
     int alpha;                 /* 1: the cut-out part, filtered by texture alpha */
 } geom_info;
 
 struct accel_errors;
+struct accel_terrain;
 
 typedef struct accel {
     RTCDevice device;
@@ -63,7 +65,7 @@ typedef struct accel {
     geom_info *top_geoms;      /* per top-level non-instance geometry id; owned */
     uint32_t n_top_geoms;
     uint32_t first_instance;   /* top geomID of instance 0 */
-    float *terrain_vertices;   /* the terrain's grid vertices (accel_terrain.h); owned */
+    struct accel_terrain *terrain; /* the terrain's grid geometry (accel_terrain.h); owned */
     mesh *water_mesh;          /* owned */
     struct accel_errors *errors; /* what Embree's error callback recorded; owned */
     float bounds_lo[3], bounds_hi[3]; /* of the whole scene */

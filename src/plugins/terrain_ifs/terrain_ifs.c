@@ -21,6 +21,7 @@
 #include "humidity_map.h"
 #include "raster_gdal.h"
 #include "ifs_parallel.h"
+#include "lod_levels.h"
 #include "ifs_chaos.h"
 #include "ifs_eval.h"
 #include "ifs_maps.h"
@@ -42,7 +43,10 @@ typedef struct terrain_ifs_state {
     int has_start;
     double start_u, start_v, start_z;
     uint32_t depth;              /* 0: automatic */
-    uint32_t nx_out, ny_out;
+    uint32_t nx_out, ny_out;     /* the output grid: with levels of detail, the DTM's nodes */
+    int lod;                     /* 1: levels of detail around the eye (refine_levels) */
+    uint32_t refine;             /* the finest level's nodes per DTM cell */
+    double lod_radius;           /* the finest window's half-width, DTM cells */
     uint32_t threads;
     double centre[2];
     int classes;                 /* 1: ground-cover classes, 0: the scene's material */
@@ -97,6 +101,23 @@ static void output_size(const sylva_params *params, uint32_t nx, uint32_t ny, ui
     *nyo = out->is_set ? (uint64_t)out->list[1] : (ny - 1) * refine + 1;
 }
 
+/* Whether the terrain is refined in levels of detail around the eye (lod_levels.h) rather than
+ * uniformly: with refine >= 2, when detail_radius is given, or when the uniform grid would pass
+ * TERRAIN_IFS_UNIFORM_NODES (then the finest window is TERRAIN_IFS_LOD_CELLS output cells
+ * across its half-width). output_nodes always refines uniformly. */
+static void lod_plan(const sylva_params *params, const ifs_dtm *d, int *lod, uint32_t *refine,
+                     double *radius_cells)
+{
+    uint64_t r = (uint64_t)sylva_param_int(params, "refine");
+    double radius = sylva_param_real(params, "detail_radius");
+    uint64_t uniform = ((d->nx - 1) * r + 1) * ((d->ny - 1) * r + 1);
+    *refine = (uint32_t)r;
+    *lod = !sylva_param(params, "output_nodes")->is_set && r >= 2 &&
+           (radius > 0 || uniform > TERRAIN_IFS_UNIFORM_NODES);
+    double spacing = d->dx < d->dy ? d->dx : d->dy;
+    *radius_cells = radius > 0 && spacing > 0 ? radius / spacing : (double)TERRAIN_IFS_LOD_CELLS / r;
+}
+
 /* What the memory check needs beside the DTM's size. */
 typedef struct memory_ask {
     const sylva_host_api *api;
@@ -116,6 +137,16 @@ static int memory_fits(void *ctx, uint32_t nx, uint32_t ny, ifs_err *err)
     if (!SYLVA_API_HAS(m->api, memory_check)) return SYLVA_OK;
     uint64_t nxo, nyo;
     output_size(m->params, nx, ny, &nxo, &nyo);
+    int lod;
+    uint32_t refine;
+    double radius;
+    ifs_dtm shape = {.nx = nx, .ny = ny};
+    lod_plan(m->params, &shape, &lod, &refine, &radius);
+    if (lod) { /* the DTM's nodes, and each level at most (2 radius refine + 1)^2 nodes */
+        uint64_t side = (uint64_t)(2 * radius * refine + 2), levels = 0;
+        for (uint32_t r = refine; r > 1; r = r % 2 ? 1 : r / 2) levels++;
+        nxo = nx, nyo = (uint64_t)ny + levels * side * side / nx + 1;
+    }
     if (nxo > 65536 || nyo > 65536) return SYLVA_OK; /* refused with its own sentence later */
     uint64_t out = nxo * nyo, per_out = 1;
     if (sylva_param_str(m->params, "humidity_map")) per_out += 4;
@@ -343,6 +374,8 @@ static int terrain_setup(const sylva_host_api *api, sylva_host *host, const sylv
     const sylva_value *out = sylva_param(params, "output_nodes");
     uint64_t nxo, nyo;
     output_size(params, d->nx, d->ny, &nxo, &nyo);
+    lod_plan(params, d, &s->lod, &s->refine, &s->lod_radius);
+    if (s->lod) nxo = d->nx, nyo = d->ny; /* the DTM's nodes, and the levels in generate() */
     if (nxo > 65536 || nyo > 65536 || nxo * nyo > TERRAIN_IFS_MAX_OUTPUT_NODES) {
         rc = api->param_error(host, params, out->is_set ? "output_nodes" : "refine",
                               "the output grid would have %llu x %llu nodes; at most %u nodes "
@@ -478,21 +511,23 @@ static void report_progress(void *pctx, uint64_t done, uint64_t total)
     p->api->progress(p->host, p->label, done, total);
 }
 
-/* The heights: random iteration or deterministic evaluation into hf->z. */
+/* The heights of window `win` of the nx x ny output lattice over the footprint: random
+ * iteration or deterministic evaluation into z (win->nx * win->ny). */
 static int compute_heights(const terrain_ifs_state *s, const ifs_maps *maps, uint32_t depth,
-                           const sylva_host_api *api, sylva_host *host, sylva_heightfield *hf)
+                           uint32_t nx, uint32_t ny, const ifs_window *win,
+                           const sylva_host_api *api, sylva_host *host, float *z)
 {
     ifs_err err = {{0}};
     int rc;
     if (!s->random) {
         progress_sink p = {api, host, "terrain_ifs evaluation"};
-        if ((rc = ifs_eval_grid(maps, s->nx_out, s->ny_out, depth, s->threads, hf->z,
-                                report_progress, &p, &err))) {
+        if ((rc = ifs_eval_window(maps, nx, ny, win, depth, s->threads, z, report_progress, &p,
+                                  &err))) {
             api->error(host, "%s", err.msg);
             return rc;
         }
         api->log(host, SYLVA_LOG_INFO, "deterministic evaluation f_%u at %u x %u nodes", depth,
-                 s->nx_out, s->ny_out);
+                 win->nx, win->ny);
         return SYLVA_OK;
     }
     uint64_t chains = ifs_chaos_chain_count(s->iterations);
@@ -506,10 +541,10 @@ static int compute_heights(const terrain_ifs_state *s, const ifs_maps *maps, uin
     progress_sink p = {api, host, "terrain_ifs random iteration"};
     ifs_chaos_job job = {.points = s->iterations, .start_u = s->start_u, .start_v = s->start_v,
                          .start_z = s->start_z, .streams = streams, .rng_u64 = api->rng_u64,
-                         .nx = s->nx_out, .ny = s->ny_out, .depth = depth, .threads = s->threads,
+                         .nx = nx, .ny = ny, .window = *win, .depth = depth, .threads = s->threads,
                          .progress = report_progress, .pctx = &p};
     ifs_chaos_stats stats;
-    rc = ifs_chaos_grid(maps, &job, hf->z, &stats, &err);
+    rc = ifs_chaos_grid(maps, &job, z, &stats, &err);
     api->mem_free(streams);
     if (rc) {
         api->error(host, "%s", err.msg);
@@ -517,39 +552,75 @@ static int compute_heights(const terrain_ifs_state *s, const ifs_maps *maps, uin
     }
     api->log(host, SYLVA_LOG_INFO, "random iteration: %llu points on %u x %u nodes (%u thread%s); "
              "%llu node%s no point reached took f_%u", (unsigned long long)s->iterations,
-             s->nx_out, s->ny_out, stats.workers, stats.workers == 1 ? "" : "s",
+             win->nx, win->ny, stats.workers, stats.workers == 1 ? "" : "s",
              (unsigned long long)stats.empty_nodes, stats.empty_nodes == 1 ? "" : "s", depth);
     return SYLVA_OK;
 }
 
-/* Ground-cover materials per node, and the water material. */
-static int apply_surface(const terrain_ifs_state *s, const sylva_host_api *api, sylva_host *host,
-                         sylva_heightfield *hf)
+/* Classes of an nx x ny grid of heights dx x dy apart into material ids (ids per class), counted
+ * into counts. */
+static int classify_grid(const terrain_ifs_state *s, const sylva_host_api *api, sylva_host *host,
+                         const float *z, uint32_t nx, uint32_t ny, double dx, double dy,
+                         const float *humidity, const int32_t ids[IFS_SURFACE_CLASSES],
+                         int32_t *material, uint64_t counts[IFS_SURFACE_CLASSES])
 {
     ifs_surface_rules rules = s->rules; /* altitudes are the DTM's; the heights are local */
     rules.snow_z -= s->z_shift, rules.scree_z -= s->z_shift;
-    size_t n = (size_t)hf->nx * hf->ny;
+    size_t n = (size_t)nx * ny;
     uint8_t *cls = api->mem_alloc(n); /* owned here */
-    int rc = SYLVA_OK;
     if (!cls) {
         api->error(host, "terrain_ifs: out of memory classifying %zu nodes", n);
         return SYLVA_ERR_NOMEM;
     }
-    ifs_surface_classify(hf->z, hf->nx, hf->ny, hf->dx, hf->dy, s->humidity, &rules, cls);
+    ifs_surface_classify(z, nx, ny, dx, dy, humidity, &rules, cls);
+    for (size_t k = 0; k < n; k++) material[k] = ids[cls[k]], counts[cls[k]]++;
+    api->mem_free(cls);
+    return SYLVA_OK;
+}
+
+/* The humidity of level l's nodes: that of the nearest node of the output grid the humidity map
+ * was sampled on (the DTM's nodes when there are levels), into a new array (host allocator). */
+static float *level_humidity(const terrain_ifs_state *s, const sylva_host_api *api,
+                             const sylva_terrain_level *l)
+{
+    float *h = api->mem_alloc((size_t)l->nx * l->ny * sizeof *h); /* owned by the caller */
+    for (uint32_t j = 0; h && j < l->ny; j++)
+        for (uint32_t i = 0; i < l->nx; i++) {
+            uint32_t bi = l->i0 + (i + l->refine / 2) / l->refine, bj = l->j0 + (j + l->refine / 2) / l->refine;
+            h[(size_t)j * l->nx + i] = s->humidity[(size_t)bj * s->nx_out + bi];
+        }
+    return h;
+}
+
+/* Ground-cover materials per node of the heightfield and of its levels, and the water material. */
+static int apply_surface(const terrain_ifs_state *s, const sylva_host_api *api, sylva_host *host,
+                         sylva_heightfield *hf)
+{
     int32_t ids[IFS_SURFACE_CLASSES];
-    uint64_t counts[IFS_SURFACE_CLASSES] = {0};
+    uint64_t counts[IFS_SURFACE_CLASSES] = {0}, level_counts[IFS_SURFACE_CLASSES] = {0};
     for (int c = 0; c < IFS_SURFACE_CLASSES; c++) {
         char name[48];
         snprintf(name, sizeof name, "terrain_ifs %s", ifs_surface_class_name((ifs_surface_class)c));
         sylva_material_desc m = {.size = sizeof m, .name = name, .bsdf = SYLVA_BSDF_LAMBERT,
                                  .texture = -1};
         memcpy(m.albedo, s->albedo[c], sizeof m.albedo);
-        if ((ids[c] = api->material_new(host, &m)) < 0) {
-            rc = ids[c];
-            goto done;
-        }
+        if ((ids[c] = api->material_new(host, &m)) < 0) return ids[c];
     }
-    for (size_t k = 0; k < n; k++) hf->material[k] = ids[cls[k]], counts[cls[k]]++;
+    int rc = classify_grid(s, api, host, hf->z, hf->nx, hf->ny, hf->dx, hf->dy, s->humidity, ids,
+                           hf->material, counts);
+    for (uint32_t k = 0; !rc && k < hf->n_levels; k++) {
+        const sylva_terrain_level *l = &hf->levels[k];
+        float *hum = s->humidity ? level_humidity(s, api, l) : NULL;
+        if (s->humidity && !hum) {
+            api->error(host, "terrain_ifs: out of memory for the humidity of a level of detail");
+            return SYLVA_ERR_NOMEM;
+        }
+        rc = classify_grid(s, api, host, l->z, l->nx, l->ny, hf->dx / l->refine, hf->dy / l->refine,
+                           hum, ids, l->material, level_counts);
+        api->mem_free(hum);
+    }
+    if (rc) return rc;
+    double n = (double)hf->nx * hf->ny;
     api->log(host, SYLVA_LOG_INFO, "ground: %.1f%% grass, %.1f%% dry grass, %.1f%% scree, "
              "%.1f%% rock, %.1f%% snow", 100.0 * counts[0] / n, 100.0 * counts[1] / n,
              100.0 * counts[2] / n, 100.0 * counts[3] / n, 100.0 * counts[4] / n);
@@ -557,11 +628,48 @@ static int apply_surface(const terrain_ifs_state *s, const sylva_host_api *api, 
         sylva_material_desc w = {.size = sizeof w, .name = "terrain_ifs water",
                                  .bsdf = SYLVA_BSDF_LAMBERT, .texture = -1};
         memcpy(w.albedo, s->water_albedo, sizeof w.albedo);
-        if ((hf->water_material = api->material_new(host, &w)) < 0) rc = hf->water_material;
+        if ((hf->water_material = api->material_new(host, &w)) < 0) return hf->water_material;
     }
-done:
-    api->mem_free(cls);
-    return rc;
+    return SYLVA_OK;
+}
+
+/* Levels of detail (lod_levels.h): the DTM's own heights over the whole footprint, and around
+ * the eye (DTM cell units from node (0, 0); NaN: the footprint's centre) windows refined at
+ * halving resolutions, each refined as the uniform grid of its resolution would be there, its
+ * rim then pinned onto the coarser level around it. */
+static int refine_levels(const terrain_ifs_state *s, const ifs_maps *maps, uint32_t depth,
+                         const double eye[2], const sylva_host_api *api, sylva_host *host,
+                         sylva_heightfield *hf)
+{
+    if (!SYLVA_API_HAS(api, heightfield_level_new))
+        return api->error(host, "terrain_ifs: levels of detail need a host with sylva plugin ABI "
+                          "1.2; this host speaks %u.%u (set detail_radius to 0 and lower refine)",
+                          api->abi_major, api->abi_minor);
+    const ifs_dtm *d = s->dtm;
+    for (size_t k = 0; k < (size_t)d->nx * d->ny; k++) hf->z[k] = (float)d->z[k];
+    ifs_lod_window w[IFS_LOD_MAX_LEVELS];
+    uint32_t n = ifs_lod_windows(d->nx - 1, d->ny - 1, s->refine, eye[0], eye[1], s->lod_radius, w);
+    ifs_lod_window base = {0, 0, d->nx - 1, d->ny - 1, 1};
+    const float *coarser = hf->z;
+    const ifs_lod_window *around = &base;
+    for (uint32_t k = 0; k < n; k++) {
+        sylva_terrain_level *l = api->heightfield_level_new(host, hf, w[k].i0, w[k].j0, w[k].cells_x,
+                                                            w[k].cells_y, w[k].refine, s->classes);
+        if (!l) return SYLVA_ERR_LIMIT; /* the host has said why */
+        uint32_t r = w[k].refine;
+        ifs_window win = {w[k].i0 * r, w[k].j0 * r, l->nx, l->ny};
+        int rc = compute_heights(s, maps, depth, (d->nx - 1) * r + 1, (d->ny - 1) * r + 1, &win, api,
+                                 host, l->z);
+        if (rc) return rc;
+        ifs_lod_pin_rim(around, coarser, &w[k], l->z, d->nx - 1, d->ny - 1);
+        coarser = l->z, around = &w[k];
+        /* the level pointer is the host's until the next level: heights are final here */
+    }
+    api->log(host, SYLVA_LOG_INFO, "levels of detail: the DTM's %u x %u nodes, and %u window%s "
+             "around (%.0f, %.0f) m refined %u to 2 times (finest half-width %.0f m)", d->nx, d->ny,
+             n, n == 1 ? "" : "s", hf->x0 + eye[0] * hf->dx, hf->y0 + eye[1] * hf->dy, s->refine,
+             s->lod_radius * hf->dx);
+    return SYLVA_OK;
 }
 
 /* A site (ABI 1.2 request): the DTM file read in the site's CRS (warped when the file's
@@ -636,7 +744,11 @@ static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_ho
     if (placed) /* node (E, N) at local (E - origin E, N - origin N) */
         hf->x0 = s->node0[0] - req->site_origin[0], hf->y0 = s->node0[1] - req->site_origin[1];
     hf->dx = width / (s->nx_out - 1), hf->dy = depth_m / (s->ny_out - 1);
-    uint32_t depth = s->depth ? s->depth : ifs_eval_auto_depth(maps, s->nx_out, s->ny_out);
+    /* with levels of detail: the depth of the uniform refinement the finest level stands for */
+    uint32_t depth = s->depth ? s->depth
+                     : s->lod ? ifs_eval_auto_depth(maps, (s->dtm->nx - 1) * s->refine + 1,
+                                                    (s->dtm->ny - 1) * s->refine + 1)
+                              : ifs_eval_auto_depth(maps, s->nx_out, s->ny_out);
     api->log(host, SYLVA_LOG_INFO, "%s: %u x %u nodes %.3g x %.3g m apart, heights %.1f to %.1f m; "
              "%s maps, alpha %s (largest |alpha| %g: detail up to about %.3g m per cell, alpha "
              "times the DTM's %.3g m departure from the surface of its corners)", s->source,
@@ -644,7 +756,15 @@ static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_ho
              s->mode == IFS_MODE_AFFINE ? "affine" : "bilinear",
              s->alpha_field ? "per cell" : "global", maps->alpha_max,
              maps->alpha_max * maps->corner_departure, maps->corner_departure);
-    rc = compute_heights(s, maps, depth, api, host, hf);
+    if (s->lod) {
+        double eye[2] = {NAN, NAN};
+        if (req && SYLVA_HAS_FIELD(req, sylva_terrain_request, eye))
+            eye[0] = (req->eye[0] - hf->x0) / hf->dx, eye[1] = (req->eye[1] - hf->y0) / hf->dy;
+        rc = refine_levels(s, maps, depth, eye, api, host, hf);
+    } else {
+        ifs_window whole = {0, 0, s->nx_out, s->ny_out};
+        rc = compute_heights(s, maps, depth, s->nx_out, s->ny_out, &whole, api, host, hf->z);
+    }
     ifs_maps_free(maps);
     if (rc) return rc;
     if (s->has_water) {

@@ -102,6 +102,12 @@ const sylva_param_spec terrain_ifs_params[] = {
              "reached); 0: enough for the output spacing and for alpha^K <= 1e-4."},
     {.name = "refine", .type = SYLVA_P_INT, .flags = RANGE, .def = 4, .min = 1, .max = 1024,
      .help = "Output nodes per DTM cell along each axis: (N - 1) refine + 1 nodes along x."},
+    {.name = "detail_radius", .type = SYLVA_P_REAL, .flags = RANGE, .def = 0, .min = 0,
+     .max = 1e7, .unit = "m",
+     .help = "Levels of detail: refine only within this distance of the camera (ring by ring "
+             "coarser beyond, halving the refine, the DTM's own nodes everywhere); 0: uniform "
+             "refinement unless it passes 4097 x 4097 nodes, then 1024 output cells around the "
+             "camera."},
     {.name = "output_nodes", .type = SYLVA_P_LIST, .flags = RANGE, .min = 2, .max = 65536,
      .max_len = 2, .help = "Output grid size [nx, ny] in nodes, instead of refine."},
     {.name = "threads", .type = SYLVA_P_INT, .flags = RANGE, .def = 0, .min = 0,

@@ -18,6 +18,7 @@
 #include "scene/scene_build.h"
 #include "scene/heightfield.h"
 #include "scene/scene_file.h"
+#include "render/accel.h"
 
 #define OUT_DIR SYLVA_TEST_OUT_DIR
 
@@ -97,7 +98,7 @@ TEST(descriptor_and_schema)
     err_buf err;
     const loaded_plugin *lp = plugin_registry_find(reg, "terrain_ifs", SYLVA_KIND_TERRAIN, &err);
     if (lp) {
-        CHECK_INT(lp->desc->n_params, 42);
+        CHECK_INT(lp->desc->n_params, 43);
         CHECK(plugin_schema_check(lp->desc->params, lp->desc->n_params, &err) == 0);
         CHECK_STR_CONTAINS(lp->desc->summary, "IFS");
     }
@@ -294,7 +295,7 @@ TEST(bad_input_is_refused_clearly)
         {"dtm: x.tif\nheights: [[1, 2, 3], [1, 2, 3], [1, 2, 3]]", "give dtm or heights, not both"},
         {"step: 2", "step applies to a dtm file"},
         {"method: deterministic\niterations: 10", "iterations and start belong to method: random"},
-        {"refine: 1024", "the output grid would have 16385 x 16385 nodes"},
+        {"output_nodes: [20000, 20000]", "the output grid would have 20000 x 20000 nodes"},
         {"output_nodes: [100]", "output_nodes must be two whole numbers"},
         {"start: [100000, 0, 0]", "lies outside the DTM"},
         {"start: [0, 0]", "start has 2 numbers"},
@@ -479,7 +480,107 @@ TEST(site_places_and_warps_the_dtm)
     plugin_registry_free(reg);
 }
 
+/* Writes OUT_DIR/<name>.yaml: a 33 x 33 generated DTM 25 m apart seen from a camera at (x, y),
+ * with the terrain keys given. */
+static const char *lod_scene(const char *name, double x, double y, const char *keys)
+{
+    static char path[512];
+    snprintf(path, sizeof path, "%s/%s.yaml", OUT_DIR, name);
+    mkdir(OUT_DIR, 0755);
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (!f) return path;
+    fprintf(f, "image: {width: 16, height: 16, spp: 1, seed: 4}\n"
+               "camera: {position: [%g, %g, 150], look_at: [0, 0, 0]}\n"
+               "terrain:\n  plugin: terrain_ifs\n  threads: 2\n  refine: 8\n  alpha: 0.3\n"
+               "  generated: {nodes: [33, 33], relief: 120}\n  %s\n", x, y, keys);
+    fclose(f);
+    return path;
+}
+
+/* Levels of detail: around the camera the finest window equals the uniform refinement there
+ * (deterministic evaluation and random iteration alike), coarser rings follow at halving
+ * refine, the DTM's nodes stay as they are, and the levels meet without cracks: every vertical
+ * ray along and across each window's sides hits the terrain. */
+TEST(levels_of_detail_match_uniform_and_close)
+{
+    plugin_registry *reg = registry();
+    if (!reg) return;
+    static const char *const methods[2] = {"method: deterministic", "iterations: 2000000"};
+    for (int m = 0; m < 2; m++) {
+        char keys[160];
+        snprintf(keys, sizeof keys, "%s\n  detail_radius: 60", methods[m]);
+        err_buf err;
+        scene *lod = scene_from(lod_scene("lod_levels", 110, -40, keys), reg, &err);
+        scene *uni = scene_from(lod_scene("lod_uniform", 110, -40, methods[m]), reg, &err);
+        CHECK(lod && lod->terrain && uni && uni->terrain);
+        if (!lod || !uni) {
+            fprintf(stderr, "%s\n", err.msg);
+            scene_free(lod), scene_free(uni);
+            continue;
+        }
+        const sylva_heightfield *t = lod->terrain, *u = uni->terrain;
+        CHECK_INT(t->nx, 33);
+        CHECK_INT(u->nx, 257);
+        CHECK_INT(t->n_levels, 3); /* refine 2, 4, 8 */
+        uint32_t differ = 0, nodes_moved = 0;
+        for (uint32_t j = 0; j < 33; j++)
+            for (uint32_t i = 0; i < 33; i++) /* the DTM's nodes (bilinear maps pass through them) */
+                if (fabs(t->z[j * 33 + i] - u->z[(size_t)(8 * j) * 257 + 8 * i]) > 1e-3) nodes_moved++;
+        if (t->n_levels == 3) {
+            const sylva_terrain_level *f = &t->levels[2];
+            CHECK_INT(f->refine, 8);
+            CHECK(f->cells_x >= 4 && f->cells_x <= 6);
+            for (uint32_t j = 1; j + 1 < f->ny; j++)
+                for (uint32_t i = 1; i + 1 < f->nx; i++) /* inside the rim */
+                    if (f->z[(size_t)j * f->nx + i] != u->z[(size_t)(f->j0 * 8 + j) * 257 + f->i0 * 8 + i]) differ++;
+            for (uint32_t k = 1; k < 3; k++) { /* nested, strictly inside */
+                const sylva_terrain_level *c = &t->levels[k - 1], *l = &t->levels[k];
+                CHECK(l->i0 > c->i0 && l->j0 > c->j0 && l->i0 + l->cells_x < c->i0 + c->cells_x &&
+                      l->j0 + l->cells_y < c->j0 + c->cells_y);
+                CHECK_INT(l->refine, 2 * c->refine);
+            }
+        }
+        CHECK_INT(differ, 0);
+        if (m == 0) CHECK_INT(nodes_moved, 0);
+        /* no cracks: vertical rays on and across every window's sides */
+        accel a;
+        CHECK_INT(accel_build(&a, lod, 2, &err), 0);
+        uint32_t rays = 0, misses = 0;
+        for (uint32_t k = 0; k < t->n_levels; k++) {
+            const sylva_terrain_level *l = &t->levels[k];
+            double xs[2] = {t->x0 + l->i0 * t->dx, t->x0 + (l->i0 + l->cells_x) * t->dx};
+            double ys[2] = {t->y0 + l->j0 * t->dy, t->y0 + (l->j0 + l->cells_y) * t->dy};
+            for (int side = 0; side < 2; side++)
+                for (int q = 0; q <= 4000; q++) {
+                    double along = (double)q / 4000, off = ((q % 5) - 2) * 1e-4 * t->dx;
+                    double px[2] = {xs[side] + off, xs[0] + along * (xs[1] - xs[0])};
+                    double py[2] = {ys[0] + along * (ys[1] - ys[0]), ys[side] + off};
+                    for (int dir = 0; dir < 2; dir++) {
+                        struct RTCRayHit rh = {.ray = {.org_x = (float)px[dir], .org_y = (float)py[dir],
+                                                       .org_z = 1000, .dir_z = -1, .tfar = INFINITY,
+                                                       .mask = 0xffffffffu},
+                                               .hit = {.geomID = RTC_INVALID_GEOMETRY_ID,
+                                                       .instID = {RTC_INVALID_GEOMETRY_ID}}};
+                        struct RTCIntersectContext ic;
+                        rtcInitIntersectContext(&ic);
+                        rtcIntersect1(a.top, &ic, &rh);
+                        rays++;
+                        if (rh.hit.geomID != ACCEL_TOP_TERRAIN) misses++;
+                    }
+                }
+        }
+        fprintf(stderr, "%s: %u rays across the levels' sides, %u missed\n", methods[m], rays, misses);
+        CHECK(rays > 40000);
+        CHECK_INT(misses, 0);
+        accel_free(&a);
+        scene_free(lod), scene_free(uni);
+    }
+    plugin_registry_free(reg);
+}
+
 TEST_LIST(TEST_CASE(descriptor_and_schema),
+          TEST_CASE(levels_of_detail_match_uniform_and_close),
           TEST_CASE(site_places_and_warps_the_dtm),
           TEST_CASE(snow_and_scree_in_metres),
           TEST_CASE(inline_dtm_deterministic),

@@ -248,7 +248,12 @@ typedef struct sylva_heightfield {
     /* ---- ABI 1.2 (test with SYLVA_HAS_FIELD) ---- */
     uint32_t n_levels;    /* finer levels of detail over windows of the grid, coarse to fine */
     sylva_terrain_level *levels; /* n_levels, host-allocated; NULL when there are none */
+    int32_t beyond_edge;  /* SYLVA_EDGE_VOID: nothing past the grid's edge; SYLVA_EDGE_FLAT: the
+                             edge continued outward flat at its nodes' heights to the horizon */
 } sylva_heightfield;
+
+#define SYLVA_EDGE_VOID 0
+#define SYLVA_EDGE_FLAT 1
 
 /* A plant placed by an ecology plugin. */
 typedef struct sylva_plant {

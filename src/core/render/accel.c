@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "geometry/texture_lookup.h"
+#include "geometry/terrain_apron.h"
 #include "geometry/water_surface.h"
 #include "render/accel_terrain.h"
 
@@ -131,9 +132,18 @@ static int build_prototypes(accel *a, const scene *s, err_buf *err)
 static int build_top(accel *a, const scene *s, err_buf *err)
 {
     a->top = rtcNewScene(a->device);
+    /* robust traversal: a ray running exactly along the terrain's cell edges (a camera on a
+     * node line looking along it) would otherwise slip between the triangles */
+    if (a->top) rtcSetSceneFlags(a->top, RTC_SCENE_FLAG_ROBUST);
     if (!a->top) return accel_device_error(a, err) ? -1 : err_set(err, "Embree could not create a scene");
     if (s->terrain) {
-        if (accel_terrain_add(a, a->top, ACCEL_TOP_TERRAIN, err) || water_surface_build(s, &a->water_mesh, err))
+        double eye[3] = {s->camera.position[0], s->camera.position[1], s->camera.position[2]};
+        if (accel_terrain_add(a, a->top, ACCEL_TOP_TERRAIN, err) || water_surface_build(s, &a->water_mesh, err) ||
+            terrain_apron_build(s->terrain, s->terrain_material, terrain_apron_reach(s->terrain, eye),
+                                &a->apron_mesh, err))
+            return -1;
+        if (a->apron_mesh && add_part(a, a->top, a->apron_mesh, ACCEL_PART_OPAQUE, GEOM_TERRAIN, ACCEL_TOP_APRON,
+                                      &a->top_geoms[ACCEL_TOP_APRON], err))
             return -1;
         if (a->water_mesh && add_part(a, a->top, a->water_mesh, ACCEL_PART_OPAQUE, GEOM_WATER, ACCEL_TOP_WATER,
                                       &a->top_geoms[ACCEL_TOP_WATER], err))
@@ -207,6 +217,7 @@ void accel_free(accel *a)
     free(a->top_geoms);
     accel_terrain_free(a->terrain);
     mesh_free(a->water_mesh);
+    mesh_free(a->apron_mesh);
     if (a->device) rtcReleaseDevice(a->device);
     if (a->errors) pthread_mutex_destroy(&a->errors->lock);
     free(a->errors);
@@ -229,7 +240,7 @@ void accel_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h)
         h->species_id = s->prototypes[p].species + 1;
     } else {
         g = &a->top_geoms[rh->hit.geomID];
-        if (g->kind == GEOM_TERRAIN) {
+        if (g->terrain) {
             accel_terrain_shade(a, rh, h);
             return;
         }

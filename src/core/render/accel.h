@@ -30,12 +30,13 @@
 
 /* Geometry ids. A mesh's two parts sit at consecutive ids, opaque first:
  *   in a prototype's scene:  ACCEL_PART_OPAQUE (0) and ACCEL_PART_CUTOUT (1);
- *   in the top scene:        the terrain at ACCEL_TOP_TERRAIN (0; 1 stays empty), the water at
+ *   in the top scene:        the terrain at ACCEL_TOP_TERRAIN (0), the apron beyond its edge
+ *                            (geometry/terrain_apron.h) at ACCEL_TOP_APRON (1), the water at
  *                            ACCEL_TOP_WATER (2, opaque only), object o at
  *                            ACCEL_TOP_FIRST_OBJECT + 2 o + part (3 + 2 o, 4 + 2 o), and
  *                            instance i at first_instance + i, after the last object. */
 typedef enum accel_part { ACCEL_PART_OPAQUE = 0, ACCEL_PART_CUTOUT = 1, ACCEL_PARTS = 2 } accel_part;
-enum { ACCEL_TOP_TERRAIN = 0, ACCEL_TOP_WATER = 2, ACCEL_TOP_FIRST_OBJECT = 3 };
+enum { ACCEL_TOP_TERRAIN = 0, ACCEL_TOP_APRON = 1, ACCEL_TOP_WATER = 2, ACCEL_TOP_FIRST_OBJECT = 3 };
 
 static inline unsigned accel_top_object_id(uint32_t o, accel_part part)
 {
@@ -67,6 +68,7 @@ typedef struct accel {
     uint32_t first_instance;   /* top geomID of instance 0 */
     struct accel_terrain *terrain; /* the terrain's grid geometry (accel_terrain.h); owned */
     mesh *water_mesh;          /* owned */
+    mesh *apron_mesh;          /* the terrain beyond its edge, or NULL; owned */
     struct accel_errors *errors; /* what Embree's error callback recorded; owned */
     float bounds_lo[3], bounds_hi[3]; /* of the whole scene */
 } accel;

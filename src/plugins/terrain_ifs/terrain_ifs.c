@@ -772,6 +772,8 @@ static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_ho
         hf->water_level = s->water_z - s->z_shift;
     }
     if (s->classes && (rc = apply_surface(s, api, host, hf))) return rc;
+    if (SYLVA_HAS_FIELD(hf, sylva_heightfield, beyond_edge))
+        hf->beyond_edge = sylva_param_int(s->params, "beyond_edge") == 0 ? SYLVA_EDGE_FLAT : SYLVA_EDGE_VOID;
     o->terrain = hf;
     return SYLVA_OK;
 }

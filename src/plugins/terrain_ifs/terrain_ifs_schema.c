@@ -12,6 +12,7 @@ static const char *const mode_choices[] = {"bilinear", "affine", NULL};
 static const char *const method_choices[] = {"random", "deterministic", NULL};
 static const char *const units_choices[] = {"auto", "metres", "degrees", NULL};
 static const char *const surface_choices[] = {"classes", "scene", NULL};
+static const char *const beyond_edge_choices[] = {"flat", "void", NULL};
 
 static const double def_generated_nodes[] = {17, 17};
 static const double def_centre[] = {0, 0};
@@ -70,6 +71,9 @@ const sylva_param_spec terrain_ifs_params[] = {
      .help = "Factor on every DTM height (vertical exaggeration or a unit conversion)."},
     {.name = "z_offset", .type = SYLVA_P_REAL, .flags = RANGE, .def = 0, .min = -100000,
      .max = 100000, .unit = "m", .help = "Added to every DTM height after z_scale."},
+    {.name = "beyond_edge", .type = SYLVA_P_ENUM, .def_str = "flat", .choices = beyond_edge_choices,
+     .help = "flat: past the DTM's edge the ground goes on, flat at the edge's heights, to the "
+             "horizon; void: nothing past the edge (the sky shows under the horizon)."},
     {.name = "centre", .type = SYLVA_P_LIST, .def_list = def_centre, .def_len = 2, .min_len = 2,
      .max_len = 2, .unit = "m",
      .help = "Where the centre of the DTM's footprint stands in the scene, [x, y]."},

@@ -8,7 +8,7 @@
 
 #include "sylva/plugin.h"
 
-#define TERRAIN_IFS_N_PARAMS 43u
+#define TERRAIN_IFS_N_PARAMS 44u
 extern const sylva_param_spec terrain_ifs_params[TERRAIN_IFS_N_PARAMS];
 
 /* Defaults the plugin needs beside the schema. */

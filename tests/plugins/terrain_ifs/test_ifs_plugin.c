@@ -98,7 +98,7 @@ TEST(descriptor_and_schema)
     err_buf err;
     const loaded_plugin *lp = plugin_registry_find(reg, "terrain_ifs", SYLVA_KIND_TERRAIN, &err);
     if (lp) {
-        CHECK_INT(lp->desc->n_params, 43);
+        CHECK_INT(lp->desc->n_params, 44);
         CHECK(plugin_schema_check(lp->desc->params, lp->desc->n_params, &err) == 0);
         CHECK_STR_CONTAINS(lp->desc->summary, "IFS");
     }
@@ -579,7 +579,72 @@ TEST(levels_of_detail_match_uniform_and_close)
     plugin_registry_free(reg);
 }
 
+/* Rays from eye in every direction from 0.01 to about 60 degrees below the horizontal: how many
+ * miss everything (*rays: of how many). */
+static uint32_t sky_below_horizon(const accel *a, const double eye[3], uint32_t *rays)
+{
+    uint32_t misses = 0;
+    *rays = 0;
+    for (int az = 0; az < 360; az += 2)
+        for (int e = 0; e < 40; e++) {
+            double el = -0.01 * pow(1.25, e) * M_PI / 180; /* -0.01 to about -60 degrees */
+            double t = az * M_PI / 180;
+            struct RTCRayHit rh = {.ray = {.org_x = (float)eye[0], .org_y = (float)eye[1], .org_z = (float)eye[2],
+                                           .dir_x = (float)(cos(el) * cos(t)), .dir_y = (float)(cos(el) * sin(t)),
+                                           .dir_z = (float)sin(el), .tfar = INFINITY, .mask = 0xffffffffu},
+                                   .hit = {.geomID = RTC_INVALID_GEOMETRY_ID, .instID = {RTC_INVALID_GEOMETRY_ID}}};
+            struct RTCIntersectContext ic;
+            rtcInitIntersectContext(&ic);
+            rtcIntersect1(a->top, &ic, &rh);
+            (*rays)++;
+            if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) misses++;
+        }
+    return misses;
+}
+
+/* Beyond the DTM's edge the ground goes on: from a camera over a 800 m DTM (on its node lines,
+ * so some rays run exactly along cell edges), every ray below the horizontal, toward the edges
+ * and the corners, down to 0.01 degrees under the horizon, meets the ground; with beyond_edge:
+ * void the sky shows there (the old behaviour). */
+TEST(no_void_under_the_horizon)
+{
+    plugin_registry *reg = registry();
+    if (!reg) return;
+    for (int edge = 0; edge < 2; edge++) {
+        char path[512];
+        snprintf(path, sizeof path, "%s/apron_%d.yaml", OUT_DIR, edge);
+        mkdir(OUT_DIR, 0755);
+        FILE *f = fopen(path, "w");
+        CHECK(f != NULL);
+        if (!f) break;
+        fprintf(f, "image: {width: 16, height: 16, spp: 1}\n"
+                   "camera: {position: [100, 50, 160], look_at: [1000, 50, 160]}\n"
+                   "terrain:\n  plugin: terrain_ifs\n  method: deterministic\n  refine: 2\n"
+                   "  generated: {nodes: [33, 33], relief: 120}\n  beyond_edge: %s\n",
+                   edge ? "void" : "flat");
+        fclose(f);
+        err_buf err;
+        scene *s = scene_from(path, reg, &err);
+        CHECK(s && s->terrain);
+        if (!s) {
+            fprintf(stderr, "%s\n", err.msg);
+            continue;
+        }
+        accel a;
+        CHECK_INT(accel_build(&a, s, 2, &err), 0);
+        uint32_t rays, misses = sky_below_horizon(&a, s->camera.position, &rays);
+        fprintf(stderr, "beyond_edge %s: %u of %u rays under the horizon see the sky\n", edge ? "void" : "flat",
+                misses, rays);
+        if (edge) CHECK(misses > rays / 4);
+        else CHECK_INT(misses, 0);
+        accel_free(&a);
+        scene_free(s);
+    }
+    plugin_registry_free(reg);
+}
+
 TEST_LIST(TEST_CASE(descriptor_and_schema),
+          TEST_CASE(no_void_under_the_horizon),
           TEST_CASE(levels_of_detail_match_uniform_and_close),
           TEST_CASE(site_places_and_warps_the_dtm),
           TEST_CASE(snow_and_scree_in_metres),

@@ -62,17 +62,15 @@ static float coarse_on_side(const ifs_lod_window *c, const float *zc, const ifs_
 }
 
 void ifs_lod_pin_rim(const ifs_lod_window *coarse, const float *z_coarse, const ifs_lod_window *fine,
-                     float *z_fine, uint32_t ncx, uint32_t ncy)
+                     float *z_fine)
 {
     uint32_t nx = fine->cells_x * fine->refine + 1, ny = fine->cells_y * fine->refine + 1;
-    int south = fine->j0 > 0, north = fine->j0 + fine->cells_y < ncy;
-    int west = fine->i0 > 0, east = fine->i0 + fine->cells_x < ncx;
     for (uint32_t i = 0; i < nx; i++) {
-        if (south) z_fine[i] = coarse_on_side(coarse, z_coarse, fine, i, 0, 1);
-        if (north) z_fine[(size_t)(ny - 1) * nx + i] = coarse_on_side(coarse, z_coarse, fine, i, ny - 1, 1);
+        z_fine[i] = coarse_on_side(coarse, z_coarse, fine, i, 0, 1);
+        z_fine[(size_t)(ny - 1) * nx + i] = coarse_on_side(coarse, z_coarse, fine, i, ny - 1, 1);
     }
     for (uint32_t j = 0; j < ny; j++) {
-        if (west) z_fine[(size_t)j * nx] = coarse_on_side(coarse, z_coarse, fine, 0, j, 0);
-        if (east) z_fine[(size_t)j * nx + nx - 1] = coarse_on_side(coarse, z_coarse, fine, nx - 1, j, 0);
+        z_fine[(size_t)j * nx] = coarse_on_side(coarse, z_coarse, fine, 0, j, 0);
+        z_fine[(size_t)j * nx + nx - 1] = coarse_on_side(coarse, z_coarse, fine, nx - 1, j, 0);
     }
 }

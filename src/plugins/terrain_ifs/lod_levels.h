@@ -30,11 +30,12 @@ typedef struct ifs_lod_window {
 uint32_t ifs_lod_windows(uint32_t ncx, uint32_t ncy, uint32_t refine, double ex, double ey,
                          double radius, ifs_lod_window *w);
 
-/* Sets the nodes on the rim of level `fine` (its window's sides that are not the footprint's
- * edge) onto the surface of the coarser level `coarse` around it: linear along the side
- * between the coarser level's nodes. z_fine, z_coarse: their heights, row-major, row 0 south;
- * ncx, ncy: the DTM's cells. */
+/* Sets the nodes on the rim of level `fine` (its window's four sides) onto the surface of the
+ * coarser level `coarse` around it: linear along the side between the coarser level's nodes.
+ * A side on the footprint's edge is set too, so the footprint's edge is the same line at every
+ * level and the apron beyond it (geometry/terrain_apron.h) meets it there. z_fine, z_coarse:
+ * their heights, row-major, row 0 south. */
 void ifs_lod_pin_rim(const ifs_lod_window *coarse, const float *z_coarse, const ifs_lod_window *fine,
-                     float *z_fine, uint32_t ncx, uint32_t ncy);
+                     float *z_fine);
 
 #endif

@@ -661,7 +661,7 @@ static int refine_levels(const terrain_ifs_state *s, const ifs_maps *maps, uint3
         int rc = compute_heights(s, maps, depth, (d->nx - 1) * r + 1, (d->ny - 1) * r + 1, &win, api,
                                  host, l->z);
         if (rc) return rc;
-        ifs_lod_pin_rim(around, coarser, &w[k], l->z, d->nx - 1, d->ny - 1);
+        ifs_lod_pin_rim(around, coarser, &w[k], l->z);
         coarser = l->z, around = &w[k];
         /* the level pointer is the host's until the next level: heights are final here */
     }

@@ -603,7 +603,8 @@ static uint32_t sky_below_horizon(const accel *a, const double eye[3], uint32_t 
 }
 
 /* Beyond the DTM's edge the ground goes on: from a camera over a 800 m DTM (on its node lines,
- * so some rays run exactly along cell edges), every ray below the horizontal, toward the edges
+ * so some rays run exactly along cell edges; levels of detail reaching the DTM's edge, so the
+ * apron meets them there), every ray below the horizontal, toward the edges
  * and the corners, down to 0.01 degrees under the horizon, meets the ground; with beyond_edge:
  * void the sky shows there (the old behaviour). */
 TEST(no_void_under_the_horizon)
@@ -619,7 +620,8 @@ TEST(no_void_under_the_horizon)
         if (!f) break;
         fprintf(f, "image: {width: 16, height: 16, spp: 1}\n"
                    "camera: {position: [100, 50, 160], look_at: [1000, 50, 160]}\n"
-                   "terrain:\n  plugin: terrain_ifs\n  method: deterministic\n  refine: 2\n"
+                   "terrain:\n  plugin: terrain_ifs\n  method: deterministic\n  refine: 8\n"
+                   "  detail_radius: 100\n  alpha: 0.3\n"
                    "  generated: {nodes: [33, 33], relief: 120}\n  beyond_edge: %s\n",
                    edge ? "void" : "flat");
         fclose(f);
@@ -630,6 +632,8 @@ TEST(no_void_under_the_horizon)
             fprintf(stderr, "%s\n", err.msg);
             continue;
         }
+        CHECK_INT(s->terrain->n_levels, 3);
+        if (s->terrain->n_levels) CHECK_INT(s->terrain->levels[0].i0 + s->terrain->levels[0].cells_x, 32);
         accel a;
         CHECK_INT(accel_build(&a, s, 2, &err), 0);
         uint32_t rays, misses = sky_below_horizon(&a, s->camera.position, &rays);

@@ -78,6 +78,9 @@ static void terrain_cutout_filter(const struct RTCFilterFunctionNArguments *args
 /* 1 when a material the terrain uses is a cut-out. */
 static int terrain_has_cutouts(const scene *s)
 {
+    int any = 0;
+    for (uint32_t m = 0; m < s->n_materials && !any; m++) any = cutout_material(s, &s->materials[m]);
+    if (!any) return 0; /* no node to look at */
     const material *last = NULL;
     for (uint32_t gi = 0; gi < terrain_grid_count(s->terrain); gi++) {
         terrain_grid g = terrain_grid_of(s->terrain, gi);

@@ -19,9 +19,29 @@ double terrain_apron_reach(const sylva_heightfield *hf, const double eye[3])
     return fmin(reach, 5e7);
 }
 
+/* The material most of the edge cells have (the first of them on a tie; up to 64 different
+ * ones are counted, a later one is not). */
+static int32_t edge_material(const terrain_grid *g, int32_t fallback)
+{
+    int32_t id[64];
+    uint64_t count[64] = {0};
+    uint32_t n = 0, cx = g->nx - 1, cy = g->ny - 1, best = 0;
+    uint64_t cells = 2 * (uint64_t)(cx + cy);
+    for (uint64_t k = 0; k < cells; k++) { /* south, north, west, east */
+        uint32_t i = k < 2 * cx ? (uint32_t)(k % cx) : (k - 2 * cx < cy ? 0 : cx - 1);
+        uint32_t j = k < cx ? 0 : k < 2 * cx ? cy - 1 : (uint32_t)((k - 2 * cx) % cy);
+        int32_t m = terrain_triangle_material(g, terrain_triangle_of_cell(g, i, j, 0), fallback);
+        uint32_t q = 0;
+        while (q < n && id[q] != m) q++;
+        if (q == n && n < 64) id[n++] = m;
+        if (q < n && ++count[q] > count[best]) best = q;
+    }
+    return n ? id[best] : fallback;
+}
+
 /* One edge's strips: the n nodes along it (node k at grid node (i0 + k di, j0 + k dj)) moved by
  * (ox, oy); vertices from *v, triangles from *t. */
-static void edge_strips(const sylva_heightfield *hf, const terrain_grid *g, int32_t fallback, uint32_t i0,
+static void edge_strips(const sylva_heightfield *hf, const terrain_grid *g, int32_t material, uint32_t i0,
                         uint32_t j0, int di, int dj, uint32_t n, double ox, double oy, float *pos, uint32_t *tri,
                         int32_t *mat, uint32_t *v, uint32_t *t)
 {
@@ -35,16 +55,12 @@ static void edge_strips(const sylva_heightfield *hf, const terrain_grid *g, int3
     }
     for (uint32_t k = 0; k + 1 < n; k++) {
         uint32_t a = first + 2 * k, b = a + 2; /* inner k, inner k + 1; outer at + 1 */
-        /* the material of the edge cell this strip continues */
-        uint32_t i = i0 + (uint32_t)((int)k * di), j = j0 + (uint32_t)((int)k * dj);
-        uint32_t ci = i < hf->nx - 2 ? i : hf->nx - 2, cj = j < hf->ny - 2 ? j : hf->ny - 2;
-        int32_t m = terrain_triangle_material(g, terrain_triangle_of_cell(g, ci, cj, 0), fallback);
         /* wound so that the normal points up whichever edge (ox, oy) leaves */
         int flip = (di * oy - dj * ox) < 0;
         uint32_t q[6] = {a, b, a + 1, b, b + 1, a + 1};
         if (flip) q[1] = a + 1, q[2] = b, q[4] = a + 1, q[5] = b + 1;
         for (int c = 0; c < 6; c++) tri[(size_t)(*t) * 3 + c] = q[c];
-        mat[*t] = mat[*t + 1] = m;
+        mat[*t] = mat[*t + 1] = material;
         *t += 2;
     }
 }
@@ -65,12 +81,13 @@ int terrain_apron_build(const sylva_heightfield *hf, int32_t fallback, double re
         goto fail;
     }
     terrain_grid g = terrain_grid_of(hf, 0);
+    int32_t ground = edge_material(&g, fallback);
     uint32_t v = 0, t = 0;
     double d = reach;
-    edge_strips(hf, &g, fallback, 0, 0, 1, 0, nx, 0, -d, pos, tri, mat, &v, &t);           /* south */
-    edge_strips(hf, &g, fallback, 0, ny - 1, 1, 0, nx, 0, d, pos, tri, mat, &v, &t);      /* north */
-    edge_strips(hf, &g, fallback, 0, 0, 0, 1, ny, -d, 0, pos, tri, mat, &v, &t);          /* west */
-    edge_strips(hf, &g, fallback, nx - 1, 0, 0, 1, ny, d, 0, pos, tri, mat, &v, &t);      /* east */
+    edge_strips(hf, &g, ground, 0, 0, 1, 0, nx, 0, -d, pos, tri, mat, &v, &t);           /* south */
+    edge_strips(hf, &g, ground, 0, ny - 1, 1, 0, nx, 0, d, pos, tri, mat, &v, &t);      /* north */
+    edge_strips(hf, &g, ground, 0, 0, 0, 1, ny, -d, 0, pos, tri, mat, &v, &t);          /* west */
+    edge_strips(hf, &g, ground, nx - 1, 0, 0, 1, ny, d, 0, pos, tri, mat, &v, &t);      /* east */
     /* the corners: flat squares at the corner nodes' heights */
     const uint32_t ci[4] = {0, nx - 1, 0, nx - 1}, cj[4] = {0, 0, ny - 1, ny - 1};
     for (int c = 0; c < 4; c++) {
@@ -86,9 +103,7 @@ int terrain_apron_build(const sylva_heightfield *hf, int32_t fallback, double re
         uint32_t o[6] = {v, v + 1, v + 2, v, v + 2, v + 3};
         if (!up) o[1] = v + 2, o[2] = v + 1, o[4] = v + 3, o[5] = v + 2;
         for (int e = 0; e < 6; e++) tri[(size_t)t * 3 + e] = o[e];
-        int32_t mc = terrain_triangle_material(&g, terrain_triangle_of_cell(&g, ci[c] ? ci[c] - 1 : 0,
-                                                                            cj[c] ? cj[c] - 1 : 0, 0), fallback);
-        mat[t] = mat[t + 1] = mc;
+        mat[t] = mat[t + 1] = ground;
         v += 4, t += 2;
     }
     for (uint32_t k = 0; k < v; k++) nrm[k * 3] = 0, nrm[k * 3 + 1] = 0, nrm[k * 3 + 2] = 1;

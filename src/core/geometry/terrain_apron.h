@@ -7,7 +7,9 @@
  * Each edge cell's strip is the parallelogram of its two edge nodes and the same two moved
  * outward by the reach: planar, so one quad (two triangles) spans it whatever the reach. Its
  * inner vertices are the heightfield's own edge vertices (geometry/terrain_mesh.h), so terrain
- * and apron share their seam. Materials are those of the edge cells; normals point straight up.
+ * and apron share their seam. The whole apron takes the material most of the edge cells have
+ * (ground cover continued as one plain, not as stripes of each edge cell's cover to the
+ * horizon); normals point straight up.
  * A heightfield asks for it with beyond_edge (sylva_heightfield, ABI 1.2).
  */
 #ifndef SYLVA_TERRAIN_APRON_H

@@ -213,6 +213,25 @@ typedef struct sylva_material_desc {
 /* An opaque triangle mesh owned by the host. */
 typedef struct sylva_mesh sylva_mesh;
 
+/* A finer level of detail over a window of a heightfield (ABI 1.2), owned by the host
+ * (api->heightfield_level_new). Its node (i, j) sits at (x0 + (i0 + i / refine) dx,
+ * y0 + (j0 + j / refine) dy) of the heightfield with height z[j * nx + i]. Over its window a
+ * level replaces the coarser ones: the terrain is the heightfield outside the first level's
+ * window, level k inside its window and outside level k + 1's. The levels nest (each window
+ * inside the one before, refine a multiple of the one before), and where a window's side is
+ * not the heightfield's edge, that side lies strictly inside the coarser window and its nodes
+ * lie on the coarser level's surface (linear between the coarser nodes along the side), so the
+ * levels meet without cracks. */
+typedef struct sylva_terrain_level {
+    uint32_t size;          /* sizeof(sylva_terrain_level) */
+    uint32_t i0, j0;        /* the window's south-west node, in heightfield nodes */
+    uint32_t cells_x, cells_y; /* the window's size in heightfield cells, >= 1 each */
+    uint32_t refine;        /* nodes per heightfield cell along each axis, >= 2 */
+    uint32_t nx, ny;        /* cells_x refine + 1 and cells_y refine + 1 */
+    float *z;               /* nx * ny heights, metres; host-allocated */
+    int32_t *material;      /* NULL, or nx * ny material ids as the heightfield's */
+} sylva_terrain_level;
+
 /* A regular grid of heights, owned by the host. Node (i, j) sits at (x0 + i dx, y0 + j dy) with
  * height z[j * nx + i]. */
 typedef struct sylva_heightfield {
@@ -226,7 +245,15 @@ typedef struct sylva_heightfield {
     int has_water;        /* 1: a water surface at water_level */
     double water_level;   /* metres */
     int32_t water_material; /* material of the water surface, or -1 for the host's default */
+    /* ---- ABI 1.2 (test with SYLVA_HAS_FIELD) ---- */
+    uint32_t n_levels;    /* finer levels of detail over windows of the grid, coarse to fine */
+    sylva_terrain_level *levels; /* n_levels, host-allocated; NULL when there are none */
+    int32_t beyond_edge;  /* SYLVA_EDGE_VOID: nothing past the grid's edge; SYLVA_EDGE_FLAT: the
+                             edge continued outward flat at its nodes' heights to the horizon */
 } sylva_heightfield;
+
+#define SYLVA_EDGE_VOID 0
+#define SYLVA_EDGE_FLAT 1
 
 /* A plant placed by an ecology plugin. */
 typedef struct sylva_plant {
@@ -318,13 +345,32 @@ typedef struct sylva_host_api {
      * plugin's mistake: NULL, with the plugin's error set to a sentence naming the parameter
      * and the parameters the schema has (return SYLVA_ERR_INTERNAL then). */
     const sylva_value *(*param)(sylva_host *, const sylva_params *, const char *name);
+
+    /* ---- ABI 1.2 ---- */
+
+    /* Whether `bytes` of the plugin's own memory plus a heightfield of `heightfield_nodes` nodes
+     * (which the host then holds and renders at its own cost per node, docs/rendering.md) fit
+     * this run's memory budget: the machine's memory, or SYLVA_MEMORY_LIMIT. Returns SYLVA_OK,
+     * or SYLVA_ERR_LIMIT with the error set to a sentence that starts with `what` (the work,
+     * e.g. "the 10000 x 10000 DTM 'x.tif'") and gives both sizes. Ask before allocating. */
+    int (*memory_check)(sylva_host *, uint64_t bytes, uint64_t heightfield_nodes, const char *what);
+
+    /* Appends a level of detail to hf (from heightfield_new) over cells [i0, i0 + cells_x) x
+     * [j0, j0 + cells_y) with `refine` nodes per cell, its heights zero and its materials -1
+     * (with_material), after checking it against hf and the previous level (see
+     * sylva_terrain_level: inside the previous window, strictly inside where not at the edge,
+     * refine a multiple of the previous one) and the memory budget. The pointer stays valid
+     * until the next call on hf; NULL with the error set on failure. */
+    sylva_terrain_level *(*heightfield_level_new)(sylva_host *, sylva_heightfield *hf, uint32_t i0,
+                                                  uint32_t j0, uint32_t cells_x, uint32_t cells_y,
+                                                  uint32_t refine, int with_material);
 } sylva_host_api;
 
 /* The host table's size in each minor version: a table at least this long holds every
  * function of that version. */
 #define SYLVA_HOST_API_SIZE_1_0 SYLVA_FIELD_END(sylva_host_api, resolve_path)
 #define SYLVA_HOST_API_SIZE_1_1 SYLVA_FIELD_END(sylva_host_api, param)
-#define SYLVA_HOST_API_SIZE_1_2 SYLVA_HOST_API_SIZE_1_1 /* 1.2 appended to the terrain request only */
+#define SYLVA_HOST_API_SIZE_1_2 SYLVA_FIELD_END(sylva_host_api, heightfield_level_new)
 
 /* 1 when the host that passed `api` offers function `member` (its table reaches that far and
  * the entry is set), e.g. `if (SYLVA_API_HAS(api, mem_alloc)) ...`. */

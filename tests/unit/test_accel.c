@@ -7,7 +7,9 @@
 #include <string.h>
 
 #include "harness.h"
+#include "geometry/terrain_mesh.h"
 #include "render/accel.h"
+#include "render/accel_terrain.h"
 
 static void add_quad(mesh *m, float x0, float y0, float x1, float y1, float z, err_buf *err)
 {
@@ -131,4 +133,97 @@ TEST(embree_errors_recorded_and_reported_by_the_caller)
     scene_free(s);
 }
 
-TEST_LIST(TEST_CASE(geometry_id_layout), TEST_CASE(embree_errors_recorded_and_reported_by_the_caller))
+/* A rough nx x ny terrain 2 m x 3 m a cell, two materials in a checkerboard of nodes. */
+static scene *rough_terrain(uint32_t nx, uint32_t ny)
+{
+    err_buf err;
+    scene *s = scene_new();
+    sylva_heightfield *hf = calloc(1, sizeof *hf);
+    float *z = malloc((size_t)nx * ny * sizeof *z);
+    int32_t *mat = malloc((size_t)nx * ny * sizeof *mat);
+    if (!s || !hf || !z || !mat) {
+        scene_free(s), free(hf), free(z), free(mat);
+        return NULL;
+    }
+    *hf = (sylva_heightfield){.nx = nx, .ny = ny, .x0 = -7, .y0 = 11, .dx = 2, .dy = 3, .z = z,
+                              .material = mat, .water_material = -1};
+    for (uint32_t j = 0; j < ny; j++)
+        for (uint32_t i = 0; i < nx; i++) {
+            z[(size_t)j * nx + i] = (float)(5 * sin(i * 0.7) + 4 * cos(j * 1.3) + ((i * 31 + j * 17) % 7));
+            mat[(size_t)j * nx + i] = (int32_t)((i + j) % 2);
+        }
+    s->terrain = hf;
+    sylva_material_desc m = {.size = sizeof m, .name = "a", .bsdf = SYLVA_BSDF_LAMBERT, .texture = -1};
+    CHECK(scene_add_material(s, &m, &err) >= 0);
+    m.name = "b";
+    CHECK(scene_add_material(s, &m, &err) >= 0);
+    return s;
+}
+
+/* The terrain's grid geometry shows the tessellation every back end draws: a vertical ray
+ * through any point hits the height of terrain_mesh's triangle there, with its material and
+ * its normal, also past the first grid tile (a terrain wider than ACCEL_TERRAIN_TILE cells). */
+TEST(terrain_grid_matches_the_tessellation)
+{
+    const uint32_t sizes[2][2] = {{9, 7}, {ACCEL_TERRAIN_TILE + 40, 3}};
+    for (int c = 0; c < 2; c++) {
+        scene *s = rough_terrain(sizes[c][0], sizes[c][1]);
+        if (!s) {
+            CHECK(0);
+            return;
+        }
+        const sylva_heightfield *hf = s->terrain;
+        accel a;
+        err_buf err;
+        CHECK_INT(accel_build(&a, s, 1, &err), 0);
+        uint32_t misses = 0, wrong = 0;
+        uint64_t rng = 12345;
+        for (int k = 0; k < 4000; k++) {
+            rng = rng * 6364136223846793005ull + 1442695040888963407ull;
+            double fu = (double)(rng >> 11) / 9007199254740992.0;
+            rng = rng * 6364136223846793005ull + 1442695040888963407ull;
+            double fv = (double)(rng >> 11) / 9007199254740992.0;
+            /* near the far east end half of the time on the wide terrain */
+            double gx = (c && k % 2) ? hf->nx - 1 - 60 * fu : fu * (hf->nx - 1), gy = fv * (hf->ny - 1);
+            /* the ray's own (single-precision) position, and the cell it falls in */
+            double x = (float)(hf->x0 + gx * hf->dx), y = (float)(hf->y0 + gy * hf->dy);
+            gx = (x - hf->x0) / hf->dx, gy = (y - hf->y0) / hf->dy;
+            uint32_t i = (uint32_t)gx, j = (uint32_t)gy;
+            double fx = gx - i, fy = gy - j;
+            if (fabs(fx - fy) < 1e-3 || fx < 1e-3 || fy < 1e-3 || fx > 1 - 1e-3 || fy > 1 - 1e-3)
+                continue; /* on a cell's edge or diagonal: either triangle */
+            terrain_grid g = terrain_grid_of(hf, 0);
+            uint32_t t = terrain_triangle_of_cell(&g, i, j, fy > fx), n[3];
+            terrain_triangle_nodes(&g, t, n);
+            float p[3][3];
+            for (int q = 0; q < 3; q++) terrain_node_vertex(&g, n[q] % hf->nx, n[q] / hf->nx, p[q], NULL, NULL);
+            /* the plane through the triangle at (x, y) */
+            double e1[3], e2[3];
+            for (int q = 0; q < 3; q++) e1[q] = p[1][q] - p[0][q], e2[q] = p[2][q] - p[0][q];
+            double nz = e1[0] * e2[1] - e1[1] * e2[0], nxp = e1[1] * e2[2] - e1[2] * e2[1];
+            double nyp = e1[2] * e2[0] - e1[0] * e2[2];
+            double zt = p[0][2] - (nxp * (x - p[0][0]) + nyp * (y - p[0][1])) / nz;
+            struct RTCRayHit rh = cast(&a, (float)x, (float)y, 100, -1);
+            if (rh.hit.geomID != ACCEL_TOP_TERRAIN) {
+                misses++;
+                continue;
+            }
+            hit_info h;
+            accel_shade(&a, &rh, &h);
+            uint32_t want = (uint32_t)terrain_triangle_material(&g, t, s->terrain_material);
+            if (fabs(h.p.z - zt) > 1e-3 || h.mat != &s->materials[want] || h.kind != GEOM_TERRAIN ||
+                fabs(h.ng.z * sqrt(nz * nz + nxp * nxp + nyp * nyp) - nz) > 1e-4 * fabs(nz)) {
+                if (wrong++ < 5)
+                    fprintf(stderr, "  (%g, %g): z %g, want %g; material %td, want %u\n", x, y, h.p.z, zt,
+                            h.mat - s->materials, want);
+            }
+        }
+        CHECK_INT(misses, 0);
+        CHECK_INT(wrong, 0);
+        accel_free(&a);
+        scene_free(s);
+    }
+}
+
+TEST_LIST(TEST_CASE(geometry_id_layout), TEST_CASE(embree_errors_recorded_and_reported_by_the_caller),
+          TEST_CASE(terrain_grid_matches_the_tessellation))

@@ -3,6 +3,7 @@
  * scene (a back end never reaches into another's internals for it):
  *
  *   terrain_mesh.h    the terrain heightfield as triangles, normals, uvs and materials
+ *   terrain_apron.h   the terrain continued beyond its edge, flat, to the horizon
  *   water_surface.h   the water over the terrain: its rectangle and its mesh
  *   cutout.h          alpha cut-outs: which materials and triangles, the alpha test, the split
  *                     of a mesh into opaque and cut-out triangles
@@ -22,6 +23,7 @@
 #include "geometry/cutout.h"
 #include "geometry/light_summary.h"
 #include "geometry/sky_preetham.h"
+#include "geometry/terrain_apron.h"
 #include "geometry/terrain_mesh.h"
 #include "geometry/texture_lookup.h"
 #include "geometry/water_surface.h"

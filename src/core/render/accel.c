@@ -7,9 +7,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "geometry/terrain_mesh.h"
 #include "geometry/texture_lookup.h"
+#include "geometry/terrain_apron.h"
 #include "geometry/water_surface.h"
+#include "render/accel_terrain.h"
 
 /* --- Embree's errors --------------------------------------------------------------------- */
 
@@ -165,12 +166,18 @@ static int add_instance(accel *a, RTCScene sc, const xform3x4 *xf, unsigned id, 
 static int build_top(accel *a, const scene *s, err_buf *err)
 {
     a->top = rtcNewScene(a->device);
+    /* robust traversal: a ray running exactly along the terrain's cell edges (a camera on a
+     * node line looking along it) would otherwise slip between the triangles */
+    if (a->top) rtcSetSceneFlags(a->top, RTC_SCENE_FLAG_ROBUST);
     if (!a->top) return accel_device_error(a, err) ? -1 : err_set(err, "Embree could not create a scene");
     if (s->terrain) {
-        a->terrain_mesh = terrain_mesh_build(s->terrain, s->terrain_material, err);
-        if (!a->terrain_mesh ||
-            add_mesh(a, a->top, a->terrain_mesh, GEOM_TERRAIN, ACCEL_TOP_TERRAIN, &a->top_geoms[ACCEL_TOP_TERRAIN], err) ||
-            water_surface_build(s, &a->water_mesh, err))
+        double eye[3] = {s->camera.position[0], s->camera.position[1], s->camera.position[2]};
+        if (accel_terrain_add(a, a->top, ACCEL_TOP_TERRAIN, err) || water_surface_build(s, &a->water_mesh, err) ||
+            terrain_apron_build(s->terrain, s->terrain_material, terrain_apron_reach(s->terrain, eye),
+                                &a->apron_mesh, err))
+            return -1;
+        if (a->apron_mesh && add_part(a, a->top, a->apron_mesh, ACCEL_PART_OPAQUE, GEOM_TERRAIN, ACCEL_TOP_APRON,
+                                      &a->top_geoms[ACCEL_TOP_APRON], err))
             return -1;
         if (a->water_mesh && add_part(a, a->top, a->water_mesh, ACCEL_PART_OPAQUE, GEOM_WATER, ACCEL_TOP_WATER,
                                       &a->top_geoms[ACCEL_TOP_WATER], err))
@@ -248,8 +255,9 @@ void accel_free(accel *a)
     free(a->model_scenes);
     free(a->model_geoms);
     free(a->top_geoms);
-    mesh_free(a->terrain_mesh);
+    accel_terrain_free(a->terrain);
     mesh_free(a->water_mesh);
+    mesh_free(a->apron_mesh);
     if (a->device) rtcReleaseDevice(a->device);
     if (a->errors) pthread_mutex_destroy(&a->errors->lock);
     free(a->errors);
@@ -276,6 +284,10 @@ void accel_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h)
         h->species_id = s->prototypes[p].species + 1;
     } else {
         g = &a->top_geoms[rh->hit.geomID];
+        if (g->terrain) {
+            accel_terrain_shade(a, rh, h);
+            return;
+        }
     }
     const mesh *m = g->mesh;
     uint32_t t = g->part.to_mesh[rh->hit.primID];

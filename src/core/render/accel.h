@@ -1,8 +1,9 @@
 /* accel.h — the scene in Embree 3: one BVH (RTCScene) per prototype and per shared object
  * model, every plant instance and every object that places a model a single-level instance of
- * that BVH in the top scene, and the terrain, the water surface and the other objects (their
- * own meshes) as plain meshes in the top scene, as the scene geometry builds them
- * (geometry/terrain_mesh.h, geometry/water_surface.h). Each mesh enters as two geometries, its
+ * that BVH in the top scene, the water surface and the other objects (their own meshes) as
+ * plain meshes in the top scene, as the scene geometry builds them (geometry/water_surface.h),
+ * and the terrain as grid geometry over its heightfield (render/accel_terrain.h). Each mesh
+ * enters as two geometries, its
  * opaque triangles and its cut-out triangles (geometry/cutout.h); the cut-out ones carry
  * intersection and occlusion filters that discard hits where the texture's alpha is below one
  * half.
@@ -16,7 +17,7 @@
  * accel_build, and from accel_device_error after tracing.
  *
  * Ownership: an accel borrows the scene (which must outlive it) and owns the Embree device and
- * scenes, the terrain and water meshes it builds, the triangle parts and the error record.
+ * scenes, the terrain's vertices and the water mesh it builds, the triangle parts and the error record.
  */
 #ifndef SYLVA_ACCEL_H
 #define SYLVA_ACCEL_H
@@ -30,14 +31,15 @@
 
 /* Geometry ids. A mesh's two parts sit at consecutive ids, opaque first:
  *   in a prototype's scene:  ACCEL_PART_OPAQUE (0) and ACCEL_PART_CUTOUT (1);
- *   in the top scene:        the terrain at ACCEL_TOP_TERRAIN + part (0, 1), the water at
+ *   in the top scene:        the terrain at ACCEL_TOP_TERRAIN (0), the apron beyond its edge
+ *                            (geometry/terrain_apron.h) at ACCEL_TOP_APRON (1), the water at
  *                            ACCEL_TOP_WATER (2, opaque only), object o at
  *                            ACCEL_TOP_FIRST_OBJECT + 2 o + part (3 + 2 o, 4 + 2 o), or, when
  *                            it places a model, the instance of the model's BVH at 3 + 2 o
  *                            (whose own geometries are parts 0 and 1), and plant instance i
  *                            at first_instance + i, after the last object. */
 typedef enum accel_part { ACCEL_PART_OPAQUE = 0, ACCEL_PART_CUTOUT = 1, ACCEL_PARTS = 2 } accel_part;
-enum { ACCEL_TOP_TERRAIN = 0, ACCEL_TOP_WATER = 2, ACCEL_TOP_FIRST_OBJECT = 3 };
+enum { ACCEL_TOP_TERRAIN = 0, ACCEL_TOP_APRON = 1, ACCEL_TOP_WATER = 2, ACCEL_TOP_FIRST_OBJECT = 3 };
 
 static inline unsigned accel_top_object_id(uint32_t o, accel_part part)
 {
@@ -48,13 +50,15 @@ typedef enum geom_kind { GEOM_TERRAIN = 1, GEOM_WATER, GEOM_OBJECT, GEOM_PROTOTY
 
 typedef struct geom_info {
     geom_kind kind;
-    const mesh *mesh;          /* shading source */
+    const mesh *mesh;          /* shading source; NULL for the terrain (its heightfield is) */
     cutout_part part;          /* the mesh's triangles in this geometry (Embree's primIDs); owned */
     const scene *scene;        /* for materials and textures in the filter */
+    const struct accel_terrain *terrain; /* the terrain's tiles (GEOM_TERRAIN only) */
     int alpha;                 /* 1: the cut-out part, filtered by texture alpha */
 } geom_info;
 
 struct accel_errors;
+struct accel_terrain;
 
 typedef struct accel {
     RTCDevice device;
@@ -67,8 +71,9 @@ typedef struct accel {
     geom_info *top_geoms;      /* per top-level non-instance geometry id; owned */
     uint32_t n_top_geoms;
     uint32_t first_instance;   /* top geomID of instance 0 */
-    mesh *terrain_mesh;        /* owned */
+    struct accel_terrain *terrain; /* the terrain's grid geometry (accel_terrain.h); owned */
     mesh *water_mesh;          /* owned */
+    mesh *apron_mesh;          /* the terrain beyond its edge, or NULL; owned */
     struct accel_errors *errors; /* what Embree's error callback recorded; owned */
     float bounds_lo[3], bounds_hi[3]; /* of the whole scene */
 } accel;

@@ -3,6 +3,38 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <stdlib.h>
+
+void heightfield_free(sylva_heightfield *h)
+{
+    if (!h) return;
+    for (uint32_t k = 0; k < h->n_levels; k++) free(h->levels[k].z), free(h->levels[k].material);
+    free(h->levels), free(h->z), free(h->material), free(h);
+}
+
+sylva_heightfield heightfield_level_view(const sylva_heightfield *h, uint32_t k)
+{
+    const sylva_terrain_level *l = &h->levels[k];
+    return (sylva_heightfield){.size = sizeof(sylva_heightfield), .nx = l->nx, .ny = l->ny,
+                               .x0 = h->x0 + l->i0 * h->dx, .y0 = h->y0 + l->j0 * h->dy,
+                               .dx = h->dx / l->refine, .dy = h->dy / l->refine, .z = l->z,
+                               .material = l->material};
+}
+
+/* The finest grid holding (x, y): h, or a level's view in *view. */
+static const sylva_heightfield *finest_at(const sylva_heightfield *h, double x, double y,
+                                          sylva_heightfield *view)
+{
+    for (uint32_t k = h->n_levels; k-- > 0;) {
+        const sylva_terrain_level *l = &h->levels[k];
+        double gx = (x - h->x0) / h->dx - l->i0, gy = (y - h->y0) / h->dy - l->j0;
+        if (gx >= 0 && gy >= 0 && gx <= l->cells_x && gy <= l->cells_y) {
+            *view = heightfield_level_view(h, k);
+            return view;
+        }
+    }
+    return h;
+}
 
 /* The cell (i, j) of a point at grid coordinates (gx, gy) inside the grid, and its fractions
  * (fx, fy) within the cell. */
@@ -38,6 +70,8 @@ static double bilinear(const sylva_heightfield *h, cell c)
 
 int heightfield_height(const sylva_heightfield *h, double x, double y, double *z)
 {
+    sylva_heightfield view;
+    h = finest_at(h, x, y, &view);
     cell c;
     if (cell_of(h, x, y, &c)) return -1;
     *z = bilinear(h, c);
@@ -59,6 +93,8 @@ int heightfield_surface_height(const sylva_heightfield *h, double x, double y, d
 
 double heightfield_height_clamped(const sylva_heightfield *h, double x, double y)
 {
+    sylva_heightfield view;
+    h = finest_at(h, x, y, &view);
     double gx = (x - h->x0) / h->dx, gy = (y - h->y0) / h->dy;
     double mx = h->nx - 1, my = h->ny - 1;
     gx = gx < 0 ? 0 : gx > mx ? mx : gx;
@@ -68,6 +104,8 @@ double heightfield_height_clamped(const sylva_heightfield *h, double x, double y
 
 int heightfield_normal(const sylva_heightfield *h, double x, double y, double n[3])
 {
+    sylva_heightfield view;
+    h = finest_at(h, x, y, &view);
     cell c;
     if (cell_of(h, x, y, &c)) return -1;
     const float *r0 = h->z + (size_t)c.j * h->nx, *r1 = r0 + h->nx;

@@ -4,12 +4,25 @@
  * the scene geometry and the ecology maps all ask here.
  *
  * Node (i, j) stands at (x0 + i dx, y0 + j dy) with height z[j nx + i]; a point on the
- * heightfield's last row or column belongs to the cell before it. Nothing is allocated.
+ * heightfield's last row or column belongs to the cell before it. Where levels of detail cover
+ * a point (sylva_terrain_level), the finest of them answers. Nothing is allocated.
  */
 #ifndef SYLVA_HEIGHTFIELD_H
 #define SYLVA_HEIGHTFIELD_H
 
 #include "sylva/plugin.h"
+
+/* What one heightfield node costs the host from the plugin's hands to the first pixel: 4 bytes
+ * of height and 4 of material id in the heightfield, and 32 in the renderer (a 12-byte grid
+ * vertex and Embree's grid BVH at the peak of its build, render/accel_terrain.h). */
+#define HEIGHTFIELD_NODE_BYTES 8u
+#define HEIGHTFIELD_RENDER_NODE_BYTES 32u
+
+/* Frees a heightfield the host made, its arrays and its levels; accepts NULL. */
+void heightfield_free(sylva_heightfield *h);
+
+/* Level k of h as a heightfield of its own (x0, y0, dx, dy of its nodes; no levels). */
+sylva_heightfield heightfield_level_view(const sylva_heightfield *h, uint32_t k);
 
 /* Height at (x, y) into *z; returns 0, or -1 (z untouched) when (x, y) lies outside the
  * heightfield's nodes (or is not a number). */

@@ -8,7 +8,9 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "scene/heightfield.h"
 #include "util/file_check.h"
+#include "util/memory_budget.h"
 #include "util/rng.h"
 
 void host_init(sylva_host *h, scene *sc, const char *scene_dir, uint64_t seed, const char *context,
@@ -156,6 +158,18 @@ static int32_t host_material_new(sylva_host *h, const sylva_material_desc *d)
     return id < 0 ? host_pass_on(h, &e) : id;
 }
 
+static int host_memory_check(sylva_host *h, uint64_t bytes, uint64_t heightfield_nodes, const char *what)
+{
+    const uint64_t per_node = HEIGHTFIELD_NODE_BYTES + HEIGHTFIELD_RENDER_NODE_BYTES;
+    err_buf e;
+    if (heightfield_nodes > UINT64_MAX / per_node || bytes > UINT64_MAX - heightfield_nodes * per_node)
+        bytes = UINT64_MAX;
+    else bytes += heightfield_nodes * per_node;
+    if (!memory_check(bytes, what ? what : "the plugin's work", &e)) return SYLVA_OK;
+    host_error(h, "%s", e.msg);
+    return SYLVA_ERR_LIMIT;
+}
+
 static sylva_heightfield *host_heightfield_new(sylva_host *h, uint32_t nx, uint32_t ny, int with_material)
 {
     if (h->kind && h->kind != SYLVA_KIND_TERRAIN) {
@@ -168,6 +182,9 @@ static sylva_heightfield *host_heightfield_new(sylva_host *h, uint32_t nx, uint3
                    "most 2^28 nodes", nx, ny);
         return NULL;
     }
+    char what[96];
+    snprintf(what, sizeof what, "a terrain of %u x %u nodes", nx, ny);
+    if (host_memory_check(h, 0, (uint64_t)nx * ny, what)) return NULL;
     sylva_heightfield *hf = calloc(1, sizeof *hf);
     float *z = calloc((size_t)nx * ny, sizeof(float));
     int32_t *mat = with_material ? malloc((size_t)nx * ny * sizeof(int32_t)) : NULL;
@@ -180,11 +197,71 @@ static sylva_heightfield *host_heightfield_new(sylva_host *h, uint32_t nx, uint3
     *hf = (sylva_heightfield){.size = sizeof *hf, .nx = nx, .ny = ny, .dx = 1, .dy = 1, .z = z,
                               .material = mat, .water_material = -1};
     /* The scene takes it now, so a failing plugin leaks nothing. */
-    if (h->scene->terrain) {
-        free(h->scene->terrain->z), free(h->scene->terrain->material), free(h->scene->terrain);
-    }
+    heightfield_free(h->scene->terrain);
     h->scene->terrain = hf;
     return hf;
+}
+
+/* Checks a new level's window against hf and its last level (sylva_terrain_level's rules). */
+static int level_window_ok(sylva_host *h, const sylva_heightfield *hf, uint32_t i0, uint32_t j0,
+                           uint32_t cx, uint32_t cy, uint32_t refine)
+{
+    uint64_t i1 = (uint64_t)i0 + cx, j1 = (uint64_t)j0 + cy;
+    if (!cx || !cy || i1 > hf->nx - 1 || j1 > hf->ny - 1 || refine < 2 || refine > 4096)
+        return host_error(h, "level of detail over cells [%u, %llu) x [%u, %llu) with refine %u: "
+                          "the window must hold at least one of the heightfield's %u x %u cells "
+                          "and refine must be 2 to 4096", i0, (unsigned long long)i1, j0,
+                          (unsigned long long)j1, refine, hf->nx - 1, hf->ny - 1);
+    if (!hf->n_levels) return SYLVA_OK;
+    const sylva_terrain_level *p = &hf->levels[hf->n_levels - 1];
+    uint64_t pi1 = (uint64_t)p->i0 + p->cells_x, pj1 = (uint64_t)p->j0 + p->cells_y;
+    int inside = i0 >= p->i0 && j0 >= p->j0 && i1 <= pi1 && j1 <= pj1 && refine % p->refine == 0 &&
+                 refine > p->refine;
+    /* a side strictly inside, or both on the heightfield's edge */
+    int sides = (i0 > p->i0 || i0 == 0) && (j0 > p->j0 || j0 == 0) &&
+                (i1 < pi1 || i1 == hf->nx - 1) && (j1 < pj1 || j1 == hf->ny - 1);
+    if (inside && sides) return SYLVA_OK;
+    return host_error(h, "level of detail over cells [%u, %llu) x [%u, %llu) with refine %u does not "
+                      "nest in the level before it, cells [%u, %llu) x [%u, %llu) with refine %u: "
+                      "it must lie inside it, strictly where not at the heightfield's edge, with a "
+                      "larger refine that is a multiple of it", i0, (unsigned long long)i1, j0,
+                      (unsigned long long)j1, refine, p->i0, (unsigned long long)pi1, p->j0,
+                      (unsigned long long)pj1, p->refine);
+}
+
+static sylva_terrain_level *host_heightfield_level_new(sylva_host *h, sylva_heightfield *hf, uint32_t i0,
+                                                       uint32_t j0, uint32_t cells_x, uint32_t cells_y,
+                                                       uint32_t refine, int with_material)
+{
+    if (!hf || hf != h->scene->terrain) {
+        host_error(h, "heightfield_level_new: the heightfield is not the one heightfield_new made");
+        return NULL;
+    }
+    if (level_window_ok(h, hf, i0, j0, cells_x, cells_y, refine)) return NULL;
+    uint64_t nx = (uint64_t)cells_x * refine + 1, ny = (uint64_t)cells_y * refine + 1;
+    char what[128];
+    snprintf(what, sizeof what, "a terrain level of detail of %llu x %llu nodes", (unsigned long long)nx,
+             (unsigned long long)ny);
+    if (nx > 65536 || ny > 65536 || nx * ny > (1ull << 28)) {
+        host_error(h, "%s: each side must be at most 65536 and the total at most 2^28 nodes", what);
+        return NULL;
+    }
+    if (host_memory_check(h, 0, nx * ny, what)) return NULL;
+    sylva_terrain_level *grown = realloc(hf->levels, (hf->n_levels + 1) * sizeof *grown);
+    float *z = calloc(nx * ny, sizeof(float));
+    int32_t *mat = with_material ? malloc(nx * ny * sizeof(int32_t)) : NULL;
+    if (grown) hf->levels = grown;
+    if (!grown || !z || (with_material && !mat)) {
+        free(z), free(mat);
+        host_out_of_memory(h, "out of memory for %s", what);
+        return NULL;
+    }
+    for (size_t i = 0; mat && i < nx * ny; i++) mat[i] = -1;
+    sylva_terrain_level *l = &hf->levels[hf->n_levels++];
+    *l = (sylva_terrain_level){.size = sizeof *l, .i0 = i0, .j0 = j0, .cells_x = cells_x,
+                               .cells_y = cells_y, .refine = refine, .nx = (uint32_t)nx,
+                               .ny = (uint32_t)ny, .z = z, .material = mat};
+    return l;
 }
 
 static int host_terrain_height(sylva_host *h, double x, double y, double *z)
@@ -303,6 +380,8 @@ static const sylva_host_api api_table = {
     .mem_realloc = host_mem_realloc,
     .mem_free = host_mem_free,
     .param = host_param,
+    .memory_check = host_memory_check,
+    .heightfield_level_new = host_heightfield_level_new,
 };
 
 const sylva_host_api *host_api_table(void) { return &api_table; }

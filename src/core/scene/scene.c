@@ -42,11 +42,7 @@ scene *scene_new(void)
 void scene_free(scene *s)
 {
     if (!s) return;
-    if (s->terrain) {
-        free(s->terrain->z);
-        free(s->terrain->material);
-        free(s->terrain);
-    }
+    heightfield_free(s->terrain);
     for (uint32_t i = 0; i < s->n_materials; i++) free(s->materials[i].name);
     for (uint32_t i = 0; i < s->n_textures; i++) free(s->textures[i].name), free(s->textures[i].rgba);
     for (uint32_t i = 0; i < s->n_species; i++) free(s->species[i].name);

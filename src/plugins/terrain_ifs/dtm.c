@@ -14,11 +14,10 @@ int ifs_dtm_check_size(uint32_t nx, uint32_t ny, ifs_err *err)
                         "the DTM has %u x %u nodes; the IFS needs at least %u x %u (two cells along "
                         "each axis, so that every map shrinks the grid onto one cell)",
                         nx, ny, IFS_DTM_MIN_SIDE, IFS_DTM_MIN_SIDE);
-    if (nx > IFS_DTM_MAX_SIDE || ny > IFS_DTM_MAX_SIDE || (uint64_t)nx * ny > IFS_DTM_MAX_NODES)
+    if (nx > IFS_DTM_MAX_SIDE || ny > IFS_DTM_MAX_SIDE)
         return ifs_fail(err, SYLVA_ERR_LIMIT,
-                        "the DTM has %u x %u nodes; at most %u nodes in all (and %u along a side) "
-                        "are interpolated: crop it or raise the resampling step",
-                        nx, ny, IFS_DTM_MAX_NODES, IFS_DTM_MAX_SIDE);
+                        "the DTM has %u x %u nodes; at most %u are interpolated along a side: crop "
+                        "it or raise the resampling step", nx, ny, IFS_DTM_MAX_SIDE);
     return SYLVA_OK;
 }
 

@@ -12,10 +12,12 @@
 #include "ifs_err.h"
 
 /* Size limits of a DTM after cropping and resampling. Each axis needs two cells at least: with
- * one cell the map L_n (8) is the identity and the IFS does not contract along that axis. */
+ * one cell the map L_n (8) is the identity and the IFS does not contract along that axis. The
+ * node count has no fixed limit: the plugin weighs the whole work against the host's memory
+ * budget before reading (IFS_DTM_BYTES_PER_NODE here, docs/models/terrain_ifs.md). */
 #define IFS_DTM_MIN_SIDE 3u
 #define IFS_DTM_MAX_SIDE 65536u
-#define IFS_DTM_MAX_NODES (1u << 20) /* 1,048,576 nodes: 1025 x 1025, or 2049 x 512 */
+#define IFS_DTM_BYTES_PER_NODE 8u /* one double height; the maps are not stored (ifs_maps.h) */
 
 typedef struct ifs_dtm {
     uint32_t nx, ny; /* nodes along x (west to east) and y (south to north) */
@@ -25,8 +27,8 @@ typedef struct ifs_dtm {
 } ifs_dtm;
 
 /* A new DTM with zeroed heights. Fails (status and sentence) when a side is outside
- * [IFS_DTM_MIN_SIDE, IFS_DTM_MAX_SIDE], the node count exceeds IFS_DTM_MAX_NODES, a spacing is
- * not a positive finite number, or memory runs out. */
+ * [IFS_DTM_MIN_SIDE, IFS_DTM_MAX_SIDE], a spacing is not a positive finite number, or memory
+ * runs out. */
 int ifs_dtm_new(uint32_t nx, uint32_t ny, double dx, double dy, ifs_dtm **out, ifs_err *err);
 void ifs_dtm_free(ifs_dtm *d);
 

@@ -65,6 +65,10 @@ static int dtm_spacing(const ifs_raster *r, const ifs_dtm_file_options *opt, con
     double cx = win[0] + 0.5 * win[2], cy = win[1] + 0.5 * win[3]; /* window centre, pixels */
     info->centre_x = t[0] + cx * t[1] + cy * t[2];
     info->centre_y = t[3] + cx * t[4] + cy * t[5];
+    /* node (0, 0) is the window's last row in a north-up raster, its first in a south-up one */
+    double row0 = t[5] > 0 ? win[1] : win[1] + (double)(win[3] - 1);
+    info->node0_x = t[0] + (win[0] + 0.5) * t[1] + (row0 + 0.5) * t[2];
+    info->node0_y = t[3] + (win[0] + 0.5) * t[4] + (row0 + 0.5) * t[5];
     if (opt->cell_size[0] > 0 && opt->cell_size[1] > 0) {
         *dx = opt->cell_size[0], *dy = opt->cell_size[1];
         return SYLVA_OK;
@@ -139,7 +143,7 @@ int ifs_dtm_read_file(const char *path, const ifs_dtm_file_options *opt, ifs_dtm
     ifs_dtm_file_info info;
     memset(&info, 0, sizeof info);
     ifs_raster r;
-    int rc = ifs_raster_open(path, opt->band ? opt->band : 1, "DTM", &r, err);
+    int rc = ifs_raster_open_in(path, opt->band ? opt->band : 1, "DTM", opt->target_wkt, &r, err);
     if (rc) return rc;
     memcpy(info.driver, r.driver, sizeof info.driver);
     memcpy(info.type_name, r.type_name, sizeof info.type_name);
@@ -148,6 +152,7 @@ int ifs_dtm_read_file(const char *path, const ifs_dtm_file_options *opt, ifs_dtm
     double dx = 0, dy = 0, *row = NULL;
     ifs_dtm *d = NULL;
     if ((rc = dtm_window(&r, opt, path, win, &nx, &ny, err))) goto done;
+    if (opt->check_size && (rc = opt->check_size(opt->check_ctx, nx, ny, err))) goto done;
     if ((rc = dtm_spacing(&r, opt, path, win, &dx, &dy, &info, err))) goto done;
     if ((rc = ifs_dtm_new(nx, ny, dx, dy, &d, err))) goto done;
     row = malloc((size_t)win[2] * sizeof *row); /* owned here: one file row of the window */

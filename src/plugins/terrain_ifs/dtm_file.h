@@ -36,6 +36,13 @@ typedef struct ifs_dtm_file_options {
     double cell_size[2];    /* > 0: node spacing in metres along x and y, replacing the file's */
     double height_range[2]; /* plausible heights [low, high] in the file; a height outside it
                                is refused as damage. {0, 0}: the default range below */
+    /* NULL, or called with the DTM's size once it is known and before anything is read or
+     * allocated for it; a non-zero return (with err set) stops the read with that status. */
+    int (*check_size)(void *ctx, uint32_t nx, uint32_t ny, ifs_err *err);
+    void *check_ctx;
+    const char *target_wkt; /* NULL, or read the file in this coordinate system (warped through a
+                               GDAL VRT, bilinear, when the file's differs; crop and step then
+                               count the warped raster's pixels) */
 } ifs_dtm_file_options;
 
 /* The default plausible heights of a DTM file in metres: the Dead Sea shore (-430 m) to Everest
@@ -53,6 +60,9 @@ typedef struct ifs_dtm_file_info {
     int units_guessed;      /* 1: the file has no coordinate system; the units were inferred */
     double centre_lat;      /* degrees: latitude of the window's centre (degrees == 1) */
     double centre_x, centre_y; /* the window's centre in the file's coordinates */
+    int warped;             /* 1: read through a warped VRT into target_wkt */
+    double node0_x, node0_y; /* DTM node (0, 0) (the south-west node: a pixel centre) in the
+                               raster's coordinates (target_wkt's when given) */
 } ifs_dtm_file_info;
 
 /* Reads the DTM. Fails with a sentence naming the file and the reason: unreadable or not a

@@ -17,7 +17,8 @@ typedef struct node_sum {
 typedef struct chaos_run {
     const ifs_maps *m;
     const ifs_chaos_job *job;
-    node_sum **acc;   /* one grid per worker */
+    node_sum **acc;   /* one grid per worker, over the window */
+    ifs_window window;
     double quantum_per_metre;
 } chaos_run;
 
@@ -29,7 +30,8 @@ typedef struct chaos_run {
 /* One step of the iteration: w_{n,m} (12) applied to (u, v, z). */
 static inline void chaos_step(const ifs_maps *m, uint64_t r, double *u, double *v, double *z)
 {
-    const ifs_map *w = &m->map[ifs_maps_pick(m, r)];
+    ifs_map map = ifs_maps_cell(m, ifs_maps_pick(m, r));
+    const ifs_map *w = &map;
     double uu = *u, vv = *v;
     *z = w->c0 + w->cu * uu + w->cv * vv + w->cuv * uu * vv + w->alpha * *z;
     *u = w->u0 + uu * m->su;
@@ -67,7 +69,8 @@ static void chaos_chain(void *ctx, uint32_t worker, uint64_t chain)
     uint64_t (*next)(sylva_rng *) = job->rng_u64;
     double u = job->start_u, v = job->start_v, z = job->start_z;
     double fx = job->nx - 1, fy = job->ny - 1, q = run->quantum_per_metre;
-    uint32_t nx = job->nx, imax = job->nx - 1, jmax = job->ny - 1;
+    uint32_t imax = job->nx - 1, jmax = job->ny - 1;
+    const ifs_window *w = &run->window;
     size_t pending_node[CHAOS_PENDING];
     int64_t pending_q[CHAOS_PENDING];
     for (uint64_t k = 0; k < n; k++) {
@@ -75,10 +78,12 @@ static void chaos_chain(void *ctx, uint32_t worker, uint64_t chain)
         uint32_t i = (uint32_t)(u * fx + 0.5), j = (uint32_t)(v * fy + 0.5);
         if (i > imax) i = imax;
         if (j > jmax) j = jmax;
-        size_t node = (size_t)j * nx + i;
-        __builtin_prefetch(&acc[node], 1);
+        /* outside the window: the node's slot-free sentinel, never added */
+        size_t node = i - w->i0 < w->nx && j - w->j0 < w->ny
+                          ? (size_t)(j - w->j0) * w->nx + (i - w->i0) : SIZE_MAX;
+        if (node != SIZE_MAX) __builtin_prefetch(&acc[node], 1);
         uint32_t slot = (uint32_t)(k % CHAOS_PENDING);
-        if (k >= CHAOS_PENDING) {
+        if (k >= CHAOS_PENDING && pending_node[slot] != SIZE_MAX) {
             acc[pending_node[slot]].sum += pending_q[slot];
             acc[pending_node[slot]].count++;
         }
@@ -87,6 +92,7 @@ static void chaos_chain(void *ctx, uint32_t worker, uint64_t chain)
     }
     for (uint64_t k = n > CHAOS_PENDING ? n - CHAOS_PENDING : 0; k < n; k++) {
         uint32_t slot = (uint32_t)(k % CHAOS_PENDING);
+        if (pending_node[slot] == SIZE_MAX) continue;
         acc[pending_node[slot]].sum += pending_q[slot];
         acc[pending_node[slot]].count++;
     }
@@ -97,6 +103,7 @@ typedef struct merge_run {
     const ifs_chaos_job *job;
     node_sum **acc;
     uint32_t workers;
+    ifs_window window;
     double metres_per_quantum;
     float *z;
     uint64_t *empty_per_row;
@@ -108,26 +115,28 @@ static void merge_row(void *ctx, uint32_t worker, uint64_t row)
 {
     const merge_run *mr = ctx;
     const ifs_chaos_job *job = mr->job;
-    uint32_t j = (uint32_t)row;
-    size_t base = (size_t)j * job->nx;
+    const ifs_window *w = &mr->window;
+    uint32_t j = w->j0 + (uint32_t)row;
+    size_t base = (size_t)row * w->nx;
     uint64_t empty = 0;
-    for (uint32_t i = 0; i < job->nx; i++) {
+    for (uint32_t k = 0; k < w->nx; k++) {
+        uint32_t i = w->i0 + k;
         int64_t sum = 0;
         uint64_t count = 0;
-        for (uint32_t w = 0; w < mr->workers; w++) {
-            sum += mr->acc[w][base + i].sum;
-            count += mr->acc[w][base + i].count;
+        for (uint32_t t = 0; t < mr->workers; t++) {
+            sum += mr->acc[t][base + k].sum;
+            count += mr->acc[t][base + k].count;
         }
         if (count) {
-            mr->z[base + i] = (float)((double)sum / (double)count * mr->metres_per_quantum);
+            mr->z[base + k] = (float)((double)sum / (double)count * mr->metres_per_quantum);
         } else {
             double sx = (double)i * mr->m->ncx / (job->nx - 1);
             double sy = (double)j * mr->m->ncy / (job->ny - 1);
-            mr->z[base + i] = (float)ifs_eval_at(mr->m, sx, sy, job->depth);
+            mr->z[base + k] = (float)ifs_eval_at(mr->m, sx, sy, job->depth);
             empty++;
         }
     }
-    mr->empty_per_row[j] = empty;
+    mr->empty_per_row[row] = empty;
 }
 
 int ifs_chaos_grid(const ifs_maps *m, const ifs_chaos_job *job, float *z, ifs_chaos_stats *stats,
@@ -152,13 +161,19 @@ int ifs_chaos_grid(const ifs_maps *m, const ifs_chaos_job *job, float *z, ifs_ch
                         "the starting height %g m lies outside the heights the maps can reach "
                         "(-%g to %g m); start near the DTM's surface", job->start_z, m->z_bound,
                         m->z_bound);
+    ifs_window win = job->window;
+    if (!win.nx && !win.ny) win = (ifs_window){0, 0, job->nx, job->ny};
+    if (!win.nx || !win.ny || win.i0 + (uint64_t)win.nx > job->nx || win.j0 + (uint64_t)win.ny > job->ny)
+        return ifs_fail(err, SYLVA_ERR_PARAM, "the window of %u x %u nodes from node (%u, %u) does "
+                        "not lie inside the %u x %u output grid", win.nx, win.ny, win.i0, win.j0,
+                        job->nx, job->ny);
     uint64_t chains = ifs_chaos_chain_count(job->points);
     uint32_t workers = job->threads < 1 ? 1 : job->threads;
     if (workers > IFS_MAX_THREADS) workers = IFS_MAX_THREADS;
     if (workers > chains) workers = (uint32_t)chains;
-    size_t nodes = (size_t)job->nx * job->ny;
+    size_t nodes = (size_t)win.nx * win.ny;
     node_sum *acc[IFS_MAX_THREADS] = {0}; /* owned here, one grid per worker */
-    uint64_t *empty_per_row = malloc((size_t)job->ny * sizeof *empty_per_row);
+    uint64_t *empty_per_row = malloc((size_t)win.ny * sizeof *empty_per_row);
     int rc = SYLVA_OK;
     if (!empty_per_row) {
         rc = ifs_fail(err, SYLVA_ERR_NOMEM, "out of memory for a %u-row output grid", job->ny);
@@ -180,15 +195,16 @@ int ifs_chaos_grid(const ifs_maps *m, const ifs_chaos_job *job, float *z, ifs_ch
     /* Every |z| reached stays below z_bound: 2^31 quanta cover it, so sums of up to
      * IFS_MAX_POINTS < 2^32 points fit in 63 bits. */
     double quantum_per_metre = m->z_bound > 0 ? 2147483647.0 / m->z_bound : 1.0;
-    chaos_run run = {.m = m, .job = job, .acc = acc, .quantum_per_metre = quantum_per_metre};
+    chaos_run run = {.m = m, .job = job, .acc = acc, .window = win,
+                     .quantum_per_metre = quantum_per_metre};
     uint32_t ran = ifs_parallel_run(workers, chains, chaos_chain, &run, job->progress, job->pctx);
-    merge_run mr = {.m = m, .job = job, .acc = acc, .workers = workers,
+    merge_run mr = {.m = m, .job = job, .acc = acc, .workers = workers, .window = win,
                     .metres_per_quantum = 1.0 / quantum_per_metre, .z = z,
                     .empty_per_row = empty_per_row};
-    ifs_parallel_run(workers, job->ny, merge_row, &mr, NULL, NULL);
+    ifs_parallel_run(workers, win.ny, merge_row, &mr, NULL, NULL);
     if (stats) {
         stats->empty_nodes = 0;
-        for (uint32_t j = 0; j < job->ny; j++) stats->empty_nodes += empty_per_row[j];
+        for (uint32_t j = 0; j < win.ny; j++) stats->empty_nodes += empty_per_row[j];
         stats->workers = ran;
     }
 done:

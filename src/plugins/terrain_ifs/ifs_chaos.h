@@ -14,6 +14,7 @@
 #include <stdint.h>
 
 #include "ifs_err.h"
+#include "ifs_eval.h"
 #include "ifs_maps.h"
 #include "ifs_parallel.h"
 #include "sylva/plugin.h"
@@ -28,6 +29,8 @@ typedef struct ifs_chaos_job {
     const sylva_rng *streams; /* ifs_chaos_chain_count(points) streams, chain c uses streams[c] */
     uint64_t (*rng_u64)(sylva_rng *); /* draws from a stream (e.g. api->rng_u64) */
     uint32_t nx, ny;          /* output nodes, >= 2 each, spanning the DTM footprint */
+    ifs_window window;        /* the nodes written (points nearest other nodes are dropped);
+                                 all zero: the whole grid */
     uint32_t depth;           /* depth of the deterministic evaluation for nodes no point reached */
     uint32_t threads;         /* workers, 1 .. IFS_MAX_THREADS */
     ifs_progress_fn progress; /* may be NULL; called on the calling thread */
@@ -41,7 +44,8 @@ typedef struct ifs_chaos_stats {
 
 uint64_t ifs_chaos_chain_count(uint64_t points);
 
-/* Runs the random iteration and writes nx * ny heights (row 0 south) into z. Fails when NK is 0
+/* Runs the random iteration and writes the window's nx * ny heights (row 0 south) into z; each
+ * node gets the same number as when the whole grid is made. Fails when NK is 0
  * or above IFS_MAX_POINTS, the start lies outside the footprint or beyond the heights the maps
  * reach (|z| > z_bound), or memory runs out (every worker needs 16 bytes per output node).
  * stats may be NULL. */

@@ -30,7 +30,8 @@ double ifs_eval_at(const ifs_maps *m, double sx, double sy, uint32_t depth)
     for (uint32_t k = 0; k < depth; k++) {
         double u, v;
         uint32_t cn = cell_of(sx, m->ncx, &u), cm = cell_of(sy, m->ncy, &v);
-        const ifs_map *w = &m->map[cm * m->ncx + cn];
+        ifs_map map = ifs_maps_cell(m, cm * m->ncx + cn);
+        const ifs_map *w = &map;
         /* (u, v) = (L_n^-1(x), V_m^-1(y)) in unit coordinates; F without its alpha z term there */
         sum += weight * (w->c0 + w->cu * u + w->cv * v + w->cuv * u * v);
         weight *= w->alpha;
@@ -59,23 +60,32 @@ uint32_t ifs_eval_auto_depth(const ifs_maps *m, uint32_t nx_out, uint32_t ny_out
 typedef struct eval_job {
     const ifs_maps *m;
     uint32_t nx, ny, depth;
+    ifs_window w;
     float *z;
 } eval_job;
 
 static void eval_row(void *ctx, uint32_t worker, uint64_t row)
 {
     const eval_job *job = ctx;
-    uint32_t j = (uint32_t)row;
+    uint32_t j = job->w.j0 + (uint32_t)row;
     double sy = (double)j * job->m->ncy / (job->ny - 1);
-    float *out = job->z + (size_t)j * job->nx;
-    for (uint32_t i = 0; i < job->nx; i++) {
-        double sx = (double)i * job->m->ncx / (job->nx - 1);
-        out[i] = (float)ifs_eval_at(job->m, sx, sy, job->depth);
+    float *out = job->z + (size_t)row * job->w.nx;
+    for (uint32_t k = 0; k < job->w.nx; k++) {
+        double sx = (double)(job->w.i0 + k) * job->m->ncx / (job->nx - 1);
+        out[k] = (float)ifs_eval_at(job->m, sx, sy, job->depth);
     }
 }
 
 int ifs_eval_grid(const ifs_maps *m, uint32_t nx_out, uint32_t ny_out, uint32_t depth,
                   uint32_t threads, float *z, ifs_progress_fn progress, void *pctx, ifs_err *err)
+{
+    ifs_window whole = {0, 0, nx_out, ny_out};
+    return ifs_eval_window(m, nx_out, ny_out, &whole, depth, threads, z, progress, pctx, err);
+}
+
+int ifs_eval_window(const ifs_maps *m, uint32_t nx_out, uint32_t ny_out, const ifs_window *w,
+                    uint32_t depth, uint32_t threads, float *z, ifs_progress_fn progress,
+                    void *pctx, ifs_err *err)
 {
     if (nx_out < 2 || ny_out < 2)
         return ifs_fail(err, SYLVA_ERR_PARAM,
@@ -84,7 +94,11 @@ int ifs_eval_grid(const ifs_maps *m, uint32_t nx_out, uint32_t ny_out, uint32_t 
     if (depth > IFS_MAX_DEPTH)
         return ifs_fail(err, SYLVA_ERR_PARAM, "depth %u is deeper than %u levels", depth,
                         IFS_MAX_DEPTH);
-    eval_job job = {.m = m, .nx = nx_out, .ny = ny_out, .depth = depth, .z = z};
-    ifs_parallel_run(threads, ny_out, eval_row, &job, progress, pctx);
+    if (!w->nx || !w->ny || w->i0 + (uint64_t)w->nx > nx_out || w->j0 + (uint64_t)w->ny > ny_out)
+        return ifs_fail(err, SYLVA_ERR_PARAM, "the window of %u x %u nodes from node (%u, %u) does "
+                        "not lie inside the %u x %u output grid", w->nx, w->ny, w->i0, w->j0,
+                        nx_out, ny_out);
+    eval_job job = {.m = m, .nx = nx_out, .ny = ny_out, .depth = depth, .w = *w, .z = z};
+    ifs_parallel_run(threads, w->ny, eval_row, &job, progress, pctx);
     return SYLVA_OK;
 }

@@ -38,4 +38,16 @@ uint32_t ifs_eval_auto_depth(const ifs_maps *m, uint32_t nx_out, uint32_t ny_out
 int ifs_eval_grid(const ifs_maps *m, uint32_t nx_out, uint32_t ny_out, uint32_t depth,
                   uint32_t threads, float *z, ifs_progress_fn progress, void *pctx, ifs_err *err);
 
+/* A window of an output grid: its nodes [i0, i0 + nx) x [j0, j0 + ny). */
+typedef struct ifs_window {
+    uint32_t i0, j0, nx, ny;
+} ifs_window;
+
+/* As ifs_eval_grid over window w of the nx_out x ny_out grid only (w inside it), into z
+ * (w->nx * w->ny floats, row 0 the window's southern row): each node the same number as in the
+ * whole grid. */
+int ifs_eval_window(const ifs_maps *m, uint32_t nx_out, uint32_t ny_out, const ifs_window *w,
+                    uint32_t depth, uint32_t threads, float *z, ifs_progress_fn progress,
+                    void *pctx, ifs_err *err);
+
 #endif

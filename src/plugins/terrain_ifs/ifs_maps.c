@@ -10,7 +10,7 @@
 void ifs_maps_free(ifs_maps *m)
 {
     if (!m) return;
-    free(m->map), free(m->node_z), free(m->probability), free(m->alias_cell);
+    free(m->probability), free(m->alias_cell);
     free(m->alias_threshold);
     free(m);
 }
@@ -88,36 +88,26 @@ int ifs_maps_build(const ifs_dtm *dtm, const ifs_maps_params *p, ifs_maps **out,
     if (!m) return ifs_fail(err, SYLVA_ERR_NOMEM, "out of memory for the IFS maps");
     *m = (ifs_maps){.mode = p->mode, .nx = nx, .ny = ny, .ncx = ncx, .ncy = ncy, .n_maps = n,
                     .su = 1.0 / ncx, .sv = 1.0 / ncy, .width = ncx * dtm->dx,
-                    .depth = ncy * dtm->dy, .uniform = !p->probability};
-    m->map = aligned_alloc(64, (size_t)n * sizeof *m->map);
-    m->node_z = malloc((size_t)nx * ny * sizeof *m->node_z);
-    m->probability = malloc((size_t)n * sizeof *m->probability);
-    if (!m->map || !m->node_z || !m->probability) {
+                    .depth = ncy * dtm->dy, .uniform = !p->probability,
+                    .node_z = dtm->z, .alpha_field = p->alpha_field, .alpha = p->alpha};
+    if (p->probability && !(m->probability = malloc((size_t)n * sizeof *m->probability))) {
         ifs_maps_free(m);
-        return ifs_fail(err, SYLVA_ERR_NOMEM, "out of memory for %u IFS maps", n);
+        return ifs_fail(err, SYLVA_ERR_NOMEM, "out of memory for the probabilities of %u IFS maps",
+                        n);
     }
-    memcpy(m->node_z, dtm->z, (size_t)nx * ny * sizeof *m->node_z);
     const double *z = dtm->z;
 #define Z(i, j) z[(size_t)(j) * nx + (i)]
-    double z11 = Z(0, 0), zn1 = Z(ncx, 0), znm = Z(ncx, ncy), z1m = Z(0, ncy);
+    m->z11 = Z(0, 0), m->zn1 = Z(ncx, 0), m->znm = Z(ncx, ncy), m->z1m = Z(0, ncy);
+    double z11 = m->z11, zn1 = m->zn1, znm = m->znm, z1m = m->z1m;
     double bound = 0.0;
-    for (uint32_t cm = 0; cm < ncy; cm++)
-        for (uint32_t cn = 0; cn < ncx; cn++) {
-            uint32_t c = cm * ncx + cn;
-            double alpha = p->alpha_field ? p->alpha_field[c] : p->alpha;
-            /* (11): P, Q, S — and T, the fourth corner, for the bilinear map */
-            double P = Z(cn, cm) - alpha * z11, Q = Z(cn + 1, cm) - alpha * zn1;
-            double S = Z(cn + 1, cm + 1) - alpha * znm, T = Z(cn, cm + 1) - alpha * z1m;
-            ifs_map *w = &m->map[c];
-            *w = (ifs_map){.c0 = P, .cu = Q - P, .alpha = alpha, .u0 = cn * m->su, .v0 = cm * m->sv};
-            if (p->mode == IFS_MODE_AFFINE) w->cv = S - Q, w->cuv = 0.0;
-            else w->cv = T - P, w->cuv = S - Q - T + P;
-            double corner = fmax(fmax(fabs(w->c0), fabs(w->c0 + w->cu)),
-                                 fmax(fabs(w->c0 + w->cv), fabs(w->c0 + w->cu + w->cv + w->cuv)));
-            if (corner > bound) bound = corner;
-            if (fabs(alpha) > m->alpha_max) m->alpha_max = fabs(alpha);
-            m->probability[c] = p->probability ? p->probability[c] / wsum : 1.0 / n;
-        }
+    for (uint32_t c = 0; c < n; c++) {
+        ifs_map w = ifs_maps_cell(m, c);
+        double corner = fmax(fmax(fabs(w.c0), fabs(w.c0 + w.cu)),
+                             fmax(fabs(w.c0 + w.cv), fabs(w.c0 + w.cu + w.cv + w.cuv)));
+        if (corner > bound) bound = corner;
+        if (fabs(w.alpha) > m->alpha_max) m->alpha_max = fabs(w.alpha);
+        if (m->probability) m->probability[c] = p->probability[c] / wsum;
+    }
     for (uint32_t j = 0; j < ny; j++)
         for (uint32_t i = 0; i < nx; i++) {
             double u = (double)i / ncx, v = (double)j / ncy;
@@ -138,7 +128,8 @@ int ifs_maps_build(const ifs_dtm *dtm, const ifs_maps_params *p, ifs_maps **out,
 void ifs_map_paper_coefficients(const ifs_maps *m, uint32_t n, uint32_t cell_m, double x1, double y1,
                                 double *a, double *b, double *e, double *c)
 {
-    const ifs_map *w = &m->map[cell_m * m->ncx + n];
+    ifs_map map = ifs_maps_cell(m, cell_m * m->ncx + n);
+    const ifs_map *w = &map;
     double W = m->width, H = m->depth;
     *a = w->cu / W - w->cuv * y1 / (W * H);
     *b = w->cv / H - w->cuv * x1 / (W * H);

@@ -18,11 +18,17 @@
  *                  attractor.
  * ifs_map_paper_coefficients gives the same map as the paper writes it, in metres.
  *
- * Ownership: ifs_maps owns every array in it; ifs_maps_free accepts NULL.
+ * The maps are not stored: ifs_maps_cell computes a cell's map from its four DTM nodes when it
+ * is needed (a few multiplications, against 64 bytes a cell read from memory), so the maps of a
+ * 100-million-node DTM cost no memory beyond the DTM itself.
+ *
+ * Ownership: ifs_maps owns its probability and alias arrays; it borrows the DTM's heights and
+ * the per-cell alpha field, which must outlive it. ifs_maps_free accepts NULL.
  */
 #ifndef TERRAIN_IFS_MAPS_H
 #define TERRAIN_IFS_MAPS_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "dtm.h"
@@ -33,12 +39,11 @@ typedef enum ifs_mode {
     IFS_MODE_AFFINE = 1    /* the paper's three corner conditions (9)-(11) */
 } ifs_mode;
 
-/* One map w_{n,m}, padded to one 64-byte cache line. */
+/* One map w_{n,m}. */
 typedef struct ifs_map {
     double c0, cu, cv, cuv; /* F_{n,m} without its alpha z term, in unit coordinates */
     double alpha;           /* alpha_{n,m}, in (-1, 1) */
     double u0, v0;          /* L_n(0) and V_m(0) in unit coordinates */
-    double pad_to_line;
 } ifs_map;
 
 typedef struct ifs_maps {
@@ -48,9 +53,12 @@ typedef struct ifs_maps {
     uint32_t n_maps;        /* ncx * ncy */
     double su, sv;          /* 1 / ncx and 1 / ncy: the contraction of L_n and V_m */
     double width, depth;    /* x_N - x_1 and y_M - y_1, metres */
-    ifs_map *map;           /* n_maps maps, cell (n, m) at [m * ncx + n]; owned, 64-byte aligned */
-    double *node_z;         /* the DTM heights, nx * ny, row 0 south; owned */
-    double *probability;    /* R_{n,m} normalised to sum 1, per cell like map; owned */
+    const double *node_z;   /* the DTM heights, nx * ny, row 0 south; borrowed from the DTM */
+    const double *alpha_field; /* alpha_{n,m} per cell (cell (n, m) at [m * ncx + n]), or NULL
+                               for the global alpha; borrowed */
+    double alpha;           /* the global alpha when alpha_field is NULL */
+    double z11, zn1, znm, z1m; /* the heights of the four global corners (11) */
+    double *probability;    /* R_{n,m} normalised to sum 1, per cell; NULL when uniform; owned */
     int uniform;            /* 1: every R_{n,m} is equal and picks skip the alias table */
     uint32_t *alias_cell;   /* Vose alias table of R (NULL when uniform); owned */
     uint32_t *alias_threshold; /* keep cell c when the low 32 bits are below this; owned */
@@ -71,7 +79,7 @@ typedef struct ifs_maps_params {
                                    for R proportional to the cell area */
 } ifs_maps_params;
 
-/* Builds the maps for a DTM. Fails when an alpha lies outside (-1, 1), a weight is negative or
+/* Builds the maps for a DTM, which must outlive them (so must p->alpha_field). Fails when an alpha lies outside (-1, 1), a weight is negative or
  * not finite, every weight is 0, or memory runs out. */
 int ifs_maps_build(const ifs_dtm *dtm, const ifs_maps_params *p, ifs_maps **out, ifs_err *err);
 void ifs_maps_free(ifs_maps *m);
@@ -80,6 +88,21 @@ void ifs_maps_free(ifs_maps *m);
  * node at (x1, y1): F(x, y, z) = a x + b y + e x y + alpha z + c (e = 0 in affine mode). */
 void ifs_map_paper_coefficients(const ifs_maps *m, uint32_t n, uint32_t cell_m, double x1, double y1,
                                 double *a, double *b, double *e, double *c);
+
+/* The map of cell c = m * ncx + n, from the cell's four DTM nodes: (10) with P, Q, S (and T)
+ * of (11). */
+static inline ifs_map ifs_maps_cell(const ifs_maps *m, uint32_t c)
+{
+    uint32_t cn = c % m->ncx, cm = c / m->ncx;
+    const double *z = m->node_z + (size_t)cm * m->nx + cn;
+    double alpha = m->alpha_field ? m->alpha_field[c] : m->alpha;
+    double P = z[0] - alpha * m->z11, Q = z[1] - alpha * m->zn1;
+    double S = z[m->nx + 1] - alpha * m->znm, T = z[m->nx] - alpha * m->z1m;
+    ifs_map w = {.c0 = P, .cu = Q - P, .alpha = alpha, .u0 = cn * m->su, .v0 = cm * m->sv};
+    if (m->mode == IFS_MODE_AFFINE) w.cv = S - Q, w.cuv = 0.0;
+    else w.cv = T - P, w.cuv = S - Q - T + P;
+    return w;
+}
 
 /* The cell a 64-bit random number picks with probability R (high 32 bits choose a column of
  * the alias table, low 32 bits decide between it and its alias). */

@@ -20,6 +20,7 @@
 #include <cpl_http.h>
 #include <cpl_string.h>
 #include <gdal.h>
+#include <gdalwarper.h>
 #include <ogr_srs_api.h>
 
 #include "ascii_grid.h"
@@ -93,7 +94,77 @@ static double integer_type_max(GDALDataType t)
     }
 }
 
+/* The nodata value given to a warped raster whose file declares none: a value of the sample
+ * type far outside any terrain's heights. */
+static double no_data_fallback(GDALDataType t)
+{
+    switch (t) {
+    case GDT_Byte: return 255.0;
+    case GDT_UInt16: return 65535.0;
+    case GDT_Int16: return -32768.0;
+    case GDT_UInt32: return 4294967295.0;
+    case GDT_Int32: return -2147483648.0;
+    default: return -3.4028234663852886e38;
+    }
+}
+
+/* The warped VRT of ds into target_wkt (bilinear), or ds itself when the systems agree; NULL
+ * with err set when ds has no system or GDAL cannot warp it. */
+static GDALDatasetH warp_to(GDALDatasetH ds, const char *target_wkt, const char *what,
+                            const char *path, int *warped, ifs_err *err)
+{
+    *warped = 0;
+    OGRSpatialReferenceH src = GDALGetSpatialRef(ds), dst = OSRNewSpatialReference(NULL);
+    if (!dst || OSRImportFromWkt(dst, (char **)&(const char *){target_wkt}) != OGRERR_NONE) {
+        OSRDestroySpatialReference(dst);
+        ifs_fail(err, SYLVA_ERR_PARAM, "the site's coordinate system is not WKT that GDAL reads");
+        return NULL;
+    }
+    if (!src) {
+        OSRDestroySpatialReference(dst);
+        ifs_fail(err, SYLVA_ERR_PARAM, "the %s '%s' has no coordinate system, so it cannot be "
+                 "placed in the site's; give the file one (gdal_edit.py -a_srs) or leave the "
+                 "site out", what, path);
+        return NULL;
+    }
+    int same = OSRIsSame(src, dst);
+    OSRDestroySpatialReference(dst);
+    if (same) return ds;
+    GDALWarpOptions *wo = GDALCreateWarpOptions();
+    wo->nBandCount = 0; /* every band */
+    wo->papszWarpOptions = CSLSetNameValue(wo->papszWarpOptions, "INIT_DEST", "NO_DATA");
+    int bands = GDALGetRasterCount(ds);
+    double fallback = no_data_fallback(GDALGetRasterDataType(GDALGetRasterBand(ds, 1)));
+    wo->padfDstNoDataReal = CPLMalloc(sizeof(double) * (size_t)(bands > 0 ? bands : 1));
+    for (int b = 0; b < bands; b++) {
+        int ok = 0;
+        double nd = GDALGetRasterNoDataValue(GDALGetRasterBand(ds, b + 1), &ok);
+        wo->padfDstNoDataReal[b] = ok ? nd : fallback;
+    }
+    GDALDatasetH vrt = GDALAutoCreateWarpedVRTEx(ds, NULL, target_wkt, GRA_Bilinear, 0.0, wo, NULL);
+    GDALDestroyWarpOptions(wo);
+    if (!vrt) {
+        ifs_fail(err, SYLVA_ERR_PARAM, "cannot warp the %s '%s' into the site's coordinate system: "
+                 "%s", what, path, gdal_reason("GDAL gave no reason"));
+        return NULL;
+    }
+    for (int b = 0; b < bands; b++) { /* the areas outside the file are nodata */
+        GDALRasterBandH vb = GDALGetRasterBand(vrt, b + 1);
+        int ok = 0;
+        double nd = GDALGetRasterNoDataValue(GDALGetRasterBand(ds, b + 1), &ok);
+        GDALSetRasterNoDataValue(vb, ok ? nd : fallback);
+    }
+    *warped = 1;
+    return vrt;
+}
+
 int ifs_raster_open(const char *path, uint32_t band, const char *what, ifs_raster *r, ifs_err *err)
+{
+    return ifs_raster_open_in(path, band, what, NULL, r, err);
+}
+
+int ifs_raster_open_in(const char *path, uint32_t band, const char *what, const char *target_wkt,
+                       ifs_raster *r, ifs_err *err)
 {
     memset(r, 0, sizeof *r);
     r->metres_per_unit = 1.0, r->scale = 1.0;
@@ -132,6 +203,14 @@ int ifs_raster_open(const char *path, uint32_t band, const char *what, ifs_raste
         goto done;
     }
     r->dataset = ds;
+    if (target_wkt) {
+        GDALDatasetH v = warp_to(ds, target_wkt, what, path, &r->warped, err);
+        if (!v) {
+            rc = err->msg[0] ? SYLVA_ERR_PARAM : SYLVA_ERR_IO;
+            goto done;
+        }
+        if (r->warped) r->source = ds, r->dataset = ds = v;
+    }
     r->cols = (uint32_t)GDALGetRasterXSize(ds);
     r->rows = (uint32_t)GDALGetRasterYSize(ds);
     r->bands = (uint32_t)GDALGetRasterCount(ds);
@@ -147,6 +226,10 @@ int ifs_raster_open(const char *path, uint32_t band, const char *what, ifs_raste
         goto done;
     }
     r->band = b;
+    int bw = 0, bh = 0;
+    GDALGetBlockSize(b, &bw, &bh);
+    r->block_rows = bh > 0 ? (uint32_t)bh : 1;
+    r->cached_block = UINT32_MAX;
     snprintf(r->driver, sizeof r->driver, "%s", GDALGetDriverShortName(GDALGetDatasetDriver(ds)));
     GDALDataType type = GDALGetRasterDataType(b);
     snprintf(r->type_name, sizeof r->type_name, "%s", GDALGetDataTypeName(type));
@@ -189,10 +272,11 @@ void ifs_raster_close(ifs_raster *r)
         offline_begin(r, &saved);
         CPLPushErrorHandler(CPLQuietErrorHandler);
         GDALClose((GDALDatasetH)r->dataset);
+        if (r->source) GDALClose((GDALDatasetH)r->source);
         CPLPopErrorHandler();
         offline_end(r, &saved);
     }
-    r->dataset = NULL, r->band = NULL;
+    r->dataset = NULL, r->source = NULL, r->band = NULL;
 }
 
 int ifs_raster_read_row(ifs_raster *r, uint32_t row, uint32_t col, uint32_t count, double *out,
@@ -202,6 +286,11 @@ int ifs_raster_read_row(ifs_raster *r, uint32_t row, uint32_t col, uint32_t coun
     offline_begin(r, &saved);
     CPLPushErrorHandler(CPLQuietErrorHandler);
     CPLErrorReset();
+    uint32_t block = row / (r->block_rows ? r->block_rows : 1);
+    if (block != r->cached_block) {
+        if (r->cached_block != UINT32_MAX) GDALFlushRasterCache((GDALRasterBandH)r->band);
+        r->cached_block = block;
+    }
     CPLErr e = GDALRasterIO((GDALRasterBandH)r->band, GF_Read, (int)col, (int)row, (int)count, 1,
                             out, (int)count, 1, GDT_Float64, 0, 0);
     int rc = SYLVA_OK;

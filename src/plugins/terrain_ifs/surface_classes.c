@@ -1,15 +1,15 @@
-/* surface_classes.c — ground cover by slope, altitude and humidity. */
+/* surface_classes.c — ground cover by slope, height and humidity. */
 #include "surface_classes.h"
 
 #include <math.h>
 #include <stddef.h>
 
-ifs_surface_class ifs_surface_class_of(double slope_deg, double altitude, double humidity,
+ifs_surface_class ifs_surface_class_of(double slope_deg, double z, double humidity,
                                        const ifs_surface_rules *r)
 {
     if (slope_deg >= r->rock_slope) return IFS_SURFACE_ROCK;
-    if (altitude >= r->snow_line) return IFS_SURFACE_SNOW;
-    if (slope_deg >= r->scree_slope || altitude >= r->scree_line) return IFS_SURFACE_SCREE;
+    if (z >= r->snow_z) return IFS_SURFACE_SNOW;
+    if (slope_deg >= r->scree_slope || z >= r->scree_z) return IFS_SURFACE_SCREE;
     if (humidity < r->dry_humidity) return IFS_SURFACE_DRY_GRASS;
     return IFS_SURFACE_GRASS;
 }
@@ -27,14 +27,12 @@ double ifs_surface_slope(const float *z, uint32_t nx, uint32_t ny, double dx, do
 void ifs_surface_classify(const float *z, uint32_t nx, uint32_t ny, double dx, double dy,
                           const float *humidity, const ifs_surface_rules *r, uint8_t *cls)
 {
-    double range = r->zmax - r->zmin;
     for (uint32_t j = 0; j < ny; j++)
         for (uint32_t i = 0; i < nx; i++) {
             size_t k = (size_t)j * nx + i;
-            double altitude = range > 0 ? (z[k] - r->zmin) / range : 0.0;
             double wet = humidity ? humidity[k] : 1.0;
             cls[k] = (uint8_t)ifs_surface_class_of(ifs_surface_slope(z, nx, ny, dx, dy, i, j),
-                                                   altitude, wet, r);
+                                                   z[k], wet, r);
         }
 }
 

@@ -1,16 +1,16 @@
 /* surface_classes.h — what covers the ground at each heightfield node: grass, dry grass, scree,
- * rock or snow, from the slope, the normalised altitude and (when a humidity map is given) the
- * humidity there. The rules, first match wins:
+ * rock or snow, from the slope, the height and (when a humidity map is given) the humidity
+ * there. The rules, first match wins:
  *
  *   slope >= rock_slope                                  rock
- *   altitude >= snow_line                                snow
- *   slope >= scree_slope, or altitude >= scree_line      scree
+ *   z >= snow_z                                          snow
+ *   slope >= scree_slope, or z >= scree_z                scree
  *   humidity < dry_humidity                              dry grass
  *   otherwise                                            grass
  *
- * The normalised altitude is (z - zmin) / (zmax - zmin) over the DTM's heights (0 when the DTM
- * is flat); the slope is the angle of the normal the renderer computes, from central
- * differences (one-sided at the border). */
+ * Heights are the heightfield's (metres); the plugin turns the scene's altitudes (or the older
+ * fractions of the DTM's height range) into them. The slope is the angle of the normal the
+ * renderer computes, from central differences (one-sided at the border). */
 #ifndef TERRAIN_IFS_SURFACE_CLASSES_H
 #define TERRAIN_IFS_SURFACE_CLASSES_H
 
@@ -26,16 +26,15 @@ typedef enum ifs_surface_class {
 } ifs_surface_class;
 
 typedef struct ifs_surface_rules {
-    double zmin, zmax;      /* metres: the altitude range normalised to [0, 1] */
-    double snow_line;       /* normalised altitude */
-    double scree_line;      /* normalised altitude */
+    double snow_z;          /* metres: height from which snow lies */
+    double scree_z;         /* metres: height from which scree lies */
     double scree_slope;     /* degrees */
     double rock_slope;      /* degrees */
     double dry_humidity;    /* humidity in [0, 1] below which grass is dry */
 } ifs_surface_rules;
 
 /* The class of one node. */
-ifs_surface_class ifs_surface_class_of(double slope_deg, double altitude, double humidity,
+ifs_surface_class ifs_surface_class_of(double slope_deg, double z, double humidity,
                                        const ifs_surface_rules *r);
 
 /* Slope in degrees at node (i, j) of an nx x ny grid of heights with spacing dx, dy. */

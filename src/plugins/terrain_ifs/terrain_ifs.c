@@ -19,6 +19,9 @@
 #include "dtm_file.h"
 #include "dtm_generate.h"
 #include "humidity_map.h"
+#include "raster_gdal.h"
+#include "ifs_parallel.h"
+#include "lod_levels.h"
 #include "ifs_chaos.h"
 #include "ifs_eval.h"
 #include "ifs_maps.h"
@@ -40,16 +43,27 @@ typedef struct terrain_ifs_state {
     int has_start;
     double start_u, start_v, start_z;
     uint32_t depth;              /* 0: automatic */
-    uint32_t nx_out, ny_out;
+    uint32_t nx_out, ny_out;     /* the output grid: with levels of detail, the DTM's nodes */
+    int lod;                     /* 1: levels of detail around the eye (refine_levels) */
+    uint32_t refine;             /* the finest level's nodes per DTM cell */
+    double lod_radius;           /* the finest window's half-width, DTM cells */
     uint32_t threads;
     double centre[2];
     int classes;                 /* 1: ground-cover classes, 0: the scene's material */
-    double water_level;          /* normalised, 0: none */
+    int has_water;               /* 1: a water surface at water_z */
+    double water_z;              /* metres, heightfield heights */
     ifs_surface_rules rules;
+    double zmin, zmax;           /* the DTM's height range, metres */
     float *humidity;             /* owned (host allocator): humidity at each output node, or NULL */
     float albedo[IFS_SURFACE_CLASSES][3];
     float water_albedo[3];
     char source[512];            /* what the DTM is, for the log */
+    const sylva_params *params;  /* create()'s, valid until destroy (the host's promise) */
+    int georeferenced;           /* 1: the DTM file's node (0, 0) is at node0 in its CRS */
+    double node0[2];             /* map coordinates of DTM node (0, 0) (after a warp: the site's) */
+    const char *crs_read;        /* the CRS the DTM was read in: NULL (the file's) or the site's */
+    int crs_checked;             /* 1: the file's CRS was compared with the site's */
+    double z_shift;              /* metres taken off every DTM height (the site origin's height) */
 } terrain_ifs_state;
 
 static void state_free(terrain_ifs_state *s)
@@ -64,7 +78,8 @@ static int is_whole(double v) { return v == floor(v) && isfinite(v); }
 
 /* Parameters that only one DTM source or one setting reads. */
 static const char *const file_only[] = {"band", "crop", "step", "units"};
-static const char *const classes_only[] = {"snow_line", "scree_line", "scree_slope", "rock_slope",
+static const char *const classes_only[] = {"snow_line", "scree_line", "snow_altitude",
+                                           "scree_altitude", "scree_slope", "rock_slope",
                                            "humidity_map", "humidity_band", "humidity_range",
                                            "dry_humidity", "grass_albedo",
                                            "dry_grass_albedo", "scree_albedo", "rock_albedo",
@@ -76,9 +91,83 @@ static int is_set(const sylva_params *p, const char *name)
     return v && v->is_set;
 }
 
+/* The output grid for an nx x ny DTM: output_nodes, or (N - 1) refine + 1 along each axis. */
+static void output_size(const sylva_params *params, uint32_t nx, uint32_t ny, uint64_t *nxo,
+                        uint64_t *nyo)
+{
+    const sylva_value *out = sylva_param(params, "output_nodes");
+    uint64_t refine = (uint64_t)sylva_param_int(params, "refine");
+    *nxo = out->is_set ? (uint64_t)out->list[0] : (nx - 1) * refine + 1;
+    *nyo = out->is_set ? (uint64_t)out->list[1] : (ny - 1) * refine + 1;
+}
+
+/* Whether the terrain is refined in levels of detail around the eye (lod_levels.h) rather than
+ * uniformly: with refine >= 2, when detail_radius is given, or when the uniform grid would pass
+ * TERRAIN_IFS_UNIFORM_NODES (then the finest window is TERRAIN_IFS_LOD_CELLS output cells
+ * across its half-width). output_nodes always refines uniformly. */
+static void lod_plan(const sylva_params *params, const ifs_dtm *d, int *lod, uint32_t *refine,
+                     double *radius_cells)
+{
+    uint64_t r = (uint64_t)sylva_param_int(params, "refine");
+    double radius = sylva_param_real(params, "detail_radius");
+    uint64_t uniform = ((d->nx - 1) * r + 1) * ((d->ny - 1) * r + 1);
+    *refine = (uint32_t)r;
+    *lod = !sylva_param(params, "output_nodes")->is_set && r >= 2 &&
+           (radius > 0 || uniform > TERRAIN_IFS_UNIFORM_NODES);
+    double spacing = d->dx < d->dy ? d->dx : d->dy;
+    *radius_cells = radius > 0 && spacing > 0 ? radius / spacing : (double)TERRAIN_IFS_LOD_CELLS / r;
+}
+
+/* What the memory check needs beside the DTM's size. */
+typedef struct memory_ask {
+    const sylva_host_api *api;
+    sylva_host *host;
+    const sylva_params *params;
+    const char *source;          /* the DTM, for the sentence */
+} memory_ask;
+
+/* The plugin's own bytes for an nx x ny DTM and its output grid, and the output grid itself (the
+ * host adds its own cost per heightfield node), against the host's memory budget (ABI 1.2). The
+ * plugin holds the DTM (IFS_DTM_BYTES_PER_NODE a node; the maps are computed from it, not
+ * stored), one class byte per output node while classifying, 4 bytes of humidity per output node
+ * with a humidity map, and for the random iteration 16 bytes per output node and worker. */
+static int memory_fits(void *ctx, uint32_t nx, uint32_t ny, ifs_err *err)
+{
+    const memory_ask *m = ctx;
+    if (!SYLVA_API_HAS(m->api, memory_check)) return SYLVA_OK;
+    uint64_t nxo, nyo;
+    output_size(m->params, nx, ny, &nxo, &nyo);
+    int lod;
+    uint32_t refine;
+    double radius;
+    ifs_dtm shape = {.nx = nx, .ny = ny};
+    lod_plan(m->params, &shape, &lod, &refine, &radius);
+    if (lod) { /* the DTM's nodes, and each level at most (2 radius refine + 1)^2 nodes */
+        uint64_t side = (uint64_t)(2 * radius * refine + 2), levels = 0;
+        for (uint32_t r = refine; r > 1; r = r % 2 ? 1 : r / 2) levels++;
+        nxo = nx, nyo = (uint64_t)ny + levels * side * side / nx + 1;
+    }
+    if (nxo > 65536 || nyo > 65536) return SYLVA_OK; /* refused with its own sentence later */
+    uint64_t out = nxo * nyo, per_out = 1;
+    if (sylva_param_str(m->params, "humidity_map")) per_out += 4;
+    if (sylva_param_int(m->params, "method") == 0) {
+        uint64_t threads = (uint64_t)sylva_param_int(m->params, "threads");
+        per_out += 16 * (threads ? threads : ifs_online_processors());
+    }
+    char what[600];
+    snprintf(what, sizeof what, "terrain_ifs: the %u x %u node DTM %s refined to %llu x %llu "
+             "nodes", nx, ny, m->source, (unsigned long long)nxo, (unsigned long long)nyo);
+    if (m->api->memory_check(m->host, (uint64_t)nx * ny * IFS_DTM_BYTES_PER_NODE + out * per_out,
+                             out, what) == SYLVA_OK)
+        return SYLVA_OK;
+    /* the host's sentence is set; the plugin's error carries the status only */
+    err->msg[0] = '\0';
+    return SYLVA_ERR_LIMIT;
+}
+
 /* Loads the DTM from the one source the scene names. */
 static int load_dtm(const sylva_host_api *api, sylva_host *host, const sylva_params *params,
-                    terrain_ifs_state *s)
+                    terrain_ifs_state *s, const char *target_wkt)
 {
     const sylva_value *dtm = sylva_param(params, "dtm"), *heights = sylva_param(params, "heights");
     const sylva_value *cell = sylva_param(params, "cell_size");
@@ -95,6 +184,10 @@ static int load_dtm(const sylva_host_api *api, sylva_host *host, const sylva_par
                                   .units = (ifs_units)sylva_param_int(params, "units"),
                                   .cell_size = {cs[0], cs[1]},
                                   .height_range = {range->list[0], range->list[1]}};
+        char quoted[520];
+        snprintf(quoted, sizeof quoted, "'%s'", dtm->s);
+        memory_ask ask = {api, host, params, quoted};
+        o.check_size = memory_fits, o.check_ctx = &ask, o.target_wkt = target_wkt;
         if (!(range->list[0] < range->list[1]))
             return api->param_error(host, params, "height_range", "height_range [%g, %g] is "
                                     "empty; give [low, high] with low < high", range->list[0],
@@ -110,12 +203,16 @@ static int load_dtm(const sylva_host_api *api, sylva_host *host, const sylva_par
         }
         ifs_dtm_file_info info;
         if ((rc = ifs_dtm_read_file(dtm->s, &o, &s->dtm, &info, &err))) {
-            api->param_error(host, params, "dtm", "%s", err.msg);
+            if (err.msg[0]) api->param_error(host, params, "dtm", "%s", err.msg);
             return rc;
         }
-        snprintf(s->source, sizeof s->source, "%s (%s %s; %u x %u pixels from column %u, row %u; "
-                 "step %u)", dtm->s, info.driver, info.type_name, info.window[2], info.window[3],
-                 info.window[0], info.window[1], o.step);
+        snprintf(s->source, sizeof s->source, "%s (%s %s%s; %u x %u pixels from column %u, row %u; "
+                 "step %u)", dtm->s, info.driver, info.type_name, info.warped ? ", warped into the "
+                 "site's coordinate system" : "", info.window[2], info.window[3], info.window[0],
+                 info.window[1], o.step);
+        s->georeferenced = !info.degrees && !o.cell_size[0];
+        s->node0[0] = info.node0_x, s->node0[1] = info.node0_y;
+        s->crs_read = target_wkt;
         if (info.nodata_filled)
             api->log(host, SYLVA_LOG_INFO, "%s: %llu nodata node%s filled from their neighbours",
                      dtm->s, (unsigned long long)info.nodata_filled,
@@ -219,11 +316,38 @@ static int check_relations(const sylva_host_api *api, sylva_host *host, const sy
                                 "%g; scree lies on gentler slopes than rock",
                                 sylva_param_real(params, "scree_slope"),
                                 sylva_param_real(params, "rock_slope"));
-    if (sylva_param_real(params, "scree_line") > sylva_param_real(params, "snow_line"))
+    static const char *const older[3][2] = {{"snow_altitude", "snow_line"},
+                                             {"scree_altitude", "scree_line"},
+                                             {"water_altitude", "water_level"}};
+    for (int k = 0; k < 3; k++)
+        if (is_set(params, older[k][0]) && is_set(params, older[k][1]))
+            return api->param_error(host, params, older[k][1], "give %s (metres) or %s (a fraction "
+                                    "of the DTM's height range), not both", older[k][0],
+                                    older[k][1]);
+    if (is_set(params, "scree_line") && is_set(params, "snow_line") &&
+        sylva_param_real(params, "scree_line") > sylva_param_real(params, "snow_line"))
         return api->param_error(host, params, "scree_line", "scree_line %g is above snow_line %g; "
                                 "scree lies below the snow", sylva_param_real(params, "scree_line"),
                                 sylva_param_real(params, "snow_line"));
+    if (!is_set(params, "scree_line") && !is_set(params, "snow_line") &&
+        sylva_param_real(params, "scree_altitude") > sylva_param_real(params, "snow_altitude"))
+        return api->param_error(host, params, "scree_altitude", "scree_altitude %g m is above "
+                                "snow_altitude %g m; scree lies below the snow",
+                                sylva_param_real(params, "scree_altitude"),
+                                sylva_param_real(params, "snow_altitude"));
     return SYLVA_OK;
+}
+
+/* A height in metres from parameter `metres`, or from the older `fraction` of the DTM's height
+ * range [zmin, zmax] when that is given. A fraction on a flat DTM: its height when the fraction
+ * is 0, above every height otherwise (all points had normalised altitude 0). */
+static double height_of(const sylva_params *params, const char *metres, const char *fraction,
+                        double zmin, double zmax)
+{
+    if (!is_set(params, fraction)) return sylva_param_real(params, metres);
+    double f = sylva_param_real(params, fraction);
+    if (!(zmax > zmin)) return f > 0 ? INFINITY : zmin;
+    return zmin + f * (zmax - zmin);
 }
 
 static void read_albedo(const sylva_params *params, const char *name, float out[3])
@@ -232,22 +356,14 @@ static void read_albedo(const sylva_params *params, const char *name, float out[
     for (int k = 0; k < 3; k++) out[k] = (float)v[k];
 }
 
-static int terrain_ifs_create(const sylva_host_api *api, sylva_host *host,
-                              const sylva_params *params, void **state)
+/* Everything the plugin derives from its DTM: loads it (in target_wkt when given, else in the
+ * file's own coordinate system), checks the fields that depend on its size, and sizes the
+ * output, the ground-cover rules and the humidity. */
+static int terrain_setup(const sylva_host_api *api, sylva_host *host, const sylva_params *params,
+                         terrain_ifs_state *s, const char *target_wkt)
 {
-    *state = NULL;
-    int rc = check_relations(api, host, params);
-    if (rc) return rc;
-    if (!SYLVA_API_HAS(api, mem_alloc))
-        return api->error(host, "terrain_ifs needs a host with sylva plugin ABI 1.1 or newer (for "
-                          "its allocator); this host speaks %u.%u", api->abi_major, api->abi_minor);
-    terrain_ifs_state *s = api->mem_calloc(1, sizeof *s); /* owned by the plugin until destroy */
-    if (!s) {
-        api->error(host, "terrain_ifs: out of memory for its settings");
-        return SYLVA_ERR_NOMEM;
-    }
-    s->mem_free = api->mem_free;
-    if ((rc = load_dtm(api, host, params, s))) goto fail;
+    int rc;
+    if ((rc = load_dtm(api, host, params, s, target_wkt))) goto fail;
     ifs_dtm *d = s->dtm;
     double zs = sylva_param_real(params, "z_scale"), zo = sylva_param_real(params, "z_offset");
     for (size_t k = 0; k < (size_t)d->nx * d->ny; k++) d->z[k] = d->z[k] * zs + zo;
@@ -256,16 +372,22 @@ static int terrain_ifs_create(const sylva_host_api *api, sylva_host *host,
         goto fail;
 
     const sylva_value *out = sylva_param(params, "output_nodes");
-    uint64_t refine = (uint64_t)sylva_param_int(params, "refine");
-    uint64_t nxo = out->is_set ? (uint64_t)out->list[0] : (d->nx - 1) * refine + 1;
-    uint64_t nyo = out->is_set ? (uint64_t)out->list[1] : (d->ny - 1) * refine + 1;
+    uint64_t nxo, nyo;
+    output_size(params, d->nx, d->ny, &nxo, &nyo);
+    lod_plan(params, d, &s->lod, &s->refine, &s->lod_radius);
+    if (s->lod) nxo = d->nx, nyo = d->ny; /* the DTM's nodes, and the levels in generate() */
     if (nxo > 65536 || nyo > 65536 || nxo * nyo > TERRAIN_IFS_MAX_OUTPUT_NODES) {
         rc = api->param_error(host, params, out->is_set ? "output_nodes" : "refine",
                               "the output grid would have %llu x %llu nodes; at most %u nodes "
-                              "(4097 x 4097) and 65536 along a side are made: lower %s",
+                              "(16384 x 16384) and 65536 along a side are made: lower %s",
                               (unsigned long long)nxo, (unsigned long long)nyo,
                               TERRAIN_IFS_MAX_OUTPUT_NODES, out->is_set ? "output_nodes" : "refine");
         goto fail;
+    }
+    if (!sylva_param_str(params, "dtm")) {
+        ifs_err err = {{0}};
+        memory_ask ask = {api, host, params, s->source};
+        if ((rc = memory_fits(&ask, d->nx, d->ny, &err))) goto fail;
     }
     s->nx_out = (uint32_t)nxo, s->ny_out = (uint32_t)nyo;
 
@@ -297,10 +419,16 @@ static int terrain_ifs_create(const sylva_host_api *api, sylva_host *host,
     }
 
     s->classes = sylva_param_int(params, "surface") == 0;
-    s->water_level = sylva_param_real(params, "water_level");
-    ifs_dtm_range(d, &s->rules.zmin, &s->rules.zmax);
-    s->rules.snow_line = sylva_param_real(params, "snow_line");
-    s->rules.scree_line = sylva_param_real(params, "scree_line");
+    /* Altitudes in metres; the older fractions of the DTM's height range when given. */
+    double zmin, zmax;
+    ifs_dtm_range(d, &zmin, &zmax);
+    s->zmin = zmin, s->zmax = zmax;
+    s->rules.snow_z = height_of(params, "snow_altitude", "snow_line", zmin, zmax);
+    s->rules.scree_z = height_of(params, "scree_altitude", "scree_line", zmin, zmax);
+    s->has_water = is_set(params, "water_altitude") || sylva_param_real(params, "water_level") > 0;
+    s->water_z = is_set(params, "water_level")
+                     ? zmin + sylva_param_real(params, "water_level") * (zmax - zmin)
+                     : sylva_param_real(params, "water_altitude");
     s->rules.scree_slope = sylva_param_real(params, "scree_slope");
     s->rules.rock_slope = sylva_param_real(params, "rock_slope");
     s->rules.dry_humidity = sylva_param_real(params, "dry_humidity");
@@ -341,6 +469,28 @@ static int terrain_ifs_create(const sylva_host_api *api, sylva_host *host,
             goto fail;
         }
     }
+    return SYLVA_OK;
+fail:
+    return rc;
+}
+
+static int terrain_ifs_create(const sylva_host_api *api, sylva_host *host,
+                              const sylva_params *params, void **state)
+{
+    *state = NULL;
+    int rc = check_relations(api, host, params);
+    if (rc) return rc;
+    if (!SYLVA_API_HAS(api, mem_alloc))
+        return api->error(host, "terrain_ifs needs a host with sylva plugin ABI 1.1 or newer (for "
+                          "its allocator); this host speaks %u.%u", api->abi_major, api->abi_minor);
+    terrain_ifs_state *s = api->mem_calloc(1, sizeof *s); /* owned by the plugin until destroy */
+    if (!s) {
+        api->error(host, "terrain_ifs: out of memory for its settings");
+        return SYLVA_ERR_NOMEM;
+    }
+    s->mem_free = api->mem_free;
+    s->params = params;
+    if ((rc = terrain_setup(api, host, params, s, NULL))) goto fail;
     *state = s;
     return SYLVA_OK;
 fail:
@@ -361,21 +511,23 @@ static void report_progress(void *pctx, uint64_t done, uint64_t total)
     p->api->progress(p->host, p->label, done, total);
 }
 
-/* The heights: random iteration or deterministic evaluation into hf->z. */
+/* The heights of window `win` of the nx x ny output lattice over the footprint: random
+ * iteration or deterministic evaluation into z (win->nx * win->ny). */
 static int compute_heights(const terrain_ifs_state *s, const ifs_maps *maps, uint32_t depth,
-                           const sylva_host_api *api, sylva_host *host, sylva_heightfield *hf)
+                           uint32_t nx, uint32_t ny, const ifs_window *win,
+                           const sylva_host_api *api, sylva_host *host, float *z)
 {
     ifs_err err = {{0}};
     int rc;
     if (!s->random) {
         progress_sink p = {api, host, "terrain_ifs evaluation"};
-        if ((rc = ifs_eval_grid(maps, s->nx_out, s->ny_out, depth, s->threads, hf->z,
-                                report_progress, &p, &err))) {
+        if ((rc = ifs_eval_window(maps, nx, ny, win, depth, s->threads, z, report_progress, &p,
+                                  &err))) {
             api->error(host, "%s", err.msg);
             return rc;
         }
         api->log(host, SYLVA_LOG_INFO, "deterministic evaluation f_%u at %u x %u nodes", depth,
-                 s->nx_out, s->ny_out);
+                 win->nx, win->ny);
         return SYLVA_OK;
     }
     uint64_t chains = ifs_chaos_chain_count(s->iterations);
@@ -389,10 +541,10 @@ static int compute_heights(const terrain_ifs_state *s, const ifs_maps *maps, uin
     progress_sink p = {api, host, "terrain_ifs random iteration"};
     ifs_chaos_job job = {.points = s->iterations, .start_u = s->start_u, .start_v = s->start_v,
                          .start_z = s->start_z, .streams = streams, .rng_u64 = api->rng_u64,
-                         .nx = s->nx_out, .ny = s->ny_out, .depth = depth, .threads = s->threads,
+                         .nx = nx, .ny = ny, .window = *win, .depth = depth, .threads = s->threads,
                          .progress = report_progress, .pctx = &p};
     ifs_chaos_stats stats;
-    rc = ifs_chaos_grid(maps, &job, hf->z, &stats, &err);
+    rc = ifs_chaos_grid(maps, &job, z, &stats, &err);
     api->mem_free(streams);
     if (rc) {
         api->error(host, "%s", err.msg);
@@ -400,66 +552,184 @@ static int compute_heights(const terrain_ifs_state *s, const ifs_maps *maps, uin
     }
     api->log(host, SYLVA_LOG_INFO, "random iteration: %llu points on %u x %u nodes (%u thread%s); "
              "%llu node%s no point reached took f_%u", (unsigned long long)s->iterations,
-             s->nx_out, s->ny_out, stats.workers, stats.workers == 1 ? "" : "s",
+             win->nx, win->ny, stats.workers, stats.workers == 1 ? "" : "s",
              (unsigned long long)stats.empty_nodes, stats.empty_nodes == 1 ? "" : "s", depth);
     return SYLVA_OK;
 }
 
-/* Ground-cover materials per node, and the water material. */
-static int apply_surface(const terrain_ifs_state *s, const sylva_host_api *api, sylva_host *host,
-                         sylva_heightfield *hf)
+/* Classes of an nx x ny grid of heights dx x dy apart into material ids (ids per class), counted
+ * into counts. */
+static int classify_grid(const terrain_ifs_state *s, const sylva_host_api *api, sylva_host *host,
+                         const float *z, uint32_t nx, uint32_t ny, double dx, double dy,
+                         const float *humidity, const int32_t ids[IFS_SURFACE_CLASSES],
+                         int32_t *material, uint64_t counts[IFS_SURFACE_CLASSES])
 {
-    size_t n = (size_t)hf->nx * hf->ny;
+    ifs_surface_rules rules = s->rules; /* altitudes are the DTM's; the heights are local */
+    rules.snow_z -= s->z_shift, rules.scree_z -= s->z_shift;
+    size_t n = (size_t)nx * ny;
     uint8_t *cls = api->mem_alloc(n); /* owned here */
-    int rc = SYLVA_OK;
     if (!cls) {
         api->error(host, "terrain_ifs: out of memory classifying %zu nodes", n);
         return SYLVA_ERR_NOMEM;
     }
-    ifs_surface_classify(hf->z, hf->nx, hf->ny, hf->dx, hf->dy, s->humidity, &s->rules, cls);
+    ifs_surface_classify(z, nx, ny, dx, dy, humidity, &rules, cls);
+    for (size_t k = 0; k < n; k++) material[k] = ids[cls[k]], counts[cls[k]]++;
+    api->mem_free(cls);
+    return SYLVA_OK;
+}
+
+/* The humidity of level l's nodes: that of the nearest node of the output grid the humidity map
+ * was sampled on (the DTM's nodes when there are levels), into a new array (host allocator). */
+static float *level_humidity(const terrain_ifs_state *s, const sylva_host_api *api,
+                             const sylva_terrain_level *l)
+{
+    float *h = api->mem_alloc((size_t)l->nx * l->ny * sizeof *h); /* owned by the caller */
+    for (uint32_t j = 0; h && j < l->ny; j++)
+        for (uint32_t i = 0; i < l->nx; i++) {
+            uint32_t bi = l->i0 + (i + l->refine / 2) / l->refine, bj = l->j0 + (j + l->refine / 2) / l->refine;
+            h[(size_t)j * l->nx + i] = s->humidity[(size_t)bj * s->nx_out + bi];
+        }
+    return h;
+}
+
+/* Ground-cover materials per node of the heightfield and of its levels, and the water material. */
+static int apply_surface(const terrain_ifs_state *s, const sylva_host_api *api, sylva_host *host,
+                         sylva_heightfield *hf)
+{
     int32_t ids[IFS_SURFACE_CLASSES];
-    uint64_t counts[IFS_SURFACE_CLASSES] = {0};
+    uint64_t counts[IFS_SURFACE_CLASSES] = {0}, level_counts[IFS_SURFACE_CLASSES] = {0};
     for (int c = 0; c < IFS_SURFACE_CLASSES; c++) {
         char name[48];
         snprintf(name, sizeof name, "terrain_ifs %s", ifs_surface_class_name((ifs_surface_class)c));
         sylva_material_desc m = {.size = sizeof m, .name = name, .bsdf = SYLVA_BSDF_LAMBERT,
                                  .texture = -1};
         memcpy(m.albedo, s->albedo[c], sizeof m.albedo);
-        if ((ids[c] = api->material_new(host, &m)) < 0) {
-            rc = ids[c];
-            goto done;
-        }
+        if ((ids[c] = api->material_new(host, &m)) < 0) return ids[c];
     }
-    for (size_t k = 0; k < n; k++) hf->material[k] = ids[cls[k]], counts[cls[k]]++;
+    int rc = classify_grid(s, api, host, hf->z, hf->nx, hf->ny, hf->dx, hf->dy, s->humidity, ids,
+                           hf->material, counts);
+    for (uint32_t k = 0; !rc && k < hf->n_levels; k++) {
+        const sylva_terrain_level *l = &hf->levels[k];
+        float *hum = s->humidity ? level_humidity(s, api, l) : NULL;
+        if (s->humidity && !hum) {
+            api->error(host, "terrain_ifs: out of memory for the humidity of a level of detail");
+            return SYLVA_ERR_NOMEM;
+        }
+        rc = classify_grid(s, api, host, l->z, l->nx, l->ny, hf->dx / l->refine, hf->dy / l->refine,
+                           hum, ids, l->material, level_counts);
+        api->mem_free(hum);
+    }
+    if (rc) return rc;
+    double n = (double)hf->nx * hf->ny;
     api->log(host, SYLVA_LOG_INFO, "ground: %.1f%% grass, %.1f%% dry grass, %.1f%% scree, "
              "%.1f%% rock, %.1f%% snow", 100.0 * counts[0] / n, 100.0 * counts[1] / n,
              100.0 * counts[2] / n, 100.0 * counts[3] / n, 100.0 * counts[4] / n);
-    if (s->water_level > 0) {
+    if (s->has_water) {
         sylva_material_desc w = {.size = sizeof w, .name = "terrain_ifs water",
                                  .bsdf = SYLVA_BSDF_LAMBERT, .texture = -1};
         memcpy(w.albedo, s->water_albedo, sizeof w.albedo);
-        if ((hf->water_material = api->material_new(host, &w)) < 0) rc = hf->water_material;
+        if ((hf->water_material = api->material_new(host, &w)) < 0) return hf->water_material;
     }
-done:
-    api->mem_free(cls);
-    return rc;
+    return SYLVA_OK;
+}
+
+/* Levels of detail (lod_levels.h): the DTM's own heights over the whole footprint, and around
+ * the eye (DTM cell units from node (0, 0); NaN: the footprint's centre) windows refined at
+ * halving resolutions, each refined as the uniform grid of its resolution would be there, its
+ * rim then pinned onto the coarser level around it. */
+static int refine_levels(const terrain_ifs_state *s, const ifs_maps *maps, uint32_t depth,
+                         const double eye[2], const sylva_host_api *api, sylva_host *host,
+                         sylva_heightfield *hf)
+{
+    if (!SYLVA_API_HAS(api, heightfield_level_new))
+        return api->error(host, "terrain_ifs: levels of detail need a host with sylva plugin ABI "
+                          "1.2; this host speaks %u.%u (set detail_radius to 0 and lower refine)",
+                          api->abi_major, api->abi_minor);
+    const ifs_dtm *d = s->dtm;
+    for (size_t k = 0; k < (size_t)d->nx * d->ny; k++) hf->z[k] = (float)d->z[k];
+    ifs_lod_window w[IFS_LOD_MAX_LEVELS];
+    uint32_t n = ifs_lod_windows(d->nx - 1, d->ny - 1, s->refine, eye[0], eye[1], s->lod_radius, w);
+    ifs_lod_window base = {0, 0, d->nx - 1, d->ny - 1, 1};
+    const float *coarser = hf->z;
+    const ifs_lod_window *around = &base;
+    for (uint32_t k = 0; k < n; k++) {
+        sylva_terrain_level *l = api->heightfield_level_new(host, hf, w[k].i0, w[k].j0, w[k].cells_x,
+                                                            w[k].cells_y, w[k].refine, s->classes);
+        if (!l) return SYLVA_ERR_LIMIT; /* the host has said why */
+        uint32_t r = w[k].refine;
+        ifs_window win = {w[k].i0 * r, w[k].j0 * r, l->nx, l->ny};
+        int rc = compute_heights(s, maps, depth, (d->nx - 1) * r + 1, (d->ny - 1) * r + 1, &win, api,
+                                 host, l->z);
+        if (rc) return rc;
+        ifs_lod_pin_rim(around, coarser, &w[k], l->z);
+        coarser = l->z, around = &w[k];
+        /* the level pointer is the host's until the next level: heights are final here */
+    }
+    api->log(host, SYLVA_LOG_INFO, "levels of detail: the DTM's %u x %u nodes, and %u window%s "
+             "around (%.0f, %.0f) m refined %u to 2 times (finest half-width %.0f m)", d->nx, d->ny,
+             n, n == 1 ? "" : "s", hf->x0 + eye[0] * hf->dx, hf->y0 + eye[1] * hf->dy, s->refine,
+             s->lod_radius * hf->dx);
+    return SYLVA_OK;
+}
+
+/* A site (ABI 1.2 request): the DTM file read in the site's CRS (warped when the file's
+ * differs), its heights taken down by the origin's height. Sets *placed when the DTM's own
+ * georeferencing places it (a file read in metres of its CRS), 0 when it keeps `centre`. */
+static int site_prepare(terrain_ifs_state *s, const sylva_host_api *api, sylva_host *host,
+                        const sylva_terrain_request *req, int *placed)
+{
+    *placed = 0;
+    const char *path = sylva_param_str(s->params, "dtm");
+    if (!path) {
+        api->log(host, SYLVA_LOG_INFO, "the scene has a site; the %s has no coordinates of its own "
+                 "and stands at centre", s->source);
+    } else if (!s->crs_checked) {
+        ifs_raster r;
+        ifs_err err = {{0}};
+        int rc = ifs_raster_open_in(path, (uint32_t)sylva_param_int(s->params, "band"), "DTM",
+                                    req->site_crs, &r, &err);
+        int warp = r.warped;
+        ifs_raster_close(&r);
+        if (rc) return api->param_error(host, s->params, "dtm", "%s", err.msg);
+        s->crs_checked = 1;
+        if (warp) { /* read it again, in the site's CRS */
+            ifs_dtm_free(s->dtm), s->dtm = NULL;
+            s->mem_free(s->humidity), s->humidity = NULL;
+            s->z_shift = 0;
+            if ((rc = terrain_setup(api, host, s->params, s, req->site_crs))) return rc;
+        }
+    }
+    if (path && !s->georeferenced)
+        api->log(host, SYLVA_LOG_WARN, "%s: its node spacing is not its coordinate system's (cell_size "
+                 "or degrees), so it stands at centre, not at its map position", path);
+    *placed = path && s->georeferenced;
+    double shift = req->site_origin[2] - s->z_shift;
+    if (shift != 0.0) {
+        for (size_t k = 0; k < (size_t)s->dtm->nx * s->dtm->ny; k++) s->dtm->z[k] -= shift;
+        if (!s->has_start) s->start_z -= shift;
+        s->z_shift = req->site_origin[2];
+    }
+    return SYLVA_OK;
 }
 
 static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_host *host,
                                 const void *request, void *out)
 {
-    const terrain_ifs_state *s = state;
+    terrain_ifs_state *s = state;
+    const sylva_terrain_request *req = request;
     sylva_terrain_out *o = out;
-    (void)request; /* the scene seed reaches the plugin through api->rng_init */
     if (o->size < offsetof(sylva_terrain_out, terrain) + sizeof o->terrain) {
         api->error(host, "terrain_ifs: the host's terrain output is too small (%u bytes)", o->size);
         return SYLVA_ERR_INTERNAL;
     }
+    int placed = 0, rc;
+    const int site = req && SYLVA_HAS_FIELD(req, sylva_terrain_request, eye) && req->site_crs;
+    if (site && (rc = site_prepare(s, api, host, req, &placed))) return rc;
     ifs_err err = {{0}};
     ifs_maps *maps = NULL;
     ifs_maps_params mp = {.mode = s->mode, .alpha = s->alpha, .alpha_field = s->alpha_field,
                           .probability = s->probability_field};
-    int rc = ifs_maps_build(s->dtm, &mp, &maps, &err);
+    rc = ifs_maps_build(s->dtm, &mp, &maps, &err);
     if (rc) {
         api->error(host, "%s", err.msg);
         return rc;
@@ -471,23 +741,39 @@ static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_ho
     }
     double width = (s->dtm->nx - 1) * s->dtm->dx, depth_m = (s->dtm->ny - 1) * s->dtm->dy;
     hf->x0 = s->centre[0] - 0.5 * width, hf->y0 = s->centre[1] - 0.5 * depth_m;
+    if (placed) /* node (E, N) at local (E - origin E, N - origin N) */
+        hf->x0 = s->node0[0] - req->site_origin[0], hf->y0 = s->node0[1] - req->site_origin[1];
     hf->dx = width / (s->nx_out - 1), hf->dy = depth_m / (s->ny_out - 1);
-    uint32_t depth = s->depth ? s->depth : ifs_eval_auto_depth(maps, s->nx_out, s->ny_out);
+    /* with levels of detail: the depth of the uniform refinement the finest level stands for */
+    uint32_t depth = s->depth ? s->depth
+                     : s->lod ? ifs_eval_auto_depth(maps, (s->dtm->nx - 1) * s->refine + 1,
+                                                    (s->dtm->ny - 1) * s->refine + 1)
+                              : ifs_eval_auto_depth(maps, s->nx_out, s->ny_out);
     api->log(host, SYLVA_LOG_INFO, "%s: %u x %u nodes %.3g x %.3g m apart, heights %.1f to %.1f m; "
              "%s maps, alpha %s (largest |alpha| %g: detail up to about %.3g m per cell, alpha "
              "times the DTM's %.3g m departure from the surface of its corners)", s->source,
-             s->dtm->nx, s->dtm->ny, s->dtm->dx, s->dtm->dy, s->rules.zmin, s->rules.zmax,
+             s->dtm->nx, s->dtm->ny, s->dtm->dx, s->dtm->dy, s->zmin, s->zmax,
              s->mode == IFS_MODE_AFFINE ? "affine" : "bilinear",
              s->alpha_field ? "per cell" : "global", maps->alpha_max,
              maps->alpha_max * maps->corner_departure, maps->corner_departure);
-    rc = compute_heights(s, maps, depth, api, host, hf);
+    if (s->lod) {
+        double eye[2] = {NAN, NAN};
+        if (req && SYLVA_HAS_FIELD(req, sylva_terrain_request, eye))
+            eye[0] = (req->eye[0] - hf->x0) / hf->dx, eye[1] = (req->eye[1] - hf->y0) / hf->dy;
+        rc = refine_levels(s, maps, depth, eye, api, host, hf);
+    } else {
+        ifs_window whole = {0, 0, s->nx_out, s->ny_out};
+        rc = compute_heights(s, maps, depth, s->nx_out, s->ny_out, &whole, api, host, hf->z);
+    }
     ifs_maps_free(maps);
     if (rc) return rc;
-    if (s->water_level > 0) {
+    if (s->has_water) {
         hf->has_water = 1;
-        hf->water_level = s->rules.zmin + s->water_level * (s->rules.zmax - s->rules.zmin);
+        hf->water_level = s->water_z - s->z_shift;
     }
     if (s->classes && (rc = apply_surface(s, api, host, hf))) return rc;
+    if (SYLVA_HAS_FIELD(hf, sylva_heightfield, beyond_edge))
+        hf->beyond_edge = sylva_param_int(s->params, "beyond_edge") == 0 ? SYLVA_EDGE_FLAT : SYLVA_EDGE_VOID;
     o->terrain = hf;
     return SYLVA_OK;
 }

@@ -12,6 +12,7 @@ static const char *const mode_choices[] = {"bilinear", "affine", NULL};
 static const char *const method_choices[] = {"random", "deterministic", NULL};
 static const char *const units_choices[] = {"auto", "metres", "degrees", NULL};
 static const char *const surface_choices[] = {"classes", "scene", NULL};
+static const char *const beyond_edge_choices[] = {"flat", "void", NULL};
 
 static const double def_generated_nodes[] = {17, 17};
 static const double def_centre[] = {0, 0};
@@ -70,6 +71,9 @@ const sylva_param_spec terrain_ifs_params[] = {
      .help = "Factor on every DTM height (vertical exaggeration or a unit conversion)."},
     {.name = "z_offset", .type = SYLVA_P_REAL, .flags = RANGE, .def = 0, .min = -100000,
      .max = 100000, .unit = "m", .help = "Added to every DTM height after z_scale."},
+    {.name = "beyond_edge", .type = SYLVA_P_ENUM, .def_str = "flat", .choices = beyond_edge_choices,
+     .help = "flat: past the DTM's edge the ground goes on, flat at the edge's heights, to the "
+             "horizon; void: nothing past the edge (the sky shows under the horizon)."},
     {.name = "centre", .type = SYLVA_P_LIST, .def_list = def_centre, .def_len = 2, .min_len = 2,
      .max_len = 2, .unit = "m",
      .help = "Where the centre of the DTM's footprint stands in the scene, [x, y]."},
@@ -102,6 +106,12 @@ const sylva_param_spec terrain_ifs_params[] = {
              "reached); 0: enough for the output spacing and for alpha^K <= 1e-4."},
     {.name = "refine", .type = SYLVA_P_INT, .flags = RANGE, .def = 4, .min = 1, .max = 1024,
      .help = "Output nodes per DTM cell along each axis: (N - 1) refine + 1 nodes along x."},
+    {.name = "detail_radius", .type = SYLVA_P_REAL, .flags = RANGE, .def = 0, .min = 0,
+     .max = 1e7, .unit = "m",
+     .help = "Levels of detail: refine only within this distance of the camera (ring by ring "
+             "coarser beyond, halving the refine, the DTM's own nodes everywhere); 0: uniform "
+             "refinement unless it passes 4097 x 4097 nodes, then 1024 output cells around the "
+             "camera."},
     {.name = "output_nodes", .type = SYLVA_P_LIST, .flags = RANGE, .min = 2, .max = 65536,
      .max_len = 2, .help = "Output grid size [nx, ny] in nodes, instead of refine."},
     {.name = "threads", .type = SYLVA_P_INT, .flags = RANGE, .def = 0, .min = 0,
@@ -111,13 +121,27 @@ const sylva_param_spec terrain_ifs_params[] = {
     {.name = "surface", .type = SYLVA_P_ENUM, .def_str = "classes", .choices = surface_choices,
      .help = "classes: grass, dry grass, scree, rock and snow by slope, altitude and humidity; "
              "scene: the terrain's material from the scene everywhere."},
+    {.name = "water_altitude", .type = SYLVA_P_REAL, .flags = RANGE, .def = 0, .min = -100000,
+     .max = 100000, .unit = "m",
+     .help = "Height of a water surface in metres of the DTM's heights (after z_scale and "
+             "z_offset); leave out for no water (or give water_level)."},
     {.name = "water_level", .type = SYLVA_P_REAL, .flags = RANGE, .def = 0, .min = 0, .max = 1,
-     .help = "Normalised altitude y_w of the water surface over the DTM's height range; 0: no "
-             "water."},
+     .help = "Older form of water_altitude: the normalised altitude y_w of the water surface over "
+             "the DTM's height range; 0: no water."},
+    {.name = "snow_altitude", .type = SYLVA_P_REAL, .flags = RANGE,
+     .def = TERRAIN_IFS_DEFAULT_SNOW_ALTITUDE, .min = -100000, .max = 100000, .unit = "m",
+     .help = "Height above which snow lies (on slopes below rock_slope), metres of the DTM's "
+             "heights; the default is about the summer snow line of the Alps."},
+    {.name = "scree_altitude", .type = SYLVA_P_REAL, .flags = RANGE,
+     .def = TERRAIN_IFS_DEFAULT_SCREE_ALTITUDE, .min = -100000, .max = 100000, .unit = "m",
+     .help = "Height above which grass gives way to scree, metres of the DTM's heights; the "
+             "default is about the upper limit of closed alpine grassland."},
     {.name = "snow_line", .type = SYLVA_P_REAL, .flags = RANGE, .def = 0.8, .min = 0, .max = 2,
-     .help = "Normalised altitude above which snow lies (slopes below rock_slope)."},
+     .help = "Older form of snow_altitude: a normalised altitude over the DTM's height range "
+             "(used only when given)."},
     {.name = "scree_line", .type = SYLVA_P_REAL, .flags = RANGE, .def = 0.6, .min = 0, .max = 2,
-     .help = "Normalised altitude above which grass gives way to scree."},
+     .help = "Older form of scree_altitude: a normalised altitude over the DTM's height range "
+             "(used only when given)."},
     {.name = "scree_slope", .type = SYLVA_P_REAL, .flags = RANGE, .def = 30, .min = 0, .max = 90,
      .unit = "deg", .help = "Slope from which the ground is scree."},
     {.name = "rock_slope", .type = SYLVA_P_REAL, .flags = RANGE, .def = 42, .min = 0, .max = 90,

@@ -8,11 +8,15 @@
 
 #include "sylva/plugin.h"
 
-#define TERRAIN_IFS_N_PARAMS 39u
+#define TERRAIN_IFS_N_PARAMS 44u
 extern const sylva_param_spec terrain_ifs_params[TERRAIN_IFS_N_PARAMS];
 
 /* Defaults the plugin needs beside the schema. */
 #define TERRAIN_IFS_DEFAULT_CELL 25.0          /* m: node spacing of inline and generated DTMs */
-#define TERRAIN_IFS_MAX_OUTPUT_NODES 16785409u /* 4097 x 4097 output nodes */
+#define TERRAIN_IFS_DEFAULT_SNOW_ALTITUDE 2800.0  /* m */
+#define TERRAIN_IFS_DEFAULT_SCREE_ALTITUDE 2300.0 /* m */
+#define TERRAIN_IFS_UNIFORM_NODES 16785409u /* 4097 x 4097: larger refines in levels of detail */
+#define TERRAIN_IFS_LOD_CELLS 1024u          /* automatic finest window: half-width in its cells */
+#define TERRAIN_IFS_MAX_OUTPUT_NODES (1u << 28) /* the host's largest heightfield */
 
 #endif

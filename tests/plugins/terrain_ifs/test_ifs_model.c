@@ -120,7 +120,8 @@ TEST(bilinear_maps_fix_all_four_corners)
     double worst = 0;
     for (uint32_t cm = 0; cm < 8; cm++)
         for (uint32_t cn = 0; cn < 8; cn++) {
-            const ifs_map *w = &m->map[cm * 8 + cn];
+            ifs_map map = ifs_maps_cell(m, cm * 8 + cn);
+            const ifs_map *w = &map;
             for (int k = 0; k < 4; k++) {
                 double zg = d->z[cj[k] * 9 + ci[k]];
                 double f = w->c0 + w->cu * U[k] + w->cv * V[k] + w->cuv * U[k] * V[k] + w->alpha * zg;
@@ -450,8 +451,9 @@ TEST(bad_maps_and_iterations_are_refused)
     CHECK_STR_CONTAINS(err.msg, "1 x 1 nodes; the IFS needs at least 3 x 3");
     double four[4] = {1, 2, 3, 4};
     CHECK(ifs_dtm_from_rows(four, 2, 2, 1, 1, &tiny, &err) == SYLVA_ERR_PARAM);
-    CHECK(ifs_dtm_check_size(2000, 2000, &err) == SYLVA_ERR_LIMIT);
+    CHECK(ifs_dtm_check_size(70000, 10, &err) == SYLVA_ERR_LIMIT);
     CHECK_STR_CONTAINS(err.msg, "crop it or raise the resampling step");
+    CHECK(ifs_dtm_check_size(10000, 10000, &err) == SYLVA_OK); /* sized by memory, not a cap */
     CHECK(tiny == NULL);
     ifs_dtm_free(d);
 }
@@ -514,14 +516,14 @@ TEST(nodata_is_filled_from_neighbours)
 
 TEST(ground_cover_rules)
 {
-    ifs_surface_rules r = {.zmin = 0, .zmax = 100, .snow_line = 0.8, .scree_line = 0.6,
-                           .scree_slope = 30, .rock_slope = 42, .dry_humidity = 0.3};
-    CHECK_INT(ifs_surface_class_of(10, 0.2, 1.0, &r), IFS_SURFACE_GRASS);
-    CHECK_INT(ifs_surface_class_of(10, 0.2, 0.1, &r), IFS_SURFACE_DRY_GRASS);
-    CHECK_INT(ifs_surface_class_of(35, 0.2, 1.0, &r), IFS_SURFACE_SCREE);
-    CHECK_INT(ifs_surface_class_of(10, 0.7, 1.0, &r), IFS_SURFACE_SCREE);
-    CHECK_INT(ifs_surface_class_of(50, 0.9, 1.0, &r), IFS_SURFACE_ROCK);
-    CHECK_INT(ifs_surface_class_of(20, 0.9, 1.0, &r), IFS_SURFACE_SNOW);
+    ifs_surface_rules r = {.snow_z = 80, .scree_z = 60, .scree_slope = 30, .rock_slope = 42,
+                           .dry_humidity = 0.3};
+    CHECK_INT(ifs_surface_class_of(10, 20, 1.0, &r), IFS_SURFACE_GRASS);
+    CHECK_INT(ifs_surface_class_of(10, 20, 0.1, &r), IFS_SURFACE_DRY_GRASS);
+    CHECK_INT(ifs_surface_class_of(35, 20, 1.0, &r), IFS_SURFACE_SCREE);
+    CHECK_INT(ifs_surface_class_of(10, 70, 1.0, &r), IFS_SURFACE_SCREE);
+    CHECK_INT(ifs_surface_class_of(50, 90, 1.0, &r), IFS_SURFACE_ROCK);
+    CHECK_INT(ifs_surface_class_of(20, 90, 1.0, &r), IFS_SURFACE_SNOW);
     /* a ramp rising 1 m per metre (45 degrees) along x on a grid 1 m apart */
     float z[5 * 3];
     for (int j = 0; j < 3; j++)

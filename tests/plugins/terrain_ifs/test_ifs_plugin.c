@@ -9,12 +9,16 @@
 #include <sys/stat.h>
 
 #include <gdal.h>
+#include <cpl_conv.h>
+#include <ogr_srs_api.h>
 
 #include "harness.h"
 #include "plugin/plugin_host.h"
 #include "scene/scene.h"
 #include "scene/scene_build.h"
+#include "scene/heightfield.h"
 #include "scene/scene_file.h"
+#include "render/accel.h"
 
 #define OUT_DIR SYLVA_TEST_OUT_DIR
 
@@ -53,16 +57,29 @@ static const char *scene_write(const char *name, int seed, const char *terrain_k
     return path;
 }
 
-/* Loads and builds a scene; NULL with err set on failure. */
-static scene *scene_from(const char *path, plugin_registry *reg, err_buf *err)
+/* Loads and builds a scene with the site (CRS as WKT, or NULL for none, and origin) filled in as
+ * the scene's site section would: the plugin receives them in its terrain request. NULL with err
+ * set on failure. */
+static scene *scene_with_site(const char *path, plugin_registry *reg, const char *wkt,
+                              const double origin[3], err_buf *err)
 {
     err_clear(err);
     scene_file *sf = scene_file_load(path, reg, err);
     if (!sf) return NULL;
+    sf->site.crs_wkt = wkt;
+    memcpy(sf->site.origin, origin, sizeof sf->site.origin);
     build_options opt = {.quiet = 1};
     scene *s = scene_build(sf, reg, &opt, err);
+    sf->site.crs_wkt = NULL; /* the test's string */
     scene_file_free(sf);
     return s;
+}
+
+/* Loads and builds a scene without a site; NULL with err set on failure. */
+static scene *scene_from(const char *path, plugin_registry *reg, err_buf *err)
+{
+    const double origin[3] = {0, 0, 0};
+    return scene_with_site(path, reg, NULL, origin, err);
 }
 
 static scene *scene_ok(const char *name, int seed, const char *keys, plugin_registry *reg)
@@ -81,7 +98,7 @@ TEST(descriptor_and_schema)
     err_buf err;
     const loaded_plugin *lp = plugin_registry_find(reg, "terrain_ifs", SYLVA_KIND_TERRAIN, &err);
     if (lp) {
-        CHECK_INT(lp->desc->n_params, 39);
+        CHECK_INT(lp->desc->n_params, 44);
         CHECK(plugin_schema_check(lp->desc->params, lp->desc->n_params, &err) == 0);
         CHECK_STR_CONTAINS(lp->desc->summary, "IFS");
     }
@@ -278,7 +295,7 @@ TEST(bad_input_is_refused_clearly)
         {"dtm: x.tif\nheights: [[1, 2, 3], [1, 2, 3], [1, 2, 3]]", "give dtm or heights, not both"},
         {"step: 2", "step applies to a dtm file"},
         {"method: deterministic\niterations: 10", "iterations and start belong to method: random"},
-        {"refine: 1024", "the output grid would have 16385 x 16385 nodes"},
+        {"output_nodes: [20000, 20000]", "the output grid would have 20000 x 20000 nodes"},
         {"output_nodes: [100]", "output_nodes must be two whole numbers"},
         {"start: [100000, 0, 0]", "lies outside the DTM"},
         {"start: [0, 0]", "start has 2 numbers"},
@@ -311,7 +328,330 @@ TEST(bad_input_is_refused_clearly)
     plugin_registry_free(reg);
 }
 
+/* The share of heightfield nodes whose material is the named ground-cover class. */
+static double class_share(const scene *s, const char *class_name)
+{
+    const sylva_heightfield *t = s->terrain;
+    uint64_t n = 0, total = (uint64_t)t->nx * t->ny;
+    char want[48];
+    snprintf(want, sizeof want, "terrain_ifs %s", class_name);
+    for (uint64_t k = 0; k < total; k++)
+        if (t->material[k] >= 0 && !strcmp(s->materials[t->material[k]].name, want)) n++;
+    return (double)n / total;
+}
+
+/* Snow and scree lie by altitude in metres and slope in degrees: a 50 m-relief site has no
+ * snow by default (the fractions of the height range put 20 % of it under snow before), a site
+ * from 2,000 to 3,200 m has snow exactly on the gentle nodes from snow_altitude up, the older
+ * fractions still work when given, and giving both forms is refused. */
+TEST(snow_and_scree_in_metres)
+{
+    plugin_registry *reg = registry();
+    if (!reg) return;
+    scene *s = scene_ok("low_relief", 3, "method: deterministic\ngenerated: {nodes: [17, 17], "
+                        "relief: 50}", reg);
+    if (s && s->terrain) {
+        CHECK(class_share(s, "snow") == 0.0);
+        CHECK(class_share(s, "grass") > 0.5);
+    }
+    scene_free(s);
+    s = scene_ok("alpine", 3, "method: deterministic\nz_offset: 2000\nsnow_altitude: 2900\n"
+                 "generated: {nodes: [17, 17], relief: 1200}\ncell_size: [400, 400]", reg);
+    if (s && s->terrain) {
+        const sylva_heightfield *t = s->terrain;
+        uint32_t wrong = 0, snow = 0;
+        for (uint32_t j = 0; j < t->ny; j++)
+            for (uint32_t i = 0; i < t->nx; i++) {
+                size_t k = (size_t)j * t->nx + i;
+                const char *name = s->materials[t->material[k]].name;
+                int is_snow = !strcmp(name, "terrain_ifs snow"), is_rock = !strcmp(name, "terrain_ifs rock");
+                snow += is_snow;
+                if (is_snow != (t->z[k] >= 2900 && !is_rock)) wrong++;
+            }
+        CHECK_INT(wrong, 0);
+        CHECK(snow > 0);
+    }
+    scene_free(s);
+    s = scene_ok("fractions", 3, "method: deterministic\nsnow_line: 0.8\nscree_line: 0.6\n"
+                 "generated: {nodes: [17, 17], relief: 50}", reg);
+    if (s && s->terrain) CHECK(class_share(s, "snow") > 0.0);
+    scene_free(s);
+    err_buf err;
+    s = scene_from(scene_write("both_forms", 3, "snow_line: 0.8\nsnow_altitude: 2000"), reg, &err);
+    CHECK(s == NULL);
+    scene_free(s);
+    CHECK_STR_CONTAINS(err.msg, "give snow_altitude (metres) or snow_line");
+    plugin_registry_free(reg);
+}
+
+/* The height of the site test's DTM at map point (e, n) of EPSG:32611: a tilted plane. */
+static double site_plane(double e, double n) { return 1000.0 + 0.05 * (e - 500000) + 0.03 * (n - 4098800); }
+
+static char *wkt_of_epsg(int code)
+{
+    OGRSpatialReferenceH srs = OSRNewSpatialReference(NULL);
+    char *wkt = NULL, *copy = NULL;
+    if (srs && OSRImportFromEPSG(srs, code) == OGRERR_NONE && OSRExportToWkt(srs, &wkt) == OGRERR_NONE)
+        copy = strdup(wkt);
+    CPLFree(wkt);
+    OSRDestroySpatialReference(srs);
+    return copy;
+}
+
+/* A site places the DTM by its georeferencing: in the DTM's own CRS node (E, N) stands at
+ * (E - origin E, N - origin N), heights minus the origin's; in another CRS (UTM zone 10 for a
+ * zone 11 file) the DTM is warped (bilinear) so that every local point carries the height of
+ * its map point, found back in the file's CRS through PROJ. */
+TEST(site_places_and_warps_the_dtm)
+{
+    plugin_registry *reg = registry();
+    if (!reg) return;
+    char tif[512];
+    snprintf(tif, sizeof tif, "%s/site_dtm.tif", OUT_DIR);
+    mkdir(OUT_DIR, 0755);
+    GDALAllRegister();
+    GDALDatasetH ds = GDALCreate(GDALGetDriverByName("GTiff"), tif, 50, 40, 1, GDT_Float32, NULL);
+    CHECK(ds != NULL);
+    if (!ds) return;
+    double gt[6] = {500000, 30, 0, 4100000, 0, -30};
+    GDALSetGeoTransform(ds, gt);
+    OGRSpatialReferenceH srs = OSRNewSpatialReference(NULL);
+    OSRImportFromEPSG(srs, 32611);
+    GDALSetSpatialRef(ds, srs);
+    float v[40][50];
+    for (int r = 0; r < 40; r++)
+        for (int c = 0; c < 50; c++) v[r][c] = (float)site_plane(500000 + 30 * (c + 0.5), 4100000 - 30 * (r + 0.5));
+    CHECK(GDALRasterIO(GDALGetRasterBand(ds, 1), GF_Write, 0, 0, 50, 40, v, 50, 40, GDT_Float32, 0, 0) == CE_None);
+    GDALClose(ds);
+    const char *keys = "dtm: site_dtm.tif\nrefine: 1\nmethod: deterministic\nalpha: 0\ncentre: [7, 9]";
+    const double origin[3] = {500600, 4099400, 900};
+    char *utm11 = wkt_of_epsg(32611), *utm10 = wkt_of_epsg(32610);
+    CHECK(utm11 && utm10);
+    err_buf err;
+    scene *s = utm11 ? scene_with_site(scene_write("site_same_crs", 1, keys), reg, utm11, origin, &err) : NULL;
+    CHECK(s && s->terrain);
+    if (!s) fprintf(stderr, "%s\n", err.msg);
+    if (s && s->terrain) {
+        const sylva_heightfield *t = s->terrain;
+        CHECK_INT(t->nx, 50);
+        CHECK_NEAR(t->x0, 500015 - origin[0], 1e-9); /* node (0, 0): the south-west pixel centre */
+        CHECK_NEAR(t->y0, 4098815 - origin[1], 1e-9);
+        CHECK_NEAR(t->z[0], site_plane(500015, 4098815) - origin[2], 1e-3);
+        CHECK_NEAR(t->z[39 * 50 + 49], site_plane(501485, 4099985) - origin[2], 1e-3);
+    }
+    scene_free(s);
+    s = utm10 ? scene_with_site(scene_write("site_other_crs", 1, keys), reg, utm10, origin, &err) : NULL;
+    CHECK(s && s->terrain);
+    if (!s) fprintf(stderr, "%s\n", err.msg);
+    if (s && s->terrain) {
+        /* every local point inside the file's footprint: its zone 10 map point, back in zone 11 */
+        OGRSpatialReferenceH z10 = OSRNewSpatialReference(utm10);
+        OSRSetAxisMappingStrategy(z10, OAMS_TRADITIONAL_GIS_ORDER);
+        OSRSetAxisMappingStrategy(srs, OAMS_TRADITIONAL_GIS_ORDER);
+        OGRCoordinateTransformationH to11 = OCTNewCoordinateTransformation(z10, srs);
+        const sylva_heightfield *t = s->terrain;
+        double worst = 0;
+        int inside = 0;
+        for (uint32_t j = 1; j + 1 < t->ny; j += 3)
+            for (uint32_t i = 1; i + 1 < t->nx; i += 3) {
+                double x = t->x0 + i * t->dx + 0.37 * t->dx, y = t->y0 + j * t->dy + 0.61 * t->dy, z;
+                double e = x + origin[0], n = y + origin[1];
+                if (!OCTTransform(to11, 1, &e, &n, NULL)) continue;
+                /* away from the file's edge, where the warped raster has no data of its own */
+                if (e < 500000 + 60 || e > 501500 - 60 || n < 4098800 + 60 || n > 4100000 - 60) continue;
+                if (heightfield_height(t, x, y, &z)) continue;
+                inside++;
+                worst = fmax(worst, fabs(z - (site_plane(e, n) - origin[2])));
+            }
+        fprintf(stderr, "warped: %u x %u nodes %.2f x %.2f m apart; %d points, worst %.4f m\n", t->nx, t->ny,
+                t->dx, t->dy, inside, worst);
+        CHECK(inside > 50);
+        CHECK(worst < 0.05);
+        OCTDestroyCoordinateTransformation(to11);
+        OSRDestroySpatialReference(z10);
+    }
+    scene_free(s);
+    /* without a site, the DTM stands at centre as before */
+    s = scene_ok("site_none", 1, keys, reg);
+    if (s && s->terrain) CHECK_NEAR(s->terrain->x0, 7 - 0.5 * 49 * 30, 1e-9);
+    scene_free(s);
+    OSRDestroySpatialReference(srs);
+    free(utm11), free(utm10);
+    plugin_registry_free(reg);
+}
+
+/* Writes OUT_DIR/<name>.yaml: a 33 x 33 generated DTM 25 m apart seen from a camera at (x, y),
+ * with the terrain keys given. */
+static const char *lod_scene(const char *name, double x, double y, const char *keys)
+{
+    static char path[512];
+    snprintf(path, sizeof path, "%s/%s.yaml", OUT_DIR, name);
+    mkdir(OUT_DIR, 0755);
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (!f) return path;
+    fprintf(f, "image: {width: 16, height: 16, spp: 1, seed: 4}\n"
+               "camera: {position: [%g, %g, 150], look_at: [0, 0, 0]}\n"
+               "terrain:\n  plugin: terrain_ifs\n  threads: 2\n  refine: 8\n  alpha: 0.3\n"
+               "  generated: {nodes: [33, 33], relief: 120}\n  %s\n", x, y, keys);
+    fclose(f);
+    return path;
+}
+
+/* Levels of detail: around the camera the finest window equals the uniform refinement there
+ * (deterministic evaluation and random iteration alike), coarser rings follow at halving
+ * refine, the DTM's nodes stay as they are, and the levels meet without cracks: every vertical
+ * ray along and across each window's sides hits the terrain. */
+TEST(levels_of_detail_match_uniform_and_close)
+{
+    plugin_registry *reg = registry();
+    if (!reg) return;
+    static const char *const methods[2] = {"method: deterministic", "iterations: 2000000"};
+    for (int m = 0; m < 2; m++) {
+        char keys[160];
+        snprintf(keys, sizeof keys, "%s\n  detail_radius: 60", methods[m]);
+        err_buf err;
+        scene *lod = scene_from(lod_scene("lod_levels", 110, -40, keys), reg, &err);
+        scene *uni = scene_from(lod_scene("lod_uniform", 110, -40, methods[m]), reg, &err);
+        CHECK(lod && lod->terrain && uni && uni->terrain);
+        if (!lod || !uni) {
+            fprintf(stderr, "%s\n", err.msg);
+            scene_free(lod), scene_free(uni);
+            continue;
+        }
+        const sylva_heightfield *t = lod->terrain, *u = uni->terrain;
+        CHECK_INT(t->nx, 33);
+        CHECK_INT(u->nx, 257);
+        CHECK_INT(t->n_levels, 3); /* refine 2, 4, 8 */
+        uint32_t differ = 0, nodes_moved = 0;
+        for (uint32_t j = 0; j < 33; j++)
+            for (uint32_t i = 0; i < 33; i++) /* the DTM's nodes (bilinear maps pass through them) */
+                if (fabs(t->z[j * 33 + i] - u->z[(size_t)(8 * j) * 257 + 8 * i]) > 1e-3) nodes_moved++;
+        if (t->n_levels == 3) {
+            const sylva_terrain_level *f = &t->levels[2];
+            CHECK_INT(f->refine, 8);
+            CHECK(f->cells_x >= 4 && f->cells_x <= 6);
+            for (uint32_t j = 1; j + 1 < f->ny; j++)
+                for (uint32_t i = 1; i + 1 < f->nx; i++) /* inside the rim */
+                    if (f->z[(size_t)j * f->nx + i] != u->z[(size_t)(f->j0 * 8 + j) * 257 + f->i0 * 8 + i]) differ++;
+            for (uint32_t k = 1; k < 3; k++) { /* nested, strictly inside */
+                const sylva_terrain_level *c = &t->levels[k - 1], *l = &t->levels[k];
+                CHECK(l->i0 > c->i0 && l->j0 > c->j0 && l->i0 + l->cells_x < c->i0 + c->cells_x &&
+                      l->j0 + l->cells_y < c->j0 + c->cells_y);
+                CHECK_INT(l->refine, 2 * c->refine);
+            }
+        }
+        CHECK_INT(differ, 0);
+        if (m == 0) CHECK_INT(nodes_moved, 0);
+        /* no cracks: vertical rays on and across every window's sides */
+        accel a;
+        CHECK_INT(accel_build(&a, lod, 2, &err), 0);
+        uint32_t rays = 0, misses = 0;
+        for (uint32_t k = 0; k < t->n_levels; k++) {
+            const sylva_terrain_level *l = &t->levels[k];
+            double xs[2] = {t->x0 + l->i0 * t->dx, t->x0 + (l->i0 + l->cells_x) * t->dx};
+            double ys[2] = {t->y0 + l->j0 * t->dy, t->y0 + (l->j0 + l->cells_y) * t->dy};
+            for (int side = 0; side < 2; side++)
+                for (int q = 0; q <= 4000; q++) {
+                    double along = (double)q / 4000, off = ((q % 5) - 2) * 1e-4 * t->dx;
+                    double px[2] = {xs[side] + off, xs[0] + along * (xs[1] - xs[0])};
+                    double py[2] = {ys[0] + along * (ys[1] - ys[0]), ys[side] + off};
+                    for (int dir = 0; dir < 2; dir++) {
+                        struct RTCRayHit rh = {.ray = {.org_x = (float)px[dir], .org_y = (float)py[dir],
+                                                       .org_z = 1000, .dir_z = -1, .tfar = INFINITY,
+                                                       .mask = 0xffffffffu},
+                                               .hit = {.geomID = RTC_INVALID_GEOMETRY_ID,
+                                                       .instID = {RTC_INVALID_GEOMETRY_ID}}};
+                        struct RTCIntersectContext ic;
+                        rtcInitIntersectContext(&ic);
+                        rtcIntersect1(a.top, &ic, &rh);
+                        rays++;
+                        if (rh.hit.geomID != ACCEL_TOP_TERRAIN) misses++;
+                    }
+                }
+        }
+        fprintf(stderr, "%s: %u rays across the levels' sides, %u missed\n", methods[m], rays, misses);
+        CHECK(rays > 40000);
+        CHECK_INT(misses, 0);
+        accel_free(&a);
+        scene_free(lod), scene_free(uni);
+    }
+    plugin_registry_free(reg);
+}
+
+/* Rays from eye in every direction from 0.01 to about 60 degrees below the horizontal: how many
+ * miss everything (*rays: of how many). */
+static uint32_t sky_below_horizon(const accel *a, const double eye[3], uint32_t *rays)
+{
+    uint32_t misses = 0;
+    *rays = 0;
+    for (int az = 0; az < 360; az += 2)
+        for (int e = 0; e < 40; e++) {
+            double el = -0.01 * pow(1.25, e) * M_PI / 180; /* -0.01 to about -60 degrees */
+            double t = az * M_PI / 180;
+            struct RTCRayHit rh = {.ray = {.org_x = (float)eye[0], .org_y = (float)eye[1], .org_z = (float)eye[2],
+                                           .dir_x = (float)(cos(el) * cos(t)), .dir_y = (float)(cos(el) * sin(t)),
+                                           .dir_z = (float)sin(el), .tfar = INFINITY, .mask = 0xffffffffu},
+                                   .hit = {.geomID = RTC_INVALID_GEOMETRY_ID, .instID = {RTC_INVALID_GEOMETRY_ID}}};
+            struct RTCIntersectContext ic;
+            rtcInitIntersectContext(&ic);
+            rtcIntersect1(a->top, &ic, &rh);
+            (*rays)++;
+            if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) misses++;
+        }
+    return misses;
+}
+
+/* Beyond the DTM's edge the ground goes on: from a camera over a 800 m DTM (on its node lines,
+ * so some rays run exactly along cell edges; levels of detail reaching the DTM's edge, so the
+ * apron meets them there), every ray below the horizontal, toward the edges
+ * and the corners, down to 0.01 degrees under the horizon, meets the ground; with beyond_edge:
+ * void the sky shows there (the old behaviour). */
+TEST(no_void_under_the_horizon)
+{
+    plugin_registry *reg = registry();
+    if (!reg) return;
+    for (int edge = 0; edge < 2; edge++) {
+        char path[512];
+        snprintf(path, sizeof path, "%s/apron_%d.yaml", OUT_DIR, edge);
+        mkdir(OUT_DIR, 0755);
+        FILE *f = fopen(path, "w");
+        CHECK(f != NULL);
+        if (!f) break;
+        fprintf(f, "image: {width: 16, height: 16, spp: 1}\n"
+                   "camera: {position: [100, 50, 160], look_at: [1000, 50, 160]}\n"
+                   "terrain:\n  plugin: terrain_ifs\n  method: deterministic\n  refine: 8\n"
+                   "  detail_radius: 100\n  alpha: 0.3\n"
+                   "  generated: {nodes: [33, 33], relief: 120}\n  beyond_edge: %s\n",
+                   edge ? "void" : "flat");
+        fclose(f);
+        err_buf err;
+        scene *s = scene_from(path, reg, &err);
+        CHECK(s && s->terrain);
+        if (!s) {
+            fprintf(stderr, "%s\n", err.msg);
+            continue;
+        }
+        CHECK_INT(s->terrain->n_levels, 3);
+        if (s->terrain->n_levels) CHECK_INT(s->terrain->levels[0].i0 + s->terrain->levels[0].cells_x, 32);
+        accel a;
+        CHECK_INT(accel_build(&a, s, 2, &err), 0);
+        uint32_t rays, misses = sky_below_horizon(&a, s->camera.position, &rays);
+        fprintf(stderr, "beyond_edge %s: %u of %u rays under the horizon see the sky\n", edge ? "void" : "flat",
+                misses, rays);
+        if (edge) CHECK(misses > rays / 4);
+        else CHECK_INT(misses, 0);
+        accel_free(&a);
+        scene_free(s);
+    }
+    plugin_registry_free(reg);
+}
+
 TEST_LIST(TEST_CASE(descriptor_and_schema),
+          TEST_CASE(no_void_under_the_horizon),
+          TEST_CASE(levels_of_detail_match_uniform_and_close),
+          TEST_CASE(site_places_and_warps_the_dtm),
+          TEST_CASE(snow_and_scree_in_metres),
           TEST_CASE(inline_dtm_deterministic),
           TEST_CASE(generated_dtm_random_iteration),
           TEST_CASE(surface_from_scene),

@@ -17,8 +17,10 @@ typedef struct cli_scene {
 } cli_scene;
 
 /* Fills c and returns EXIT_OK, or the exit status of the problem after printing it
- * (cli_fail); in every case cli_scene_close releases what was made. */
-int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const build_options *opt);
+ * (cli_fail); in every case cli_scene_close releases what was made. viewpoint: NULL for the
+ * scene's camera, or the name of one of its viewpoints (--viewpoint) to build the scene with. */
+int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const char *viewpoint,
+                   const build_options *opt);
 void cli_scene_close(cli_scene *c);
 
 #endif

@@ -39,6 +39,8 @@ static void crosscheck_usage(FILE *out)
             "  --over-error X       a pixel is over when a channel differs by more than X (default %g)\n"
             "  --max-over F         share of over pixels at most F (default %g)\n"
             "  --max-class-mae X    MAE within each class covering >= %g of the picture (default %g)\n"
+            "  --viewpoint NAME    the view from the scene's viewpoint NAME (its viewpoints:\n"
+            "                      section) instead of its camera\n"
             "  -q, --quiet          no progress output\n"
             "  --allow-gdal-virtual let the scene name GDAL virtual paths, URLs and connection\n"
             "                      strings (these may reach the network; refused otherwise)\n"
@@ -66,6 +68,7 @@ static int parse_real(const char *opt, const char *s, double lo, double hi, doub
 
 int cmd_crosscheck(int argc, char **argv)
 {
+    const char *viewpoint = NULL;
     const char *scene_path = NULL, *out = NULL;
     crosscheck_options co = {0};
     crosscheck_default_thresholds(&co.thresholds);
@@ -111,6 +114,9 @@ int cmd_crosscheck(int argc, char **argv)
         } else if (!strcmp(a, "--max-class-mae")) {
             if (parse_real(a, val, 0, 1e30, &t->max_class_mae)) return EXIT_USAGE;
             i++;
+        } else if (!strcmp(a, "--viewpoint")) {
+            if (!val) goto missing;
+            viewpoint = val, i++;
         } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
             co.quiet = bo.quiet = 1;
         } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
@@ -144,7 +150,7 @@ int cmd_crosscheck(int argc, char **argv)
 
     err_buf err = {{0}};
     cli_scene cs;
-    int rc = cli_scene_open(&cs, "crosscheck", scene_path, &bo);
+    int rc = cli_scene_open(&cs, "crosscheck", scene_path, viewpoint, &bo);
     if (rc) goto done;
     const scene *sc = cs.scene;
     crosscheck_result *r = malloc(sizeof *r);

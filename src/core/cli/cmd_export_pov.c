@@ -32,6 +32,8 @@ static void export_pov_usage(FILE *out)
             "                      origin, growing along +Z) with their materials; OUT.pov adds a\n"
             "                      small scene showing them side by side\n"
             "  --variant K         with --species: variant K only (0 is the youngest)\n"
+            "  --viewpoint NAME    the view from the scene's viewpoint NAME (its viewpoints:\n"
+            "                      section) instead of its camera\n"
             "  -q, --quiet         no progress output\n"
             "  --allow-gdal-virtual let the scene name GDAL virtual paths, URLs and connection\n"
             "                      strings (these may reach the network; refused otherwise)\n"
@@ -44,6 +46,7 @@ static void export_pov_usage(FILE *out)
 
 int cmd_export_pov(int argc, char **argv)
 {
+    const char *viewpoint = NULL;
     const char *scene_path = NULL, *out = NULL, *species_name = NULL;
     pov_export_options po = {0};
     build_options bo = {0};
@@ -70,6 +73,9 @@ int cmd_export_pov(int argc, char **argv)
         } else if (!strcmp(a, "--variant")) {
             if (!val || cli_parse_u64("export-pov", a, val, 0, 1u << 20, &v)) return EXIT_USAGE;
             variant = (int64_t)v, i++;
+        } else if (!strcmp(a, "--viewpoint")) {
+            if (!val) goto missing;
+            viewpoint = val, i++;
         } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
             bo.quiet = 1;
         } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
@@ -108,7 +114,7 @@ int cmd_export_pov(int argc, char **argv)
 
     err_buf err = {{0}};
     cli_scene cs;
-    int rc = cli_scene_open(&cs, "export-pov", scene_path, &bo);
+    int rc = cli_scene_open(&cs, "export-pov", scene_path, viewpoint, &bo);
     if (rc) goto done;
     const scene *sc = cs.scene;
     double t1 = progress_now();

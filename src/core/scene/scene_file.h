@@ -50,6 +50,13 @@ typedef struct camera_settings {
     double sensor_width_mm;
 } camera_settings;
 
+/* A named camera beside the scene's own (the viewpoints: section). */
+typedef struct viewpoint {
+    const char *name;
+    camera_settings camera;
+    uint32_t line, column;  /* of its name */
+} scene_viewpoint;
+
 typedef struct sun_settings {
     int enabled;
     double direction[3];    /* unit, from the ground toward the sun */
@@ -197,6 +204,7 @@ typedef struct scene_file {
     site_settings site;
     image_settings image;
     camera_settings camera;
+    scene_viewpoint *viewpoints; uint32_t n_viewpoints; /* the named views, in file order */
     sun_settings sun;
     sky_settings sky;
     earth_settings earth;
@@ -216,6 +224,10 @@ typedef struct scene_file {
  * Returns a new scene_file (caller frees with scene_file_free) or NULL with err set. */
 scene_file *scene_file_load(const char *path, const struct plugin_registry *plugins, err_buf *err);
 void scene_file_free(scene_file *sf); /* accepts NULL */
+
+/* Makes the viewpoint named `name` the scene's camera (before the scene is built). Returns 0, or
+ * -1 with err (ERR_USAGE) naming the viewpoints there are. */
+int scene_file_use_viewpoint(scene_file *sf, const char *name, err_buf *err);
 
 /* Index of a material or species by name, or -1 (a hash lookup). */
 int scene_file_material_index(const scene_file *sf, const char *name);

@@ -6,6 +6,8 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdio.h>
+#include <string.h>
 
 #define DEG (M_PI / 180.0)
 
@@ -61,13 +63,12 @@ static const sylva_value *later_of(const sylva_value *a, const sylva_value *b)
 /* The camera's position and look_at, in local metres or map coordinates (sf_read_position),
  * with the eye's height above ground; each point's z is provisional while its height is above a
  * terrain not yet built: the height above ground itself, for the checks below. */
-static int read_camera_points(loader *L, const sylva_params *p, sylva_value *pos_at, sylva_value *look_at)
+static int read_camera_points(loader *L, const ynode *map, const char *where, const sylva_params *p,
+                              camera_settings *c, sylva_value *pos_at, sylva_value *look_at)
 {
-    const ynode *map = ynode_get(L->root, "camera");
-    camera_settings *c = &L->sf->camera;
     sf_position pos, look;
-    if (sf_read_position(L, map, sf_host_key(&host_schema_camera, "position"), "camera", &pos) ||
-        sf_read_position(L, map, sf_host_key(&host_schema_camera, "look_at"), "camera", &look))
+    if (sf_read_position(L, map, sf_host_key(&host_schema_camera, "position"), where, &pos) ||
+        sf_read_position(L, map, sf_host_key(&host_schema_camera, "look_at"), where, &look))
         return -1;
     const sylva_value *eye = sylva_param(p, "height_above_ground");
     if (eye->is_set && (pos.has_height || !isnan(pos.above_ground)))
@@ -126,22 +127,19 @@ static void read_camera_angles(const sylva_params *p, camera_settings *c)
     c->up[0] = -sin(h) * sin(e), c->up[1] = -cos(h) * sin(e), c->up[2] = cos(e);
 }
 
-int sf_read_camera(loader *L)
+/* One camera block (the camera: section, or a viewpoint), `where` naming it in messages; the key
+ * (line, column) locates a block with a missing key. */
+static int read_camera_block(loader *L, const ynode *map, uint32_t key_line, uint32_t key_column,
+                             const char *where, camera_settings *c)
 {
-    if (!ynode_get(L->root, "camera"))
-        return sf_located(L->err, L->file, L->root->line, L->root->column,
-                       "missing required section 'camera' (at least camera: {position: [x, y, z], "
-                       "look_at: [x, y, z]})");
     static const char *const points[] = {"position", "look_at"};
     const sylva_params *p;
     uint32_t n_keys;
     const sylva_param_spec *keys = sf_keys_without(L, &host_schema_camera, points, 2, &n_keys);
-    const ynode_pair *pr = ynode_get_pair(L->root, "camera");
-    param_scope scope = {L->file, L->dir, "camera", points, 2, pr->key_line, pr->key_column};
-    if (!keys || params_validate(L->a, pr->value, keys, n_keys, &scope, &p, L->err)) return -1;
+    param_scope scope = {L->file, L->dir, where, points, 2, key_line, key_column};
+    if (!keys || params_validate(L->a, map, keys, n_keys, &scope, &p, L->err)) return -1;
     sylva_value pos_at = {0}, look_at = {0};
-    if (read_camera_points(L, p, &pos_at, &look_at)) return -1;
-    camera_settings *c = &L->sf->camera;
+    if (read_camera_points(L, map, where, p, c, &pos_at, &look_at)) return -1;
     const sylva_value *pos = &pos_at, *look = &look_at,
                       *dir = sylva_param(p, "direction"), *up = sylva_param(p, "up"),
                       *fov = sylva_param(p, "fov"), *focal = sylva_param(p, "focal_length"),
@@ -217,6 +215,64 @@ int sf_read_camera(loader *L)
     if (c->look_at_ground.given) c->look_at[2] = NAN;
     read_camera_angles(p, c);
     return 0;
+}
+
+/* viewpoints: named camera blocks beside the scene's camera, each read and checked as the camera
+ * is; `render --viewpoint NAME` renders from one (scene_file_use_viewpoint). */
+static int read_viewpoints(loader *L)
+{
+    const ynode_pair *pr = ynode_get_pair(L->root, "viewpoints");
+    if (!pr || ynode_is_null(pr->value)) return 0;
+    const ynode *node = pr->value;
+    if (node->kind != YNODE_MAPPING)
+        return sf_located(L->err, L->file, node->line, node->column,
+                          "'viewpoints' must be a mapping of names to camera blocks (viewpoints: {north: "
+                          "{position: ..., heading: ...}}), got %s", ynode_kind_phrase(node));
+    scene_file *sf = L->sf;
+    sf->viewpoints = arena_alloc(L->a, (size_t)node->n_pairs * sizeof *sf->viewpoints + 1);
+    if (!sf->viewpoints) return sf_out_of_memory(L);
+    for (uint32_t i = 0; i < node->n_pairs; i++) {
+        const ynode_pair *vp = &node->pairs[i];
+        const char *where = sf_arena_printf(L->a, "viewpoints.%s", vp->key);
+        if (!where) return sf_out_of_memory(L);
+        if (vp->value->kind != YNODE_MAPPING)
+            return sf_located(L->err, L->file, vp->value->line, vp->value->column,
+                              "'%s' must be a camera block ({position: ..., heading: ... or look_at: ...}), "
+                              "got %s", where, ynode_kind_phrase(vp->value));
+        scene_viewpoint *v = &sf->viewpoints[sf->n_viewpoints];
+        *v = (scene_viewpoint){.name = vp->key, .line = vp->key_line, .column = vp->key_column};
+        if (read_camera_block(L, vp->value, vp->key_line, vp->key_column, where, &v->camera)) return -1;
+        sf->n_viewpoints++;
+    }
+    return 0;
+}
+
+int sf_read_camera(loader *L)
+{
+    const ynode_pair *pr = ynode_get_pair(L->root, "camera");
+    if (!pr)
+        return sf_located(L->err, L->file, L->root->line, L->root->column,
+                       "missing required section 'camera' (at least camera: {position: [x, y, z], "
+                       "look_at: [x, y, z]})");
+    if (read_camera_block(L, pr->value, pr->key_line, pr->key_column, "camera", &L->sf->camera)) return -1;
+    return read_viewpoints(L);
+}
+
+int scene_file_use_viewpoint(scene_file *sf, const char *name, err_buf *err)
+{
+    char names[ERR_MSG_MAX / 2] = "";
+    size_t used = 0;
+    for (uint32_t i = 0; i < sf->n_viewpoints; i++) {
+        if (!strcmp(sf->viewpoints[i].name, name)) {
+            sf->camera = sf->viewpoints[i].camera;
+            return 0;
+        }
+        int w = snprintf(names + used, sizeof names - used, "%s%s", i ? ", " : "", sf->viewpoints[i].name);
+        if (w > 0 && (size_t)w < sizeof names - used) used += (size_t)w;
+    }
+    return err_fail(err, ERR_USAGE, "%s has no viewpoint '%s'; %s%s", sf->path, name,
+                    sf->n_viewpoints ? "its viewpoints are: " : "it has no viewpoints: section",
+                    sf->n_viewpoints ? names : "");
 }
 
 #define SUN_IRRADIANCE_MAX 1e6 /* sylva's unit: 1 is about 100 klx; 1e6 is beyond any sun */

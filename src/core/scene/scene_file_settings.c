@@ -1,5 +1,6 @@
 /* scene_file_settings.c — the sections that set one thing each: image, camera (look_at or
- * direction, fov or focal length with sensor width, an up vector not parallel to the view), sun
+ * direction or heading/pitch/roll, fov or focal length with sensor width, an up vector not
+ * parallel to the view) and the named viewpoints read as the camera is, sun
  * (direction or azimuth and elevation), sky (keys that apply to its model only) and earth
  * (curvature on by default only for a scene with a site, so read after the site). */
 #include "scene/scene_file_loader.h"

@@ -40,9 +40,10 @@ static int trace(const render_ctx *ctx, struct RTCRayHit *rh)
 }
 
 /* Traces the camera ray along unit d: straight, or chord by chord along the Earth's curved path
- * (curved_ray.h). On a hit, rh holds it as if a straight ray from the camera along d had met the
- * surface at the hit's path parameter (ray.tfar), so depth and shading read it as any hit. */
-static int trace_camera(const render_ctx *ctx, vec3 d, struct RTCRayHit *rh)
+ * (curved_ray.h). On a hit, rh holds the ray that met the surface (the chord, so that shading
+ * works from the ray that really hit) and *t, when asked for, the hit's path parameter: its
+ * distance along d, which the depth layer reads. On a miss rh holds the straight ray along d. */
+static int trace_camera(const render_ctx *ctx, vec3 d, struct RTCRayHit *rh, float *t)
 {
     curved_path p;
     curved_path_begin(&p, &ctx->curved, d);
@@ -53,11 +54,7 @@ static int trace_camera(const render_ctx *ctx, vec3 d, struct RTCRayHit *rh)
         /* Chords overlap by a hundred-thousandth so that no hit falls between two of them. */
         ray_init(rh, org, dir, 0.0f, isinf(len) ? INFINITY : len * (1.0f + 1e-5f));
         if (!trace(ctx, rh)) continue;
-        if (isinf(len)) return 1;
-        float t = (float)(t0 + rh->ray.tfar / len * dt);
-        rh->ray.org_x = ctx->camera.origin.x, rh->ray.org_y = ctx->camera.origin.y, rh->ray.org_z = ctx->camera.origin.z;
-        rh->ray.dir_x = d.x, rh->ray.dir_y = d.y, rh->ray.dir_z = d.z;
-        rh->ray.tfar = t;
+        if (t) *t = isinf(len) ? rh->ray.tfar : (float)(t0 + rh->ray.tfar / len * dt);
         return 1;
     }
     ray_init(rh, ctx->camera.origin, d, 0.0f, INFINITY);
@@ -107,7 +104,7 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
         struct RTCRayHit rh;
         int found;
         if (depth == 0) {
-            found = trace_camera(ctx, d, &rh);
+            found = trace_camera(ctx, d, &rh, NULL);
             *hit = found ? 1 + on_development(a, &rh) : 0;
         } else {
             ray_init(&rh, o, d, 0.0f, INFINITY);
@@ -212,7 +209,7 @@ static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t
             float sx = s ? ((g % grid) + 0.5f) / grid : 0.5f, sy = s ? ((g / grid) + 0.5f) / grid : 0.5f;
             vec3 d = camera_direction(&ctx->camera, x + sx, y + sy);
             if (ctx->curved.on) {
-                trace_camera(ctx, d, &rh[i]); /* chord by chord, one ray at a time */
+                trace_camera(ctx, d, &rh[i], NULL); /* chord by chord, one ray at a time */
                 continue;
             }
             ray_init(&rh[i], ctx->camera.origin, d, 0.0f, INFINITY);
@@ -268,7 +265,8 @@ static void aux_layers(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_resu
 {
     vec3 d = camera_direction(&ctx->camera, x + 0.5f, y + 0.5f);
     struct RTCRayHit rh;
-    if (!trace_camera(ctx, d, &rh)) {
+    float t;
+    if (!trace_camera(ctx, d, &rh, &t)) {
         out->depth = INFINITY;
         out->normal = v3(0, 0, 0), out->albedo = v3(0, 0, 0);
         out->instance_id = out->species_id = out->object_id = 0;
@@ -277,7 +275,7 @@ static void aux_layers(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_resu
     }
     hit_info h;
     accel_shade(ctx->accel, &rh, &h);
-    out->depth = h.t * v3_dot(d, ctx->camera.forward);
+    out->depth = t * v3_dot(d, ctx->camera.forward);
     out->normal = v3_dot(h.ns, d) > 0.0f ? v3_scale(h.ns, -1.0f) : h.ns;
     out->albedo = h.albedo;
     out->instance_id = h.instance_id;

@@ -1,5 +1,5 @@
 /* test_ifs_big_dtm.c — a landscape-scale DTM through the real host: a 10,000 x 10,000 GeoTIFF
- * (written by the test with GDAL's API into a temporary folder) loads, and its Embree scene
+ * (written by the test with GDAL's API into its work folder, work_dir.h) loads, and its Embree scene
  * builds, within the memory per node stated in docs/models/terrain_ifs.md, and a memory budget
  * too small for it is refused with a sentence before the DTM is read. Label slow: writing and
  * reading 400 MB, building a BVH over 100 M points. */
@@ -15,6 +15,7 @@
 #include <ogr_srs_api.h>
 
 #include "harness.h"
+#include "work_dir.h"
 #include "plugin/plugin_host.h"
 #include "render/accel.h"
 #include "scene/scene.h"
@@ -94,26 +95,18 @@ static scene *load(const char *scene_path, plugin_registry *reg, err_buf *err)
 
 TEST(geotiff_10000_squared_loads)
 {
-    char dir[] = "/tmp/sylva-big-dtm-XXXXXX";
-    if (!mkdtemp(dir)) {
-        CHECK(0);
-        return;
-    }
-    char tif[128], yaml[128];
-    snprintf(tif, sizeof tif, "%s/big.tif", dir);
-    snprintf(yaml, sizeof yaml, "%s/big.yaml", dir);
+    char tif[1200];
+    snprintf(tif, sizeof tif, "%s/big.tif", work_dir());
     double t0 = harness_seconds();
     CHECK(write_big_geotiff(tif) == 0);
     double t1 = harness_seconds();
-    FILE *f = fopen(yaml, "w");
-    CHECK(f != NULL);
-    if (f) {
-        fprintf(f, "image: {width: 16, height: 16, spp: 1}\n"
-                   "camera: {position: [0, -300, 1500], look_at: [0, 0, 800]}\n"
-                   "terrain:\n  plugin: terrain_ifs\n  dtm: big.tif\n  refine: 1\n"
-                   "  method: deterministic\n  alpha: 0\n  threads: 2\n");
-        fclose(f);
-    }
+    const char *yaml = work_file("big.yaml",
+                                 "image: {width: 16, height: 16, spp: 1}\n"
+                                 "camera: {position: [0, -300, 1500], look_at: [0, 0, 800]}\n"
+                                 "terrain:\n  plugin: terrain_ifs\n  dtm: big.tif\n  refine: 1\n"
+                                 "  method: deterministic\n  alpha: 0\n  threads: 2\n");
+    CHECK(yaml != NULL);
+    if (!yaml) return;
     err_buf err = {{0}};
     plugin_registry *reg = plugin_registry_open_path(SYLVA_PLUGIN_BUILD_DIR, &err);
     CHECK(reg != NULL);
@@ -172,7 +165,6 @@ TEST(geotiff_10000_squared_loads)
         scene_free(s);
         plugin_registry_free(reg);
     }
-    unlink(tif), unlink(yaml), rmdir(dir);
 }
 
 TEST_LIST(TEST_CASE(geotiff_10000_squared_loads))

@@ -61,8 +61,6 @@ typedef struct terrain_ifs_state {
     const sylva_params *params;  /* create()'s, valid until destroy (the host's promise) */
     int georeferenced;           /* 1: the DTM file's node (0, 0) is at node0 in its CRS */
     double node0[2];             /* map coordinates of DTM node (0, 0) (after a warp: the site's) */
-    const char *crs_read;        /* the CRS the DTM was read in: NULL (the file's) or the site's */
-    int crs_checked;             /* 1: the file's CRS was compared with the site's */
     double z_shift;              /* metres taken off every DTM height (the site origin's height) */
 } terrain_ifs_state;
 
@@ -212,7 +210,6 @@ static int load_dtm(const sylva_host_api *api, sylva_host *host, const sylva_par
                  info.window[1], o.step);
         s->georeferenced = !info.degrees && !o.cell_size[0];
         s->node0[0] = info.node0_x, s->node0[1] = info.node0_y;
-        s->crs_read = target_wkt;
         if (info.nodata_filled)
             api->log(host, SYLVA_LOG_INFO, "%s: %llu nodata node%s filled from their neighbours",
                      dtm->s, (unsigned long long)info.nodata_filled,
@@ -489,13 +486,9 @@ static int terrain_ifs_create(const sylva_host_api *api, sylva_host *host,
         return SYLVA_ERR_NOMEM;
     }
     s->mem_free = api->mem_free;
-    s->params = params;
-    if ((rc = terrain_setup(api, host, params, s, NULL))) goto fail;
+    s->params = params; /* the DTM is read by generate(), once the request says in which CRS */
     *state = s;
     return SYLVA_OK;
-fail:
-    state_free(s);
-    return rc;
 }
 
 /* Host progress from the model's workers (called on the plugin's calling thread only). */
@@ -672,34 +665,17 @@ static int refine_levels(const terrain_ifs_state *s, const ifs_maps *maps, uint3
     return SYLVA_OK;
 }
 
-/* A site (ABI 1.2 request): the DTM file read in the site's CRS (warped when the file's
- * differs), its heights taken down by the origin's height. Sets *placed when the DTM's own
- * georeferencing places it (a file read in metres of its CRS), 0 when it keeps `centre`. */
-static int site_prepare(terrain_ifs_state *s, const sylva_host_api *api, sylva_host *host,
-                        const sylva_terrain_request *req, int *placed)
+/* A site (ABI 1.2 request), once the DTM is read in the site's CRS (terrain_setup warps a file
+ * in another one): its heights taken down by the origin's height. Sets *placed when the DTM's
+ * own georeferencing places it (a file read in metres of its CRS), 0 when it keeps `centre`. */
+static void site_place(terrain_ifs_state *s, const sylva_host_api *api, sylva_host *host,
+                       const sylva_terrain_request *req, int *placed)
 {
-    *placed = 0;
     const char *path = sylva_param_str(s->params, "dtm");
-    if (!path) {
+    if (!path)
         api->log(host, SYLVA_LOG_INFO, "the scene has a site; the %s has no coordinates of its own "
                  "and stands at centre", s->source);
-    } else if (!s->crs_checked) {
-        ifs_raster r;
-        ifs_err err = {{0}};
-        int rc = ifs_raster_open_in(path, (uint32_t)sylva_param_int(s->params, "band"), "DTM",
-                                    req->site_crs, &r, &err);
-        int warp = r.warped;
-        ifs_raster_close(&r);
-        if (rc) return api->param_error(host, s->params, "dtm", "%s", err.msg);
-        s->crs_checked = 1;
-        if (warp) { /* read it again, in the site's CRS */
-            ifs_dtm_free(s->dtm), s->dtm = NULL;
-            s->mem_free(s->humidity), s->humidity = NULL;
-            s->z_shift = 0;
-            if ((rc = terrain_setup(api, host, s->params, s, req->site_crs))) return rc;
-        }
-    }
-    if (path && !s->georeferenced)
+    else if (!s->georeferenced)
         api->log(host, SYLVA_LOG_WARN, "%s: its node spacing is not its coordinate system's (cell_size "
                  "or degrees), so it stands at centre, not at its map position", path);
     *placed = path && s->georeferenced;
@@ -709,7 +685,6 @@ static int site_prepare(terrain_ifs_state *s, const sylva_host_api *api, sylva_h
         if (!s->has_start) s->start_z -= shift;
         s->z_shift = req->site_origin[2];
     }
-    return SYLVA_OK;
 }
 
 static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_host *host,
@@ -724,7 +699,8 @@ static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_ho
     }
     int placed = 0, rc;
     const int site = req && SYLVA_HAS_FIELD(req, sylva_terrain_request, eye) && req->site_crs;
-    if (site && (rc = site_prepare(s, api, host, req, &placed))) return rc;
+    if (!s->dtm && (rc = terrain_setup(api, host, s->params, s, site ? req->site_crs : NULL))) return rc;
+    if (site) site_place(s, api, host, req, &placed);
     ifs_err err = {{0}};
     ifs_maps *maps = NULL;
     ifs_maps_params mp = {.mode = s->mode, .alpha = s->alpha, .alpha_field = s->alpha_field,

@@ -1,0 +1,78 @@
+/* ztv_raster.h — what a visibility map (zone of theoretical visibility, ZTV) is made of: the
+ * output grid, the screening modes, the class of each cell, and the rows of results the tracer
+ * (ztv/ztv_trace.h) hands, a block at a time from north to south, to the writers (GeoTIFF,
+ * map PNG, summary). Nothing here allocates; the tracer owns every array a block points to and
+ * keeps it only for the duration of the call.
+ *
+ * The grid is north up: cell (i, j) has its centre at local (x0 + i cell, y0 - j cell), row 0 the
+ * northernmost; local = map - site origin (docs/sites.md). Its GeoTIFF geotransform is
+ * (origin[0] + x0 - cell/2, cell, 0, origin[1] + y0 + cell/2, 0, -cell).
+ */
+#ifndef SYLVA_ZTV_RASTER_H
+#define SYLVA_ZTV_RASTER_H
+
+#include <stdint.h>
+
+/* What stands between a viewpoint and the development. Each mode screens with what the one
+ * before it does, and more. */
+typedef enum ztv_mode {
+    ZTV_BARE = 0,        /* bare earth: the terrain (and water surfaces) only */
+    ZTV_VEGETATION = 1,  /* the terrain and the plants (alpha-masked leaves let rays through) */
+    ZTV_ALL = 2,         /* the terrain, the plants and every object that is not the development */
+    ZTV_MODES = 3
+} ztv_mode;
+
+/* What a cell's observer stands in. Only ZTV_OPEN cells are viewpoints; the others carry no
+ * count. In bare-earth mode every cell on the terrain is open. */
+typedef enum ztv_class {
+    ZTV_OPEN = 0,         /* a viewpoint */
+    ZTV_UNDER_CROWN = 1,  /* the observer stands under a tree crown (vegetation and all modes) */
+    ZTV_IN_OBJECT = 2,    /* the observer stands inside an object (all mode) */
+    ZTV_OUTSIDE = 3       /* beyond the radius, or off the terrain: not computed */
+} ztv_class;
+
+#define ZTV_MAX_DEVELOPMENTS 24u /* developments in one map: bits of a float-exact mask */
+
+typedef struct ztv_grid {
+    uint32_t nx, ny;         /* cells west to east, north to south */
+    double x0, y0;           /* local centre of cell (0, 0), the north-west one */
+    double cell;             /* metres */
+} ztv_grid;
+
+/* One mode's results over a block's cells (rows * nx, row by row). */
+typedef struct ztv_layer {
+    const uint16_t *visible;      /* targets visible from the cell (0 where not ZTV_OPEN) */
+    const float *fraction;        /* visible targets / all targets, 0..1 (0 where not ZTV_OPEN) */
+    const uint8_t *cls;           /* a ztv_class */
+    const uint32_t *developments; /* bit d set: some target of development d is visible */
+} ztv_layer;
+
+/* Grid rows [j0, j0 + rows) of every mode computed. */
+typedef struct ztv_block {
+    uint32_t j0, rows;
+    const float *ground;                /* rows * nx terrain heights at cell centres, local metres
+                                        * (map = local + origin[2]); NAN where ZTV_OUTSIDE */
+    const ztv_layer *layer[ZTV_MODES];  /* NULL for a mode not computed */
+} ztv_block;
+
+/* What the writers need to know of the map besides its cells. */
+typedef struct ztv_info {
+    ztv_grid grid;
+    const char *crs_wkt;         /* the site's CRS, or NULL (a scene in local metres) */
+    const char *crs_name;        /* its short name, or NULL */
+    double origin[3];            /* map coordinates of the local origin (0 without a site) */
+    int computed[ZTV_MODES];     /* 1: the blocks carry this mode's layer */
+    double observer_height;      /* metres above the ground */
+    double radius;               /* metres from the nearest target; INFINITY: the whole grid */
+    int curvature;               /* 1: Earth curvature and refraction applied */
+    double refraction;           /* k */
+    uint32_t n_targets;
+    uint32_t n_developments;
+    const char *const *development_names;  /* n_developments */
+    const double (*development_xy)[2];     /* n_developments: local position to mark on the map
+                                            * (the centre of its targets) */
+    const double (*target_xy)[2];          /* n_targets: local horizontal positions */
+    const uint32_t *target_development;    /* n_targets: development index */
+} ztv_info;
+
+#endif

@@ -11,6 +11,7 @@ packages=(
   libopenimageio-dev openimageio-tools  # PNG output, image reading and comparison
   libyaml-dev            # scene files
   libgdal-dev            # DTM input (terrain plugin), a site's CRS from its DTM
+  gdal-bin               # gdal_viewshed: the bare-earth oracle of the ZTV tests and benchmark
   libproj-dev            # site CRS: EPSG codes, WKT, longitude/latitude to map coordinates
   povray                 # cross-check renders
   libassimp-dev          # 3-D model import (OBJ, glTF, PLY, STL, FBX, COLLADA, 3DS)

@@ -79,13 +79,15 @@ for scene in "$@"; do
   [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
 done
 
-# The curved and the flat map of one scene must differ, in both tools: the curvature was applied.
+# The curvature hides cells: in both tools the curved map of the hills sees fewer cell-targets
+# than the flat one, and sylva's loss is gdal_viewshed's within a quarter (a wrong sign, or the
+# diameter taken for the radius, changes it by all or twice; the agreement alone would not tell).
 if [ -f "$work/hills_curved/figures.txt" ] && [ -f "$work/hills_flat/figures.txt" ]; then
-  for tool in sylva gdal; do
-    a=$(sed -n "s/^$tool visible cells: //p" "$work/hills_curved/figures.txt")
-    b=$(sed -n "s/^$tool visible cells: //p" "$work/hills_flat/figures.txt")
-    echo "$tool: $a visible cell-targets with the curvature, $b on a flat Earth"
-    [ -n "$a" ] && [ "$a" != "$b" ] || { echo "FAIL: $tool's curved and flat maps see as many cells" >&2; status=1; }
-  done
+  loss() { echo $(( $(sed -n "s/^$1 visible cells: //p" "$work/hills_flat/figures.txt") -
+                    $(sed -n "s/^$1 visible cells: //p" "$work/hills_curved/figures.txt") )); }
+  ls=$(loss sylva) lg=$(loss gdal)
+  echo "the curvature hides $ls cell-targets in sylva's map, $lg in gdal_viewshed's"
+  [ "$lg" -gt 0 ] && [ "$ls" -gt 0 ] && [ $(( 4 * (ls > lg ? ls - lg : lg - ls) )) -le "$lg" ] ||
+    { echo "FAIL: the curvature's effect differs between the two" >&2; status=1; }
 fi
 exit $status

@@ -20,6 +20,7 @@
 #include "io/image_io.h"
 #include "work_dir.h"
 #include "ztv/ztv_output.h"
+#include "ztv/ztv_summary.h"
 
 #define NX 20
 #define NY 15
@@ -456,6 +457,100 @@ TEST(bad_folder_and_info)
     free_pattern(&p);
 }
 
-TEST_LIST(TEST_CASE(geotiff_reads_back), TEST_CASE(summary_areas), TEST_CASE(maps),
+TEST(band_boundaries)
+{
+    CHECK_INT(ztv_band_of(0.0f), ZTV_BAND_NONE);
+    CHECK_INT(ztv_band_of(1e-6f), ZTV_BAND_1_25);
+    CHECK_INT(ztv_band_of(0.25f), ZTV_BAND_1_25);
+    CHECK_INT(ztv_band_of(nextafterf(0.25f, 1)), ZTV_BAND_25_50);
+    CHECK_INT(ztv_band_of(0.5f), ZTV_BAND_25_50);
+    CHECK_INT(ztv_band_of(0.75f), ZTV_BAND_50_75);
+    CHECK_INT(ztv_band_of(nextafterf(1.0f, 0)), ZTV_BAND_75_100);
+    CHECK_INT(ztv_band_of(1.0f), ZTV_BAND_ALL);
+    CHECK_INT(ztv_band_of(NAN), ZTV_BAND_NONE);
+}
+
+/* A scene in local metres over the whole of a long grid (3,300 x 40 cells of 25 m) with five
+ * developments, bare earth only: one target of development d stands in every fifth column
+ * band; the map is drawn one cell in 3 x 3, the cumulative map counts developments. */
+TEST(local_long_grid_many_developments)
+{
+    enum { W = 3300, H = 40 };
+    size_t n = (size_t)W * H;
+    float *ground = malloc(n * sizeof *ground), *fraction = malloc(n * sizeof *fraction);
+    uint16_t *visible = malloc(n * sizeof *visible);
+    uint8_t *cls = calloc(n, 1);
+    uint32_t *devs = malloc(n * sizeof *devs);
+    const char *dev_names[5] = {"A", "B", "C", "D", "E"};
+    double xy[5][2], txy[5][2];
+    uint32_t tdev[5];
+    for (int d = 0; d < 5; d++) xy[d][0] = txy[d][0] = 25.0 * (660 * d + 330), xy[d][1] = txy[d][1] = -500, tdev[d] = (uint32_t)d;
+    for (size_t k = 0; k < n; k++) {
+        int i = (int)(k % W);
+        int seen = 1 + i / 660; /* 1 to 5 developments, westmost first */
+        ground[k] = (float)(50 * sin(i * 0.01));
+        visible[k] = (uint16_t)seen;
+        fraction[k] = seen / 5.0f;
+        devs[k] = (1u << seen) - 1;
+    }
+    ztv_info info = {.grid = {W, H, 12.5, -12.5, 25}, .computed = {1, 0, 0}, .observer_height = 1.5,
+                     .radius = INFINITY, .n_targets = 5, .n_developments = 5, .development_names = dev_names,
+                     .development_xy = (const double (*)[2])xy, .target_xy = (const double (*)[2])txy,
+                     .target_development = tdev};
+    const char *dir = fresh_dir("long");
+    err_buf err = {{0}};
+    ztv_output *o = ztv_output_open(dir, &info, &err);
+    CHECK(o != NULL);
+    for (uint32_t j0 = 0; o && j0 < H; j0 += 7) {
+        uint32_t rows = j0 + 7 <= H ? 7 : H - j0;
+        size_t at = (size_t)j0 * W;
+        ztv_layer l = {visible + at, fraction + at, cls + at, devs + at};
+        ztv_block b = {.j0 = j0, .rows = rows, .ground = ground + at, .layer = {&l, NULL, NULL}};
+        CHECK_INT(ztv_output_block(o, &b, &err), 0);
+    }
+    CHECK_INT(ztv_output_finish(o, &err), 0);
+    ztv_output_free(o);
+    char path[1300];
+    snprintf(path, sizeof path, "%s/ztv_bare.tif", dir);
+    GDALAllRegister();
+    GDALDatasetH ds = GDALOpen(path, GA_ReadOnly);
+    CHECK(ds != NULL);
+    if (ds) {
+        CHECK(GDALGetSpatialRef(ds) == NULL); /* local metres: no CRS */
+        double t[6];
+        CHECK(GDALGetGeoTransform(ds, t) == CE_None);
+        CHECK_NEAR(t[0], 0, 0);
+        CHECK_NEAR(t[3], 0, 0);
+        CHECK_NEAR(pixel(ds, 4, 3299, 39), 31, 0); /* all five */
+        CHECK_NEAR(pixel(ds, 2, 700, 20), 0.4f, 0);
+        GDALClose(ds);
+    }
+    snprintf(path, sizeof path, "%s/ztv_summary.json", dir);
+    char *json = read_text(path);
+    CHECK_STR_CONTAINS(json, "\"crs\": null");
+    CHECK_STR_CONTAINS(json, "\"radius_m\": null");
+    CHECK_STR_CONTAINS(json, "\"earth_curvature\": false");
+    CHECK_STR_CONTAINS(json, "\"100%\": {\"cells\": 26400, \"km2\": 16.5}"); /* 660 columns of 40 */
+    CHECK_STR_CONTAINS(json, "\"E\": {\"cells\": 26400, \"km2\": 16.5}");
+    CHECK(json && !strstr(json, "\"screening\": {\n"));
+    free(json);
+    /* one cell in 3 x 3: 1,100 x 14 map pixels, not enlarged */
+    const char *maps[2] = {"ztv_bare.png", "ztv_cumulative_bare.png"};
+    for (int i = 0; i < 2; i++) {
+        snprintf(path, sizeof path, "%s/%s", dir, maps[i]);
+        image_f32 img = {0};
+        CHECK_INT(image_read(path, &img, &err), 0);
+        CHECK_INT(img.width, 20 + 1100 + 20 + 400 + 20);
+        /* the cumulative legend counts developments: 5 in dark red (205, 35, 35) over grey */
+        if (i == 1 && img.pixels) CHECK(has_colour(&img, 1140, (const int[3]){206, 95, 95}));
+        image_free(&img);
+    }
+    snprintf(path, sizeof path, "%s/ztv_hidden_bare.png", dir);
+    CHECK_INT(access(path, F_OK), -1);
+    free(ground), free(fraction), free(visible), free(cls), free(devs);
+}
+
+TEST_LIST(TEST_CASE(band_boundaries), TEST_CASE(local_long_grid_many_developments),
+          TEST_CASE(geotiff_reads_back), TEST_CASE(summary_areas), TEST_CASE(maps),
           TEST_CASE(unfinished_leaves_nothing), TEST_CASE(planted_link_not_followed),
           TEST_CASE(blocks_out_of_order), TEST_CASE(bad_folder_and_info))

@@ -103,7 +103,7 @@ static const uint8_t outside_rgb[3] = {242, 242, 242}, hatch_rgb[3] = {185, 185,
 static const uint8_t hidden_rgb[3] = {25, 80, 200};
 static const uint8_t partly_hidden_rgb[3] = {110, 190, 240};
 static const uint8_t still_visible_rgb[3] = {255, 215, 90};
-/* which developments: one colour each combination of up to three ... */
+/* which developments: one colour each combination of up to three (all of them: red) ... */
 static const uint8_t combination_rgb[8][3] = {{0, 0, 0},      {40, 110, 220}, {245, 160, 30},
                                               {150, 60, 180}, {40, 160, 70},  {0, 165, 165},
                                               {225, 100, 160}, {200, 25, 25}};
@@ -225,6 +225,12 @@ static int hidden_colour(const ztv_map *m, const map_style *st, size_t k, uint8_
     return 1;
 }
 
+/* The colour of a combination of developments' bits when there are n <= 3. */
+static const uint8_t *combination_colour(uint32_t n, uint32_t bits)
+{
+    return bits == (1u << n) - 1 ? combination_rgb[7] : combination_rgb[bits];
+}
+
 static int popcount(uint32_t x)
 {
     int n = 0;
@@ -239,7 +245,7 @@ static int cumulative_colour(const ztv_map *m, const map_style *st, size_t k, ui
     uint32_t bits = m->developments[st->mode][k];
     if (m->info->n_developments < ZTV_MAX_DEVELOPMENTS) bits &= (1u << m->info->n_developments) - 1;
     if (!bits) return 0;
-    if (m->info->n_developments <= 3) memcpy(rgb, combination_rgb[bits], 3);
+    if (m->info->n_developments <= 3) memcpy(rgb, combination_colour(m->info->n_developments, bits), 3);
     else memcpy(rgb, count_rgb[popcount(bits) < COUNT_CLASSES ? popcount(bits) - 1 : COUNT_CLASSES - 1], 3);
     return 1;
 }
@@ -552,7 +558,7 @@ int ztv_map_draw_cumulative(const ztv_map *m, ztv_mode mode, canvas *out, err_bu
         snprintf(st.legend_title, sizeof st.legend_title, "developments visible (%s)", mode_title(mode));
         for (uint32_t bits = (1u << n) - 1; bits >= 1; bits--) {
             combination_label(m->info, bits, label, sizeof label);
-            add_item(&st, combination_rgb[bits], 1, label);
+            add_item(&st, combination_colour(n, bits), 1, label);
         }
     } else {
         snprintf(st.legend_title, sizeof st.legend_title, "how many of the %u developments are visible (%s)",

@@ -55,6 +55,18 @@ static inline const char *work_dir(void)
     exit(2);
 }
 
+/* Entries of folder dir, "." and ".." aside; -1 when it cannot be read. */
+static inline int work_dir_entries(const char *dir)
+{
+    DIR *d = opendir(dir);
+    if (!d) return -1;
+    int n = 0;
+    for (struct dirent *e; (e = readdir(d));)
+        if (!(e->d_name[0] == '.' && (!e->d_name[1] || (e->d_name[1] == '.' && !e->d_name[2])))) n++;
+    closedir(d);
+    return n;
+}
+
 /* NAME inside the work folder. The string lives until the next call. */
 static inline const char *work_path(const char *name)
 {

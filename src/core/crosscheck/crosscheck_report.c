@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "io/atomic_file.h"
+#include "util/json_text.h"
 
 /* ------------------------------------------------------------------------------------------ */
 /* shared                                                                                      */
@@ -29,16 +30,6 @@ static const char *file_name(const char *path)
 /* ------------------------------------------------------------------------------------------ */
 /* metrics.json                                                                                */
 
-static void json_string(FILE *f, const char *s)
-{
-    fputc('"', f);
-    for (const unsigned char *p = (const unsigned char *)(s ? s : ""); *p; p++) {
-        if (*p == '"' || *p == '\\') fprintf(f, "\\%c", *p);
-        else if (*p < 0x20) fprintf(f, "\\u%04x", *p);
-        else fputc(*p, f);
-    }
-    fputc('"', f);
-}
 
 static void json_number(FILE *f, double v)
 {
@@ -71,14 +62,14 @@ static int write_json(const char *out_dir, const crosscheck_result *r, const cro
     if (!f) return -1;
     const crosscheck_thresholds *t = &o->thresholds;
     fputs("{\n  \"scene\": ", f);
-    json_string(f, o->source);
+    json_write_string(f, o->source);
     fputs(",\n  \"povray_scene\": ", f);
-    json_string(f, r->pov_scene);
+    json_write_string(f, r->pov_scene);
     fprintf(f, ",\n  \"width\": %u, \"height\": %u, \"spp\": %u, \"samples_per_pixel\": %u,\n", r->width, r->height,
             r->spp, r->samples);
     fprintf(f, "  \"flat_earth\": %s,\n", r->flat_earth ? "true" : "false");
     fprintf(f, "  \"pass\": %s,\n  \"verdict\": ", r->pass ? "true" : "false");
-    json_string(f, r->verdict);
+    json_write_string(f, r->verdict);
     fprintf(f, ",\n  \"checks\": {\"coverage\": %s, \"mae\": %s, \"over\": %s, \"classes\": %s},\n",
             r->pass_coverage ? "true" : "false", r->pass_mae ? "true" : "false", r->pass_over ? "true" : "false",
             r->pass_classes ? "true" : "false");
@@ -129,9 +120,9 @@ static int write_json(const char *out_dir, const crosscheck_result *r, const cro
     double ratio = time_ratio(r);
     json_number(f, ratio >= 0 ? ratio : NAN);
     fputs("},\n  \"files\": {\"sylva\": \"sylva.exr\", \"povray\": ", f);
-    json_string(f, r->pov_image);
+    json_write_string(f, r->pov_image);
     fputs(", \"povray_log\": ", f);
-    json_string(f, r->pov_log);
+    json_write_string(f, r->pov_log);
     fputs(", \"difference\": \"difference.png\", \"classes\": \"classes.png\", \"report\": \"report.html\"}\n}\n", f);
     return atomic_file_commit(&out, err);
 }

@@ -7,6 +7,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "io/atomic_file.h"
 #include "util/err.h"
 
 #ifdef __cplusplus
@@ -33,6 +34,10 @@ void image_free(image_f32 *img); /* accepts a zeroed image */
 /* Writes 8-bit pixels (channels 1..4) to path; the format follows the extension. */
 int image_write_u8(const char *path, uint32_t width, uint32_t height, uint32_t channels,
                    const uint8_t *pixels, err_buf *err);
+/* The same into a temporary the caller opened (atomic_file_open_stream) and commits or aborts
+ * itself, for outputs that appear together. The format follows af->path's extension. */
+int image_write_u8_into(atomic_file *af, uint32_t width, uint32_t height, uint32_t channels,
+                        const uint8_t *pixels, err_buf *err);
 
 #ifdef __cplusplus
 }

@@ -196,27 +196,34 @@ extern "C" void image_free(image_f32 *img)
     *img = image_f32{};
 }
 
-extern "C" int image_write_u8(const char *path, uint32_t width, uint32_t height,
-                              uint32_t channels, const uint8_t *pixels, err_buf *err)
+extern "C" int image_write_u8_into(atomic_file *af, uint32_t width, uint32_t height,
+                                   uint32_t channels, const uint8_t *pixels, err_buf *err)
 {
-    if (!path || !pixels) return err_set(err, "image_write_u8 needs a path and pixels");
+    if (!af || !af->stream || !pixels)
+        return err_set(err, "image_write_u8_into needs an open temporary and pixels");
+    const char *path = af->path;
     if (width == 0 || height == 0 || width > INT_MAX || height > INT_MAX)
         return err_set(err, "%s: cannot write a %ux%u image; width and height must be between "
                        "1 and %d", path, width, height, INT_MAX);
     if (channels < 1 || channels > 4)
         return err_set(err, "%s: cannot write %u channels; 1 to 4 (grey, grey+alpha, RGB, RGBA) "
                        "are supported", path, channels);
+    try {
+        return write_u8(path, af, width, height, channels, pixels, err);
+    } catch (const std::exception &e) {
+        return err_set(err, "%s: cannot write the image: %s", path, e.what());
+    } catch (...) {
+        return err_set(err, "%s: cannot write the image: unknown failure in OpenImageIO", path);
+    }
+}
+
+extern "C" int image_write_u8(const char *path, uint32_t width, uint32_t height,
+                              uint32_t channels, const uint8_t *pixels, err_buf *err)
+{
+    if (!path || !pixels) return err_set(err, "image_write_u8 needs a path and pixels");
     atomic_file tmp;
     if (!atomic_file_open_stream(&tmp, path, err)) return -1;
-    int status;
-    try {
-        status = write_u8(path, &tmp, width, height, channels, pixels, err);
-    } catch (const std::exception &e) {
-        status = err_set(err, "%s: cannot write the image: %s", path, e.what());
-    } catch (...) {
-        status = err_set(err, "%s: cannot write the image: unknown failure in OpenImageIO", path);
-    }
-    if (status) {
+    if (image_write_u8_into(&tmp, width, height, channels, pixels, err)) {
         atomic_file_abort(&tmp);
         return -1;
     }

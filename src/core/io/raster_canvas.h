@@ -1,6 +1,6 @@
 /* raster_canvas.h — a small 8-bit RGB canvas for charts and maps written as PNG: filled
  * rectangles and discs, thick lines, and text in a built-in 5 x 7 pixel font (upper-case
- * letters, digits and a little punctuation; lower case is drawn as upper case). Row 0 is the top.
+ * letters, digits and a little punctuation, < > = among it; lower case is drawn as upper case). Row 0 is the top.
  *
  * Ownership: a canvas owns its pixels; canvas_free releases them (accepts a zeroed canvas).
  */
@@ -9,6 +9,7 @@
 
 #include <stdint.h>
 
+#include "io/atomic_file.h"
 #include "util/err.h"
 
 typedef struct canvas {
@@ -33,6 +34,9 @@ int canvas_text_width(const char *text, int scale); /* pixels */
 
 /* Writes the canvas as a PNG (image_write_u8: a temporary name renamed into place). */
 int canvas_write_png(const canvas *c, const char *path, err_buf *err);
+/* Writes the canvas as a PNG into a temporary the caller opened and commits
+ * (image_write_u8_into). */
+int canvas_write_png_into(const canvas *c, atomic_file *af, err_buf *err);
 
 /* A distinct colour for series i (cycles after 8). */
 void canvas_series_color(uint32_t i, uint8_t rgb[3]);

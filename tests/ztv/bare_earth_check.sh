@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
-# gdal_agreement.sh SYLVA COMPARE WORK SCENE... — the bare-earth ZTV of each scene against
-# gdal_viewshed, the tool practitioners make ZTVs with, on the same DTM, targets, heights and
-# curvature; ztv_gdal_compare (ztv_gdal_compare.c) says what agreeing means and prints the
-# figures. Each scene (tests/ztv/*.yaml) names a DTM file with `dtm:`, optionally `crop:` and
+# bare_earth_check.sh gdal|exact SYLVA TOOL WORK SCENE... — the bare-earth ZTV of each scene
+# (`sylva ztv`) against a reference on the same DTM, targets, heights and curvature:
+#   gdal   gdal_viewshed, the tool practitioners make ZTVs with; TOOL is ztv_gdal_compare
+#          (ztv_gdal_compare.c), which says what agreeing means and prints the figures;
+#   exact  exact sightlines over the same ground, computed independently of sylva's tracer;
+#          TOOL is ztv_sightline_oracle (ztv_sightline_oracle.c).
+# Each scene (tests/ztv/*.yaml) names a DTM file with `dtm:`, optionally `crop:` and
 # `cell_size:`, an `earth:` line, the ZTV's `observer_height:` and its targets one per line as
 # `{position: [x, y], height_above_ground: H, development: NAME}` in local metres (the scene has no
 # site, so the DTM's footprint is centred on the origin).
@@ -16,8 +19,9 @@
 #
 # Exit 0 when every scene agrees, 1 when one does not, 77 (skipped) without the shared data.
 set -uo pipefail
-sylva=$1 compare=$2 work=$3
-shift 3
+mode=$1 sylva=$2 tool=$3 work=$4
+shift 4
+case $mode in gdal|exact) ;; *) echo "mode must be gdal or exact, not '$mode'" >&2; exit 2 ;; esac
 command -v gdal_viewshed >/dev/null && command -v gdal_translate >/dev/null ||
   { echo "gdal_viewshed or gdal_translate not found: install gdal-bin (scripts/install-deps.sh)" >&2; exit 1; }
 rm -rf "$work" && mkdir -p "$work" || exit 1
@@ -62,6 +66,16 @@ for scene in "$@"; do
   t0=$(date +%s.%N)
   "$sylva" ztv "$scene" -o "$w/ztv" -q || { echo "$name: sylva ztv failed" >&2; status=1; continue; }
   t1=$(date +%s.%N)
+  targets=$(sed -n 's/.*position: \[\([-0-9.]*\), *\([-0-9.]*\)\], *height_above_ground: *\([0-9.]*\).*/\1 \2 \3/p' "$scene")
+  [ -n "$targets" ] || { echo "$scene: no targets" >&2; exit 1; }
+  if [ "$mode" = exact ]; then
+    curve=$(awk -v c="$cc" 'BEGIN { printf "%.12g", c / (2 * 6371000) }')
+    echo "== $name: exact sightlines, observer $h m, (1 - k) / 2R = $curve /m; sylva ztv $(awk -v a="$t0" -v b="$t1" \
+      'BEGIN { printf "%.2f", b - a }') s"
+    # shellcheck disable=SC2086 # the targets' numbers are words
+    "$tool" "$w/ztv/ztv_bare.tif" "$w/dtm.tif" "$h" "$curve" $targets || status=1
+    continue
+  fi
   maps=()
   while read -r x y H; do
     t=${#maps[@]}
@@ -70,19 +84,18 @@ for scene in "$@"; do
     gdal_viewshed -q -ox "$ox" -oy "$oy" -oz "$H" -tz "$h" -cc "$cc" -vv 1 -iv 0 "$w/dtm.tif" "$w/gdal_$t.tif" ||
       { echo "$name: gdal_viewshed failed" >&2; exit 1; }
     maps+=("$w/gdal_$t.tif")
-  done < <(sed -n 's/.*position: \[\([-0-9.]*\), *\([-0-9.]*\)\], *height_above_ground: *\([0-9.]*\).*/\1 \2 \3/p' "$scene")
+  done <<<"$targets"
   t2=$(date +%s.%N)
-  [ ${#maps[@]} -gt 0 ] || { echo "$scene: no targets" >&2; exit 1; }
   echo "== $name: ${#maps[@]} targets, observer $h m, gdal_viewshed -cc $cc; sylva ztv $(awk -v a="$t0" -v b="$t1" \
     'BEGIN { printf "%.2f", b - a }') s, gdal_viewshed $(awk -v a="$t1" -v b="$t2" 'BEGIN { printf "%.2f", b - a }') s"
-  "$compare" "$w/ztv/ztv_bare.tif" "$w/dtm.tif" "${maps[@]}" | tee "$w/figures.txt"
+  "$tool" "$w/ztv/ztv_bare.tif" "$w/dtm.tif" "${maps[@]}" | tee "$w/figures.txt"
   [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
 done
 
 # The curvature hides cells: in both tools the curved map of the hills sees fewer cell-targets
 # than the flat one, and sylva's loss is gdal_viewshed's within a quarter (a wrong sign, or the
 # diameter taken for the radius, changes it by all or twice; the agreement alone would not tell).
-if [ -f "$work/hills_curved/figures.txt" ] && [ -f "$work/hills_flat/figures.txt" ]; then
+if [ "$mode" = gdal ] && [ -f "$work/hills_curved/figures.txt" ] && [ -f "$work/hills_flat/figures.txt" ]; then
   loss() { echo $(( $(sed -n "s/^$1 visible cells: //p" "$work/hills_flat/figures.txt") -
                     $(sed -n "s/^$1 visible cells: //p" "$work/hills_curved/figures.txt") )); }
   ls=$(loss sylva) lg=$(loss gdal)

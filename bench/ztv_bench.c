@@ -12,13 +12,14 @@
  *     wall time, from the built Embree scene to the last block handed over, and cell-targets per
  *     second;
  *  2. raw Embree: the same rays, cast with rtcOccluded1 in a plain loop over rows on as many
- *     threads (rows interleaved), through the same Embree scene with the same masks, the same ends (a gap at each)
- *     and the same order of modes (screened first, bare earth where that is blocked; only bare
- *     earth for a cell under a crown): rays per second, best of 3, and the tracer's share of it.
+ *     threads (rows interleaved), through the same Embree scene with the same masks, the same
+ *     ends (a gap at each) and the same order of modes (screened first, bare earth where that is
+ *     blocked; only bare earth for a cell under a crown): rays per second, and the tracer's share of it. Each time
+ *     is the best of 3 runs, the tracer's and the loop's taken in turn (the machine may be busy).
  *     The loop's visible counts must equal the maps' (else it did not cast the same rays). For
  *     scale, the bare-earth rays also through an Embree scene of the terrain alone;
  *  3. gdal_viewshed over the same terrain written as a GeoTIFF: one run per target (-cc 0), as a
- *     ZTV is made with it, timed as commands.
+ *     ZTV is made with it, timed as commands (the best of 3 rounds of 10).
  * The Earth is flat (curvature off), so that a cell-target is one straight ray for the tracer
  * and the loop alike; --curvature also times the tracer with the Earth's curvature and
  * refraction (its sightlines are then chains of chords, so it has no raw baseline).
@@ -50,6 +51,7 @@
 #define N_TARGETS 10u
 #define HUB 150.0          /* target height above the ground */
 #define EYE 2.0            /* observer height above the ground */
+#define REPEATS 3          /* a time is the best of this many runs; the tracer's and the loop's in turn */
 
 static double hill(double x, double y)
 {
@@ -176,8 +178,9 @@ static int raw_clear(RTCScene top, const float eye[3], const double t[3], unsign
     double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), far = len - ZTV_SIGHT_GAP;
     struct RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
-    struct RTCRay ray = {.org_x = eye[0], .org_y = eye[1], .org_z = eye[2], .tnear = (float)fmin(ZTV_SIGHT_GAP, 0.5 * far),
-                         .dir_x = (float)(d[0] / len), .dir_y = (float)(d[1] / len), .dir_z = (float)(d[2] / len),
+    struct RTCRay ray = {.org_x = eye[0], .org_y = eye[1], .org_z = eye[2],
+                         .tnear = (float)fmin(ZTV_SIGHT_GAP, 0.5 * far), .dir_x = (float)(d[0] / len),
+                         .dir_y = (float)(d[1] / len), .dir_z = (float)(d[2] / len),
                          .tfar = (float)far, .mask = mask};
     rtcOccluded1(top, &ctx, &ray);
     return ray.tfar >= 0;
@@ -187,6 +190,7 @@ static void *raw_rows(void *arg)
 {
     raw_job *j = arg;
     const ztv_grid *g = j->grid;
+    uint64_t rays = 0, visible[2] = {0, 0}; /* local: the jobs share cache lines */
     for (uint32_t row = j->first; row < g->ny; row += j->stride)
         for (uint32_t i = 0; i < g->nx; i++) {
             double x, y, ground;
@@ -195,36 +199,51 @@ static void *raw_rows(void *arg)
             float eye[3] = {(float)x, (float)y, (float)(ground + EYE)};
             int open = j->cls && j->cls[(size_t)row * g->nx + i] == ZTV_OPEN;
             for (uint32_t t = 0; t < N_TARGETS; t++) {
-                int screened = open && (j->rays++, raw_clear(j->acc->top, eye, j->target[t], j->screen_mask));
-                int bare = screened || (j->rays++, raw_clear(j->acc->top, eye, j->target[t], ACCEL_MASK_GROUND));
-                j->visible[0] += bare, j->visible[1] += screened;
+                int screened = open && (rays++, raw_clear(j->acc->top, eye, j->target[t], j->screen_mask));
+                int bare = screened || (rays++, raw_clear(j->acc->top, eye, j->target[t], ACCEL_MASK_GROUND));
+                visible[0] += bare, visible[1] += screened;
             }
         }
+    j->rays = rays, j->visible[0] = visible[0], j->visible[1] = visible[1];
     return NULL;
 }
 
-/* Best of 3 wall times of the loop on `threads` threads; the last run's tallies in *out. */
-static double raw_embree(raw_job proto, unsigned threads, raw_job *out)
+/* One run of the loop on `threads` threads: its wall time, its tallies in *out. */
+static double raw_once(raw_job proto, unsigned threads, raw_job *out)
 {
     raw_job jobs[64];
     pthread_t tid[64];
-    double best = INFINITY;
-    for (int rep = 0; rep < 3; rep++) {
-        double t0 = progress_now();
-        for (unsigned k = 0; k < threads; k++) {
-            jobs[k] = proto;
-            jobs[k].first = k, jobs[k].stride = threads;
-            pthread_create(&tid[k], NULL, raw_rows, &jobs[k]);
-        }
-        *out = proto;
-        for (unsigned k = 0; k < threads; k++) {
-            pthread_join(tid[k], NULL);
-            out->rays += jobs[k].rays, out->visible[0] += jobs[k].visible[0], out->visible[1] += jobs[k].visible[1];
-        }
-        double dt = progress_now() - t0;
-        if (dt < best) best = dt;
+    double t0 = progress_now();
+    for (unsigned k = 0; k < threads; k++) {
+        jobs[k] = proto;
+        jobs[k].first = k, jobs[k].stride = threads;
+        pthread_create(&tid[k], NULL, raw_rows, &jobs[k]);
     }
-    return best;
+    *out = proto;
+    for (unsigned k = 0; k < threads; k++) {
+        pthread_join(tid[k], NULL);
+        out->rays += jobs[k].rays, out->visible[0] += jobs[k].visible[0], out->visible[1] += jobs[k].visible[1];
+    }
+    return progress_now() - t0;
+}
+
+/* The tracer's map of job's mode and the loop over the same rays (and over `also`, when not
+ * NULL), in turn REPEATS times: their best wall times in *t_sylva, *t_raw (and *t_also), the
+ * tallies in *st and *got. 0, or -1 with err. */
+static int time_mode(const ztv_job *job, map_record *rec, raw_job raw, const raw_job *also, unsigned threads,
+                     double *t_sylva, double *t_raw, double *t_also, ztv_stats *st, raw_job *got, err_buf *err)
+{
+    *t_sylva = *t_raw = INFINITY;
+    if (also) *t_also = INFINITY;
+    for (int rep = 0; rep < REPEATS; rep++) {
+        double t = run_tracer(job, rec, st, err);
+        if (t < 0) return -1;
+        *t_sylva = fmin(*t_sylva, t);
+        *t_raw = fmin(*t_raw, raw_once(raw, threads, got));
+        raw_job unused;
+        if (also) *t_also = fmin(*t_also, raw_once(*also, threads, &unused));
+    }
+    return 0;
 }
 
 /* --- gdal_viewshed ------------------------------------------------------------------------- */
@@ -238,9 +257,9 @@ static int write_terrain(const char *path, const sylva_heightfield *hf)
     if (!ds) return -1;
     double gt[6] = {hf->x0 - 0.5 * hf->dx, hf->dx, 0, hf->y0 + (hf->ny - 0.5) * hf->dy, 0, -hf->dy};
     int rc = GDALSetGeoTransform(ds, gt) != CE_None ||
-             GDALSetProjection(ds, "PROJCS[\"tmerc\",GEOGCS[\"sphere\",DATUM[\"sphere\",SPHEROID[\"sphere\",6371000,0]],"
-                                   "PRIMEM[\"Greenwich\",0],UNIT[\"degree\",0.0174532925199433]],"
-                                   "PROJECTION[\"Transverse_Mercator\"],UNIT[\"metre\",1]]") != CE_None;
+             GDALSetProjection(ds, "PROJCS[\"tmerc\",GEOGCS[\"sphere\",DATUM[\"sphere\","
+                                   "SPHEROID[\"sphere\",6371000,0]],PRIMEM[\"Greenwich\",0],"
+                                   "UNIT[\"degree\",0.0174532925199433]],PROJECTION[\"Transverse_Mercator\"],UNIT[\"metre\",1]]") != CE_None;
     for (uint32_t row = 0; row < hf->ny && !rc; row++)
         rc = GDALRasterIO(GDALGetRasterBand(ds, 1), GF_Write, 0, (int)row, (int)hf->nx, 1,
                           hf->z + (size_t)(hf->ny - 1 - row) * hf->nx, (int)hf->nx, 1, GDT_Float32, 0, 0) != CE_None;
@@ -279,7 +298,7 @@ static void print_map(const char *what, double seconds, const ztv_stats *st, dou
     printf("sylva ztv, %-22s %6.3f s: %6.2f M cell-targets/s, %.2f M rays/s (%llu rays)  goal <= 10 s\n", what,
            seconds, st->pairs / seconds / 1e6, st->rays / seconds / 1e6, (unsigned long long)st->rays);
     if (raw > 0)
-        printf("raw Embree, the same rays:     %6.3f s: %6.2f M rays/s (%llu rays; best of 3); sylva / raw: %.2f "
+        printf("raw Embree, the same rays:     %6.3f s: %6.2f M rays/s (%llu rays); sylva / raw: %.2f "
                "(goal >= 0.7)\n", raw, raw_rays / raw / 1e6, (unsigned long long)raw_rays, raw / seconds);
 }
 
@@ -331,39 +350,36 @@ int main(int argc, char **argv)
     map_record rec = {.nx = job.grid.nx, .cls = malloc((size_t)job.grid.nx * job.grid.ny)};
     if (!rec.cls) return fprintf(stderr, "ztv_bench: out of memory\n"), 4;
 
-    /* bare earth alone */
+    /* bare earth alone; and, for what skipping the plants by mask costs, the same rays through an
+     * Embree scene of the terrain alone */
     ztv_stats st;
-    double t_bare = run_tracer(&job, &rec, &st, &err);
-    if (t_bare < 0) return fprintf(stderr, "ztv_bench: %s\n", err.msg), 4;
-    raw_job raw = {.acc = &acc, .grid = &job.grid, .hf = s->terrain, .target = (const double(*)[3])target};
-    raw_job got;
-    double r_bare = raw_embree(raw, threads, &got);
+    raw_job raw = {.acc = &acc, .grid = &job.grid, .hf = s->terrain, .target = (const double(*)[3])target}, got;
+    scene *ground = scene_new();
+    accel acc_ground;
+    if (!ground || !(ground->terrain = terrain_new(cells)) || accel_build(&acc_ground, ground, threads, &err))
+        return fprintf(stderr, "ztv_bench: %s\n", err.msg[0] ? err.msg : "out of memory"), 4;
+    raw_job alone = raw;
+    alone.acc = &acc_ground;
+    double t_bare, r_bare, r_alone;
+    if (time_mode(&job, &rec, raw, &alone, threads, &t_bare, &r_bare, &r_alone, &st, &got, &err))
+        return fprintf(stderr, "ztv_bench: %s\n", err.msg), 4;
+    accel_free(&acc_ground);
+    scene_free(ground);
     print_map("bare earth:", t_bare, &st, r_bare, got.rays);
+    printf("raw Embree, the same rays through the terrain alone (no plants to skip): %6.3f s: %6.2f M rays/s\n",
+           r_alone, got.rays / r_alone / 1e6);
     if (got.visible[0] != rec.visible[ZTV_BARE] || got.rays != st.rays)
         printf("MISMATCH: the raw loop sees %llu cell-targets in %llu rays, the map %llu in %llu\n",
                (unsigned long long)got.visible[0], (unsigned long long)got.rays,
                (unsigned long long)rec.visible[ZTV_BARE], (unsigned long long)st.rays);
     uint64_t bare_visible = rec.visible[ZTV_BARE];
-    { /* what the plants cost bare-earth rays that skip them by mask: the terrain in a scene alone */
-        scene *ground = scene_new();
-        accel acc_ground;
-        if (!ground || !(ground->terrain = terrain_new(cells)) || accel_build(&acc_ground, ground, threads, &err))
-            return fprintf(stderr, "ztv_bench: %s\n", err.msg[0] ? err.msg : "out of memory"), 4;
-        raw_job alone = raw, got_alone;
-        alone.acc = &acc_ground;
-        double r = raw_embree(alone, threads, &got_alone);
-        printf("raw Embree, the same rays through the terrain alone (no plants to skip): %.3f s: %.2f M rays/s\n", r,
-               got_alone.rays / r / 1e6);
-        accel_free(&acc_ground);
-        scene_free(ground);
-    }
 
     /* bare earth and vegetation */
     job.screened = ZTV_VEGETATION;
-    double t_veg = run_tracer(&job, &rec, &st, &err);
-    if (t_veg < 0) return fprintf(stderr, "ztv_bench: %s\n", err.msg), 4;
     raw.cls = rec.cls, raw.screen_mask = ztv_mode_mask(ZTV_VEGETATION);
-    double r_veg = raw_embree(raw, threads, &got);
+    double t_veg, r_veg;
+    if (time_mode(&job, &rec, raw, NULL, threads, &t_veg, &r_veg, NULL, &st, &got, &err))
+        return fprintf(stderr, "ztv_bench: %s\n", err.msg), 4;
     print_map("bare and vegetation:", t_veg, &st, r_veg, got.rays);
     if (got.visible[0] != rec.visible[ZTV_BARE] || got.visible[1] != rec.visible[ZTV_VEGETATION] ||
         got.rays != st.rays)
@@ -380,21 +396,29 @@ int main(int argc, char **argv)
     if (curvature) {
         earth_settings earth = {.curvature = 1, .refraction = 0.13, .radius = 6371000};
         job.earth = &earth;
-        job.screened = ZTV_BARE;
-        double t_c = run_tracer(&job, &rec, &st, &err);
-        if (t_c < 0) return fprintf(stderr, "ztv_bench: %s\n", err.msg), 4;
-        print_map("bare, curved Earth:", t_c, &st, 0, 0);
-        job.screened = ZTV_VEGETATION;
-        t_c = run_tracer(&job, &rec, &st, &err);
-        if (t_c < 0) return fprintf(stderr, "ztv_bench: %s\n", err.msg), 4;
-        print_map("vegetation, curved:", t_c, &st, 0, 0);
+        const ztv_mode modes[2] = {ZTV_BARE, ZTV_VEGETATION};
+        const char *what[2] = {"bare, curved Earth:", "vegetation, curved:"};
+        for (int m = 0; m < 2; m++) {
+            job.screened = modes[m];
+            double best = INFINITY;
+            for (int rep = 0; rep < REPEATS; rep++) {
+                double t = run_tracer(&job, &rec, &st, &err);
+                if (t < 0) return fprintf(stderr, "ztv_bench: %s\n", err.msg), 4;
+                best = fmin(best, t);
+            }
+            print_map(what[m], best, &st, 0, 0);
+        }
     }
 
     if (gdal) {
         char dir[] = "/tmp/ztv_bench.XXXXXX", dem[64], cmd[128];
         if (!mkdtemp(dir)) return perror("ztv_bench: mkdtemp"), 3;
         snprintf(dem, sizeof dem, "%s/terrain.tif", dir);
-        double g = write_terrain(dem, s->terrain) ? -1 : gdal_viewshed_time(dem, dir, (const double(*)[3])target);
+        double g = write_terrain(dem, s->terrain) ? -1 : INFINITY;
+        for (int rep = 0; rep < REPEATS && g >= 0; rep++) {
+            double t = gdal_viewshed_time(dem, dir, (const double(*)[3])target);
+            g = t < 0 ? -1 : fmin(g, t);
+        }
         if (g < 0) printf("gdal_viewshed: not run (no gdal_viewshed, or it failed)\n");
         else
             printf("gdal_viewshed, bare earth:     %6.3f s for %u runs, one per target: %.2f M cell-targets/s; "

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# ztv_test.sh SYLVA SCENE — `sylva ztv` end to end on tests/scenes/ztv/small_site.yaml: the files
+# it promises appear (GeoTIFFs on the site's CRS, maps, summary) and nothing else; the summary
+# finds the area the trees and the barn hide and the cells inside them; the maps and GeoTIFFs
+# are byte for byte the same from one thread and from two; a second run replaces the files.
+set -uo pipefail
+sylva=$1 scene=$2
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+fails=0
+fail() { echo "FAIL: $*" >&2; fails=$((fails + 1)); }
+
+"$sylva" ztv "$scene" -o "$out/a" --threads 1 -q >/dev/null || fail "ztv exited with $?"
+"$sylva" ztv "$scene" -o "$out/b" --threads 2 -q >/dev/null || fail "ztv --threads 2 exited with $?"
+want="ztv_all.png ztv_all.tif ztv_bare.png ztv_bare.tif ztv_hidden_all.png ztv_hidden_all.tif ztv_summary.csv ztv_summary.json"
+got=$(cd "$out/a" && ls -A | tr '\n' ' ' | sed 's/ $//')
+[ "$got" = "$want" ] || fail "files: '$got', expected '$want'"
+for f in $want; do
+  cmp -s "$out/a/$f" "$out/b/$f" || fail "$f differs between one thread and two"
+done
+
+# value QUANTITY MODE: the summary's number for it
+value() { awk -F, -v q="$1" -v m="$2" '$1 == q && $2 == m {print $4}' "$out/a/ztv_summary.csv"; }
+positive() { awk -v v="$1" 'BEGIN {exit !(v > 0)}'; }
+for q in "area_hidden_by_screening all" "area_partly_hidden_by_screening all" "area_under_crown all" \
+         "area_in_object all" "area_visible_0 bare" "area_visible_100 bare"; do
+  v=$(value $q)
+  positive "${v:-0}" || fail "summary: $q is '${v}', expected more than 0"
+done
+for q in "area_under_crown bare" "area_in_object bare" "area_not_computed bare"; do
+  v=$(value $q)
+  [ "$v" = "0" ] || fail "summary: $q is '${v}', expected 0"
+done
+# the 61 x 61 cells of 5 m add up to the grid's area in every mode
+for m in bare all; do
+  sum=$(awk -F, -v m=$m '$2 == m && $1 ~ /^area_(visible|under|in_obj|not_comp)/ {s += $4} END {printf "%.6f", s}' "$out/a/ztv_summary.csv")
+  [ "$sum" = "0.093025" ] || fail "summary: the $m areas add up to $sum km2, expected 0.093025"
+done
+
+if command -v gdalinfo >/dev/null; then
+  info=$(gdalinfo "$out/a/ztv_all.tif")
+  grep -q 'WGS 84 / UTM zone 14N' <<<"$info" || fail "ztv_all.tif: no UTM zone 14N CRS"
+  grep -q 'Pixel Size = (5.000000000000000,-5.000000000000000)' <<<"$info" || fail "ztv_all.tif: pixel size"
+  grep -q 'Origin = (649847.500000000000000,3600152.500000000000000)' <<<"$info" || fail "ztv_all.tif: origin"
+  grep -q 'Size is 61, 61' <<<"$info" || fail "ztv_all.tif: size"
+fi
+
+# a second run into the same folder replaces what is there
+"$sylva" ztv "$scene" -o "$out/a" --screening none -q >/dev/null || fail "second run exited with $?"
+[ -f "$out/a/ztv_bare.tif" ] && cmp -s "$out/a/ztv_bare.tif" "$out/b/ztv_bare.tif" || fail "rerun: ztv_bare.tif changed"
+
+[ $fails -eq 0 ] && echo "ztv: files, summary, thread count and rerun as expected"
+exit $((fails > 0))

@@ -9,7 +9,9 @@
  * computed; on bare earth (i - 1) % 5 targets are visible from column i; with vegetation row 7
  * stands under crowns, rows 0-3 see as on bare earth, rows 4-6 half (rounded down) and rows
  * 8-14 nothing. T1 is seen where one target or more is, T2 where three or more are. */
+#include <signal.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cpl_conv.h>
@@ -382,6 +384,38 @@ TEST(unfinished_leaves_nothing)
     free_pattern(&p);
 }
 
+/* SIGTERM while the tracer is between blocks: the process ends by the signal and the GeoTIFFs'
+ * temporaries are gone. */
+TEST(signal_leaves_nothing)
+{
+    const char *dir = fresh_dir("signal");
+    int ready[2];
+    CHECK_INT(pipe(ready), 0);
+    pid_t child = fork();
+    CHECK(child >= 0);
+    if (child == 0) {
+        pattern p;
+        make_pattern(&p);
+        err_buf err;
+        ztv_output *o = ztv_output_open(dir, &p.info, &err);
+        if (!o) _exit(3);
+        ztv_block b = block_of(&p, 0, 4);
+        if (ztv_output_block(o, &b, &err)) _exit(4);
+        if (write(ready[1], "x", 1) != 1) _exit(5);
+        for (;;) pause();
+    }
+    char c;
+    CHECK_INT(read(ready[0], &c, 1), 1);
+    CHECK_INT(work_dir_entries(dir), 3); /* two modes' GeoTIFFs and the hidden one */
+    kill(child, SIGTERM);
+    int status = 0;
+    waitpid(child, &status, 0);
+    CHECK(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
+    CHECK_INT(work_dir_entries(dir), 0);
+    close(ready[0]);
+    close(ready[1]);
+}
+
 TEST(planted_link_not_followed)
 {
     pattern p;
@@ -552,5 +586,5 @@ TEST(local_long_grid_many_developments)
 
 TEST_LIST(TEST_CASE(band_boundaries), TEST_CASE(local_long_grid_many_developments),
           TEST_CASE(geotiff_reads_back), TEST_CASE(summary_areas), TEST_CASE(maps),
-          TEST_CASE(unfinished_leaves_nothing), TEST_CASE(planted_link_not_followed),
+          TEST_CASE(unfinished_leaves_nothing), TEST_CASE(signal_leaves_nothing), TEST_CASE(planted_link_not_followed),
           TEST_CASE(blocks_out_of_order), TEST_CASE(bad_folder_and_info))

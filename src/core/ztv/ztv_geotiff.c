@@ -1,7 +1,8 @@
 /* ztv_geotiff.c — the GeoTIFF writer: GDAL creates the file on a temporary that atomic_file
  * made (so no planted name is ever followed at creation), writes row blocks through
  * GDALDatasetRasterIO, and the temporary is checked to still be the file made before it is
- * renamed. GDAL stays quiet (its messages go into err) and writes no .aux.xml sidecar. */
+ * renamed. Strips are one row high, so that the rows of a block fill whole strips that are
+ * flushed out of GDAL's cache at once: memory stays that of one block. GDAL stays quiet (its messages go into err) and writes no .aux.xml sidecar. */
 #include "ztv/ztv_geotiff.h"
 
 #include <stdlib.h>
@@ -70,7 +71,7 @@ ztv_geotiff *ztv_geotiff_open(const char *path, const ztv_info *info, uint32_t b
     int rc = 0;
     GDALDriverH driver = GDALGetDriverByName("GTiff");
     const char *const options[] = {"COMPRESS=DEFLATE", "PREDICTOR=3", "INTERLEAVE=PIXEL",
-                                   "BLOCKYSIZE=16", "BIGTIFF=IF_SAFER", NULL};
+                                   "BLOCKYSIZE=1", "BIGTIFF=IF_SAFER", NULL};
     if (!driver) rc = err_fail(err, ERR_INTERNAL, "%s: GDAL has no GeoTIFF driver", path);
     if (!rc) {
         g->ds = GDALCreate(driver, g->file.tmp, (int)info->grid.nx, (int)info->grid.ny, (int)bands,
@@ -107,9 +108,12 @@ int ztv_geotiff_rows(ztv_geotiff *g, uint32_t j0, uint32_t rows, const float *va
     CPLErr e = GDALDatasetRasterIO(g->ds, GF_Write, 0, (int)j0, (int)g->info->grid.nx, (int)rows,
                                    (void *)values, (int)g->info->grid.nx, (int)rows, GDT_Float32,
                                    (int)g->bands, NULL, 0, 0, 0);
-    int rc = e == CE_None ? 0
-                          : err_fail(err, ERR_OUTPUT, "%s: GDAL cannot write rows %u to %u: %s",
-                                     g->file.path, j0, j0 + rows, gdal_why());
+    /* every strip of these rows is whole: write them out and drop them from GDAL's cache */
+    if (e == CE_None) GDALFlushCache(g->ds);
+    int rc = e == CE_None && CPLGetLastErrorType() < CE_Failure
+                 ? 0
+                 : err_fail(err, ERR_OUTPUT, "%s: GDAL cannot write rows %u to %u: %s", g->file.path, j0,
+                            j0 + rows, gdal_why());
     gdal_leave();
     if (!rc) g->rows_written += rows;
     return rc;

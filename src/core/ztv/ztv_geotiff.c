@@ -2,7 +2,8 @@
  * made (so no planted name is ever followed at creation), writes row blocks through
  * GDALDatasetRasterIO, and the temporary is checked to still be the file made before it is
  * renamed. Strips are one row high, so that the rows of a block fill whole strips that are
- * flushed out of GDAL's cache at once: memory stays that of one block. GDAL stays quiet (its messages go into err) and writes no .aux.xml sidecar. */
+ * flushed out of GDAL's cache at once: memory stays that of one block. GDAL stays quiet (its
+ * messages go into err) and writes no .aux.xml sidecar. */
 #include "ztv/ztv_geotiff.h"
 
 #include <stdlib.h>

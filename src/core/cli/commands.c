@@ -11,6 +11,7 @@ const sylva_command sylva_commands[] = {
     {"simulate", cmd_simulate, "SCENE", "run the scene's ecology alone: plants, statistics, saved state"},
     {"factors", cmd_factors, "SCENE", "write the ecology's terrain factor maps (-o DIR)"},
     {"tree-stats", cmd_tree_stats, "SCENE SPECIES", "a tree species' variants: segments, leaves, bounds, D_B"},
+    {"ztv", cmd_ztv, "SCENE -o DIR", "map where the development can be seen from (GeoTIFF, PNG maps, summary)"},
     {"probe", cmd_probe, "SCENE E N", "the ground at a point (height, slope, aspect, water) and what stands there"},
     {NULL, NULL, NULL, NULL},
 };

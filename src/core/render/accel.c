@@ -92,7 +92,7 @@ uint32_t accel_hit_object(const accel *a, const struct RTCRayHit *rh)
 /* Adds one part of m (its opaque or its cut-out triangles) to rs as geometry `id`. Attaches
  * nothing when the part has no triangles. */
 static int add_part(accel *a, RTCScene rs, const mesh *m, accel_part part, geom_kind kind, unsigned id,
-                    geom_info *g, err_buf *err)
+                    unsigned mask, geom_info *g, err_buf *err)
 {
     int cutouts = part == ACCEL_PART_CUTOUT;
     *g = (geom_info){.kind = kind, .mesh = m, .scene = a->scene, .alpha = cutouts};
@@ -105,6 +105,7 @@ static int add_part(accel *a, RTCScene rs, const mesh *m, accel_part part, geom_
     rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, g->part.tri, 0,
                                3 * sizeof(uint32_t), g->part.n);
     rtcSetGeometryUserData(geom, g);
+    rtcSetGeometryMask(geom, mask);
     if (cutouts) {
         rtcSetGeometryIntersectFilterFunction(geom, cutout_filter);
         rtcSetGeometryOccludedFilterFunction(geom, cutout_filter);
@@ -116,11 +117,12 @@ static int add_part(accel *a, RTCScene rs, const mesh *m, accel_part part, geom_
 }
 
 /* Both parts of m at ids first (opaque) and first + 1 (cut-out), into g[0] and g[1]. */
-static int add_mesh(accel *a, RTCScene rs, const mesh *m, geom_kind kind, unsigned first, geom_info g[ACCEL_PARTS],
-                    err_buf *err)
+static int add_mesh(accel *a, RTCScene rs, const mesh *m, geom_kind kind, unsigned first, unsigned mask,
+                    geom_info g[ACCEL_PARTS], err_buf *err)
 {
-    if (add_part(a, rs, m, ACCEL_PART_OPAQUE, kind, first + ACCEL_PART_OPAQUE, &g[ACCEL_PART_OPAQUE], err)) return -1;
-    return add_part(a, rs, m, ACCEL_PART_CUTOUT, kind, first + ACCEL_PART_CUTOUT, &g[ACCEL_PART_CUTOUT], err);
+    if (add_part(a, rs, m, ACCEL_PART_OPAQUE, kind, first + ACCEL_PART_OPAQUE, mask, &g[ACCEL_PART_OPAQUE], err))
+        return -1;
+    return add_part(a, rs, m, ACCEL_PART_CUTOUT, kind, first + ACCEL_PART_CUTOUT, mask, &g[ACCEL_PART_CUTOUT], err);
 }
 
 /* One BVH holding mesh m (its two parts in g[0] and g[1]), for instances to share. */
@@ -131,7 +133,7 @@ static int build_shared(accel *a, const mesh *m, geom_kind kind, RTCScene *out, 
     if (!ps) return accel_device_error(a, err) ? -1 : err_set(err, "Embree could not create a scene");
     *out = ps;
     rtcSetSceneBuildQuality(ps, RTC_BUILD_QUALITY_HIGH);
-    if (add_mesh(a, ps, m, kind, 0, g, err)) return -1;
+    if (add_mesh(a, ps, m, kind, 0, ~0u, g, err)) return -1; /* the instance's mask decides */
     rtcCommitScene(ps);
     return accel_device_error(a, err);
 }
@@ -150,12 +152,13 @@ static int build_prototypes(accel *a, const scene *s, err_buf *err)
 }
 
 /* An instance of the shared BVH sc at top-level id, placed by xf. */
-static int add_instance(accel *a, RTCScene sc, const xform3x4 *xf, unsigned id, err_buf *err)
+static int add_instance(accel *a, RTCScene sc, const xform3x4 *xf, unsigned id, unsigned mask, err_buf *err)
 {
     RTCGeometry g = rtcNewGeometry(a->device, RTC_GEOMETRY_TYPE_INSTANCE);
     if (!g) return accel_device_error(a, err) ? -1 : err_nomem(err, "out of memory building the BVH");
     rtcSetGeometryInstancedScene(g, sc);
     rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, &xf->m[0][0]);
+    rtcSetGeometryMask(g, mask);
     rtcCommitGeometry(g);
     rtcAttachGeometryByID(a->top, g, id);
     rtcReleaseGeometry(g);
@@ -177,22 +180,23 @@ static int build_top(accel *a, const scene *s, err_buf *err)
                                 &a->apron_mesh, err))
             return -1;
         if (a->apron_mesh && add_part(a, a->top, a->apron_mesh, ACCEL_PART_OPAQUE, GEOM_TERRAIN, ACCEL_TOP_APRON,
-                                      &a->top_geoms[ACCEL_TOP_APRON], err))
+                                      ACCEL_MASK_GROUND, &a->top_geoms[ACCEL_TOP_APRON], err))
             return -1;
         if (a->water_mesh && add_part(a, a->top, a->water_mesh, ACCEL_PART_OPAQUE, GEOM_WATER, ACCEL_TOP_WATER,
-                                      &a->top_geoms[ACCEL_TOP_WATER], err))
+                                      ACCEL_MASK_GROUND, &a->top_geoms[ACCEL_TOP_WATER], err))
             return -1;
     }
     for (uint32_t o = 0; o < s->n_objects; o++) {
         const object *ob = &s->objects[o];
         unsigned id = accel_top_object_id(o, ACCEL_PART_OPAQUE);
-        if (ob->mesh ? add_mesh(a, a->top, ob->mesh, GEOM_OBJECT, id, &a->top_geoms[id], err)
-                     : add_instance(a, a->model_scenes[ob->model], &ob->xf, id, err))
+        unsigned mask = ob->development ? ACCEL_MASK_DEVELOPMENT : ACCEL_MASK_OBJECT;
+        if (ob->mesh ? add_mesh(a, a->top, ob->mesh, GEOM_OBJECT, id, mask, &a->top_geoms[id], err)
+                     : add_instance(a, a->model_scenes[ob->model], &ob->xf, id, mask, err))
             return -1;
     }
     for (uint32_t i = 0; i < s->n_instances; i++)
         if (add_instance(a, a->proto_scenes[s->instances[i].prototype], &s->instances[i].xf, a->first_instance + i,
-                         err))
+                         ACCEL_MASK_PLANT, err))
             return -1;
     rtcCommitScene(a->top);
     return accel_device_error(a, err);

@@ -46,6 +46,16 @@ static inline unsigned accel_top_object_id(uint32_t o, accel_part part)
     return ACCEL_TOP_FIRST_OBJECT + ACCEL_PARTS * o + part;
 }
 
+/* What each top-level geometry is, as Embree geometry masks: a ray meets only the geometries
+ * whose mask shares a bit with its own. The renderer's rays carry every bit; a visibility map
+ * (ztv/) screens with some of them. */
+enum {
+    ACCEL_MASK_GROUND = 1u,      /* the terrain, its apron and the water surfaces */
+    ACCEL_MASK_PLANT = 2u,       /* the plant instances */
+    ACCEL_MASK_OBJECT = 4u,      /* objects that are not part of a development */
+    ACCEL_MASK_DEVELOPMENT = 8u  /* objects of a development */
+};
+
 typedef enum geom_kind { GEOM_TERRAIN = 1, GEOM_WATER, GEOM_OBJECT, GEOM_PROTOTYPE } geom_kind;
 
 typedef struct geom_info {

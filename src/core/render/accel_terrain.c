@@ -175,6 +175,7 @@ int accel_terrain_add(accel *a, RTCScene rs, unsigned id, err_buf *err)
     geom_info *g = &a->top_geoms[id];
     *g = (geom_info){.kind = GEOM_TERRAIN, .scene = a->scene, .terrain = at, .alpha = terrain_has_cutouts(a->scene)};
     rtcSetGeometryUserData(geom, g);
+    rtcSetGeometryMask(geom, ACCEL_MASK_GROUND);
     if (g->alpha) {
         rtcSetGeometryIntersectFilterFunction(geom, terrain_cutout_filter);
         rtcSetGeometryOccludedFilterFunction(geom, terrain_cutout_filter);

@@ -18,7 +18,7 @@
 
 const char *const host_sections[] = {"image",   "site",    "camera",  "sun",     "sky",     "materials",
                                      "terrain", "species", "plants",  "ecology", "groups",  "objects",
-                                     "earth",   "viewpoints", NULL};
+                                     "earth",   "viewpoints", "ztv", NULL};
 
 const char *const host_shape_names[] = {"mesh", "box", "sphere", "quad", "disk", NULL};
 const char *const host_sky_models[] = {"none", "constant", "preetham", NULL};
@@ -237,6 +237,44 @@ const host_schema host_schema_earth = {
     "earth", "The Earth's curvature and the atmosphere's refraction over long views.",
     earth_params, COUNT(earth_params)};
 
+/* --- ztv ----------------------------------------------------------------------------------- */
+static const char *const ztv_screenings[] = {"none", "vegetation", "all", NULL};
+static const sylva_param_spec ztv_params[] = {
+    {.name = "observer_height", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 2, .min = 0,
+     .max = 10000, .unit = "m", .help = "Eye height of the observer above the ground of each cell."},
+    {.name = "radius", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = 0, .max = 1e7, .unit = "m",
+     .help = "Map the cells within this distance of the nearest target (0: the whole terrain)."},
+    {.name = "cell", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = 0, .max = 1e6, .unit = "m",
+     .help = "Cell size of the map (0: the terrain's own grid, a cell per node)."},
+    {.name = "screening", .type = SYLVA_P_ENUM, .def_str = "all", .choices = ztv_screenings,
+     .help = "What screens the view besides bare earth: none, vegetation (the plants) or all (plants "
+             "and objects); bare earth is always mapped too."},
+    {.name = "samples", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 32, .min = 1, .max = 65535,
+     .help = "Targets sampled on each development object's surface (when neither targets nor "
+             "target_heights are given)."},
+    {.name = "target_heights", .type = SYLVA_P_LIST, .max_len = 64, .unit = "m",
+     .help = "Targets at these heights above each development object's footprint (e.g. a "
+             "turbine's hub and blade tip: [150, 270])."},
+    {.name = "targets", .type = SYLVA_P_LIST, .help = "Targets given by hand: a list of "
+     "{position, height_above_ground, development}."},
+};
+const host_schema host_schema_ztv = {
+    "ztv", "The visibility map (sylva ztv): where the development can be seen from.", ztv_params,
+    COUNT(ztv_params)};
+
+static const sylva_param_spec ztv_target_params[] = {
+    {.name = "position", .type = SYLVA_P_LIST, .flags = REQ, .min_len = 2, .max_len = 3, .unit = "m",
+     .help = "[x, y, z], [x, y] with height_above_ground, or a map position."},
+    {.name = "height_above_ground", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = -10000,
+     .max = 100000, .unit = "m", .help = "Height of the target above the terrain (a hub height)."},
+    {.name = "development", .type = SYLVA_P_STRING,
+     .help = "The development the target belongs to (default: the scene's only one, or "
+             "'development')."},
+};
+const host_schema host_schema_ztv_target = {
+    "ztv targets item", "One target of the visibility map.", ztv_target_params,
+    COUNT(ztv_target_params)};
+
 /* --- materials ------------------------------------------------------------------------------ */
 static const sylva_param_spec material_params[] = {
     {.name = "type", .type = SYLVA_P_ENUM, .def_str = "lambert", .choices = host_material_types,
@@ -346,7 +384,11 @@ const host_schema host_schema_plant = {"plants item", "One plant placed by hand.
     {.name = "height_above_ground", .type = SYLVA_P_REAL, .unit = "m",                             \
      .help = "With a 2-number position: the origin stands this high above the terrain."},          \
     {.name = "development", .type = SYLVA_P_BOOL, .def = 0,                                        \
-     .help = "Part of the development: drawn into the EXR's coverage mask layer."},                \
+     .help = "Part of the development: drawn into the EXR's coverage mask layer and the target " \
+             "of visibility maps."},                                                                \
+    {.name = "development_name", .type = SYLVA_P_STRING,                                           \
+     .help = "The development it is part of, when a scene holds several (implies development: "    \
+             "true; a cumulative visibility map tells them apart; default 'development')."},      \
     {.name = "layout", .type = SYLVA_P_PATH,                                                       \
      .help = "CSV of placements (id, easting/northing or x/y, heading, height_above_ground): one " \
              "object per row."}
@@ -471,7 +513,8 @@ const host_schema *host_schema_at(uint32_t i)
     static const host_schema *const all[] = {
         &host_schema_image,        &host_schema_site,         &host_schema_position,
         &host_schema_camera,       &host_schema_sun,          &host_schema_sky,
-        &host_schema_earth,        &host_schema_material,     &host_schema_terrain,
+        &host_schema_earth,        &host_schema_ztv,          &host_schema_ztv_target,
+        &host_schema_material,     &host_schema_terrain,
         &host_schema_species,      &host_schema_plant,        &host_schema_ecology,
         &host_schema_object,       &host_schema_object_model, &host_schema_object_group,
         &host_schema_shape_box,    &host_schema_shape_sphere,

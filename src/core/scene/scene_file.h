@@ -145,7 +145,7 @@ typedef struct object_spec {
     double heading_deg;       /* clockwise from north (+Y) about +Z, after rotation */
     object_base base;
     double height_above_ground; /* OBJECT_ABOVE_GROUND */
-    int development;          /* 1: in the development's coverage mask */
+    int development;          /* 0, or the development it is part of + 1 (scene_file.developments) */
     const char *material;     /* a material name (checked to exist), or NULL for the default */
     const char *file;         /* where it is written: the scene file, or a layout CSV */
     uint32_t line, column;
@@ -198,6 +198,34 @@ typedef struct ecology_spec {
     uint32_t line, column;
 } ecology_spec;
 
+/* The most developments one scene may name: a visibility map's bit mask of the developments
+ * seen from a cell is exact in a 32-bit float band. */
+#define SCENE_MAX_DEVELOPMENTS 24u
+
+/* One target of a visibility map given by hand (ztv: targets:). */
+typedef struct ztv_target_spec {
+    double position[3];       /* local metres; position[2] is the height when has_height */
+    int has_height;           /* 0: the target stands above_ground metres above the terrain */
+    double above_ground;
+    uint32_t development;     /* index into scene_file.developments */
+    uint32_t line, column;
+} ztv_target_spec;
+
+/* The ztv: section: how `sylva ztv` maps where the development can be seen from (docs/ztv.md).
+ * The targets are the explicit ones when given, else points target_heights above each
+ * development object's footprint when given, else `samples` points on each development
+ * object's surface. */
+typedef struct ztv_settings {
+    double observer_height;   /* metres above the terrain */
+    double radius;            /* metres from the nearest target; INFINITY: the whole terrain */
+    double cell;              /* metres; 0: the terrain's own grid */
+    int screening;            /* 0 none (bare earth), 1 vegetation, 2 all (a ztv_mode) */
+    uint32_t samples;
+    const double *target_heights; uint32_t n_target_heights;
+    ztv_target_spec *targets; uint32_t n_targets;
+    uint32_t line, column;    /* of the section (of the file's start when absent) */
+} ztv_settings;
+
 typedef struct scene_file {
     const char *path;           /* as given */
     const char *dir;            /* absolute folder of the file */
@@ -214,6 +242,8 @@ typedef struct scene_file {
     ecology_spec ecology;
     group_spec *groups; uint32_t n_groups;
     object_spec *objects; uint32_t n_objects; /* layouts expanded: one per CSV row */
+    const char **developments; uint32_t n_developments; /* names, in order of first mention */
+    ztv_settings ztv;
     material_spec *materials; uint32_t n_materials;
     name_index material_names;  /* name → index into materials; owned (its table) */
     name_index species_names;   /* name → index into species; owned (its table) */

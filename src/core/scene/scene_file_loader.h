@@ -152,6 +152,10 @@ int sf_read_species(loader *L, const ynode *node);
 int sf_read_plants(loader *L, const ynode *node);
 int sf_read_groups(loader *L, const ynode *node);
 int sf_read_objects(loader *L, const ynode *node);
+int sf_read_ztv(loader *L); /* after the objects: its targets name their developments */
+/* The index of the development named `name` in L->sf->developments, added when new; -1 with
+ * L->err set (out of memory, or more than SCENE_MAX_DEVELOPMENTS). */
+int sf_development_index(loader *L, const char *name, const char *file, uint32_t line, uint32_t column);
 
 /* --- objects (scene_file_objects.c) --- */
 /* Reads one objects entry (a shape, a model or a group) into o. part: 1 for a group's part,

@@ -27,7 +27,7 @@ static int read_object_position(loader *L, const sylva_params *p, const sf_posit
 /* Keys a group's part may not have, since the group is placed as a whole. */
 static int check_part_keys(loader *L, const sylva_params *p, const char *where)
 {
-    static const char *const whole_only[] = {"layout", "development", "height_above_ground"};
+    static const char *const whole_only[] = {"layout", "development", "development_name", "height_above_ground"};
     for (size_t k = 0; k < sizeof whole_only / sizeof whole_only[0]; k++) {
         const sylva_value *v = sylva_param(p, whole_only[k]);
         if (v->is_set)
@@ -129,7 +129,14 @@ int sf_read_object(loader *L, const ynode *item, const char *where, int part, ob
     o->name = name->is_set ? name->s : where;
     if (o->kind != OBJECT_GROUP) sf_copy3(o->rotation_deg, sylva_param(p, "rotation"));
     o->heading_deg = sylva_param_real(p, "heading");
-    o->development = (int)sylva_param(p, "development")->i;
+    const sylva_value *dev_name = sylva_param(p, "development_name");
+    if (dev_name->is_set || sylva_param(p, "development")->i) {
+        int d = sf_development_index(L, dev_name->is_set ? dev_name->s : "development", L->file,
+                                     dev_name->is_set ? dev_name->line : item->line,
+                                     dev_name->is_set ? dev_name->column : item->column);
+        if (d < 0) return -1;
+        o->development = d + 1;
+    }
     if (read_object_position(L, p, &pos, where, o)) return -1;
     const sylva_value *lay = sylva_param(p, "layout");
     *layout = lay->is_set ? lay->s : NULL;

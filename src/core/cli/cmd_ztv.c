@@ -1,0 +1,198 @@
+/* cmd_ztv.c — `sylva ztv SCENE -o DIR`: the zone of theoretical visibility of the scene's
+ * development (docs/ztv.md): for every cell of a map over the terrain, how many of the
+ * development's targets an observer standing there sees, on bare earth and screened by the
+ * forest and the buildings, written as GeoTIFFs, PNG maps and a summary. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli_args.h"
+#include "cli/cli_ecology.h"
+#include "cli/cli_scene.h"
+#include "cli/cli_status.h"
+#include "cli/commands.h"
+#include "render/accel.h"
+#include "util/progress.h"
+#include "ztv/ztv_grid.h"
+#include "ztv/ztv_output.h"
+#include "ztv/ztv_trace.h"
+
+static void ztv_usage(FILE *out)
+{
+    fprintf(out,
+            "usage: sylva ztv SCENE -o DIR [options]\n"
+            "Maps where SCENE's development can be seen from (a zone of theoretical visibility):\n"
+            "for every cell of a grid over the terrain, an observer at eye height above the ground\n"
+            "looks for each target of the development (the scene's ztv: section: targets given by\n"
+            "hand, heights above each development object, or points sampled on them) along a\n"
+            "sightline over the curved Earth (earth: section), on bare earth and screened by what\n"
+            "the scene holds. Writes into DIR (created when missing): ztv_bare.tif and ztv_MODE.tif\n"
+            "(GeoTIFF on the site's CRS: targets visible, fraction visible, cell class, developments\n"
+            "seen), ztv_hidden_MODE.tif (what the screening hides), PNG maps of each, and\n"
+            "ztv_summary.csv / .json (areas in km2). See docs/ztv.md.\n\n"
+            "options (each overrides the scene's ztv: key of the same name):\n"
+            "  -o, --output DIR        folder for the maps (required)\n"
+            "  --radius M              map cells within M metres of the nearest target (0: the\n"
+            "                          whole terrain)\n"
+            "  --cell M                cell size in metres (0: one cell per terrain node)\n"
+            "  --observer-height M     eye height above the ground (default 2)\n"
+            "  --screening S           none | vegetation | all: what screens besides bare earth\n"
+            "                          (default all: the plants and the objects)\n"
+            "  --flat-earth            straight sightlines, whatever the earth: section says\n"
+            "  --threads N             worker threads (default: one per core); the maps do not\n"
+            "                          depend on it\n"
+            "  -q, --quiet             no progress output\n"
+            "  --allow-gdal-virtual    let the scene name GDAL virtual paths, URLs and connection\n"
+            "                          strings (these may reach the network; refused otherwise)\n"
+            "  -v, --verbose           plugin debug messages\n"
+            "  -h, --help              this text\n\n"
+            "exit status: 0 done, 1 usage, 2 bad scene, plugin failure or nothing to map, 3 output\n"
+            "not written, 4 out of memory or internal error\n");
+}
+
+static const char *const mode_names[ZTV_MODES] = {"bare earth", "vegetation", "all"};
+
+/* A number in [lo, hi], the whole of s. */
+static int parse_metres(const char *opt, const char *s, double lo, double hi, double *out)
+{
+    char *end;
+    double v = s ? strtod(s, &end) : NAN;
+    if (!s || end == s || *end || !(v >= lo && v <= hi)) {
+        fprintf(stderr, "sylva ztv: %s expects metres from %g to %g, got '%s'\n", opt, lo, hi, s ? s : "");
+        return -1;
+    }
+    *out = v;
+    return 0;
+}
+
+static int sink_block(void *user, const ztv_block *b, err_buf *err)
+{
+    return ztv_output_block(user, b, err);
+}
+
+int cmd_ztv(int argc, char **argv)
+{
+    const char *scene_path = NULL, *dir = NULL;
+    double radius = NAN, cell = NAN, eye = NAN;
+    int screening = -1, flat = 0;
+    unsigned threads = 0;
+    build_options bo = {0};
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *val = i + 1 < argc ? argv[i + 1] : NULL;
+        uint64_t v;
+        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+            ztv_usage(stdout);
+            return EXIT_OK;
+        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
+            if (!val) goto missing;
+            dir = val, i++;
+        } else if (!strcmp(a, "--radius")) {
+            if (parse_metres(a, val, 0, 1e7, &radius)) return EXIT_USAGE;
+            i++;
+        } else if (!strcmp(a, "--cell")) {
+            if (parse_metres(a, val, 0, 1e6, &cell)) return EXIT_USAGE;
+            i++;
+        } else if (!strcmp(a, "--observer-height")) {
+            if (parse_metres(a, val, 0, 1e4, &eye)) return EXIT_USAGE;
+            i++;
+        } else if (!strcmp(a, "--screening")) {
+            if (!val) goto missing;
+            screening = !strcmp(val, "none") ? ZTV_BARE : !strcmp(val, "vegetation") ? ZTV_VEGETATION
+                      : !strcmp(val, "all") ? ZTV_ALL : -1;
+            if (screening < 0) {
+                fprintf(stderr, "sylva ztv: --screening expects none, vegetation or all, got '%s'\n", val);
+                return EXIT_USAGE;
+            }
+            i++;
+        } else if (!strcmp(a, "--flat-earth")) {
+            flat = 1;
+        } else if (!strcmp(a, "--threads")) {
+            if (!val || cli_parse_u64("ztv", a, val, 1, 1024, &v)) return EXIT_USAGE;
+            threads = (unsigned)v, i++;
+        } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
+            bo.quiet = 1;
+        } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
+            bo.verbose = 1;
+        } else if (cli_scene_argument("ztv", a, &scene_path)) {
+            return EXIT_USAGE;
+        }
+        continue;
+    missing:
+        fprintf(stderr, "sylva ztv: %s needs a value\n", a);
+        return EXIT_USAGE;
+    }
+    if (!scene_path || !dir) {
+        ztv_usage(stderr);
+        return EXIT_USAGE;
+    }
+
+    err_buf err = {{0}};
+    cli_scene cs;
+    ztv_targets targets = {0};
+    accel acc = {0};
+    ztv_output *out = NULL;
+    int rc = cli_scene_open(&cs, "ztv", scene_path, NULL, &bo);
+    if (rc) goto done;
+    const scene_file *sf = cs.sf;
+    const scene *sc = cs.scene;
+    const ztv_settings *z = &sf->ztv;
+    if (isnan(radius)) radius = z->radius;
+    else if (radius == 0) radius = INFINITY;
+    if (isnan(cell)) cell = z->cell;
+    if (isnan(eye)) eye = z->observer_height;
+    if (screening < 0) screening = z->screening;
+    /* a screened mode with nothing in it is bare earth again */
+    int has_plants = sc->n_instances > 0, has_objects = 0;
+    for (uint32_t o = 0; o < sc->n_objects; o++) has_objects |= !sc->objects[o].development;
+    if (screening == ZTV_ALL && !has_objects) screening = has_plants ? ZTV_VEGETATION : ZTV_BARE;
+    if (screening == ZTV_VEGETATION && !has_plants) screening = ZTV_BARE;
+
+    ztv_job job = {.scene = sc, .accel = &acc, .targets = &targets, .observer_height = eye, .radius = radius,
+                   .screened = (ztv_mode)screening, .earth = flat ? NULL : &sc->earth, .threads = threads,
+                   .quiet = bo.quiet};
+    if (ztv_targets_build(&targets, sf, sc, sf->image.seed, &err) ||
+        ztv_grid_make(sc, &targets, cell, radius, &job.grid, &err)) {
+        rc = cli_fail("ztv", &err, ERR_INPUT);
+        goto done;
+    }
+    if (!bo.quiet)
+        fprintf(stderr, "ztv: %u targets of %u development%s, %u x %u cells of %g m, observer %g m, %s%s\n",
+                targets.n, targets.n_developments, targets.n_developments == 1 ? "" : "s", job.grid.nx,
+                job.grid.ny, job.grid.cell, eye, job.screened == ZTV_BARE ? "bare earth only" : "bare earth and ",
+                job.screened == ZTV_BARE ? "" : mode_names[job.screened]);
+    if (accel_build(&acc, sc, threads, &err)) {
+        rc = cli_fail("ztv", &err, ERR_INTERNAL);
+        goto done;
+    }
+    ztv_info info = {.grid = job.grid, .crs_wkt = sf->site.crs_wkt, .crs_name = sf->site.crs_name,
+                     .observer_height = eye, .radius = radius, .curvature = job.earth && job.earth->curvature,
+                     .refraction = sc->earth.refraction, .n_targets = targets.n,
+                     .n_developments = targets.n_developments, .development_names = targets.names,
+                     .development_xy = (const double(*)[2])targets.centre,
+                     .target_xy = (const double(*)[2])targets.xy, .target_development = targets.development};
+    if (sf->site.crs_wkt) memcpy(info.origin, sf->site.origin, sizeof info.origin);
+    info.computed[ZTV_BARE] = 1;
+    info.computed[job.screened] = 1;
+    if (cli_make_folder(dir, &err) || !(out = ztv_output_open(dir, &info, &err))) {
+        rc = cli_fail("ztv", &err, ERR_OUTPUT);
+        goto done;
+    }
+    ztv_stats st;
+    if (ztv_trace(&job, sink_block, out, &st, &err) || ztv_output_finish(out, &err)) {
+        rc = cli_fail("ztv", &err, ERR_OUTPUT);
+        goto done;
+    }
+    if (!bo.quiet)
+        fprintf(stderr, "ztv: %llu cells x %u targets in %.2fs: %.3g sightlines/s, %.2f rays each\n",
+                (unsigned long long)st.cells, targets.n, st.seconds, st.pairs / fmax(st.seconds, 1e-9),
+                st.pairs ? (double)st.rays / st.pairs : 0.0);
+    printf("%s\n", dir);
+done:
+    ztv_output_free(out);
+    accel_free(&acc);
+    ztv_targets_free(&targets);
+    cli_scene_close(&cs);
+    return rc;
+}

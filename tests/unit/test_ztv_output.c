@@ -331,30 +331,31 @@ TEST(maps)
         snprintf(path, sizeof path, "%s/%s", dir, names_png[i]);
         image_f32 img = {0};
         CHECK_INT(image_read(path, &img, &err), 0);
-        /* 20 x 15 cells enlarged 45 times, framed by margins of 20 and the 400-pixel legend */
-        CHECK_INT(img.width, 20 + 900 + 20 + 400 + 20);
-        CHECK(img.height >= 81 + 675 + 20);
+        /* 20 x 15 cells enlarged to 1000 x 750 pixels, framed by margins of 20 and the
+         * 400-pixel legend */
+        CHECK_INT(img.width, 20 + 1000 + 20 + 400 + 20);
+        CHECK(img.height >= 81 + 750 + 20);
         if (i == 0 && img.pixels) {
             /* the legend's swatches: 100 % (120, 0, 50) and 1-25 % (255, 230, 80) at opacity 0.65
              * over level ground's grey 207 */
-            CHECK(has_colour(&img, 940, (const int[3]){150, 72, 105}));
-            CHECK(has_colour(&img, 940, (const int[3]){238, 222, 124}));
+            CHECK(has_colour(&img, 1040, (const int[3]){150, 72, 105}));
+            CHECK(has_colour(&img, 1040, (const int[3]){238, 222, 124}));
             /* the map: cell (5, 1) sees every target, cell (1, 1) none, column 0 is not computed */
             int rgb[3];
-            png_rgb(&img, 20 + 5 * 45 + 22, 81 + 45 + 22, rgb);
+            png_rgb(&img, 20 + 5 * 50 + 25, 81 + 50 + 25, rgb);
             CHECK(rgb[0] > rgb[1] + 50);
-            png_rgb(&img, 20 + 1 * 45 + 22, 81 + 45 + 22, rgb);
+            png_rgb(&img, 20 + 1 * 50 + 25, 81 + 50 + 25, rgb);
             CHECK(abs(rgb[0] - rgb[1]) < 4 && abs(rgb[1] - rgb[2]) < 4);
-            png_rgb(&img, 20 + 22, 81 + 45 + 22, rgb); /* light grey between the hatching */
+            png_rgb(&img, 20 + 25, 81 + 50 + 27, rgb); /* light grey between the hatching */
             CHECK_INT(rgb[0], 242);
-            png_rgb(&img, 20 + 22, 81 + 45 + 24, rgb); /* on the hatching */
+            png_rgb(&img, 20 + 25, 81 + 50 + 24, rgb); /* on the hatching */
             CHECK_INT(rgb[0], 185);
         }
         if (i == 2 && img.pixels) {
             /* fully hidden (25, 80, 200), partly hidden (110, 190, 240) */
-            CHECK(has_colour(&img, 940, (const int[3]){89, 124, 202}));
+            CHECK(has_colour(&img, 1040, (const int[3]){89, 124, 202}));
             int rgb[3];
-            png_rgb(&img, 20 + 9 * 45 + 22, 81 + 10 * 45 + 22, rgb); /* all hidden */
+            png_rgb(&img, 20 + 9 * 50 + 25, 81 + 10 * 50 + 25, rgb); /* all hidden */
             CHECK(rgb[2] > rgb[0] + 60);
         }
         image_free(&img);

@@ -480,7 +480,7 @@ TEST(bad_folder_and_info)
     make_pattern(&p);
     err_buf err = {{0}};
     CHECK(ztv_output_open(work_path("no-such-folder"), &p.info, &err) == NULL);
-    CHECK_STR_CONTAINS(err.msg, "does not exist");
+    CHECK_STR_CONTAINS(err.msg, "it does not exist");
     p.info.grid.cell = 0;
     CHECK(ztv_output_open(fresh_dir("bad"), &p.info, &err) == NULL);
     CHECK_STR_CONTAINS(err.msg, "must be positive");
@@ -488,6 +488,10 @@ TEST(bad_folder_and_info)
     p.info.n_developments = 25;
     CHECK(ztv_output_open(fresh_dir("bad"), &p.info, &err) == NULL);
     CHECK_STR_CONTAINS(err.msg, "at most 24");
+    p.info.n_developments = 2;
+    p.info.observer_height = NAN; /* would make the JSON summary invalid */
+    CHECK(ztv_output_open(fresh_dir("bad"), &p.info, &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "must be finite");
     CHECK_INT(work_dir_entries(fresh_dir("bad")), 0);
     free_pattern(&p);
 }

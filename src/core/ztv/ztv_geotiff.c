@@ -24,17 +24,22 @@ struct ztv_geotiff {
     uint32_t rows_written;  /* rows [0, rows_written) are in the file */
 };
 
-/* GDAL's state while it works on our dataset: its messages caught, no PAM sidecar. */
-static void gdal_enter(void)
+/* GDAL's state while it works on our dataset: its messages caught, no PAM sidecar; the
+ * thread's own setting comes back after (saved is CPLFree'd by gdal_leave). */
+static char *gdal_enter(void)
 {
     CPLPushErrorHandler(CPLQuietErrorHandler);
     CPLErrorReset();
+    const char *old = CPLGetThreadLocalConfigOption("GDAL_PAM_ENABLED", NULL);
+    char *saved = old ? CPLStrdup(old) : NULL;
     CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", "NO");
+    return saved;
 }
 
-static void gdal_leave(void)
+static void gdal_leave(char *saved)
 {
-    CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", NULL);
+    CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", saved);
+    CPLFree(saved);
     CPLPopErrorHandler();
 }
 
@@ -68,7 +73,7 @@ ztv_geotiff *ztv_geotiff_open(const char *path, const ztv_info *info, uint32_t b
         return NULL;
     }
     GDALAllRegister();
-    gdal_enter();
+    char *saved = gdal_enter();
     int rc = 0;
     GDALDriverH driver = GDALGetDriverByName("GTiff");
     const char *const options[] = {"COMPRESS=DEFLATE", "PREDICTOR=3", "INTERLEAVE=PIXEL",
@@ -92,7 +97,7 @@ ztv_geotiff *ztv_geotiff_open(const char *path, const ztv_info *info, uint32_t b
         if (GDALSetRasterNoDataValue(band, ZTV_GEOTIFF_NODATA) != CE_None)
             rc = err_fail(err, ERR_OUTPUT, "%s: GDAL cannot set the nodata value: %s", path, gdal_why());
     }
-    gdal_leave();
+    gdal_leave(saved);
     if (rc) {
         ztv_geotiff_free(g);
         return NULL;
@@ -105,7 +110,7 @@ int ztv_geotiff_rows(ztv_geotiff *g, uint32_t j0, uint32_t rows, const float *va
     if (!g->ds || j0 != g->rows_written || rows == 0 || rows > g->info->grid.ny - j0)
         return err_fail(err, ERR_INTERNAL, "%s: rows %u to %u cannot follow the %u rows written",
                         g->file.path, j0, j0 + rows, g->rows_written);
-    gdal_enter();
+    char *saved = gdal_enter();
     CPLErr e = GDALDatasetRasterIO(g->ds, GF_Write, 0, (int)j0, (int)g->info->grid.nx, (int)rows,
                                    (void *)values, (int)g->info->grid.nx, (int)rows, GDT_Float32,
                                    (int)g->bands, NULL, 0, 0, 0);
@@ -115,7 +120,7 @@ int ztv_geotiff_rows(ztv_geotiff *g, uint32_t j0, uint32_t rows, const float *va
                  ? 0
                  : err_fail(err, ERR_OUTPUT, "%s: GDAL cannot write rows %u to %u: %s", g->file.path, j0,
                             j0 + rows, gdal_why());
-    gdal_leave();
+    gdal_leave(saved);
     if (!rc) g->rows_written += rows;
     return rc;
 }
@@ -126,7 +131,7 @@ int ztv_geotiff_finish(ztv_geotiff *g, err_buf *err)
     if (g->rows_written != g->info->grid.ny)
         return err_fail(err, ERR_INTERNAL, "%s: only %u of %u rows were written", g->file.path,
                         g->rows_written, g->info->grid.ny);
-    gdal_enter();
+    char *saved = gdal_enter();
     GDALFlushCache(g->ds);
     int failed = CPLGetLastErrorType() >= CE_Failure;
     GDALClose(g->ds);
@@ -135,7 +140,7 @@ int ztv_geotiff_finish(ztv_geotiff *g, err_buf *err)
     int rc = failed ? err_fail(err, ERR_OUTPUT, "%s: GDAL cannot finish the GeoTIFF: %s", g->file.path,
                                gdal_why())
                     : 0;
-    gdal_leave();
+    gdal_leave(saved);
     if (rc) return rc;
     /* GDAL opened the temporary by name: it must still be the file atomic_file created */
     struct stat ours, there;
@@ -156,9 +161,9 @@ void ztv_geotiff_free(ztv_geotiff *g)
 {
     if (!g) return;
     if (g->ds) {
-        gdal_enter();
+        char *saved = gdal_enter();
         GDALClose(g->ds);
-        gdal_leave();
+        gdal_leave(saved);
     }
     atomic_file_abort(&g->file);
     free(g);

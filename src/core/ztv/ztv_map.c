@@ -253,7 +253,7 @@ static int cumulative_colour(const ztv_map *m, const map_style *st, size_t k, ui
 /* --- the frame -------------------------------------------------------------------------------- */
 
 enum { MARGIN = 20, TITLE_SCALE = 3, TEXT_SCALE = 2, PANEL_W = 400, LINE = 20, SWATCH_W = 34,
-       SWATCH_H = 20, MARKER_R = 7 };
+       SWATCH_H = 20, MARKER_R = 7, TARGET_R = 4 };
 #define TOP (MARGIN + 7 * TITLE_SCALE + 10 + 7 * TEXT_SCALE + 16)
 
 typedef struct frame {
@@ -398,8 +398,14 @@ static int draw_panel(canvas *c, const ztv_map *m, const map_style *st, const fr
         y = (below > y + SWATCH_H + 6 ? below : y + SWATCH_H + 6);
     }
     if (c) development_marker(c, x + SWATCH_W / 2.0, y + SWATCH_H / 2.0);
-    y = wrapped_text(c, x + SWATCH_W + 12, y + 3,  width - SWATCH_W - 12,
-                     info->n_developments > 1 ? "developments" : "the development", black) + 14;
+    y = wrapped_text(c, x + SWATCH_W + 12, y + 3, width - SWATCH_W - 12,
+                     info->n_developments > 1 ? "developments" : "the development", black) + 6;
+    if (c && info->target_xy) {
+        canvas_disc(c, x + SWATCH_W / 2.0, y + SWATCH_H / 2.0, TARGET_R, white);
+        canvas_disc(c, x + SWATCH_W / 2.0, y + SWATCH_H / 2.0, TARGET_R - 1, black);
+    }
+    if (info->target_xy) y = wrapped_text(c, x + SWATCH_W + 12, y + 3, width - SWATCH_W - 12, "targets", black) + 6;
+    y += 8;
     snprintf(text, sizeof text, "observer %g m above ground", info->observer_height);
     y = wrapped_text(c, x, y, width, text, black);
     if (isfinite(info->radius)) {
@@ -483,9 +489,17 @@ static int draw_map(const ztv_map *m, const map_style *st, canvas *c, err_buf *e
     canvas_rect(c, f.map_x - 1, map_bottom, map_right, map_bottom, frame_grey);
     canvas_rect(c, f.map_x - 1, f.map_y - 1, f.map_x - 1, map_bottom, frame_grey);
     canvas_rect(c, map_right, f.map_y - 1, map_right, map_bottom, frame_grey);
-    /* the developments, named when few */
     double px_per_m = 1.0 / f.metres_per_px;
     double west = info->grid.x0 - 0.5 * info->grid.cell, north = info->grid.y0 + 0.5 * info->grid.cell;
+    /* the targets' positions, a dot each (a turbine's hub and blade tips make one), inside the map */
+    for (int pass = 0; pass < 2 && info->target_xy; pass++)
+        for (uint32_t t = 0; t < info->n_targets; t++) {
+            double x = f.map_x + (info->target_xy[t][0] - west) * px_per_m;
+            double y = f.map_y + (north - info->target_xy[t][1]) * px_per_m;
+            if (x < f.map_x || x > map_right || y < f.map_y || y > map_bottom) continue;
+            canvas_disc(c, x, y, pass ? TARGET_R - 1 : TARGET_R, pass ? black : white);
+        }
+    /* the developments, named when few */
     for (uint32_t d = 0; d < info->n_developments && info->development_xy; d++) {
         double x = f.map_x + (info->development_xy[d][0] - west) * px_per_m;
         double y = f.map_y + (north - info->development_xy[d][1]) * px_per_m;

@@ -110,20 +110,24 @@ static const char *fresh_dir(const char *name)
 }
 
 
-/* Runs the whole pattern in blocks of 4, 4, 4 and 3 rows into dir; 0 on success. */
-static int write_all(pattern *p, const char *dir, err_buf *err)
+/* Runs the whole pattern in blocks of `rows` rows (the last one shorter) into dir; 0 on
+ * success. */
+static int write_in_blocks(pattern *p, const char *dir, uint32_t rows, err_buf *err)
 {
     ztv_output *o = ztv_output_open(dir, &p->info, err);
     if (!o) return -1;
     int rc = 0;
-    for (uint32_t j0 = 0; !rc && j0 < NY; j0 += 4) {
-        ztv_block b = block_of(p, j0, j0 + 4 <= NY ? 4 : NY - j0);
+    for (uint32_t j0 = 0; !rc && j0 < NY; j0 += rows) {
+        ztv_block b = block_of(p, j0, j0 + rows <= NY ? rows : NY - j0);
         rc = ztv_output_block(o, &b, err);
     }
     if (!rc) rc = ztv_output_finish(o, err);
     ztv_output_free(o);
     return rc;
 }
+
+/* In blocks of 4, 4, 4 and 3 rows. */
+static int write_all(pattern *p, const char *dir, err_buf *err) { return write_in_blocks(p, dir, 4, err); }
 
 static char *read_text(const char *path)
 {
@@ -363,6 +367,60 @@ TEST(maps)
     free_pattern(&p);
 }
 
+/* Whole file contents; *size set. NULL when unreadable. */
+static unsigned char *read_bytes(const char *path, long *size)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    fseek(f, 0, SEEK_END);
+    *size = ftell(f);
+    rewind(f);
+    unsigned char *bytes = malloc((size_t)*size + 1);
+    if (bytes && fread(bytes, 1, (size_t)*size, f) != (size_t)*size) {
+        free(bytes);
+        bytes = NULL;
+    }
+    fclose(f);
+    return bytes;
+}
+
+/* The same map handed over in blocks of 1, 4 or 15 rows (as different thread counts make
+ * them) gives the same bytes in every file. */
+TEST(same_bytes_whatever_the_blocks)
+{
+    pattern p;
+    make_pattern(&p);
+    const char *files[] = {"ztv_bare.tif", "ztv_vegetation.tif", "ztv_hidden_vegetation.tif", "ztv_bare.png",
+                           "ztv_hidden_vegetation.png", "ztv_cumulative_vegetation.png", "ztv_summary.csv",
+                           "ztv_summary.json"};
+    const uint32_t rows[3] = {4, 1, 15};
+    char dirs[3][1200];
+    err_buf err = {{0}};
+    for (int r = 0; r < 3; r++) {
+        char name[32];
+        snprintf(name, sizeof name, "blocks-%u", rows[r]);
+        snprintf(dirs[r], sizeof dirs[r], "%s", fresh_dir(name));
+        CHECK_INT(write_in_blocks(&p, dirs[r], rows[r], &err), 0);
+    }
+    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+        char path[1300];
+        long size0 = 0, size = 0;
+        snprintf(path, sizeof path, "%s/%s", dirs[0], files[i]);
+        unsigned char *first = read_bytes(path, &size0);
+        CHECK(first != NULL);
+        for (int r = 1; r < 3 && first; r++) {
+            snprintf(path, sizeof path, "%s/%s", dirs[r], files[i]);
+            unsigned char *other = read_bytes(path, &size);
+            CHECK(other && size == size0 && !memcmp(first, other, (size_t)size));
+            if (!(other && size == size0 && !memcmp(first, other, (size_t)size)))
+                fprintf(stderr, "%s differs with blocks of %u rows\n", files[i], rows[r]);
+            free(other);
+        }
+        free(first);
+    }
+    free_pattern(&p);
+}
+
 TEST(unfinished_leaves_nothing)
 {
     pattern p;
@@ -591,5 +649,5 @@ TEST(local_long_grid_many_developments)
 
 TEST_LIST(TEST_CASE(band_boundaries), TEST_CASE(local_long_grid_many_developments),
           TEST_CASE(geotiff_reads_back), TEST_CASE(summary_areas), TEST_CASE(maps),
-          TEST_CASE(unfinished_leaves_nothing), TEST_CASE(signal_leaves_nothing), TEST_CASE(planted_link_not_followed),
+          TEST_CASE(same_bytes_whatever_the_blocks), TEST_CASE(unfinished_leaves_nothing), TEST_CASE(signal_leaves_nothing), TEST_CASE(planted_link_not_followed),
           TEST_CASE(blocks_out_of_order), TEST_CASE(bad_folder_and_info))

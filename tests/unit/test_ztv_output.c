@@ -647,7 +647,53 @@ TEST(local_long_grid_many_developments)
     free(ground), free(fraction), free(visible), free(cls), free(devs);
 }
 
-TEST_LIST(TEST_CASE(band_boundaries), TEST_CASE(local_long_grid_many_developments),
+static void png_rgb(const image_f32 *img, uint32_t x, uint32_t y, int rgb[3]);
+
+/* A grid drawn one cell in 3 x 3 shows the cell nearest each pixel's centre: on a 3,300 x 6 grid
+ * of level ground where only every third column from column 1 sees everything, every map pixel
+ * is the 100 % colour. */
+TEST(reduced_map_takes_the_nearest_cell)
+{
+    enum { W = 3300, H = 6 };
+    size_t n = (size_t)W * H;
+    float *ground = calloc(n, sizeof *ground), *fraction = malloc(n * sizeof *fraction);
+    uint16_t *visible = malloc(n * sizeof *visible);
+    uint8_t *cls = calloc(n, 1);
+    uint32_t *devs = malloc(n * sizeof *devs);
+    for (size_t k = 0; k < n; k++) {
+        int seen = k % W % 3 == 1;
+        visible[k] = (uint16_t)seen, fraction[k] = (float)seen, devs[k] = (uint32_t)seen;
+    }
+    double xy[1][2] = {{-1e6, 0}}; /* off the map: no marker over the pixels looked at */
+    uint32_t tdev[1] = {0};
+    ztv_info info = {.grid = {W, H, 0.5, -0.5, 1}, .computed = {1, 0, 0}, .observer_height = 2,
+                     .radius = INFINITY, .n_targets = 1, .n_developments = 1,
+                     .development_xy = (const double (*)[2])xy, .target_xy = (const double (*)[2])xy,
+                     .target_development = tdev};
+    const char *dir = fresh_dir("nearest");
+    err_buf err = {{0}};
+    ztv_output *o = ztv_output_open(dir, &info, &err);
+    CHECK(o != NULL);
+    ztv_layer l = {visible, fraction, cls, devs};
+    ztv_block b = {.j0 = 0, .rows = H, .ground = ground, .layer = {&l, NULL, NULL}};
+    CHECK_INT(ztv_output_block(o, &b, &err), 0);
+    CHECK_INT(ztv_output_finish(o, &err), 0);
+    ztv_output_free(o);
+    char path[1300];
+    snprintf(path, sizeof path, "%s/ztv_bare.png", dir);
+    image_f32 img = {0};
+    CHECK_INT(image_read(path, &img, &err), 0);
+    CHECK_INT(img.width, 20 + 1100 + 20 + 400 + 20);
+    for (uint32_t x = 20; img.pixels && x < 20 + 1100; x += 37) {
+        int rgb[3];
+        png_rgb(&img, x, 81, rgb);
+        CHECK(abs(rgb[0] - 150) <= 1 && abs(rgb[1] - 72) <= 1 && abs(rgb[2] - 105) <= 1);
+    }
+    image_free(&img);
+    free(ground), free(fraction), free(visible), free(cls), free(devs);
+}
+
+TEST_LIST(TEST_CASE(band_boundaries), TEST_CASE(reduced_map_takes_the_nearest_cell), TEST_CASE(local_long_grid_many_developments),
           TEST_CASE(geotiff_reads_back), TEST_CASE(summary_areas), TEST_CASE(maps),
           TEST_CASE(same_bytes_whatever_the_blocks), TEST_CASE(unfinished_leaves_nothing), TEST_CASE(signal_leaves_nothing), TEST_CASE(planted_link_not_followed),
           TEST_CASE(blocks_out_of_order), TEST_CASE(bad_folder_and_info))

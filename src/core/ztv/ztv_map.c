@@ -409,10 +409,10 @@ static int draw_panel(canvas *c, const ztv_map *m, const map_style *st, const fr
     snprintf(text, sizeof text, "observer %g m above ground", info->observer_height);
     y = wrapped_text(c, x, y, width, text, black);
     if (isfinite(info->radius)) {
-        length_text(info->radius, text, sizeof text - 64);
-        char radius[96];
-        snprintf(radius, sizeof radius, "radius %s from the targets", text);
-        y = wrapped_text(c, x, y, width, radius, black);
+        char radius[64];
+        length_text(info->radius, radius, sizeof radius);
+        snprintf(text, sizeof text, "radius %s from the targets", radius);
+        y = wrapped_text(c, x, y, width, text, black);
     }
     snprintf(text, sizeof text, "%u targets", info->n_targets);
     y = wrapped_text(c, x, y, width, text, black);

@@ -9,7 +9,9 @@
  * computed; on bare earth (i - 1) % 5 targets are visible from column i; with vegetation row 7
  * stands under crowns, rows 0-3 see as on bare earth, rows 4-6 half (rounded down) and rows
  * 8-14 nothing. T1 is seen where one target or more is, T2 where three or more are. */
+#include <signal.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cpl_conv.h>
@@ -108,20 +110,24 @@ static const char *fresh_dir(const char *name)
 }
 
 
-/* Runs the whole pattern in blocks of 4, 4, 4 and 3 rows into dir; 0 on success. */
-static int write_all(pattern *p, const char *dir, err_buf *err)
+/* Runs the whole pattern in blocks of `rows` rows (the last one shorter) into dir; 0 on
+ * success. */
+static int write_in_blocks(pattern *p, const char *dir, uint32_t rows, err_buf *err)
 {
     ztv_output *o = ztv_output_open(dir, &p->info, err);
     if (!o) return -1;
     int rc = 0;
-    for (uint32_t j0 = 0; !rc && j0 < NY; j0 += 4) {
-        ztv_block b = block_of(p, j0, j0 + 4 <= NY ? 4 : NY - j0);
+    for (uint32_t j0 = 0; !rc && j0 < NY; j0 += rows) {
+        ztv_block b = block_of(p, j0, j0 + rows <= NY ? rows : NY - j0);
         rc = ztv_output_block(o, &b, err);
     }
     if (!rc) rc = ztv_output_finish(o, err);
     ztv_output_free(o);
     return rc;
 }
+
+/* In blocks of 4, 4, 4 and 3 rows. */
+static int write_all(pattern *p, const char *dir, err_buf *err) { return write_in_blocks(p, dir, 4, err); }
 
 static char *read_text(const char *path)
 {
@@ -329,33 +335,88 @@ TEST(maps)
         snprintf(path, sizeof path, "%s/%s", dir, names_png[i]);
         image_f32 img = {0};
         CHECK_INT(image_read(path, &img, &err), 0);
-        /* 20 x 15 cells enlarged 45 times, framed by margins of 20 and the 400-pixel legend */
-        CHECK_INT(img.width, 20 + 900 + 20 + 400 + 20);
-        CHECK(img.height >= 81 + 675 + 20);
+        /* 20 x 15 cells enlarged to 1000 x 750 pixels, framed by margins of 20 and the
+         * 400-pixel legend */
+        CHECK_INT(img.width, 20 + 1000 + 20 + 400 + 20);
+        CHECK(img.height >= 81 + 750 + 20);
         if (i == 0 && img.pixels) {
             /* the legend's swatches: 100 % (120, 0, 50) and 1-25 % (255, 230, 80) at opacity 0.65
              * over level ground's grey 207 */
-            CHECK(has_colour(&img, 940, (const int[3]){150, 72, 105}));
-            CHECK(has_colour(&img, 940, (const int[3]){238, 222, 124}));
+            CHECK(has_colour(&img, 1040, (const int[3]){150, 72, 105}));
+            CHECK(has_colour(&img, 1040, (const int[3]){238, 222, 124}));
             /* the map: cell (5, 1) sees every target, cell (1, 1) none, column 0 is not computed */
             int rgb[3];
-            png_rgb(&img, 20 + 5 * 45 + 22, 81 + 45 + 22, rgb);
+            png_rgb(&img, 20 + 5 * 50 + 25, 81 + 50 + 25, rgb);
             CHECK(rgb[0] > rgb[1] + 50);
-            png_rgb(&img, 20 + 1 * 45 + 22, 81 + 45 + 22, rgb);
+            png_rgb(&img, 20 + 1 * 50 + 25, 81 + 50 + 25, rgb);
             CHECK(abs(rgb[0] - rgb[1]) < 4 && abs(rgb[1] - rgb[2]) < 4);
-            png_rgb(&img, 20 + 22, 81 + 45 + 22, rgb); /* light grey between the hatching */
+            png_rgb(&img, 20 + 25, 81 + 50 + 27, rgb); /* light grey between the hatching */
             CHECK_INT(rgb[0], 242);
-            png_rgb(&img, 20 + 22, 81 + 45 + 24, rgb); /* on the hatching */
+            png_rgb(&img, 20 + 25, 81 + 50 + 24, rgb); /* on the hatching */
             CHECK_INT(rgb[0], 185);
         }
         if (i == 2 && img.pixels) {
             /* fully hidden (25, 80, 200), partly hidden (110, 190, 240) */
-            CHECK(has_colour(&img, 940, (const int[3]){89, 124, 202}));
+            CHECK(has_colour(&img, 1040, (const int[3]){89, 124, 202}));
             int rgb[3];
-            png_rgb(&img, 20 + 9 * 45 + 22, 81 + 10 * 45 + 22, rgb); /* all hidden */
+            png_rgb(&img, 20 + 9 * 50 + 25, 81 + 10 * 50 + 25, rgb); /* all hidden */
             CHECK(rgb[2] > rgb[0] + 60);
         }
         image_free(&img);
+    }
+    free_pattern(&p);
+}
+
+/* Whole file contents; *size set. NULL when unreadable. */
+static unsigned char *read_bytes(const char *path, long *size)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    fseek(f, 0, SEEK_END);
+    *size = ftell(f);
+    rewind(f);
+    unsigned char *bytes = malloc((size_t)*size + 1);
+    if (bytes && fread(bytes, 1, (size_t)*size, f) != (size_t)*size) {
+        free(bytes);
+        bytes = NULL;
+    }
+    fclose(f);
+    return bytes;
+}
+
+/* The same map handed over in blocks of 1, 4 or 15 rows (as different thread counts make
+ * them) gives the same bytes in every file. */
+TEST(same_bytes_whatever_the_blocks)
+{
+    pattern p;
+    make_pattern(&p);
+    const char *files[] = {"ztv_bare.tif", "ztv_vegetation.tif", "ztv_hidden_vegetation.tif", "ztv_bare.png",
+                           "ztv_hidden_vegetation.png", "ztv_cumulative_vegetation.png", "ztv_summary.csv",
+                           "ztv_summary.json"};
+    const uint32_t rows[3] = {4, 1, 15};
+    char dirs[3][1200];
+    err_buf err = {{0}};
+    for (int r = 0; r < 3; r++) {
+        char name[32];
+        snprintf(name, sizeof name, "blocks-%u", rows[r]);
+        snprintf(dirs[r], sizeof dirs[r], "%s", fresh_dir(name));
+        CHECK_INT(write_in_blocks(&p, dirs[r], rows[r], &err), 0);
+    }
+    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+        char path[1300];
+        long size0 = 0, size = 0;
+        snprintf(path, sizeof path, "%s/%s", dirs[0], files[i]);
+        unsigned char *first = read_bytes(path, &size0);
+        CHECK(first != NULL);
+        for (int r = 1; r < 3 && first; r++) {
+            snprintf(path, sizeof path, "%s/%s", dirs[r], files[i]);
+            unsigned char *other = read_bytes(path, &size);
+            CHECK(other && size == size0 && !memcmp(first, other, (size_t)size));
+            if (!(other && size == size0 && !memcmp(first, other, (size_t)size)))
+                fprintf(stderr, "%s differs with blocks of %u rows\n", files[i], rows[r]);
+            free(other);
+        }
+        free(first);
     }
     free_pattern(&p);
 }
@@ -380,6 +441,38 @@ TEST(unfinished_leaves_nothing)
     ztv_output_free(o);
     CHECK_INT(work_dir_entries(dir), 0);
     free_pattern(&p);
+}
+
+/* SIGTERM while the tracer is between blocks: the process ends by the signal and the GeoTIFFs'
+ * temporaries are gone. */
+TEST(signal_leaves_nothing)
+{
+    const char *dir = fresh_dir("signal");
+    int ready[2];
+    CHECK_INT(pipe(ready), 0);
+    pid_t child = fork();
+    CHECK(child >= 0);
+    if (child == 0) {
+        pattern p;
+        make_pattern(&p);
+        err_buf err;
+        ztv_output *o = ztv_output_open(dir, &p.info, &err);
+        if (!o) _exit(3);
+        ztv_block b = block_of(&p, 0, 4);
+        if (ztv_output_block(o, &b, &err)) _exit(4);
+        if (write(ready[1], "x", 1) != 1) _exit(5);
+        for (;;) pause();
+    }
+    char c;
+    CHECK_INT(read(ready[0], &c, 1), 1);
+    CHECK_INT(work_dir_entries(dir), 3); /* two modes' GeoTIFFs and the hidden one */
+    kill(child, SIGTERM);
+    int status = 0;
+    waitpid(child, &status, 0);
+    CHECK(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
+    CHECK_INT(work_dir_entries(dir), 0);
+    close(ready[0]);
+    close(ready[1]);
 }
 
 TEST(planted_link_not_followed)
@@ -445,7 +538,7 @@ TEST(bad_folder_and_info)
     make_pattern(&p);
     err_buf err = {{0}};
     CHECK(ztv_output_open(work_path("no-such-folder"), &p.info, &err) == NULL);
-    CHECK_STR_CONTAINS(err.msg, "does not exist");
+    CHECK_STR_CONTAINS(err.msg, "it does not exist");
     p.info.grid.cell = 0;
     CHECK(ztv_output_open(fresh_dir("bad"), &p.info, &err) == NULL);
     CHECK_STR_CONTAINS(err.msg, "must be positive");
@@ -453,6 +546,10 @@ TEST(bad_folder_and_info)
     p.info.n_developments = 25;
     CHECK(ztv_output_open(fresh_dir("bad"), &p.info, &err) == NULL);
     CHECK_STR_CONTAINS(err.msg, "at most 24");
+    p.info.n_developments = 2;
+    p.info.observer_height = NAN; /* would make the JSON summary invalid */
+    CHECK(ztv_output_open(fresh_dir("bad"), &p.info, &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "must be finite");
     CHECK_INT(work_dir_entries(fresh_dir("bad")), 0);
     free_pattern(&p);
 }
@@ -550,7 +647,53 @@ TEST(local_long_grid_many_developments)
     free(ground), free(fraction), free(visible), free(cls), free(devs);
 }
 
-TEST_LIST(TEST_CASE(band_boundaries), TEST_CASE(local_long_grid_many_developments),
+static void png_rgb(const image_f32 *img, uint32_t x, uint32_t y, int rgb[3]);
+
+/* A grid drawn one cell in 3 x 3 shows the cell nearest each pixel's centre: on a 3,300 x 6 grid
+ * of level ground where only every third column from column 1 sees everything, every map pixel
+ * is the 100 % colour. */
+TEST(reduced_map_takes_the_nearest_cell)
+{
+    enum { W = 3300, H = 6 };
+    size_t n = (size_t)W * H;
+    float *ground = calloc(n, sizeof *ground), *fraction = malloc(n * sizeof *fraction);
+    uint16_t *visible = malloc(n * sizeof *visible);
+    uint8_t *cls = calloc(n, 1);
+    uint32_t *devs = malloc(n * sizeof *devs);
+    for (size_t k = 0; k < n; k++) {
+        int seen = k % W % 3 == 1;
+        visible[k] = (uint16_t)seen, fraction[k] = (float)seen, devs[k] = (uint32_t)seen;
+    }
+    double xy[1][2] = {{-1e6, 0}}; /* off the map: no marker over the pixels looked at */
+    uint32_t tdev[1] = {0};
+    ztv_info info = {.grid = {W, H, 0.5, -0.5, 1}, .computed = {1, 0, 0}, .observer_height = 2,
+                     .radius = INFINITY, .n_targets = 1, .n_developments = 1,
+                     .development_xy = (const double (*)[2])xy, .target_xy = (const double (*)[2])xy,
+                     .target_development = tdev};
+    const char *dir = fresh_dir("nearest");
+    err_buf err = {{0}};
+    ztv_output *o = ztv_output_open(dir, &info, &err);
+    CHECK(o != NULL);
+    ztv_layer l = {visible, fraction, cls, devs};
+    ztv_block b = {.j0 = 0, .rows = H, .ground = ground, .layer = {&l, NULL, NULL}};
+    CHECK_INT(ztv_output_block(o, &b, &err), 0);
+    CHECK_INT(ztv_output_finish(o, &err), 0);
+    ztv_output_free(o);
+    char path[1300];
+    snprintf(path, sizeof path, "%s/ztv_bare.png", dir);
+    image_f32 img = {0};
+    CHECK_INT(image_read(path, &img, &err), 0);
+    CHECK_INT(img.width, 20 + 1100 + 20 + 400 + 20);
+    for (uint32_t x = 20; img.pixels && x < 20 + 1100; x += 37) {
+        int rgb[3];
+        png_rgb(&img, x, 81, rgb);
+        CHECK(abs(rgb[0] - 150) <= 1 && abs(rgb[1] - 72) <= 1 && abs(rgb[2] - 105) <= 1);
+    }
+    image_free(&img);
+    free(ground), free(fraction), free(visible), free(cls), free(devs);
+}
+
+TEST_LIST(TEST_CASE(band_boundaries), TEST_CASE(reduced_map_takes_the_nearest_cell), TEST_CASE(local_long_grid_many_developments),
           TEST_CASE(geotiff_reads_back), TEST_CASE(summary_areas), TEST_CASE(maps),
-          TEST_CASE(unfinished_leaves_nothing), TEST_CASE(planted_link_not_followed),
+          TEST_CASE(same_bytes_whatever_the_blocks), TEST_CASE(unfinished_leaves_nothing), TEST_CASE(signal_leaves_nothing), TEST_CASE(planted_link_not_followed),
           TEST_CASE(blocks_out_of_order), TEST_CASE(bad_folder_and_info))

@@ -2,8 +2,8 @@
  * behind a ridge (the cells that see over it follow from the geometry), a low target beyond the
  * curved Earth's horizon (visible to the distance sqrt(h_o / c) + sqrt(h_t / c)), a wall of
  * trees that hides a target with vegetation screening and not on bare earth, leaves with holes
- * that let some sightlines through, observers under a crown and inside a building, and the same
- * map from one thread and from four. */
+ * that let some sightlines through, observers under a crown and inside a building, two named
+ * developments told apart, and the same map from one thread and from four. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,6 +20,7 @@ typedef struct map_copy {
     ztv_grid grid;
     uint16_t *visible[ZTV_MODES];
     uint8_t *cls[ZTV_MODES];
+    uint32_t *developments[ZTV_MODES];
     float *ground;
     uint32_t next_row;
 } map_copy;
@@ -36,13 +37,14 @@ static int copy_block(void *user, const ztv_block *b, err_buf *err)
         if (b->layer[k]) {
             memcpy(m->visible[k] + at, b->layer[k]->visible, n * sizeof(uint16_t));
             memcpy(m->cls[k] + at, b->layer[k]->cls, n);
+            memcpy(m->developments[k] + at, b->layer[k]->developments, n * sizeof(uint32_t));
         }
     return 0;
 }
 
 static void map_free(map_copy *m)
 {
-    for (int k = 0; k < ZTV_MODES; k++) free(m->visible[k]), free(m->cls[k]);
+    for (int k = 0; k < ZTV_MODES; k++) free(m->visible[k]), free(m->cls[k]), free(m->developments[k]);
     free(m->ground);
 }
 
@@ -77,7 +79,8 @@ static int run_map(const char *name, const char *text, double cell, ztv_mode mod
         m->grid = job.grid;
         size_t n = (size_t)job.grid.nx * job.grid.ny;
         m->ground = calloc(n, sizeof(float));
-        for (int k = 0; k < ZTV_MODES; k++) m->visible[k] = calloc(n, 2), m->cls[k] = calloc(n, 1);
+        for (int k = 0; k < ZTV_MODES; k++)
+            m->visible[k] = calloc(n, 2), m->cls[k] = calloc(n, 1), m->developments[k] = calloc(n, 4);
         if (!rc) rc = ztv_trace(&job, copy_block, m, NULL, &err);
         CHECK_INT(m->next_row, job.grid.ny);
         accel_free(&a);
@@ -243,6 +246,39 @@ TEST(holes_in_a_leaf_texture_let_some_sightlines_through)
     map_free(&veg);
 }
 
+/* Two developments named on their objects, each with targets above its footprint: a cell
+ * sees bit d of its mask when it sees some target of development d. Behind a wall across the
+ * west, the low mast (development "north") is hidden and the tall one ("south") is not. */
+TEST(two_developments_are_told_apart)
+{
+    const char *text =
+        "terrain: {origin: [-200, -200], spacing: [20, 20], grid: [[0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, "
+        "0, 0, 0, 0], [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]]}\n"
+        "objects:\n"
+        "  - {name: wall, shape: box, size: [2, 400, 20], position: [0, 0, 10]}\n"
+        "  - {name: low mast, shape: box, size: [1, 1, 10], position: [100, -190], development_name: north}\n"
+        "  - {name: tall mast, shape: box, size: [1, 1, 200], position: [100, -190], development_name: south}\n"
+        "ztv: {samples: 8}\n";
+    map_copy m;
+    if (run_map("two.yaml", text, 10, ZTV_ALL, 2, 1, &m, NULL)) return;
+    uint32_t west = 0, east = 0;
+    for (uint32_t i = 0; i < m.grid.nx; i++) {
+        double x = m.grid.x0 + i * m.grid.cell;
+        size_t k = (size_t)(m.grid.ny - 1) * m.grid.nx + i; /* the southern row */
+        CHECK_INT(m.developments[ZTV_BARE][k], 3u);     /* both in sight on bare earth */
+        if (x < -50) { /* only the tall one */
+            CHECK_INT(m.developments[ZTV_ALL][k], 2u);
+            west++;
+        }
+        if (x > 20) {
+            CHECK_INT(m.developments[ZTV_ALL][k], 3u);
+            east++;
+        }
+    }
+    CHECK(west >= 10 && east >= 10);
+    map_free(&m);
+}
+
 /* The map does not depend on the thread count. */
 TEST(one_thread_and_four_give_the_same_map)
 {
@@ -262,4 +298,4 @@ TEST(one_thread_and_four_give_the_same_map)
 TEST_LIST(TEST_CASE(ridge_hides_what_the_geometry_says), TEST_CASE(curvature_hides_a_low_target_beyond_the_horizon),
           TEST_CASE(a_wall_of_trees_screens_and_bare_earth_does_not),
           TEST_CASE(holes_in_a_leaf_texture_let_some_sightlines_through),
-          TEST_CASE(one_thread_and_four_give_the_same_map))
+          TEST_CASE(two_developments_are_told_apart), TEST_CASE(one_thread_and_four_give_the_same_map))

@@ -1,7 +1,9 @@
 /* ztv_geotiff.c — the GeoTIFF writer: GDAL creates the file on a temporary that atomic_file
  * made (so no planted name is ever followed at creation), writes row blocks through
  * GDALDatasetRasterIO, and the temporary is checked to still be the file made before it is
- * renamed. GDAL stays quiet (its messages go into err) and writes no .aux.xml sidecar. */
+ * renamed. Strips are one row high, so that the rows of a block fill whole strips that are
+ * flushed out of GDAL's cache at once: memory stays that of one block. GDAL stays quiet (its
+ * messages go into err) and writes no .aux.xml sidecar. */
 #include "ztv/ztv_geotiff.h"
 
 #include <stdlib.h>
@@ -22,17 +24,22 @@ struct ztv_geotiff {
     uint32_t rows_written;  /* rows [0, rows_written) are in the file */
 };
 
-/* GDAL's state while it works on our dataset: its messages caught, no PAM sidecar. */
-static void gdal_enter(void)
+/* GDAL's state while it works on our dataset: its messages caught, no PAM sidecar; the
+ * thread's own setting comes back after (saved is CPLFree'd by gdal_leave). */
+static char *gdal_enter(void)
 {
     CPLPushErrorHandler(CPLQuietErrorHandler);
     CPLErrorReset();
+    const char *old = CPLGetThreadLocalConfigOption("GDAL_PAM_ENABLED", NULL);
+    char *saved = old ? CPLStrdup(old) : NULL;
     CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", "NO");
+    return saved;
 }
 
-static void gdal_leave(void)
+static void gdal_leave(char *saved)
 {
-    CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", NULL);
+    CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", saved);
+    CPLFree(saved);
     CPLPopErrorHandler();
 }
 
@@ -66,11 +73,11 @@ ztv_geotiff *ztv_geotiff_open(const char *path, const ztv_info *info, uint32_t b
         return NULL;
     }
     GDALAllRegister();
-    gdal_enter();
+    char *saved = gdal_enter();
     int rc = 0;
     GDALDriverH driver = GDALGetDriverByName("GTiff");
     const char *const options[] = {"COMPRESS=DEFLATE", "PREDICTOR=3", "INTERLEAVE=PIXEL",
-                                   "BLOCKYSIZE=16", "BIGTIFF=IF_SAFER", NULL};
+                                   "BLOCKYSIZE=1", "BIGTIFF=IF_SAFER", NULL};
     if (!driver) rc = err_fail(err, ERR_INTERNAL, "%s: GDAL has no GeoTIFF driver", path);
     if (!rc) {
         g->ds = GDALCreate(driver, g->file.tmp, (int)info->grid.nx, (int)info->grid.ny, (int)bands,
@@ -90,7 +97,7 @@ ztv_geotiff *ztv_geotiff_open(const char *path, const ztv_info *info, uint32_t b
         if (GDALSetRasterNoDataValue(band, ZTV_GEOTIFF_NODATA) != CE_None)
             rc = err_fail(err, ERR_OUTPUT, "%s: GDAL cannot set the nodata value: %s", path, gdal_why());
     }
-    gdal_leave();
+    gdal_leave(saved);
     if (rc) {
         ztv_geotiff_free(g);
         return NULL;
@@ -103,14 +110,17 @@ int ztv_geotiff_rows(ztv_geotiff *g, uint32_t j0, uint32_t rows, const float *va
     if (!g->ds || j0 != g->rows_written || rows == 0 || rows > g->info->grid.ny - j0)
         return err_fail(err, ERR_INTERNAL, "%s: rows %u to %u cannot follow the %u rows written",
                         g->file.path, j0, j0 + rows, g->rows_written);
-    gdal_enter();
+    char *saved = gdal_enter();
     CPLErr e = GDALDatasetRasterIO(g->ds, GF_Write, 0, (int)j0, (int)g->info->grid.nx, (int)rows,
                                    (void *)values, (int)g->info->grid.nx, (int)rows, GDT_Float32,
                                    (int)g->bands, NULL, 0, 0, 0);
-    int rc = e == CE_None ? 0
-                          : err_fail(err, ERR_OUTPUT, "%s: GDAL cannot write rows %u to %u: %s",
-                                     g->file.path, j0, j0 + rows, gdal_why());
-    gdal_leave();
+    /* every strip of these rows is whole: write them out and drop them from GDAL's cache */
+    if (e == CE_None) GDALFlushCache(g->ds);
+    int rc = e == CE_None && CPLGetLastErrorType() < CE_Failure
+                 ? 0
+                 : err_fail(err, ERR_OUTPUT, "%s: GDAL cannot write rows %u to %u: %s", g->file.path, j0,
+                            j0 + rows, gdal_why());
+    gdal_leave(saved);
     if (!rc) g->rows_written += rows;
     return rc;
 }
@@ -121,7 +131,7 @@ int ztv_geotiff_finish(ztv_geotiff *g, err_buf *err)
     if (g->rows_written != g->info->grid.ny)
         return err_fail(err, ERR_INTERNAL, "%s: only %u of %u rows were written", g->file.path,
                         g->rows_written, g->info->grid.ny);
-    gdal_enter();
+    char *saved = gdal_enter();
     GDALFlushCache(g->ds);
     int failed = CPLGetLastErrorType() >= CE_Failure;
     GDALClose(g->ds);
@@ -130,7 +140,7 @@ int ztv_geotiff_finish(ztv_geotiff *g, err_buf *err)
     int rc = failed ? err_fail(err, ERR_OUTPUT, "%s: GDAL cannot finish the GeoTIFF: %s", g->file.path,
                                gdal_why())
                     : 0;
-    gdal_leave();
+    gdal_leave(saved);
     if (rc) return rc;
     /* GDAL opened the temporary by name: it must still be the file atomic_file created */
     struct stat ours, there;
@@ -151,9 +161,9 @@ void ztv_geotiff_free(ztv_geotiff *g)
 {
     if (!g) return;
     if (g->ds) {
-        gdal_enter();
+        char *saved = gdal_enter();
         GDALClose(g->ds);
-        gdal_leave();
+        gdal_leave(saved);
     }
     atomic_file_abort(&g->file);
     free(g);

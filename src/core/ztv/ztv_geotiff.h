@@ -1,7 +1,7 @@
 /* ztv_geotiff.h — one GeoTIFF of a visibility map, written a block of rows at a time through
  * GDAL: Float32 bands on the map's grid (the geotransform of ztv_raster.h) and the site's CRS,
- * band descriptions, nodata ZTV_GEOTIFF_NODATA, DEFLATE-compressed strips. Memory stays that
- * of GDAL's block cache whatever the grid's size.
+ * band descriptions, nodata ZTV_GEOTIFF_NODATA, DEFLATE-compressed strips of one row. Memory
+ * stays that of one block of rows whatever the grid's size.
  *
  * The file is written under a new temporary name beside the target (io/atomic_file.h: created
  * with O_EXCL|O_NOFOLLOW, removed on failure and on SIGINT/SIGTERM) and only

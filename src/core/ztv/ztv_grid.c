@@ -29,6 +29,12 @@ int ztv_grid_make(const scene *s, const ztv_targets *t, double cell, double radi
     if (i1 - i0 + 1 > ZTV_MAX_CELLS_SIDE || j1 - j0 + 1 > ZTV_MAX_CELLS_SIDE)
         return err_set(err, "the map would be %.0f x %.0f cells; at most %u a side (a larger cell or a radius)",
                        i1 - i0 + 1, j1 - j0 + 1, ZTV_MAX_CELLS_SIDE);
+    double work = (i1 - i0 + 1) * (j1 - j0 + 1) * (double)t->n;
+    if (work > ZTV_MAX_SIGHTLINES)
+        return err_fail(err, ERR_LIMIT,
+                        "%.0f x %.0f cells and %u targets are %.3g sightlines, more than the %.0e a map may "
+                        "trace (a larger cell, a radius or fewer targets)",
+                        i1 - i0 + 1, j1 - j0 + 1, t->n, work, ZTV_MAX_SIGHTLINES);
     *g = (ztv_grid){.nx = (uint32_t)(i1 - i0 + 1), .ny = (uint32_t)(j1 - j0 + 1), .x0 = west + i0 * cell,
                     .y0 = north - j0 * cell, .cell = cell};
     return 0;

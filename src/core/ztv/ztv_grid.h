@@ -10,10 +10,11 @@
 #include "ztv/ztv_targets.h"
 
 #define ZTV_MAX_CELLS_SIDE 1000000u /* cells along either side of a map */
+#define ZTV_MAX_SIGHTLINES 1e13    /* cells x targets: about a month of tracing on two cores */
 
 /* The grid for cell size `cell` (0: the terrain's node spacing) and `radius` (INFINITY: the
  * whole terrain) into *g. Returns 0, or -1 with err set (no terrain, the targets' reach misses
- * it, or a grid beyond ZTV_MAX_CELLS_SIDE). */
+ * it, a grid beyond ZTV_MAX_CELLS_SIDE, or more than ZTV_MAX_SIGHTLINES cells x targets). */
 int ztv_grid_make(const scene *s, const ztv_targets *t, double cell, double radius, ztv_grid *g, err_buf *err);
 
 /* Local centre of cell (i, j). */

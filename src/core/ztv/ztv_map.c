@@ -253,12 +253,13 @@ static int cumulative_colour(const ztv_map *m, const map_style *st, size_t k, ui
 /* --- the frame -------------------------------------------------------------------------------- */
 
 enum { MARGIN = 20, TITLE_SCALE = 3, TEXT_SCALE = 2, PANEL_W = 400, LINE = 20, SWATCH_W = 34,
-       SWATCH_H = 20, MARKER_R = 7 };
+       SWATCH_H = 20, MARKER_R = 7, TARGET_R = 4 };
 #define TOP (MARGIN + 7 * TITLE_SCALE + 10 + 7 * TEXT_SCALE + 16)
 
 typedef struct frame {
-    uint32_t zoom;        /* canvas pixels per map pixel */
+    double zoom;          /* canvas pixels per map pixel */
     int map_x, map_y;     /* the map's top-left corner on the canvas */
+    int map_w, map_h;     /* its size on the canvas */
     int panel_x;
     double metres_per_px; /* on the canvas */
 } frame;
@@ -267,9 +268,10 @@ static frame frame_of(const ztv_map *m)
 {
     frame f;
     uint32_t longest = m->w > m->h ? m->w : m->h;
-    f.zoom = longest < ZTV_MAP_MIN_PIXELS ? ZTV_MAP_MIN_PIXELS / longest : 1;
+    f.zoom = longest < ZTV_MAP_MIN_PIXELS ? (double)ZTV_MAP_MIN_PIXELS / longest : 1;
     f.map_x = MARGIN, f.map_y = TOP;
-    f.panel_x = MARGIN + (int)(m->w * f.zoom) + MARGIN;
+    f.map_w = (int)lround(m->w * f.zoom), f.map_h = (int)lround(m->h * f.zoom);
+    f.panel_x = MARGIN + f.map_w + MARGIN;
     f.metres_per_px = m->info->grid.cell * m->step / f.zoom;
     return f;
 }
@@ -396,15 +398,21 @@ static int draw_panel(canvas *c, const ztv_map *m, const map_style *st, const fr
         y = (below > y + SWATCH_H + 6 ? below : y + SWATCH_H + 6);
     }
     if (c) development_marker(c, x + SWATCH_W / 2.0, y + SWATCH_H / 2.0);
-    y = wrapped_text(c, x + SWATCH_W + 12, y + 3,  width - SWATCH_W - 12,
-                     info->n_developments > 1 ? "developments" : "the development", black) + 14;
+    y = wrapped_text(c, x + SWATCH_W + 12, y + 3, width - SWATCH_W - 12,
+                     info->n_developments > 1 ? "developments" : "the development", black) + 6;
+    if (c && info->target_xy) {
+        canvas_disc(c, x + SWATCH_W / 2.0, y + SWATCH_H / 2.0, TARGET_R, white);
+        canvas_disc(c, x + SWATCH_W / 2.0, y + SWATCH_H / 2.0, TARGET_R - 1, black);
+    }
+    if (info->target_xy) y = wrapped_text(c, x + SWATCH_W + 12, y + 3, width - SWATCH_W - 12, "targets", black) + 6;
+    y += 8;
     snprintf(text, sizeof text, "observer %g m above ground", info->observer_height);
     y = wrapped_text(c, x, y, width, text, black);
     if (isfinite(info->radius)) {
-        length_text(info->radius, text, sizeof text - 64);
-        char radius[96];
-        snprintf(radius, sizeof radius, "radius %s from the targets", text);
-        y = wrapped_text(c, x, y, width, radius, black);
+        char radius[64];
+        length_text(info->radius, radius, sizeof radius);
+        snprintf(text, sizeof text, "radius %s from the targets", radius);
+        y = wrapped_text(c, x, y, width, text, black);
     }
     snprintf(text, sizeof text, "%u targets", info->n_targets);
     y = wrapped_text(c, x, y, width, text, black);
@@ -425,44 +433,73 @@ static int draw_panel(canvas *c, const ztv_map *m, const map_style *st, const fr
     return y;
 }
 
+/* The colour of every map pixel (RGB, and 1 in hatched where it is not computed). */
+static void map_colours(const ztv_map *m, const map_style *st, uint8_t *rgb, uint8_t *hatched)
+{
+    for (uint32_t v = 0; v < m->h; v++)
+        for (uint32_t u = 0; u < m->w; u++) {
+            size_t k = (size_t)v * m->w + u;
+            uint8_t *out = rgb + 3 * k, over[3];
+            int how = isfinite(m->ground[k]) ? st->colour(m, st, k, over) : 3;
+            hatched[k] = how == 3;
+            if (how == 3) continue;
+            memset(out, hillshade(m, u, v), 3);
+            if (how == 1) blend(out, over, ZTV_MAP_OPACITY, out);
+            else if (how == 2) memcpy(out, over, 3);
+        }
+}
+
 static int draw_map(const ztv_map *m, const map_style *st, canvas *c, err_buf *err)
 {
     const ztv_info *info = m->info;
     frame f = frame_of(m);
     int panel_bottom = draw_panel(NULL, m, st, &f);
-    int map_bottom = f.map_y + (int)(m->h * f.zoom);
+    int map_bottom = f.map_y + f.map_h, map_right = f.map_x + f.map_w;
     uint32_t width = (uint32_t)f.panel_x + PANEL_W + MARGIN;
     uint32_t height = (uint32_t)(panel_bottom > map_bottom ? panel_bottom : map_bottom) + MARGIN;
-    if (canvas_init(c, width, height, white, err)) return -1;
+    size_t n = (size_t)m->w * m->h;
+    uint8_t *rgb = malloc(n * 4); /* n RGB triples, then n hatched flags; freed below */
+    if (!rgb) return err_nomem(err, "out of memory drawing a %u x %u map", m->w, m->h);
+    if (canvas_init(c, width, height, white, err)) {
+        free(rgb);
+        return -1;
+    }
+    map_colours(m, st, rgb, rgb + 3 * n);
     canvas_text(c, MARGIN, MARGIN, st->title, TITLE_SCALE, black);
     char subtitle[256];
     snprintf(subtitle, sizeof subtitle, "observer %g m above ground, %u target%s%s", info->observer_height,
              info->n_targets, info->n_targets == 1 ? "" : "s",
              info->n_developments > 1 ? ", several developments" : "");
     canvas_text(c, MARGIN, MARGIN + 7 * TITLE_SCALE + 10, subtitle, TEXT_SCALE, frame_grey);
-    /* the map */
-    for (uint32_t v = 0; v < m->h; v++)
-        for (uint32_t u = 0; u < m->w; u++) {
+    /* the map, each canvas pixel the map pixel under its centre */
+    for (int y = 0; y < f.map_h; y++) {
+        uint32_t v = (uint32_t)((y + 0.5) / f.zoom);
+        if (v >= m->h) v = m->h - 1;
+        for (int x = 0; x < f.map_w; x++) {
+            uint32_t u = (uint32_t)((x + 0.5) / f.zoom);
+            if (u >= m->w) u = m->w - 1;
             size_t k = (size_t)v * m->w + u;
-            uint8_t rgb[3], over[3];
-            int how = isfinite(m->ground[k]) ? st->colour(m, st, k, over) : 3;
-            int x = f.map_x + (int)(u * f.zoom), y = f.map_y + (int)(v * f.zoom);
-            if (how == 3) {
-                hatch(c, x, y, x + (int)f.zoom - 1, y + (int)f.zoom - 1);
-                continue;
-            }
-            memset(rgb, hillshade(m, u, v), 3);
-            if (how == 1) blend(rgb, over, ZTV_MAP_OPACITY, rgb);
-            else if (how == 2) memcpy(rgb, over, 3);
-            canvas_rect(c, x, y, x + (int)f.zoom - 1, y + (int)f.zoom - 1, rgb);
+            int cx = f.map_x + x, cy = f.map_y + y;
+            if (rgb[3 * n + k]) hatch(c, cx, cy, cx, cy);
+            else canvas_pixel(c, cx, cy, rgb + 3 * k);
         }
-    canvas_rect(c, f.map_x - 1, f.map_y - 1, f.map_x + (int)(m->w * f.zoom), f.map_y - 1, frame_grey);
-    canvas_rect(c, f.map_x - 1, map_bottom, f.map_x + (int)(m->w * f.zoom), map_bottom, frame_grey);
+    }
+    free(rgb);
+    canvas_rect(c, f.map_x - 1, f.map_y - 1, map_right, f.map_y - 1, frame_grey);
+    canvas_rect(c, f.map_x - 1, map_bottom, map_right, map_bottom, frame_grey);
     canvas_rect(c, f.map_x - 1, f.map_y - 1, f.map_x - 1, map_bottom, frame_grey);
-    canvas_rect(c, f.map_x + (int)(m->w * f.zoom), f.map_y - 1, f.map_x + (int)(m->w * f.zoom), map_bottom, frame_grey);
-    /* the developments, named when few */
+    canvas_rect(c, map_right, f.map_y - 1, map_right, map_bottom, frame_grey);
     double px_per_m = 1.0 / f.metres_per_px;
     double west = info->grid.x0 - 0.5 * info->grid.cell, north = info->grid.y0 + 0.5 * info->grid.cell;
+    /* the targets' positions, a dot each (a turbine's hub and blade tips make one), inside the map */
+    for (int pass = 0; pass < 2 && info->target_xy; pass++)
+        for (uint32_t t = 0; t < info->n_targets; t++) {
+            double x = f.map_x + (info->target_xy[t][0] - west) * px_per_m;
+            double y = f.map_y + (north - info->target_xy[t][1]) * px_per_m;
+            if (x < f.map_x || x > map_right || y < f.map_y || y > map_bottom) continue;
+            canvas_disc(c, x, y, pass ? TARGET_R - 1 : TARGET_R, pass ? black : white);
+        }
+    /* the developments, named when few */
     for (uint32_t d = 0; d < info->n_developments && info->development_xy; d++) {
         double x = f.map_x + (info->development_xy[d][0] - west) * px_per_m;
         double y = f.map_y + (north - info->development_xy[d][1]) * px_per_m;
@@ -476,7 +513,7 @@ static int draw_map(const ztv_map *m, const map_style *st, canvas *c, err_buf *e
         double y = f.map_y + (north - info->development_xy[d][1]) * px_per_m;
         int tw = canvas_text_width(name, TEXT_SCALE);
         int tx = (int)lround(x) + MARKER_R + 5;
-        if (tx + tw > f.map_x + (int)(m->w * f.zoom)) tx = (int)lround(x) - MARKER_R - 5 - tw;
+        if (tx + tw > map_right) tx = (int)lround(x) - MARKER_R - 5 - tw;
         halo_text(c, tx, (int)lround(y) - 7, name);
     }
     draw_panel(c, m, st, &f);

@@ -16,7 +16,7 @@
 #include "ztv/ztv_raster.h"
 
 #define ZTV_MAP_MAX_PIXELS 1600u /* map pixels on the grid's long side, at most */
-#define ZTV_MAP_MIN_PIXELS 900u  /* a smaller grid is enlarged by a whole factor up to this */
+#define ZTV_MAP_MIN_PIXELS 1000u /* a smaller grid is enlarged to this on its long side */
 #define ZTV_MAP_FLAT_GREY 207    /* the hillshade of level ground */
 #define ZTV_MAP_OPACITY 0.65     /* of the colour bands over the hillshade */
 

@@ -56,6 +56,10 @@ static int check_info(const char *dir, const ztv_info *info, err_buf *err)
     if (!(g->cell > 0) || !isfinite(g->cell) || !isfinite(g->x0) || !isfinite(g->y0))
         return err_fail(err, ERR_INTERNAL, "the visibility grid's cell (%g m) must be positive and its "
                         "corner finite", g->cell);
+    if (!isfinite(info->observer_height) || !isfinite(info->refraction) || !(info->radius > 0))
+        return err_fail(err, ERR_INTERNAL, "the visibility map's observer height (%g m) and refraction (%g) "
+                        "must be finite and its radius (%g m) positive", info->observer_height,
+                        info->refraction, info->radius);
     int any = 0;
     for (int m = 0; m < ZTV_MODES; m++) any |= info->computed[m] != 0;
     if (!any) return err_fail(err, ERR_INTERNAL, "the visibility map computes no mode");
@@ -64,9 +68,10 @@ static int check_info(const char *dir, const ztv_info *info, err_buf *err)
         return err_fail(err, ERR_LIMIT, "%u developments in one visibility map; at most %u",
                         info->n_developments, ZTV_MAX_DEVELOPMENTS);
     struct stat st;
-    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode))
-        return err_fail(err, ERR_OUTPUT, "%s: the output folder %s", dir,
-                        errno == ENOENT ? "does not exist (create it first)" : "is not a folder");
+    if (stat(dir, &st) != 0)
+        return err_fail(err, ERR_OUTPUT, "%s: the output folder cannot be used: %s", dir,
+                        errno == ENOENT ? "it does not exist (create it first)" : strerror(errno));
+    if (!S_ISDIR(st.st_mode)) return err_fail(err, ERR_OUTPUT, "%s: the output folder is not a folder", dir);
     if (strlen(dir) + 64 >= ATOMIC_PATH_MAX - 64) return err_fail(err, ERR_OUTPUT, "%s: the output folder's path is too long", dir);
     return 0;
 }

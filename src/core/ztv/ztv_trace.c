@@ -44,10 +44,12 @@ typedef struct trace_ctx {
     uint64_t cells, pairs, rays;
 } trace_ctx;
 
-/* Scratch of one worker for one row; owned by the worker. */
+/* Scratch of one worker for one row; owned by the worker. The counts of the pairs it traced
+ * so far choose which sightline of a pair to cast first (the answer does not depend on it). */
 typedef struct row_scratch {
     float *eye;
     uint8_t *under, *inside;
+    uint64_t bare_clear, screened_blocked;
 } row_scratch;
 
 static int within_radius(const ztv_job *job, double x, double y)
@@ -91,14 +93,21 @@ static void trace_row(trace_ctx *c, uint32_t row, row_scratch *w, uint64_t *cell
             (*cells)++;
             for (uint32_t n = 0; n < t->n; n++) {
                 uint32_t bit = 1u << t->development[n];
-                int bare;
-                if (c->screened && cls_s == ZTV_OPEN && ztv_sight_clear(&c->sight, eye, t->p[n], screen_mask, rays)) {
-                    vis[1]++, devs[1] |= bit;
-                    bare = 1;
-                } else {
+                int bare, screened = 0;
+                if (!c->screened || cls_s != ZTV_OPEN) {
                     bare = ztv_sight_clear(&c->sight, eye, t->p[n], ACCEL_MASK_GROUND, rays);
+                } else if (w->bare_clear < w->screened_blocked) {
+                    /* bare earth hides most: what it hides, the screening hides too */
+                    bare = ztv_sight_clear(&c->sight, eye, t->p[n], ACCEL_MASK_GROUND, rays);
+                    screened = bare && ztv_sight_clear(&c->sight, eye, t->p[n], screen_mask, rays);
+                } else {
+                    /* the screening hides little: what it lets through, bare earth does too */
+                    screened = ztv_sight_clear(&c->sight, eye, t->p[n], screen_mask, rays);
+                    bare = screened || ztv_sight_clear(&c->sight, eye, t->p[n], ACCEL_MASK_GROUND, rays);
                 }
+                if (c->screened && cls_s == ZTV_OPEN) w->bare_clear += bare, w->screened_blocked += !screened;
                 if (bare) vis[0]++, devs[0] |= bit;
+                if (screened) vis[1]++, devs[1] |= bit;
                 (*pairs)++;
             }
         }
@@ -116,7 +125,7 @@ static void *trace_worker(void *arg)
 {
     trace_ctx *c = arg;
     uint32_t nx = c->job->grid.nx;
-    row_scratch w = {malloc((size_t)nx * sizeof(float)), malloc(nx), malloc(nx)}; /* freed below */
+    row_scratch w = {malloc((size_t)nx * sizeof(float)), malloc(nx), malloc(nx), 0, 0}; /* freed below */
     uint64_t cells = 0, pairs = 0, rays = 0;
     for (uint32_t row; w.eye && w.under && w.inside && (row = atomic_fetch_add(&c->next_row, 1)) < c->rows;) {
         trace_row(c, row, &w, &cells, &pairs, &rays);

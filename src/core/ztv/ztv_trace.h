@@ -9,7 +9,9 @@
  * The modes are nested (everything bare earth screens with, the vegetation mode does too, and
  * so on), so a sightline clear of the screened mode's geometry is clear on bare earth too, and
  * one blocked on bare earth is blocked screened: a pair of observer and target costs one
- * sightline where the screening does not hide it, two where it does.
+ * sightline or two. Each worker casts first the one that has settled more of its pairs so far
+ * (bare earth where the terrain hides most, the screened one where little is screened); the
+ * answer is the same in either order.
  */
 #ifndef SYLVA_ZTV_TRACE_H
 #define SYLVA_ZTV_TRACE_H

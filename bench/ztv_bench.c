@@ -12,12 +12,14 @@
  *     wall time, from the built Embree scene to the last block handed over, and cell-targets per
  *     second;
  *  2. raw Embree: the same rays, cast with rtcOccluded1 in a plain loop over rows on as many
- *     threads (rows interleaved), through the same Embree scene with the same masks, the same
- *     ends (a gap at each) and the same order of modes (screened first, bare earth where that is
- *     blocked; only bare earth for a cell under a crown): rays per second, and the tracer's share of it. Each time
- *     is the best of 3 runs, the tracer's and the loop's taken in turn (the machine may be busy).
- *     The loop's visible counts must equal the maps' (else it did not cast the same rays). For
- *     scale, the bare-earth rays also through an Embree scene of the terrain alone;
+ *     threads (rows interleaved), through the same Embree scene with the same masks and the same
+ *     ends (a gap at each), choosing the same way which sightline of a pair to cast first (the
+ *     one that has settled more of the thread's pairs so far; only bare earth for a cell under a
+ *     crown): rays per second, and the tracer's share of it. Each time is the best of 3 runs, the
+ *     tracer's and the loop's taken in turn (the machine may be busy). The loop's visible counts
+ *     must equal the maps' (else it did not answer the same questions); its ray count differs
+ *     from the tracer's by the few pairs whose order the threads' other rows decided otherwise.
+ *     For scale, the bare-earth rays also through an Embree scene of the terrain alone;
  *  3. gdal_viewshed over the same terrain written as a GeoTIFF: one run per target (-cc 0), as a
  *     ZTV is made with it, timed as commands (the best of 3 rounds of 10).
  * The Earth is flat (curvature off), so that a cell-target is one straight ray for the tracer
@@ -191,6 +193,7 @@ static void *raw_rows(void *arg)
     raw_job *j = arg;
     const ztv_grid *g = j->grid;
     uint64_t rays = 0, visible[2] = {0, 0}; /* local: the jobs share cache lines */
+    uint64_t bare_clear = 0, screened_blocked = 0; /* choose which sightline to cast first */
     for (uint32_t row = j->first; row < g->ny; row += j->stride)
         for (uint32_t i = 0; i < g->nx; i++) {
             double x, y, ground;
@@ -199,8 +202,17 @@ static void *raw_rows(void *arg)
             float eye[3] = {(float)x, (float)y, (float)(ground + EYE)};
             int open = j->cls && j->cls[(size_t)row * g->nx + i] == ZTV_OPEN;
             for (uint32_t t = 0; t < N_TARGETS; t++) {
-                int screened = open && (rays++, raw_clear(j->acc->top, eye, j->target[t], j->screen_mask));
-                int bare = screened || (rays++, raw_clear(j->acc->top, eye, j->target[t], ACCEL_MASK_GROUND));
+                int bare, screened = 0;
+                if (!open) {
+                    bare = (rays++, raw_clear(j->acc->top, eye, j->target[t], ACCEL_MASK_GROUND));
+                } else if (bare_clear < screened_blocked) { /* bare earth first: it settles more */
+                    bare = (rays++, raw_clear(j->acc->top, eye, j->target[t], ACCEL_MASK_GROUND));
+                    screened = bare && (rays++, raw_clear(j->acc->top, eye, j->target[t], j->screen_mask));
+                } else { /* the screened sightline first */
+                    screened = (rays++, raw_clear(j->acc->top, eye, j->target[t], j->screen_mask));
+                    bare = screened || (rays++, raw_clear(j->acc->top, eye, j->target[t], ACCEL_MASK_GROUND));
+                }
+                if (open) bare_clear += bare, screened_blocked += !screened;
                 visible[0] += bare, visible[1] += screened;
             }
         }
@@ -293,13 +305,15 @@ static const char *load_average(void)
     return line;
 }
 
+/* sylva / raw is the ratio of their rays per second (their ray counts may differ a little). */
 static void print_map(const char *what, double seconds, const ztv_stats *st, double raw, uint64_t raw_rays)
 {
     printf("sylva ztv, %-22s %6.3f s: %6.2f M cell-targets/s, %.2f M rays/s (%llu rays)  goal <= 10 s\n", what,
            seconds, st->pairs / seconds / 1e6, st->rays / seconds / 1e6, (unsigned long long)st->rays);
     if (raw > 0)
         printf("raw Embree, the same rays:     %6.3f s: %6.2f M rays/s (%llu rays); sylva / raw: %.2f "
-               "(goal >= 0.7)\n", raw, raw_rays / raw / 1e6, (unsigned long long)raw_rays, raw / seconds);
+               "(goal >= 0.7)\n", raw, raw_rays / raw / 1e6, (unsigned long long)raw_rays,
+               (st->rays / seconds) / (raw_rays / raw));
 }
 
 int main(int argc, char **argv)
@@ -368,7 +382,7 @@ int main(int argc, char **argv)
     print_map("bare earth:", t_bare, &st, r_bare, got.rays);
     printf("raw Embree, the same rays through the terrain alone (no plants to skip): %6.3f s: %6.2f M rays/s\n",
            r_alone, got.rays / r_alone / 1e6);
-    if (got.visible[0] != rec.visible[ZTV_BARE] || got.rays != st.rays)
+    if (got.visible[0] != rec.visible[ZTV_BARE])
         printf("MISMATCH: the raw loop sees %llu cell-targets in %llu rays, the map %llu in %llu\n",
                (unsigned long long)got.visible[0], (unsigned long long)got.rays,
                (unsigned long long)rec.visible[ZTV_BARE], (unsigned long long)st.rays);
@@ -381,8 +395,7 @@ int main(int argc, char **argv)
     if (time_mode(&job, &rec, raw, NULL, threads, &t_veg, &r_veg, NULL, &st, &got, &err))
         return fprintf(stderr, "ztv_bench: %s\n", err.msg), 4;
     print_map("bare and vegetation:", t_veg, &st, r_veg, got.rays);
-    if (got.visible[0] != rec.visible[ZTV_BARE] || got.visible[1] != rec.visible[ZTV_VEGETATION] ||
-        got.rays != st.rays)
+    if (got.visible[0] != rec.visible[ZTV_BARE] || got.visible[1] != rec.visible[ZTV_VEGETATION])
         printf("MISMATCH: the raw loop sees %llu / %llu cell-targets in %llu rays, the map %llu / %llu in %llu\n",
                (unsigned long long)got.visible[0], (unsigned long long)got.visible[1], (unsigned long long)got.rays,
                (unsigned long long)rec.visible[ZTV_BARE], (unsigned long long)rec.visible[ZTV_VEGETATION],

@@ -15,6 +15,8 @@ packages=(
   libproj-dev            # site CRS: EPSG codes, WKT, longitude/latitude to map coordinates
   povray                 # cross-check renders
   libassimp-dev          # 3-D model import (OBJ, glTF, PLY, STL, FBX, COLLADA, 3DS)
+  libgsl-dev             # photomontage camera match: nonlinear least squares (multifit_nlinear)
+  libimage-exiftool-perl # exiftool: the EXIF tests compare what sylva reads with what it reports
 )
 
 missing=()

@@ -466,6 +466,19 @@ static void write_camera(pov_file *pf, const camera_settings *c, uint32_t width,
     pov_append_vec3(u, sky, SETTING_DIGITS, NULL);
     pov_format_real(aspect, (double)width / height, SETTING_DIGITS);
     pov_format_real(fov, c->fov_deg, SETTING_DIGITS);
+    if (c->cylindrical) {
+        /* cylinder 1: the angle across as sylva's; the tangent of the elevation spans the up
+         * vector's length, angle (radians) x height / width (render/camera.h) */
+        char span[POV_NUMBER_MAX];
+        pov_format_real(span, c->fov_deg * M_PI / 180.0 * height / width, SETTING_DIGITS);
+        pov_printf(pf, "camera {\n  cylinder 1  // a panorama: angle across linear in x, tangent of the elevation in y\n"
+                       "  location %s\n  sky %s  // sylva's up vector\n"
+                       "  up y * %s  // the tangent of the elevation from the bottom row to the top\n"
+                       "  right -x * %s  // negative: right-handed axes shown unmirrored\n"
+                       "  angle %s  // horizontal field of view, degrees\n  look_at %s\n}\n\n",
+                   a, u, span, aspect, fov, b);
+        return;
+    }
     pov_printf(pf, "camera {\n  perspective\n  location %s\n  sky %s  // sylva's up vector\n"
                    "  right -x * %s  // width / height; negative: right-handed axes shown unmirrored\n"
                    "  angle %s  // horizontal field of view, degrees\n  look_at %s\n}\n\n",

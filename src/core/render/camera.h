@@ -1,6 +1,12 @@
-/* camera.h — the pinhole camera: position, orthonormal frame from the view direction and the
- * up vector, horizontal field of view (from focal length and sensor width when given). Pixel
- * (0, 0) is the top-left corner of the image. */
+/* camera.h — the camera: position, orthonormal frame from the view direction and the up vector,
+ * horizontal field of view (from focal length and sensor width when given). Pixel (0, 0) is the
+ * top-left corner of the image.
+ *
+ * A perspective (pinhole) camera places the tangents of the angles off the view axis linearly
+ * across and down the image. A cylindrical one (a panorama) turns the ray about the up axis by
+ * an angle linear in x, a (x / width - 1/2) with a the field of view across, and places the
+ * tangent of its elevation linearly in y, (1/2 - y / height) height a / width, which keeps
+ * pixels square at the horizon; POV-Ray's `cylinder 1` camera is the same. */
 #ifndef SYLVA_CAMERA_H
 #define SYLVA_CAMERA_H
 
@@ -12,12 +18,18 @@
 typedef struct camera {
     vec3 origin;
     vec3 forward, right, up; /* unit; right = forward x up */
-    float tan_half_x, tan_half_y;
+    float tan_half_x, tan_half_y; /* perspective: tangents of the half fields of view */
+    int cylindrical;
+    float angle_x;           /* cylindrical: the field of view across, radians */
+    float tan_range_y;       /* cylindrical: the tangent of the elevation spans [-this, this] */
     uint32_t width, height;
 } camera;
 
 void camera_init(camera *c, const camera_settings *s, uint32_t width, uint32_t height);
 /* Unit direction through image position (x, y) in pixels (continuous). */
 vec3 camera_direction(const camera *c, float x, float y);
+
+/* The smallest angle a pixel spans anywhere in the image, radians (at its corners). */
+double camera_smallest_pixel_angle(const camera *c);
 
 #endif

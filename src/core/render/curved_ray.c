@@ -12,11 +12,7 @@ void curved_rays_init(curved_rays *cr, const earth_settings *earth, const camera
     if (!earth || !earth->curvature || earth->refraction == 1.0) return;
     cr->on = 1;
     cr->lift = (1.0 - earth->refraction) / (2.0 * earth->radius);
-    /* A pixel spans 2 tan(fov/2) / width radians at the centre of the image and shrinks toward
-     * its corners by 1 / (1 + x^2 + y^2) (x, y the tangents of the corner). */
-    double tx = c->tan_half_x, ty = c->tan_half_y;
-    double pixel = 2.0 * tx / c->width / (1.0 + tx * tx + ty * ty);
-    cr->tolerance = CURVED_RAY_PIXEL_SHARE * pixel;
+    cr->tolerance = CURVED_RAY_PIXEL_SHARE * camera_smallest_pixel_angle(c);
     for (int k = 0; k < 3; k++) {
         double margin = 1.0 + 1e-3 * ((double)hi[k] - (double)lo[k]);
         cr->lo[k] = (double)lo[k] - margin;

@@ -275,7 +275,9 @@ static void aux_layers(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_resu
     }
     hit_info h;
     accel_shade(ctx->accel, &rh, &h);
-    out->depth = t * v3_dot(d, ctx->camera.forward);
+    /* depth: along the view axis; for a panorama, from the cylinder's axis (the camera's up) */
+    float up = v3_dot(d, ctx->camera.up);
+    out->depth = ctx->camera.cylindrical ? t * sqrtf(fmaxf(0.0f, 1.0f - up * up)) : t * v3_dot(d, ctx->camera.forward);
     out->normal = v3_dot(h.ns, d) > 0.0f ? v3_scale(h.ns, -1.0f) : h.ns;
     out->albedo = h.albedo;
     out->instance_id = h.instance_id;

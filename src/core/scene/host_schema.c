@@ -119,6 +119,8 @@ const host_schema host_schema_position = {
     "above ground (needs site:).",
     position_params, COUNT(position_params)};
 
+static const char *const camera_projections[] = {"perspective", "cylindrical", NULL};
+
 /* --- camera --------------------------------------------------------------------------------- */
 static const sylva_param_spec camera_params[] = {
     {.name = "position", .type = SYLVA_P_LIST, .flags = REQ, .min_len = 2, .max_len = 3, .unit = "m",
@@ -135,8 +137,13 @@ static const sylva_param_spec camera_params[] = {
      .help = "Viewing direction, any length but not zero (used when look_at is absent)."},
     {.name = "up", .type = SYLVA_P_VEC3, .def_list = z_up, .def_len = 3,
      .help = "Up direction of the image; must not be parallel to the viewing direction."},
-    {.name = "fov", .type = SYLVA_P_REAL, .flags = MIN_X | MAX_X, .def = 60, .min = 0, .max = 180,
-     .unit = "deg", .help = "Horizontal field of view (give fov or focal_length, not both)."},
+    {.name = "fov", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 60, .min = 0, .max = 360,
+     .unit = "deg",
+     .help = "Horizontal field of view (give fov or focal_length, not both); under 180 for a "
+             "perspective camera."},
+    {.name = "projection", .type = SYLVA_P_ENUM, .def_str = "perspective", .choices = camera_projections,
+     .help = "perspective (a pinhole, as a photograph) or cylindrical (a panorama: angle across "
+             "linear in x, the tangent of the elevation linear in y)."},
     {.name = "focal_length", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 35, .min = 0,
      .max = 100000, .unit = "mm",
      .help = "Lens focal length; when given, the field of view follows from it and sensor_width."},

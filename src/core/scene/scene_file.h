@@ -45,6 +45,7 @@ typedef struct camera_settings {
                                scene is built (scene_build.c) */
     double up[3];
     double roll_deg;        /* turn about the view, clockwise seen from behind (camera_frame.h) */
+    int cylindrical;        /* 0: a pinhole (perspective); 1: a cylindrical panorama (render/camera.h) */
     double fov_deg;         /* horizontal field of view; derived from focal length when given */
     double focal_length_mm; /* 0 when fov was given */
     double sensor_width_mm;

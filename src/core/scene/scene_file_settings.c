@@ -205,13 +205,25 @@ static int read_camera_block(loader *L, const ynode *map, uint32_t key_line, uin
                        c->up[0], c->up[1], c->up[2]);
     }
     c->sensor_width_mm = sensor->r;
+    const sylva_value *projection = sylva_param(p, "projection");
+    c->cylindrical = (int)projection->i == 1;
     if (focal->is_set) {
         c->focal_length_mm = focal->r;
-        c->fov_deg = 2.0 * atan(sensor->r / (2.0 * focal->r)) / DEG;
+        /* a cylinder of radius f unrolled onto the sensor: the width spans sensor / f radians */
+        c->fov_deg = c->cylindrical ? sensor->r / focal->r / DEG : 2.0 * atan(sensor->r / (2.0 * focal->r)) / DEG;
+        if (c->fov_deg > 360.0)
+            return sf_located(L->err, L->file, focal->line, focal->column,
+                              "a cylindrical camera with focal_length %g mm on a %g mm sensor would see %.0f "
+                              "degrees across, more than a full turn; give a longer focal length", focal->r,
+                              sensor->r, c->fov_deg);
     } else {
         c->focal_length_mm = 0.0;
         c->fov_deg = fov->r;
     }
+    if (!c->cylindrical && c->fov_deg >= 180.0)
+        return sf_located(L->err, L->file, fov->line, fov->column,
+                          "a perspective camera sees less than 180 degrees across, got fov %g; use "
+                          "projection: cylindrical for a panorama", c->fov_deg);
     if (c->eye_ground.given) c->position[2] = NAN;   /* known once the terrain is built */
     if (c->look_at_ground.given) c->look_at[2] = NAN;
     read_camera_angles(p, c);

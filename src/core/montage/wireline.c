@@ -1,0 +1,86 @@
+/* wireline.c — the development's outline and visible edges from a rendered frame's layers. */
+#include "montage/wireline.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The development object a pixel shows (object index + 1), or 0. */
+static uint32_t development_at(const film *f, const scene *s, size_t k)
+{
+    uint32_t id = f->object_id[k];
+    return id && id <= s->n_objects && s->objects[id - 1].development ? id : 0;
+}
+
+/* The point pixel (x, y) shows, relative to the camera, from the depth layer; its distance. */
+static double pixel_point(const film *f, const camera *c, uint32_t x, uint32_t y, double p[3])
+{
+    vec3 d = camera_direction(c, x + 0.5f, y + 0.5f);
+    double along = c->cylindrical ? sqrt(fmax(0.0, 1.0 - (double)v3_dot(d, c->up) * v3_dot(d, c->up)))
+                                  : (double)v3_dot(d, c->forward);
+    double t = f->depth[(size_t)y * f->width + x] / fmax(along, 1e-9);
+    p[0] = t * d.x, p[1] = t * d.y, p[2] = t * d.z;
+    return t;
+}
+
+/* What pixel (x, y) (a development pixel) is with respect to its neighbour (nx, ny). */
+static wireline_kind edge_between(const film *f, const scene *s, const camera *c, uint32_t x, uint32_t y,
+                                  uint32_t nx, uint32_t ny, double cos_crease)
+{
+    size_t k = (size_t)y * f->width + x, n = (size_t)ny * f->width + nx;
+    uint32_t a = development_at(f, s, k), b = development_at(f, s, n);
+    if (!b) return WIRELINE_OUTLINE;
+    if (a != b) return WIRELINE_EDGE;
+    const float *na = &f->normal[3 * k], *nb = &f->normal[3 * n];
+    double dot = (double)na[0] * nb[0] + (double)na[1] * nb[1] + (double)na[2] * nb[2];
+    if (dot < cos_crease) return WIRELINE_EDGE;
+    double pk[3], pn[3];
+    double t = pixel_point(f, c, x, y, pk);
+    pixel_point(f, c, nx, ny, pn);
+    double off = fabs(na[0] * (pn[0] - pk[0]) + na[1] * (pn[1] - pk[1]) + na[2] * (pn[2] - pk[2]));
+    return off > WIRELINE_DEPTH_STEP * t ? WIRELINE_EDGE : WIRELINE_NONE;
+}
+
+int wireline_find(wireline *w, const film *f, const scene *s, const camera *c, err_buf *err)
+{
+    memset(w, 0, sizeof *w);
+    size_t n = (size_t)f->width * f->height;
+    w->edge = calloc(n ? n : 1, 1);
+    if (!w->edge) return err_nomem(err, "out of memory for a %ux%u wireline", f->width, f->height);
+    w->width = f->width, w->height = f->height;
+    double cos_crease = cos(WIRELINE_CREASE_DEG * M_PI / 180.0);
+    for (uint32_t y = 0; y < f->height; y++)
+        for (uint32_t x = 0; x < f->width; x++) {
+            size_t k = (size_t)y * f->width + x;
+            if (!development_at(f, s, k)) continue;
+            wireline_kind kind = WIRELINE_NONE;
+            uint32_t nbr[4][2];
+            int m = 0;
+            if (x > 0) nbr[m][0] = x - 1, nbr[m++][1] = y;
+            if (x + 1 < f->width) nbr[m][0] = x + 1, nbr[m++][1] = y;
+            if (y > 0) nbr[m][0] = x, nbr[m++][1] = y - 1;
+            if (y + 1 < f->height) nbr[m][0] = x, nbr[m++][1] = y + 1;
+            for (int i = 0; i < m && kind != WIRELINE_OUTLINE; i++) {
+                wireline_kind e = edge_between(f, s, c, x, y, nbr[i][0], nbr[i][1], cos_crease);
+                if (e > kind) kind = e;
+            }
+            w->edge[k] = (uint8_t)kind;
+            w->outline += kind == WIRELINE_OUTLINE, w->inner += kind == WIRELINE_EDGE;
+        }
+    return 0;
+}
+
+void wireline_free(wireline *w)
+{
+    free(w->edge);
+    memset(w, 0, sizeof *w);
+}
+
+void wireline_draw(const wireline *w, uint8_t *rgb, const uint8_t outline_rgb[3], const uint8_t edge_rgb[3])
+{
+    for (size_t k = 0; k < (size_t)w->width * w->height; k++) {
+        if (w->edge[k] == WIRELINE_NONE) continue;
+        const uint8_t *c = w->edge[k] == WIRELINE_OUTLINE ? outline_rgb : edge_rgb;
+        memcpy(&rgb[3 * k], c, 3);
+    }
+}

@@ -1,0 +1,48 @@
+/* wireline.h — the development's wireline: its outline and its visible edges as a photomontage's
+ * verification shows them, drawn over the photograph so the rendered development can be checked
+ * against the view.
+ *
+ * The edges are found in the rendered frame's centre-ray layers (render/film.h): a pixel that
+ * shows a development object is on the outline when a neighbour (left, right, above, below)
+ * shows anything else (the sky, the ground, a tree in front, another object), and on an inner
+ * edge when a neighbour shows another part of the development, a face turned more than
+ * WIRELINE_CREASE_DEG from its own, or a point off the pixel's own surface by more than
+ * WIRELINE_DEPTH_STEP of its distance (a wing of a building in front of another: the points
+ * are placed from the depth layer along the camera's rays). Only what the camera sees is drawn: a part hidden
+ * behind the terrain or a tree has no pixels. A line is one pixel wide, on the development's
+ * side of the edge, so it lies within a pixel of the edge's true position.
+ *
+ * Ownership: wireline_find allocates w->edge; wireline_free releases it.
+ */
+#ifndef SYLVA_WIRELINE_H
+#define SYLVA_WIRELINE_H
+
+#include <stdint.h>
+
+#include "render/camera.h"
+#include "render/film.h"
+#include "scene/scene.h"
+#include "util/err.h"
+
+#define WIRELINE_CREASE_DEG 25.0  /* normals of neighbouring pixels farther apart are an edge */
+#define WIRELINE_DEPTH_STEP 0.02  /* a neighbour's point off the pixel's tangent plane by this share
+                                   * of the pixel's distance is an edge */
+
+typedef enum wireline_kind { WIRELINE_NONE = 0, WIRELINE_OUTLINE = 1, WIRELINE_EDGE = 2 } wireline_kind;
+
+typedef struct wireline {
+    uint32_t width, height;
+    uint8_t *edge;           /* width * height wireline_kinds, row 0 at the top; owned */
+    uint64_t outline, inner; /* pixels of each kind */
+} wireline;
+
+/* The wireline of the development objects of s in film f, rendered from s through camera c.
+ * Returns 0, or -1 with err set (out of memory). */
+int wireline_find(wireline *w, const film *f, const scene *s, const camera *c, err_buf *err);
+void wireline_free(wireline *w); /* accepts a zeroed one */
+
+/* Paints the wireline over rgb (8-bit, 3 per pixel, w->width x w->height): the outline in
+ * outline_rgb, the inner edges in edge_rgb. */
+void wireline_draw(const wireline *w, uint8_t *rgb, const uint8_t outline_rgb[3], const uint8_t edge_rgb[3]);
+
+#endif

@@ -1,0 +1,158 @@
+/* test_wireline.c — the development's wireline (montage/wireline.h) on a rendered box: every
+ * wireline pixel lies within a pixel of one of the box's visible edges as the camera projects
+ * them, every visible edge is drawn along its length and painted, and a box that is not the
+ * development has none. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "harness.h"
+#include "montage/wireline.h"
+#include "render/camera.h"
+#include "render/render.h"
+#include "scene_fixture.h"
+#include "work_dir.h"
+
+static const char *box_scene =
+    "image: {width: 160, height: 120, spp: 1, seed: 1}\n"
+    "camera: {position: [12, -15, 8], look_at: [0, 0, 3], fov: 40}\n"
+    "sun: {azimuth: 200, elevation: 40}\n"
+    "terrain: {grid: [[0, 0], [0, 0]], origin: [-50, -50], spacing: [100, 100]}\n"
+    "objects:\n"
+    "  - {name: hall, shape: box, size: [4, 4, 6], position: [0, 0, 3], development: %s}\n";
+
+/* Pixel position of world point p (the renderer's pinhole). */
+static void project(const camera *c, const double p[3], double *x, double *y)
+{
+    double d[3] = {p[0] - c->origin.x, p[1] - c->origin.y, p[2] - c->origin.z};
+    double f = d[0] * c->forward.x + d[1] * c->forward.y + d[2] * c->forward.z;
+    double r = d[0] * c->right.x + d[1] * c->right.y + d[2] * c->right.z;
+    double u = d[0] * c->up.x + d[1] * c->up.y + d[2] * c->up.z;
+    *x = (r / f / c->tan_half_x + 1) * 0.5 * c->width;
+    *y = (1 - u / f / c->tan_half_y) * 0.5 * c->height;
+}
+
+static double segment_distance(double px, double py, const double a[2], const double b[2])
+{
+    double dx = b[0] - a[0], dy = b[1] - a[1];
+    double t = ((px - a[0]) * dx + (py - a[1]) * dy) / (dx * dx + dy * dy);
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    return hypot(px - (a[0] + t * dx), py - (a[1] + t * dy));
+}
+
+static scene *render_box(const char *dev, film **f)
+{
+    char text[1024];
+    snprintf(text, sizeof text, box_scene, dev);
+    scene *s = fixture_scene(work_file("box.yaml", text));
+    if (!s) return NULL;
+    err_buf err = {{0}};
+    render_options o = {.threads = 2, .quiet = 1};
+    *f = render_scene(s, &o, NULL, &err);
+    CHECK(*f != NULL);
+    return s;
+}
+
+TEST(wireline_lies_on_the_box_edges)
+{
+    film *f = NULL;
+    scene *s = render_box("true", &f);
+    if (!s || !f) return;
+    err_buf err = {{0}};
+    camera c;
+    camera_init(&c, &s->camera, f->width, f->height);
+    wireline w;
+    CHECK_INT(wireline_find(&w, f, s, &c, &err), 0);
+    /* the box's corners and its 12 edges; an edge is seen when a face beside it faces the eye */
+    double corner[8][3], px[8][2];
+    for (int k = 0; k < 8; k++) {
+        corner[k][0] = k & 1 ? 2 : -2, corner[k][1] = k & 2 ? 2 : -2, corner[k][2] = k & 4 ? 6 : 0;
+        project(&c, corner[k], &px[k][0], &px[k][1]);
+    }
+    const double eye[3] = {c.origin.x, c.origin.y, c.origin.z};
+    /* faces as (axis, side): the face x = +2 faces the eye when eye x > 2, and so on */
+    int seen_face[3][2];
+    for (int a = 0; a < 3; a++) {
+        double lo = a == 2 ? 0 : -2, hi = a == 2 ? 6 : 2;
+        seen_face[a][0] = eye[a] < lo, seen_face[a][1] = eye[a] > hi;
+    }
+    double seg[12][2][2];
+    int n_seg = 0;
+    for (int k = 0; k < 8; k++)
+        for (int a = 0; a < 3; a++) {
+            int j = k | (1 << a);
+            if (j == k) continue;
+            /* the edge from k to j runs along axis a; the faces beside it are the other two axes' */
+            int b = (a + 1) % 3, cax = (a + 2) % 3;
+            int seen = seen_face[b][(k >> b) & 1] || seen_face[cax][(k >> cax) & 1];
+            if (!seen) continue;
+            memcpy(seg[n_seg][0], px[k], sizeof px[k]);
+            memcpy(seg[n_seg][1], px[j], sizeof px[j]);
+            n_seg++;
+        }
+    CHECK_INT(n_seg, 9); /* three faces in view: six outline edges and three inner ones */
+    double worst = 0;
+    for (uint32_t y = 0; y < w.height; y++)
+        for (uint32_t x = 0; x < w.width; x++) {
+            if (!w.edge[(size_t)y * w.width + x]) continue;
+            double best = INFINITY;
+            for (int e = 0; e < n_seg; e++) best = fmin(best, segment_distance(x + 0.5, y + 0.5, seg[e][0], seg[e][1]));
+            worst = fmax(worst, best);
+        }
+    fprintf(stderr, "wireline: %llu outline and %llu inner pixels, farthest %.2f px from a seen edge\n",
+            (unsigned long long)w.outline, (unsigned long long)w.inner, worst);
+    CHECK(worst <= 1.0);
+    CHECK(w.outline > 100 && w.inner > 50);
+    /* every seen edge is drawn along its length: near each point of it, a wireline pixel within
+     * a pixel of the edge */
+    for (int e = 0; e < n_seg; e++)
+        for (int i = 1; i < 20; i++) {
+            double q[2] = {seg[e][0][0] + i / 20.0 * (seg[e][1][0] - seg[e][0][0]),
+                           seg[e][0][1] + i / 20.0 * (seg[e][1][1] - seg[e][0][1])};
+            int found = 0;
+            for (int dy = -2; dy <= 2 && !found; dy++)
+                for (int dx = -2; dx <= 2 && !found; dx++) {
+                    int x = (int)floor(q[0]) + dx, y = (int)floor(q[1]) + dy;
+                    if (x < 0 || y < 0 || x >= (int)w.width || y >= (int)w.height) continue;
+                    found = w.edge[(size_t)y * w.width + x] &&
+                            segment_distance(x + 0.5, y + 0.5, seg[e][0], seg[e][1]) <= 1.0 &&
+                            hypot(x + 0.5 - q[0], y + 0.5 - q[1]) <= 1.5;
+                }
+            if (!found) fprintf(stderr, "edge %d: no wireline near (%.1f, %.1f)\n", e, q[0], q[1]);
+            CHECK(found);
+        }
+    /* painted: every wireline pixel in its colour, nothing else */
+    uint8_t *rgb = calloc((size_t)w.width * w.height, 3);
+    const uint8_t red[3] = {255, 0, 0}, yellow[3] = {255, 255, 0};
+    wireline_draw(&w, rgb, red, yellow);
+    uint64_t n_red = 0, n_yellow = 0, other = 0;
+    for (size_t k = 0; rgb && k < (size_t)w.width * w.height; k++) {
+        const uint8_t *p = &rgb[3 * k];
+        if (p[0] == 255 && p[1] == 0) n_red++;
+        else if (p[0] == 255 && p[1] == 255) n_yellow++;
+        else other += p[0] || p[1] || p[2];
+    }
+    CHECK(n_red == w.outline && n_yellow == w.inner && other == 0);
+    free(rgb);
+    wireline_free(&w);
+    film_free(f);
+    scene_free(s);
+}
+
+TEST(a_box_that_is_not_the_development_has_no_wireline)
+{
+    film *f = NULL;
+    scene *s = render_box("false", &f);
+    if (!s || !f) return;
+    err_buf err = {{0}};
+    camera c;
+    camera_init(&c, &s->camera, f->width, f->height);
+    wireline w;
+    CHECK_INT(wireline_find(&w, f, s, &c, &err), 0);
+    CHECK(w.outline == 0 && w.inner == 0);
+    wireline_free(&w);
+    film_free(f);
+    scene_free(s);
+}
+
+TEST_LIST(TEST_CASE(wireline_lies_on_the_box_edges), TEST_CASE(a_box_that_is_not_the_development_has_no_wireline))

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "io/atomic_file.h"
+#include "util/html_text.h"
 #include "util/json_text.h"
 
 /* ------------------------------------------------------------------------------------------ */
@@ -129,26 +130,6 @@ static int write_json(const char *out_dir, const crosscheck_result *r, const cro
 
 /* ------------------------------------------------------------------------------------------ */
 /* report.html                                                                                 */
-
-static void html_text(FILE *f, const char *s)
-{
-    for (const char *p = s ? s : ""; *p; p++) {
-        switch (*p) {
-        case '<': fputs("&lt;", f); break;
-        case '>': fputs("&gt;", f); break;
-        case '&': fputs("&amp;", f); break;
-        case '"': fputs("&quot;", f); break;
-        default: fputc(*p, f);
-        }
-    }
-}
-
-static void html_number(FILE *f, double v, const char *fmt)
-{
-    if (isinf(v)) fputs(v > 0 ? "&infin;" : "&minus;&infin;", f);
-    else if (isnan(v)) fputs("&ndash;", f);
-    else fprintf(f, fmt, v);
-}
 
 static void html_stats_row(FILE *f, const char *label, const image_diff_stats *d, uint64_t total, const char *result)
 {

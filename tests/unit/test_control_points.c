@@ -64,9 +64,9 @@ TEST(csv_local_columns_any_order_without_id)
 TEST(imgraft_text)
 {
     const char *path = write_file("gcp.txt", "% X,Y,Z    U,V\n"
-                                             "    445562 7395662 596.4 1951+9 1490+4 \n"
+                                             "    445562 7395662 596.4 1951+9 1490+4 % first, with a comma\n"
                                              "445359.2\t7396092.5 519.2  3851 1889 % a comment\n"
-                                             "1 2 3 100-0.5+2 7e1\n");
+                                             "1 2 3 100-0.5+2 7e1 % X, Y, Z, U, V\n");
     err_buf err = {{0}};
     control_points *cp = control_points_read(path, NULL, &err);
     if (!cp) fprintf(stderr, "%s\n", err.msg);

@@ -324,6 +324,8 @@ camera_match *camera_match_solve(const camera_model *start, unsigned free, const
         err_nomem(err, "out of memory matching the camera");
         return NULL;
     }
+    /* GSL's default error handler aborts; its failures are reported here instead (restored on
+     * return; the solve runs on one thread) */
     gsl_error_handler_t *handler = gsl_set_error_handler_off();
     gsl_multifit_nlinear_parameters params = gsl_multifit_nlinear_default_parameters();
     params.trs = gsl_multifit_nlinear_trs_lm;

@@ -262,7 +262,10 @@ static int read_lines(reader *R, char *text, size_t len)
         if (skipped(cur)) continue;
         if (R->cp->n >= CONTROL_POINTS_MAX)
             return located(R, line, 1, "more than %u control points", CONTROL_POINTS_MAX);
-        if (!format) format = strchr(cur, ',') ? 1 : 2;
+        if (!format) { /* a comma before any '%' comment makes it CSV */
+            const char *comment = strchr(cur, '%');
+            format = memchr(cur, ',', comment ? (size_t)(comment - cur) : strlen(cur)) ? 1 : 2;
+        }
         if (format == 2) {
             char *comment = strchr(cur, '%');
             if (comment) *comment = 0;

@@ -7,6 +7,7 @@
 #include "harness.h"
 #include "work_dir.h"
 #include "montage/control_points.h"
+#include "util/rng.h"
 
 #define ENGABREEN SYLVA_SHARED_DATA_DIR "/photos/imgraft-engabreen/gcp8902.txt"
 
@@ -141,6 +142,41 @@ TEST(nul_byte_refused)
     CHECK_STR_CONTAINS(err.msg, "nul.txt:1:1: the file holds a NUL byte");
 }
 
+TEST(random_text_read_or_refused)
+{
+    /* texts of the characters the formats use, in random order: each is read or refused with a
+     * located message, never a crash (the ASan build checks the memory) */
+    static const char alphabet[] = "0123456789+-.,% \t\n\re#\"xyzuvid";
+    char text[400];
+    int read = 0;
+    for (int t = 0; t < 2000; t++) {
+        sylva_rng r;
+        rng_stream(&r, 15, "control point text", (uint64_t)t);
+        if (t % 2) { /* random characters */
+            size_t len = 1 + (size_t)(rng_next_double(&r) * (sizeof text - 1));
+            for (size_t i = 0; i + 1 < len; i++) text[i] = alphabet[(size_t)(rng_next_double(&r) * (sizeof alphabet - 1))];
+            text[len - 1] = 0;
+        } else { /* a valid file with a few characters changed */
+            snprintf(text, sizeof text, "%s", t % 4 ? "% X Y Z U V\n1 2 3 4+1 5\n6.5 7 8e2 9 10-2\n"
+                                                    : "id,u,v,x,y,z\na,1,2,3,4,5\nb,6,7,8,9,10\n");
+            size_t len = strlen(text);
+            for (int k = (int)(rng_next_double(&r) * 3); k > 0; k--)
+                text[(size_t)(rng_next_double(&r) * len)] = alphabet[(size_t)(rng_next_double(&r) * (sizeof alphabet - 1))];
+        }
+        const char *path = write_file("random.txt", text);
+        err_buf err = {{0}};
+        control_points *cp = control_points_read(path, "random.txt", &err);
+        if (cp) {
+            read++;
+            for (uint32_t i = 0; i < cp->n; i++) CHECK(isfinite(cp->points[i].pixel[0]) && cp->points[i].id);
+        } else {
+            CHECK(!strncmp(err.msg, "random.txt:", 11));
+        }
+        control_points_free(cp);
+    }
+    fprintf(stderr, "%d of 2000 random texts read\n", read);
+}
+
 TEST(engabreen_survey)
 {
     struct stat st;
@@ -166,5 +202,5 @@ TEST(engabreen_survey)
 }
 
 TEST_LIST(TEST_CASE(csv_map_columns), TEST_CASE(csv_local_columns_any_order_without_id), TEST_CASE(imgraft_text),
-          TEST_CASE(malformed_files_refused_where_they_are_wrong), TEST_CASE(nul_byte_refused),
+          TEST_CASE(malformed_files_refused_where_they_are_wrong), TEST_CASE(nul_byte_refused), TEST_CASE(random_text_read_or_refused),
           TEST_CASE(engabreen_survey))

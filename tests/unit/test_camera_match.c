@@ -250,7 +250,7 @@ TEST(degenerate_points_refused)
 }
 
 /* The Engabreen survey (ImGRAFT's demo data): the camera fixed at its surveyed position, the
- * view, focal length and distortion fitted. */
+ * view, focal length and distortion k1 fitted. */
 TEST(engabreen_survey)
 {
     struct stat st;
@@ -265,17 +265,18 @@ TEST(engabreen_survey)
     camera_model_set_focal_mm(&start, 30.0, 22.0); /* EXIF focal length, Canon APS-C sensor */
     camera_match_aim(&start, cp->points, cp->n, origin); /* the photograph has no direction */
     CHECK(angle_diff(start.heading_deg, 230.8) < 2.0);
-    unsigned free = CAMERA_FREE_ANGLES | CAMERA_FREE(CAMERA_FOCAL) | CAMERA_FREE(CAMERA_K1) | CAMERA_FREE(CAMERA_K2);
+    /* k1 alone: k2 as well lowers the RMSE by 0.002 px and comes out at a quarter of its 1-sigma */
+    unsigned free = CAMERA_FREE_ANGLES | CAMERA_FREE(CAMERA_FOCAL) | CAMERA_FREE(CAMERA_K1);
     camera_match *m = camera_match_solve(&start, free, cp->points, cp->n, origin, &err);
     if (!m) fprintf(stderr, "%s\n", err.msg);
     CHECK(m != NULL);
     if (m) {
         fprintf(stderr, "Engabreen: heading %.3f +- %.3f, pitch %.3f +- %.3f, roll %.3f +- %.3f deg, focal %.1f +- %.1f px "
-                        "(%.2f mm), k1 %.4f +- %.4f, k2 %.4f +- %.4f, RMSE %.2f px, %u iterations\n",
+                        "(%.2f mm), k1 %.4f +- %.4f, RMSE %.3f px, %u iterations\n",
                 m->value[CAMERA_HEADING], m->sigma[CAMERA_HEADING], m->value[CAMERA_PITCH], m->sigma[CAMERA_PITCH],
                 m->value[CAMERA_ROLL], m->sigma[CAMERA_ROLL], m->value[CAMERA_FOCAL], m->sigma[CAMERA_FOCAL],
-                camera_model_focal_mm(&m->camera, 22.0), m->value[CAMERA_K1], m->sigma[CAMERA_K1], m->value[CAMERA_K2],
-                m->sigma[CAMERA_K2], m->rmse_px, m->iterations);
+                camera_model_focal_mm(&m->camera, 22.0), m->value[CAMERA_K1], m->sigma[CAMERA_K1], m->rmse_px,
+                m->iterations);
         fprintf(stderr, "| point | u | v | du | dv |\n|---|---|---|---|---|\n");
         for (uint32_t i = 0; i < cp->n; i++)
             fprintf(stderr, "| %s | %.1f | %.1f | %.2f | %.2f |\n", cp->points[i].id, cp->points[i].pixel[0],

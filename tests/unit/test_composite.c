@@ -2,7 +2,8 @@
  * rendered whole equals, within noise, the scene without its development rendered with other
  * samples (the "photograph") with the development composited in; without the shadow catcher or
  * without the holdouts it does not. The same bytes for any thread count; the guards of the
- * ratio; the outputs' encodings. */
+ * ratio; the outputs' encodings. With SYLVA_TEST_KEEP=DIR the first test leaves its images
+ * there as PNGs to look at (docs/figures/composite_test.png). */
 #include <stdint.h>
 
 #include "scene_text.h"
@@ -10,9 +11,9 @@
 #include "montage/composite.h"
 #include "render/accel.h"
 
-/* A flat meadow seen from the south; a 6 x 4 x 5 m pale box (the development) 12 m north of the
- * camera's aim, lit from the west-south-west so that its shadow falls east on the ground in view;
- * three trees (trunk and crown) stand before it and hide part of it. */
+/* A flat meadow seen from the south; an 8 x 5 x 7 m pale box (the development) lit from the
+ * north-north-west, so that its shadow falls toward the camera; four trees (trunk and crown, one
+ * taller) stand before it and hide much of it. */
 static const char *scene_yaml =
     "image: {width: 160, height: 100, spp: 64, seed: 11, max_depth: 3}\n"
     "camera: {position: [3, -12, 6.5], look_at: [4, 8, 1], fov: 62}\n"
@@ -125,6 +126,16 @@ TEST(matches_whole_render)
                     "without holdouts %.5f, the plate alone %.5f; plate against R_bg (noise) %.5f\n",
             e, e_flat, e_pasted, e_plate, e_noise);
     CHECK(e <= 0.005);
+    /* where no path meets the development, the plate passes through to the bit */
+    uint32_t untouched = 0, changed = 0;
+    for (size_t i = 0; i < n; i++)
+        if (!memcmp(r.full->rgb + 3 * i, r.background->rgb + 3 * i, 3 * sizeof(float))) {
+            untouched++;
+            changed += memcmp(montage + 3 * i, plate->rgb + 3 * i, 3 * sizeof(float)) != 0;
+        }
+    fprintf(stderr, "%u of %zu pixels untouched by the development\n", untouched, n);
+    CHECK(untouched > n / 5);
+    CHECK_INT(changed, 0);
     CHECK(e_flat > 0.005);
     CHECK(e_pasted > 0.005);
 
@@ -206,6 +217,33 @@ TEST(leave_out_is_the_scene_without)
     }
     scene_free(s);
     scene_free(b);
+}
+
+/* The verification mode (POV-Ray's shading) gives the development's radiance too: the whole
+ * pixel's where the development covers it, none where it is absent, between 0 and it at edges. */
+TEST(verify_mode_layers)
+{
+    scene *s = scene_text_build_ok(scene_yaml);
+    if (!s) return;
+    render_options ro = {.threads = 2, .quiet = 1, .verify = 1, .width = 80, .height = 50, .spp = 9};
+    err_buf err = {{0}};
+    film *f = render_scene(s, &ro, NULL, &err);
+    CHECK(f != NULL);
+    if (f) {
+        uint32_t covered = 0, partial = 0, bad = 0;
+        for (size_t i = 0; i < (size_t)f->width * f->height; i++) {
+            float a = f->development[i];
+            covered += a == 1.0f, partial += a > 0.0f && a < 1.0f;
+            for (int c = 0; c < 3; c++) {
+                float d = f->development_rgb[3 * i + c], v = f->rgb[3 * i + c];
+                bad += (a == 1.0f && d != v) || (a == 0.0f && d != 0.0f) || (a > 0.0f && !(d > 0.0f && d <= v));
+            }
+        }
+        CHECK(covered > 20 && partial > 10);
+        CHECK_INT(bad, 0);
+    }
+    film_free(f);
+    scene_free(s);
 }
 
 /* The renders and the montage are the same bytes on one thread and on two. */
@@ -329,6 +367,6 @@ TEST(outputs_round_trip)
     image_free(&a), image_free(&b), image_free(&c);
 }
 
-TEST_LIST(TEST_CASE(matches_whole_render), TEST_CASE(leave_out_is_the_scene_without),
+TEST_LIST(TEST_CASE(matches_whole_render), TEST_CASE(leave_out_is_the_scene_without), TEST_CASE(verify_mode_layers),
           TEST_CASE(same_bytes_any_thread_count), TEST_CASE(formula_and_guards), TEST_CASE(no_development_refused),
           TEST_CASE(outputs_round_trip))

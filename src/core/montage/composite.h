@@ -14,8 +14,9 @@
  * plants in front of it hide it (holdouts); R_full - D is the rest of the scene as the
  * development changes it (its shadows, the light it reflects), and S its ratio to the scene
  * without it: 1 where the development changes nothing, below 1 in its shadow. The plate is
- * darkened (or brightened) by that ratio, never painted over. Because both renders share their
- * samples, S carries little of their noise.
+ * darkened (or brightened) by that ratio, never painted over. Both renders take the same
+ * samples, so wherever no path of a pixel meets the development R_full - D and R_bg are the same
+ * numbers, S is exactly 1 and the plate passes through unchanged.
  *
  * Guards: S is 1 where (1 - alpha) R_bg is below COMPOSITE_DARK times the mean of R_bg over the
  * frame (no background light to take a ratio of; the pixel wholly development, or black in the

@@ -333,6 +333,25 @@ TEST(no_development_refused)
     scene_free(s);
 }
 
+/* Two frames that fit the memory budget one by one but not together are refused before any
+ * build, with the size to lower. */
+TEST(two_frames_beyond_memory)
+{
+    scene *s = scene_text_build_ok(scene_yaml);
+    if (!s) return;
+    setenv("SYLVA_MEMORY_LIMIT", "100M", 1);
+    composite_renders r;
+    render_options ro = {.threads = 1, .quiet = 1, .width = 1000, .height = 1000, .spp = 1};
+    err_buf err = {{0}};
+    CHECK_INT(film_check(1000, 1000, 1, &err), 0); /* one frame fits */
+    CHECK_INT(composite_render(s, &ro, &r, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "a montage's pair of 1000x1000 frames needs about 175 MiB");
+    CHECK_STR_CONTAINS(err.msg, "; lower the image size");
+    CHECK(r.full == NULL);
+    unsetenv("SYLVA_MEMORY_LIMIT");
+    scene_free(s);
+}
+
 /* The 8-bit output encodes with the sRGB transfer function only: every byte of a photograph,
  * decoded as the plate is, comes back as itself; the mask is the coverage times 255. */
 TEST(outputs_round_trip)
@@ -368,5 +387,5 @@ TEST(outputs_round_trip)
 }
 
 TEST_LIST(TEST_CASE(matches_whole_render), TEST_CASE(leave_out_is_the_scene_without), TEST_CASE(verify_mode_layers),
-          TEST_CASE(same_bytes_any_thread_count), TEST_CASE(formula_and_guards), TEST_CASE(no_development_refused),
+          TEST_CASE(same_bytes_any_thread_count), TEST_CASE(formula_and_guards), TEST_CASE(no_development_refused), TEST_CASE(two_frames_beyond_memory),
           TEST_CASE(outputs_round_trip))

@@ -3,10 +3,13 @@
 #include "montage/composite.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "io/exr_write.h"
 #include "render/accel.h"
+#include "util/memory_budget.h"
 
 int composite_render(const scene *s, const render_options *opt, composite_renders *out, err_buf *err)
 {
@@ -16,6 +19,14 @@ int composite_render(const scene *s, const render_options *opt, composite_render
     if (!dev)
         return err_set(err, "the scene has no development to composite: mark its objects `development: true` "
                        "(or give them a development_name)");
+    uint32_t w = opt->width ? opt->width : s->image.width, h = opt->height ? opt->height : s->image.height;
+    char what[96];
+    snprintf(what, sizeof what, "a montage's pair of %ux%u frames", w, h);
+    if (memory_check(2 * (uint64_t)w * h * FILM_BYTES_PER_PIXEL, what, err)) {
+        size_t used = strlen(err->msg);
+        snprintf(err->msg + used, sizeof err->msg - used, "; lower the image size");
+        return -1;
+    }
     render_setup *rs = render_setup_new(s, opt, err);
     if (!rs) return -1;
     render_options bg = *opt;

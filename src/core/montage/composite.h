@@ -47,7 +47,8 @@ typedef struct composite_renders {
 
 /* Renders s whole and without its development (opt's size, samples, seed, mode and threads; its
  * leave_out applies to both) with one acceleration structure. Returns 0, or -1 with err set and
- * out zeroed: a scene with no object marked `development: true` is refused. */
+ * out zeroed: a scene with no object marked `development: true` is refused, and so are two
+ * frames that do not fit the memory budget together (util/memory_budget.h). */
 int composite_render(const scene *s, const render_options *opt, composite_renders *out, err_buf *err);
 void composite_renders_free(composite_renders *r); /* frees the films; accepts a zeroed one */
 

@@ -82,7 +82,8 @@ TEST(matches_whole_render)
     int rc = composite_render(s, &ro, &r, &err);
     if (rc) fprintf(stderr, "%s\n", err.msg);
     CHECK_INT(rc, 0);
-    render_options po = {.threads = 2, .quiet = 1, .seed_set = 1, .seed = 987654321, .leave_out = ACCEL_MASK_DEVELOPMENT};
+    render_options po = {.threads = 2, .quiet = 1, .seed_set = 1, .seed = 987654321,
+                         .leave_out = ACCEL_MASK_DEVELOPMENT};
     film *plate = render_scene(s, &po, NULL, &err);
     /* the development seen through no plants: what a composite without holdouts would paste */
     render_options uo = {.threads = 2, .quiet = 1, .leave_out = ACCEL_MASK_PLANT};
@@ -387,5 +388,5 @@ TEST(outputs_round_trip)
 }
 
 TEST_LIST(TEST_CASE(matches_whole_render), TEST_CASE(leave_out_is_the_scene_without), TEST_CASE(verify_mode_layers),
-          TEST_CASE(same_bytes_any_thread_count), TEST_CASE(formula_and_guards), TEST_CASE(no_development_refused), TEST_CASE(two_frames_beyond_memory),
-          TEST_CASE(outputs_round_trip))
+          TEST_CASE(same_bytes_any_thread_count), TEST_CASE(formula_and_guards), TEST_CASE(no_development_refused),
+          TEST_CASE(two_frames_beyond_memory), TEST_CASE(outputs_round_trip))

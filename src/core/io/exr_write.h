@@ -2,10 +2,10 @@
  * C API (openexr.h). Channels: R, G, B (linear, HALF or FLOAT), Z (depth, FLOAT), N.X N.Y N.Z
  * (world normal), albedo.R albedo.G albedo.B, id.instance, id.species and id.object (UINT),
  * development.A (the development's coverage, FLOAT 0..1), development.R, development.G,
- * development.B (its radiance premultiplied by that coverage, FLOAT); the site's CRS and origin as header
- * attributes when the scene has a site. Any layer
- * pointer may be NULL and is then left out. The file is written under a temporary name in the
- * same folder and renamed into place, so a failure never leaves a partial file at `path`. */
+ * development.B (its radiance premultiplied by that coverage, FLOAT); the site's CRS and origin
+ * as header attributes when the scene has a site. Any layer pointer may be NULL and is then left
+ * out. The file is written under a temporary name in the same folder and renamed into place, so
+ * a failure never leaves a partial file at `path`. */
 #ifndef SYLVA_EXR_WRITE_H
 #define SYLVA_EXR_WRITE_H
 

@@ -43,6 +43,7 @@ int composite_render(const scene *s, const render_options *opt, composite_render
 
 void composite_renders_free(composite_renders *r)
 {
+    if (!r) return;
     film_free(r->full);
     film_free(r->background);
     *r = (composite_renders){0};

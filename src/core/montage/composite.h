@@ -50,7 +50,7 @@ typedef struct composite_renders {
  * out zeroed: a scene with no object marked `development: true` is refused, and so are two
  * frames that do not fit the memory budget together (util/memory_budget.h). */
 int composite_render(const scene *s, const render_options *opt, composite_renders *out, err_buf *err);
-void composite_renders_free(composite_renders *r); /* frees the films; accepts a zeroed one */
+void composite_renders_free(composite_renders *r); /* frees the films; accepts NULL and a zeroed one */
 
 /* The per-pixel layers the formula reads (borrowed), 3 floats per pixel but alpha (1). */
 typedef struct composite_layers {

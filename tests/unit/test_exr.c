@@ -31,7 +31,7 @@ static int count_entries(const char *dir)
 typedef struct test_layers {
     float rgb[3 * N], depth[N], normal[3 * N], albedo[3 * N];
     uint32_t instance[N], species[N], object[N];
-    float development[N];
+    float development[N], development_rgb[3 * N];
 } test_layers;
 
 static void fill_layers(test_layers *l)
@@ -43,6 +43,7 @@ static void fill_layers(test_layers *l)
                 l->rgb[3 * i + c] = 0.013f * (float)i + 0.31f * (float)c + 0.007f;
                 l->normal[3 * i + c] = (c == 2 ? 0.8f : -0.6f) + 0.001f * (float)(i + c);
                 l->albedo[3 * i + c] = 0.05f + 0.02f * (float)c + 0.0037f * (float)i;
+                l->development_rgb[3 * i + c] = 0.011f * (float)i + 0.23f * (float)c + 0.003f;
             }
             /* the top row and the right column see the sky */
             l->depth[i] = (y == 0 || x == W - 1) ? INFINITY : 10.25f + 3.5f * (float)i;
@@ -99,7 +100,8 @@ static void round_trip(int rgb_half)
     fill_layers(&l);
     exr_frame f = {.width = W, .height = H, .rgb = l.rgb, .depth = l.depth, .normal = l.normal,
                    .albedo = l.albedo, .instance_id = l.instance, .species_id = l.species,
-                   .object_id = l.object, .development = l.development, .rgb_half = rgb_half};
+                   .object_id = l.object, .development = l.development,
+                   .development_rgb = l.development_rgb, .rgb_half = rgb_half};
     const char *path = work_path(rgb_half ? "half.exr" : "float.exr");
     err_buf err = {{0}};
     int rc = exr_write(path, &f, &err);
@@ -117,10 +119,11 @@ static void round_trip(int rgb_half)
     }
     CHECK_INT(img.width, W);
     CHECK_INT(img.height, H);
-    CHECK_INT(img.channels, 14);
+    CHECK_INT(img.channels, 17);
     static const char *const names[] = {"R", "G", "B", "Z", "N.X", "N.Y", "N.Z", "albedo.R",
                                         "albedo.G", "albedo.B", "id.instance", "id.species",
-                                        "id.object", "development.A"};
+                                        "id.object", "development.A", "development.R",
+                                        "development.G", "development.B"};
     for (size_t k = 0; k < sizeof names / sizeof names[0]; k++)
         CHECK(channel_index(&img, names[k]) >= 0);
 
@@ -138,6 +141,9 @@ static void round_trip(int rgb_half)
     check_id_channel(&img, "id.species", l.species);
     check_id_channel(&img, "id.object", l.object);
     check_float_channel(&img, "development.A", l.development, 1, 0);
+    check_float_channel(&img, "development.R", l.development_rgb + 0, 3, 0);
+    check_float_channel(&img, "development.G", l.development_rgb + 1, 3, 0);
+    check_float_channel(&img, "development.B", l.development_rgb + 2, 3, 0);
 
     int r = channel_index(&img, "R"), g = channel_index(&img, "G"), z = channel_index(&img, "Z");
     if (r >= 0 && g >= 0 && z >= 0) {

@@ -229,7 +229,7 @@ TEST(film_refuses_what_cannot_be_rendered)
                                 "camera samples, more than the 1e+13");
     setenv("SYLVA_MEMORY_LIMIT", "100M", 1);
     CHECK_INT(film_check(4096, 4096, 1, &err), -1);
-    CHECK_STR_CONTAINS(err.msg, "a 4096x4096 frame needs about 1.2 GiB of memory, more than the "
+    CHECK_STR_CONTAINS(err.msg, "a 4096x4096 frame needs about 1.4 GiB of memory, more than the "
                                 "100 MiB SYLVA_MEMORY_LIMIT allows; lower the image size");
     CHECK(film_new(4096, 4096, &err) == NULL);
     CHECK_STR_CONTAINS(err.msg, "a 4096x4096 frame needs");

@@ -19,7 +19,7 @@
 #include "io/half_float.h"
 
 /* EXR_MAX_SIDE keeps a scanline's byte stride (12 bytes per pixel at most) within int32. */
-enum { EXR_MAX_CHANNELS = 15, EXR_MAX_SIDE = 1 << 24 };
+enum { EXR_MAX_CHANNELS = 18, EXR_MAX_SIDE = 1 << 24 };
 
 /* The OpenEXR context's user data: where the bytes go and where the first error is told. */
 typedef struct exr_stream {
@@ -85,6 +85,7 @@ static int exr_frame_channels(const exr_frame *f, exr_channel_src *ch)
     static const char *const rgb_names[3] = {"R", "G", "B"};
     static const char *const normal_names[3] = {"N.X", "N.Y", "N.Z"};
     static const char *const albedo_names[3] = {"albedo.R", "albedo.G", "albedo.B"};
+    static const char *const development_names[3] = {"development.R", "development.G", "development.B"};
     int n = 0;
     for (int c = 0; c < 3 && f->rgb; c++) {
         ch[n++] = (exr_channel_src){rgb_names[c],
@@ -116,6 +117,9 @@ static int exr_frame_channels(const exr_frame *f, exr_channel_src *ch)
     if (f->development)
         ch[n++] = (exr_channel_src){"development.A", EXR_PIXEL_FLOAT, EXR_PERCEPTUALLY_LINEAR,
                                     (const uint8_t *)f->development, sizeof(float), -1};
+    for (int c = 0; c < 3 && f->development_rgb; c++)
+        ch[n++] = (exr_channel_src){development_names[c], EXR_PIXEL_FLOAT, EXR_PERCEPTUALLY_LINEAR,
+                                    (const uint8_t *)(f->development_rgb + c), 3 * sizeof(float), -1};
     return n;
 }
 
@@ -230,7 +234,7 @@ int exr_write(const char *path, const exr_frame *f, err_buf *err)
     int n_ch = exr_frame_channels(f, ch);
     if (n_ch == 0)
         return err_set(err, "%s: the frame has no layers; give at least one of rgb, depth, "
-                       "normal, albedo, instance_id, species_id, object_id, development", path);
+                       "normal, albedo, instance_id, species_id, object_id, development, development_rgb", path);
 
     atomic_file out;
     if (atomic_file_open(&out, path, err)) return -1;

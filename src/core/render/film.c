@@ -48,11 +48,12 @@ film *film_new(uint32_t w, uint32_t h, err_buf *err)
         f->species_id = calloc(n, sizeof(uint32_t));
         f->object_id = calloc(n, sizeof(uint32_t));
         f->development = calloc(n, sizeof(float));
+        f->development_rgb = calloc(n * 3, sizeof(float));
         f->pixel_class = calloc(n, 1);
         f->coverage = calloc(n, sizeof(float));
     }
     if (!f || !f->rgb || !f->depth || !f->normal || !f->albedo || !f->instance_id || !f->species_id ||
-        !f->object_id || !f->development ||
+        !f->object_id || !f->development || !f->development_rgb ||
         !f->pixel_class || !f->coverage) {
         film_free(f);
         err_nomem(err, "out of memory for a %ux%u frame", w, h);
@@ -65,7 +66,7 @@ void film_free(film *f)
 {
     if (!f) return;
     free(f->rgb), free(f->depth), free(f->normal), free(f->albedo), free(f->instance_id), free(f->species_id);
-    free(f->object_id), free(f->development), free(f->pixel_class), free(f->coverage);
+    free(f->object_id), free(f->development), free(f->development_rgb), free(f->pixel_class), free(f->coverage);
     free(f);
 }
 
@@ -92,7 +93,8 @@ int film_write_exr(const film *f, const site_settings *site, const char *path, e
 {
     exr_frame fr = {.width = f->width, .height = f->height, .rgb = f->rgb, .depth = f->depth, .normal = f->normal,
                     .albedo = f->albedo, .instance_id = f->instance_id, .species_id = f->species_id,
-                    .object_id = f->object_id, .development = f->development, .rgb_half = 0};
+                    .object_id = f->object_id, .development = f->development, .development_rgb = f->development_rgb,
+                    .rgb_half = 0};
     if (site && site->crs_wkt) {
         fr.crs_wkt = site->crs_wkt, fr.crs_name = site->crs_name;
         for (int k = 0; k < 3; k++) fr.origin[k] = site->origin[k];

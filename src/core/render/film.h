@@ -8,8 +8,10 @@
  * values.
  *
  * The class and coverage layers serve comparisons (the POV-Ray cross-check); they are not
- * written to the EXR. The development layer is: the antialiased coverage of the objects marked
- * as the development, for compositing them over a photograph.
+ * written to the EXR. The development layers are: the antialiased coverage of the objects marked
+ * as the development (alpha) and their radiance premultiplied by it (the camera samples whose
+ * first hit lies on the development, summed and divided by all samples), for compositing them
+ * over a photograph (montage/composite.h).
  *
  * Ownership: film_new allocates all layers; film_free releases them. */
 #ifndef SYLVA_FILM_H
@@ -37,13 +39,14 @@ typedef struct film {
     uint32_t *species_id;  /* 1 per pixel */
     uint32_t *object_id;   /* 1 per pixel: object index + 1, 0 for none */
     float *development;    /* 1 per pixel: share of the camera samples that hit the development */
+    float *development_rgb; /* 3 per pixel: radiance of those samples over all samples (part of rgb) */
     uint8_t *pixel_class;  /* 1 per pixel: a pixel_class */
     float *coverage;       /* 1 per pixel: share of the camera samples that hit a surface */
 } film;
 
 /* Bytes a frame needs per pixel: the layers above, the 8-bit copy for PNG and the EXR writer's
  * half-float and line buffers (estimated from above). */
-#define FILM_BYTES_PER_PIXEL 80u
+#define FILM_BYTES_PER_PIXEL 92u
 /* Camera samples (width x height x spp) beyond which a render is refused as absurd work: 1e13
  * samples are weeks of tracing on a workstation. */
 #define FILM_MAX_SAMPLES 1e13

@@ -17,12 +17,12 @@ static inline float power_heuristic(float a, float b)
     return a2 + b2 > 0.0f ? a2 / (a2 + b2) : 0.0f;
 }
 
-static void ray_init(struct RTCRayHit *rh, vec3 o, vec3 d, float tnear, float tfar)
+static void ray_init(struct RTCRayHit *rh, vec3 o, vec3 d, float tnear, float tfar, unsigned mask)
 {
     rh->ray.org_x = o.x, rh->ray.org_y = o.y, rh->ray.org_z = o.z;
     rh->ray.dir_x = d.x, rh->ray.dir_y = d.y, rh->ray.dir_z = d.z;
     rh->ray.tnear = tnear, rh->ray.tfar = tfar;
-    rh->ray.time = 0.0f, rh->ray.mask = 0xffffffffu, rh->ray.id = 0, rh->ray.flags = 0;
+    rh->ray.time = 0.0f, rh->ray.mask = mask, rh->ray.id = 0, rh->ray.flags = 0;
     rh->hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh->hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
 }
@@ -52,12 +52,12 @@ static int trace_camera(const render_ctx *ctx, vec3 d, struct RTCRayHit *rh, flo
     double t0, dt;
     while (curved_path_next(&p, &org, &dir, &len, &t0, &dt)) {
         /* Chords overlap by a hundred-thousandth so that no hit falls between two of them. */
-        ray_init(rh, org, dir, 0.0f, isinf(len) ? INFINITY : len * (1.0f + 1e-5f));
+        ray_init(rh, org, dir, 0.0f, isinf(len) ? INFINITY : len * (1.0f + 1e-5f), ctx->ray_mask);
         if (!trace(ctx, rh)) continue;
         if (t) *t = isinf(len) ? rh->ray.tfar : (float)(t0 + rh->ray.tfar / len * dt);
         return 1;
     }
-    ray_init(rh, ctx->camera.origin, d, 0.0f, INFINITY);
+    ray_init(rh, ctx->camera.origin, d, 0.0f, INFINITY, ctx->ray_mask);
     return 0;
 }
 
@@ -69,7 +69,7 @@ static int visible(const render_ctx *ctx, vec3 o, vec3 d, float far)
     struct RTCIntersectContext ic;
     rtcInitIntersectContext(&ic);
     struct RTCRay r = {.org_x = o.x, .org_y = o.y, .org_z = o.z, .tnear = 0.0f, .dir_x = d.x, .dir_y = d.y,
-                       .dir_z = d.z, .time = 0.0f, .tfar = far, .mask = 0xffffffffu, .id = 0, .flags = 0};
+                       .dir_z = d.z, .time = 0.0f, .tfar = far, .mask = ctx->ray_mask, .id = 0, .flags = 0};
     rtcOccluded1(a->top, &ic, &r);
     return r.tfar >= 0.0f;
 }
@@ -107,7 +107,7 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
             found = trace_camera(ctx, d, &rh, NULL);
             *hit = found ? 1 + on_development(a, &rh) : 0;
         } else {
-            ray_init(&rh, o, d, 0.0f, INFINITY);
+            ray_init(&rh, o, d, 0.0f, INFINITY, ctx->ray_mask);
             found = trace(ctx, &rh);
         }
         if (!found) {
@@ -187,10 +187,10 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
 
 /* The verification samples of pixel (x, y): the centre, then (grid > 1) a grid x grid grid;
  * camera rays go to Embree as coherent streams, then the shadow rays of the hits the sun can
- * light. Sets *rgb to the samples' mean, *coverage to the share that hit a surface and
- * *development to the share that hit the development. */
-static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t grid, vec3 *rgb, float *coverage,
-                         float *development)
+ * light. Sets out's rgb to the samples' mean, coverage to the share that hit a surface,
+ * development to the share that hit the development and development_rgb to those samples'
+ * radiance over all samples. */
+static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t grid, pixel_result *out)
 {
     const accel *a = ctx->accel;
     const light_summary *l = &ctx->lights->summary;
@@ -201,7 +201,8 @@ static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t
     float cosine[VERIFY_STREAM]; /* n.l where the sun may light the hit, else 0 */
     uint32_t owner[VERIFY_STREAM], hits = 0, dev_hits = 0;
     struct RTCIntersectContext ic;
-    vec3 sum = v3(0, 0, 0);
+    uint8_t on_dev[VERIFY_STREAM];
+    vec3 sum = v3(0, 0, 0), dev_sum = v3(0, 0, 0);
     for (uint32_t s0 = 0; s0 < n; s0 += VERIFY_STREAM) {
         uint32_t m = n - s0 < VERIFY_STREAM ? n - s0 : VERIFY_STREAM, k = 0;
         for (uint32_t i = 0; i < m; i++) {
@@ -212,7 +213,7 @@ static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t
                 trace_camera(ctx, d, &rh[i], NULL); /* chord by chord, one ray at a time */
                 continue;
             }
-            ray_init(&rh[i], ctx->camera.origin, d, 0.0f, INFINITY);
+            ray_init(&rh[i], ctx->camera.origin, d, 0.0f, INFINITY, ctx->ray_mask);
             if (ctx->recorder) ctx->recorder->record(ctx->recorder->user, ctx->camera.origin, d, INFINITY, 0);
         }
         if (!ctx->curved.on) {
@@ -222,9 +223,11 @@ static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t
         }
         for (uint32_t i = 0; i < m; i++) {
             cosine[i] = 0.0f;
+            on_dev[i] = 0;
             if (rh[i].hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
             hits++;
-            dev_hits += (uint32_t)on_development(a, &rh[i]);
+            on_dev[i] = (uint8_t)on_development(a, &rh[i]);
+            dev_hits += on_dev[i];
             hit_info h;
             accel_shade(a, &rh[i], &h);
             vec3 wo = v3(-rh[i].ray.dir_x, -rh[i].ray.dir_y, -rh[i].ray.dir_z);
@@ -236,7 +239,7 @@ static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t
             vec3 o = offset_point(h.p, ng, l->sun_dir);
             shadow[k] = (struct RTCRay){.org_x = o.x, .org_y = o.y, .org_z = o.z, .tnear = 0.0f, .dir_x = l->sun_dir.x,
                                         .dir_y = l->sun_dir.y, .dir_z = l->sun_dir.z, .time = 0.0f, .tfar = INFINITY,
-                                        .mask = 0xffffffffu, .id = 0, .flags = 0};
+                                        .mask = ctx->ray_mask, .id = 0, .flags = 0};
             if (ctx->recorder) ctx->recorder->record(ctx->recorder->user, o, l->sun_dir, INFINITY, 1);
             cosine[i] = c;
             owner[k++] = i;
@@ -253,12 +256,15 @@ static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t
             if (rh[i].hit.geomID != RTC_INVALID_GEOMETRY_ID)
                 L = v3_mul(albedo[i], cosine[i] > 0.0f ? v3_add(l->ambient, v3_scale(l->sun_irradiance, cosine[i]))
                                                        : l->ambient);
-            if (isfinite(L.x) && isfinite(L.y) && isfinite(L.z)) sum = v3_add(sum, L);
+            if (!(isfinite(L.x) && isfinite(L.y) && isfinite(L.z))) continue;
+            sum = v3_add(sum, L);
+            if (on_dev[i]) dev_sum = v3_add(dev_sum, L);
         }
     }
-    *rgb = v3_scale(sum, 1.0f / (float)n);
-    *coverage = (float)hits / (float)n;
-    *development = (float)dev_hits / (float)n;
+    out->rgb = v3_scale(sum, 1.0f / (float)n);
+    out->coverage = (float)hits / (float)n;
+    out->development = (float)dev_hits / (float)n;
+    out->development_rgb = v3_scale(dev_sum, 1.0f / (float)n);
 }
 
 static void aux_layers(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_result *out)
@@ -296,12 +302,12 @@ void integrate_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_result
     if (ctx->verify) {
         uint32_t grid = 1; /* spp rounded down to a square */
         while ((grid + 1) * (grid + 1) <= ctx->spp) grid++;
-        verify_pixel(ctx, x, y, grid, &out->rgb, &out->coverage, &out->development);
+        verify_pixel(ctx, x, y, grid, out);
         aux_layers(ctx, x, y, out);
         return;
     }
     uint64_t pixel = (uint64_t)y * ctx->camera.width + x;
-    vec3 sum = v3(0, 0, 0);
+    vec3 sum = v3(0, 0, 0), dev_sum = v3(0, 0, 0);
     uint32_t n = ctx->spp, hits = 0, dev_hits = 0;
     for (uint32_t s = 0; s < n; s++) {
         sampler smp;
@@ -313,9 +319,11 @@ void integrate_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_result
         sum = v3_add(sum, L);
         hits += hit != 0;
         dev_hits += hit == 2;
+        if (hit == 2) dev_sum = v3_add(dev_sum, L);
     }
     out->rgb = v3_scale(sum, 1.0f / (float)n);
     out->coverage = (float)hits / (float)n;
     out->development = (float)dev_hits / (float)n;
+    out->development_rgb = v3_scale(dev_sum, 1.0f / (float)n);
     aux_layers(ctx, x, y, out);
 }

@@ -13,8 +13,13 @@
  * regular R x R grid of rays at sub-pixel offsets (i + 0.5) / R - 0.5.
  *
  * Auxiliary layers (depth, normal, albedo, ids, class) come from one ray through the pixel
- * centre; coverage is the share of the camera samples whose first ray hit a surface, and
- * development the share whose first ray hit an object marked as part of the development.
+ * centre; coverage is the share of the camera samples whose first ray hit a surface,
+ * development the share whose first ray hit an object marked as part of the development, and
+ * development_rgb those samples' radiance summed and divided by all samples (the part of rgb the
+ * development's own surfaces send to the camera).
+ *
+ * Every ray (camera, bounce, shadow) carries ctx->ray_mask: geometry whose Embree mask
+ * (ACCEL_MASK_*) shares no bit with it is not in the scene for this render.
  *
  * Camera rays follow the Earth's curvature when ctx->curved is on (curved_ray.h), in both modes;
  * the rays after the first hit (shadows, bounces) are straight, and a camera ray that misses
@@ -41,6 +46,7 @@ typedef struct render_ctx {
     uint32_t spp, max_depth;
     uint64_t seed;
     int verify;
+    unsigned ray_mask;  /* the geometry rays meet (ACCEL_MASK_* bits); ~0u: all */
     const ray_recorder *recorder; /* NULL, or called for each ray (single-threaded renders only) */
 } render_ctx;
 
@@ -53,6 +59,7 @@ typedef struct pixel_result {
     uint8_t pixel_class;  /* a pixel_class (render/film.h) */
     float coverage;
     float development;
+    vec3 development_rgb;
 } pixel_result;
 
 void integrate_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_result *out);

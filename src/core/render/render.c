@@ -1,4 +1,5 @@
-/* render.c — the tile scheduler and worker threads. */
+/* render.c — the render setup (acceleration structure and lights), the tile scheduler and the
+ * worker threads. */
 #include "render/render.h"
 
 #include <pthread.h>
@@ -43,6 +44,8 @@ static void render_tile(render_job *job, uint32_t tile)
             f->species_id[k] = r.species_id;
             f->object_id[k] = r.object_id;
             f->development[k] = r.development;
+            f->development_rgb[k * 3] = r.development_rgb.x, f->development_rgb[k * 3 + 1] = r.development_rgb.y;
+            f->development_rgb[k * 3 + 2] = r.development_rgb.z;
             f->pixel_class[k] = r.pixel_class;
             f->coverage[k] = r.coverage;
         }
@@ -61,32 +64,64 @@ static void *render_worker(void *arg)
     return NULL;
 }
 
-film *render_scene(const scene *s, const render_options *opt, render_stats *stats, err_buf *err)
+struct render_setup {
+    const scene *scene;
+    accel acc;
+    lights lt;
+    double build_seconds;
+};
+
+static unsigned thread_count(const render_options *o)
 {
+    return o->recorder ? 1 : o->threads ? o->threads : render_default_threads();
+}
+
+render_setup *render_setup_new(const scene *s, const render_options *opt, err_buf *err)
+{
+    uint32_t w = opt->width ? opt->width : s->image.width, h = opt->height ? opt->height : s->image.height;
+    double t0 = progress_now();
+    if (film_check(w, h, opt->spp ? opt->spp : s->image.spp, err)) return NULL; /* before any build */
+    render_setup *rs = calloc(1, sizeof *rs);
+    if (!rs) {
+        err_nomem(err, "out of memory setting up the render");
+        return NULL;
+    }
+    rs->scene = s;
+    if (accel_build(&rs->acc, s, thread_count(opt), err)) {
+        free(rs);
+        return NULL;
+    }
+    if (lights_init(&rs->lt, &s->sun, &s->sky, err)) {
+        accel_free(&rs->acc);
+        free(rs);
+        return NULL;
+    }
+    rs->build_seconds = progress_now() - t0;
+    return rs;
+}
+
+void render_setup_free(render_setup *rs)
+{
+    if (!rs) return;
+    lights_free(&rs->lt);
+    accel_free(&rs->acc);
+    free(rs);
+}
+
+film *render_setup_run(render_setup *rs, const render_options *opt, render_stats *stats, err_buf *err)
+{
+    const scene *s = rs->scene;
     render_options o = *opt;
     uint32_t w = o.width ? o.width : s->image.width, h = o.height ? o.height : s->image.height;
-    unsigned threads = o.recorder ? 1 : o.threads ? o.threads : render_default_threads();
-    double t0 = progress_now();
-    if (film_check(w, h, o.spp ? o.spp : s->image.spp, err)) return NULL; /* before any build */
-    accel acc;
-    if (accel_build(&acc, s, threads, err)) return NULL;
+    unsigned threads = thread_count(&o);
     double t1 = progress_now();
-    lights lt;
-    if (lights_init(&lt, &s->sun, &s->sky, err)) {
-        accel_free(&acc);
-        return NULL;
-    }
     film *f = film_new(w, h, err);
-    if (!f) {
-        lights_free(&lt);
-        accel_free(&acc);
-        return NULL;
-    }
-    render_ctx ctx = {.accel = &acc, .lights = &lt, .spp = o.spp ? o.spp : s->image.spp,
+    if (!f) return NULL;
+    render_ctx ctx = {.accel = &rs->acc, .lights = &rs->lt, .spp = o.spp ? o.spp : s->image.spp,
                       .max_depth = s->image.max_depth, .seed = o.seed_set ? o.seed : s->image.seed, .verify = o.verify,
-                      .recorder = o.recorder};
+                      .recorder = o.recorder, .ray_mask = ~o.leave_out};
     camera_init(&ctx.camera, &s->camera, w, h);
-    curved_rays_init(&ctx.curved, o.flat_earth ? NULL : &s->earth, &ctx.camera, acc.bounds_lo, acc.bounds_hi);
+    curved_rays_init(&ctx.curved, o.flat_earth ? NULL : &s->earth, &ctx.camera, rs->acc.bounds_lo, rs->acc.bounds_hi);
     render_job job = {.ctx = &ctx, .film = f, .tiles_x = (w + TILE - 1) / TILE, .tiles_y = (h + TILE - 1) / TILE};
     atomic_init(&job.next_tile, 0);
     progress prog;
@@ -103,15 +138,22 @@ film *render_scene(const scene *s, const render_options *opt, render_stats *stat
     progress_end(&prog);
     double t2 = progress_now();
     if (stats) {
-        stats->build_seconds = t1 - t0;
+        stats->build_seconds = rs->build_seconds;
         stats->render_seconds = t2 - t1;
         stats->samples = (uint64_t)w * h * ctx.spp;
     }
-    if (accel_device_error(&acc, err)) {
+    if (accel_device_error(&rs->acc, err)) {
         film_free(f);
         f = NULL;
     }
-    lights_free(&lt);
-    accel_free(&acc);
+    return f;
+}
+
+film *render_scene(const scene *s, const render_options *opt, render_stats *stats, err_buf *err)
+{
+    render_setup *rs = render_setup_new(s, opt, err);
+    if (!rs) return NULL;
+    film *f = render_setup_run(rs, opt, stats, err);
+    render_setup_free(rs);
     return f;
 }

@@ -18,6 +18,9 @@ typedef struct render_options {
     int seed_set;
     uint64_t seed;
     const struct ray_recorder *recorder; /* benchmarks: sees every ray; forces one thread */
+    unsigned leave_out; /* ACCEL_MASK_* bits (render/accel.h): geometry that no ray meets, as if
+                         * it were not in the scene; 0: none. ACCEL_MASK_DEVELOPMENT renders the
+                         * scene without its development, with the same samples as the whole */
 } render_options;
 
 typedef struct render_stats {
@@ -28,6 +31,20 @@ typedef struct render_stats {
 
 /* Renders s; returns a new film (film_free) or NULL with err set. stats may be NULL. */
 film *render_scene(const scene *s, const render_options *opt, render_stats *stats, err_buf *err);
+
+/* The acceleration structure and the lights of one scene, built once for several renders of
+ * it (the whole scene and the scene without its development, for compositing). */
+typedef struct render_setup render_setup;
+
+/* Builds s's setup with opt's threads, after checking that a frame of opt's size can be
+ * rendered; NULL with err set. s must outlive it. The caller frees it (render_setup_free). */
+render_setup *render_setup_new(const scene *s, const render_options *opt, err_buf *err);
+/* Renders the setup's scene with opt (its size, samples, seed, mode and leave_out; its threads
+ * and recorder as render_scene takes them); a new film (film_free) or NULL with err set. Renders
+ * of one setup run one after another, never at once. stats may be NULL; its build_seconds is
+ * the setup's. */
+film *render_setup_run(render_setup *rs, const render_options *opt, render_stats *stats, err_buf *err);
+void render_setup_free(render_setup *rs); /* accepts NULL */
 
 unsigned render_default_threads(void);
 

@@ -78,6 +78,103 @@ static double refraction(double h, double pressure_mbar, double temperature_c)
     return arcmin / 60.0 * (pressure_mbar / 1010.0) * (283.0 / (273.0 + temperature_c));
 }
 
+/* Days since 1970-01-01 of a proleptic Gregorian date, and back (the era-based algorithm of
+ * H. Hinnant's "chrono-compatible low-level date algorithms"). */
+static int64_t days_from_civil(int64_t y, int m, int d)
+{
+    y -= m <= 2;
+    int64_t era = (y >= 0 ? y : y - 399) / 400;
+    int64_t yoe = y - era * 400;
+    int64_t doy = (153 * (m + (m > 2 ? -3 : 9)) + 2) / 5 + d - 1;
+    int64_t doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
+    return era * 146097 + doe - 719468;
+}
+
+static void civil_from_days(int64_t z, int *y, int *m, int *d)
+{
+    z += 719468;
+    int64_t era = (z >= 0 ? z : z - 146096) / 146097;
+    int64_t doe = z - era * 146097;
+    int64_t yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
+    int64_t doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    int64_t mp = (5 * doy + 2) / 153;
+    *d = (int)(doy - (153 * mp + 2) / 5 + 1);
+    *m = (int)(mp < 10 ? mp + 3 : mp - 9);
+    *y = (int)(yoe + era * 400 + (*m <= 2));
+}
+
+/* n decimal digits at *s into *v, advancing *s; 0 when they are not all digits. */
+static int digits(const char **s, int n, int *v)
+{
+    *v = 0;
+    for (int i = 0; i < n; i++, (*s)++) {
+        if (**s < '0' || **s > '9') return 0;
+        *v = *v * 10 + (**s - '0');
+    }
+    return 1;
+}
+
+int sun_utc_parse(const char *text, sun_utc *out, err_buf *err)
+{
+    const char *s = text;
+    sun_utc t = {0};
+    if (!digits(&s, 4, &t.year) || *s++ != '-' || !digits(&s, 2, &t.month) || *s++ != '-' ||
+        !digits(&s, 2, &t.day))
+        return err_fail(err, ERR_INPUT, "'%s' does not begin with a date YYYY-MM-DD", text);
+    if (*s != 'T')
+        return err_fail(err, ERR_INPUT, "'%s' has no time: the date is followed by T and the time "
+                        "hh:mm:ss", text);
+    s++;
+    if (!digits(&s, 2, &t.hour) || *s++ != ':' || !digits(&s, 2, &t.minute))
+        return err_fail(err, ERR_INPUT, "'%s' has no time hh:mm[:ss] after the T", text);
+    if (*s == ':') {
+        s++;
+        int sec;
+        if (!digits(&s, 2, &sec))
+            return err_fail(err, ERR_INPUT, "'%s': the seconds are two digits", text);
+        t.second = sec;
+        if (*s == '.' || *s == ',') {
+            s++;
+            double scale = 0.1;
+            if (*s < '0' || *s > '9')
+                return err_fail(err, ERR_INPUT, "'%s': a decimal point with no digits", text);
+            for (; *s >= '0' && *s <= '9'; s++, scale *= 0.1) t.second += (*s - '0') * scale;
+        }
+    }
+    int offset_min = 0;
+    if (*s == 'Z') {
+        s++;
+    } else if (*s == '+' || *s == '-') {
+        int sign = *s++ == '-' ? -1 : 1, oh, om = 0, ok = digits(&s, 2, &oh);
+        if (ok && *s == ':') s++;
+        if (ok && *s) ok = digits(&s, 2, &om); /* "+01" alone is a whole-hour offset */
+        if (!ok || oh > 14 || om > 59)
+            return err_fail(err, ERR_INPUT, "'%s': the UTC offset is +hh:mm or -hh:mm, at most 14 "
+                            "hours", text);
+        offset_min = sign * (oh * 60 + om);
+    } else {
+        return err_fail(err, ERR_INPUT, "'%s' gives no UTC offset: end it with Z (UTC) or +hh:mm / "
+                        "-hh:mm, the local time's offset from UTC", text);
+    }
+    if (*s)
+        return err_fail(err, ERR_INPUT, "'%s' goes on after the date and time ('%s')", text, s);
+    if (t.month < 1 || t.month > 12 || t.day < 1 || t.day > days_in_month(t.year, t.month))
+        return err_fail(err, ERR_INPUT, "'%s': %04d-%02d-%02d is not a date in the calendar", text,
+                        t.year, t.month, t.day);
+    if (t.hour > 23 || t.minute > 59 || t.second >= 61.0)
+        return err_fail(err, ERR_INPUT, "'%s': %02d:%02d is not a time of day", text, t.hour,
+                        t.minute);
+    /* local time less the offset, with the day carried */
+    int64_t minutes = days_from_civil(t.year, t.month, t.day) * 1440 + t.hour * 60 + t.minute -
+                      offset_min;
+    int64_t day = minutes >= 0 ? minutes / 1440 : -((-minutes + 1439) / 1440);
+    int64_t in_day = minutes - day * 1440;
+    civil_from_days(day, &t.year, &t.month, &t.day);
+    t.hour = (int)(in_day / 60), t.minute = (int)(in_day % 60);
+    *out = t;
+    return 0;
+}
+
 int sun_position_at(const sun_utc *t, const sun_observer *o, sun_position *out, err_buf *err)
 {
     if (check_input(t, o, err)) return -1;

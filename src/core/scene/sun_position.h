@@ -54,6 +54,12 @@ typedef struct sun_position {
  * 1013.25 mbar at sea level falling with height, temperature 15 C falling 6.5 K per km. */
 sun_observer sun_observer_standard(double latitude_deg, double longitude_deg, double height_m);
 
+/* Reads an ISO 8601 date and time with its UTC offset, "2026-06-21T14:30:00+01:00",
+ * "2026-06-21T13:30Z" or "2026-06-21T14:30:00.5+0100" (seconds and their fraction optional, the
+ * offset required: a local time without one names no instant), into the UTC instant *out.
+ * Returns 0, or -1 with err set to what is wrong (the caller adds where and an example). */
+int sun_utc_parse(const char *text, sun_utc *out, err_buf *err);
+
 /* The Julian day of a UTC instant (Meeus 7.1, Gregorian calendar). */
 double sun_julian_day(const sun_utc *t);
 

@@ -1,8 +1,9 @@
 /* test_photo.c — photographs read as plates: the EXIF of the real photographs of the shared data
  * set (photos/README.md) against what exiftool reports for the same files, the sensor width each
- * gives against the camera's known pixel pitch, a PNG written here read back in linear light,
- * the eight EXIF orientations, the memory check and the errors for files that are not
- * photographs. Without the shared data (or exiftool) those parts report themselves skipped. */
+ * gives against the camera's known pixel pitch, 8- and 16-bit PNGs written here read back in
+ * linear light, the eight EXIF orientations (and a TIFF tagged with one), the memory check and
+ * the errors for files that are not photographs. Without the shared data (or exiftool, or
+ * oiiotool) those parts report themselves skipped. */
 #include <stdint.h>
 #include <stdlib.h>
 #include <sys/stat.h>
@@ -258,6 +259,55 @@ TEST(orientations)
     }
 }
 
+/* A TIFF tagged Orientation 6 (taken with the camera turned a quarter clockwise; the tag written
+ * by oiiotool, which installs with OpenImageIO) is read upright: 2 wide, 3 high, the stored left
+ * column along the top. */
+TEST(orientation_tag_honoured)
+{
+    if (system("oiiotool --version >/dev/null 2>&1") != 0) SKIP("oiiotool is not installed");
+    const uint8_t level[6] = {0, 50, 100, 150, 200, 255};
+    uint8_t rgb[18];
+    for (int i = 0; i < 18; i++) rgb[i] = level[i / 3];
+    char png[1200], tif[1200], cmd[2600];
+    snprintf(png, sizeof png, "%s/stored.png", work_dir());
+    snprintf(tif, sizeof tif, "%s/turned.tif", work_dir());
+    err_buf err = {{0}};
+    CHECK_INT(image_write_u8(png, 3, 2, 3, rgb, &err), 0);
+    snprintf(cmd, sizeof cmd, "oiiotool '%s' --orientation 6 -o '%s'", png, tif);
+    CHECK_INT(system(cmd), 0);
+    photo p;
+    CHECK_INT(photo_read(tif, &p, &err), 0);
+    CHECK_INT(p.exif.orientation, 6);
+    CHECK_INT(p.width, 2);
+    CHECK_INT(p.height, 3);
+    CHECK_INT(p.stored_width, 3);
+    const int want[6] = {3, 0, 4, 1, 5, 2};
+    for (int i = 0; i < 6 && p.rgb; i++)
+        CHECK_NEAR(p.rgb[i * 3 + 1], photo_srgb_to_linear(level[want[i]] / 255.0f), 1e-6);
+    photo_free(&p);
+}
+
+/* A 16-bit PNG (converted by oiiotool from an 8-bit one: v becomes v x 257) is decoded with the
+ * same sRGB curve, to the same linear values. */
+TEST(sixteen_bit_png)
+{
+    if (system("oiiotool --version >/dev/null 2>&1") != 0) SKIP("oiiotool is not installed");
+    const uint8_t rgb[6] = {0, 10, 64, 128, 200, 255};
+    char png[1200], png16[1200], cmd[2600];
+    snprintf(png, sizeof png, "%s/eight.png", work_dir());
+    snprintf(png16, sizeof png16, "%s/sixteen.png", work_dir());
+    err_buf err = {{0}};
+    CHECK_INT(image_write_u8(png, 2, 1, 3, rgb, &err), 0);
+    snprintf(cmd, sizeof cmd, "oiiotool '%s' -d uint16 -o '%s'", png, png16);
+    CHECK_INT(system(cmd), 0);
+    photo p;
+    CHECK_INT(photo_read(png16, &p, &err), 0);
+    CHECK_INT(p.bits, 16);
+    for (int i = 0; i < 6 && p.rgb; i++)
+        CHECK_NEAR(p.rgb[i], photo_srgb_to_linear(rgb[i] / 255.0f), 1e-6);
+    photo_free(&p);
+}
+
 /* A photograph larger than the memory budget is refused before its pixels are allocated. */
 TEST(memory_budget)
 {
@@ -303,5 +353,6 @@ TEST(errors_name_the_file)
 }
 
 TEST_LIST(TEST_CASE(exif_matches_exiftool), TEST_CASE(exif_known_values), TEST_CASE(sensor_width),
-          TEST_CASE(png_round_trip_linear), TEST_CASE(orientations), TEST_CASE(memory_budget),
+          TEST_CASE(png_round_trip_linear), TEST_CASE(orientations),
+          TEST_CASE(orientation_tag_honoured), TEST_CASE(sixteen_bit_png), TEST_CASE(memory_budget),
           TEST_CASE(errors_name_the_file))

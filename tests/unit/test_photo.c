@@ -259,6 +259,27 @@ TEST(orientations)
     }
 }
 
+/* Writes w x h 8-bit RGB as a PNG in the work folder, converts it with `oiiotool PNG ARGS -o
+ * NAME` and reads NAME as a photo; 0, or -1 after a failed check. */
+static int read_converted(const uint8_t *rgb, uint32_t w, uint32_t h, const char *args,
+                          const char *name, photo *p)
+{
+    char png[1200], out[1200], cmd[2600];
+    snprintf(png, sizeof png, "%s/source.png", work_dir());
+    snprintf(out, sizeof out, "%s/%s", work_dir(), name);
+    err_buf err = {{0}};
+    CHECK_INT(image_write_u8(png, w, h, 3, rgb, &err), 0);
+    snprintf(cmd, sizeof cmd, "oiiotool '%s' %s -o '%s'", png, args, out);
+    int rc = system(cmd);
+    CHECK_INT(rc, 0);
+    if (rc || photo_read(out, p, &err)) {
+        fprintf(stderr, "%s\n", err.msg);
+        CHECK(0);
+        return -1;
+    }
+    return 0;
+}
+
 /* A TIFF tagged Orientation 6 (taken with the camera turned a quarter clockwise; the tag written
  * by oiiotool, which installs with OpenImageIO) is read upright: 2 wide, 3 high, the stored left
  * column along the top. */
@@ -268,21 +289,14 @@ TEST(orientation_tag_honoured)
     const uint8_t level[6] = {0, 50, 100, 150, 200, 255};
     uint8_t rgb[18];
     for (int i = 0; i < 18; i++) rgb[i] = level[i / 3];
-    char png[1200], tif[1200], cmd[2600];
-    snprintf(png, sizeof png, "%s/stored.png", work_dir());
-    snprintf(tif, sizeof tif, "%s/turned.tif", work_dir());
-    err_buf err = {{0}};
-    CHECK_INT(image_write_u8(png, 3, 2, 3, rgb, &err), 0);
-    snprintf(cmd, sizeof cmd, "oiiotool '%s' --orientation 6 -o '%s'", png, tif);
-    CHECK_INT(system(cmd), 0);
     photo p;
-    CHECK_INT(photo_read(tif, &p, &err), 0);
+    if (read_converted(rgb, 3, 2, "--orientation 6", "turned.tif", &p)) return;
     CHECK_INT(p.exif.orientation, 6);
     CHECK_INT(p.width, 2);
     CHECK_INT(p.height, 3);
     CHECK_INT(p.stored_width, 3);
     const int want[6] = {3, 0, 4, 1, 5, 2};
-    for (int i = 0; i < 6 && p.rgb; i++)
+    for (int i = 0; i < 6; i++)
         CHECK_NEAR(p.rgb[i * 3 + 1], photo_srgb_to_linear(level[want[i]] / 255.0f), 1e-6);
     photo_free(&p);
 }
@@ -293,18 +307,10 @@ TEST(sixteen_bit_png)
 {
     if (system("oiiotool --version >/dev/null 2>&1") != 0) SKIP("oiiotool is not installed");
     const uint8_t rgb[6] = {0, 10, 64, 128, 200, 255};
-    char png[1200], png16[1200], cmd[2600];
-    snprintf(png, sizeof png, "%s/eight.png", work_dir());
-    snprintf(png16, sizeof png16, "%s/sixteen.png", work_dir());
-    err_buf err = {{0}};
-    CHECK_INT(image_write_u8(png, 2, 1, 3, rgb, &err), 0);
-    snprintf(cmd, sizeof cmd, "oiiotool '%s' -d uint16 -o '%s'", png, png16);
-    CHECK_INT(system(cmd), 0);
     photo p;
-    CHECK_INT(photo_read(png16, &p, &err), 0);
+    if (read_converted(rgb, 2, 1, "-d uint16", "sixteen.png", &p)) return;
     CHECK_INT(p.bits, 16);
-    for (int i = 0; i < 6 && p.rgb; i++)
-        CHECK_NEAR(p.rgb[i], photo_srgb_to_linear(rgb[i] / 255.0f), 1e-6);
+    for (int i = 0; i < 6; i++) CHECK_NEAR(p.rgb[i], photo_srgb_to_linear(rgb[i] / 255.0f), 1e-6);
     photo_free(&p);
 }
 

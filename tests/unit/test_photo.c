@@ -155,6 +155,9 @@ TEST(exif_known_values)
     CHECK_INT(p.exif.direction_true, 1);
     CHECK_INT(p.exif.utc_offset_min, 60);
     CHECK_INT(p.exif.hour, 11);
+    char when[32];
+    CHECK_INT(photo_exif_iso8601(&p.exif, when), 0);
+    CHECK(!strcmp(when, "2021-04-10T11:44:00+01:00"));
     /* the plate is linear: a mid-grey JPEG sample of 0.5 would be 0.214 */
     double sum = 0;
     for (size_t i = 0; i < (size_t)p.width * p.height * 3; i++) sum += p.rgb[i];
@@ -163,6 +166,8 @@ TEST(exif_known_values)
     photo_free(&p);
     if (read_photo("lychee/undefined-exif-tag.jpg", &p)) return;
     CHECK_INT(p.exif.has_date_time, 1); /* stored in IFD0 only by this camera's software */
+    CHECK_INT(photo_exif_iso8601(&p.exif, when), -1); /* no OffsetTimeOriginal */
+    CHECK(when[0] == 0);
     CHECK_INT(p.exif.year, 2022);
     CHECK_INT(p.exif.has_gps_position, 0);
     CHECK_INT(p.exif.has_focal_plane, 1);
@@ -237,6 +242,18 @@ TEST(png_round_trip_linear)
     for (int x = 0; x < 3; x++)
         for (int k = 0; k < 3; k++) CHECK_NEAR(p.rgb[x * 3 + k], want[code[grey[x]]], 2e-6);
     photo_free(&p);
+}
+
+/* The capture instant in the form sun: date_time takes, west of Greenwich too. */
+TEST(exif_instant)
+{
+    photo_exif x = {.has_date_time = 1, .year = 2026, .month = 6, .day = 21, .hour = 9,
+                    .minute = 5, .second = 7, .has_utc_offset = 1, .utc_offset_min = -330};
+    char when[32];
+    CHECK_INT(photo_exif_iso8601(&x, when), 0);
+    CHECK(!strcmp(when, "2026-06-21T09:05:07-05:30"));
+    x.has_utc_offset = 0;
+    CHECK_INT(photo_exif_iso8601(&x, when), -1);
 }
 
 /* The eight EXIF orientations on a 3x2 image holding its own indices. */
@@ -359,6 +376,6 @@ TEST(errors_name_the_file)
 }
 
 TEST_LIST(TEST_CASE(exif_matches_exiftool), TEST_CASE(exif_known_values), TEST_CASE(sensor_width),
-          TEST_CASE(png_round_trip_linear), TEST_CASE(orientations),
+          TEST_CASE(png_round_trip_linear), TEST_CASE(exif_instant), TEST_CASE(orientations),
           TEST_CASE(orientation_tag_honoured), TEST_CASE(sixteen_bit_png), TEST_CASE(memory_budget),
           TEST_CASE(errors_name_the_file))

@@ -4,6 +4,7 @@
 #include "io/photo.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
@@ -93,16 +94,34 @@ int photo_read(const char *path, photo *out, err_buf *err)
     }
     float gamma = 1.0f;
     transfer t = transfer_of(&p, &gamma);
+    /* 8-bit samples arrive as k / 255: one table instead of a power per sample */
+    float table[256];
+    int use_table = p.bits == 8 && !p.is_float;
+    for (int k = 0; use_table && k < 256; k++) table[k] = decode(k / 255.0f, t, gamma);
     /* grey (and grey + alpha) give three equal channels; alpha and extra channels are dropped */
     uint32_t c = stored.channels, step[3] = {0, c >= 3 ? 1u : 0u, c >= 3 ? 2u : 0u};
     for (uint32_t y = 0; y < p.height; y++)
         for (uint32_t x = 0; x < p.width; x++) {
             const float *s = stored.pixels + stored_index(x, y, stored.width, stored.height, o) * c;
             float *d = p.rgb + ((size_t)y * p.width + x) * 3;
-            for (int k = 0; k < 3; k++) d[k] = decode(s[step[k]], t, gamma);
+            for (int k = 0; k < 3; k++) {
+                float v = s[step[k]];
+                d[k] = use_table ? table[(int)lrintf(fmaxf(0.0f, fminf(v, 1.0f)) * 255.0f)]
+                                 : decode(v, t, gamma);
+            }
         }
     image_free(&stored);
     *out = p;
+    return 0;
+}
+
+int photo_exif_iso8601(const photo_exif *x, char out[32])
+{
+    out[0] = 0;
+    if (!x->has_date_time || !x->has_utc_offset) return -1;
+    int off = x->utc_offset_min < 0 ? -x->utc_offset_min : x->utc_offset_min;
+    snprintf(out, 32, "%04d-%02d-%02dT%02d:%02d:%02d%c%02d:%02d", x->year, x->month, x->day,
+             x->hour, x->minute, x->second, x->utc_offset_min < 0 ? '-' : '+', off / 60, off % 60);
     return 0;
 }
 

@@ -63,6 +63,11 @@ typedef struct photo {
 int photo_read(const char *path, photo *out, err_buf *err);
 void photo_free(photo *p); /* accepts a zeroed photo */
 
+/* The capture instant as ISO 8601 with its offset ("2021-04-10T11:44:00+01:00"), the form the
+ * scene file's sun: date_time takes, into out. Returns 0, or -1 (out "") when the EXIF lacks
+ * DateTimeOriginal or OffsetTimeOriginal: a local time without its offset names no instant. */
+int photo_exif_iso8601(const photo_exif *x, char out[32]);
+
 /* Where the width of the plate's image on the sensor came from. */
 typedef enum photo_sensor_source {
     PHOTO_SENSOR_UNKNOWN = 0,   /* the caller must give it */

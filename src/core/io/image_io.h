@@ -39,6 +39,14 @@ int image_write_u8(const char *path, uint32_t width, uint32_t height, uint32_t c
 int image_write_u8_into(atomic_file *af, uint32_t width, uint32_t height, uint32_t channels,
                         const uint8_t *pixels, err_buf *err);
 
+struct photo;
+/* Reads the photograph `path` for io/photo.c: the stored pixels (before the orientation, no
+ * colour conversion, every channel as float) into *stored, and into *meta the stored size,
+ * bits per sample, floating-point flag, oiio:ColorSpace and the EXIF record (io/photo.h);
+ * meta->rgb is left alone. The memory check (util/memory_budget.h) covers the stored pixels
+ * and a linear RGB copy. Returns 0 or -1 with err naming the file and what OpenImageIO said. */
+int image_read_photo(const char *path, image_f32 *stored, struct photo *meta, err_buf *err);
+
 #ifdef __cplusplus
 }
 #endif

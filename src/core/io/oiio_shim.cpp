@@ -4,8 +4,10 @@
 // read and written unassociated, so pixel values pass through unchanged.
 extern "C" {
 #include "io/atomic_file.h"
+#include "io/photo.h"
 #include "util/err.h"
 #include "util/file_check.h"
+#include "util/memory_budget.h"
 }
 #include "io/image_io.h"
 
@@ -15,6 +17,7 @@ extern "C" {
 #include <OpenImageIO/imageio.h>
 
 #include <cerrno>
+#include <cmath>
 #include <climits>
 #include <cstdio>
 #include <cstdlib>
@@ -170,6 +173,163 @@ int read_guarded(const char *path, const void *bytes, size_t size, const char *f
     return 0;
 }
 
+
+// --- photographs: pixels as stored and the EXIF record (io/photo.h) --------------------------
+
+// The attribute `name` (case-insensitive: OpenImageIO spells a DateTimeOriginal found in IFD0
+// "exif:DateTimeOriginal"), or NULL.
+const OIIO::ParamValue *photo_attr(const OIIO::ImageSpec &spec, const char *name)
+{
+    return spec.find_attribute(name, OIIO::TypeDesc::UNKNOWN, false);
+}
+
+// The string attribute `name` copied into dst (size n); 1 when it is present and not empty.
+int photo_attr_text(const OIIO::ImageSpec &spec, const char *name, char *dst, size_t n)
+{
+    const OIIO::ParamValue *p = photo_attr(spec, name);
+    if (!p || p->type().basetype != OIIO::TypeDesc::STRING) return 0;
+    std::string v = p->get_string();
+    while (!v.empty() && (v.back() == ' ' || v.back() == '\0')) v.pop_back();
+    if (v.empty()) return 0;
+    std::snprintf(dst, n, "%s", v.c_str());
+    return 1;
+}
+
+// The numeric attribute `name` holding at least `count` values, into v; 1 when present and
+// every value is finite.
+int photo_attr_numbers(const OIIO::ImageSpec &spec, const char *name, double *v, int count)
+{
+    const OIIO::ParamValue *p = photo_attr(spec, name);
+    if (!p || p->type().basetype == OIIO::TypeDesc::STRING) return 0;
+    const int have = p->nvalues() * static_cast<int>(p->type().numelements()) *
+                     static_cast<int>(p->type().aggregate);
+    if (have < count) return 0;
+    for (int i = 0; i < count; i++) {
+        v[i] = p->get_float_indexed(i, NAN);
+        if (!std::isfinite(v[i])) return 0;
+    }
+    return 1;
+}
+
+// Degrees, minutes and seconds signed by their reference letter (`negative` is "S" or "W").
+int photo_gps_angle(const OIIO::ImageSpec &spec, const char *name, const char *ref_name,
+                    char negative, double limit, double *out)
+{
+    double dms[3];
+    if (!photo_attr_numbers(spec, name, dms, 3)) return 0;
+    double deg = dms[0] + dms[1] / 60.0 + dms[2] / 3600.0;
+    char ref[8] = "";
+    photo_attr_text(spec, ref_name, ref, sizeof ref);
+    if (ref[0] == negative) deg = -deg;
+    if (!(std::fabs(deg) <= limit)) return 0;
+    *out = deg;
+    return 1;
+}
+
+void photo_read_exif(const OIIO::ImageSpec &spec, photo_exif *x)
+{
+    *x = photo_exif{};
+    x->has_make = photo_attr_text(spec, "Make", x->make, sizeof x->make);
+    x->has_model = photo_attr_text(spec, "Model", x->model, sizeof x->model);
+    x->has_lens_model = photo_attr_text(spec, "Exif:LensModel", x->lens_model, sizeof x->lens_model);
+    double v[3];
+    if (photo_attr_numbers(spec, "Exif:FocalLength", v, 1) && v[0] > 0)
+        x->has_focal_length = 1, x->focal_length_mm = v[0];
+    if (photo_attr_numbers(spec, "Exif:FocalLengthIn35mmFilm", v, 1) && v[0] > 0)
+        x->has_focal_length_35mm = 1, x->focal_length_35mm = v[0];
+    double fx, fy, unit = 2; // EXIF's default unit is the inch
+    if (photo_attr_numbers(spec, "Exif:FocalPlaneXResolution", &fx, 1) &&
+        photo_attr_numbers(spec, "Exif:FocalPlaneYResolution", &fy, 1) && fx > 0 && fy > 0) {
+        photo_attr_numbers(spec, "Exif:FocalPlaneResolutionUnit", &unit, 1);
+        if (unit >= 2 && unit <= 5 && unit == std::floor(unit)) {
+            x->has_focal_plane = 1;
+            x->focal_plane_x_res = fx, x->focal_plane_y_res = fy;
+            x->focal_plane_unit = static_cast<int>(unit);
+        }
+    }
+    x->has_gps_position =
+        photo_gps_angle(spec, "GPS:Latitude", "GPS:LatitudeRef", 'S', 90.0, &x->latitude_deg) &&
+        photo_gps_angle(spec, "GPS:Longitude", "GPS:LongitudeRef", 'W', 180.0, &x->longitude_deg);
+    if (photo_attr_numbers(spec, "GPS:Altitude", v, 1)) {
+        double ref = 0;
+        photo_attr_numbers(spec, "GPS:AltitudeRef", &ref, 1);
+        x->has_gps_altitude = 1, x->altitude_m = ref == 1 ? -v[0] : v[0];
+    }
+    if (photo_attr_numbers(spec, "GPS:ImgDirection", v, 1) && v[0] >= 0 && v[0] <= 360) {
+        char ref[8] = "";
+        photo_attr_text(spec, "GPS:ImgDirectionRef", ref, sizeof ref);
+        x->has_gps_direction = 1, x->direction_deg = v[0], x->direction_true = ref[0] != 'M';
+    }
+    char text[64];
+    if (photo_attr_text(spec, "Exif:DateTimeOriginal", text, sizeof text) &&
+        std::sscanf(text, "%4d:%2d:%2d %2d:%2d:%2d", &x->year, &x->month, &x->day, &x->hour,
+                    &x->minute, &x->second) == 6 &&
+        x->month >= 1 && x->month <= 12 && x->day >= 1 && x->day <= 31 && x->hour >= 0 &&
+        x->hour <= 23 && x->minute >= 0 && x->minute <= 59 && x->second >= 0 && x->second <= 60)
+        x->has_date_time = 1;
+    char sign;
+    int oh, om;
+    if (photo_attr_text(spec, "Exif:OffsetTimeOriginal", text, sizeof text) &&
+        std::sscanf(text, "%c%2d:%2d", &sign, &oh, &om) == 3 && (sign == '+' || sign == '-') &&
+        oh >= 0 && oh <= 14 && om >= 0 && om <= 59)
+        x->has_utc_offset = 1, x->utc_offset_min = (sign == '-' ? -1 : 1) * (oh * 60 + om);
+    x->orientation = spec.get_int_attribute("Orientation", 1);
+    photo_attr_text(spec, "ICCProfile:profile_description", x->icc_profile, sizeof x->icc_profile);
+}
+
+int photo_read_into(const char *path, image_f32 *img, photo *meta, err_buf *err)
+{
+    const std::string label = std::string(path) + ": cannot read the photograph";
+    if (file_check_regular(path, label.c_str(), err)) return -1;
+    if (access(path, R_OK) != 0)
+        return err_fail(err, ERR_INPUT, "%s: cannot read the photograph: %s", path,
+                        std::strerror(errno));
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) {
+        std::string why = OIIO::geterror();
+        return err_fail(err, ERR_INPUT, "%s: cannot read the photograph (a JPEG, PNG or TIFF "
+                        "file is expected): OpenImageIO says: %s", path,
+                        why.empty() ? "it cannot open the file" : why.c_str());
+    }
+    const OIIO::ImageSpec &spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth != 1)
+        return err_fail(err, ERR_INPUT, "%s: cannot read the photograph: it is %dx%dx%d with %d "
+                        "channels; a flat image with at least one pixel is needed",
+                        path, spec.width, spec.height, spec.depth, spec.nchannels);
+    photo_read_exif(spec, &meta->exif);
+    if (meta->exif.orientation < 1 || meta->exif.orientation > 8)
+        return err_fail(err, ERR_INPUT, "%s: the EXIF Orientation is %d; the photograph cannot be "
+                        "turned upright (1 to 8 are defined)", path, meta->exif.orientation);
+    const uint64_t n_px = static_cast<uint64_t>(spec.width) * static_cast<uint64_t>(spec.height);
+    const uint64_t need = n_px * (static_cast<uint64_t>(spec.nchannels) + 3) * sizeof(float);
+    const std::string what = std::string("reading the photograph '") + path + "' (" +
+                             std::to_string(spec.width) + "x" + std::to_string(spec.height) + ")";
+    if (memory_check(need, what.c_str(), err)) return err_default(err, ERR_LIMIT);
+    if (n_px * static_cast<uint64_t>(spec.nchannels) > SIZE_MAX / sizeof(float))
+        return err_fail(err, ERR_LIMIT, "%s: the photograph is too large to address", path);
+
+    meta->stored_width = static_cast<uint32_t>(spec.width);
+    meta->stored_height = static_cast<uint32_t>(spec.height);
+    meta->bits = static_cast<int>(spec.format.size() * 8);
+    meta->is_float = spec.format.is_floating_point();
+    std::string cs = spec.get_string_attribute("oiio:ColorSpace");
+    std::snprintf(meta->colour_space, sizeof meta->colour_space, "%s", cs.c_str());
+
+    const size_t count = static_cast<size_t>(n_px) * static_cast<size_t>(spec.nchannels);
+    img->width = meta->stored_width, img->height = meta->stored_height;
+    img->pixels = static_cast<float *>(std::malloc(count * sizeof(float)));
+    if (!img->pixels)
+        return err_nomem(err, "%s: out of memory for %zu float samples", path, count);
+    img->channels = static_cast<uint32_t>(spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img->pixels)) {
+        std::string why = in->geterror();
+        return err_fail(err, ERR_INPUT, "%s: cannot read the photograph's pixels: OpenImageIO "
+                        "says: %s", path, why.c_str());
+    }
+    in->close();
+    return 0;
+}
+
 } // namespace
 
 extern "C" int image_read(const char *path, image_f32 *out, err_buf *err)
@@ -228,4 +388,27 @@ extern "C" int image_write_u8(const char *path, uint32_t width, uint32_t height,
         return -1;
     }
     return atomic_file_commit(&tmp, err);
+}
+
+extern "C" int image_read_photo(const char *path, image_f32 *stored, photo *meta, err_buf *err)
+{
+    if (!path || !stored || !meta)
+        return err_set(err, "image_read_photo needs a path, an image and a photo");
+    image_f32 img{};
+    int status;
+    try {
+        status = photo_read_into(path, &img, meta, err);
+    } catch (const std::exception &e) {
+        status = err_fail(err, ERR_INPUT, "%s: cannot read the photograph: OpenImageIO says: %s",
+                          path, e.what());
+    } catch (...) {
+        status = err_fail(err, ERR_INPUT, "%s: cannot read the photograph: unknown failure in "
+                          "OpenImageIO", path);
+    }
+    if (status) {
+        image_free(&img);
+        return -1;
+    }
+    *stored = img;
+    return 0;
 }

@@ -66,6 +66,8 @@ typedef struct sun_settings {
     double irradiance;      /* on a surface facing the sun */
     double color[3];        /* linear RGB tint, multiplied with irradiance */
     double angular_diameter_deg;
+    char date_time_utc[32]; /* "2026-06-21T13:30:00Z" when placed by date_time, else "" */
+    double latitude_deg, longitude_deg; /* where date_time placed it (site origin or given) */
 } sun_settings;
 
 /* Where the scene stands on the Earth (docs/sites.md). Without a `site:` section crs_wkt is

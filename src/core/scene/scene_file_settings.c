@@ -1,14 +1,17 @@
 /* scene_file_settings.c — the sections that set one thing each: image, camera (look_at or
  * direction or heading/pitch/roll, fov or focal length with sensor width, an up vector not
- * parallel to the view) and the named viewpoints read as the camera is, sun
- * (direction or azimuth and elevation), sky (keys that apply to its model only) and earth
- * (curvature on by default only for a scene with a site, so read after the site). */
+ * parallel to the view) and the named viewpoints read as the camera is, sun (direction,
+ * azimuth and elevation, or a date and time at a place), sky (keys that apply to its model
+ * only) and earth (curvature on by default only for a scene with a site, so read after the
+ * site). */
 #include "scene/scene_file_loader.h"
 
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+
+#include "scene/sun_position.h"
 
 #define DEG (M_PI / 180.0)
 
@@ -288,6 +291,69 @@ int scene_file_use_viewpoint(scene_file *sf, const char *name, err_buf *err)
                     sf->n_viewpoints ? names : "");
 }
 
+#define SUN_DATE_EXAMPLE "date_time: \"2026-06-21T14:30:00+01:00\" (or ...T13:30:00Z)"
+
+/* With `date_time`, the sun's azimuth and elevation for that instant, seen from the site origin
+ * or from the given latitude and longitude (docs/models/sun_position.md); s->date_time_utc stays
+ * "" without it. Refuses date_time beside azimuth, elevation or direction, and latitude or
+ * longitude without date_time or beside a site. */
+static int sun_place_by_date(loader *L, const sylva_params *p, sun_settings *s)
+{
+    const sylva_value *dt = sylva_param(p, "date_time"), *lat = sylva_param(p, "latitude"),
+                      *lon = sylva_param(p, "longitude");
+    const sylva_value *given = lat->is_set ? lat : lon->is_set ? lon : NULL;
+    s->date_time_utc[0] = 0;
+    if (!dt->is_set) {
+        if (given)
+            return sf_located(L->err, L->file, given->line, given->column,
+                              "'%s' places the sun only with 'date_time'; give %s",
+                              given == lat ? "latitude" : "longitude", SUN_DATE_EXAMPLE);
+        return 0;
+    }
+    const char *const others[] = {"azimuth", "elevation", "direction"};
+    for (int k = 0; k < 3; k++) {
+        const sylva_value *o = sylva_param(p, others[k]);
+        if (o->is_set) {
+            const sylva_value *at = later_of(dt, o);
+            return sf_located(L->err, L->file, at->line, at->column,
+                              "the sun takes 'date_time' or '%s', not both: the date and the place "
+                              "set its position", others[k]);
+        }
+    }
+    sun_utc t;
+    err_buf why = {{0}};
+    if (sun_utc_parse(dt->s, &t, &why))
+        return sf_located(L->err, L->file, dt->line, dt->column,
+                          "'date_time' must be an ISO 8601 date and time with its UTC offset: %s; "
+                          "for example %s", err_sentence(&why), SUN_DATE_EXAMPLE);
+    double place[2] = {lon->r, lat->r};
+    if (L->site) {
+        if (given)
+            return sf_located(L->err, L->file, given->line, given->column,
+                              "the scene has a site: the sun is placed from its origin; leave out "
+                              "'%s'", given == lat ? "latitude" : "longitude");
+        const double *o = L->sf->site.origin;
+        if (site_frame_to_lonlat(L->site, o[0], o[1], place, &why))
+            return sf_located(L->err, L->file, dt->line, dt->column,
+                              "the sun cannot be placed from the site origin: %s",
+                              err_sentence(&why));
+    } else if (!lat->is_set || !lon->is_set) {
+        return sf_located(L->err, L->file, dt->line, dt->column,
+                          "the scene has no site, so 'date_time' needs 'latitude' and 'longitude' "
+                          "(degrees, north and east positive), as in sun: {%s, latitude: 51.5, "
+                          "longitude: -0.12}", SUN_DATE_EXAMPLE);
+    }
+    sun_observer where = sun_observer_standard(place[1], place[0], 0.0);
+    sun_position at;
+    if (sun_position_at(&t, &where, &at, &why))
+        return sf_located(L->err, L->file, dt->line, dt->column, "%s", err_sentence(&why));
+    s->azimuth_deg = at.azimuth_deg, s->elevation_deg = at.elevation_deg;
+    s->latitude_deg = place[1], s->longitude_deg = place[0];
+    snprintf(s->date_time_utc, sizeof s->date_time_utc, "%04d-%02d-%02dT%02d:%02d:%02dZ", t.year,
+             t.month, t.day, t.hour, t.minute, (int)t.second);
+    return 0;
+}
+
 #define SUN_IRRADIANCE_MAX 1e6 /* sylva's unit: 1 is about 100 klx; 1e6 is beyond any sun */
 
 int sf_read_sun(loader *L)
@@ -302,7 +368,8 @@ int sf_read_sun(loader *L)
         return sf_located(L->err, L->file, at->line, at->column,
                        "the sun takes 'direction' or 'azimuth'/'elevation', not both");
     }
-    if (dir->is_set) {
+    if (sun_place_by_date(L, p, s)) return -1;
+    if (!s->date_time_utc[0] && dir->is_set) {
         sf_copy3(s->direction, dir);
         if (normalize3(s->direction))
             return sf_located(L->err, L->file, dir->line, dir->column, "'direction' must not be zero");
@@ -310,8 +377,8 @@ int sf_read_sun(loader *L)
         s->azimuth_deg = azimuth < 0.0 ? azimuth + 360.0 : azimuth;
         s->elevation_deg = asin(fmax(-1.0, fmin(1.0, s->direction[2]))) / DEG;
     } else {
-        s->azimuth_deg = az->r, s->elevation_deg = el->r;
-        double a = az->r * DEG, e = el->r * DEG;
+        if (!s->date_time_utc[0]) s->azimuth_deg = az->r, s->elevation_deg = el->r;
+        double a = s->azimuth_deg * DEG, e = s->elevation_deg * DEG;
         s->direction[0] = sin(a) * cos(e);
         s->direction[1] = cos(a) * cos(e);
         s->direction[2] = sin(e);

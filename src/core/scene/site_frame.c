@@ -232,17 +232,38 @@ static int transform_point(site_frame *f, PJ *op, double x, double y, double map
     return 0;
 }
 
+/* The transformation from longitude/latitude into the site CRS, made at first use. */
+static int lonlat_op(site_frame *f, err_buf *err)
+{
+    if (f->from_lonlat) return 0;
+    PJ *wgs84 = proj_create_from_database(f->ctx, "EPSG", "4326", PJ_CATEGORY_CRS, 0, NULL);
+    f->from_lonlat = wgs84 ? transformation_from(f, wgs84) : NULL;
+    proj_destroy(wgs84);
+    if (!f->from_lonlat)
+        return err_set(err, "PROJ finds no conversion from longitude/latitude (EPSG:4326) into "
+                       "the site CRS '%s'", f->name);
+    return 0;
+}
+
 int site_frame_from_lonlat(site_frame *f, double lon, double lat, double map[2], err_buf *err)
 {
-    if (!f->from_lonlat) {
-        PJ *wgs84 = proj_create_from_database(f->ctx, "EPSG", "4326", PJ_CATEGORY_CRS, 0, NULL);
-        f->from_lonlat = wgs84 ? transformation_from(f, wgs84) : NULL;
-        proj_destroy(wgs84);
-        if (!f->from_lonlat)
-            return err_set(err, "PROJ finds no conversion from longitude/latitude (EPSG:4326) into "
-                           "the site CRS '%s'", f->name);
-    }
+    if (lonlat_op(f, err)) return -1;
     return transform_point(f, f->from_lonlat, lon, lat, map, "longitude/latitude", err);
+}
+
+int site_frame_to_lonlat(site_frame *f, double easting, double northing, double lonlat[2],
+                         err_buf *err)
+{
+    if (lonlat_op(f, err)) return -1;
+    proj_errno_reset(f->from_lonlat);
+    PJ_COORD out = proj_trans(f->from_lonlat, PJ_INV, proj_coord(easting, northing, 0, 0));
+    int e = proj_errno(f->from_lonlat);
+    if (e || !isfinite(out.lp.lam) || !isfinite(out.lp.phi) || fabs(out.lp.phi) > 90.0)
+        return err_set(err, "the map point (%.10g, %.10g) of the site CRS '%s' cannot be converted "
+                       "into longitude/latitude%s%s", easting, northing, f->name, e ? ": " : "",
+                       e ? proj_context_errno_string(f->ctx, e) : "");
+    lonlat[0] = out.lp.lam, lonlat[1] = out.lp.phi;
+    return 0;
 }
 
 int site_frame_from_crs(site_frame *f, const char *from_crs, double x, double y, double map[2],

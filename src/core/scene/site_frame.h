@@ -34,6 +34,11 @@ const char *site_frame_name(const site_frame *f);
  * map[0] easting, map[1] northing, in metres. Returns 0 or -1 with err set. */
 int site_frame_from_lonlat(site_frame *f, double lon, double lat, double map[2], err_buf *err);
 
+/* The inverse: the map point (easting, northing) of the site CRS as lonlat[0] longitude and
+ * lonlat[1] latitude (degrees, WGS 84). Returns 0 or -1 with err set. */
+int site_frame_to_lonlat(site_frame *f, double easting, double northing, double lonlat[2],
+                         err_buf *err);
+
 /* Converts (x, y) given in the CRS `from_crs` (EPSG:NNNN or WKT; axes in GIS order: easting
  * then northing, or longitude then latitude) into the site CRS. Returns 0 or -1 with err set. */
 int site_frame_from_crs(site_frame *f, const char *from_crs, double x, double y, double map[2],

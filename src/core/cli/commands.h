@@ -14,6 +14,7 @@ int cmd_factors(int argc, char **argv);    /* cmd_factors.c */
 int cmd_tree_stats(int argc, char **argv); /* cmd_tree_stats.c */
 int cmd_probe(int argc, char **argv);      /* cmd_probe.c */
 int cmd_ztv(int argc, char **argv);        /* cmd_ztv.c */
+int cmd_montage(int argc, char **argv);    /* cmd_montage.c */
 
 typedef struct sylva_command {
     const char *name;                 /* as typed after `sylva` */

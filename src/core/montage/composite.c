@@ -104,12 +104,17 @@ static uint8_t srgb8(float x)
     return (uint8_t)lrintf(y * 255.0f);
 }
 
+uint8_t *composite_srgb8(const float *rgb, size_t pixels)
+{
+    uint8_t *px = malloc(pixels ? pixels * 3 : 1); /* the caller's */
+    for (size_t i = 0; px && i < pixels * 3; i++) px[i] = srgb8(rgb[i]);
+    return px;
+}
+
 int composite_write_srgb(const char *path, uint32_t width, uint32_t height, const float *rgb, err_buf *err)
 {
-    size_t n = (size_t)width * height * 3;
-    uint8_t *px = malloc(n); /* owned here */
+    uint8_t *px = composite_srgb8(rgb, (size_t)width * height); /* owned here */
     if (!px) return err_nomem(err, "out of memory encoding %s", path);
-    for (size_t i = 0; i < n; i++) px[i] = srgb8(rgb[i]);
     int rc = image_write_u8(path, width, height, 3, px, err);
     free(px);
     return rc;

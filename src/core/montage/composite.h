@@ -72,8 +72,11 @@ composite_layers composite_layers_of(const composite_renders *r);
 int composite_apply(const composite_layers *l, const image_f32 *plate, float gain, int shadow_catcher,
                     float *montage, float *ratio, err_buf *err);
 
-/* Linear RGB (3 per pixel) as 8-bit sRGB (the standard transfer function, no tone curve, so the
- * plate's own pixels come back as they were read), to a PNG/JPEG/TIFF by its extension. */
+/* Linear RGB (3 per pixel) as 8-bit sRGB bytes (the standard transfer function, no tone curve,
+ * so the plate's own pixels come back as they were read): a new array the caller frees, or NULL
+ * when out of memory. */
+uint8_t *composite_srgb8(const float *rgb, size_t pixels);
+/* The same, written to a PNG/JPEG/TIFF by its extension. */
 int composite_write_srgb(const char *path, uint32_t width, uint32_t height, const float *rgb, err_buf *err);
 /* Linear RGB and the development's mask (development.A) as an EXR (FLOAT). */
 int composite_write_exr(const char *path, uint32_t width, uint32_t height, const float *rgb, const float *alpha,

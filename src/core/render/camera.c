@@ -24,6 +24,11 @@ void camera_init(camera *c, const camera_settings *s, uint32_t width, uint32_t h
     c->tan_range_y = c->angle_x * 0.5f * (float)height / (float)width;
     c->tan_half_x = c->cylindrical ? 0.0f : tanf((float)(s->fov_deg * M_PI / 360.0));
     c->tan_half_y = c->tan_half_x * (float)height / (float)width;
+    c->distorted = !c->cylindrical && (s->k1 != 0.0 || s->k2 != 0.0);
+    if (c->distorted) {
+        camera_model_from_settings(&c->model, s, width, height);
+        c->model.k1 = s->k1, c->model.k2 = s->k2;
+    }
 }
 
 double camera_smallest_pixel_angle(const camera *c)
@@ -45,6 +50,12 @@ vec3 camera_direction(const camera *c, float x, float y)
         float a = (x / (float)c->width - 0.5f) * c->angle_x;
         float t = (1.0f - 2.0f * y / (float)c->height) * c->tan_range_y;
         return v3_norm(v3_add(v3_add(v3_scale(c->forward, cosf(a)), v3_scale(c->right, sinf(a))), v3_scale(c->up, t)));
+    }
+    if (c->distorted) {
+        double ray[3];
+        /* where the lens folds the image (far outside any real photograph) the ray is the axis */
+        if (camera_unproject(&c->model, x, y, ray)) return c->forward;
+        return v3((float)ray[0], (float)ray[1], (float)ray[2]);
     }
     float sx = (2.0f * x / (float)c->width - 1.0f) * c->tan_half_x;
     float sy = (1.0f - 2.0f * y / (float)c->height) * c->tan_half_y;

@@ -6,12 +6,15 @@
  * across and down the image. A cylindrical one (a panorama) turns the ray about the up axis by
  * an angle linear in x, a (x / width - 1/2) with a the field of view across, and places the
  * tangent of its elevation linearly in y, (1/2 - y / height) height a / width, which keeps
- * pixels square at the horizon; POV-Ray's `cylinder 1` camera is the same. */
+ * pixels square at the horizon; POV-Ray's `cylinder 1` camera is the same. A perspective
+ * camera with radial distortion (k1, k2, the matched camera of a photomontage) bends its rays as
+ * the photograph's lens did, through geometry/camera_project.h. */
 #ifndef SYLVA_CAMERA_H
 #define SYLVA_CAMERA_H
 
 #include <stdint.h>
 
+#include "geometry/camera_project.h"
 #include "scene/scene_file.h"
 #include "util/vec3.h"
 
@@ -22,6 +25,8 @@ typedef struct camera {
     int cylindrical;
     float angle_x;           /* cylindrical: the field of view across, radians */
     float tan_range_y;       /* cylindrical: the tangent of the elevation spans [-this, this] */
+    int distorted;           /* 1: perspective with radial distortion: rays through `model` */
+    camera_model model;      /* the distorted camera (geometry/camera_project.h) */
     uint32_t width, height;
 } camera;
 

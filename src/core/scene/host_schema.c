@@ -18,7 +18,7 @@
 
 const char *const host_sections[] = {"image",   "site",    "camera",  "sun",     "sky",     "materials",
                                      "terrain", "species", "plants",  "ecology", "groups",  "objects",
-                                     "earth",   "viewpoints", "ztv", NULL};
+                                     "earth",   "viewpoints", "ztv",     "photo",   NULL};
 
 const char *const host_shape_names[] = {"mesh", "box", "sphere", "quad", "disk", NULL};
 const char *const host_sky_models[] = {"none", "constant", "preetham", NULL};
@@ -304,6 +304,30 @@ const host_schema host_schema_ztv_target = {
     "ztv targets item", "One target of the visibility map.", ztv_target_params,
     COUNT(ztv_target_params)};
 
+/* --- photo --------------------------------------------------------------------------------- */
+static const sylva_param_spec photo_params[] = {
+    {.name = "file", .type = SYLVA_P_PATH, .flags = REQ,
+     .help = "The photograph (JPEG, PNG or TIFF) the development is rendered into."},
+    {.name = "control_points", .type = SYLVA_P_PATH,
+     .help = "Control points (CSV u,v,easting,northing,height or x,y,z; or ImGRAFT's text) the "
+             "camera is matched to; without them the scene's camera is used as it is."},
+    {.name = "sensor_width", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = 0, .max = 1000, .unit = "mm",
+     .help = "Width of the photograph on the sensor (0: from its EXIF)."},
+    {.name = "focal_length", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = 0, .max = 100000, .unit = "mm",
+     .help = "Focal length the photograph was taken with (0: from its EXIF)."},
+    {.name = "fit_position", .type = SYLVA_P_BOOL, .def = 0,
+     .help = "Let the match move the camera (needs points at several distances; default: the "
+             "camera's position is surveyed)."},
+    {.name = "fit_focal_length", .type = SYLVA_P_BOOL, .def = 1,
+     .help = "Let the match change the focal length."},
+    {.name = "fit_distortion", .type = SYLVA_P_BOOL, .def = 0,
+     .help = "Fit the lens's radial distortion k1 (and render with it)."},
+    {.name = "exposure", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 1, .min = 0, .max = 1e6,
+     .help = "Gain on the rendered development against the photograph's linear values."},
+};
+const host_schema host_schema_photo = {"photo", "The photograph of a photomontage (sylva montage).", photo_params,
+                                       COUNT(photo_params)};
+
 /* --- materials ------------------------------------------------------------------------------ */
 static const sylva_param_spec material_params[] = {
     {.name = "type", .type = SYLVA_P_ENUM, .def_str = "lambert", .choices = host_material_types,
@@ -543,6 +567,7 @@ const host_schema *host_schema_at(uint32_t i)
         &host_schema_image,        &host_schema_site,         &host_schema_position,
         &host_schema_camera,       &host_schema_sun,          &host_schema_sky,
         &host_schema_earth,        &host_schema_ztv,          &host_schema_ztv_target,
+        &host_schema_photo,
         &host_schema_material,     &host_schema_terrain,
         &host_schema_species,      &host_schema_plant,        &host_schema_ecology,
         &host_schema_object,       &host_schema_object_model, &host_schema_object_group,

@@ -46,6 +46,8 @@ typedef struct camera_settings {
     double up[3];
     double roll_deg;        /* turn about the view, clockwise seen from behind (camera_frame.h) */
     int cylindrical;        /* 0: a pinhole (perspective); 1: a cylindrical panorama (render/camera.h) */
+    double k1, k2;          /* radial lens distortion (geometry/camera_project.h); 0 but in a
+                               photomontage's matched camera */
     double fov_deg;         /* horizontal field of view; derived from focal length when given */
     double focal_length_mm; /* 0 when fov was given */
     double sensor_width_mm;
@@ -229,6 +231,20 @@ typedef struct ztv_settings {
     uint32_t line, column;    /* of the section (of the file's start when absent) */
 } ztv_settings;
 
+/* The photo: section: the photograph a photomontage puts the development into, and how its
+ * camera is matched (`sylva montage`, docs/photomontage.md). */
+typedef struct photo_settings {
+    const char *file;           /* resolved path, or NULL: no photo: section */
+    const char *control_points; /* resolved path, or NULL: the scene's camera as it is */
+    double sensor_width_mm;     /* 0: from the photograph's EXIF */
+    double focal_length_mm;     /* 0: from the photograph's EXIF, else the camera's field of view */
+    int fit_position;           /* 1: the match may move the camera */
+    int fit_focal_length;       /* 1: the match may change the focal length */
+    int fit_distortion;         /* 1: the match fits the radial distortion k1 */
+    double exposure;            /* the rendered development's gain against the photograph */
+    uint32_t line, column;
+} photo_settings;
+
 typedef struct scene_file {
     const char *path;           /* as given */
     const char *dir;            /* absolute folder of the file */
@@ -247,6 +263,7 @@ typedef struct scene_file {
     object_spec *objects; uint32_t n_objects; /* layouts expanded: one per CSV row */
     const char **developments; uint32_t n_developments; /* names, in order of first mention */
     ztv_settings ztv;
+    photo_settings photo;
     material_spec *materials; uint32_t n_materials;
     name_index material_names;  /* name → index into materials; owned (its table) */
     name_index species_names;   /* name → index into species; owned (its table) */

@@ -153,6 +153,7 @@ int sf_read_plants(loader *L, const ynode *node);
 int sf_read_groups(loader *L, const ynode *node);
 int sf_read_objects(loader *L, const ynode *node);
 int sf_read_ztv(loader *L); /* after the objects: its targets name their developments */
+int sf_read_photo(loader *L);
 /* The index of the development named `name` in L->sf->developments, added when new; -1 with
  * L->err set (out of memory, or more than SCENE_MAX_DEVELOPMENTS). */
 int sf_development_index(loader *L, const char *name, const char *file, uint32_t line, uint32_t column);

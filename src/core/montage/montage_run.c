@@ -1,0 +1,221 @@
+/* montage_run.c — the photomontage pipeline: plate, camera match, renders, composite, files. */
+#include "montage/montage_run.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "io/image_io.h"
+#include "io/photo.h"
+#include "montage/composite.h"
+#include "montage/control_points.h"
+#include "montage/verification_sheet.h"
+#include "montage/wireline.h"
+#include "render/camera.h"
+#include "util/progress.h"
+
+#define DEG (M_PI / 180.0)
+
+/* The camera to start from: the scene's, at the photograph's size, its focal length from the
+ * photo: section or the EXIF when the sensor width is known. */
+static void start_camera(const scene *s, const scene_file *sf, const photo *ph, camera_model *m, double *sensor)
+{
+    camera_model_from_settings(m, &s->camera, ph->width, ph->height);
+    *sensor = sf->photo.sensor_width_mm;
+    if (*sensor <= 0 && photo_sensor_width(ph, sensor) == PHOTO_SENSOR_UNKNOWN) *sensor = 0;
+    double focal = sf->photo.focal_length_mm > 0 ? sf->photo.focal_length_mm
+                 : ph->exif.has_focal_length ? ph->exif.focal_length_mm : 0;
+    if (focal > 0 && *sensor > 0) camera_model_set_focal_mm(m, focal, *sensor);
+}
+
+/* The camera matched to the points of cp, from cam (replaced by the solution). */
+static int match_camera(const scene_file *sf, const control_points *cp, const char *path, camera_model *cam,
+                        montage_report *rep, int quiet, err_buf *err)
+{
+    const double zero[3] = {0, 0, 0};
+    const double *origin = zero;
+    if (cp->map) {
+        if (!sf->site.crs_wkt)
+            return err_set(err, "%s: the control points are map coordinates, but the scene has no site: "
+                                "section to place them; add one or give x,y,z local columns", path);
+        origin = sf->site.origin;
+    }
+    unsigned free = CAMERA_FREE_ANGLES | (sf->photo.fit_focal_length ? CAMERA_FREE(CAMERA_FOCAL) : 0) |
+                    (sf->photo.fit_position ? CAMERA_FREE_POSITION : 0) |
+                    (sf->photo.fit_distortion ? CAMERA_FREE(CAMERA_K1) : 0);
+    camera_match_aim(cam, cp->points, cp->n, origin);
+    rep->match = camera_match_solve(cam, free, cp->points, cp->n, origin, err);
+    if (!rep->match) {
+        err_prefix(err, "%s: the camera cannot be matched: ", path);
+        return -1;
+    }
+    *cam = rep->match->camera;
+    if (!quiet) {
+        fprintf(stderr, "montage: camera matched to %u points: RMSE %.2f px\n", cp->n, rep->match->rmse_px);
+        for (int p = 0; p < CAMERA_PARAM_COUNT; p++)
+            if (free & CAMERA_FREE(p))
+                fprintf(stderr, "  %-14s %12.4f +- %.4f\n", camera_param_name((camera_param)p), rep->match->value[p],
+                        rep->match->sigma[p]);
+    }
+    return 0;
+}
+
+/* The horizontal distance and bearing from the camera to the middle of the development's
+ * bounding box; NAN when the scene has no development. */
+static void development_bearing(const scene *s, const double eye[3], double *dist, double *bearing)
+{
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (uint32_t o = 0; o < s->n_objects; o++) {
+        if (!s->objects[o].development) continue;
+        const xform3x4 *xf;
+        const mesh *m = scene_object_mesh(s, o, &xf);
+        for (uint32_t v = 0; m && v < m->nv; v++) {
+            vec3 p = v3(m->pos[3 * v], m->pos[3 * v + 1], m->pos[3 * v + 2]);
+            if (xf) p = xf_point(xf, p);
+            double q[3] = {p.x, p.y, p.z};
+            for (int k = 0; k < 3; k++) lo[k] = fmin(lo[k], q[k]), hi[k] = fmax(hi[k], q[k]);
+        }
+    }
+    *dist = *bearing = NAN;
+    if (!(lo[0] <= hi[0])) return;
+    double dx = 0.5 * (lo[0] + hi[0]) - eye[0], dy = 0.5 * (lo[1] + hi[1]) - eye[1];
+    *dist = hypot(dx, dy);
+    *bearing = fmod(atan2(dx, dy) / DEG + 360.0, 360.0);
+}
+
+static int write_sheet(const scene *s, const scene_file *sf, const photo *ph, const char *photo_path,
+                       const control_points *cp, const montage_report *rep, const uint8_t *wire8,
+                       const uint8_t *mont8, const char *dir, err_buf *err)
+{
+    const camera_model *c = &rep->camera;
+    const camera_match *m = rep->match;
+    uint32_t n = m && cp ? m->n_points : 0;
+    sheet_residual *res = calloc(n + 1, sizeof *res); /* freed below */
+    if (!res) return err_nomem(err, "out of memory for the verification sheet");
+    for (uint32_t i = 0; i < n; i++)
+        res[i] = (sheet_residual){cp->points[i].id, cp->points[i].pixel[0], cp->points[i].pixel[1], m->residual[i][0],
+                                  m->residual[i][1]};
+    double shift[3] = {0, 0, 0};
+    if (sf->site.crs_wkt) memcpy(shift, sf->site.origin, sizeof shift);
+    double dist, bearing;
+    development_bearing(s, c->position, &dist, &bearing);
+    char camera_name[160] = "";
+    if (ph->exif.has_make || ph->exif.has_model)
+        snprintf(camera_name, sizeof camera_name, "%s %s", ph->exif.has_make ? ph->exif.make : "",
+                 ph->exif.has_model ? ph->exif.model : "");
+    double ground;
+    double eye_above = scene_terrain_height(s, c->position[0], c->position[1], &ground) ? NAN : c->position[2] - ground;
+    verification_sheet v = {
+        .title = "Photomontage", .photo = strrchr(photo_path, '/') ? strrchr(photo_path, '/') + 1 : photo_path,
+        .crs_name = sf->site.crs_name,
+        .viewpoint = {c->position[0] + shift[0], c->position[1] + shift[1], c->position[2] + shift[2]},
+        .eye_above_ground = eye_above, .heading_deg = c->heading_deg, .pitch_deg = c->pitch_deg,
+        .roll_deg = c->roll_deg, .hfov_deg = c->fov_deg,
+        .vfov_deg = 2.0 * atan(0.5 * c->height / camera_model_focal_px(c)) / DEG,
+        .focal_mm = rep->sensor_width_mm > 0 ? camera_model_focal_mm(c, rep->sensor_width_mm) : NAN,
+        .sensor_width_mm = rep->sensor_width_mm > 0 ? rep->sensor_width_mm : NAN,
+        .focal35_mm = ph->exif.has_focal_length_35mm ? ph->exif.focal_length_35mm : NAN,
+        .camera_model = camera_name[0] ? camera_name : NULL, .k1 = c->k1, .k2 = c->k2,
+        .development_distance_m = dist, .development_bearing_deg = bearing,
+        .date_time = s->sun.date_time_utc[0] ? s->sun.date_time_utc : NULL,
+        .sun_azimuth_deg = s->sun.azimuth_deg, .sun_elevation_deg = s->sun.elevation_deg,
+        .residuals = res, .n_residuals = n, .rmse_px = m ? m->rmse_px : NAN,
+        .wireline = {c->width, c->height, wire8}, .montage = {c->width, c->height, mont8},
+        .wireline_file = "wireline.png", .montage_file = "montage.png"};
+    char html[4200], png[4200];
+    snprintf(html, sizeof html, "%s/sheet.html", dir);
+    snprintf(png, sizeof png, "%s/sheet.png", dir);
+    int rc = verification_sheet_write(&v, html, png, err);
+    free(res);
+    return rc;
+}
+
+/* The files of the montage into dir. */
+static int write_files(const scene *s, const scene_file *sf, const photo *ph, const char *photo_path,
+                       const control_points *cp, const montage_report *rep, const composite_renders *r,
+                       const float *montage, const char *dir, err_buf *err)
+{
+    uint32_t w = ph->width, h = ph->height;
+    char path[4200];
+    const float *alpha = r->full->development;
+    uint8_t *plate8 = composite_srgb8(ph->rgb, (size_t)w * h), *mont8 = composite_srgb8(montage, (size_t)w * h);
+    int rc = 0;
+    if (!plate8 || !mont8) rc = err_nomem(err, "out of memory encoding the montage");
+    snprintf(path, sizeof path, "%s/montage.png", dir);
+    if (!rc) rc = composite_write_srgb(path, w, h, montage, err);
+    snprintf(path, sizeof path, "%s/montage.exr", dir);
+    if (!rc) rc = composite_write_exr(path, w, h, montage, alpha, err);
+    snprintf(path, sizeof path, "%s/mask.png", dir);
+    if (!rc) rc = composite_write_mask(path, w, h, alpha, err);
+    snprintf(path, sizeof path, "%s/existing.png", dir);
+    if (!rc) rc = image_write_u8(path, w, h, 3, plate8, err);
+    /* the wireline over the photograph: outline red, inner edges yellow */
+    camera cam;
+    camera_init(&cam, &s->camera, w, h);
+    wireline wl = {0};
+    if (!rc) rc = wireline_find(&wl, r->full, s, &cam, err);
+    if (!rc) {
+        const uint8_t red[3] = {255, 0, 0}, yellow[3] = {255, 220, 0};
+        wireline_draw(&wl, plate8, red, yellow);
+        snprintf(path, sizeof path, "%s/wireline.png", dir);
+        rc = image_write_u8(path, w, h, 3, plate8, err);
+    }
+    if (!rc) rc = write_sheet(s, sf, ph, photo_path, cp, rep, plate8, mont8, dir, err);
+    wireline_free(&wl);
+    free(plate8);
+    free(mont8);
+    return rc;
+}
+
+int montage_run(scene *s, const scene_file *sf, const montage_options *o, montage_report *rep, err_buf *err)
+{
+    memset(rep, 0, sizeof *rep);
+    const char *photo_path = o->photo ? o->photo : sf->photo.file;
+    const char *points_path = o->points ? o->points : sf->photo.control_points;
+    if (!photo_path)
+        return err_fail(err, ERR_USAGE, "the scene has no photo: section; add one (photo: {file: view.jpg}) or "
+                                        "give --photo");
+    if (s->camera.cylindrical)
+        return err_fail(err, ERR_INPUT, "a photomontage's camera is a perspective one; the scene's camera is a "
+                                        "cylindrical panorama");
+    photo ph = {0};
+    control_points *cp = NULL;
+    composite_renders r = {0};
+    float *montage = NULL;
+    int rc = photo_read(photo_path, &ph, err);
+    camera_model cam;
+    if (!rc) start_camera(s, sf, &ph, &cam, &rep->sensor_width_mm);
+    if (!rc && points_path && !(cp = control_points_read(points_path, NULL, err))) rc = -1;
+    if (!rc && cp) rc = match_camera(sf, cp, points_path, &cam, rep, o->quiet, err);
+    if (!rc) {
+        rep->camera = cam;
+        camera_model_to_settings(&cam, &s->camera);
+        s->camera.k1 = cam.k1, s->camera.k2 = cam.k2;
+        render_options ro = {.threads = o->threads, .quiet = o->quiet, .spp = o->spp, .width = ph.width,
+                             .height = ph.height};
+        double t0 = progress_now();
+        rc = composite_render(s, &ro, &r, err);
+        rep->render_seconds = progress_now() - t0;
+    }
+    if (!rc && !(montage = malloc((size_t)ph.width * ph.height * 3 * sizeof *montage)))
+        rc = err_nomem(err, "out of memory for the montage");
+    if (!rc) {
+        composite_layers l = composite_layers_of(&r);
+        image_f32 plate = {.width = ph.width, .height = ph.height, .channels = 3, .pixels = ph.rgb};
+        rc = composite_apply(&l, &plate, (float)sf->photo.exposure, 1, montage, NULL, err);
+    }
+    if (!rc) rc = write_files(s, sf, &ph, photo_path, cp, rep, &r, montage, o->dir, err);
+    free(montage);
+    composite_renders_free(&r);
+    control_points_free(cp);
+    photo_free(&ph);
+    if (rc) montage_report_free(rep);
+    return rc;
+}
+
+void montage_report_free(montage_report *r)
+{
+    camera_match_free(r->match);
+    memset(r, 0, sizeof *r);
+}

@@ -1,0 +1,42 @@
+/* montage_run.h — a photomontage from a scene and its photograph (`sylva montage`,
+ * docs/photomontage.md): the photograph read with its EXIF, the camera matched to the control
+ * points (or the scene's camera taken as it is), the scene rendered with and without the
+ * development at the photograph's size through the matched camera (lens distortion included),
+ * the development composited into the photograph in linear light with the terrain and trees as
+ * holdouts and the shadow catcher on, and the files a reviewer needs written into a folder:
+ * montage.png and .exr, mask.png, existing.png (the photograph as it is), wireline.png and the
+ * verification sheet (sheet.html, sheet.png).
+ *
+ * The scene's camera is replaced by the matched one. Nothing else is kept.
+ */
+#ifndef SYLVA_MONTAGE_RUN_H
+#define SYLVA_MONTAGE_RUN_H
+
+#include <stdint.h>
+
+#include "montage/camera_match.h"
+#include "scene/scene.h"
+#include "scene/scene_file.h"
+#include "util/err.h"
+
+typedef struct montage_options {
+    const char *dir;           /* the output folder (must exist) */
+    const char *photo;         /* the photograph, or NULL: the scene's photo: file */
+    const char *points;        /* control points, or NULL: the scene's photo: control_points */
+    uint32_t spp;              /* 0: the scene's */
+    unsigned threads;          /* 0: one per core */
+    int quiet;
+} montage_options;
+
+typedef struct montage_report {
+    camera_model camera;       /* the camera rendered through */
+    camera_match *match;       /* the match, or NULL without control points; owned (montage_report_free) */
+    double sensor_width_mm;    /* 0: unknown */
+    double render_seconds;
+} montage_report;
+
+/* Makes the photomontage of s (built from sf). Returns 0, or -1 with err set. */
+int montage_run(scene *s, const scene_file *sf, const montage_options *o, montage_report *rep, err_buf *err);
+void montage_report_free(montage_report *r); /* accepts a zeroed one */
+
+#endif

@@ -1,0 +1,157 @@
+/* test_montage.c — a photomontage end to end (montage/montage_run.h): a scene rendered without
+ * its development stands in for the photograph; ten control points on it (ground points and
+ * tree tops, their pixels projected through the true camera) match a camera started 1.2 m,
+ * 6 degrees and 7 % of focal length away back to the true one (position within 0.5 m, angles
+ * within 0.05 degrees, focal length within 0.5 %); the development composited into that
+ * photograph matches the whole scene rendered through the true camera; every file a reviewer
+ * needs is written. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "harness.h"
+#include "io/image_io.h"
+#include "montage/composite.h"
+#include "montage/montage_run.h"
+#include "render/accel.h"
+#include "render/render.h"
+#include "scene_fixture.h"
+#include "work_dir.h"
+
+#define SCENE_BODY                                                                                   \
+    "sun: {azimuth: 330, elevation: 25}\n"                                                         \
+    "sky: {model: constant, color: [0.12, 0.15, 0.2]}\n"                                           \
+    "materials:\n"                                                                                 \
+    "  grass: {albedo: [0.22, 0.3, 0.12]}\n"                                                       \
+    "  concrete: {albedo: [0.7, 0.68, 0.62]}\n"                                                    \
+    "  bark: {albedo: [0.3, 0.2, 0.12]}\n"                                                         \
+    "  foliage: {albedo: [0.1, 0.25, 0.07]}\n"                                                     \
+    "terrain: {origin: [-60, -60], spacing: [40, 40], material: grass,\n"                          \
+    "          grid: [[0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]]}\n"                  \
+    "species:\n"                                                                                   \
+    "  trunk: {shape: box, size: [0.4, 0.4, 3], material: bark}\n"                                 \
+    "  crown: {shape: sphere, radius: 1.8, subdivisions: 3, material: foliage}\n"                  \
+    "plants:\n"                                                                                    \
+    "  - {species: trunk, position: [-1.5, 3, 0]}\n"                                               \
+    "  - {species: crown, position: [-1.5, 3, 4]}\n"                                               \
+    "  - {species: trunk, position: [2.5, 1, 0]}\n"                                                \
+    "  - {species: crown, position: [2.5, 1, 3.6]}\n"                                              \
+    "  - {species: trunk, position: [9, 4, 0]}\n"                                                  \
+    "  - {species: crown, position: [9, 4, 4.2]}\n"                                                \
+    "  - {species: trunk, position: [-1, 8.5, 0], scale: 1.6}\n"                                   \
+    "  - {species: crown, position: [-1, 8.5, 6.5], scale: 1.3}\n"                                 \
+    "objects:\n"                                                                                   \
+    "  - {name: hall, shape: box, size: [8, 5, 7], position: [0, 12, 3.5], material: concrete,\n" \
+    "     development: true}\n"
+
+/* the true camera, and the photograph's size and samples */
+#define TRUE_CAMERA "camera: {position: [3, -12, 6.5], heading: 3, pitch: -14.5, roll: 0.8, fov: 62}\n"
+#define IMAGE "image: {width: 192, height: 120, spp: 64, seed: 11, max_depth: 3}\n"
+
+static double mae(const float *a, const float *b, size_t n)
+{
+    double s = 0;
+    for (size_t i = 0; i < n; i++) s += fabs((double)a[i] - b[i]);
+    return s / n;
+}
+
+TEST(photograph_to_montage)
+{
+    err_buf err = {{0}};
+    /* the "photograph": the scene without its development, another seed, as 8-bit sRGB */
+    scene *truth = fixture_scene(work_file("truth.yaml", IMAGE TRUE_CAMERA SCENE_BODY));
+    if (!truth) return;
+    render_options ro = {.threads = 2, .quiet = 1, .seed_set = 1, .seed = 99, .leave_out = ACCEL_MASK_DEVELOPMENT};
+    film *photo = render_scene(truth, &ro, NULL, &err);
+    CHECK(photo != NULL);
+    if (!photo) return;
+    char dir[4096], plate[4096], gcp[4096];
+    snprintf(plate, sizeof plate, "%s", work_path("plate.png"));
+    CHECK_INT(composite_write_srgb(plate, photo->width, photo->height, photo->rgb, &err), 0);
+    /* ten control points seen in it: ground points and the tops of the crowns */
+    const double world[10][3] = {{-10, 20, 0}, {15, 25, 0}, {-3, 1, 0}, {10, -2, 0}, {0, 30, 0},
+                                 {-1.5, 3, 5.8}, {2.5, 1, 5.4}, {9, 4, 6}, {-1, 8.5, 6.5}, {16, 12, 0}};
+    camera_model cam;
+    camera_model_from_settings(&cam, &truth->camera, photo->width, photo->height);
+    FILE *f = fopen(work_path("gcp.csv"), "w");
+    CHECK(f != NULL);
+    if (!f) return;
+    fprintf(f, "id,u,v,x,y,z\n");
+    for (int i = 0; i < 10; i++) {
+        double px[2];
+        CHECK_INT(camera_project(&cam, world[i], px), 0);
+        CHECK(px[0] > 0 && px[0] < photo->width && px[1] > 0 && px[1] < photo->height);
+        fprintf(f, "p%d,%.4f,%.4f,%g,%g,%g\n", i, px[0], px[1], world[i][0], world[i][1], world[i][2]);
+    }
+    fclose(f);
+    snprintf(gcp, sizeof gcp, "%s", work_path("gcp.csv"));
+    film_free(photo);
+
+    /* the montage's scene: the camera started away from the truth, the focal length 7 % off */
+    char text[8192];
+    snprintf(text, sizeof text,
+             IMAGE "camera: {position: [3.8, -11.2, 6.9], heading: 7, pitch: -12.5, fov: 58}\n"
+             "photo: {file: %s, control_points: %s, fit_position: true}\n" SCENE_BODY, plate, gcp);
+    const char *path = work_file("montage.yaml", text);
+    scene_file *sf = scene_file_load(path, NULL, &err);
+    if (!sf) fprintf(stderr, "%s\n", err.msg);
+    CHECK(sf != NULL);
+    if (!sf) return;
+    build_options bo = {.quiet = 1};
+    scene *s = scene_build(sf, NULL, &bo, &err);
+    CHECK(s != NULL);
+    snprintf(dir, sizeof dir, "%s", work_path("out"));
+    mkdir(dir, 0700);
+    montage_options mo = {.dir = dir, .threads = 2, .quiet = 1};
+    montage_report rep;
+    int rc = s ? montage_run(s, sf, &mo, &rep, &err) : -1;
+    if (rc) fprintf(stderr, "%s\n", err.msg);
+    CHECK_INT(rc, 0);
+    if (!rc) {
+        const camera_model *c = &rep.camera;
+        double dp = sqrt(pow(c->position[0] - cam.position[0], 2) + pow(c->position[1] - cam.position[1], 2) +
+                         pow(c->position[2] - cam.position[2], 2));
+        double df = fabs(camera_model_focal_px(c) / camera_model_focal_px(&cam) - 1);
+        fprintf(stderr, "matched: position off %.4f m, heading %.4f, pitch %.4f, roll %.4f deg, focal %.4f %%, "
+                        "RMSE %.4f px\n", dp, c->heading_deg - cam.heading_deg, c->pitch_deg - cam.pitch_deg,
+                c->roll_deg - cam.roll_deg, 100 * df, rep.match->rmse_px);
+        CHECK(dp < 0.5);
+        CHECK(fabs(c->heading_deg - cam.heading_deg) < 0.05 && fabs(c->pitch_deg - cam.pitch_deg) < 0.05 &&
+              fabs(c->roll_deg - cam.roll_deg) < 0.05);
+        CHECK(df < 0.005);
+        /* the montage against the whole scene rendered through the true camera */
+        render_options whole = {.threads = 2, .quiet = 1};
+        film *ref = render_scene(truth, &whole, NULL, &err);
+        image_f32 got = {0};
+        char exr[4200];
+        snprintf(exr, sizeof exr, "%s/montage.exr", dir);
+        CHECK_INT(image_read(exr, &got, &err), 0);
+        if (ref && got.pixels && got.width == ref->width) {
+            size_t n = (size_t)ref->width * ref->height;
+            float *rgb = malloc(n * 3 * sizeof *rgb);
+            for (size_t k = 0; rgb && k < n; k++)
+                for (int ch = 0; ch < 3; ch++) rgb[3 * k + ch] = got.pixels[k * got.channels + ch];
+            double e = rgb ? mae(rgb, ref->rgb, n * 3) : 1;
+            fprintf(stderr, "montage against the whole render: MAE %.5f (linear)\n", e);
+            CHECK(e < 0.006); /* noise of two 64-spp renders and the photograph's 8-bit steps */
+            free(rgb);
+        }
+        image_free(&got);
+        film_free(ref);
+        const char *files[] = {"montage.png", "montage.exr", "mask.png", "existing.png", "wireline.png",
+                               "sheet.html", "sheet.png"};
+        for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+            char p[4200];
+            struct stat st;
+            snprintf(p, sizeof p, "%s/%s", dir, files[i]);
+            CHECK(stat(p, &st) == 0 && st.st_size > 0);
+        }
+        montage_report_free(&rep);
+    }
+    scene_free(s);
+    scene_file_free(sf);
+    scene_free(truth);
+}
+
+TEST_LIST(TEST_CASE(photograph_to_montage))

@@ -2,7 +2,8 @@
  * its development stands in for the photograph; ten control points on it (ground points and
  * tree tops, their pixels projected through the true camera) match a camera started 1.2 m,
  * 6 degrees and 7 % of focal length away back to the true one (position within 0.5 m, angles
- * within 0.05 degrees, focal length within 0.5 %); the development composited into that
+ * within 0.05 degrees, focal length within 0.5 %), with a pinhole and with a lens of barrel
+ * distortion (rendered through it, fitted back); the development composited into that
  * photograph matches the whole scene rendered through the true camera; every file a reviewer
  * needs is written. */
 #include <math.h>
@@ -15,6 +16,7 @@
 #include "montage/composite.h"
 #include "montage/montage_run.h"
 #include "render/accel.h"
+#include "render/camera.h"
 #include "render/render.h"
 #include "scene_fixture.h"
 #include "work_dir.h"
@@ -56,12 +58,15 @@ static double mae(const float *a, const float *b, size_t n)
     return s / n;
 }
 
-TEST(photograph_to_montage)
+/* The whole round trip with a lens of radial distortion k1 (0: a pinhole): the photograph is
+ * rendered through it, the match fits it (fit_distortion) and the montage is rendered with it. */
+static void round_trip(double k1)
 {
     err_buf err = {{0}};
     /* the "photograph": the scene without its development, another seed, as 8-bit sRGB */
     scene *truth = fixture_scene(work_file("truth.yaml", IMAGE TRUE_CAMERA SCENE_BODY));
     if (!truth) return;
+    truth->camera.k1 = k1;
     render_options ro = {.threads = 2, .quiet = 1, .seed_set = 1, .seed = 99, .leave_out = ACCEL_MASK_DEVELOPMENT};
     film *photo = render_scene(truth, &ro, NULL, &err);
     CHECK(photo != NULL);
@@ -74,6 +79,7 @@ TEST(photograph_to_montage)
                                  {-1.5, 3, 5.8}, {2.5, 1, 5.4}, {9, 4, 6}, {-1, 8.5, 6.5}, {16, 12, 0}};
     camera_model cam;
     camera_model_from_settings(&cam, &truth->camera, photo->width, photo->height);
+    cam.k1 = k1;
     FILE *f = fopen(work_path("gcp.csv"), "w");
     CHECK(f != NULL);
     if (!f) return;
@@ -92,7 +98,8 @@ TEST(photograph_to_montage)
     char text[8192];
     snprintf(text, sizeof text,
              IMAGE "camera: {position: [3.8, -11.2, 6.9], heading: 7, pitch: -12.5, fov: 58}\n"
-             "photo: {file: %s, control_points: %s, fit_position: true}\n" SCENE_BODY, plate, gcp);
+             "photo: {file: %s, control_points: %s, fit_position: true, fit_distortion: %s}\n" SCENE_BODY, plate,
+             gcp, k1 != 0 ? "true" : "false");
     const char *path = work_file("montage.yaml", text);
     scene_file *sf = scene_file_load(path, NULL, &err);
     if (!sf) fprintf(stderr, "%s\n", err.msg);
@@ -114,8 +121,9 @@ TEST(photograph_to_montage)
                          pow(c->position[2] - cam.position[2], 2));
         double df = fabs(camera_model_focal_px(c) / camera_model_focal_px(&cam) - 1);
         fprintf(stderr, "matched: position off %.4f m, heading %.4f, pitch %.4f, roll %.4f deg, focal %.4f %%, "
-                        "RMSE %.4f px\n", dp, c->heading_deg - cam.heading_deg, c->pitch_deg - cam.pitch_deg,
-                c->roll_deg - cam.roll_deg, 100 * df, rep.match->rmse_px);
+                        "k1 %.5f (true %.5f), RMSE %.4f px\n", dp, c->heading_deg - cam.heading_deg,
+                c->pitch_deg - cam.pitch_deg, c->roll_deg - cam.roll_deg, 100 * df, c->k1, k1, rep.match->rmse_px);
+        CHECK(fabs(c->k1 - k1) < 1e-3);
         CHECK(dp < 0.5);
         CHECK(fabs(c->heading_deg - cam.heading_deg) < 0.05 && fabs(c->pitch_deg - cam.pitch_deg) < 0.05 &&
               fabs(c->roll_deg - cam.roll_deg) < 0.05);
@@ -154,4 +162,38 @@ TEST(photograph_to_montage)
     scene_free(truth);
 }
 
-TEST_LIST(TEST_CASE(photograph_to_montage))
+/* The renderer's rays go through the lens as the camera model projects: a point along the ray of
+ * pixel (x, y) projects back onto (x, y). */
+TEST(renderer_rays_follow_the_lens)
+{
+    camera_settings cs = {.position = {1, 2, 3}, .direction = {0.2, 1, -0.1}, .up = {0, 0, 1}, .fov_deg = 62,
+                          .k1 = -0.08, .k2 = 0.01};
+    camera c;
+    camera_init(&c, &cs, 192, 120);
+    CHECK(c.distorted);
+    camera_model m;
+    camera_model_from_settings(&m, &cs, 192, 120);
+    m.k1 = cs.k1, m.k2 = cs.k2;
+    double worst = 0;
+    for (float y = 0.5f; y < 120; y += 17)
+        for (float x = 0.5f; x < 192; x += 23) {
+            vec3 d = camera_direction(&c, x, y);
+            double p[3] = {1 + 40.0 * d.x, 2 + 40.0 * d.y, 3 + 40.0 * d.z}, px[2];
+            CHECK_INT(camera_project(&m, p, px), 0);
+            worst = fmax(worst, hypot(px[0] - x, px[1] - y));
+        }
+    CHECK(worst < 1e-2);
+    /* and the lens bends: the corner ray is not the pinhole's */
+    camera pin;
+    cs.k1 = cs.k2 = 0;
+    camera_init(&pin, &cs, 192, 120);
+    vec3 a = camera_direction(&c, 0.5f, 0.5f), b = camera_direction(&pin, 0.5f, 0.5f);
+    CHECK(v3_dot(a, b) < 0.9999f);
+}
+
+TEST(photograph_to_montage) { round_trip(0.0); }
+
+/* A lens that bends straight lines (barrel distortion): the montage is rendered through it. */
+TEST(photograph_with_lens_distortion) { round_trip(-0.08); }
+
+TEST_LIST(TEST_CASE(renderer_rays_follow_the_lens), TEST_CASE(photograph_to_montage), TEST_CASE(photograph_with_lens_distortion))

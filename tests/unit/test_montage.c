@@ -4,8 +4,8 @@
  * 6 degrees and 7 % of focal length away back to the true one (position within 0.5 m, angles
  * within 0.05 degrees, focal length within 0.5 %), with a pinhole and with a lens of barrel
  * distortion (rendered through it, fitted back); the development composited into that
- * photograph matches the whole scene rendered through the true camera; every file a reviewer
- * needs is written. */
+ * photograph matches the whole scene rendered through the true camera, and so it does into a
+ * cylindrical panorama; every file a reviewer needs is written. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -196,4 +196,64 @@ TEST(photograph_to_montage) { round_trip(0.0); }
 /* A lens that bends straight lines (barrel distortion): the montage is rendered through it. */
 TEST(photograph_with_lens_distortion) { round_trip(-0.08); }
 
-TEST_LIST(TEST_CASE(renderer_rays_follow_the_lens), TEST_CASE(photograph_to_montage), TEST_CASE(photograph_with_lens_distortion))
+/* A cylindrical panorama (120 degrees across) as the photograph: rendered and composited
+ * through the scene's camera as it is; control points are refused for it. */
+TEST(panorama_montage)
+{
+    err_buf err = {{0}};
+#define PANO_CAMERA "camera: {position: [3, -12, 6.5], heading: 3, pitch: -10, projection: cylindrical, fov: 120}\n"
+#define PANO_IMAGE "image: {width: 240, height: 80, spp: 64, seed: 11, max_depth: 3}\n"
+    scene *truth = fixture_scene(work_file("pano_truth.yaml", PANO_IMAGE PANO_CAMERA SCENE_BODY));
+    if (!truth) return;
+    render_options ro = {.threads = 2, .quiet = 1, .seed_set = 1, .seed = 99, .leave_out = ACCEL_MASK_DEVELOPMENT};
+    film *photo = render_scene(truth, &ro, NULL, &err);
+    render_options whole = {.threads = 2, .quiet = 1};
+    film *ref = render_scene(truth, &whole, NULL, &err);
+    CHECK(photo && ref);
+    if (!photo || !ref) return;
+    char plate[4096], dir[4096], text[8192];
+    snprintf(plate, sizeof plate, "%s", work_path("pano.png"));
+    CHECK_INT(composite_write_srgb(plate, photo->width, photo->height, photo->rgb, &err), 0);
+    snprintf(text, sizeof text, PANO_IMAGE PANO_CAMERA "photo: {file: %s}\n" SCENE_BODY, plate);
+    scene_file *sf = scene_file_load(work_file("pano.yaml", text), NULL, &err);
+    CHECK(sf != NULL);
+    build_options bo = {.quiet = 1};
+    scene *s = sf ? scene_build(sf, NULL, &bo, &err) : NULL;
+    CHECK(s != NULL);
+    snprintf(dir, sizeof dir, "%s", work_path("pano_out"));
+    mkdir(dir, 0700);
+    montage_options mo = {.dir = dir, .threads = 2, .quiet = 1};
+    montage_report rep;
+    int rc = s ? montage_run(s, sf, &mo, &rep, &err) : -1;
+    if (rc) fprintf(stderr, "%s\n", err.msg);
+    CHECK_INT(rc, 0);
+    if (!rc) {
+        image_f32 got = {0};
+        char exr[4200];
+        snprintf(exr, sizeof exr, "%s/montage.exr", dir);
+        CHECK_INT(image_read(exr, &got, &err), 0);
+        size_t n = (size_t)ref->width * ref->height;
+        float *rgb = malloc(n * 3 * sizeof *rgb);
+        for (size_t k = 0; rgb && got.pixels && k < n; k++)
+            for (int ch = 0; ch < 3; ch++) rgb[3 * k + ch] = got.pixels[k * got.channels + ch];
+        double e = rgb && got.pixels ? mae(rgb, ref->rgb, n * 3) : 1;
+        fprintf(stderr, "panorama montage against the whole render: MAE %.5f (linear)\n", e);
+        CHECK(e < 0.006);
+        free(rgb);
+        image_free(&got);
+        montage_report_free(&rep);
+    }
+    /* control points cannot match a panorama */
+    if (s) {
+        mo.points = work_file("pano_gcp.csv", "u,v,x,y,z\n1,2,3,4,5\n");
+        CHECK_INT(montage_run(s, sf, &mo, &rep, &err), -1);
+        CHECK_STR_CONTAINS(err.msg, "the camera match solves a perspective camera");
+    }
+    scene_free(s);
+    scene_file_free(sf);
+    film_free(photo);
+    film_free(ref);
+    scene_free(truth);
+}
+
+TEST_LIST(TEST_CASE(renderer_rays_follow_the_lens), TEST_CASE(panorama_montage), TEST_CASE(photograph_to_montage), TEST_CASE(photograph_with_lens_distortion))

@@ -112,8 +112,11 @@ static int write_sheet(const scene *s, const scene_file *sf, const photo *ph, co
         .viewpoint = {c->position[0] + shift[0], c->position[1] + shift[1], c->position[2] + shift[2]},
         .eye_above_ground = eye_above, .heading_deg = c->heading_deg, .pitch_deg = c->pitch_deg,
         .roll_deg = c->roll_deg, .hfov_deg = c->fov_deg,
-        .vfov_deg = 2.0 * atan(0.5 * c->height / camera_model_focal_px(c)) / DEG,
-        .focal_mm = rep->sensor_width_mm > 0 ? camera_model_focal_mm(c, rep->sensor_width_mm) : NAN,
+        .cylindrical = s->camera.cylindrical,
+        .vfov_deg = s->camera.cylindrical ? 2.0 * atan(0.5 * c->fov_deg * DEG * c->height / c->width) / DEG
+                                          : 2.0 * atan(0.5 * c->height / camera_model_focal_px(c)) / DEG,
+        .focal_mm = rep->sensor_width_mm > 0 && !s->camera.cylindrical ? camera_model_focal_mm(c, rep->sensor_width_mm)
+                                                                        : NAN,
         .sensor_width_mm = rep->sensor_width_mm > 0 ? rep->sensor_width_mm : NAN,
         .focal35_mm = ph->exif.has_focal_length_35mm ? ph->exif.focal_length_35mm : NAN,
         .camera_model = camera_name[0] ? camera_name : NULL, .k1 = c->k1, .k2 = c->k2,
@@ -176,22 +179,27 @@ int montage_run(scene *s, const scene_file *sf, const montage_options *o, montag
     if (!photo_path)
         return err_fail(err, ERR_USAGE, "the scene has no photo: section; add one (photo: {file: view.jpg}) or "
                                         "give --photo");
-    if (s->camera.cylindrical)
-        return err_fail(err, ERR_INPUT, "a photomontage's camera is a perspective one; the scene's camera is a "
-                                        "cylindrical panorama");
+    int panorama = s->camera.cylindrical;
+    if (panorama && points_path)
+        return err_fail(err, ERR_INPUT, "%s: the camera match solves a perspective camera, and the scene's camera "
+                                        "is a cylindrical panorama; give the panorama's camera without control "
+                                        "points, or match a single frame", points_path);
     photo ph = {0};
     control_points *cp = NULL;
     composite_renders r = {0};
     float *montage = NULL;
     int rc = photo_read(photo_path, &ph, err);
     camera_model cam;
-    if (!rc) start_camera(s, sf, &ph, &cam, &rep->sensor_width_mm);
+    if (!rc && panorama) camera_model_from_settings(&cam, &s->camera, ph.width, ph.height); /* for the sheet */
+    if (!rc && !panorama) start_camera(s, sf, &ph, &cam, &rep->sensor_width_mm);
     if (!rc && points_path && !(cp = control_points_read(points_path, NULL, err))) rc = -1;
     if (!rc && cp) rc = match_camera(sf, cp, points_path, &cam, rep, o->quiet, err);
     if (!rc) {
         rep->camera = cam;
-        camera_model_to_settings(&cam, &s->camera);
-        s->camera.k1 = cam.k1, s->camera.k2 = cam.k2;
+        if (!panorama) { /* a panorama is rendered through the scene's camera as it is */
+            camera_model_to_settings(&cam, &s->camera);
+            s->camera.k1 = cam.k1, s->camera.k2 = cam.k2;
+        }
         render_options ro = {.threads = o->threads, .quiet = o->quiet, .spp = o->spp, .width = ph.width,
                              .height = ph.height};
         double t0 = progress_now();

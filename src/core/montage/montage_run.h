@@ -7,7 +7,9 @@
  * montage.png and .exr, mask.png, existing.png (the photograph as it is), wireline.png and the
  * verification sheet (sheet.html, sheet.png).
  *
- * The scene's camera is replaced by the matched one. Nothing else is kept.
+ * The scene's camera is replaced by the matched one. A cylindrical panorama (the context views
+ * photomontage guidance asks for) is rendered and composited through the scene's camera as it
+ * is: the match solves perspective cameras only. Nothing else is kept.
  */
 #ifndef SYLVA_MONTAGE_RUN_H
 #define SYLVA_MONTAGE_RUN_H

@@ -15,6 +15,7 @@
 #include "io/image_io.h"
 #include "montage/composite.h"
 #include "montage/montage_run.h"
+#include "montage/wireline.h"
 #include "render/accel.h"
 #include "render/camera.h"
 #include "render/render.h"
@@ -256,4 +257,48 @@ TEST(panorama_montage)
     scene_free(truth);
 }
 
-TEST_LIST(TEST_CASE(renderer_rays_follow_the_lens), TEST_CASE(panorama_montage), TEST_CASE(photograph_to_montage), TEST_CASE(photograph_with_lens_distortion))
+/* New planting is part of the development: a plant marked `development: true` is composited
+ * with it (its coverage and radiance in the development's layers), left out of the render
+ * without it, and outlined by the wireline; the other plants are not. */
+TEST(new_planting_is_part_of_the_development)
+{
+    scene *s = fixture_scene(work_file("planting.yaml",
+        "image: {width: 96, height: 64, spp: 4, seed: 1}\n"
+        "camera: {position: [0, -20, 3], look_at: [0, 0, 2], fov: 50}\n"
+        "terrain: {grid: [[0, 0], [0, 0]], origin: [-50, -50], spacing: [100, 100]}\n"
+        "species: {hedge: {shape: box, size: [2, 2, 6]}}\n"
+        "plants:\n"
+        "  - {species: hedge, position: [-4, 0], development: true}\n"
+        "  - {species: hedge, position: [4, 0]}\n"));
+    if (!s) return;
+    err_buf err = {{0}};
+    render_options ro = {.threads = 2, .quiet = 1};
+    composite_renders r;
+    CHECK_INT(composite_render(s, &ro, &r, &err), 0);
+    if (!r.full) return;
+    /* coverage on the left (the new hedge), none on the right (the old one) */
+    double left = 0, right = 0;
+    for (uint32_t y = 0; y < 64; y++)
+        for (uint32_t x = 0; x < 96; x++) {
+            float a = r.full->development[y * 96 + x];
+            if (x < 48) left += a;
+            else right += a;
+        }
+    CHECK(left > 50 && right == 0);
+    /* left out of the render without the development: the background there is the ground */
+    uint32_t differs = 0;
+    for (uint32_t k = 0; k < 96 * 64; k++) differs += r.full->development[k] > 0.99f && r.background->object_id[k] == 0 &&
+                                                      r.background->instance_id[k] == 0;
+    CHECK(differs > 50);
+    camera cam;
+    camera_init(&cam, &s->camera, 96, 64);
+    wireline w;
+    CHECK_INT(wireline_find(&w, r.full, s, &cam, &err), 0);
+    CHECK(w.outline > 20);
+    wireline_free(&w);
+    composite_renders_free(&r);
+    scene_free(s);
+}
+
+TEST_LIST(TEST_CASE(renderer_rays_follow_the_lens), TEST_CASE(new_planting_is_part_of_the_development),
+          TEST_CASE(panorama_montage), TEST_CASE(photograph_to_montage), TEST_CASE(photograph_with_lens_distortion))

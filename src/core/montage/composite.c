@@ -16,9 +16,10 @@ int composite_render(const scene *s, const render_options *opt, composite_render
     *out = (composite_renders){0};
     uint32_t dev = 0;
     for (uint32_t o = 0; o < s->n_objects; o++) dev += s->objects[o].development != 0;
+    for (uint32_t i = 0; i < s->n_instances && !dev; i++) dev += s->instances[i].development != 0;
     if (!dev)
-        return err_set(err, "the scene has no development to composite: mark its objects `development: true` "
-                       "(or give them a development_name)");
+        return err_set(err, "the scene has no development to composite: mark its objects (or its new "
+                       "plants) `development: true`");
     uint32_t w = opt->width ? opt->width : s->image.width, h = opt->height ? opt->height : s->image.height;
     char what[96];
     snprintf(what, sizeof what, "a montage's pair of %ux%u frames", w, h);

@@ -5,11 +5,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The development object a pixel shows (object index + 1), or 0. */
+/* The part of the development a pixel shows: its object (index + 1), its new plant (beyond the
+ * objects: n_objects + instance index + 1), or 0. */
 static uint32_t development_at(const film *f, const scene *s, size_t k)
 {
-    uint32_t id = f->object_id[k];
-    return id && id <= s->n_objects && s->objects[id - 1].development ? id : 0;
+    uint32_t id = f->object_id[k], in = f->instance_id[k];
+    if (id) return id <= s->n_objects && s->objects[id - 1].development ? id : 0;
+    return in && in <= s->n_instances && s->instances[in - 1].development ? s->n_objects + in : 0;
 }
 
 /* The point pixel (x, y) shows, relative to the camera, from the depth layer; its distance. */

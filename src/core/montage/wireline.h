@@ -3,7 +3,7 @@
  * against the view.
  *
  * The edges are found in the rendered frame's centre-ray layers (render/film.h): a pixel that
- * shows a development object is on the outline when a neighbour (left, right, above, below)
+ * shows a development object (or its new planting) is on the outline when a neighbour (left, right, above, below)
  * shows anything else (the sky, the ground, a tree in front, another object), and on an inner
  * edge when a neighbour shows another part of the development, a face turned more than
  * WIRELINE_CREASE_DEG from its own, or a point off the pixel's own surface by more than

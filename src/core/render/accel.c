@@ -196,7 +196,7 @@ static int build_top(accel *a, const scene *s, err_buf *err)
     }
     for (uint32_t i = 0; i < s->n_instances; i++)
         if (add_instance(a, a->proto_scenes[s->instances[i].prototype], &s->instances[i].xf, a->first_instance + i,
-                         ACCEL_MASK_PLANT, err))
+                         s->instances[i].development ? ACCEL_MASK_DEVELOPMENT : ACCEL_MASK_PLANT, err))
             return -1;
     rtcCommitScene(a->top);
     return accel_device_error(a, err);

@@ -53,7 +53,7 @@ enum {
     ACCEL_MASK_GROUND = 1u,      /* the terrain, its apron and the water surfaces */
     ACCEL_MASK_PLANT = 2u,       /* the plant instances */
     ACCEL_MASK_OBJECT = 4u,      /* objects that are not part of a development */
-    ACCEL_MASK_DEVELOPMENT = 8u  /* objects of a development */
+    ACCEL_MASK_DEVELOPMENT = 8u  /* objects of a development, and its new planting */
 };
 
 typedef enum geom_kind { GEOM_TERRAIN = 1, GEOM_WATER, GEOM_OBJECT, GEOM_PROTOTYPE } geom_kind;

@@ -89,7 +89,10 @@ static vec3 offset_point(vec3 p, vec3 ng, vec3 d)
 static int on_development(const accel *a, const struct RTCRayHit *rh)
 {
     uint32_t o = accel_hit_object(a, rh);
-    return o && a->scene->objects[o - 1].development;
+    if (o) return a->scene->objects[o - 1].development != 0;
+    unsigned inst = rh->hit.instID[0];
+    return inst != RTC_INVALID_GEOMETRY_ID && inst >= a->first_instance &&
+           a->scene->instances[inst - a->first_instance].development;
 }
 
 /* *hit: 0 when the camera ray hit nothing, 1 when it hit a surface, 2 when that surface is part

@@ -418,6 +418,9 @@ static const sylva_param_spec plant_params[] = {
     {.name = "height_above_ground", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0,
      .min = -10000, .max = 10000, .unit = "m",
      .help = "Height of the plant's base above the terrain at [x, y] (a plant on a roof)."},
+    {.name = "development", .type = SYLVA_P_BOOL, .def = 0,
+     .help = "New planting, part of the development: composited into a photomontage with it, left out "
+             "of the existing view."},
 };
 const host_schema host_schema_plant = {"plants item", "One plant placed by hand.", plant_params,
                                        COUNT(plant_params)};

@@ -51,6 +51,7 @@ typedef struct species {
 typedef struct instance {
     uint32_t prototype;
     xform3x4 xf;              /* prototype frame → world */
+    int development;          /* 1: new planting, part of the development (plants: development: true) */
 } instance;
 
 /* A mesh that several objects share: an imported model file or a part of a group. Objects

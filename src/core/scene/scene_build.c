@@ -209,6 +209,7 @@ static int build_plants(scene *s, const scene_file *sf, err_buf *err)
             err_prefix(err, "plant %u: ", i);
             return err_locate(err, sf->path, p->line, p->column);
         }
+        s->instances[s->n_instances - 1].development = p->development;
     }
     return 0;
 }

@@ -182,6 +182,7 @@ typedef struct plant_spec {
     double rotation_deg;      /* about +Z */
     double scale;
     double age;               /* (0, 1] */
+    int development;          /* 1: new planting, part of the development */
     uint32_t line, column;
 } plant_spec;
 

@@ -58,6 +58,7 @@ int sf_read_plants(loader *L, const ynode *node)
         pl->rotation_deg = sylva_param_real(p, "rotation");
         pl->scale = sylva_param_real(p, "scale");
         pl->age = sylva_param_real(p, "age");
+        pl->development = (int)sylva_param(p, "development")->i;
         pl->line = item->line, pl->column = item->column;
         sf->n_plants++;
     }

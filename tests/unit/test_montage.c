@@ -5,7 +5,8 @@
  * within 0.05 degrees, focal length within 0.5 %), with a pinhole and with a lens of barrel
  * distortion (rendered through it, fitted back); the development composited into that
  * photograph matches the whole scene rendered through the true camera, and so it does into a
- * cylindrical panorama; every file a reviewer needs is written. */
+ * cylindrical panorama; every file a reviewer needs is written. Also: the start camera from a
+ * real photograph's EXIF GPS, and new planting as part of the development. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -69,17 +70,17 @@ static void round_trip(double k1)
     if (!truth) return;
     truth->camera.k1 = k1;
     render_options ro = {.threads = 2, .quiet = 1, .seed_set = 1, .seed = 99, .leave_out = ACCEL_MASK_DEVELOPMENT};
-    film *photo = render_scene(truth, &ro, NULL, &err);
-    CHECK(photo != NULL);
-    if (!photo) return;
+    film *shot = render_scene(truth, &ro, NULL, &err);
+    CHECK(shot != NULL);
+    if (!shot) return;
     char dir[4096], plate[4096], gcp[4096];
     snprintf(plate, sizeof plate, "%s", work_path("plate.png"));
-    CHECK_INT(composite_write_srgb(plate, photo->width, photo->height, photo->rgb, &err), 0);
+    CHECK_INT(composite_write_srgb(plate, shot->width, shot->height, shot->rgb, &err), 0);
     /* ten control points seen in it: ground points and the tops of the crowns */
     const double world[10][3] = {{-10, 20, 0}, {15, 25, 0}, {-3, 1, 0}, {10, -2, 0}, {0, 30, 0},
                                  {-1.5, 3, 5.8}, {2.5, 1, 5.4}, {9, 4, 6}, {-1, 8.5, 6.5}, {16, 12, 0}};
     camera_model cam;
-    camera_model_from_settings(&cam, &truth->camera, photo->width, photo->height);
+    camera_model_from_settings(&cam, &truth->camera, shot->width, shot->height);
     cam.k1 = k1;
     FILE *f = fopen(work_path("gcp.csv"), "w");
     CHECK(f != NULL);
@@ -88,12 +89,12 @@ static void round_trip(double k1)
     for (int i = 0; i < 10; i++) {
         double px[2];
         CHECK_INT(camera_project(&cam, world[i], px), 0);
-        CHECK(px[0] > 0 && px[0] < photo->width && px[1] > 0 && px[1] < photo->height);
+        CHECK(px[0] > 0 && px[0] < shot->width && px[1] > 0 && px[1] < shot->height);
         fprintf(f, "p%d,%.4f,%.4f,%g,%g,%g\n", i, px[0], px[1], world[i][0], world[i][1], world[i][2]);
     }
     fclose(f);
     snprintf(gcp, sizeof gcp, "%s", work_path("gcp.csv"));
-    film_free(photo);
+    film_free(shot);
 
     /* the montage's scene: the camera started away from the truth, the focal length 7 % off */
     char text[8192];
@@ -207,14 +208,14 @@ TEST(panorama_montage)
     scene *truth = fixture_scene(work_file("pano_truth.yaml", PANO_IMAGE PANO_CAMERA SCENE_BODY));
     if (!truth) return;
     render_options ro = {.threads = 2, .quiet = 1, .seed_set = 1, .seed = 99, .leave_out = ACCEL_MASK_DEVELOPMENT};
-    film *photo = render_scene(truth, &ro, NULL, &err);
+    film *shot = render_scene(truth, &ro, NULL, &err);
     render_options whole = {.threads = 2, .quiet = 1};
     film *ref = render_scene(truth, &whole, NULL, &err);
-    CHECK(photo && ref);
-    if (!photo || !ref) return;
+    CHECK(shot && ref);
+    if (!shot || !ref) return;
     char plate[4096], dir[4096], text[8192];
     snprintf(plate, sizeof plate, "%s", work_path("pano.png"));
-    CHECK_INT(composite_write_srgb(plate, photo->width, photo->height, photo->rgb, &err), 0);
+    CHECK_INT(composite_write_srgb(plate, shot->width, shot->height, shot->rgb, &err), 0);
     snprintf(text, sizeof text, PANO_IMAGE PANO_CAMERA "photo: {file: %s}\n" SCENE_BODY, plate);
     scene_file *sf = scene_file_load(work_file("pano.yaml", text), NULL, &err);
     CHECK(sf != NULL);
@@ -252,7 +253,7 @@ TEST(panorama_montage)
     }
     scene_free(s);
     scene_file_free(sf);
-    film_free(photo);
+    film_free(shot);
     film_free(ref);
     scene_free(truth);
 }
@@ -300,5 +301,46 @@ TEST(new_planting_is_part_of_the_development)
     scene_free(s);
 }
 
-TEST_LIST(TEST_CASE(renderer_rays_follow_the_lens), TEST_CASE(new_planting_is_part_of_the_development),
+/* camera_from_exif: the match starts at the photograph's GPS position, altitude and direction
+ * (the iPhone 6s photograph of ../shared/data: 52.2096778 N, 0.8955306 W, 103.64 m, 109.81 deg;
+ * gdaltransform puts it at E 643788.979, N 5786446.821 in UTM zone 30N), with the focal length
+ * of its EXIF on the sensor width its 35 mm equivalent gives. */
+TEST(start_camera_from_exif)
+{
+    const char *train = SYLVA_SHARED_DATA_DIR "/photos/lychee/train.jpg";
+    FILE *probe = fopen(train, "rb");
+    if (!probe) {
+        SKIP("no shared data (../shared/data/photos)");
+        return;
+    }
+    fclose(probe);
+    err_buf err = {{0}};
+    char text[2048];
+    snprintf(text, sizeof text,
+             "site: {crs: EPSG:32630, origin: [643000, 5786000]}\n"
+             "camera: {position: [0, 0, 2], heading: 0, fov: 40}\n"
+             "photo: {file: %s, camera_from_exif: true}\n", train);
+    scene_file *sf = scene_file_load(work_file("exif.yaml", text), NULL, &err);
+    if (!sf) fprintf(stderr, "%s\n", err.msg);
+    CHECK(sf != NULL);
+    build_options bo = {.quiet = 1};
+    scene *s = sf ? scene_build(sf, NULL, &bo, &err) : NULL;
+    photo ph = {0};
+    CHECK_INT(photo_read(train, &ph, &err), 0);
+    camera_model m;
+    double sensor;
+    CHECK_INT(s ? montage_start_camera(s, sf, &ph, &m, &sensor, &err) : -1, 0);
+    CHECK_NEAR(m.position[0], 788.979, 0.01);
+    CHECK_NEAR(m.position[1], 446.821, 0.01);
+    CHECK_NEAR(m.position[2], 103.64, 0.01);
+    CHECK_NEAR(m.heading_deg, 109.8107, 1e-3);
+    CHECK_NEAR(sensor, 4.953, 0.001);
+    CHECK_NEAR(m.fov_deg, 2 * atan(sensor / (2 * 4.15)) * 180 / M_PI, 1e-5);
+    photo_free(&ph);
+    scene_free(s);
+    scene_file_free(sf);
+}
+
+TEST_LIST(TEST_CASE(renderer_rays_follow_the_lens), TEST_CASE(start_camera_from_exif),
+          TEST_CASE(new_planting_is_part_of_the_development),
           TEST_CASE(panorama_montage), TEST_CASE(photograph_to_montage), TEST_CASE(photograph_with_lens_distortion))

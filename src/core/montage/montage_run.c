@@ -13,20 +13,43 @@
 #include "montage/verification_sheet.h"
 #include "montage/wireline.h"
 #include "render/camera.h"
+#include "scene/site_frame.h"
 #include "util/progress.h"
 
 #define DEG (M_PI / 180.0)
 
-/* The camera to start from: the scene's, at the photograph's size, its focal length from the
- * photo: section or the EXIF when the sensor width is known. */
-static void start_camera(const scene *s, const scene_file *sf, const photo *ph, camera_model *m, double *sensor)
+/* With camera_from_exif: the camera at the photograph's GPS position (its altitude as the
+ * height) turned to its GPS direction, on the site's map. The direction is taken as a bearing
+ * from grid north (true and grid north differ by the meridian convergence, a degree or two,
+ * which the match corrects). */
+static int exif_camera(const scene_file *sf, const photo *ph, camera_model *m, err_buf *err)
+{
+    const photo_exif *x = &ph->exif;
+    if (!x->has_gps_position)
+        return err_set(err, "photo: camera_from_exif: the photograph's EXIF has no GPS position; give the camera's "
+                            "position in camera: instead");
+    site_frame *f = site_frame_new(sf->site.crs_wkt, NULL, err);
+    double map[2];
+    int rc = !f || site_frame_from_lonlat(f, x->longitude_deg, x->latitude_deg, map, err) ? -1 : 0;
+    site_frame_free(f);
+    if (rc) return -1;
+    m->position[0] = map[0] - sf->site.origin[0], m->position[1] = map[1] - sf->site.origin[1];
+    if (x->has_gps_altitude) m->position[2] = x->altitude_m - sf->site.origin[2];
+    if (x->has_gps_direction) m->heading_deg = x->direction_deg, m->pitch_deg = 0, m->roll_deg = 0;
+    return 0;
+}
+
+int montage_start_camera(const scene *s, const scene_file *sf, const photo *ph, camera_model *m, double *sensor,
+                         err_buf *err)
 {
     camera_model_from_settings(m, &s->camera, ph->width, ph->height);
+    if (sf->photo.camera_from_exif && exif_camera(sf, ph, m, err)) return -1;
     *sensor = sf->photo.sensor_width_mm;
     if (*sensor <= 0 && photo_sensor_width(ph, sensor) == PHOTO_SENSOR_UNKNOWN) *sensor = 0;
     double focal = sf->photo.focal_length_mm > 0 ? sf->photo.focal_length_mm
                  : ph->exif.has_focal_length ? ph->exif.focal_length_mm : 0;
     if (focal > 0 && *sensor > 0) camera_model_set_focal_mm(m, focal, *sensor);
+    return 0;
 }
 
 /* The camera matched to the points of cp, from cam (replaced by the solution). */
@@ -191,7 +214,7 @@ int montage_run(scene *s, const scene_file *sf, const montage_options *o, montag
     int rc = photo_read(photo_path, &ph, err);
     camera_model cam;
     if (!rc && panorama) camera_model_from_settings(&cam, &s->camera, ph.width, ph.height); /* for the sheet */
-    if (!rc && !panorama) start_camera(s, sf, &ph, &cam, &rep->sensor_width_mm);
+    if (!rc && !panorama) rc = montage_start_camera(s, sf, &ph, &cam, &rep->sensor_width_mm, err);
     if (!rc && points_path && !(cp = control_points_read(points_path, NULL, err))) rc = -1;
     if (!rc && cp) rc = match_camera(sf, cp, points_path, &cam, rep, o->quiet, err);
     if (!rc) {

@@ -16,6 +16,7 @@
 
 #include <stdint.h>
 
+#include "io/photo.h"
 #include "montage/camera_match.h"
 #include "scene/scene.h"
 #include "scene/scene_file.h"
@@ -36,6 +37,14 @@ typedef struct montage_report {
     double sensor_width_mm;    /* 0: unknown */
     double render_seconds;
 } montage_report;
+
+/* The camera the match starts from (or the montage renders through, without control points):
+ * the scene's, or with photo: camera_from_exif the photograph's GPS position, altitude and
+ * direction on the site's map; at the photograph's size, with the focal length of photo: or
+ * the EXIF when the sensor width (photo: or the EXIF's, into *sensor_mm, 0 when unknown) is
+ * known. Returns 0, or -1 with err set (no GPS in the EXIF, a position PROJ cannot convert). */
+int montage_start_camera(const scene *s, const scene_file *sf, const photo *ph, camera_model *m, double *sensor_mm,
+                         err_buf *err);
 
 /* Makes the photomontage of s (built from sf). Returns 0, or -1 with err set. */
 int montage_run(scene *s, const scene_file *sf, const montage_options *o, montage_report *rep, err_buf *err);

@@ -322,6 +322,9 @@ static const sylva_param_spec photo_params[] = {
      .help = "Let the match change the focal length."},
     {.name = "fit_distortion", .type = SYLVA_P_BOOL, .def = 0,
      .help = "Fit the lens's radial distortion k1 (and render with it)."},
+    {.name = "camera_from_exif", .type = SYLVA_P_BOOL, .def = 0,
+     .help = "Start the camera match at the photograph's GPS position and altitude and its GPS "
+             "direction (EXIF) instead of the scene camera's (needs a site: section)."},
     {.name = "exposure", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 1, .min = 0, .max = 1e6,
      .help = "Gain on the rendered development against the photograph's linear values."},
 };

@@ -242,6 +242,7 @@ typedef struct photo_settings {
     int fit_position;           /* 1: the match may move the camera */
     int fit_focal_length;       /* 1: the match may change the focal length */
     int fit_distortion;         /* 1: the match fits the radial distortion k1 */
+    int camera_from_exif;       /* 1: start the match at the photograph's GPS position and direction */
     double exposure;            /* the rendered development's gain against the photograph */
     uint32_t line, column;
 } photo_settings;

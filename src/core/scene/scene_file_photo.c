@@ -20,6 +20,13 @@ int sf_read_photo(loader *L)
     ph->fit_position = (int)sylva_param(p, "fit_position")->i;
     ph->fit_focal_length = (int)sylva_param(p, "fit_focal_length")->i;
     ph->fit_distortion = (int)sylva_param(p, "fit_distortion")->i;
+    ph->camera_from_exif = (int)sylva_param(p, "camera_from_exif")->i;
+    if (ph->camera_from_exif && !L->sf->site.crs_wkt) {
+        const sylva_value *v = sylva_param(p, "camera_from_exif");
+        return sf_located(L->err, L->file, v->line, v->column,
+                          "'camera_from_exif' places the camera at the photograph's GPS position, which needs a "
+                          "site: section to put longitude and latitude on the map");
+    }
     ph->exposure = sylva_param_real(p, "exposure");
     return 0;
 }

@@ -173,7 +173,7 @@ TEST(renderer_rays_follow_the_lens)
     camera c;
     camera_init(&c, &cs, 192, 120);
     CHECK(c.distorted);
-    camera_model m;
+    camera_model m = {0};
     camera_model_from_settings(&m, &cs, 192, 120);
     m.k1 = cs.k1, m.k2 = cs.k2;
     double worst = 0;
@@ -327,8 +327,8 @@ TEST(start_camera_from_exif)
     scene *s = sf ? scene_build(sf, NULL, &bo, &err) : NULL;
     photo ph = {0};
     CHECK_INT(photo_read(train, &ph, &err), 0);
-    camera_model m;
-    double sensor;
+    camera_model m = {0};
+    double sensor = 0;
     CHECK_INT(s ? montage_start_camera(s, sf, &ph, &m, &sensor, &err) : -1, 0);
     CHECK_NEAR(m.position[0], 788.979, 0.01);
     CHECK_NEAR(m.position[1], 446.821, 0.01);

@@ -12,6 +12,7 @@
 #include "work_dir.h"
 #include "io/image_io.h"
 #include "io/photo.h"
+#include "util/srgb.h"
 
 #define PHOTOS SYLVA_SHARED_DATA_DIR "/photos/"
 
@@ -314,7 +315,7 @@ TEST(orientation_tag_honoured)
     CHECK_INT(p.stored_width, 3);
     const int want[6] = {3, 0, 4, 1, 5, 2};
     for (int i = 0; i < 6; i++)
-        CHECK_NEAR(p.rgb[i * 3 + 1], photo_srgb_to_linear(level[want[i]] / 255.0f), 1e-6);
+        CHECK_NEAR(p.rgb[i * 3 + 1], srgb_to_linear(level[want[i]] / 255.0f), 1e-6);
     photo_free(&p);
 }
 
@@ -327,7 +328,7 @@ TEST(sixteen_bit_png)
     photo p;
     if (read_converted(rgb, 2, 1, "-d uint16", "sixteen.png", &p)) return;
     CHECK_INT(p.bits, 16);
-    for (int i = 0; i < 6; i++) CHECK_NEAR(p.rgb[i], photo_srgb_to_linear(rgb[i] / 255.0f), 1e-6);
+    for (int i = 0; i < 6; i++) CHECK_NEAR(p.rgb[i], srgb_to_linear(rgb[i] / 255.0f), 1e-6);
     photo_free(&p);
 }
 

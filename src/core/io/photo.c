@@ -10,13 +10,7 @@
 #include <strings.h>
 
 #include "io/image_io.h"
-
-float photo_srgb_to_linear(float v)
-{
-    /* IEC 61966-2-1: linear below 0.04045, a 2.4 power above */
-    if (v <= 0.04045f) return v / 12.92f;
-    return powf((v + 0.055f) / 1.055f, 2.4f);
-}
+#include "util/srgb.h"
 
 /* The stored pixel shown at (x, y) of the upright image, for an EXIF orientation: 1 as stored,
  * 2 mirrored left-right, 3 turned half round, 4 mirrored top-bottom, 5 transposed, 6 turned a
@@ -74,7 +68,7 @@ static float decode(float v, transfer t, float gamma)
 {
     if (t == TRANSFER_LINEAR) return v;
     v = fmaxf(0.0f, fminf(v, 1.0f));
-    return t == TRANSFER_GAMMA ? powf(v, gamma) : photo_srgb_to_linear(v);
+    return t == TRANSFER_GAMMA ? powf(v, gamma) : srgb_to_linear(v);
 }
 
 int photo_read(const char *path, photo *out, err_buf *err)

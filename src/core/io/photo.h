@@ -82,9 +82,6 @@ typedef enum photo_sensor_source {
 photo_sensor_source photo_sensor_width(const photo *p, double *width_mm);
 const char *photo_sensor_source_name(photo_sensor_source s);
 
-/* The linear value of an sRGB-encoded sample in [0, 1] (IEC 61966-2-1). */
-float photo_srgb_to_linear(float v);
-
 /* Copies a stored image of sw x sh pixels with `channels` floats each into dst, turned upright
  * by the EXIF orientation (1..8): dst is sh wide and sw high for 5..8, sw wide otherwise. */
 void photo_orient(const float *src, uint32_t sw, uint32_t sh, uint32_t channels, int orientation,

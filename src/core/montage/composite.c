@@ -10,6 +10,7 @@
 #include "io/exr_write.h"
 #include "render/accel.h"
 #include "util/memory_budget.h"
+#include "util/srgb.h"
 
 int composite_render(const scene *s, const render_options *opt, composite_renders *out, err_buf *err)
 {
@@ -97,18 +98,10 @@ int composite_apply(const composite_layers *l, const image_f32 *plate, float gai
     return 0;
 }
 
-static uint8_t srgb8(float x)
-{
-    if (!(x > 0.0f)) return 0;
-    if (x >= 1.0f) return 255;
-    float y = x <= 0.0031308f ? 12.92f * x : 1.055f * powf(x, 1.0f / 2.4f) - 0.055f;
-    return (uint8_t)lrintf(y * 255.0f);
-}
-
 uint8_t *composite_srgb8(const float *rgb, size_t pixels)
 {
     uint8_t *px = malloc(pixels ? pixels * 3 : 1); /* the caller's */
-    for (size_t i = 0; px && i < pixels * 3; i++) px[i] = srgb8(rgb[i]);
+    for (size_t i = 0; px && i < pixels * 3; i++) px[i] = srgb8_from_linear(rgb[i]);
     return px;
 }
 

@@ -13,6 +13,7 @@
 #include "pov/pov_mesh.h"
 #include "pov/pov_names.h"
 #include "pov/pov_number.h"
+#include "util/srgb.h"
 
 #define LINEAR_DIGITS 7   /* rotation and scale of a plant's matrix */
 #define SETTING_DIGITS 9  /* camera, light and colours */
@@ -64,13 +65,6 @@ static int material_is_grey(const material *m)
     return m->albedo.x == m->albedo.y && m->albedo.y == m->albedo.z;
 }
 
-static uint8_t srgb_encode(float linear)
-{
-    float c = linear <= 0.0f ? 0.0f : linear >= 1.0f ? 1.0f : linear;
-    float e = c <= 0.0031308f ? 12.92f * c : 1.055f * powf(c, 1.0f / 2.4f) - 0.055f;
-    return (uint8_t)lrintf(e * 255.0f);
-}
-
 static void material_image_name(const export_paths *ep, const char *ident, char *out, size_t n)
 {
     snprintf(out, n, "%s_%s.png", ep->stem, ident);
@@ -93,7 +87,7 @@ static int write_material_image(const scene *s, uint32_t i, const export_paths *
         const uint8_t *src = t->rgba + k * 4;
         uint8_t *dst = px + k * ch;
         for (int c = 0; c < 3; c++)
-            dst[c] = grey ? src[c] : srgb_encode(albedo[c] * texture_srgb_to_linear(src[c]));
+            dst[c] = grey ? src[c] : srgb8_from_linear(albedo[c] * texture_srgb_to_linear(src[c]));
         if (cut) dst[3] = cutout_texel_kept(src[3]) ? 255 : 0;
     }
     char ident[POV_IDENT_MAX], name[POV_PATH_MAX], path[POV_PATH_MAX];

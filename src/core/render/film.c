@@ -9,6 +9,7 @@
 #include "io/exr_write.h"
 #include "io/image_io.h"
 #include "util/memory_budget.h"
+#include "util/srgb.h"
 
 static int film_memory_check(uint32_t w, uint32_t h, err_buf *err)
 {
@@ -76,7 +77,7 @@ float film_tonemap_value(float x)
     /* ACES filmic fit (Narkowicz 2015) */
     float y = (x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f);
     y = y < 0.0f ? 0.0f : y > 1.0f ? 1.0f : y;
-    return y <= 0.0031308f ? 12.92f * y : 1.055f * powf(y, 1.0f / 2.4f) - 0.055f;
+    return srgb_from_linear(y);
 }
 
 uint8_t *film_tonemap(const film *f, double exposure_stops)

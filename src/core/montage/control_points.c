@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "util/arena.h"
+#include "util/csv_fields.h"
 #include "util/file_check.h"
 
 #define CONTROL_POINTS_MAX_BYTES (16u << 20)
@@ -162,26 +163,6 @@ static int read_imgraft_line(reader *R, char *text, uint32_t line)
     return 0;
 }
 
-/* Splits a CSV line in place into trimmed, unquoted fields with their 1-based columns. */
-static uint32_t split_csv(char *line, char **field, uint32_t *column)
-{
-    uint32_t n = 0;
-    for (char *p = line;;) {
-        char *start = p, *end = strchr(p, ',');
-        char *next = end ? end + 1 : NULL;
-        if (!end) end = p + strlen(p);
-        while (start < end && (*start == ' ' || *start == '\t')) start++;
-        while (end > start && (end[-1] == ' ' || end[-1] == '\t' || end[-1] == '\r')) end--;
-        if (end - start >= 2 && *start == '"' && end[-1] == '"') start++, end--;
-        *end = 0;
-        if (n < CSV_MAX_FIELDS) field[n] = start, column[n] = (uint32_t)(start - line) + 1;
-        n++;
-        if (!next) break;
-        p = next;
-    }
-    return n;
-}
-
 static int read_csv_header(reader *R, uint32_t line, char **field, const uint32_t *column, uint32_t n,
                            int where[COL_COUNT])
 {
@@ -272,7 +253,7 @@ static int read_lines(reader *R, char *text, size_t len)
             if (read_imgraft_line(R, cur, line)) return -1;
             continue;
         }
-        uint32_t nf = split_csv(cur, field, column);
+        uint32_t nf = csv_split(cur, field, column, CSV_MAX_FIELDS);
         if (nf > CSV_MAX_FIELDS) return located(R, line, 1, "%u fields; a line has at most %u", nf, CSV_MAX_FIELDS);
         if (!expected) {
             if (read_csv_header(R, line, field, column, nf, where)) return -1;

@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "scene/scene_file_loader.h"
+#include "util/csv_fields.h"
 #include "util/file_check.h"
 
 #define LAYOUT_MAX_BYTES (64u << 20)
@@ -52,27 +53,6 @@ static char *read_whole(loader *L, const char *path, const char *shown, size_t *
     }
     fclose(f);
     return buf;
-}
-
-/* Splits line (modified in place) into fields, trimmed and unquoted; columns (1-based) of each. */
-static uint32_t split_fields(char *line, char **field, uint32_t *column)
-{
-    uint32_t n = 0;
-    char *p = line;
-    for (;;) {
-        char *start = p, *end = strchr(p, ',');
-        char *next = end ? end + 1 : NULL;
-        if (!end) end = p + strlen(p);
-        while (start < end && (*start == ' ' || *start == '\t')) start++;
-        while (end > start && (end[-1] == ' ' || end[-1] == '\t' || end[-1] == '\r')) end--;
-        if (end - start >= 2 && *start == '"' && end[-1] == '"') start++, end--;
-        *end = 0;
-        if (n < LAYOUT_MAX_FIELDS) field[n] = start, column[n] = (uint32_t)(start - line) + 1;
-        n++;
-        if (!next) break;
-        p = next;
-    }
-    return n;
 }
 
 static int read_number(loader *L, const char *shown, uint32_t line, uint32_t column, const char *name,
@@ -137,7 +117,7 @@ int sf_read_layout(loader *L, const char *path, const char *shown, layout_row **
         const char *q = cur;
         while (*q == ' ' || *q == '\t' || *q == '\r') q++;
         if (!*q || *q == '#') continue;
-        uint32_t nf = split_fields(cur, field, column);
+        uint32_t nf = csv_split(cur, field, column, LAYOUT_MAX_FIELDS);
         if (nf > LAYOUT_MAX_FIELDS)
             return sf_located(L->err, shown, line, 1, "%u fields; a layout line has at most %u", nf,
                               LAYOUT_MAX_FIELDS);

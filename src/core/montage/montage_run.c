@@ -89,17 +89,8 @@ static int match_camera(const scene_file *sf, const control_points *cp, const ch
 static void development_bearing(const scene *s, const double eye[3], double *dist, double *bearing)
 {
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (uint32_t o = 0; o < s->n_objects; o++) {
-        if (!s->objects[o].development) continue;
-        const xform3x4 *xf;
-        const mesh *m = scene_object_mesh(s, o, &xf);
-        for (uint32_t v = 0; m && v < m->nv; v++) {
-            vec3 p = v3(m->pos[3 * v], m->pos[3 * v + 1], m->pos[3 * v + 2]);
-            if (xf) p = xf_point(xf, p);
-            double q[3] = {p.x, p.y, p.z};
-            for (int k = 0; k < 3; k++) lo[k] = fmin(lo[k], q[k]), hi[k] = fmax(hi[k], q[k]);
-        }
-    }
+    for (uint32_t o = 0; o < s->n_objects; o++)
+        if (s->objects[o].development) scene_object_bounds(s, o, lo, hi);
     *dist = *bearing = NAN;
     if (!(lo[0] <= hi[0])) return;
     double dx = 0.5 * (lo[0] + hi[0]) - eye[0], dy = 0.5 * (lo[1] + hi[1]) - eye[1];

@@ -2,6 +2,7 @@
  * instances, objects and shared models, and terrain queries. */
 #include "scene/scene.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -177,6 +178,18 @@ const mesh *scene_object_mesh(const scene *s, uint32_t o, const xform3x4 **xf)
     }
     if (xf) *xf = &ob->xf;
     return s->models[ob->model].mesh;
+}
+
+void scene_object_bounds(const scene *s, uint32_t o, double lo[3], double hi[3])
+{
+    const xform3x4 *xf;
+    const mesh *m = scene_object_mesh(s, o, &xf);
+    for (uint32_t v = 0; m && v < m->nv; v++) {
+        vec3 p = v3(m->pos[3 * v], m->pos[3 * v + 1], m->pos[3 * v + 2]);
+        if (xf) p = xf_point(xf, p);
+        double q[3] = {p.x, p.y, p.z};
+        for (int k = 0; k < 3; k++) lo[k] = fmin(lo[k], q[k]), hi[k] = fmax(hi[k], q[k]);
+    }
 }
 
 int32_t scene_find_material(const scene *s, const char *name)

@@ -112,6 +112,8 @@ int32_t scene_add_model_object(scene *s, const char *name, uint32_t model_index,
 /* The mesh an object shows (its own, or its model's) and its transform to world space (NULL
  * when the mesh is already in world space). */
 const mesh *scene_object_mesh(const scene *s, uint32_t o, const xform3x4 **xf);
+/* Grows [lo, hi] by object o's world-space vertices (nothing for an object without any). */
+void scene_object_bounds(const scene *s, uint32_t o, double lo[3], double hi[3]);
 /* Copies site (its strings too) into s->site. Returns 0 or -1 with err set (out of memory). */
 int scene_set_site(scene *s, const site_settings *site, err_buf *err);
 /* The first material named `name`, or -1 (a hash lookup). */

@@ -116,17 +116,9 @@ static void objects_index(ztv_cover *c)
     const scene *s = c->scene;
     for (uint32_t o = 0; o < s->n_objects; o++) {
         object_box *b = &c->objects[c->n_objects];
-        const xform3x4 *xf;
-        const mesh *m = scene_object_mesh(s, o, &xf);
-        if (!m || !m->nv) continue;
         double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-        for (uint32_t v = 0; v < m->nv; v++) {
-            vec3 p = v3(m->pos[3 * v], m->pos[3 * v + 1], m->pos[3 * v + 2]);
-            if (xf) p = xf_point(xf, p);
-            double q[3] = {p.x, p.y, p.z};
-            for (int a = 0; a < 3; a++) lo[a] = fmin(lo[a], q[a]), hi[a] = fmax(hi[a], q[a]);
-        }
-        if (!grid_span(&c->grid, lo, hi, &b->i0, &b->i1, &b->j0, &b->j1)) continue;
+        scene_object_bounds(s, o, lo, hi);
+        if (!(lo[0] <= hi[0]) || !grid_span(&c->grid, lo, hi, &b->i0, &b->i1, &b->j0, &b->j1)) continue;
         b->zhi = (float)hi[2];
         c->n_objects++;
     }

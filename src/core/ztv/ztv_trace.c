@@ -6,8 +6,8 @@
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
+#include "render/render.h"
 #include "util/progress.h"
 #include "ztv/ztv_cover.h"
 #include "ztv/ztv_grid.h"
@@ -174,8 +174,7 @@ int ztv_trace(const ztv_job *job, ztv_sink sink, void *user, ztv_stats *stats, e
         goto done;
     }
     c.cover = cover;
-    unsigned threads = job->threads ? job->threads : (unsigned)(sysconf(_SC_NPROCESSORS_ONLN) > 0
-                                                                   ? sysconf(_SC_NPROCESSORS_ONLN) : 1);
+    unsigned threads = job->threads ? job->threads : render_default_threads();
     progress prog;
     progress_begin(&prog, "ztv", g->ny, job->quiet);
     c.prog = &prog;

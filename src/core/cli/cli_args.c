@@ -1,5 +1,6 @@
 /* cli_args.c — number and size parsing for the command line, the scene argument (and the
- * --allow-gdal-virtual choice every scene command takes), and a scene file's stem. */
+ * --allow-gdal-virtual choice every scene command takes), a scene file's stem and the output
+ * folder. */
 #include "cli/cli_args.h"
 
 #include <errno.h>
@@ -7,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "util/file_check.h"
 
@@ -62,4 +64,15 @@ int cli_scene_stem(const char *scene_path, const char *prefix, const char *suffi
     const char *dot = strrchr(name, '.');
     size_t l = dot && dot != name ? (size_t)(dot - name) : strlen(name);
     return (size_t)snprintf(out, n, "%s%.*s%s", prefix, (int)l, name, suffix) >= n ? -1 : 0;
+}
+
+int cli_make_folder(const char *dir, err_buf *err)
+{
+    struct stat st;
+    if (!stat(dir, &st)) {
+        if (S_ISDIR(st.st_mode)) return 0;
+        return err_fail(err, ERR_OUTPUT, "%s: exists and is not a folder", dir);
+    }
+    if (mkdir(dir, 0777)) return err_fail(err, ERR_OUTPUT, "%s: cannot create the folder: %s", dir, strerror(errno));
+    return 0;
 }

@@ -1,9 +1,7 @@
 /* cli_ecology.c — the scene and ecology session behind `sylva simulate` and `sylva factors`. */
 #include "cli/cli_ecology.h"
 
-#include <errno.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "cli/cli_status.h"
 
@@ -25,15 +23,4 @@ void cli_ecology_close(cli_ecology *e)
     ecology_session_free(e->session);
     cli_scene_close(&e->base);
     memset(e, 0, sizeof *e);
-}
-
-int cli_make_folder(const char *dir, err_buf *err)
-{
-    struct stat st;
-    if (!stat(dir, &st)) {
-        if (S_ISDIR(st.st_mode)) return 0;
-        return err_fail(err, ERR_OUTPUT, "%s: exists and is not a folder", dir);
-    }
-    if (mkdir(dir, 0777)) return err_fail(err, ERR_OUTPUT, "%s: cannot create the folder: %s", dir, strerror(errno));
-    return 0;
 }

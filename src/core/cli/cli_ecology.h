@@ -1,6 +1,5 @@
 /* cli_ecology.h — what `sylva simulate` and `sylva factors` share: loading a scene, building
- * its terrain and species without the ecology, and starting the ecology session on them; and
- * making the output folder. */
+ * its terrain and species without the ecology, and starting the ecology session on them. */
 #ifndef SYLVA_CLI_ECOLOGY_H
 #define SYLVA_CLI_ECOLOGY_H
 
@@ -15,8 +14,5 @@ typedef struct cli_ecology {
 /* Fills e; returns EXIT_OK, or the exit status of the problem after printing it (cli_fail). */
 int cli_ecology_open(cli_ecology *e, const char *cmd, const char *scene_path, const build_options *opt);
 void cli_ecology_close(cli_ecology *e);
-
-/* Creates folder `dir` when it does not exist (its parent must). Returns 0, or -1 with err. */
-int cli_make_folder(const char *dir, err_buf *err);
 
 #endif

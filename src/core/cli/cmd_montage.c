@@ -5,7 +5,6 @@
 #include <string.h>
 
 #include "cli/cli_args.h"
-#include "cli/cli_ecology.h"
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"

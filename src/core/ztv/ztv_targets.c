@@ -140,14 +140,9 @@ static int gather_developments(ztv_targets *t, const scene_file *sf, err_buf *er
     for (uint32_t d = 0; d < sf->n_developments; d++)
         if (count[d]) map[d] = t->n_developments, t->names[t->n_developments++] = sf->developments[d];
     for (uint32_t i = 0; i < t->n; i++) {
-        uint32_t d = t->development[i] = map[t->development[i]];
+        uint32_t old = t->development[i], d = t->development[i] = map[old];
         t->xy[i][0] = t->p[i][0], t->xy[i][1] = t->p[i][1];
-        t->centre[d][0] += t->p[i][0], t->centre[d][1] += t->p[i][1];
-    }
-    for (uint32_t d = 0; d < SCENE_MAX_DEVELOPMENTS; d++) {
-        uint32_t c = 0;
-        for (uint32_t i = 0; i < t->n; i++) c += t->development[i] == d;
-        if (c) t->centre[d][0] /= c, t->centre[d][1] /= c;
+        t->centre[d][0] += t->p[i][0] / count[old], t->centre[d][1] += t->p[i][1] / count[old];
     }
     return 0;
 }

@@ -2,6 +2,7 @@
  * same layers as the same scene in local metres, bit for bit; a camera at height_above_ground
  * stands that high above the rendered ground; the EXR header carries the site's CRS and origin;
  * a height above ground with no terrain under it is an error at its line. */
+#include <math.h>
 #include <openexr.h>
 #include <stdio.h>
 #include <string.h>
@@ -157,7 +158,7 @@ TEST(exr_header_names_the_site)
     film *f = s ? render(s, 1) : NULL;
     CHECK(f != NULL);
     const char *path = work_path("site.exr");
-    if (f) CHECK_INT(film_write_exr(f, &s->site, path, &err), 0);
+    if (f) CHECK_INT(film_write_exr(f, &s->site, NAN, path, &err), 0);
     exr_context_t ctx = NULL;
     CHECK(exr_start_read(&ctx, path, NULL) == EXR_ERR_SUCCESS);
     if (ctx) {
@@ -179,7 +180,7 @@ TEST(exr_header_names_the_site)
     scene *l = build(SCENES "/local.yaml", &err);
     film *fl = l ? render(l, 1) : NULL;
     const char *plain = work_path("local.exr");
-    if (fl) CHECK_INT(film_write_exr(fl, &l->site, plain, &err), 0);
+    if (fl) CHECK_INT(film_write_exr(fl, &l->site, NAN, plain, &err), 0);
     ctx = NULL;
     CHECK(exr_start_read(&ctx, plain, NULL) == EXR_ERR_SUCCESS);
     if (ctx) {

@@ -7,6 +7,7 @@
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
+#include "render/auto_exposure.h"
 #include "render/render.h"
 #include "util/progress.h"
 
@@ -134,7 +135,9 @@ int cmd_render(int argc, char **argv)
         rc = cli_fail("render", &err, ERR_INTERNAL);
         goto done;
     }
-    if (film_write_exr(f, &sc->site, exr, &err) || film_write_png(f, png, sc->image.exposure, &err)) {
+    double ev = sc->image.exposure_set ? sc->image.exposure : auto_exposure_stops(f);
+    if (!ro.quiet) fprintf(stderr, "exposure: %+.2f EV (%s)\n", ev, sc->image.exposure_set ? "image.exposure" : "metered");
+    if (film_write_exr(f, &sc->site, ev, exr, &err) || film_write_png(f, png, sc->image.tone, ev, &err)) {
         rc = cli_fail("render", &err, ERR_OUTPUT);
         goto done;
     }

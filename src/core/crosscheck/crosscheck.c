@@ -14,6 +14,7 @@
 #include "geometry/light_summary.h"
 #include "io/image_io.h"
 #include "pov/pov_write.h"
+#include "render/auto_exposure.h"
 #include "render/render.h"
 #include "util/progress.h"
 
@@ -274,16 +275,17 @@ int crosscheck_run(const scene *s, const char *out_dir, const crosscheck_options
 
     /* images and the report */
     rc = CROSSCHECK_NOT_WRITTEN;
+    /* The verification formula has no 1/pi: a given exposure shows both pictures as bright as a
+     * path-traced render of the scene would be; a metered one is taken from sylva's picture and
+     * used for both. */
+    double exposure = s->image.exposure_set ? s->image.exposure - log2(M_PI) : auto_exposure_stops(f);
     snprintf(path, sizeof path, "%s/sylva.exr", out_dir);
-    if (film_write_exr(f, &s->site, path, err)) goto done;
-    /* The verification formula has no 1/pi: show both pictures as bright as a path-traced
-     * render of the scene would be. */
-    double exposure = s->image.exposure - log2(M_PI);
+    if (film_write_exr(f, &s->site, exposure, path, err)) goto done;
     snprintf(path, sizeof path, "%s/sylva.png", out_dir);
-    if (film_write_png(f, path, exposure, err)) goto done;
+    if (film_write_png(f, path, s->image.tone, exposure, err)) goto done;
     film pf = {.width = r->width, .height = r->height, .rgb = pov_rgb};
     snprintf(path, sizeof path, "%s/povray.png", out_dir);
-    if (film_write_png(&pf, path, exposure, err)) goto done;
+    if (film_write_png(&pf, path, s->image.tone, exposure, err)) goto done;
     image_view ref = {f->rgb, f->width, f->height, 3}, test = {pov_rgb, f->width, f->height, 3};
     snprintf(path, sizeof path, "%s/difference.png", out_dir);
     if (image_diff_heatmap_write(path, &ref, &test, NULL, HEATMAP_SCALE_OVER * t->over_error, err)) goto done;

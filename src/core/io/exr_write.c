@@ -147,6 +147,10 @@ static int exr_write_part(exr_context_t ctx, exr_stream *s, const exr_frame *f,
         for (int k = 0; k < 3 && !rc; k++) rc = exr_attr_set_double(ctx, part, origin_names[k], f->origin[k]);
         if (rc) return exr_fail(s, rc, "adding the site's CRS and origin");
     }
+    if (f->has_exposure) {
+        rc = exr_attr_set_double(ctx, part, "exposureStops", f->exposure_stops);
+        if (rc) return exr_fail(s, rc, "adding the exposure");
+    }
     rc = exr_write_header(ctx);
     if (rc) return exr_fail(s, rc, "writing the header");
 

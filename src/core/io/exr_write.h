@@ -3,8 +3,8 @@
  * (world normal), albedo.R albedo.G albedo.B, id.instance, id.species and id.object (UINT),
  * development.A (the development's coverage, FLOAT 0..1), development.R, development.G,
  * development.B (its radiance premultiplied by that coverage, FLOAT); the site's CRS and origin
- * as header attributes when the scene has a site. Any layer pointer may be NULL and is then left
- * out. The file is written under a temporary name in the same folder and renamed into place, so
+ * as header attributes when the scene has a site, and the exposure of its PNG when given. Any
+ * layer pointer may be NULL and is then left out. The file is written under a temporary name in the same folder and renamed into place, so
  * a failure never leaves a partial file at `path`. */
 #ifndef SYLVA_EXR_WRITE_H
 #define SYLVA_EXR_WRITE_H
@@ -31,6 +31,10 @@ typedef struct exr_frame {
     const char *crs_wkt;
     const char *crs_name;
     double origin[3];
+    /* The exposure in stops the frame's PNG is tone-mapped with: header attribute exposureStops
+     * (double), written when has_exposure is 1. */
+    int has_exposure;
+    double exposure_stops;
 } exr_frame;
 
 /* Writes f to path (ZIP compression, scanline). Returns 0 or -1 with err set. */

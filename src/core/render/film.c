@@ -1,4 +1,4 @@
-/* film.c — frame buffers, tone mapping and output. */
+/* film.c — frame buffers, tone mapping (through render/tone_curve.h) and output. */
 #include "render/film.h"
 
 #include <math.h>
@@ -9,7 +9,7 @@
 #include "io/exr_write.h"
 #include "io/image_io.h"
 #include "util/memory_budget.h"
-#include "util/srgb.h"
+#include "render/tone_curve.h"
 
 static int film_memory_check(uint32_t w, uint32_t h, err_buf *err)
 {
@@ -71,31 +71,28 @@ void film_free(film *f)
     free(f);
 }
 
-float film_tonemap_value(float x)
+uint8_t *film_tonemap(const film *f, tone_curve tone, double exposure_stops)
 {
-    if (!(x > 0.0f)) return 0.0f;
-    /* ACES filmic fit (Narkowicz 2015) */
-    float y = (x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f);
-    y = y < 0.0f ? 0.0f : y > 1.0f ? 1.0f : y;
-    return srgb_from_linear(y);
-}
-
-uint8_t *film_tonemap(const film *f, double exposure_stops)
-{
-    size_t n = (size_t)f->width * f->height * 3;
-    uint8_t *out = malloc(n);
+    size_t n = (size_t)f->width * f->height;
+    uint8_t *out = malloc(n * 3);
     if (!out) return NULL;
     float gain = (float)(M_PI * exp2(exposure_stops));
-    for (size_t i = 0; i < n; i++) out[i] = (uint8_t)lrintf(film_tonemap_value(f->rgb[i] * gain) * 255.0f);
+    for (size_t i = 0; i < n; i++) {
+        float x[3] = {f->rgb[i * 3] * gain, f->rgb[i * 3 + 1] * gain, f->rgb[i * 3 + 2] * gain}, y[3];
+        tone_map_rgb(tone, x, y);
+        for (int k = 0; k < 3; k++) out[i * 3 + k] = (uint8_t)lrintf(y[k] * 255.0f);
+    }
     return out;
 }
 
-int film_write_exr(const film *f, const site_settings *site, const char *path, err_buf *err)
+int film_write_exr(const film *f, const site_settings *site, double exposure_stops, const char *path,
+                   err_buf *err)
 {
     exr_frame fr = {.width = f->width, .height = f->height, .rgb = f->rgb, .depth = f->depth, .normal = f->normal,
                     .albedo = f->albedo, .instance_id = f->instance_id, .species_id = f->species_id,
                     .object_id = f->object_id, .development = f->development, .development_rgb = f->development_rgb,
-                    .rgb_half = 0};
+                    .rgb_half = 0, .has_exposure = isfinite(exposure_stops),
+                    .exposure_stops = exposure_stops};
     if (site && site->crs_wkt) {
         fr.crs_wkt = site->crs_wkt, fr.crs_name = site->crs_name;
         for (int k = 0; k < 3; k++) fr.origin[k] = site->origin[k];
@@ -103,9 +100,9 @@ int film_write_exr(const film *f, const site_settings *site, const char *path, e
     return exr_write(path, &fr, err);
 }
 
-int film_write_png(const film *f, const char *path, double exposure_stops, err_buf *err)
+int film_write_png(const film *f, const char *path, tone_curve tone, double exposure_stops, err_buf *err)
 {
-    uint8_t *px = film_tonemap(f, exposure_stops);
+    uint8_t *px = film_tonemap(f, tone, exposure_stops);
     if (!px) return err_nomem(err, "out of memory tone-mapping the image");
     int rc = image_write_u8(path, f->width, f->height, 3, px, err);
     free(px);

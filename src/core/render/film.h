@@ -1,11 +1,11 @@
 /* film.h — the rendered frame: linear RGB and the auxiliary layers, tone mapping to 8-bit sRGB
  * and writing EXR and PNG files.
  *
- * Tone mapping for PNG: multiply by pi * 2^exposure, apply the ACES filmic curve as fitted by
- * Narkowicz (2015), then encode with the sRGB transfer function. The factor pi makes exposure 0
- * a daylight exposure: a white Lambertian surface facing a sun of irradiance 1 (radiance 1/pi)
- * comes out just below white, an 18 % grey in the sun as a mid-tone. The EXR keeps linear
- * values.
+ * Tone mapping for PNG: multiply by pi * 2^exposure, then apply a tone curve (render/tone_curve.h:
+ * AgX or the ACES fit), which ends in sRGB encoding. The factor pi makes exposure 0 a daylight
+ * exposure: an 18 % grey Lambertian surface facing a sun of irradiance 1 (radiance 0.18/pi)
+ * comes out as mid-grey. The exposure is chosen by the caller: the scene's, or metered from the
+ * frame (render/auto_exposure.h). The EXR keeps linear values and records the exposure.
  *
  * The class and coverage layers serve comparisons (the POV-Ray cross-check); they are not
  * written to the EXR. The development layers are: the antialiased coverage of the objects marked
@@ -60,11 +60,12 @@ film *film_new(uint32_t width, uint32_t height, err_buf *err);
 void film_free(film *f); /* accepts NULL */
 
 /* 8-bit sRGB RGB pixels (3 per pixel) after tone mapping; caller frees. */
-uint8_t *film_tonemap(const film *f, double exposure_stops);
-float film_tonemap_value(float linear); /* the curve plus sRGB encoding, for one channel */
+uint8_t *film_tonemap(const film *f, tone_curve tone, double exposure_stops);
 
-/* The EXR carries the site's CRS and origin in its header when site is not NULL and has a CRS. */
-int film_write_exr(const film *f, const site_settings *site, const char *path, err_buf *err);
-int film_write_png(const film *f, const char *path, double exposure_stops, err_buf *err);
+/* The EXR carries the site's CRS and origin in its header when site is not NULL and has a CRS,
+ * and the exposure a PNG of it takes (attribute exposureStops) when exposure_stops is finite. */
+int film_write_exr(const film *f, const site_settings *site, double exposure_stops, const char *path,
+                   err_buf *err);
+int film_write_png(const film *f, const char *path, tone_curve tone, double exposure_stops, err_buf *err);
 
 #endif

@@ -23,6 +23,7 @@ const char *const host_sections[] = {"image",   "site",    "camera",  "sun",    
 const char *const host_shape_names[] = {"mesh", "box", "sphere", "quad", "disk", NULL};
 const char *const host_sky_models[] = {"none", "constant", "preetham", NULL};
 const char *const host_material_types[] = {"lambert", "leaf", NULL};
+static const char *const host_tone_curves[] = {"agx", "aces", NULL};
 
 static const double zero3[3] = {0, 0, 0}, one3[3] = {1, 1, 1}, half3[3] = {0.5, 0.5, 0.5};
 static const double north[3] = {0, 1, 0}, z_up[3] = {0, 0, 1};
@@ -79,7 +80,14 @@ static const sylva_param_spec image_params[] = {
      .min = -20,
      .max = 20,
      .unit = "stops",
-     .help = "Exposure change applied before tone mapping to PNG (not to EXR)."},
+     .help = "Exposure applied before tone mapping to PNG (not to EXR); default: metered from the "
+             "rendered image, its mean log luminance on mid-grey (auto-exposure)."},
+    {.name = "tone",
+     .type = SYLVA_P_ENUM,
+     .def_str = "agx",
+     .choices = host_tone_curves,
+     .help = "Tone curve for PNG: agx (log encoding and a sigmoid; bright colours go to white) or "
+             "aces (the Narkowicz 2015 ACES fit)."},
 };
 const host_schema host_schema_image = {"image", "Output size, sampling and the scene seed.",
                                        image_params, COUNT(image_params)};

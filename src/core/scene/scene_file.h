@@ -20,12 +20,17 @@
 
 struct plugin_registry;
 
+/* The curve that maps exposed linear light to PNG values (render/tone_curve.h). */
+typedef enum tone_curve { TONE_AGX = 0, TONE_ACES = 1 } tone_curve;
+
 typedef struct image_settings {
     uint32_t width, height; /* pixels */
     uint32_t spp;           /* samples per pixel */
     uint64_t seed;
     uint32_t max_depth;     /* path vertices after the camera */
-    double exposure;        /* stops applied before tone mapping (PNG only) */
+    double exposure;        /* stops applied before tone mapping (PNG only), when exposure_set */
+    int exposure_set;       /* 0: the exposure is metered from the rendered image */
+    tone_curve tone;
 } image_settings;
 
 /* A height given above the terrain, resolved once the terrain exists (scene_build.c). */

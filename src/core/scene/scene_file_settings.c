@@ -54,6 +54,8 @@ int sf_read_image(loader *L)
     im->seed = (uint64_t)sylva_param_int(p, "seed");
     im->max_depth = (uint32_t)sylva_param_int(p, "max_depth");
     im->exposure = sylva_param_real(p, "exposure");
+    im->exposure_set = sylva_param(p, "exposure")->is_set;
+    im->tone = (tone_curve)sylva_param(p, "tone")->i;
     return 0;
 }
 

@@ -4,6 +4,7 @@
 #include "render/bsdf.h"
 #include "render/camera.h"
 #include "render/film.h"
+#include "render/leaf_coat.h"
 #include "render/lights.h"
 #include "render/sampler.h"
 #include "scene/mesh.h"
@@ -116,24 +117,68 @@ TEST(leaf_transmits_to_the_other_side)
 {
     material m = {.bsdf = SYLVA_BSDF_LEAF, .albedo = {0.3f, 0.3f, 0.3f}, .transmittance = {0.1f, 0.1f, 0.1f}, .texture = -1};
     vec3 n = v3(0, 0, 1), wo = v3(0, 0, 1);
-    float pdf;
-    vec3 fr = bsdf_eval(&m, m.albedo, n, wo, v3(0, 0, 1), &pdf);
+    float pdf, e = leaf_coat_albedo(1.0f), under = (1.0f - e) / (float)(M_PI * (1.0f - leaf_coat_albedo_mean()));
+    /* straight through: the transmittance under the coat, entering and leaving at normal incidence */
     vec3 ft = bsdf_eval(&m, m.albedo, n, wo, v3(0, 0, -1), &pdf);
-    CHECK_NEAR(fr.x, 0.3 / M_PI, 1e-6);
-    CHECK_NEAR(ft.x, 0.1 / M_PI, 1e-6);
+    CHECK_NEAR(ft.x, 0.1 * under * (1.0f - e), 1e-6);
+    CHECK_NEAR(pdf, (1.0f - e / (e + (1.0f - e) * 0.4f)) * 0.25f / M_PI, 1e-6);
     CHECK_NEAR(bsdf_transmit_probability(&m, m.albedo), 0.25, 1e-6);
-    /* the pdf over both hemispheres integrates to one: total albedo estimate = r + t */
+    /* the coat reflects 3 to 4 % at normal incidence (index 1.45: 3.4 % on a smooth face) */
+    CHECK(e > 0.025f && e < 0.035f);
+    CHECK_NEAR(leaf_coat_fresnel(1.0f, 1.45f), 0.0337, 1e-4);
+    /* the leaf returns E + (1 - E)(r + t) */
     double est = 0;
     int k = 0;
-    for (int l = 0; l < 4; l++)
-        for (int i = 0; i < 32; i++)
-            for (int j = 0; j < 32; j++) {
+    for (int l = 0; l < 8; l++)
+        for (int i = 0; i < 64; i++)
+            for (int j = 0; j < 64; j++) {
                 bsdf_sample s;
-                if (bsdf_sample_dir(&m, m.albedo, n, wo, (l + 0.5f) / 4, (i + 0.5f) / 32, (j + 0.5f) / 32, &s))
+                float u0 = (float)fmod((k + 0.5) * 0.6180339887, 1.0);
+                if (bsdf_sample_dir(&m, m.albedo, n, wo, u0, (i + 0.5f) / 64, (j + 0.5f) / 64, &s))
                     est += s.f.x * fabsf(v3_dot(n, s.wi)) / s.pdf;
                 k++;
             }
-    CHECK_NEAR(est / k, 0.4, 1e-3);
+    CHECK_NEAR(est / k, e + (1.0f - e) * 0.4f, 2e-3);
+}
+
+/* White furnace: a leaf with r + t = 1 under light from every direction returns all of it and
+ * never more, at every angle of view; the sampled pdf is the one bsdf_eval states, and the pdf
+ * integrates to at most 1 over the sphere. Fails with an uncoupled coat (f_coat + r / pi). */
+TEST(leaf_white_furnace)
+{
+    material m = {.bsdf = SYLVA_BSDF_LEAF, .albedo = {0.7f, 0.7f, 0.7f}, .transmittance = {0.3f, 0.3f, 0.3f}, .texture = -1};
+    vec3 n = v3(0, 0, 1);
+    for (int a = 0; a <= 8; a++) {
+        float mu = a == 0 ? 0.05f : a / 8.0f;
+        vec3 wo = v3(sqrtf(1.0f - mu * mu), 0, mu);
+        double est = 0, pdf_sum = 0;
+        int k = 0, mismatched = 0;
+        for (int l = 0; l < 16; l++)
+            for (int i = 0; i < 64; i++)
+                for (int j = 0; j < 64; j++) {
+                    bsdf_sample s;
+                    /* lobe choice from a golden-ratio sequence: strata of u0 would
+                     * quantize the coat's share */
+                    float u0 = (float)fmod((k + 0.5) * 0.6180339887, 1.0), u1 = (i + 0.5f) / 64, u2 = (j + 0.5f) / 64;
+                    if (bsdf_sample_dir(&m, m.albedo, n, wo, u0, u1, u2, &s)) {
+                        est += s.f.x * fabsf(v3_dot(n, s.wi)) / s.pdf;
+                        float pdf;
+                        bsdf_eval(&m, m.albedo, n, wo, s.wi, &pdf);
+                        mismatched += fabsf(pdf - s.pdf) > 1e-4f * s.pdf;
+                    }
+                    k++;
+                    /* the pdf over the sphere, uniform directions from (u1, u2) and u0's sign */
+                    float z = 1.0f - 2.0f * u1, r = sqrtf(fmaxf(0.0f, 1.0f - z * z)), phi = 2.0f * (float)M_PI * (u2 + (l + 0.5f) / 1024);
+                    float pdf;
+                    bsdf_eval(&m, m.albedo, n, wo, v3(r * cosf(phi), r * sinf(phi), z), &pdf);
+                    pdf_sum += pdf * 4.0 * M_PI;
+                }
+        CHECK_INT(mismatched, 0);
+        CHECK(est / k <= 1.0 + 2e-3);
+        CHECK(est / k > 0.98);
+        CHECK(pdf_sum / k <= 1.0 + 2e-3);
+        CHECK(pdf_sum / k > 0.9);
+    }
 }
 
 TEST(sun_cone_sampling)
@@ -238,6 +283,6 @@ TEST(film_refuses_what_cannot_be_rendered)
 
 TEST_LIST(TEST_CASE(normal_transform_rotation), TEST_CASE(normal_transform_nonuniform_scale),
           TEST_CASE(trs_composition), TEST_CASE(sampler_keyed_and_uniform), TEST_CASE(camera_frame),
-          TEST_CASE(lambert_sampling_matches_eval), TEST_CASE(leaf_transmits_to_the_other_side),
+          TEST_CASE(lambert_sampling_matches_eval), TEST_CASE(leaf_transmits_to_the_other_side), TEST_CASE(leaf_white_furnace),
           TEST_CASE(sun_cone_sampling), TEST_CASE(shapes_closed_and_outward), TEST_CASE(mesh_append_checks),
           TEST_CASE(camera_frame_extreme_offsets), TEST_CASE(film_refuses_what_cannot_be_rendered))

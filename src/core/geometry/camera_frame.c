@@ -38,3 +38,13 @@ void camera_frame(const camera_settings *s, double forward[3], double right[3], 
         right[k] = c * r[k] - sn * v[k];
     }
 }
+
+double camera_lens_radius(const camera_settings *s)
+{
+    if (!(s->f_number > 0.0)) return 0.0;
+    double fov = s->fov_deg * M_PI / 180.0;
+    double focal_m = s->focal_length_mm > 0.0 ? s->focal_length_mm * 1e-3
+                     : s->cylindrical         ? s->sensor_width_mm * 1e-3 / fov
+                                              : s->sensor_width_mm * 1e-3 / (2.0 * tan(fov / 2.0));
+    return focal_m / (2.0 * s->f_number);
+}

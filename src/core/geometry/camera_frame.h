@@ -14,4 +14,10 @@
  * up or of zero length). */
 void camera_frame(const camera_settings *s, double forward[3], double right[3], double up[3]);
 
+/* The radius in metres of the thin lens's pupil, focal length / (2 f-number), 0 for a pinhole
+ * (f_number 0). The focal length is the one given, else the one the field of view implies on
+ * the sensor width: w / (2 tan(fov / 2)), for a panorama w / fov (render/lens.h; the POV-Ray
+ * export's focal blur). */
+double camera_lens_radius(const camera_settings *s);
+
 #endif

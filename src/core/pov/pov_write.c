@@ -446,6 +446,28 @@ static int write_plants(const scene *s, const export_paths *ep, const char *sour
 /* ------------------------------------------------------------------------------------------ */
 /* the main scene file                                                                         */
 
+/* The thin lens as POV-Ray's focal blur (render/lens.h): aperture is the pupil's diameter in
+ * metres, focal_point the point in focus on the view axis. POV-Ray has no vignette: a scene's
+ * vignette is named in a comment and left to the comparison. */
+static void write_lens(pov_file *pf, const camera_settings *c, const double forward[3])
+{
+    if (c->f_number > 0.0) {
+        double p[3];
+        for (int d = 0; d < 3; d++) p[d] = c->position[d] + forward[d] * c->focus_distance;
+        char ap[POV_NUMBER_MAX], fp[128];
+        pov_format_real(ap, 2.0 * camera_lens_radius(c), SETTING_DIGITS);
+        pov_append_vec3(fp, p, SETTING_DIGITS, NULL);
+        pov_printf(pf, "  aperture %s  // the lens's pupil, focal length / f-number, metres\n"
+                       "  focal_point %s  // focus_distance along the view\n  blur_samples 64\n",
+                   ap, fp);
+    }
+    if (c->vignette > 0.0) {
+        char v[POV_NUMBER_MAX];
+        pov_format_real(v, c->vignette, SETTING_DIGITS);
+        pov_printf(pf, "  // camera.vignette %s (1 - s + s cos^4 off the axis) has no POV-Ray equivalent\n", v);
+    }
+}
+
 static void write_camera(pov_file *pf, const camera_settings *c, uint32_t width, uint32_t height)
 {
     double look[3], f[3], r[3], up[3];
@@ -475,8 +497,10 @@ static void write_camera(pov_file *pf, const camera_settings *c, uint32_t width,
     }
     pov_printf(pf, "camera {\n  perspective\n  location %s\n  sky %s  // sylva's up vector\n"
                    "  right -x * %s  // width / height; negative: right-handed axes shown unmirrored\n"
-                   "  angle %s  // horizontal field of view, degrees\n  look_at %s\n}\n\n",
+                   "  angle %s  // horizontal field of view, degrees\n  look_at %s\n",
                a, u, aspect, fov, b);
+    write_lens(pf, c, f);
+    pov_put(pf, "}\n\n");
 }
 
 static void write_sun(pov_file *pf, const scene *s, const light_summary *l, const double lo[3], const double hi[3])

@@ -25,6 +25,9 @@ void camera_init(camera *c, const camera_settings *s, uint32_t width, uint32_t h
     c->tan_half_x = c->cylindrical ? 0.0f : tanf((float)(s->fov_deg * M_PI / 360.0));
     c->tan_half_y = c->tan_half_x * (float)height / (float)width;
     c->distorted = !c->cylindrical && (s->k1 != 0.0 || s->k2 != 0.0);
+    c->lens_radius = (float)camera_lens_radius(s);
+    c->focus_distance = (float)s->focus_distance;
+    c->vignette = (float)s->vignette;
     if (c->distorted) {
         camera_model_from_settings(&c->model, s, width, height);
         c->model.k1 = s->k1, c->model.k2 = s->k2;

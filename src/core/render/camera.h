@@ -28,6 +28,9 @@ typedef struct camera {
     int distorted;           /* 1: perspective with radial distortion: rays through `model` */
     camera_model model;      /* the distorted camera (geometry/camera_project.h) */
     uint32_t width, height;
+    float lens_radius;       /* metres: the thin lens's pupil (render/lens.h); 0: a pinhole */
+    float focus_distance;    /* metres from the eye to the surface in sharp focus */
+    float vignette;          /* strength of the cos^4 falloff, 0 to 1 */
 } camera;
 
 void camera_init(camera *c, const camera_settings *s, uint32_t width, uint32_t height);

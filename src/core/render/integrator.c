@@ -6,10 +6,13 @@
 
 #include "render/bsdf.h"
 #include "render/film.h"
+#include "render/lens.h"
 #include "render/sampler.h"
 
 /* Sampler dimensions: 0-1 pixel position; then DIMS_PER_VERTEX per path vertex. */
 enum { DIM_SUN = 0, DIM_SKY = 2, DIM_BSDF = 4, DIM_RR = 7, DIMS_PER_VERTEX = 8 };
+/* The lens point: far past every vertex's dimensions, so a pinhole's samples stay as they were. */
+#define DIM_LENS (1u << 24)
 
 static inline float power_heuristic(float a, float b)
 {
@@ -39,12 +42,14 @@ static int trace(const render_ctx *ctx, struct RTCRayHit *rh)
     return rh->hit.geomID != RTC_INVALID_GEOMETRY_ID;
 }
 
-/* Traces the camera ray along unit d: straight, or chord by chord along the Earth's curved path
- * (curved_ray.h). On a hit, rh holds the ray that met the surface (the chord, so that shading
+/* Traces the camera ray from o (the eye, or a point on the lens beside it) along unit d:
+ * straight, or chord by chord along the Earth's curved path (curved_ray.h) moved by o's offset
+ * from the eye. On a hit, rh holds the ray that met the surface (the chord, so that shading
  * works from the ray that really hit) and *t, when asked for, the hit's path parameter: its
  * distance along d, which the depth layer reads. On a miss rh holds the straight ray along d. */
-static int trace_camera(const render_ctx *ctx, vec3 d, struct RTCRayHit *rh, float *t)
+static int trace_camera(const render_ctx *ctx, vec3 o, vec3 d, struct RTCRayHit *rh, float *t)
 {
+    vec3 shift = v3_sub(o, ctx->camera.origin);
     curved_path p;
     curved_path_begin(&p, &ctx->curved, d);
     vec3 org, dir;
@@ -52,12 +57,12 @@ static int trace_camera(const render_ctx *ctx, vec3 d, struct RTCRayHit *rh, flo
     double t0, dt;
     while (curved_path_next(&p, &org, &dir, &len, &t0, &dt)) {
         /* Chords overlap by a hundred-thousandth so that no hit falls between two of them. */
-        ray_init(rh, org, dir, 0.0f, isinf(len) ? INFINITY : len * (1.0f + 1e-5f), ctx->ray_mask);
+        ray_init(rh, v3_add(org, shift), dir, 0.0f, isinf(len) ? INFINITY : len * (1.0f + 1e-5f), ctx->ray_mask);
         if (!trace(ctx, rh)) continue;
         if (t) *t = isinf(len) ? rh->ray.tfar : (float)(t0 + rh->ray.tfar / len * dt);
         return 1;
     }
-    ray_init(rh, ctx->camera.origin, d, 0.0f, INFINITY, ctx->ray_mask);
+    ray_init(rh, o, d, 0.0f, INFINITY, ctx->ray_mask);
     return 0;
 }
 
@@ -107,7 +112,7 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
         struct RTCRayHit rh;
         int found;
         if (depth == 0) {
-            found = trace_camera(ctx, d, &rh, NULL);
+            found = trace_camera(ctx, o, d, &rh, NULL);
             *hit = found ? 1 + on_development(a, &rh) : 0;
         } else {
             ray_init(&rh, o, d, 0.0f, INFINITY, ctx->ray_mask);
@@ -213,7 +218,7 @@ static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t
             float sx = s ? ((g % grid) + 0.5f) / grid : 0.5f, sy = s ? ((g / grid) + 0.5f) / grid : 0.5f;
             vec3 d = camera_direction(&ctx->camera, x + sx, y + sy);
             if (ctx->curved.on) {
-                trace_camera(ctx, d, &rh[i], NULL); /* chord by chord, one ray at a time */
+                trace_camera(ctx, ctx->camera.origin, d, &rh[i], NULL); /* chord by chord, one ray at a time */
                 continue;
             }
             ray_init(&rh[i], ctx->camera.origin, d, 0.0f, INFINITY, ctx->ray_mask);
@@ -275,7 +280,7 @@ static void aux_layers(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_resu
     vec3 d = camera_direction(&ctx->camera, x + 0.5f, y + 0.5f);
     struct RTCRayHit rh;
     float t;
-    if (!trace_camera(ctx, d, &rh, &t)) {
+    if (!trace_camera(ctx, ctx->camera.origin, d, &rh, &t)) {
         out->depth = INFINITY;
         out->normal = v3(0, 0, 0), out->albedo = v3(0, 0, 0);
         out->instance_id = out->species_id = out->object_id = 0;
@@ -315,9 +320,12 @@ void integrate_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_result
     for (uint32_t s = 0; s < n; s++) {
         sampler smp;
         sampler_start(&smp, ctx->seed, pixel, s);
-        vec3 d = camera_direction(&ctx->camera, x + sampler_at(&smp, 0), y + sampler_at(&smp, 1));
+        vec3 d = camera_direction(&ctx->camera, x + sampler_at(&smp, 0), y + sampler_at(&smp, 1)), o = ctx->camera.origin;
+        float vignette = lens_vignette(&ctx->camera, d);
+        if (ctx->camera.lens_radius > 0.0f)
+            lens_ray(&ctx->camera, sampler_at(&smp, DIM_LENS), sampler_at(&smp, DIM_LENS + 1), &o, &d);
         int hit = 0;
-        vec3 L = path_radiance(ctx, &smp, ctx->camera.origin, d, &hit);
+        vec3 L = v3_scale(path_radiance(ctx, &smp, o, d, &hit), vignette);
         if (!(isfinite(L.x) && isfinite(L.y) && isfinite(L.z))) L = v3(0, 0, 0);
         sum = v3_add(sum, L);
         hits += hit != 0;

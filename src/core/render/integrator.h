@@ -1,6 +1,8 @@
 /* integrator.h — what one pixel sees.
  *
- * Path tracing: unidirectional paths from the camera; at each vertex next-event estimation of
+ * Path tracing: unidirectional paths from the camera (through the thin lens and weighted by the
+ * vignette when the camera has them, render/lens.h; the verification mode and the auxiliary
+ * layers use the pinhole); at each vertex next-event estimation of
  * the sun and of the sky, each combined with BSDF sampling by multiple importance sampling
  * (power heuristic); Russian roulette from the fourth vertex on; at most max_depth vertices.
  *

@@ -165,6 +165,15 @@ static const sylva_param_spec camera_params[] = {
     {.name = "roll", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = -180, .max = 180,
      .unit = "deg",
      .help = "Turn of the camera about its view, clockwise as seen from behind it."},
+    {.name = "f_number", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = 0, .max = 1000,
+     .help = "Lens f-number for depth of field (a thin lens, its pupil focal_length / f_number "
+             "wide; give focus_distance with it); 0 is a pinhole, everything sharp."},
+    {.name = "focus_distance", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 10, .min = 0,
+     .max = 1e7, .unit = "m",
+     .help = "Distance from the camera to what is in sharp focus, along the view (with f_number)."},
+    {.name = "vignette", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = 0, .max = 1,
+     .help = "Strength of the lens's natural falloff toward the corners: brightness times "
+             "1 - s + s cos^4 of the angle off the axis; 0 is none."},
 };
 const host_schema host_schema_camera = {
     "camera", "A pinhole camera: where it stands, where it looks and how wide it sees.",

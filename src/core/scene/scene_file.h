@@ -56,6 +56,9 @@ typedef struct camera_settings {
     double fov_deg;         /* horizontal field of view; derived from focal length when given */
     double focal_length_mm; /* 0 when fov was given */
     double sensor_width_mm;
+    double f_number;        /* thin lens (render/lens.h); 0: a pinhole, everything sharp */
+    double focus_distance;  /* metres to the surface in sharp focus, with f_number */
+    double vignette;        /* strength of the cos^4 falloff, 0 to 1 */
 } camera_settings;
 
 /* A named camera beside the scene's own (the viewpoints: section). */

@@ -229,6 +229,14 @@ static int read_camera_block(loader *L, const ynode *map, uint32_t key_line, uin
         return sf_located(L->err, L->file, fov->line, fov->column,
                           "a perspective camera sees less than 180 degrees across, got fov %g; use "
                           "projection: cylindrical for a panorama", c->fov_deg);
+    const sylva_value *f_number = sylva_param(p, "f_number"), *focus = sylva_param(p, "focus_distance");
+    c->f_number = f_number->r;
+    c->focus_distance = focus->r;
+    c->vignette = sylva_param_real(p, "vignette");
+    if (c->f_number > 0.0 && !focus->is_set)
+        return sf_located(L->err, L->file, f_number->line, f_number->column,
+                          "'f_number' %g needs 'focus_distance' (metres to what is sharp), e.g. "
+                          "focus_distance: 50", c->f_number);
     if (c->eye_ground.given) c->position[2] = NAN;   /* known once the terrain is built */
     if (c->look_at_ground.given) c->look_at[2] = NAN;
     read_camera_angles(p, c);

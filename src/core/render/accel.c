@@ -11,6 +11,7 @@
 #include "geometry/terrain_apron.h"
 #include "geometry/water_surface.h"
 #include "render/accel_terrain.h"
+#include "render/bark_bump.h"
 
 /* --- Embree's errors --------------------------------------------------------------------- */
 
@@ -327,4 +328,5 @@ void accel_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h)
         h->albedo = v3_mul(h->albedo, v3(rgba[0], rgba[1], rgba[2]));
     }
     h->kind = g->kind;
+    bark_bump(s, m, t, xf, h);
 }

@@ -12,14 +12,29 @@
 
 enum { TW = 16, TH = 16 };
 
-/* One triangle in the XY plane, u along x over `size` metres, v along y, normals +z. */
-static void flat_triangle(mesh *m, float size, float *pos, float *nrm, float *uv, uint32_t *tri, int32_t *mat)
+/* A textured bark material over one triangle in the XY plane, u along x over `size` metres,
+ * v along y, normals +z; the texels are the test's to fill. */
+typedef struct bark_fixture {
+    uint8_t texels[TW * TH * 4];
+    texture tx;
+    material bark;
+    scene s;
+    float pos[9], nrm[9], uv[6];
+    uint32_t tri[3];
+    int32_t mat[1];
+    mesh m;
+} bark_fixture;
+
+static void fixture_init(bark_fixture *f, float size)
 {
     const float p[9] = {0, 0, 0, size, 0, 0, 0, size, 0}, t[6] = {0, 0, 1, 0, 0, 1};
-    for (int i = 0; i < 9; i++) pos[i] = p[i], nrm[i] = (i % 3 == 2);
-    for (int i = 0; i < 6; i++) uv[i] = t[i];
-    tri[0] = 0, tri[1] = 1, tri[2] = 2, mat[0] = 0;
-    *m = (mesh){.pos = pos, .nrm = nrm, .uv = uv, .nv = 3, .tri = tri, .mat = mat, .nt = 1};
+    for (int i = 0; i < 9; i++) f->pos[i] = p[i], f->nrm[i] = (i % 3 == 2);
+    for (int i = 0; i < 6; i++) f->uv[i] = t[i];
+    f->tri[0] = 0, f->tri[1] = 1, f->tri[2] = 2, f->mat[0] = 0;
+    f->m = (mesh){.pos = f->pos, .nrm = f->nrm, .uv = f->uv, .nv = 3, .tri = f->tri, .mat = f->mat, .nt = 1};
+    f->tx = (texture){.width = TW, .height = TH, .rgba = f->texels};
+    f->bark = (material){.bsdf = SYLVA_BSDF_LAMBERT, .albedo = {1, 1, 1}, .texture = 0};
+    f->s = (scene){.textures = &f->tx, .n_textures = 1};
 }
 
 static vec3 bumped(const scene *s, const mesh *m, const material *mat, geom_kind kind, vec3 ns)
@@ -31,32 +46,26 @@ static vec3 bumped(const scene *s, const mesh *m, const material *mat, geom_kind
 
 TEST(ramp_tilts_by_the_stated_slope)
 {
-    uint8_t texels[TW * TH * 4];
+    static bark_fixture f;
+    fixture_init(&f, 1.0f);
     for (int y = 0; y < TH; y++)
         for (int x = 0; x < TW; x++) {
-            uint8_t *t = texels + (y * TW + x) * 4;
+            uint8_t *t = f.texels + (y * TW + x) * 4;
             t[0] = t[1] = t[2] = (uint8_t)(100 + 4 * x), t[3] = 255;
         }
-    texture tx = {.width = TW, .height = TH, .rgba = texels};
-    material bark = {.bsdf = SYLVA_BSDF_LAMBERT, .albedo = {1, 1, 1}, .texture = 0};
-    scene s = {.textures = &tx, .n_textures = 1};
-    float pos[9], nrm[9], uv[6];
-    uint32_t tri[3];
-    int32_t mat[1];
-    mesh m;
     /* the luminance step per texel at u = 0.5 (texel 8), over two texels either side */
     float step = (texture_srgb_to_linear(100 + 4 * 10) - texture_srgb_to_linear(100 + 4 * 6)) / 4.0f;
     for (int k = 0; k < 3; k++) {
         float size = k == 0 ? 0.01f : k == 1 ? 1.0f : 30.0f;
-        flat_triangle(&m, size, pos, nrm, uv, tri, mat);
-        vec3 n = bumped(&s, &m, &bark, GEOM_PROTOTYPE, v3(0, 0, 1));
+        fixture_init(&f, size);
+        vec3 n = bumped(&f.s, &f.m, &f.bark, GEOM_PROTOTYPE, v3(0, 0, 1));
         CHECK(n.x < 0.0f);                           /* away from the higher, brighter side */
         CHECK_NEAR(-n.x / n.z, BARK_BUMP_SLOPE * step, 1e-4);
         CHECK_NEAR(n.y, 0.0, 1e-6);
     }
     /* flat texture: unchanged */
-    for (int i = 0; i < TW * TH; i++) texels[i * 4] = texels[i * 4 + 1] = texels[i * 4 + 2] = 90;
-    vec3 n = bumped(&s, &m, &bark, GEOM_PROTOTYPE, v3(0.1f, 0, 1));
+    for (int i = 0; i < TW * TH; i++) f.texels[i * 4] = f.texels[i * 4 + 1] = f.texels[i * 4 + 2] = 90;
+    vec3 n = bumped(&f.s, &f.m, &f.bark, GEOM_PROTOTYPE, v3(0.1f, 0, 1));
     vec3 want = v3_norm(v3(0.1f, 0, 1));
     CHECK_NEAR(n.x, want.x, 1e-6);
     CHECK_NEAR(n.z, want.z, 1e-6);
@@ -64,20 +73,13 @@ TEST(ramp_tilts_by_the_stated_slope)
 
 TEST(never_past_the_surface_and_only_on_bark)
 {
-    uint8_t texels[TW * TH * 4];
+    static bark_fixture f;
+    fixture_init(&f, 1.0f);
     for (int i = 0; i < TW * TH; i++) {
         int x = i % TW, y = i / TW;
-        texels[i * 4] = texels[i * 4 + 1] = texels[i * 4 + 2] = ((x / 3 + y / 3) & 1) ? 255 : 0;
-        texels[i * 4 + 3] = 255;
+        f.texels[i * 4] = f.texels[i * 4 + 1] = f.texels[i * 4 + 2] = ((x / 3 + y / 3) & 1) ? 255 : 0;
+        f.texels[i * 4 + 3] = 255;
     }
-    texture tx = {.width = TW, .height = TH, .rgba = texels};
-    material bark = {.bsdf = SYLVA_BSDF_LAMBERT, .albedo = {1, 1, 1}, .texture = 0};
-    scene s = {.textures = &tx, .n_textures = 1};
-    float pos[9], nrm[9], uv[6];
-    uint32_t tri[3];
-    int32_t mat[1];
-    mesh m;
-    flat_triangle(&m, 1.0f, pos, nrm, uv, tri, mat);
     int tilted = 0;
     for (int a = 0; a < 64; a++) {
         /* interpolated normals leaning up to 80 degrees off the face, every which way */
@@ -85,8 +87,8 @@ TEST(never_past_the_surface_and_only_on_bark)
         vec3 ns = v3(sinf(th) * cosf(ph), sinf(th) * sinf(ph), cosf(th));
         for (int j = 0; j < 16; j++) {
             hit_info h = {.ng = v3(0, 0, -1), .ns = ns, .u = (j + 0.3f) / 16, .v = (j * 7 % 16 + 0.6f) / 16,
-                          .mat = &bark, .kind = GEOM_PROTOTYPE};
-            bark_bump(&s, &m, 0, NULL, &h);
+                          .mat = &f.bark, .kind = GEOM_PROTOTYPE};
+            bark_bump(&f.s, &f.m, 0, NULL, &h);
             CHECK(h.ns.z >= BARK_BUMP_MIN_COSINE * 0.99f);
             CHECK_NEAR(v3_len(h.ns), 1.0, 1e-5);
             tilted += fabsf(h.ns.x - ns.x) > 0.05f;
@@ -96,11 +98,11 @@ TEST(never_past_the_surface_and_only_on_bark)
     material leaf = {.bsdf = SYLVA_BSDF_LEAF, .texture = 0}, plain = {.bsdf = SYLVA_BSDF_LAMBERT, .texture = -1};
     material masked = {.bsdf = SYLVA_BSDF_LAMBERT, .texture = 0, .alpha_mask = 1};
     vec3 up = v3(0, 0, 1);
-    CHECK_NEAR(bumped(&s, &m, &leaf, GEOM_PROTOTYPE, up).z, 1.0, 0.0);
-    CHECK_NEAR(bumped(&s, &m, &plain, GEOM_PROTOTYPE, up).z, 1.0, 0.0);
-    CHECK_NEAR(bumped(&s, &m, &masked, GEOM_PROTOTYPE, up).z, 1.0, 0.0);
-    CHECK_NEAR(bumped(&s, &m, &bark, GEOM_OBJECT, up).z, 1.0, 0.0);
-    CHECK(bumped(&s, &m, &bark, GEOM_PROTOTYPE, up).z < 1.0f);
+    CHECK_NEAR(bumped(&f.s, &f.m, &leaf, GEOM_PROTOTYPE, up).z, 1.0, 0.0);
+    CHECK_NEAR(bumped(&f.s, &f.m, &plain, GEOM_PROTOTYPE, up).z, 1.0, 0.0);
+    CHECK_NEAR(bumped(&f.s, &f.m, &masked, GEOM_PROTOTYPE, up).z, 1.0, 0.0);
+    CHECK_NEAR(bumped(&f.s, &f.m, &f.bark, GEOM_OBJECT, up).z, 1.0, 0.0);
+    CHECK(bumped(&f.s, &f.m, &f.bark, GEOM_PROTOTYPE, up).z < 1.0f);
 }
 
 TEST_LIST(TEST_CASE(ramp_tilts_by_the_stated_slope), TEST_CASE(never_past_the_surface_and_only_on_bark))

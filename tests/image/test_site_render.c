@@ -150,7 +150,8 @@ TEST(height_above_ground_off_terrain)
     CHECK_STR_CONTAINS(err.msg, "plant_off.yaml:5:10: plant 0: position (50, 0) lies outside the terrain");
 }
 
-/* Every EXR sylva writes names the site's CRS (WKT and name) and origin in its header. */
+/* Every EXR sylva writes names the site's CRS (WKT and name) and origin in its header, and the
+ * exposure its PNG takes when given one. */
 TEST(exr_header_names_the_site)
 {
     err_buf err = {{0}};
@@ -158,7 +159,7 @@ TEST(exr_header_names_the_site)
     film *f = s ? render(s, 1) : NULL;
     CHECK(f != NULL);
     const char *path = work_path("site.exr");
-    if (f) CHECK_INT(film_write_exr(f, &s->site, NAN, path, &err), 0);
+    if (f) CHECK_INT(film_write_exr(f, &s->site, -1.25, path, &err), 0);
     exr_context_t ctx = NULL;
     CHECK(exr_start_read(&ctx, path, NULL) == EXR_ERR_SUCCESS);
     if (ctx) {
@@ -174,6 +175,9 @@ TEST(exr_header_names_the_site)
         CHECK(exr_attr_get_double(ctx, 0, "siteOriginNorthing", &n) == EXR_ERR_SUCCESS);
         CHECK(exr_attr_get_double(ctx, 0, "siteOriginHeight", &h) == EXR_ERR_SUCCESS);
         CHECK(e == 650000.0 && n == 3600000.0 && h == 0.0);
+        double ev = 0;
+        CHECK(exr_attr_get_double(ctx, 0, "exposureStops", &ev) == EXR_ERR_SUCCESS);
+        CHECK(ev == -1.25);
         exr_finish(&ctx);
     }
     /* a scene without a site writes no site attributes */
@@ -186,6 +190,7 @@ TEST(exr_header_names_the_site)
     if (ctx) {
         double e = 0;
         CHECK(exr_attr_get_double(ctx, 0, "siteOriginEasting", &e) == EXR_ERR_NO_ATTR_BY_NAME);
+        CHECK(exr_attr_get_double(ctx, 0, "exposureStops", &e) == EXR_ERR_NO_ATTR_BY_NAME); /* NAN: none */
         exr_finish(&ctx);
     }
     film_free(f);

@@ -209,6 +209,22 @@ TEST(scene_export)
     CHECK_STR_CONTAINS(main, "object { O0_Sign_post }  // \"sign // post\"");
     CHECK_STR_CONTAINS(main, "#include \"t_plants.inc\"");
     CHECK(main && !strstr(main, "t_terrain.inc"));
+    CHECK(main && !strstr(main, "aperture")); /* a pinhole: no focal blur */
+    free(main);
+
+    /* a thin lens: 50 mm at f/2 (a 25 mm pupil) focused 10 m along the view; the vignette named */
+    s->camera.focal_length_mm = 50, s->camera.sensor_width_mm = 36, s->camera.f_number = 2;
+    s->camera.focus_distance = 10, s->camera.vignette = 0.5;
+    CHECK_INT(pov_export_scene(s, path, &po, &st, &err), 0);
+    main = slurp(path);
+    CHECK_STR_CONTAINS(main, "aperture 0.025");
+    CHECK_STR_CONTAINS(main, "blur_samples 64");
+    CHECK_STR_CONTAINS(main, "// camera.vignette 0.5");
+    double fw[3] = {-9, 9, -6.5}, fl = sqrt(81 + 81 + 6.5 * 6.5), focus_want[3], focus_got[3] = {0, 0, 0};
+    for (int d = 0; d < 3; d++) focus_want[d] = s->camera.position[d] + fw[d] / fl * 10;
+    const char *fp = main ? strstr(main, "focal_point <") : NULL;
+    CHECK(fp && sscanf(fp, "focal_point <%lf, %lf, %lf>", &focus_got[0], &focus_got[1], &focus_got[2]) == 3);
+    for (int d = 0; d < 3; d++) CHECK_NEAR(focus_got[d], focus_want[d], 1e-4);
     free(main);
 
     /* plant matrices: the columns of the transform; translate (1,2,3), 30 degrees, scale 2 */

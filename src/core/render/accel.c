@@ -328,5 +328,5 @@ void accel_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h)
         h->albedo = v3_mul(h->albedo, v3(rgba[0], rgba[1], rgba[2]));
     }
     h->kind = g->kind;
-    bark_bump(s, m, t, xf, h);
+    if (a->bark_relief) bark_bump(s, m, t, xf, h);
 }

@@ -86,6 +86,8 @@ typedef struct accel {
     mesh *apron_mesh;          /* the terrain beyond its edge, or NULL; owned */
     struct accel_errors *errors; /* what Embree's error callback recorded; owned */
     float bounds_lo[3], bounds_hi[3]; /* of the whole scene */
+    int bark_relief;           /* 1: accel_shade tilts bark's normals (bark_bump.h); 0 (as built):
+                                * the mesh's normals, which the verification mode compares */
 } accel;
 
 typedef struct hit_info {

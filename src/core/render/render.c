@@ -120,6 +120,7 @@ film *render_setup_run(render_setup *rs, const render_options *opt, render_stats
     render_ctx ctx = {.accel = &rs->acc, .lights = &rs->lt, .spp = o.spp ? o.spp : s->image.spp,
                       .max_depth = s->image.max_depth, .seed = o.seed_set ? o.seed : s->image.seed, .verify = o.verify,
                       .recorder = o.recorder, .ray_mask = ~o.leave_out};
+    rs->acc.bark_relief = !o.verify; /* POV-Ray, which the verification matches, has none */
     camera_init(&ctx.camera, &s->camera, w, h);
     curved_rays_init(&ctx.curved, o.flat_earth ? NULL : &s->earth, &ctx.camera, rs->acc.bounds_lo, rs->acc.bounds_hi);
     render_job job = {.ctx = &ctx, .film = f, .tiles_x = (w + TILE - 1) / TILE, .tiles_y = (h + TILE - 1) / TILE};

@@ -259,7 +259,7 @@ int crosscheck_run(const scene *s, const char *out_dir, const crosscheck_options
         goto done;
     }
     light_summary l;
-    if (light_summary_init(&l, &s->sun, &s->sky, err)) goto done;
+    if (light_summary_init(&l, &s->sun, &s->sky, s->site.origin[2], s->camera.position[2], err)) goto done;
     size_t n = (size_t)r->width * r->height;
     pov_rgb = malloc(n * 3 * sizeof(float));
     pov_alpha = malloc(n * sizeof(float));

@@ -13,6 +13,11 @@ vec3 light_summary_sky(const light_summary *l, vec3 dir)
         sky_preetham_radiance(&l->preetham, d, rgb);
         return v3((float)rgb[0], (float)rgb[1], (float)rgb[2]);
     }
+    case SKY_PHYSICAL: {
+        double d[3] = {dir.x, dir.y, dir.z}, rgb[3];
+        atmosphere_sky(&l->atmosphere, d, rgb);
+        return v3((float)rgb[0], (float)rgb[1], (float)rgb[2]);
+    }
     case SKY_CONSTANT: return l->sky_constant;
     case SKY_NONE: break;
     }
@@ -39,7 +44,8 @@ static vec3 sky_mean(const light_summary *l)
     return v3((float)(sum[0] / wsum), (float)(sum[1] / wsum), (float)(sum[2] / wsum));
 }
 
-int light_summary_init(light_summary *l, const sun_settings *sun, const sky_settings *sky, err_buf *err)
+int light_summary_init(light_summary *l, const sun_settings *sun, const sky_settings *sky, double origin_altitude,
+                       double camera_z, err_buf *err)
 {
     memset(l, 0, sizeof *l);
     l->sun_on = sun->enabled && sun->irradiance > 0;
@@ -62,6 +68,20 @@ int light_summary_init(light_summary *l, const sun_settings *sun, const sky_sett
         double d[3] = {l->sun_dir.x, l->sun_dir.y, l->sun_dir.z};
         if (sky_preetham_init(&l->preetham, d, sky->turbidity, sky->scale, sky->ground_albedo))
             return err_set(err, "sky: turbidity %g is outside the Preetham model's range [1.7, 10]", sky->turbidity);
+    }
+    l->origin_altitude = origin_altitude;
+    if (sky->model == SKY_PHYSICAL) {
+        double d[3] = {l->sun_dir.x, l->sun_dir.y, l->sun_dir.z}, e[3];
+        for (int k = 0; k < 3; k++) e[k] = sun->color[k] * sun->irradiance;
+        double altitude = origin_altitude + camera_z;
+        if (sky->visibility_km > atmosphere_clear_visibility_km(altitude))
+            return err_set(err, "sky: visibility %g km is longer than clean air allows at the camera's altitude "
+                                "of %.0f m (%.0f km, Rayleigh scattering alone); give a shorter one",
+                           sky->visibility_km, altitude, atmosphere_clear_visibility_km(altitude));
+        if (atmosphere_init(&l->atmosphere, d, e, altitude, sky->visibility_km, sky->density, sky->scale,
+                            sky->ground_albedo))
+            return err_set(err, "sky: the physical sky cannot be set up (visibility %g km, density %g)",
+                           sky->visibility_km, sky->density);
     }
     if (sky->model != SKY_NONE) l->sky_mean = sky_mean(l);
     return 0;

@@ -4,6 +4,7 @@
 
 #include <math.h>
 
+#include "render/aerial.h"
 #include "render/bsdf.h"
 #include "render/film.h"
 #include "render/sampler.h"
@@ -132,6 +133,7 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
         if (depth >= ctx->max_depth) break;
         hit_info h;
         accel_shade(a, &rh, &h);
+        aerial_segment(&l->summary, o, h.p, &L, &beta); /* the air between o and the hit */
         vec3 wo = v3_scale(d, -1.0f);
         vec3 ng = v3_dot(h.ng, wo) < 0.0f ? v3_scale(h.ng, -1.0f) : h.ng;
         vec3 n = v3_dot(h.ns, ng) < 0.0f ? v3_scale(h.ns, -1.0f) : h.ns;

@@ -28,7 +28,12 @@ static const double BETA_RAYLEIGH[3] = {5.8e-6, 13.5e-6, 33.1e-6};
  * directions of the sky irradiance integral. */
 #define SKY_STEPS 40
 #define COLUMN_STEPS 96
+/* A segment is cut into equal steps no taller than SEGMENT_RISE and no thicker than one optical
+ * depth at 550 nm of the air at its start (at most SEGMENT_STEPS): along a level segment the air
+ * is the same everywhere and one step is exact; the second bound keeps the first step, whose air
+ * sends the most light, near the segment's start. */
 #define SEGMENT_STEPS 16
+#define SEGMENT_RISE 50.0
 #define IRR_ELEVATIONS 16
 #define IRR_AZIMUTHS 32
 /* The multiple-scattering table: directions around each point (a Fibonacci sphere) and steps
@@ -216,17 +221,45 @@ static void sky_ray(const atmosphere *a, const double d[3], int ground_light, do
     }
 }
 
-void atmosphere_sky(const atmosphere *a, const double dir[3], double rgb[3]) { sky_ray(a, dir, 1, rgb); }
+/* The unit direction at view-table node (x, azimuth phi from the sun's). */
+static void view_direction(const atmosphere *a, double x, double phi, double d[3])
+{
+    double e = 0.5 * M_PI * x * fabs(x), c = cos(e);
+    double h[2] = {cos(phi), sin(phi)}; /* in the frame (sun_east, its left) */
+    d[0] = c * (h[0] * a->sun_east[0] - h[1] * a->sun_east[1]);
+    d[1] = c * (h[0] * a->sun_east[1] + h[1] * a->sun_east[0]);
+    d[2] = sin(e);
+}
+
+void atmosphere_sky(const atmosphere *a, const double dir[3], double rgb[3])
+{
+    double len = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+    double z = clampd(dir[2] / len, -1.0, 1.0), e = asin(z) / (0.5 * M_PI);
+    double x = e < 0.0 ? -sqrt(-e) : sqrt(e);
+    double hx = dir[0] * a->sun_east[0] + dir[1] * a->sun_east[1];
+    double hy = dir[1] * a->sun_east[0] - dir[0] * a->sun_east[1];
+    double phi = (hx == 0.0 && hy == 0.0) ? 0.0 : fabs(atan2(hy, hx));
+    double fu = (x + 1.0) * 0.5 * (ATMO_VIEW_ELEVATIONS - 1), fv = phi / M_PI * (ATMO_VIEW_AZIMUTHS - 1);
+    int i = (int)fu, j = (int)fv;
+    if (i > ATMO_VIEW_ELEVATIONS - 2) i = ATMO_VIEW_ELEVATIONS - 2;
+    if (j > ATMO_VIEW_AZIMUTHS - 2) j = ATMO_VIEW_AZIMUTHS - 2;
+    double u = fu - i, v = fv - j;
+    for (int k = 0; k < 3; k++)
+        rgb[k] = (1.0 - u) * ((1.0 - v) * a->view[i][j][k] + v * a->view[i][j + 1][k]) +
+                 u * ((1.0 - v) * a->view[i + 1][j][k] + v * a->view[i + 1][j + 1][k]);
+}
 
 void atmosphere_segment(const atmosphere *a, double alt0, const double dir[3], double length,
                         double transmittance[3], double inscatter[3])
 {
     double nu = dir[0] * a->sun_dir[0] + dir[1] * a->sun_dir[1] + dir[2] * a->sun_dir[2];
     double pr = phase_rayleigh(nu), pm = phase_mie(nu, a->mie_g);
-    double dt = length / SEGMENT_STEPS;
+    double need = fabs(dir[2]) * length / SEGMENT_RISE + atmosphere_extinction_550(a, alt0) * length;
+    int steps = need < SEGMENT_STEPS - 1 ? 1 + (int)need : SEGMENT_STEPS;
+    double dt = length / steps;
     transmittance[0] = transmittance[1] = transmittance[2] = 1.0;
     inscatter[0] = inscatter[1] = inscatter[2] = 0.0;
-    for (int i = 0; i < SEGMENT_STEPS; i++) {
+    for (int i = 0; i < steps; i++) {
         double alt = alt0 + dir[2] * (i + 0.5) * dt, sun_t[3];
         float ms[3];
         flat_at(a, alt, sun_t, ms);
@@ -295,6 +328,9 @@ int atmosphere_init(atmosphere *a, const double sun_dir[3], const double sun_irr
      * sphere's geometry is well defined for the sky. */
     a->altitude = clampd(altitude, 1.0, R_TOP - R_GROUND - 1000.0);
     for (int k = 0; k < 3; k++) a->sun_dir[k] = sun_dir[k] / len;
+    double horizontal = sqrt(a->sun_dir[0] * a->sun_dir[0] + a->sun_dir[1] * a->sun_dir[1]);
+    a->sun_east[0] = horizontal > 1e-9 ? a->sun_dir[0] / horizontal : 1.0;
+    a->sun_east[1] = horizontal > 1e-9 ? a->sun_dir[1] / horizontal : 0.0;
 
     /* Koschmieder: beta(550 nm) at the observer = 3.912 / V; Mie makes up what Rayleigh does not. */
     double beta_550 = KOSCHMIEDER / (visibility_km * 1000.0);
@@ -360,5 +396,12 @@ int atmosphere_init(atmosphere *a, const double sun_dir[3], const double sun_irr
             for (int k = 0; k < 3; k++) a->sky_irradiance[k] += c[k] * cos(th) * sin(th) * dth * dph;
         }
     }
+    for (int i = 0; i < ATMO_VIEW_ELEVATIONS; i++)
+        for (int j = 0; j < ATMO_VIEW_AZIMUTHS; j++) {
+            double d[3], c[3];
+            view_direction(a, 2.0 * i / (ATMO_VIEW_ELEVATIONS - 1) - 1.0, M_PI * j / (ATMO_VIEW_AZIMUTHS - 1), d);
+            sky_ray(a, d, 1, c);
+            for (int k = 0; k < 3; k++) a->view[i][j][k] = (float)c[k];
+        }
     return 0;
 }

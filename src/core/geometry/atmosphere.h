@@ -25,6 +25,9 @@
 /* The multiple-scattering term, tabulated by altitude and the sun's cosine there. */
 #define ATMO_MS_ALTITUDES 32
 #define ATMO_MS_COSINES 32
+/* The sky seen from the observer, by elevation and azimuth from the sun's. */
+#define ATMO_VIEW_ELEVATIONS 129
+#define ATMO_VIEW_AZIMUTHS 129
 /* The sun's transmittance and the multiple-scattering term by altitude along the scene's (flat)
  * vertical (for segments). */
 #define ATMO_SUN_ALTITUDES 256
@@ -58,6 +61,12 @@ typedef struct atmosphere {
      * to the top with the same u^2 spacing. */
     float sun_flat[ATMO_SUN_ALTITUDES][3];
     float multiple_flat[ATMO_SUN_ALTITUDES][3];
+    /* The sky's radiance from the observer (what atmosphere_sky returns, interpolated): rows
+     * elevation 90 deg x |x| with x in [-1, 1] uniformly (a row exactly at the horizon, dense
+     * near it), columns the azimuth from the sun's, 0 to 180 deg uniformly (the sky is symmetric
+     * about the sun's vertical plane). */
+    float view[ATMO_VIEW_ELEVATIONS][ATMO_VIEW_AZIMUTHS][3];
+    double sun_east[2];       /* unit horizontal direction of the sun ((1, 0) when overhead) */
 } atmosphere;
 
 /* Lowest altitude the tables hold (m); below it they hold their value there. */
@@ -76,7 +85,8 @@ double atmosphere_clear_visibility_km(double altitude);
 
 /* Radiance of the sky seen from the observer toward unit dir: the light scattered into the
  * view by the air up to the top of the atmosphere, or up to the ground sphere below the horizon
- * plus the ground's reflection through that air. */
+ * plus the ground's reflection through that air (bilinear in the view table, which holds the
+ * integral at its nodes). */
 void atmosphere_sky(const atmosphere *a, const double dir[3], double rgb[3]);
 
 /* Extinction and in-scattering along a straight segment of the scene's flat frame from a point

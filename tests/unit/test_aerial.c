@@ -190,5 +190,26 @@ TEST(furnace_without_atmosphere)
     scene_free(s);
 }
 
+/* A visibility longer than clean air gives at the camera is the scene's fault (exit status 2),
+ * said with the limit; the same visibility from 5 km up is valid (thinner air: 541 km there). */
+TEST(visibility_beyond_clean_air)
+{
+    scene *s = target_scene(0);
+    s->sky.visibility_km = 500;
+    render_options ro = {.threads = 1, .quiet = 1};
+    err_buf err = {{0}};
+    film *f = render_scene(s, &ro, NULL, &err);
+    CHECK(f == NULL);
+    CHECK_INT(err.status, ERR_INPUT);
+    CHECK_STR_CONTAINS(err.msg, "visibility 500 km is longer than clean air allows at the camera's altitude of 100 m");
+    film_free(f);
+    s->camera.position[2] = 5000;
+    err = (err_buf){{0}};
+    f = render_scene(s, &ro, NULL, &err);
+    CHECK(f != NULL);
+    film_free(f);
+    scene_free(s);
+}
+
 TEST_LIST(TEST_CASE(koschmieder_contrast_of_a_black_target), TEST_CASE(zero_density_is_no_atmosphere),
-          TEST_CASE(furnace_without_atmosphere))
+          TEST_CASE(furnace_without_atmosphere), TEST_CASE(visibility_beyond_clean_air))

@@ -75,13 +75,14 @@ int light_summary_init(light_summary *l, const sun_settings *sun, const sky_sett
         for (int k = 0; k < 3; k++) e[k] = sun->color[k] * sun->irradiance;
         double altitude = origin_altitude + camera_z;
         if (sky->visibility_km > atmosphere_clear_visibility_km(altitude))
-            return err_set(err, "sky: visibility %g km is longer than clean air allows at the camera's altitude "
-                                "of %.0f m (%.0f km, Rayleigh scattering alone); give a shorter one",
+            return err_fail(err, ERR_INPUT,
+                            "sky: visibility %g km is longer than clean air allows at the camera's altitude "
+                            "of %.0f m (%.0f km, Rayleigh scattering alone); give a shorter one",
                            sky->visibility_km, altitude, atmosphere_clear_visibility_km(altitude));
         if (atmosphere_init(&l->atmosphere, d, e, altitude, sky->visibility_km, sky->density, sky->scale,
                             sky->ground_albedo))
-            return err_set(err, "sky: the physical sky cannot be set up (visibility %g km, density %g)",
-                           sky->visibility_km, sky->density);
+            return err_fail(err, ERR_INPUT, "sky: the physical sky cannot be set up (visibility %g km, density %g)",
+                            sky->visibility_km, sky->density);
     }
     if (sky->model != SKY_NONE) l->sky_mean = sky_mean(l);
     return 0;

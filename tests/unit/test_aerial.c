@@ -1,8 +1,10 @@
 /* test_aerial.c — aerial perspective in the path tracer (render/aerial.h), rendered in-process:
  * Koschmieder's law for a black target, the horizon sky it fades into, an atmosphere of zero
- * density rendering exactly as no atmosphere, and the furnace test with the atmosphere off. */
+ * density rendering exactly as no atmosphere, the furnace test with the atmosphere off, a
+ * visibility beyond clean air refused, and the verification mode's fog. */
 #include <math.h>
 
+#include "geometry/light_summary.h"
 #include "harness.h"
 #include "render/film.h"
 #include "render/render.h"
@@ -89,6 +91,30 @@ TEST(koschmieder_contrast_of_a_black_target)
     fprintf(stderr, "  horizon sky / horizontal limit: %.5f %.5f %.5f\n", sky[0] / far[0], sky[1] / far[1],
             sky[2] / far[2]);
     for (int k = 0; k < 3; k++) CHECK_NEAR(sky[k] / far[k], 1.0, 0.01);
+}
+
+/* The verification mode's fog (POV-Ray's constant fog): the black target 5 km off shows
+ * (1 - exp(-5000 / D)) C with D = V / 3.912 and C the horizon's mean colour; the sky shows C. */
+TEST(verification_fog)
+{
+    for (int target = 0; target < 2; target++) {
+        scene *s = target_scene(target ? 5000 : 0);
+        render_options ro = {.threads = 1, .quiet = 1, .verify = 1};
+        err_buf err = {{0}};
+        film *f = render_scene(s, &ro, NULL, &err);
+        static light_summary l; /* its tables are large for the stack */
+        CHECK_INT(light_summary_init(&l, &s->sun, &s->sky, 0, CAMERA_Z, &err), 0);
+        CHECK_NEAR(l.fog_distance, VISIBILITY * 1000 / 3.912, 1e-6);
+        CHECK(f != NULL);
+        if (f) {
+            double keep = target ? exp(-5000 / l.fog_distance) : 0.0;
+            CHECK_NEAR(f->rgb[3 * 4 + 0], (1 - keep) * l.fog_color.x, 1e-5);
+            CHECK_NEAR(f->rgb[3 * 4 + 2], (1 - keep) * l.fog_color.z, 1e-5);
+            CHECK(l.fog_color.z > l.fog_color.x); /* the horizon of a clear day: bluish */
+        }
+        film_free(f);
+        scene_free(s);
+    }
 }
 
 /* A scene with ground, a sphere and the sun, rendered with the physical sky at density 0 (and a
@@ -212,4 +238,4 @@ TEST(visibility_beyond_clean_air)
 }
 
 TEST_LIST(TEST_CASE(koschmieder_contrast_of_a_black_target), TEST_CASE(zero_density_is_no_atmosphere),
-          TEST_CASE(furnace_without_atmosphere), TEST_CASE(visibility_beyond_clean_air))
+          TEST_CASE(furnace_without_atmosphere), TEST_CASE(visibility_beyond_clean_air), TEST_CASE(verification_fog))

@@ -24,6 +24,26 @@ vec3 light_summary_sky(const light_summary *l, vec3 dir)
     return v3(0, 0, 0);
 }
 
+vec3 light_summary_fog(const light_summary *l, vec3 L, float t)
+{
+    if (!(l->fog_distance > 0.0)) return L;
+    float T = isinf(t) ? 0.0f : (float)exp(-t / l->fog_distance);
+    return v3_add(v3_scale(L, T), v3_scale(l->fog_color, 1.0f - T));
+}
+
+/* The horizon sky averaged over FOG_AZIMUTHS equally spaced azimuths. */
+#define FOG_AZIMUTHS 72
+static vec3 horizon_mean(const light_summary *l)
+{
+    double sum[3] = {0, 0, 0};
+    for (int a = 0; a < FOG_AZIMUTHS; a++) {
+        double phi = (a + 0.5) * (2.0 * M_PI / FOG_AZIMUTHS);
+        vec3 c = light_summary_sky(l, v3((float)cos(phi), (float)sin(phi), 0.0f));
+        sum[0] += c.x, sum[1] += c.y, sum[2] += c.z;
+    }
+    return v3((float)(sum[0] / FOG_AZIMUTHS), (float)(sum[1] / FOG_AZIMUTHS), (float)(sum[2] / FOG_AZIMUTHS));
+}
+
 /* The mean over the upper half of the LIGHT_SKY grid: each cell's radiance at its centre, as a
  * float (as the path tracer's table holds it), weighted by sin theta at the cell's centre row. */
 static vec3 sky_mean(const light_summary *l)
@@ -83,6 +103,11 @@ int light_summary_init(light_summary *l, const sun_settings *sun, const sky_sett
                             sky->ground_albedo))
             return err_fail(err, ERR_INPUT, "sky: the physical sky cannot be set up (visibility %g km, density %g)",
                             sky->visibility_km, sky->density);
+        double beta = atmosphere_extinction_550(&l->atmosphere, altitude);
+        if (beta > 0.0) {
+            l->fog_distance = 1.0 / beta;
+            l->fog_color = horizon_mean(l);
+        }
     }
     if (sky->model != SKY_NONE) l->sky_mean = sky_mean(l);
     return 0;

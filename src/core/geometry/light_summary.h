@@ -36,6 +36,11 @@ typedef struct light_summary {
     vec3 sky_constant;     /* SKY_CONSTANT radiance */
     atmosphere atmosphere; /* SKY_PHYSICAL */
     double origin_altitude;/* altitude above sea level of the scene's z = 0 (the site's origin) */
+    /* The physical sky's air as constant fog, for the verification mode and POV-Ray's `fog`:
+     * transmittance exp(-t / fog_distance) over a distance t, the rest fog_color; fog_distance
+     * 0 for no fog (other skies, or no air). */
+    double fog_distance;   /* 1 / (extinction at 550 nm at the camera), m */
+    vec3 fog_color;        /* the horizon sky's mean over the azimuths */
     vec3 ambient;          /* the verification mode's constant ambient term (sky.ambient) */
     vec3 sky_mean;         /* mean sky radiance over the upper hemisphere (the LIGHT_SKY grid's
                               upper half, cells weighted by sin theta); 0 for no sky */
@@ -49,5 +54,8 @@ int light_summary_init(light_summary *l, const sun_settings *sun, const sky_sett
 
 /* Sky radiance toward unit dir (the exact model). */
 vec3 light_summary_sky(const light_summary *l, vec3 dir);
+
+/* The fog over distance t (INFINITY: a ray that met nothing) applied to radiance L. */
+vec3 light_summary_fog(const light_summary *l, vec3 L, float t);
 
 #endif

@@ -4,7 +4,8 @@
  *
  * Deterministic: numerical quadrature, no random numbers. Shadow rays are not attenuated (the
  * sun's and the sky's light at a surface is already the light at the ground, and there are no
- * volumetric shadows).
+ * volumetric shadows). The verification mode uses the simpler constant fog of
+ * light_summary_fog instead, as POV-Ray does.
  */
 #ifndef SYLVA_AERIAL_H
 #define SYLVA_AERIAL_H

@@ -19,8 +19,8 @@
  * development's own surfaces send to the camera).
  *
  * With the physical sky every segment that meets a surface (camera ray and bounces, not shadow
- * rays) takes the air's extinction and in-scattered light (aerial.h); the verification mode has
- * no air.
+ * rays) takes the air's extinction and in-scattered light (aerial.h); the verification mode
+ * applies it as POV-Ray's constant fog (light_summary_fog), misses included.
  *
  * Every ray (camera, bounce, shadow) carries ctx->ray_mask: geometry whose Embree mask
  * (ACCEL_MASK_*) shares no bit with it is not in the scene for this render.

@@ -6,6 +6,7 @@
 #   move_plant       the export's first plant moves 0.3 m along x
 #   rotate_instance  the export's first plant turns 25 degrees about its own vertical axis
 #   shadowless_sun   the export's sun casts no shadows
+#   thin_fog         the export's fog (the physical sky's air) reaches twice as far
 #   broken_pov       the export ends in a syntax error
 # Every case but agree edits only the POV-Ray side (the export), then runs the cross-check on
 # the edited scene: it must report disagreement (exit 5), or for broken_pov POV-Ray's failure
@@ -38,6 +39,7 @@ case "$case" in
   move_plant)      file="$dir/${name}_plants.inc"; edit='0,/^object { /s/> }$/> translate <0.3, 0, 0> }/' ;;
   rotate_instance) file="$dir/${name}_plants.inc"; edit='0,/^object { /s/ matrix </ rotate 25*z matrix </' ;;
   shadowless_sun)  file="$dir/$name.pov";        edit='s/^  parallel$/  parallel shadowless/' ;;
+  thin_fog)        file="$dir/$name.pov";        edit='s/^  fog { fog_type 1 distance /  fog { fog_type 1 distance 2 * /' ;;
   broken_pov)      file="$dir/$name.pov";        edit='$a sphere { <0, 0, 0> 1 pigment {' ;;
   *) echo "unknown case '$case'" >&2; exit 2 ;;
 esac

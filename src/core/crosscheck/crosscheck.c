@@ -151,6 +151,35 @@ static void composite_over_sky(const image_f32 *img, vec3 sky, float *rgb, float
     }
 }
 
+/* POV-Ray's fog covers the background too and makes it opaque, so with the physical sky's fog
+ * POV-Ray's alpha no longer says where the sky shows: a second render without the fog
+ * (Sylva_no_air) gives it, and replaces the fogged picture's alpha (whose colours stay). */
+static int air_free_alpha(const povray_job *fogged, crosscheck_result *r, const char *image_name,
+                          const char *log_name, image_f32 *img, err_buf *err)
+{
+    char out[600], log[600], path[4300];
+    snprintf(out, sizeof out, "%.*s-noair.exr", (int)(strlen(image_name) - 4), image_name);
+    snprintf(log, sizeof log, "%.*s-noair.log", (int)(strlen(log_name) - 4), log_name);
+    povray_job job = *fogged;
+    job.output = out;
+    job.log = log;
+    job.no_air = 1;
+    povray_result res;
+    if (povray_render(&job, &res, err)) return -1;
+    snprintf(path, sizeof path, "%s/%s", fogged->folder, out);
+    image_f32 bare = {0};
+    int rc = image_read(path, &bare, err);
+    if (!rc && (bare.width != img->width || bare.height != img->height || bare.channels < 4))
+        rc = err_set(err, "%s is not the %ux%u RGBA picture of the fogged render", path, img->width, img->height);
+    if (!rc) {
+        size_t n = (size_t)img->width * img->height;
+        for (size_t i = 0; i < n; i++) img->pixels[i * img->channels + 3] = bare.pixels[i * bare.channels + 3];
+        r->povray.wall_seconds += res.wall_seconds;
+    }
+    image_free(&bare);
+    return rc;
+}
+
 static int compare(const film *f, const float *pov_rgb, const float *pov_alpha, const crosscheck_thresholds *t,
                    crosscheck_result *r, err_buf *err)
 {
@@ -260,7 +289,8 @@ int crosscheck_run(const scene *s, const char *out_dir, const crosscheck_options
         goto done;
     }
     light_summary l;
-    if (light_summary_init(&l, &s->sun, &s->sky, err)) goto done;
+    if (light_summary_init(&l, &s->sun, &s->sky, s->site.origin[2], s->camera.position[2], err)) goto done;
+    if (l.fog_distance > 0.0 && air_free_alpha(&job, r, image_name, log_name, &img, err)) goto done;
     size_t n = (size_t)r->width * r->height;
     pov_rgb = malloc(n * 3 * sizeof(float));
     pov_alpha = malloc(n * sizeof(float));
@@ -268,7 +298,8 @@ int crosscheck_run(const scene *s, const char *out_dir, const crosscheck_options
         err_nomem(err, "out of memory for POV-Ray's picture");
         goto done;
     }
-    composite_over_sky(&img, l.sky_mean, pov_rgb, pov_alpha);
+    /* with fog the fogged picture is whole (its background is the fog colour, as sylva's misses) */
+    composite_over_sky(&img, l.fog_distance > 0.0 ? v3(0, 0, 0) : l.sky_mean, pov_rgb, pov_alpha);
 
     if (compare(f, pov_rgb, pov_alpha, t, r, err)) goto done;
     judge(r, t);

@@ -110,6 +110,7 @@ int povray_render(const povray_job *job, povray_result *res, err_buf *err)
     for (char *tok = strtok(aa, " "); tok && argc < 16; tok = strtok(NULL, " ")) argv[argc++] = tok;
     argv[argc++] = "+UA";
     argv[argc++] = "Declare=Sylva_sky_transmit=1";
+    if (job->no_air) argv[argc++] = "Declare=Sylva_no_air=1";
     argv[argc++] = "-D";
     argv[argc++] = "-P";
     if (job->threads) argv[argc++] = threads;

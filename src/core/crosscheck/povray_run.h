@@ -22,6 +22,7 @@ typedef struct povray_job {
     const char *executable; /* NULL: $SYLVA_POVRAY, else "povray" */
     uint32_t width, height, spp;
     unsigned threads;       /* render threads; 0: POV-Ray's default (one per core) */
+    int no_air;             /* 1: declare Sylva_no_air=1 (the export's fog left out) */
 } povray_job;
 
 typedef struct povray_result {

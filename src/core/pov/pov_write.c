@@ -560,6 +560,16 @@ static int write_main(const scene *s, const light_summary *l, const export_paths
     pov_printf(&pf, "#ifndef (Sylva_sky_transmit)\n  #declare Sylva_sky_transmit = 0;\n#end\n"
                     "// The sky's mean radiance over the upper hemisphere.\n"
                     "background { rgbt <%s, %s, %s, Sylva_sky_transmit> }\n\n", sky[0], sky[1], sky[2]);
+    if (l->fog_distance > 0.0) {
+        char fog[128], dist[POV_NUMBER_MAX];
+        pov_append_vec3f(fog, l->fog_color.x, l->fog_color.y, l->fog_color.z, NULL);
+        pov_format_float(dist, (float)l->fog_distance);
+        pov_printf(&pf, "// The physical sky's air as constant fog (docs/models/atmosphere.md): transmittance\n"
+                        "// exp(-t / distance), distance = 1 / extinction at 550 nm at the camera, colour the horizon\n"
+                        "// sky's mean. It covers the background too; declare Sylva_no_air=1 to leave it out.\n"
+                        "#ifndef (Sylva_no_air)\n  fog { fog_type 1 distance %s color rgb %s }\n#end\n\n",
+                   dist, fog);
+    }
     if (s->earth.curvature)
         pov_put(&pf, "// The scene file bends sylva's camera rays for the Earth's curvature and refraction\n"
                      "// (earth.curvature); POV-Ray's rays are straight, so this file shows it on a flat Earth:\n"
@@ -594,7 +604,7 @@ int pov_export_scene(const scene *s, const char *pov_path, const pov_export_opti
     if (split_path(pov_path, ".pov", &ep, err)) return -1;
     const char *source = o ? o->source : NULL;
     light_summary l;
-    if (light_summary_init(&l, &s->sun, &s->sky, err)) return -1;
+    if (light_summary_init(&l, &s->sun, &s->sky, s->site.origin[2], s->camera.position[2], err)) return -1;
     int rc = -1;
     mesh *terrain = NULL, *water = NULL;
     if (s->terrain) {

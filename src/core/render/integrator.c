@@ -4,6 +4,7 @@
 
 #include <math.h>
 
+#include "render/aerial.h"
 #include "render/bsdf.h"
 #include "render/film.h"
 #include "render/lens.h"
@@ -137,6 +138,7 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
         if (depth >= ctx->max_depth) break;
         hit_info h;
         accel_shade(a, &rh, &h);
+        aerial_segment(&l->summary, o, h.p, &L, &beta); /* the air between o and the hit */
         vec3 wo = v3_scale(d, -1.0f);
         vec3 ng = v3_dot(h.ng, wo) < 0.0f ? v3_scale(h.ng, -1.0f) : h.ng;
         vec3 n = v3_dot(h.ns, ng) < 0.0f ? v3_scale(h.ns, -1.0f) : h.ns;
@@ -207,6 +209,7 @@ static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t
     struct RTCRay shadow[VERIFY_STREAM];
     vec3 albedo[VERIFY_STREAM];
     float cosine[VERIFY_STREAM]; /* n.l where the sun may light the hit, else 0 */
+    float dist[VERIFY_STREAM];   /* from the camera to the hit, for the fog; INFINITY for none */
     uint32_t owner[VERIFY_STREAM], hits = 0, dev_hits = 0;
     struct RTCIntersectContext ic;
     uint8_t on_dev[VERIFY_STREAM];
@@ -232,12 +235,14 @@ static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t
         for (uint32_t i = 0; i < m; i++) {
             cosine[i] = 0.0f;
             on_dev[i] = 0;
+            dist[i] = INFINITY;
             if (rh[i].hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
             hits++;
             on_dev[i] = (uint8_t)on_development(a, &rh[i]);
             dev_hits += on_dev[i];
             hit_info h;
             accel_shade(a, &rh[i], &h);
+            dist[i] = v3_len(v3_sub(h.p, ctx->camera.origin));
             vec3 wo = v3(-rh[i].ray.dir_x, -rh[i].ray.dir_y, -rh[i].ray.dir_z);
             vec3 nrm = v3_dot(h.ns, wo) < 0.0f ? v3_scale(h.ns, -1.0f) : h.ns;
             vec3 ng = v3_dot(h.ng, wo) < 0.0f ? v3_scale(h.ng, -1.0f) : h.ng;
@@ -264,6 +269,7 @@ static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t
             if (rh[i].hit.geomID != RTC_INVALID_GEOMETRY_ID)
                 L = v3_mul(albedo[i], cosine[i] > 0.0f ? v3_add(l->ambient, v3_scale(l->sun_irradiance, cosine[i]))
                                                        : l->ambient);
+            L = light_summary_fog(l, L, dist[i]); /* POV-Ray's constant fog, misses included */
             if (!(isfinite(L.x) && isfinite(L.y) && isfinite(L.z))) continue;
             sum = v3_add(sum, L);
             if (on_dev[i]) dev_sum = v3_add(dev_sum, L);

@@ -20,6 +20,10 @@
  * development_rgb those samples' radiance summed and divided by all samples (the part of rgb the
  * development's own surfaces send to the camera).
  *
+ * With the physical sky every segment that meets a surface (camera ray and bounces, not shadow
+ * rays) takes the air's extinction and in-scattered light (aerial.h); the verification mode
+ * applies it as POV-Ray's constant fog (light_summary_fog), misses included.
+ *
  * Every ray (camera, bounce, shadow) carries ctx->ray_mask: geometry whose Embree mask
  * (ACCEL_MASK_*) shares no bit with it is not in the scene for this render.
  *

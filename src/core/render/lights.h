@@ -18,7 +18,8 @@ typedef struct lights {
     sky_table table;       /* for sampling (empty for SKY_NONE) */
 } lights;
 
-int lights_init(lights *l, const sun_settings *sun, const sky_settings *sky, err_buf *err);
+int lights_init(lights *l, const sun_settings *sun, const sky_settings *sky, double origin_altitude, double camera_z,
+                err_buf *err);
 void lights_free(lights *l);
 
 /* Samples a direction in the sun's cone; returns its pdf (1 for a point-like sun, i.e. a delta). */

@@ -91,7 +91,7 @@ render_setup *render_setup_new(const scene *s, const render_options *opt, err_bu
         free(rs);
         return NULL;
     }
-    if (lights_init(&rs->lt, &s->sun, &s->sky, err)) {
+    if (lights_init(&rs->lt, &s->sun, &s->sky, s->site.origin[2], s->camera.position[2], err)) {
         accel_free(&rs->acc);
         free(rs);
         return NULL;

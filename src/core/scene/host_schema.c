@@ -21,7 +21,7 @@ const char *const host_sections[] = {"image",   "site",    "camera",  "sun",    
                                      "earth",   "viewpoints", "ztv",     "photo",   NULL};
 
 const char *const host_shape_names[] = {"mesh", "box", "sphere", "quad", "disk", NULL};
-const char *const host_sky_models[] = {"none", "constant", "preetham", NULL};
+const char *const host_sky_models[] = {"none", "constant", "preetham", "physical", NULL};
 const char *const host_material_types[] = {"lambert", "leaf", NULL};
 static const char *const host_tone_curves[] = {"agx", "aces", NULL};
 
@@ -254,9 +254,16 @@ const host_schema host_schema_sun = {"sun", "The sun: a directional light with a
 /* --- sky ------------------------------------------------------------------------------------ */
 static const sylva_param_spec sky_params[] = {
     {.name = "model", .type = SYLVA_P_ENUM, .def_str = "preetham", .choices = host_sky_models,
-     .help = "Sky radiance: preetham (analytic daylight), constant (one colour) or none (black)."},
+     .help = "Sky radiance: preetham (analytic daylight), physical (scattering in the air, with "
+             "aerial perspective), constant (one colour) or none (black)."},
     {.name = "turbidity", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 3, .min = 1.7,
      .max = 10, .help = "Haze of the preetham sky: 2 is very clear, 10 is hazy."},
+    {.name = "visibility", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 30, .min = 0, .max = 1000,
+     .unit = "km",
+     .help = "Meteorological range at the camera of the physical sky: 30-40 is a temperate summer "
+             "day, 10 is hazy, 100 or more very clear."},
+    {.name = "density", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 1, .min = 0, .max = 100,
+     .help = "Factor on the density of the physical sky's air and haze (0: no atmosphere)."},
     {.name = "scale", .type = SYLVA_P_REAL, .flags = MIN, .def = 1, .min = 0,
      .help = "Factor on the sky's radiance."},
     {.name = "color", .type = SYLVA_P_VEC3, .flags = MIN, .min = 0, .def_list = sky_blue,

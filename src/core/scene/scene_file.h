@@ -97,11 +97,13 @@ typedef struct earth_settings {
     double radius;          /* metres */
 } earth_settings;
 
-typedef enum sky_model { SKY_NONE = 0, SKY_CONSTANT = 1, SKY_PREETHAM = 2 } sky_model;
+typedef enum sky_model { SKY_NONE = 0, SKY_CONSTANT = 1, SKY_PREETHAM = 2, SKY_PHYSICAL = 3 } sky_model;
 
 typedef struct sky_settings {
     sky_model model;
     double turbidity;       /* Preetham */
+    double visibility_km;   /* SKY_PHYSICAL: meteorological range at the camera */
+    double density;         /* SKY_PHYSICAL: factor on the air's and the haze's density */
     double scale;           /* multiplies the sky radiance */
     double color[3];        /* SKY_CONSTANT radiance */
     double ground_albedo;   /* below the horizon the sky shows this times the horizon-average */

@@ -409,21 +409,31 @@ int sf_read_sun(loader *L)
     return 0;
 }
 
+/* The sky keys that belong to one model: each is refused under another. */
+static const struct {
+    const char *key;
+    sky_model model;
+} sky_model_keys[] = {{"color", SKY_CONSTANT}, {"turbidity", SKY_PREETHAM}, {"visibility", SKY_PHYSICAL},
+                      {"density", SKY_PHYSICAL}};
+
 int sf_read_sky(loader *L)
 {
     const sylva_params *p;
     if (read_section(L, "sky", &host_schema_sky, &p)) return -1;
     sky_settings *s = &L->sf->sky;
     const sylva_value *model = sylva_param(p, "model"), *color = sylva_param(p, "color"),
-                      *turbidity = sylva_param(p, "turbidity");
+                      *turbidity = sylva_param(p, "turbidity"), *visibility = sylva_param(p, "visibility"),
+                      *density = sylva_param(p, "density");
     s->model = (sky_model)model->i;
-    if (color->is_set && s->model != SKY_CONSTANT)
-        return sf_located(L->err, L->file, color->line, color->column,
-                          "'color' applies to model: constant; this sky is '%s'", model->s);
-    if (turbidity->is_set && s->model != SKY_PREETHAM)
-        return sf_located(L->err, L->file, turbidity->line, turbidity->column,
-                          "'turbidity' applies to model: preetham; this sky is '%s'", model->s);
+    for (size_t i = 0; i < sizeof sky_model_keys / sizeof sky_model_keys[0]; i++) {
+        const sylva_value *v = sylva_param(p, sky_model_keys[i].key);
+        if (v->is_set && s->model != sky_model_keys[i].model)
+            return sf_located(L->err, L->file, v->line, v->column, "'%s' applies to model: %s; this sky is '%s'",
+                              sky_model_keys[i].key, host_sky_models[sky_model_keys[i].model], model->s);
+    }
     s->turbidity = turbidity->r;
+    s->visibility_km = visibility->r;
+    s->density = density->r;
     s->scale = sylva_param_real(p, "scale");
     sf_copy3(s->color, color);
     s->ground_albedo = sylva_param_real(p, "ground_albedo");

@@ -164,7 +164,7 @@ TEST(descriptor_rules_one_problem_each)
         {5, "plugin 'mixed_ecology': the module already declares a plugin of this name"},
         {6, "the summary is more than one line"},
         {7, "declares size 8, too small to hold its ABI version"},
-        {8, "but sylva plugin ABI 1.2 defines"},
+        {8, "but sylva plugin ABI 1.3 defines"},
         {9, "parameter 'spacing' takes a key the host keeps for itself"},
         {10, "species_section \"shape\" is a key the host keeps for itself"},
     };
@@ -813,7 +813,7 @@ TEST(manifest_mismatch_and_damage_are_refused)
         const char *fragment;
     } cases[] = {
         {"sylva-plugin-manifest 1\nplugin example_terrain tree 1.1\n", 1,
-         "plugin 'example_terrain' (terrain, ABI 1.2) does not match its manifest, which says "
+         "plugin 'example_terrain' (terrain, ABI 1.3) does not match its manifest, which says "
          "'example_terrain' (tree, ABI 1.1); rewrite the manifest with `sylva plugins --manifest "},
         {"sylva-plugin-manifest 1\nplugin example_terrain terrain 1.0\n", 1,
          "does not match its manifest, which says 'example_terrain' (terrain, ABI 1.0)"},

@@ -12,11 +12,11 @@
 static double gentle(double x, double y) { return 10 + 0.002 * x + 0.001 * y; }
 
 /* Luminance of the ground's albedo at (x, y) seen with footprint fp. */
-static double luminance_at(const ground_shader *g, double x, double y, double fp)
+static double luminance_at(const ground_texture *g, double x, double y, double fp)
 {
     float w[GROUND_KINDS];
     ground_cover_weights(g->map, x, y, w);
-    vec3 c = ground_shade_albedo(g, x, y, fp, w);
+    vec3 c = ground_texture_albedo(g, x, y, fp, w);
     return v3_luminance(c);
 }
 
@@ -47,7 +47,7 @@ static double secondary_peak(const double *a, size_t n, size_t max_lag)
 
 /* The transect's luminance at n samples `step` apart from x = 1000 along y = 500 (tile > 0: the
  * texture repeated every `tile` metres, as a tiled texture map would be). */
-static double *transect(const ground_shader *g, size_t n, double step, double tile)
+static double *transect(const ground_texture *g, size_t n, double step, double tile)
 {
     double *a = malloc(n * sizeof *a);
     for (size_t i = 0; a && i < n; i++) {
@@ -58,11 +58,11 @@ static double *transect(const ground_shader *g, size_t n, double step, double ti
     return a;
 }
 
-static ground_shader *shader_of(scene *s)
+static ground_texture *shader_of(scene *s)
 {
     err_buf err = {{0}};
-    ground_shader *g = NULL;
-    CHECK_INT(ground_shader_build(s, &g, &err), 0);
+    ground_texture *g = NULL;
+    CHECK_INT(ground_texture_build(s, &g, &err), 0);
     CHECK(g != NULL);
     return g;
 }
@@ -70,7 +70,7 @@ static ground_shader *shader_of(scene *s)
 TEST(no_period_along_a_transect)
 {
     scene *s = fixture_scene(241, 21, 0, 0, 50, gentle, 1); /* 12 x 1 km */
-    ground_shader *g = shader_of(s);
+    ground_texture *g = shader_of(s);
     if (!g) return;
     /* 10 km at 1 m (lags up to 5 km), and 100 m at 1 cm (lags up to 50 m): every octave from
      * kilometres to centimetres is seen at a footprint that resolves it */
@@ -91,14 +91,14 @@ TEST(no_period_along_a_transect)
         CHECK(tiled_peak > PEAK_LIMIT); /* the check sees a period where there is one */
         free(a), free(tiled);
     }
-    ground_shader_free(g);
+    ground_texture_free(g);
     scene_free(s);
 }
 
 TEST(footprint_keeps_the_mean_and_removes_detail)
 {
     scene *s = fixture_scene(41, 41, 0, 0, 50, gentle, 1);
-    ground_shader *g = shader_of(s);
+    ground_texture *g = shader_of(s);
     if (!g) return;
     /* a 20 x 20 m patch: its mean seen point by point, and seen with a 2 m footprint */
     double sum = 0, fsum = 0;
@@ -120,14 +120,14 @@ TEST(footprint_keeps_the_mean_and_removes_detail)
             sqrt(d2 / 2000), sqrt(fd2 / 2000));
     CHECK_NEAR(fmean, mean, 0.03 * mean);
     CHECK(sqrt(fd2) < 0.1 * sqrt(d2));
-    ground_shader_free(g);
+    ground_texture_free(g);
     scene_free(s);
 }
 
 TEST(shading_normal_stays_consistent)
 {
     scene *s = fixture_scene(41, 41, 0, 0, 50, gentle, 1);
-    ground_shader *g = shader_of(s);
+    ground_texture *g = shader_of(s);
     if (!g) return;
     vec3 ng = v3(0, 0, 1);
     float smallest_facing = 1, largest_tilt = 0;
@@ -150,7 +150,7 @@ TEST(shading_normal_stays_consistent)
     CHECK(smallest_facing >= 0.0499f);
     CHECK(largest_tilt <= atanf(0.577f) + 1e-3f);
     CHECK(tilted > 10000); /* the relief is there */
-    ground_shader_free(g);
+    ground_texture_free(g);
     scene_free(s);
 }
 

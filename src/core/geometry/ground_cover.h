@@ -7,9 +7,9 @@
  * low-frequency noise so that boundaries wander as they do on the ground. The rules, their
  * defaults for a temperate site and the noise are in docs/models/ground.md.
  *
- * The renderer shades the terrain from these weights (render/ground_shade.h), the POV-Ray export
- * writes their mean colour per node, and ground-cover instances are placed by them; all call
- * the same function, so they agree.
+ * The ground's texture is made from these weights (ground_texture.h: the renderer's terrain
+ * shading and the POV-Ray export's ground image), and ground-cover instances are placed by them;
+ * all call the same function, so they agree.
  *
  * The procedural ground applies to a terrain whose plugin describes its ground cover (the
  * heightfield's ground rules, sylva_heightfield.has_ground_rules); a terrain drawn from scene

@@ -11,7 +11,7 @@
 #include "geometry/terrain_apron.h"
 #include "geometry/water_surface.h"
 #include "render/accel_terrain.h"
-#include "render/ground_shade.h"
+#include "geometry/ground_texture.h"
 
 /* --- Embree's errors --------------------------------------------------------------------- */
 
@@ -176,7 +176,7 @@ static int build_top(accel *a, const scene *s, err_buf *err)
     if (!a->top) return accel_device_error(a, err) ? -1 : err_set(err, "Embree could not create a scene");
     if (s->terrain) {
         double eye[3] = {s->camera.position[0], s->camera.position[1], s->camera.position[2]};
-        if (accel_terrain_add(a, a->top, ACCEL_TOP_TERRAIN, err) || ground_shader_build(s, &a->ground, err) ||
+        if (accel_terrain_add(a, a->top, ACCEL_TOP_TERRAIN, err) || ground_texture_build(s, &a->ground, err) ||
             water_surface_build(s, &a->water_mesh, err) ||
             terrain_apron_build(s->terrain, s->terrain_material, terrain_apron_reach(s->terrain, eye),
                                 &a->apron_mesh, err))
@@ -262,7 +262,7 @@ void accel_free(accel *a)
     free(a->model_geoms);
     free(a->top_geoms);
     accel_terrain_free(a->terrain);
-    ground_shader_free(a->ground);
+    ground_texture_free(a->ground);
     mesh_free(a->water_mesh);
     mesh_free(a->apron_mesh);
     if (a->device) rtcReleaseDevice(a->device);

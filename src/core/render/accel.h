@@ -85,7 +85,7 @@ typedef struct accel {
     mesh *water_mesh;          /* owned */
     mesh *apron_mesh;          /* the terrain beyond its edge, or NULL; owned */
     struct accel_errors *errors; /* what Embree's error callback recorded; owned */
-    struct ground_shader *ground; /* the procedural ground (render/ground_shade.h), or NULL; owned */
+    struct ground_texture *ground; /* the procedural ground (geometry/ground_texture.h), or NULL; owned */
     float pixel_angle;         /* radians a pixel spans: the ground texture's footprint (0: none) */
     float bounds_lo[3], bounds_hi[3]; /* of the whole scene */
 } accel;

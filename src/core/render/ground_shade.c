@@ -1,144 +1,20 @@
-/* ground_shade.c — textured, bumped ground from the cover weights (see ground_shade.h). */
+/* ground_shade.c — the ground texture's albedo and bumped normal at a hit (see ground_shade.h). */
 #include "render/ground_shade.h"
 
 #include <math.h>
-#include <stdlib.h>
-
-#include "util/gradient_noise.h"
 
 #define TILT_MAX 0.577f      /* tan 30 degrees: the most the micro-relief turns the normal */
 #define FACING_MIN 0.05f     /* the tilted normal keeps at least this cosine toward the viewer */
 
-/* Measured mean albedos (linear RGB) of the kinds the terrain plugin has no colour for; the
- * sources are in docs/models/ground.md. */
-static const vec3 litter_albedo = {0.11f, 0.075f, 0.045f};   /* beech and spruce leaf litter */
-static const vec3 moss_albedo = {0.05f, 0.085f, 0.025f};     /* moss patches in the litter */
-static const vec3 soil_albedo = {0.16f, 0.115f, 0.08f};      /* dry loam */
-static const vec3 wet_soil_albedo = {0.075f, 0.055f, 0.04f}; /* the same, wet */
-static const vec3 lichen_albedo = {0.26f, 0.25f, 0.18f};     /* crustose lichen on rock */
-
-/* How one kind's colour and relief vary: its brightness by `tone` (a share of the mean), its
- * hue toward `tint` by `hue`, and its micro-relief (tilt per unit gradient of `relief`). */
-typedef struct kind_texture {
-    noise_fbm tone;
-    float tone_amp;
-    noise_fbm hue;
-    float hue_amp;
-    noise_fbm relief;
-    float tilt;
-} kind_texture;
-
-static const kind_texture textures[GROUND_KINDS] = {
-    [GROUND_MEADOW] = {{1.5, 9, 0.72f, 101}, 0.25f, {120.0, 10, 0.62f, 102}, 0.6f, {0.6, 7, 0.55f, 103}, 0.45f},
-    [GROUND_FOREST_FLOOR] = {{2.0, 9, 0.6f, 201}, 0.4f, {6.0, 6, 0.5f, 202}, 0.6f, {0.4, 6, 0.55f, 203}, 0.4f},
-    [GROUND_SOIL] = {{3.0, 9, 0.6f, 301}, 0.3f, {20.0, 6, 0.5f, 302}, 0.5f, {0.3, 6, 0.55f, 303}, 0.4f},
-    [GROUND_ROCK] = {{6.0, 11, 0.62f, 401}, 0.35f, {1.5, 6, 0.5f, 402}, 0.4f, {2.0, 9, 0.6f, 403}, 0.6f},
-    [GROUND_SCREE] = {{0.5, 7, 0.6f, 501}, 0.45f, {10.0, 5, 0.5f, 502}, 0.4f, {0.25, 5, 0.6f, 503}, 0.6f},
-    [GROUND_SNOW] = {{5.0, 8, 0.5f, 601}, 0.06f, {50.0, 3, 0.5f, 602}, 0.0f, {2.0, 6, 0.5f, 603}, 0.15f},
-    [GROUND_WATER] = {{1.0, 6, 0.5f, 701}, 0.2f, {10.0, 3, 0.5f, 702}, 0.0f, {1.0, 4, 0.5f, 703}, 0.05f},
-};
-
-/* Landscape-scale mottling shared by every kind: fields, drainage, exposure (kilometres to
- * tens of metres), as brightness. */
-static const noise_fbm landscape = {.wavelength = 2000.0, .octaves = 8, .gain = 0.6f, .seed = 11};
-#define LANDSCAPE_AMP 0.18f
-
-static vec3 vec_of(const double v[3]) { return v3((float)v[0], (float)v[1], (float)v[2]); }
-
-int ground_shader_build(const scene *s, ground_shader **out, err_buf *err)
-{
-    *out = NULL;
-    err_buf quiet = {0};
-    ground_cover_map *m = ground_cover_map_new(s, &quiet);
-    if (!m) return quiet.msg[0] ? err_nomem(err, "%s", quiet.msg) : 0;
-    ground_shader *g = calloc(1, sizeof *g);
-    if (!g) {
-        ground_cover_map_free(m);
-        return err_nomem(err, "out of memory for the ground's shading");
-    }
-    const sylva_ground_rules *r = &s->terrain->ground;
-    g->map = m;
-    g->albedo[GROUND_MEADOW] = vec_of(r->grass_albedo);
-    g->dry_grass = vec_of(r->dry_grass_albedo);
-    g->albedo[GROUND_FOREST_FLOOR] = litter_albedo;
-    g->albedo[GROUND_SOIL] = soil_albedo;
-    g->albedo[GROUND_ROCK] = vec_of(r->rock_albedo);
-    g->albedo[GROUND_SCREE] = vec_of(r->scree_albedo);
-    g->albedo[GROUND_SNOW] = vec_of(r->snow_albedo);
-    g->albedo[GROUND_WATER] = wet_soil_albedo;
-    *out = g;
-    return 0;
-}
-
-void ground_shader_free(ground_shader *g)
-{
-    if (!g) return;
-    ground_cover_map_free(g->map);
-    free(g);
-}
-
-/* The colour kind k's hue noise moves toward, given its mean. */
-static vec3 hue_target(const ground_shader *g, ground_kind k)
-{
-    switch (k) {
-    case GROUND_MEADOW: return g->dry_grass;
-    case GROUND_FOREST_FLOOR: return moss_albedo;
-    case GROUND_SOIL: return wet_soil_albedo;
-    case GROUND_ROCK: return lichen_albedo;
-    case GROUND_SCREE: return g->albedo[GROUND_ROCK];
-    default: return g->albedo[k];
-    }
-}
-
-static vec3 clamp_albedo(vec3 c)
-{
-    return v3(fminf(fmaxf(c.x, 0.0f), 0.98f), fminf(fmaxf(c.y, 0.0f), 0.98f), fminf(fmaxf(c.z, 0.0f), 0.98f));
-}
-
-/* Kind k's albedo at (x, y): its mean (the meadow's by its dryness), moved toward its tint and
- * scaled in brightness, both by noise whose mean is zero, so the filtered mean is the mean. */
-static vec3 kind_albedo(const ground_shader *g, ground_kind k, double x, double y, double footprint)
-{
-    const kind_texture *t = &textures[k];
-    vec3 mean = g->albedo[k];
-    if (k == GROUND_MEADOW) {
-        float dry = ground_cover_dryness(g->map, x, y);
-        mean = v3_add(v3_scale(mean, 1.0f - dry), v3_scale(g->dry_grass, dry));
-    }
-    vec3 c = mean;
-    if (t->hue_amp > 0.0f) {
-        float h = t->hue_amp * noise_fbm2(&t->hue, x, y, footprint, NULL);
-        c = v3_add(c, v3_scale(v3_sub(hue_target(g, k), mean), h));
-    }
-    float tone = 1.0f + t->tone_amp * noise_fbm2(&t->tone, x, y, footprint, NULL);
-    return v3_scale(c, fmaxf(tone, 0.0f));
-}
-
-vec3 ground_shade_albedo(const ground_shader *g, double x, double y, double footprint, const float w[GROUND_KINDS])
-{
-    vec3 c = v3(0, 0, 0);
-    for (int k = 0; k < GROUND_KINDS; k++)
-        if (w[k] > 1e-3f) c = v3_add(c, v3_scale(kind_albedo(g, (ground_kind)k, x, y, footprint), w[k]));
-    float field = 1.0f + LANDSCAPE_AMP * noise_fbm2(&landscape, x, y, footprint, NULL);
-    return clamp_albedo(v3_scale(c, field));
-}
-
-void ground_shade_point(const ground_shader *g, vec3 p, vec3 ng, vec3 wo, double footprint, vec3 *albedo,
+void ground_shade_point(const ground_texture *g, vec3 p, vec3 ng, vec3 wo, double footprint, vec3 *albedo,
                         vec3 *ns)
 {
     float w[GROUND_KINDS];
     ground_cover_weights(g->map, p.x, p.y, w);
-    *albedo = ground_shade_albedo(g, p.x, p.y, footprint, w);
-    /* micro-relief: the weighted gradient of each kind's relief, as a tilt of the normal */
-    double gx = 0.0, gy = 0.0;
-    for (int k = 0; k < GROUND_KINDS; k++) {
-        const kind_texture *t = &textures[k];
-        if (w[k] <= 1e-3f || t->tilt <= 0.0f || footprint * 2.0 >= t->relief.wavelength) continue;
-        float gr[2];
-        noise_fbm2(&t->relief, p.x, p.y, footprint, gr);
-        gx += w[k] * t->tilt * t->relief.wavelength * gr[0];
-        gy += w[k] * t->tilt * t->relief.wavelength * gr[1];
-    }
+    *albedo = ground_texture_albedo(g, p.x, p.y, footprint, w);
+    float grad[2];
+    ground_texture_relief(g, p.x, p.y, footprint, w, grad);
+    double gx = grad[0], gy = grad[1];
     vec3 n = *ns;
     vec3 tilt = v3((float)-gx, (float)-gy, 0.0f);
     tilt = v3_sub(tilt, v3_scale(n, v3_dot(tilt, n))); /* in the surface's plane */

@@ -1,0 +1,42 @@
+/* ground_texture.h — the ground's colour and micro-relief at any point: the cover weights
+ * (ground_cover.h) turned into an albedo with texture at several scales and a relief gradient,
+ * evaluated in world space and filtered by a footprint (docs/models/ground.md). The renderer
+ * shades terrain hits with it (render/ground_shade.h); the POV-Ray export writes its colour
+ * filtered at an image texel (pov/pov_ground.h).
+ *
+ * Each kind has a mean albedo (the terrain's class albedos for meadow, dry grass, scree, rock and
+ * snow; measured values for leaf litter, bare soil and wet ground) varied by octaves of gradient
+ * noise from kilometres to centimetres (util/gradient_noise.h), and a micro-relief of its own.
+ * Octaves finer than the footprint fade to their mean, so far ground neither aliases into noise
+ * nor changes its mean colour.
+ *
+ * Ownership: a ground_texture owns its cover map and borrows the scene (which must outlive it).
+ */
+#ifndef SYLVA_GROUND_TEXTURE_H
+#define SYLVA_GROUND_TEXTURE_H
+
+#include "geometry/ground_cover.h"
+#include "util/vec3.h"
+
+typedef struct ground_texture {
+    ground_cover_map *map;       /* owned */
+    vec3 albedo[GROUND_KINDS];   /* mean linear RGB albedo of each kind */
+    vec3 dry_grass;              /* the meadow's albedo where it is dry */
+} ground_texture;
+
+/* The texture of scene s's ground into *out: NULL when the terrain keeps its materials
+ * (ground_cover_map_new), else one the caller frees with ground_texture_free. Returns 0, or -1
+ * with err set when memory runs out. */
+int ground_texture_build(const scene *s, ground_texture **out, err_buf *err);
+void ground_texture_free(ground_texture *g); /* accepts NULL */
+
+/* Albedo (linear RGB) at map point (x, y) seen with footprint (metres), given the weights there. */
+vec3 ground_texture_albedo(const ground_texture *g, double x, double y, double footprint,
+                           const float w[GROUND_KINDS]);
+
+/* Gradient of the micro-relief at (x, y) (metres per metre, east and north) seen with footprint,
+ * given the weights there: the tilt the shading normal takes. */
+void ground_texture_relief(const ground_texture *g, double x, double y, double footprint,
+                           const float w[GROUND_KINDS], float grad[2]);
+
+#endif

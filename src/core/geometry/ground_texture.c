@@ -5,7 +5,9 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "geometry/texture_lookup.h"
 #include "util/gradient_noise.h"
+#include "util/srgb.h"
 
 /* Measured mean albedos (linear RGB) of the kinds the terrain plugin has no colour for; the
  * sources are in docs/models/ground.md. */
@@ -55,7 +57,7 @@ int ground_texture_build(const scene *s, ground_texture **out, err_buf *err)
         return err_nomem(err, "out of memory for the ground's shading");
     }
     const sylva_ground_rules *r = &s->terrain->ground;
-    g->map = m;
+    g->map = m, g->hf = s->terrain;
     g->albedo[GROUND_MEADOW] = vec_of(r->grass_albedo);
     g->dry_grass = vec_of(r->dry_grass_albedo);
     g->albedo[GROUND_FOREST_FLOOR] = litter_albedo;
@@ -110,6 +112,52 @@ static vec3 kind_albedo(const ground_texture *g, ground_kind k, double x, double
     }
     float tone = 1.0f + t->tone_amp * noise_fbm2(&t->tone, x, y, footprint, NULL);
     return v3_scale(c, fmaxf(tone, 0.0f));
+}
+
+void ground_texture_image_size(const sylva_heightfield *hf, uint32_t *iw, uint32_t *ih, double *texel)
+{
+    double w = hf->dx * (hf->nx - 1), h = hf->dy * (hf->ny - 1);
+    double t = fmax(fmax(w, h) / GROUND_TEXTURE_MAX_TEXELS, 0.5 * fmin(hf->dx, hf->dy));
+    *iw = (uint32_t)ceil(w / t), *ih = (uint32_t)ceil(h / t);
+    *texel = t;
+}
+
+void ground_texture_image_texel(const ground_texture *g, uint32_t c, uint32_t r, uint8_t rgb[3])
+{
+    const sylva_heightfield *hf = g->hf;
+    uint32_t iw, ih;
+    double t;
+    ground_texture_image_size(hf, &iw, &ih, &t);
+    double w = hf->dx * (hf->nx - 1), h = hf->dy * (hf->ny - 1);
+    double x = hf->x0 + (c + 0.5) * w / iw, y = hf->y0 + h - (r + 0.5) * h / ih;
+    float wt[GROUND_KINDS];
+    ground_cover_weights(g->map, x, y, wt);
+    vec3 a = ground_texture_albedo(g, x, y, t, wt);
+    rgb[0] = srgb8_from_linear(a.x), rgb[1] = srgb8_from_linear(a.y), rgb[2] = srgb8_from_linear(a.z);
+}
+
+vec3 ground_texture_image_albedo(const ground_texture *g, double x, double y)
+{
+    const sylva_heightfield *hf = g->hf;
+    uint32_t iw, ih;
+    double t;
+    ground_texture_image_size(hf, &iw, &ih, &t);
+    double w = hf->dx * (hf->nx - 1), h = hf->dy * (hf->ny - 1);
+    double gx = (x - hf->x0) / w * iw - 0.5, gy = (hf->y0 + h - y) / h * ih - 0.5; /* texel centres */
+    gx = fmin(fmax(gx, 0.0), iw - 1.0), gy = fmin(fmax(gy, 0.0), ih - 1.0);
+    uint32_t c0 = (uint32_t)gx, r0 = (uint32_t)gy;
+    uint32_t c1 = c0 + 1 < iw ? c0 + 1 : c0, r1 = r0 + 1 < ih ? r0 + 1 : r0;
+    double fx = gx - c0, fy = gy - r0;
+    uint8_t q[4][3];
+    ground_texture_image_texel(g, c0, r0, q[0]);
+    ground_texture_image_texel(g, c1, r0, q[1]);
+    ground_texture_image_texel(g, c0, r1, q[2]);
+    ground_texture_image_texel(g, c1, r1, q[3]);
+    float out[3];
+    for (int k = 0; k < 3; k++)
+        out[k] = (float)((1 - fy) * ((1 - fx) * texture_srgb_to_linear(q[0][k]) + fx * texture_srgb_to_linear(q[1][k])) +
+                         fy * ((1 - fx) * texture_srgb_to_linear(q[2][k]) + fx * texture_srgb_to_linear(q[3][k])));
+    return v3(out[0], out[1], out[2]);
 }
 
 vec3 ground_texture_albedo(const ground_texture *g, double x, double y, double footprint, const float w[GROUND_KINDS])

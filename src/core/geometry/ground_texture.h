@@ -20,6 +20,7 @@
 
 typedef struct ground_texture {
     ground_cover_map *map;       /* owned */
+    const sylva_heightfield *hf; /* the scene's terrain; borrowed */
     vec3 albedo[GROUND_KINDS];   /* mean linear RGB albedo of each kind */
     vec3 dry_grass;              /* the meadow's albedo where it is dry */
 } ground_texture;
@@ -29,6 +30,20 @@ typedef struct ground_texture {
  * with err set when memory runs out. */
 int ground_texture_build(const scene *s, ground_texture **out, err_buf *err);
 void ground_texture_free(ground_texture *g); /* accepts NULL */
+
+#define GROUND_TEXTURE_MAX_TEXELS 1024u /* along the footprint's longer side of the ground image */
+
+/* The ground's image over heightfield hf's footprint, as the POV-Ray export writes it and the
+ * verification mode shows it: iw x ih texels of texel metres (the colour filtered at the
+ * texel, 8-bit sRGB), row 0 along the northern edge. */
+void ground_texture_image_size(const sylva_heightfield *hf, uint32_t *iw, uint32_t *ih, double *texel);
+
+/* Texel (c, r) of that image, 8-bit sRGB into rgb. */
+void ground_texture_image_texel(const ground_texture *g, uint32_t c, uint32_t r, uint8_t rgb[3]);
+
+/* The image's colour (linear RGB) at map point (x, y): bilinear between the texels' centres (as
+ * POV-Ray's image_map with interpolate 2), the edge texels' beyond them. */
+vec3 ground_texture_image_albedo(const ground_texture *g, double x, double y);
 
 /* Albedo (linear RGB) at map point (x, y) seen with footprint (metres), given the weights there. */
 vec3 ground_texture_albedo(const ground_texture *g, double x, double y, double footprint,

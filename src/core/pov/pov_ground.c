@@ -7,7 +7,7 @@
 #include "io/image_io.h"
 #include "pov/pov_number.h"
 #include "geometry/ground_texture.h"
-#include "util/srgb.h"
+#include "geometry/texture_lookup.h"
 
 int pov_write_ground(pov_file *pf, const scene *s, const char *image_path, const char *image_name,
                      const char *ident, int *written, err_buf *err)
@@ -17,24 +17,20 @@ int pov_write_ground(pov_file *pf, const scene *s, const char *image_path, const
     if (ground_texture_build(s, &g, err)) return -1;
     if (!g) return 0;
     const sylva_heightfield *hf = s->terrain;
-    double w = hf->dx * (hf->nx - 1), h = hf->dy * (hf->ny - 1);
-    double texel = fmax(fmax(w, h) / POV_GROUND_MAX_TEXELS, 0.5 * fmin(hf->dx, hf->dy));
-    uint32_t iw = (uint32_t)ceil(w / texel), ih = (uint32_t)ceil(h / texel);
+    double w = hf->dx * (hf->nx - 1), h = hf->dy * (hf->ny - 1), texel;
+    uint32_t iw, ih;
+    ground_texture_image_size(hf, &iw, &ih, &texel);
     uint8_t *px = malloc((size_t)iw * ih * 3); /* owned here */
     if (!px) {
         ground_texture_free(g);
         return err_nomem(err, "out of memory for the %ux%u image of the ground", iw, ih);
     }
     double mean[3] = {0, 0, 0};
-    for (uint32_t r = 0; r < ih; r++) /* row 0 is the northern edge, as the image's top */
+    for (uint32_t r = 0; r < ih; r++)
         for (uint32_t c = 0; c < iw; c++) {
-            double x = hf->x0 + (c + 0.5) * w / iw, y = hf->y0 + h - (r + 0.5) * h / ih;
-            float wt[GROUND_KINDS];
-            ground_cover_weights(g->map, x, y, wt);
-            vec3 a = ground_texture_albedo(g, x, y, texel, wt);
             uint8_t *p = px + ((size_t)r * iw + c) * 3;
-            p[0] = srgb8_from_linear(a.x), p[1] = srgb8_from_linear(a.y), p[2] = srgb8_from_linear(a.z);
-            mean[0] += a.x, mean[1] += a.y, mean[2] += a.z;
+            ground_texture_image_texel(g, c, r, p);
+            for (int k = 0; k < 3; k++) mean[k] += texture_srgb_to_linear(p[k]);
         }
     ground_texture_free(g);
     int rc = image_write_u8(image_path, iw, ih, 3, px, err);

@@ -3,8 +3,8 @@
  * texel (the cover weights and every octave wider than a texel, finer ones at their mean) as a
  * PNG laid over the terrain's footprint from above (a planar image map), over a plain layer of
  * the image's mean colour that shows beyond the footprint (the apron). What it leaves out: the
- * octaves finer than a texel and the micro-relief. The cross-check therefore compares the
- * ground's mean, not its texture (docs/crosscheck.md).
+ * octaves finer than a texel and the micro-relief, which sylva's verification mode leaves out
+ * too (render/accel_terrain.h), so the cross-check compares the same ground.
  *
  * Ownership: nothing is kept; the image is written beside the other export files. */
 #ifndef SYLVA_POV_GROUND_H
@@ -13,8 +13,6 @@
 #include "pov/pov_file.h"
 #include "scene/scene.h"
 #include "util/err.h"
-
-#define POV_GROUND_MAX_TEXELS 1024u /* along the footprint's longer side */
 
 /* When scene s has a procedural ground: writes its image to image_path (referred to from the
  * .pov files as image_name), declares texture `ident` into pf and sets *written to 1. Otherwise

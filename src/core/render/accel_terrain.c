@@ -277,6 +277,10 @@ void accel_terrain_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h
 void accel_terrain_ground(const accel *a, const struct RTCRayHit *rh, hit_info *h)
 {
     if (!a->ground) return;
+    if (a->flat_ground) { /* the export's image, no micro-relief */
+        h->albedo = ground_texture_image_albedo(a->ground, h->p.x, h->p.y);
+        return;
+    }
     vec3 wo = v3_norm(v3(-rh->ray.dir_x, -rh->ray.dir_y, -rh->ray.dir_z));
     /* the pixel's width on the ground, stretched by the grazing angle (the geometric mean of
      * the footprint's two axes) */

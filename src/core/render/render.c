@@ -94,6 +94,7 @@ render_setup *render_setup_new(const scene *s, const render_options *opt, err_bu
     camera cam; /* the pixel's angle sets how finely the ground's texture is resolved */
     camera_init(&cam, &s->camera, w, h);
     rs->acc.pixel_angle = (float)camera_smallest_pixel_angle(&cam);
+    rs->acc.flat_ground = opt->verify;
     if (lights_init(&rs->lt, &s->sun, &s->sky, err)) {
         accel_free(&rs->acc);
         free(rs);

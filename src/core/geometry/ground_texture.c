@@ -29,7 +29,7 @@ typedef struct kind_texture {
 } kind_texture;
 
 static const kind_texture textures[GROUND_KINDS] = {
-    [GROUND_MEADOW] = {{1.5, 9, 0.72f, 101}, 0.25f, {120.0, 10, 0.62f, 102}, 0.6f, {0.6, 7, 0.55f, 103}, 0.45f},
+    [GROUND_MEADOW] = {{1.0, 9, 0.75f, 101}, 0.2f, {120.0, 10, 0.62f, 102}, 0.6f, {0.3, 6, 0.55f, 103}, 0.3f},
     [GROUND_FOREST_FLOOR] = {{2.0, 9, 0.6f, 201}, 0.4f, {6.0, 6, 0.5f, 202}, 0.6f, {0.4, 6, 0.55f, 203}, 0.4f},
     [GROUND_SOIL] = {{3.0, 9, 0.6f, 301}, 0.3f, {20.0, 6, 0.5f, 302}, 0.5f, {0.3, 6, 0.55f, 303}, 0.4f},
     [GROUND_ROCK] = {{6.0, 11, 0.62f, 401}, 0.35f, {1.5, 6, 0.5f, 402}, 0.4f, {2.0, 9, 0.6f, 403}, 0.6f},

@@ -283,9 +283,11 @@ void accel_terrain_ground(const accel *a, const struct RTCRayHit *rh, hit_info *
     }
     vec3 wo = v3_norm(v3(-rh->ray.dir_x, -rh->ray.dir_y, -rh->ray.dir_z));
     /* the pixel's width on the ground, stretched by the grazing angle (the geometric mean of
-     * the footprint's two axes) */
+     * the footprint's two axes); the distance is the eye's, since a camera ray over the curved
+     * Earth reaches the ground as the last of several chords */
+    const double *eye = a->scene->camera.position;
+    double ex = h->p.x - eye[0], ey = h->p.y - eye[1], ez = h->p.z - eye[2];
     float facing = fmaxf(fabsf(v3_dot(wo, h->ns)), 0.05f);
-    double footprint = (double)h->t * v3_len(v3(rh->ray.dir_x, rh->ray.dir_y, rh->ray.dir_z)) * a->pixel_angle /
-                       sqrt(facing);
+    double footprint = sqrt(ex * ex + ey * ey + ez * ez) * a->pixel_angle / sqrt(facing);
     ground_shade_point(a->ground, h->p, h->ng, wo, footprint, &h->albedo, &h->ns);
 }

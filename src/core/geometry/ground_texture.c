@@ -43,6 +43,8 @@ static const kind_texture textures[GROUND_KINDS] = {
 static const noise_fbm landscape = {.wavelength = 2000.0, .octaves = 8, .gain = 0.6f, .seed = 11};
 #define LANDSCAPE_AMP 0.18f
 
+#define BEYOND_SAMPLES 64u /* texels along each side averaged for the colour beyond the image */
+
 static vec3 vec_of(const double v[3]) { return v3((float)v[0], (float)v[1], (float)v[2]); }
 
 int ground_texture_build(const scene *s, ground_texture **out, err_buf *err)
@@ -66,6 +68,19 @@ int ground_texture_build(const scene *s, ground_texture **out, err_buf *err)
     g->albedo[GROUND_SCREE] = vec_of(r->scree_albedo);
     g->albedo[GROUND_SNOW] = vec_of(r->snow_albedo);
     g->albedo[GROUND_WATER] = wet_soil_albedo;
+    /* the image's colour beyond the footprint: the mean of a regular sample of its texels */
+    uint32_t iw, ih;
+    double texel, sum[3] = {0, 0, 0};
+    ground_texture_image_size(g->hf, &iw, &ih, &texel);
+    for (uint32_t j = 0; j < BEYOND_SAMPLES; j++)
+        for (uint32_t i = 0; i < BEYOND_SAMPLES; i++) {
+            uint8_t rgb[3];
+            ground_texture_image_texel(g, (uint32_t)((i + 0.5) * iw / BEYOND_SAMPLES),
+                                       (uint32_t)((j + 0.5) * ih / BEYOND_SAMPLES), rgb);
+            for (int k = 0; k < 3; k++) sum[k] += texture_srgb_to_linear(rgb[k]);
+        }
+    double n = (double)BEYOND_SAMPLES * BEYOND_SAMPLES;
+    g->beyond = v3((float)(sum[0] / n), (float)(sum[1] / n), (float)(sum[2] / n));
     *out = g;
     return 0;
 }
@@ -143,6 +158,7 @@ vec3 ground_texture_image_albedo(const ground_texture *g, double x, double y)
     double t;
     ground_texture_image_size(hf, &iw, &ih, &t);
     double w = hf->dx * (hf->nx - 1), h = hf->dy * (hf->ny - 1);
+    if (!(x >= hf->x0 && x <= hf->x0 + w && y >= hf->y0 && y <= hf->y0 + h)) return g->beyond;
     double gx = (x - hf->x0) / w * iw - 0.5, gy = (hf->y0 + h - y) / h * ih - 0.5; /* texel centres */
     gx = fmin(fmax(gx, 0.0), iw - 1.0), gy = fmin(fmax(gy, 0.0), ih - 1.0);
     uint32_t c0 = (uint32_t)gx, r0 = (uint32_t)gy;

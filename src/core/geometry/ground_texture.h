@@ -23,6 +23,8 @@ typedef struct ground_texture {
     const sylva_heightfield *hf; /* the scene's terrain; borrowed */
     vec3 albedo[GROUND_KINDS];   /* mean linear RGB albedo of each kind */
     vec3 dry_grass;              /* the meadow's albedo where it is dry */
+    vec3 beyond;                 /* the image's colour beyond the footprint (the mean of 64 x 64
+                                    of its texels, decoded) */
 } ground_texture;
 
 /* The texture of scene s's ground into *out: NULL when the terrain keeps its materials
@@ -42,7 +44,8 @@ void ground_texture_image_size(const sylva_heightfield *hf, uint32_t *iw, uint32
 void ground_texture_image_texel(const ground_texture *g, uint32_t c, uint32_t r, uint8_t rgb[3]);
 
 /* The image's colour (linear RGB) at map point (x, y): bilinear between the texels' centres (as
- * POV-Ray's image_map with interpolate 2), the edge texels' beyond them. */
+ * POV-Ray's image_map with interpolate 2), the edge texels' between the outermost centres and
+ * the footprint's edge, and `beyond` outside the footprint (the apron). */
 vec3 ground_texture_image_albedo(const ground_texture *g, double x, double y);
 
 /* Albedo (linear RGB) at map point (x, y) seen with footprint (metres), given the weights there. */

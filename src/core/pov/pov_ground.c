@@ -7,7 +7,6 @@
 #include "io/image_io.h"
 #include "pov/pov_number.h"
 #include "geometry/ground_texture.h"
-#include "geometry/texture_lookup.h"
 
 int pov_write_ground(pov_file *pf, const scene *s, const char *image_path, const char *image_name,
                      const char *ident, int *written, err_buf *err)
@@ -25,20 +24,15 @@ int pov_write_ground(pov_file *pf, const scene *s, const char *image_path, const
         ground_texture_free(g);
         return err_nomem(err, "out of memory for the %ux%u image of the ground", iw, ih);
     }
-    double mean[3] = {0, 0, 0};
     for (uint32_t r = 0; r < ih; r++)
-        for (uint32_t c = 0; c < iw; c++) {
-            uint8_t *p = px + ((size_t)r * iw + c) * 3;
-            ground_texture_image_texel(g, c, r, p);
-            for (int k = 0; k < 3; k++) mean[k] += texture_srgb_to_linear(p[k]);
-        }
+        for (uint32_t c = 0; c < iw; c++) ground_texture_image_texel(g, c, r, px + ((size_t)r * iw + c) * 3);
+    vec3 beyond = g->beyond;
     ground_texture_free(g);
     int rc = image_write_u8(image_path, iw, ih, 3, px, err);
     free(px);
     if (rc) return -1;
     char rgb[3 * POV_NUMBER_MAX + 8], size[3 * POV_NUMBER_MAX + 8], origin[3 * POV_NUMBER_MAX + 8];
-    double n = (double)iw * ih;
-    pov_append_vec3f(rgb, (float)(mean[0] / n), (float)(mean[1] / n), (float)(mean[2] / n), NULL);
+    pov_append_vec3f(rgb, beyond.x, beyond.y, beyond.z, NULL);
     pov_append_vec3f(size, (float)w, (float)h, 1.0f, NULL);
     pov_append_vec3f(origin, (float)hf->x0, (float)hf->y0, 0.0f, NULL);
     pov_printf(pf, "// %s: the ground's colour filtered at %g m texels (%ux%u), laid from above over the\n"

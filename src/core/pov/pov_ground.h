@@ -1,10 +1,11 @@
-/* pov_ground.h — the procedural ground (render/ground_shade.h) as POV-Ray can show it: POV-Ray
- * cannot evaluate sylva's noise, so the export writes the ground's colour filtered at an image
- * texel (the cover weights and every octave wider than a texel, finer ones at their mean) as a
- * PNG laid over the terrain's footprint from above (a planar image map), over a plain layer of
- * the image's mean colour that shows beyond the footprint (the apron). What it leaves out: the
- * octaves finer than a texel and the micro-relief, which sylva's verification mode leaves out
- * too (render/accel_terrain.h), so the cross-check compares the same ground.
+/* pov_ground.h — the procedural ground (geometry/ground_texture.h) as POV-Ray can show it:
+ * POV-Ray cannot evaluate sylva's noise, so the export writes the ground's image (its colour
+ * filtered at a texel: the cover weights and every octave wider than a texel, finer ones at
+ * their mean) as a PNG laid over the terrain's footprint from above (a planar image map), over a
+ * plain layer of the image's mean colour (ground_texture.beyond) that shows beyond the
+ * footprint (the apron). What it leaves out: the octaves finer than a texel and the
+ * micro-relief, which sylva's verification mode leaves out too (render/accel_terrain.h), so the
+ * cross-check compares the same ground.
  *
  * Ownership: nothing is kept; the image is written beside the other export files. */
 #ifndef SYLVA_POV_GROUND_H

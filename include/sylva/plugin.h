@@ -50,7 +50,7 @@ extern "C" {
 #endif
 
 #define SYLVA_ABI_MAJOR 1
-#define SYLVA_ABI_MINOR 2
+#define SYLVA_ABI_MINOR 3
 
 /* Bytes from the start of `type` to the end of `field`. */
 #define SYLVA_FIELD_END(type, field) (offsetof(type, field) + sizeof(((type *)0)->field))
@@ -232,6 +232,18 @@ typedef struct sylva_terrain_level {
     int32_t *material;      /* NULL, or nx * ny material ids as the heightfield's */
 } sylva_terrain_level;
 
+/* The rules a terrain plugin classed its ground cover by (ABI 1.3), in the heightfield's metres:
+ * the host turns them into continuous ground-cover weights (docs/models/ground.md). */
+typedef struct sylva_ground_rules {
+    double snow_z;        /* metres: height from which snow lies; HUGE_VAL: none */
+    double scree_z;       /* metres: height from which scree lies; HUGE_VAL: none */
+    double scree_slope;   /* degrees: slope from which scree lies */
+    double rock_slope;    /* degrees: slope from which rock shows */
+    double dry_humidity;  /* humidity in [0, 1] below which grass is dry */
+    double grass_albedo[3], dry_grass_albedo[3], scree_albedo[3], rock_albedo[3],
+        snow_albedo[3];   /* linear RGB: the mean albedo of each cover */
+} sylva_ground_rules;
+
 /* A regular grid of heights, owned by the host. Node (i, j) sits at (x0 + i dx, y0 + j dy) with
  * height z[j * nx + i]. */
 typedef struct sylva_heightfield {
@@ -250,6 +262,13 @@ typedef struct sylva_heightfield {
     sylva_terrain_level *levels; /* n_levels, host-allocated; NULL when there are none */
     int32_t beyond_edge;  /* SYLVA_EDGE_VOID: nothing past the grid's edge; SYLVA_EDGE_FLAT: the
                              edge continued outward flat at its nodes' heights to the horizon */
+    /* ---- ABI 1.3 (test with SYLVA_HAS_FIELD) ---- */
+    int has_ground_rules; /* 1: ground holds the rules the plugin classed its nodes by; the host
+                             then shades the ground from continuous cover weights */
+    sylva_ground_rules ground;
+    float *humidity;      /* NULL, or nx * ny humidity values in [0, 1] at the heightfield's nodes;
+                             allocated with api->mem_alloc, then the host's (freed with the
+                             heightfield) */
 } sylva_heightfield;
 
 #define SYLVA_EDGE_VOID 0
@@ -478,6 +497,7 @@ typedef struct sylva_plugin {
 #define SYLVA_PLUGIN_SIZE_1_0 SYLVA_FIELD_END(sylva_plugin, extension)
 #define SYLVA_PLUGIN_SIZE_1_1 SYLVA_FIELD_END(sylva_plugin, n_presets)
 #define SYLVA_PLUGIN_SIZE_1_2 SYLVA_PLUGIN_SIZE_1_1 /* 1.2 appended to the terrain request only */
+#define SYLVA_PLUGIN_SIZE_1_3 SYLVA_PLUGIN_SIZE_1_2 /* 1.3 appended to the heightfield only */
 
 /* The one exported symbol: descriptor `index` of this module, NULL past the end. */
 #define SYLVA_PLUGIN_ENTRY "sylva_plugin_get"

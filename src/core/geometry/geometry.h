@@ -11,6 +11,8 @@
  *   light_summary.h   the sun and the sky, with the ambient term and the sky's mean radiance
  *   sky_preetham.h    the Preetham daylight sky model the light summary evaluates
  *   camera_frame.h    the camera's forward, right and up vectors, turned by its roll
+ *   ground_cover.h    what covers the ground at any point: continuous weights of seven kinds
+ *   ground_texture.h  the ground's albedo and micro-relief from those weights, filtered
  *
  * The height and normal of the terrain at any point are the scene's (scene/heightfield.h), since
  * the plugin host answers those queries below this layer. Including this header includes them
@@ -21,6 +23,8 @@
 
 #include "geometry/camera_frame.h"
 #include "geometry/cutout.h"
+#include "geometry/ground_cover.h"
+#include "geometry/ground_texture.h"
 #include "geometry/light_summary.h"
 #include "geometry/sky_preetham.h"
 #include "geometry/terrain_apron.h"

@@ -29,7 +29,8 @@ static void write_vectors(pov_file *pf, const char *name, const float *v, uint32
     pov_put(pf, "\n  }\n");
 }
 
-int pov_write_mesh(pov_file *pf, const char *ident, const mesh *m, const scene *s, err_buf *err)
+int pov_write_mesh(pov_file *pf, const char *ident, const mesh *m, const scene *s, const char *texture_ident,
+                   err_buf *err)
 {
     /* The materials the mesh uses, in order of first use: slot[material] is its texture_list
      * index (or -1). */
@@ -42,7 +43,7 @@ int pov_write_mesh(pov_file *pf, const char *ident, const mesh *m, const scene *
     for (uint32_t i = 0; i < s->n_materials; i++) slot[i] = -1;
     uint32_t n_used = 0;
     int need_uv = 0;
-    for (uint32_t t = 0; t < m->nt; t++) {
+    for (uint32_t t = 0; t < m->nt && !texture_ident; t++) {
         uint32_t mt = scene_triangle_material(s, m, t);
         if (slot[mt] >= 0) continue;
         slot[mt] = (int32_t)n_used;
@@ -84,7 +85,9 @@ int pov_write_mesh(pov_file *pf, const char *ident, const mesh *m, const scene *
         pov_put(pf, line);
     }
     pov_put(pf, "\n  }\n");
-    if (n_used == 1) {
+    if (texture_ident) {
+        pov_printf(pf, "  texture { %s }\n", texture_ident);
+    } else if (n_used == 1) {
         pov_material_identifier(s, used[0], id);
         pov_printf(pf, "  texture { %s }\n", id);
     }

@@ -11,8 +11,10 @@
 #include "scene/scene.h"
 #include "util/err.h"
 
-/* Writes `#declare ident = mesh2 { ... }` for m (which must have triangles). Returns 0, or -1
- * with err set when a position, normal or uv is not finite or memory runs out. */
-int pov_write_mesh(pov_file *pf, const char *ident, const mesh *m, const scene *s, err_buf *err);
+/* Writes `#declare ident = mesh2 { ... }` for m (which must have triangles), its textures from
+ * its materials, or `texture_ident` on every triangle when that is not NULL. Returns
+ * 0, or -1 with err set when a position, normal or uv is not finite or memory runs out. */
+int pov_write_mesh(pov_file *pf, const char *ident, const mesh *m, const scene *s, const char *texture_ident,
+                   err_buf *err);
 
 #endif

@@ -10,6 +10,7 @@
 #include "geometry/geometry.h"
 #include "io/image_io.h"
 #include "pov/pov_file.h"
+#include "pov/pov_ground.h"
 #include "pov/pov_mesh.h"
 #include "pov/pov_names.h"
 #include "pov/pov_number.h"
@@ -233,10 +234,17 @@ static int write_terrain(const scene *s, const mesh *terrain, const mesh *water,
     pov_printf(&pf, "// Terrain: %u x %u heights %g m x %g m apart from (%g, %g), two triangles per cell;\n"
                     "// vertex normals from central differences, as sylva shades it.\n",
                hf->nx, hf->ny, hf->dx, hf->dy, hf->x0, hf->y0);
-    if (pov_write_mesh(&pf, "Terrain", terrain, s, err)) goto fail;
+    char image[POV_PATH_MAX], image_name[POV_PATH_MAX];
+    int ground = 0;
+    snprintf(image_name, sizeof image_name, "%s_ground.png", ep->stem);
+    if (path_with(ep, "_ground.png", image, err) ||
+        pov_write_ground(&pf, s, image, image_name, "Sylva_ground", &ground, err))
+        goto fail;
+    if (ground) st->files++, st->bytes += file_size(image);
+    if (pov_write_mesh(&pf, "Terrain", terrain, s, ground ? "Sylva_ground" : NULL, err)) goto fail;
     if (water) {
         pov_printf(&pf, "\n// Water: the surface at %g m over the terrain's extent.\n", hf->water_level);
-        if (pov_write_mesh(&pf, "Water", water, s, err)) goto fail;
+        if (pov_write_mesh(&pf, "Water", water, s, NULL, err)) goto fail;
     }
     if (pov_file_finish(&pf, &st->bytes, err)) return -1;
     st->files++;
@@ -289,7 +297,7 @@ static int write_objects(const scene *s, const export_paths *ep, const char *sou
             pov_put(&pf, "// (no triangles: not declared, its objects are left out)\n\n");
             continue;
         }
-        if (pov_write_mesh(&pf, ident, mm, s, err)) goto fail;
+        if (pov_write_mesh(&pf, ident, mm, s, NULL, err)) goto fail;
         pov_put(&pf, "\n");
     }
     for (uint32_t o = 0; o < s->n_objects; o++) {
@@ -325,7 +333,7 @@ static int write_objects(const scene *s, const export_paths *ep, const char *sou
             continue;
         }
         pov_printf(&pf, "// object \"%s\": %u triangles\n", text, s->objects[o].mesh->nt);
-        if (pov_write_mesh(&pf, ident, s->objects[o].mesh, s, err)) goto fail;
+        if (pov_write_mesh(&pf, ident, s->objects[o].mesh, s, NULL, err)) goto fail;
         pov_put(&pf, "\n");
     }
     if (pov_file_finish(&pf, &st->bytes, err)) return -1;
@@ -357,7 +365,7 @@ static int write_prototypes(pov_file *pf, const scene *s, const uint8_t *wanted,
             pov_put(pf, "// (no triangles: not declared, its plants are left out)\n\n");
             continue;
         }
-        if (pov_write_mesh(pf, ident, s->prototypes[p].mesh, s, err)) return -1;
+        if (pov_write_mesh(pf, ident, s->prototypes[p].mesh, s, NULL, err)) return -1;
         pov_put(pf, "\n");
     }
     return 0;

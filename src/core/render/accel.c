@@ -12,6 +12,7 @@
 #include "geometry/water_surface.h"
 #include "render/accel_terrain.h"
 #include "render/bark_bump.h"
+#include "geometry/ground_texture.h"
 
 /* --- Embree's errors --------------------------------------------------------------------- */
 
@@ -176,7 +177,8 @@ static int build_top(accel *a, const scene *s, err_buf *err)
     if (!a->top) return accel_device_error(a, err) ? -1 : err_set(err, "Embree could not create a scene");
     if (s->terrain) {
         double eye[3] = {s->camera.position[0], s->camera.position[1], s->camera.position[2]};
-        if (accel_terrain_add(a, a->top, ACCEL_TOP_TERRAIN, err) || water_surface_build(s, &a->water_mesh, err) ||
+        if (accel_terrain_add(a, a->top, ACCEL_TOP_TERRAIN, err) || ground_texture_build(s, &a->ground, err) ||
+            water_surface_build(s, &a->water_mesh, err) ||
             terrain_apron_build(s->terrain, s->terrain_material, terrain_apron_reach(s->terrain, eye),
                                 &a->apron_mesh, err))
             return -1;
@@ -261,6 +263,7 @@ void accel_free(accel *a)
     free(a->model_geoms);
     free(a->top_geoms);
     accel_terrain_free(a->terrain);
+    ground_texture_free(a->ground);
     mesh_free(a->water_mesh);
     mesh_free(a->apron_mesh);
     if (a->device) rtcReleaseDevice(a->device);
@@ -329,4 +332,5 @@ void accel_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h)
     }
     h->kind = g->kind;
     if (a->bark_relief) bark_bump(s, m, t, xf, h);
+    if (g->kind == GEOM_TERRAIN) accel_terrain_ground(a, rh, h); /* the apron */
 }

@@ -85,6 +85,9 @@ typedef struct accel {
     mesh *water_mesh;          /* owned */
     mesh *apron_mesh;          /* the terrain beyond its edge, or NULL; owned */
     struct accel_errors *errors; /* what Embree's error callback recorded; owned */
+    struct ground_texture *ground; /* the procedural ground (geometry/ground_texture.h), or NULL; owned */
+    float pixel_angle;         /* radians a pixel spans: the ground texture's footprint (0: none) */
+    int flat_ground;           /* 1: the ground as the POV-Ray export has it (verification mode) */
     float bounds_lo[3], bounds_hi[3]; /* of the whole scene */
     int bark_relief;           /* 1: accel_shade tilts bark's normals (bark_bump.h); 0 (as built):
                                 * the mesh's normals, which the verification mode compares */

@@ -7,6 +7,7 @@
 #include "geometry/cutout.h"
 #include "geometry/terrain_mesh.h"
 #include "geometry/texture_lookup.h"
+#include "render/ground_shade.h"
 
 /* Where a grid hit lies: the grid, the tessellation's triangle in it, and the point's position
  * in its cell (fx east, fy north, both in [0, 1]) as Embree's grid coordinates give it. */
@@ -270,4 +271,23 @@ void accel_terrain_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h
     }
     h->instance_id = 0, h->species_id = 0;
     h->kind = GEOM_TERRAIN;
+    accel_terrain_ground(a, rh, h);
+}
+
+void accel_terrain_ground(const accel *a, const struct RTCRayHit *rh, hit_info *h)
+{
+    if (!a->ground) return;
+    if (a->flat_ground) { /* the export's image, no micro-relief */
+        h->albedo = ground_texture_image_albedo(a->ground, h->p.x, h->p.y);
+        return;
+    }
+    vec3 wo = v3_norm(v3(-rh->ray.dir_x, -rh->ray.dir_y, -rh->ray.dir_z));
+    /* the pixel's width on the ground, stretched by the grazing angle (the geometric mean of
+     * the footprint's two axes); the distance is the eye's, since a camera ray over the curved
+     * Earth reaches the ground as the last of several chords */
+    const double *eye = a->scene->camera.position;
+    double ex = h->p.x - eye[0], ey = h->p.y - eye[1], ez = h->p.z - eye[2];
+    float facing = fmaxf(fabsf(v3_dot(wo, h->ns)), 0.05f);
+    double footprint = sqrt(ex * ex + ey * ey + ez * ez) * a->pixel_angle / sqrt(facing);
+    ground_shade_point(a->ground, h->p, h->ng, wo, footprint, &h->albedo, &h->ns);
 }

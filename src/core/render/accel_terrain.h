@@ -46,4 +46,10 @@ void accel_terrain_free(struct accel_terrain *t);
 /* Shading data for a hit on the terrain geometry. */
 void accel_terrain_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h);
 
+/* The procedural ground's albedo and shading normal (render/ground_shade.h) on terrain hit h
+ * (the grid or its apron) of ray rh; nothing when the terrain keeps its materials. With
+ * a->flat_ground, the colour of the POV-Ray export's ground image and no micro-relief, as the
+ * export shows it (pov/pov_ground.h). */
+void accel_terrain_ground(const accel *a, const struct RTCRayHit *rh, hit_info *h);
+
 #endif

@@ -91,6 +91,10 @@ render_setup *render_setup_new(const scene *s, const render_options *opt, err_bu
         free(rs);
         return NULL;
     }
+    camera cam; /* the pixel's angle sets how finely the ground's texture is resolved */
+    camera_init(&cam, &s->camera, w, h);
+    rs->acc.pixel_angle = (float)camera_smallest_pixel_angle(&cam);
+    rs->acc.flat_ground = opt->verify;
     if (lights_init(&rs->lt, &s->sun, &s->sky, s->site.origin[2], s->camera.position[2], err)) {
         accel_free(&rs->acc);
         free(rs);

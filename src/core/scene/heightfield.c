@@ -9,7 +9,7 @@ void heightfield_free(sylva_heightfield *h)
 {
     if (!h) return;
     for (uint32_t k = 0; k < h->n_levels; k++) free(h->levels[k].z), free(h->levels[k].material);
-    free(h->levels), free(h->z), free(h->material), free(h);
+    free(h->levels), free(h->z), free(h->material), free(h->humidity), free(h);
 }
 
 sylva_heightfield heightfield_level_view(const sylva_heightfield *h, uint32_t k)

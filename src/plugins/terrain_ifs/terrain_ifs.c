@@ -585,6 +585,36 @@ static float *level_humidity(const terrain_ifs_state *s, const sylva_host_api *a
     return h;
 }
 
+/* The rules the nodes were classed by, in the heightfield's heights, and the humidity at its
+ * nodes, for a host that shades the ground from continuous weights (ABI 1.3). */
+static int report_ground_rules(const terrain_ifs_state *s, const sylva_host_api *api, sylva_host *host,
+                               sylva_heightfield *hf)
+{
+    if (!SYLVA_HAS_FIELD(hf, sylva_heightfield, humidity)) return SYLVA_OK;
+    hf->has_ground_rules = 1;
+    hf->ground = (sylva_ground_rules){.snow_z = s->rules.snow_z - s->z_shift,
+                                      .scree_z = s->rules.scree_z - s->z_shift,
+                                      .scree_slope = s->rules.scree_slope,
+                                      .rock_slope = s->rules.rock_slope,
+                                      .dry_humidity = s->rules.dry_humidity};
+    for (int k = 0; k < 3; k++) {
+        hf->ground.grass_albedo[k] = s->albedo[IFS_SURFACE_GRASS][k];
+        hf->ground.dry_grass_albedo[k] = s->albedo[IFS_SURFACE_DRY_GRASS][k];
+        hf->ground.scree_albedo[k] = s->albedo[IFS_SURFACE_SCREE][k];
+        hf->ground.rock_albedo[k] = s->albedo[IFS_SURFACE_ROCK][k];
+        hf->ground.snow_albedo[k] = s->albedo[IFS_SURFACE_SNOW][k];
+    }
+    if (!s->humidity) return SYLVA_OK;
+    size_t n = (size_t)hf->nx * hf->ny;
+    hf->humidity = api->mem_alloc(n * sizeof *hf->humidity);
+    if (!hf->humidity) {
+        api->error(host, "terrain_ifs: out of memory for the humidity of %u x %u nodes", hf->nx, hf->ny);
+        return SYLVA_ERR_NOMEM;
+    }
+    memcpy(hf->humidity, s->humidity, n * sizeof *hf->humidity);
+    return SYLVA_OK;
+}
+
 /* Ground-cover materials per node of the heightfield and of its levels, and the water material. */
 static int apply_surface(const terrain_ifs_state *s, const sylva_host_api *api, sylva_host *host,
                          sylva_heightfield *hf)
@@ -617,6 +647,7 @@ static int apply_surface(const terrain_ifs_state *s, const sylva_host_api *api, 
     api->log(host, SYLVA_LOG_INFO, "ground: %.1f%% grass, %.1f%% dry grass, %.1f%% scree, "
              "%.1f%% rock, %.1f%% snow", 100.0 * counts[0] / n, 100.0 * counts[1] / n,
              100.0 * counts[2] / n, 100.0 * counts[3] / n, 100.0 * counts[4] / n);
+    if ((rc = report_ground_rules(s, api, host, hf))) return rc;
     if (s->has_water) {
         sylva_material_desc w = {.size = sizeof w, .name = "terrain_ifs water",
                                  .bsdf = SYLVA_BSDF_LAMBERT, .texture = -1};

@@ -26,6 +26,7 @@ typedef struct image_settings {
     uint64_t seed;
     uint32_t max_depth;     /* path vertices after the camera */
     double exposure;        /* stops applied before tone mapping (PNG only) */
+    double crown_proxy;     /* plants below this projected height (px) show a crown proxy; 0: never */
 } image_settings;
 
 /* A height given above the terrain, resolved once the terrain exists (scene_build.c). */

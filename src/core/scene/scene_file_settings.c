@@ -54,6 +54,7 @@ int sf_read_image(loader *L)
     im->seed = (uint64_t)sylva_param_int(p, "seed");
     im->max_depth = (uint32_t)sylva_param_int(p, "max_depth");
     im->exposure = sylva_param_real(p, "exposure");
+    im->crown_proxy = sylva_param_real(p, "crown_proxy");
     return 0;
 }
 

@@ -80,6 +80,21 @@ static void smooth_cells(double *radius)
     }
 }
 
+double crown_leaf_size(const scene *s, const mesh *m)
+{
+    double area = 0;
+    uint32_t n = 0;
+    for (uint32_t t = 0; t < m->nt; t++) {
+        if (!crown_triangle(s, m, t)) continue;
+        const uint32_t *k = m->tri + (size_t)t * 3;
+        const float *a = m->pos + (size_t)k[0] * 3, *b = m->pos + (size_t)k[1] * 3, *c = m->pos + (size_t)k[2] * 3;
+        double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2], z = u[0] * v[1] - u[1] * v[0];
+        area += 0.5 * sqrt(x * x + y * y + z * z), n++;
+    }
+    return n ? sqrt(2 * area / n) : 0;
+}
+
 int crown_hull_build(const scene *s, const mesh *m, mesh **out, err_buf *err)
 {
     *out = NULL;

@@ -17,6 +17,10 @@
  * bottom to the top, each the centre of its cell. */
 enum { CROWN_HULL_AZIMUTHS = 24, CROWN_HULL_RINGS = 12 };
 
+/* The typical size of a leaf of m's crown: the square root of twice its triangles' mean area (a
+ * leaf is a quad of two triangles, or a polygon of a few); 0 when m has no crown. */
+double crown_leaf_size(const scene *s, const mesh *m);
+
 /* The hull of m's crown in m's frame into *out (NULL when m has no crown). Its triangles carry
  * material -1 and face outward. Returns 0, or -1 with err set (out of memory). */
 int crown_hull_build(const scene *s, const mesh *m, mesh **out, err_buf *err);

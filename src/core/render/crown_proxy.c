@@ -35,14 +35,20 @@ static double xf_scale(const xform3x4 *xf)
                 (double)xf->m[2][0] * xf->m[2][0]);
 }
 
-/* Plant i's height in pixels through camera c, whose pixels span `pixel` radians. */
-static double projected_pixels(const scene *s, uint32_t i, const camera *c, double pixel)
+/* A leaf must look smaller than this many pixels for its plant to become a proxy: a plant a few
+ * pixels high whose leaves are half a pixel or more (a shrub 200 m away) keeps its detail. */
+#define PROXY_LEAF_PIXELS 0.25
+
+/* 1 when plant i looks small through camera c, whose pixels span `pixel` radians: its height is
+ * below max_pixels and its leaves (leaf_size m in its model) below PROXY_LEAF_PIXELS. */
+static int looks_small(const scene *s, uint32_t i, const camera *c, double pixel, double max_pixels,
+                       const double *leaf_size)
 {
     const instance *in = &s->instances[i];
-    double h = s->prototypes[in->prototype].height * xf_scale(&in->xf);
+    double scale = xf_scale(&in->xf), h = s->prototypes[in->prototype].height * scale;
     vec3 mid = xf_point(&in->xf, v3(0, 0, (float)(s->prototypes[in->prototype].height / 2)));
-    double d = v3_len(v3_sub(mid, c->origin));
-    return d > 0 ? h / (d * pixel) : INFINITY;
+    double d = v3_len(v3_sub(mid, c->origin)) * pixel;
+    return d > 0 && h < max_pixels * d && leaf_size[in->prototype] * scale < PROXY_LEAF_PIXELS * d;
 }
 
 /* Shadow rays pass through an envelope, losing its crossing transmittance at each surface; a ray
@@ -138,7 +144,9 @@ int crown_proxies_attach(accel *a, const camera *c, vec3 sun, double max_pixels,
     crown_proxies *p = calloc(1, sizeof *p);
     uint8_t *used = calloc(s->n_prototypes ? s->n_prototypes : 1, 1); /* owned here */
     uint8_t *far = calloc(s->n_instances, 1);                          /* owned here */
-    if (!p || !used || !far) goto nomem;
+    double *leaf = calloc(s->n_prototypes ? s->n_prototypes : 1, sizeof *leaf); /* owned here */
+    if (!p || !used || !far || !leaf) goto nomem;
+    for (uint32_t k = 0; k < s->n_prototypes; k++) leaf[k] = crown_leaf_size(s, s->prototypes[k].mesh);
     a->proxies = p;
     p->n_prototypes = s->n_prototypes, p->n_species = s->n_species, p->sun = sun;
     p->hull = calloc(s->n_prototypes ? s->n_prototypes : 1, sizeof *p->hull);
@@ -149,7 +157,7 @@ int crown_proxies_attach(accel *a, const camera *c, vec3 sun, double max_pixels,
     for (uint32_t k = 0; k < s->n_species; k++)
         p->materials[k] = (material){.bsdf = SYLVA_BSDF_LAMBERT, .albedo = v3(1, 1, 1), .texture = -1};
     for (uint32_t i = 0; i < s->n_instances; i++)
-        if (!s->instances[i].development && projected_pixels(s, i, c, pixel) < max_pixels)
+        if (!s->instances[i].development && looks_small(s, i, c, pixel, max_pixels, leaf))
             far[i] = 1, used[s->instances[i].prototype] = 1;
     if (build_hulls(a, p, used, err)) goto fail;
     uint32_t n = 0;
@@ -169,6 +177,7 @@ int crown_proxies_attach(accel *a, const camera *c, vec3 sun, double max_pixels,
     rtcCommitScene(a->top);
     free(used);
     free(far);
+    free(leaf);
     return accel_device_error(a, err);
 nomem:
     err_nomem(err, "out of memory building the crown proxies of %u plants", s->n_instances);
@@ -176,6 +185,7 @@ fail:
     if (!a->proxies) free(p);
     free(used);
     free(far);
+    free(leaf);
     return -1;
 }
 
@@ -190,9 +200,11 @@ uint32_t crown_proxy_of_hit(const accel *a, const struct RTCRayHit *rh)
 
 /* Camera samples per species region for the calibration: the mean of a region's radiance then
  * carries a relative error of about 0.6 / sqrt(this) (a sample's spread is some 60 % of the
- * mean over a distant forest), 0.3 %. */
-#define PROBE_SAMPLES 40000.0
-#define PROBE_MAX_SPP 256u
+ * mean over a distant forest, less with stratified samples), 0.4 %; but all regions together
+ * take at most PROBE_SHARE of the render's own samples (each is traced three times). */
+#define PROBE_SAMPLES 20000.0
+#define PROBE_MAX_SPP 64u
+#define PROBE_SHARE 0.1
 
 typedef struct probe_job {
     const render_ctx *ctx;       /* the proxies' view */
@@ -312,9 +324,12 @@ int crown_proxies_calibrate(accel *a, const render_ctx *ctx, unsigned threads, e
         if (region[k] > ns) region[k] -= ns + 1;
     for (size_t k = 0; k < npx; k++)
         if (region[k]) spp[region[k] - 1]++;
+    double region_px = 0, budget = PROBE_SHARE * (double)npx * ctx->spp, per_region = PROBE_SAMPLES;
+    for (uint32_t s = 0; s < ns; s++) region_px += spp[s] > 0;
+    if (region_px * per_region > budget) per_region = budget / region_px;
     for (uint32_t s = 0; s < ns; s++) {
-        double want = spp[s] ? ceil(PROBE_SAMPLES / spp[s]) : 0;
-        spp[s] = (uint32_t)fmin(want, PROBE_MAX_SPP);
+        double want = spp[s] ? ceil(per_region / spp[s]) : 0;
+        spp[s] = (uint32_t)fmax(fmin(want, PROBE_MAX_SPP), spp[s] ? 1 : 0);
     }
     double *A = acc, *D = acc + (size_t)3 * ns * ns, *B = D + 3 * ns, *K = B + 3 * ns;
     count = calloc(ns, sizeof *count);

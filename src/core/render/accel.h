@@ -69,6 +69,7 @@ typedef struct geom_info {
     int alpha;                 /* 1: the cut-out part, filtered by texture alpha */
     float crossing;            /* crown proxies: transmittance of one crossing of the envelope for
                                 * shadow rays (render/crown_proxy.h) */
+    float opacity;             /* crown proxies: the chance that a camera ray meets the envelope */
 } geom_info;
 
 struct accel_errors;

@@ -20,10 +20,20 @@
  * per prototype at the sun's elevation over all azimuths, so the light under and beside a
  * distant crown keeps its mean without the dappled pattern of its leaves.
  *
+ * A sparse crown lets camera rays through: its opacity is the share of rays at the camera's
+ * elevation over all azimuths crossing the envelope that meet the plant's leaves or branches;
+ * below one half, a camera ray meets the envelope with that probability (decided once per ray
+ * and plant), else passes through, so a sparse young tree on the horizon shows the sky between
+ * its branches rather than a pale ball calibrated to the sky's light. A denser crown is opaque
+ * and its gaps' light goes into the calibrated reflectance.
+ *
  * Ids: crown proxy j is the top-level instance accel.first_proxy + j, mask ACCEL_MASK_PROXY; the
  * plant it stands for keeps its id with mask ACCEL_MASK_FAR_PLANT. Camera rays carry neither
  * ACCEL_MASK_FAR_PLANT nor, in verification mode, ACCEL_MASK_PROXY; every other ray lacks
  * ACCEL_MASK_PROXY (render_ctx.camera_mask, ray_mask).
+ *
+ * crown_proxy.c chooses the plants and builds the envelopes and their shadows; crown_calibrate.c
+ * calibrates the reflectances.
  *
  * Ownership: a crown_proxies is owned by its accel (accel_free frees it); it owns the envelopes'
  * meshes, their Embree scenes and their materials. */
@@ -42,6 +52,7 @@ typedef struct crown_proxies {
     uint32_t *plant;        /* per proxy: the plant instance it stands for; owned */
     uint32_t n;             /* proxies in the top scene */
     vec3 sun;               /* unit, toward the sun: the envelopes' transmittance is measured along it */
+    vec3 view;              /* the camera's forward direction: their opacity is measured along it */
 } crown_proxies;
 
 /* Adds to a (built by accel_build) a crown proxy for every plant outside the development whose

@@ -13,6 +13,7 @@
 #include "render/accel_terrain.h"
 #include "render/bark_bump.h"
 #include "geometry/ground_texture.h"
+#include "render/crown_proxy.h"
 
 /* --- Embree's errors --------------------------------------------------------------------- */
 
@@ -128,8 +129,8 @@ static int add_mesh(accel *a, RTCScene rs, const mesh *m, geom_kind kind, unsign
 }
 
 /* One BVH holding mesh m (its two parts in g[0] and g[1]), for instances to share. */
-static int build_shared(accel *a, const mesh *m, geom_kind kind, RTCScene *out, geom_info g[ACCEL_PARTS],
-                        err_buf *err)
+int accel_build_shared(accel *a, const mesh *m, geom_kind kind, RTCScene *out, geom_info g[ACCEL_PARTS],
+                       err_buf *err)
 {
     RTCScene ps = rtcNewScene(a->device);
     if (!ps) return accel_device_error(a, err) ? -1 : err_set(err, "Embree could not create a scene");
@@ -143,18 +144,17 @@ static int build_shared(accel *a, const mesh *m, geom_kind kind, RTCScene *out, 
 static int build_prototypes(accel *a, const scene *s, err_buf *err)
 {
     for (uint32_t p = 0; p < s->n_prototypes; p++)
-        if (build_shared(a, s->prototypes[p].mesh, GEOM_PROTOTYPE, &a->proto_scenes[p],
+        if (accel_build_shared(a, s->prototypes[p].mesh, GEOM_PROTOTYPE, &a->proto_scenes[p],
                          &a->proto_geoms[p * ACCEL_PARTS], err))
             return -1;
     for (uint32_t m = 0; m < s->n_models; m++)
-        if (build_shared(a, s->models[m].mesh, GEOM_OBJECT, &a->model_scenes[m], &a->model_geoms[m * ACCEL_PARTS],
+        if (accel_build_shared(a, s->models[m].mesh, GEOM_OBJECT, &a->model_scenes[m], &a->model_geoms[m * ACCEL_PARTS],
                          err))
             return -1;
     return 0;
 }
 
-/* An instance of the shared BVH sc at top-level id, placed by xf. */
-static int add_instance(accel *a, RTCScene sc, const xform3x4 *xf, unsigned id, unsigned mask, err_buf *err)
+int accel_add_instance(accel *a, RTCScene sc, const xform3x4 *xf, unsigned id, unsigned mask, err_buf *err)
 {
     RTCGeometry g = rtcNewGeometry(a->device, RTC_GEOMETRY_TYPE_INSTANCE);
     if (!g) return accel_device_error(a, err) ? -1 : err_nomem(err, "out of memory building the BVH");
@@ -194,11 +194,11 @@ static int build_top(accel *a, const scene *s, err_buf *err)
         unsigned id = accel_top_object_id(o, ACCEL_PART_OPAQUE);
         unsigned mask = ob->development ? ACCEL_MASK_DEVELOPMENT : ACCEL_MASK_OBJECT;
         if (ob->mesh ? add_mesh(a, a->top, ob->mesh, GEOM_OBJECT, id, mask, &a->top_geoms[id], err)
-                     : add_instance(a, a->model_scenes[ob->model], &ob->xf, id, mask, err))
+                     : accel_add_instance(a, a->model_scenes[ob->model], &ob->xf, id, mask, err))
             return -1;
     }
     for (uint32_t i = 0; i < s->n_instances; i++)
-        if (add_instance(a, a->proto_scenes[s->instances[i].prototype], &s->instances[i].xf, a->first_instance + i,
+        if (accel_add_instance(a, a->proto_scenes[s->instances[i].prototype], &s->instances[i].xf, a->first_instance + i,
                          s->instances[i].development ? ACCEL_MASK_DEVELOPMENT : ACCEL_MASK_PLANT, err))
             return -1;
     rtcCommitScene(a->top);
@@ -262,6 +262,7 @@ void accel_free(accel *a)
     free(a->model_scenes);
     free(a->model_geoms);
     free(a->top_geoms);
+    crown_proxies_free(a->proxies);
     accel_terrain_free(a->terrain);
     ground_texture_free(a->ground);
     mesh_free(a->water_mesh);
@@ -277,12 +278,20 @@ void accel_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h)
     const scene *s = a->scene;
     const geom_info *g;
     const xform3x4 *xf = NULL;
+    const material *proxy = NULL; /* the material of a crown proxy (crown_proxy.h) */
     unsigned inst = rh->hit.instID[0];
     h->instance_id = 0, h->species_id = 0, h->object_id = accel_hit_object(a, rh);
     if (h->object_id && inst != RTC_INVALID_GEOMETRY_ID) {
         const object *ob = &s->objects[h->object_id - 1];
         g = &a->model_geoms[(uint32_t)ob->model * ACCEL_PARTS + rh->hit.geomID];
         xf = &ob->xf;
+    } else if (a->proxies && inst != RTC_INVALID_GEOMETRY_ID && inst >= a->first_proxy) {
+        uint32_t i = a->proxies->plant[inst - a->first_proxy], p = s->instances[i].prototype;
+        g = &a->proxies->hull_geom[p * ACCEL_PARTS + rh->hit.geomID];
+        xf = &s->instances[i].xf;
+        h->instance_id = i + 1;
+        h->species_id = s->prototypes[p].species + 1;
+        proxy = &a->proxies->materials[s->prototypes[p].species];
     } else if (inst != RTC_INVALID_GEOMETRY_ID) {
         uint32_t i = inst - a->first_instance;
         uint32_t p = s->instances[i].prototype;
@@ -323,7 +332,7 @@ void accel_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h)
     h->p = xf ? xf_point(xf, p) : p;
     h->u = bw * m->uv[k[0] * 2] + bu * m->uv[k[1] * 2] + bv * m->uv[k[2] * 2];
     h->v = bw * m->uv[k[0] * 2 + 1] + bu * m->uv[k[1] * 2 + 1] + bv * m->uv[k[2] * 2 + 1];
-    h->mat = &s->materials[scene_triangle_material(s, m, t)];
+    h->mat = proxy ? proxy : &s->materials[scene_triangle_material(s, m, t)];
     h->albedo = h->mat->albedo;
     if (h->mat->texture >= 0) {
         float rgba[4];

@@ -53,7 +53,9 @@ enum {
     ACCEL_MASK_GROUND = 1u,      /* the terrain, its apron and the water surfaces */
     ACCEL_MASK_PLANT = 2u,       /* the plant instances */
     ACCEL_MASK_OBJECT = 4u,      /* objects that are not part of a development */
-    ACCEL_MASK_DEVELOPMENT = 8u  /* objects of a development, and its new planting */
+    ACCEL_MASK_DEVELOPMENT = 8u, /* objects of a development, and its new planting */
+    ACCEL_MASK_FAR_PLANT = 16u,  /* plants that camera rays see as crown proxies (crown_proxy.h) */
+    ACCEL_MASK_PROXY = 32u       /* the crown proxies: met by camera rays alone */
 };
 
 typedef enum geom_kind { GEOM_TERRAIN = 1, GEOM_WATER, GEOM_OBJECT, GEOM_PROTOTYPE } geom_kind;
@@ -65,10 +67,14 @@ typedef struct geom_info {
     const scene *scene;        /* for materials and textures in the filter */
     const struct accel_terrain *terrain; /* the terrain's tiles (GEOM_TERRAIN only) */
     int alpha;                 /* 1: the cut-out part, filtered by texture alpha */
+    float crossing;            /* crown proxies: transmittance of one crossing of the envelope for
+                                * shadow rays (render/crown_proxy.h) */
+    float opacity;             /* crown proxies: the chance that a camera ray meets the envelope */
 } geom_info;
 
 struct accel_errors;
 struct accel_terrain;
+struct crown_proxies;
 
 typedef struct accel {
     RTCDevice device;
@@ -88,6 +94,8 @@ typedef struct accel {
     struct ground_texture *ground; /* the procedural ground (geometry/ground_texture.h), or NULL; owned */
     float pixel_angle;         /* radians a pixel spans: the ground texture's footprint (0: none) */
     int flat_ground;           /* 1: the ground as the POV-Ray export has it (verification mode) */
+    struct crown_proxies *proxies; /* the distant plants' crown proxies (crown_proxy.h), or NULL; owned */
+    uint32_t first_proxy;      /* top geomID of crown proxy 0 */
     float bounds_lo[3], bounds_hi[3]; /* of the whole scene */
     int bark_relief;           /* 1: accel_shade tilts bark's normals (bark_bump.h); 0 (as built):
                                 * the mesh's normals, which the verification mode compares */
@@ -114,6 +122,13 @@ void accel_free(accel *a); /* accepts a zeroed accel */
 /* The first error Embree reported on a's device since it was built, into err: returns -1 with
  * it, or 0 when there was none. Call it on the thread that owns err, after tracing. */
 int accel_device_error(const accel *a, err_buf *err);
+
+/* One BVH holding mesh m (its two parts in g[0] and g[1]), for instances to share; *out is
+ * released by the caller. Returns 0 or -1 with err. */
+int accel_build_shared(accel *a, const mesh *m, geom_kind kind, RTCScene *out, geom_info g[ACCEL_PARTS],
+                       err_buf *err);
+/* An instance of the shared BVH sc at top-level id of a, placed by xf, with Embree mask `mask`. */
+int accel_add_instance(accel *a, RTCScene sc, const xform3x4 *xf, unsigned id, unsigned mask, err_buf *err);
 
 /* The object a hit lies on: its index + 1, or 0 when it is not on an object. */
 uint32_t accel_hit_object(const accel *a, const struct RTCRayHit *rh);

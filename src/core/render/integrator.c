@@ -6,11 +6,13 @@
 
 #include "render/aerial.h"
 #include "render/bsdf.h"
+#include "render/crown_proxy.h"
 #include "render/film.h"
 #include "render/lens.h"
+#include "render/pixel_strata.h"
 #include "render/sampler.h"
 
-/* Sampler dimensions: 0-1 pixel position; then DIMS_PER_VERTEX per path vertex. */
+/* Sampler dimensions: 0-1 unused (the pixel position comes from pixel_strata.h); then DIMS_PER_VERTEX per path vertex. */
 enum { DIM_SUN = 0, DIM_SKY = 2, DIM_BSDF = 4, DIM_RR = 7, DIMS_PER_VERTEX = 8 };
 /* The lens point: far past every vertex's dimensions, so a pinhole's samples stay as they were. */
 #define DIM_LENS (1u << 24)
@@ -58,26 +60,27 @@ static int trace_camera(const render_ctx *ctx, vec3 o, vec3 d, struct RTCRayHit 
     double t0, dt;
     while (curved_path_next(&p, &org, &dir, &len, &t0, &dt)) {
         /* Chords overlap by a hundred-thousandth so that no hit falls between two of them. */
-        ray_init(rh, v3_add(org, shift), dir, 0.0f, isinf(len) ? INFINITY : len * (1.0f + 1e-5f), ctx->ray_mask);
+        ray_init(rh, v3_add(org, shift), dir, 0.0f, isinf(len) ? INFINITY : len * (1.0f + 1e-5f), ctx->camera_mask);
         if (!trace(ctx, rh)) continue;
         if (t) *t = isinf(len) ? rh->ray.tfar : (float)(t0 + rh->ray.tfar / len * dt);
         return 1;
     }
-    ray_init(rh, o, d, 0.0f, INFINITY, ctx->ray_mask);
+    ray_init(rh, o, d, 0.0f, INFINITY, ctx->camera_mask);
     return 0;
 }
 
-/* 1 when nothing blocks o + t d for t in (0, far). */
-static int visible(const render_ctx *ctx, vec3 o, vec3 d, float far)
+/* The share of light that passes from o + far d to o: 1 when nothing that mask meets is in the
+ * way, 0 when something opaque is, between for crown proxies (crown_proxy.h). */
+static float visible(const render_ctx *ctx, vec3 o, vec3 d, float far, unsigned mask)
 {
     const accel *a = ctx->accel;
     if (ctx->recorder) ctx->recorder->record(ctx->recorder->user, o, d, far, 1);
-    struct RTCIntersectContext ic;
-    rtcInitIntersectContext(&ic);
+    shadow_context sc = {.transmittance = 1.0f};
+    rtcInitIntersectContext(&sc.ic);
     struct RTCRay r = {.org_x = o.x, .org_y = o.y, .org_z = o.z, .tnear = 0.0f, .dir_x = d.x, .dir_y = d.y,
-                       .dir_z = d.z, .time = 0.0f, .tfar = far, .mask = ctx->ray_mask, .id = 0, .flags = 0};
-    rtcOccluded1(a->top, &ic, &r);
-    return r.tfar >= 0.0f;
+                       .dir_z = d.z, .time = 0.0f, .tfar = far, .mask = mask, .id = 0, .flags = 0};
+    rtcOccluded1(a->top, &sc.ic, &r);
+    return r.tfar >= 0.0f ? sc.transmittance : 0.0f;
 }
 
 /* A point just off the surface on the side of direction d. p comes from the triangle's
@@ -98,25 +101,49 @@ static int on_development(const accel *a, const struct RTCRayHit *rh)
     if (o) return a->scene->objects[o - 1].development != 0;
     unsigned inst = rh->hit.instID[0];
     return inst != RTC_INVALID_GEOMETRY_ID && inst >= a->first_instance &&
-           a->scene->instances[inst - a->first_instance].development;
+           inst - a->first_instance < a->scene->n_instances && a->scene->instances[inst - a->first_instance].development;
 }
 
 /* *hit: 0 when the camera ray hit nothing, 1 when it hit a surface, 2 when that surface is part
- * of the development. */
-static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec3 d, int *hit)
+ * of the development. *proxy (when not NULL): the crown proxy the camera ray met (its index + 1),
+ * or 0. */
+/* Which of a pixel's samples a path is: at the first vertex its 2-D sample pairs (sun, sky,
+ * BSDF direction) are spread over the pixel's samples as its positions are (pixel_strata.h). */
+typedef struct pixel_sample {
+    uint32_t index, count;
+    uint64_t pattern;
+} pixel_sample;
+
+/* The 2-D sample pair at dimensions (d, d + 1) of vertex `depth`. */
+static void sample_pair(const sampler *smp, const pixel_sample *ps, uint32_t depth, uint32_t d, float *u, float *v)
+{
+    if (depth == 0 && ps->count > 1) {
+        strata_position(ps->index, ps->count, rng_combine(ps->pattern, d), u, v);
+        return;
+    }
+    *u = sampler_at(smp, d), *v = sampler_at(smp, d + 1);
+}
+
+static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, const pixel_sample *ps, vec3 o, vec3 d, int *hit,
+                          uint32_t *proxy)
 {
     const accel *a = ctx->accel;
     const lights *l = ctx->lights;
     vec3 L = v3(0, 0, 0), beta = v3(1, 1, 1);
     float prev_pdf = 0.0f; /* 0: the previous vertex was the camera (no MIS on emission) */
+    unsigned mask = ctx->ray_mask; /* a path from a crown proxy stays among the proxies */
+    const unsigned shadow_mask = ctx->camera_mask; /* shadows cross the proxies, not the far plants */
     for (uint32_t depth = 0;; depth++) {
         struct RTCRayHit rh;
         int found;
         if (depth == 0) {
             found = trace_camera(ctx, o, d, &rh, NULL);
             *hit = found ? 1 + on_development(a, &rh) : 0;
+            uint32_t j = found ? crown_proxy_of_hit(a, &rh) : 0;
+            if (j) mask = ctx->camera_mask;
+            if (proxy) *proxy = j;
         } else {
-            ray_init(&rh, o, d, 0.0f, INFINITY, ctx->ray_mask);
+            ray_init(&rh, o, d, 0.0f, INFINITY, mask);
             found = trace(ctx, &rh);
         }
         if (!found) {
@@ -147,37 +174,42 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
         /* next-event estimation: the sun */
         if (l->summary.sun_on) {
             vec3 wi;
-            float pdf_l = lights_sun_sample(l, sampler_at(smp, base + DIM_SUN), sampler_at(smp, base + DIM_SUN + 1), &wi);
+            float u, v;
+            sample_pair(smp, ps, depth, base + DIM_SUN, &u, &v);
+            float pdf_l = lights_sun_sample(l, u, v, &wi);
             float pdf_b;
             vec3 f = bsdf_eval(h.mat, h.albedo, n, wo, wi, &pdf_b);
-            float c = fabsf(v3_dot(n, wi));
-            if (v3_max(f) > 0.0f && c > 0.0f && visible(ctx, offset_point(h.p, ng, wi), wi, INFINITY)) {
+            float c = fabsf(v3_dot(n, wi)), vis;
+            if (v3_max(f) > 0.0f && c > 0.0f && (vis = visible(ctx, offset_point(h.p, ng, wi), wi, INFINITY, shadow_mask)) > 0.0f) {
                 vec3 contrib;
                 if (l->summary.solid_angle > 0.0f)
                     contrib = v3_scale(v3_mul(f, l->summary.sun_radiance), c / pdf_l * power_heuristic(pdf_l, pdf_b));
                 else
                     contrib = v3_scale(v3_mul(f, l->summary.sun_irradiance), c);
-                L = v3_add(L, v3_mul(beta, contrib));
+                L = v3_add(L, v3_mul(beta, v3_scale(contrib, vis)));
             }
         }
         /* next-event estimation: the sky */
         if (l->table.rgb) {
             float fwi[3], rgb[3];
-            float pdf_l = sky_table_sample(&l->table, sampler_at(smp, base + DIM_SKY),
-                                           sampler_at(smp, base + DIM_SKY + 1), fwi, rgb);
+            float u, v;
+            sample_pair(smp, ps, depth, base + DIM_SKY, &u, &v);
+            float pdf_l = sky_table_sample(&l->table, u, v, fwi, rgb);
             vec3 wi = v3(fwi[0], fwi[1], fwi[2]);
             float pdf_b;
             vec3 f = bsdf_eval(h.mat, h.albedo, n, wo, wi, &pdf_b);
-            float c = fabsf(v3_dot(n, wi));
-            if (pdf_l > 0.0f && v3_max(f) > 0.0f && c > 0.0f && visible(ctx, offset_point(h.p, ng, wi), wi, INFINITY)) {
-                vec3 Ls = v3(rgb[0], rgb[1], rgb[2]);
+            float c = fabsf(v3_dot(n, wi)), vis;
+            if (pdf_l > 0.0f && v3_max(f) > 0.0f && c > 0.0f &&
+                (vis = visible(ctx, offset_point(h.p, ng, wi), wi, INFINITY, shadow_mask)) > 0.0f) {
+                vec3 Ls = v3_scale(v3(rgb[0], rgb[1], rgb[2]), vis);
                 L = v3_add(L, v3_mul(beta, v3_scale(v3_mul(f, Ls), c / pdf_l * power_heuristic(pdf_l, pdf_b))));
             }
         }
         /* continue the path */
         bsdf_sample bs;
-        if (!bsdf_sample_dir(h.mat, h.albedo, n, wo, sampler_at(smp, base + DIM_BSDF), sampler_at(smp, base + DIM_BSDF + 1),
-                             sampler_at(smp, base + DIM_BSDF + 2), &bs))
+        float u, v;
+        sample_pair(smp, ps, depth, base + DIM_BSDF + 1, &u, &v);
+        if (!bsdf_sample_dir(h.mat, h.albedo, n, wo, sampler_at(smp, base + DIM_BSDF), u, v, &bs))
             break;
         beta = v3_mul(beta, v3_scale(bs.f, fabsf(v3_dot(n, bs.wi)) / bs.pdf));
         if (depth >= 3) {
@@ -311,6 +343,29 @@ static void aux_layers(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_resu
     }
 }
 
+/* Sample s of pixel (x, y): its radiance (0 when not finite); *hit and *proxy as path_radiance. */
+static vec3 camera_sample(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t s, int *hit, uint32_t *proxy)
+{
+    sampler smp;
+    sampler_start(&smp, ctx->seed, (uint64_t)y * ctx->camera.width + x, s);
+    pixel_sample ps = {.index = s, .count = ctx->spp,
+                       .pattern = rng_combine(ctx->seed, (uint64_t)y * ctx->camera.width + x)};
+    float px, py;
+    strata_position(s, ctx->spp, ps.pattern, &px, &py);
+    vec3 d = camera_direction(&ctx->camera, x + px, y + py), o = ctx->camera.origin;
+    float vignette = lens_vignette(&ctx->camera, d);
+    if (ctx->camera.lens_radius > 0.0f)
+        lens_ray(&ctx->camera, sampler_at(&smp, DIM_LENS), sampler_at(&smp, DIM_LENS + 1), &o, &d);
+    vec3 L = v3_scale(path_radiance(ctx, &smp, &ps, o, d, hit, proxy), vignette);
+    return isfinite(L.x) && isfinite(L.y) && isfinite(L.z) ? L : v3(0, 0, 0);
+}
+
+vec3 integrate_sample(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t s, uint32_t *proxy)
+{
+    int hit;
+    return camera_sample(ctx, x, y, s, &hit, proxy);
+}
+
 void integrate_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_result *out)
 {
     if (ctx->verify) {
@@ -320,19 +375,11 @@ void integrate_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_result
         aux_layers(ctx, x, y, out);
         return;
     }
-    uint64_t pixel = (uint64_t)y * ctx->camera.width + x;
     vec3 sum = v3(0, 0, 0), dev_sum = v3(0, 0, 0);
     uint32_t n = ctx->spp, hits = 0, dev_hits = 0;
     for (uint32_t s = 0; s < n; s++) {
-        sampler smp;
-        sampler_start(&smp, ctx->seed, pixel, s);
-        vec3 d = camera_direction(&ctx->camera, x + sampler_at(&smp, 0), y + sampler_at(&smp, 1)), o = ctx->camera.origin;
-        float vignette = lens_vignette(&ctx->camera, d);
-        if (ctx->camera.lens_radius > 0.0f)
-            lens_ray(&ctx->camera, sampler_at(&smp, DIM_LENS), sampler_at(&smp, DIM_LENS + 1), &o, &d);
         int hit = 0;
-        vec3 L = v3_scale(path_radiance(ctx, &smp, o, d, &hit), vignette);
-        if (!(isfinite(L.x) && isfinite(L.y) && isfinite(L.z))) L = v3(0, 0, 0);
+        vec3 L = camera_sample(ctx, x, y, s, &hit, NULL);
         sum = v3_add(sum, L);
         hits += hit != 0;
         dev_hits += hit == 2;

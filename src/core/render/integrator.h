@@ -24,8 +24,9 @@
  * rays) takes the air's extinction and in-scattered light (aerial.h); the verification mode
  * applies it as POV-Ray's constant fog (light_summary_fog), misses included.
  *
- * Every ray (camera, bounce, shadow) carries ctx->ray_mask: geometry whose Embree mask
- * (ACCEL_MASK_*) shares no bit with it is not in the scene for this render.
+ * Every ray after the camera ray (bounce, shadow) carries ctx->ray_mask, camera rays carry
+ * ctx->camera_mask: geometry whose Embree mask (ACCEL_MASK_*) shares no bit with it is not in
+ * the scene for those rays (crown proxies meet camera rays alone: render/crown_proxy.h).
  *
  * Camera rays follow the Earth's curvature when ctx->curved is on (curved_ray.h), in both modes;
  * the rays after the first hit (shadows, bounces) are straight, and a camera ray that misses
@@ -53,6 +54,7 @@ typedef struct render_ctx {
     uint64_t seed;
     int verify;
     unsigned ray_mask;  /* the geometry rays meet (ACCEL_MASK_* bits); ~0u: all */
+    unsigned camera_mask; /* the geometry camera rays meet */
     const ray_recorder *recorder; /* NULL, or called for each ray (single-threaded renders only) */
 } render_ctx;
 
@@ -69,5 +71,8 @@ typedef struct pixel_result {
 } pixel_result;
 
 void integrate_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_result *out);
+/* The radiance of camera sample s of pixel (x, y), as integrate_pixel sums it; *proxy (when not
+ * NULL) the crown proxy its camera ray met first (index + 1), or 0. */
+vec3 integrate_sample(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t s, uint32_t *proxy);
 
 #endif

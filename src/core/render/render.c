@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "render/accel.h"
+#include "render/crown_proxy.h"
 #include "render/integrator.h"
 #include "util/progress.h"
 
@@ -76,6 +77,35 @@ static unsigned thread_count(const render_options *o)
     return o->recorder ? 1 : o->threads ? o->threads : render_default_threads();
 }
 
+/* The render context of rs for options o at w x h (its camera, curved rays and masks). */
+static void ctx_init(render_ctx *ctx, render_setup *rs, const render_options *o, uint32_t w, uint32_t h)
+{
+    const scene *s = rs->scene;
+    unsigned leave_out = o->leave_out;
+    if (leave_out & ACCEL_MASK_PLANT) leave_out |= ACCEL_MASK_FAR_PLANT | ACCEL_MASK_PROXY;
+    *ctx = (render_ctx){.accel = &rs->acc, .lights = &rs->lt, .spp = o->spp ? o->spp : s->image.spp,
+                        .max_depth = s->image.max_depth, .seed = o->seed_set ? o->seed : s->image.seed,
+                        .verify = o->verify, .recorder = o->recorder, .ray_mask = ~leave_out & ~ACCEL_MASK_PROXY};
+    /* crown proxies stand in for their plants before camera rays alone, never in verification */
+    ctx->camera_mask = o->verify ? ctx->ray_mask : ~leave_out & ~ACCEL_MASK_FAR_PLANT;
+    rs->acc.bark_relief = !o->verify; /* POV-Ray, which the verification matches, has none */
+    camera_init(&ctx->camera, &s->camera, w, h);
+    curved_rays_init(&ctx->curved, o->flat_earth ? NULL : &s->earth, &ctx->camera, rs->acc.bounds_lo,
+                     rs->acc.bounds_hi);
+}
+
+/* The crown proxies of the plants that look small through the camera at w x h
+ * (crown_proxy.h), calibrated; nothing in verification mode or with image.crown_proxy 0. */
+static int setup_proxies(render_setup *rs, const render_options *o, uint32_t w, uint32_t h, err_buf *err)
+{
+    if (o->verify || !(rs->scene->image.crown_proxy > 0)) return 0;
+    render_ctx ctx;
+    ctx_init(&ctx, rs, o, w, h);
+    vec3 sun = rs->lt.summary.sun_on ? rs->lt.summary.sun_dir : v3(0.0f, 0.7071f, 0.7071f);
+    if (crown_proxies_attach(&rs->acc, &ctx.camera, sun, rs->scene->image.crown_proxy, err)) return -1;
+    return crown_proxies_calibrate(&rs->acc, &ctx, thread_count(o), err);
+}
+
 render_setup *render_setup_new(const scene *s, const render_options *opt, err_buf *err)
 {
     uint32_t w = opt->width ? opt->width : s->image.width, h = opt->height ? opt->height : s->image.height;
@@ -95,7 +125,9 @@ render_setup *render_setup_new(const scene *s, const render_options *opt, err_bu
     camera_init(&cam, &s->camera, w, h);
     rs->acc.pixel_angle = (float)camera_smallest_pixel_angle(&cam);
     rs->acc.flat_ground = opt->verify;
-    if (lights_init(&rs->lt, &s->sun, &s->sky, s->site.origin[2], s->camera.position[2], err)) {
+    if (lights_init(&rs->lt, &s->sun, &s->sky, s->site.origin[2], s->camera.position[2], err) ||
+        setup_proxies(rs, opt, w, h, err)) {
+        lights_free(&rs->lt);
         accel_free(&rs->acc);
         free(rs);
         return NULL;
@@ -121,12 +153,8 @@ film *render_setup_run(render_setup *rs, const render_options *opt, render_stats
     double t1 = progress_now();
     film *f = film_new(w, h, err);
     if (!f) return NULL;
-    render_ctx ctx = {.accel = &rs->acc, .lights = &rs->lt, .spp = o.spp ? o.spp : s->image.spp,
-                      .max_depth = s->image.max_depth, .seed = o.seed_set ? o.seed : s->image.seed, .verify = o.verify,
-                      .recorder = o.recorder, .ray_mask = ~o.leave_out};
-    rs->acc.bark_relief = !o.verify; /* POV-Ray, which the verification matches, has none */
-    camera_init(&ctx.camera, &s->camera, w, h);
-    curved_rays_init(&ctx.curved, o.flat_earth ? NULL : &s->earth, &ctx.camera, rs->acc.bounds_lo, rs->acc.bounds_hi);
+    render_ctx ctx;
+    ctx_init(&ctx, rs, &o, w, h);
     render_job job = {.ctx = &ctx, .film = f, .tiles_x = (w + TILE - 1) / TILE, .tiles_y = (h + TILE - 1) / TILE};
     atomic_init(&job.next_tile, 0);
     progress prog;

@@ -88,6 +88,15 @@ static const sylva_param_spec image_params[] = {
      .choices = host_tone_curves,
      .help = "Tone curve for PNG: agx (log encoding and a sigmoid; bright colours go to white) or "
              "aces (the Narkowicz 2015 ACES fit)."},
+    {.name = "crown_proxy",
+     .type = SYLVA_P_REAL,
+     .flags = MIN | MAX,
+     .def = 24,
+     .min = 0,
+     .max = 100000,
+     .unit = "px",
+     .help = "Plants drawn smaller than this height in pixels show camera rays a calibrated crown envelope "
+             "instead of their leaves (a smooth distant forest); 0: always the full plants."},
 };
 const host_schema host_schema_image = {"image", "Output size, sampling and the scene seed.",
                                        image_params, COUNT(image_params)};

@@ -31,6 +31,7 @@ typedef struct image_settings {
     double exposure;        /* stops applied before tone mapping (PNG only), when exposure_set */
     int exposure_set;       /* 0: the exposure is metered from the rendered image */
     tone_curve tone;
+    double crown_proxy;     /* plants below this projected height (px) show a crown proxy; 0: never */
 } image_settings;
 
 /* A height given above the terrain, resolved once the terrain exists (scene_build.c). */

@@ -56,6 +56,7 @@ int sf_read_image(loader *L)
     im->exposure = sylva_param_real(p, "exposure");
     im->exposure_set = sylva_param(p, "exposure")->is_set;
     im->tone = (tone_curve)sylva_param(p, "tone")->i;
+    im->crown_proxy = sylva_param_real(p, "crown_proxy");
     return 0;
 }
 

@@ -11,6 +11,8 @@
  *   light_summary.h   the sun and the sky, with the ambient term and the sky's mean radiance
  *   sky_preetham.h    the Preetham daylight sky model the light summary evaluates
  *   camera_frame.h    the camera's forward, right and up vectors, turned by its roll
+ *   ground_cover_place.h  grass and herbs near the camera (with ground_cover_models.h, the
+ *                     tufts' meshes, and ground_cover_kinds.h, the ground's kinds)
  *
  * The height and normal of the terrain at any point are the scene's (scene/heightfield.h), since
  * the plugin host answers those queries below this layer. Including this header includes them

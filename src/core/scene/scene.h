@@ -101,6 +101,8 @@ void scene_free(scene *s);   /* accepts NULL */
 int32_t scene_add_material(scene *s, const sylva_material_desc *d, err_buf *err);
 int32_t scene_add_texture(scene *s, const char *name, uint32_t w, uint32_t h,
                           const uint8_t *rgba, err_buf *err); /* copies rgba */
+/* A species with no variants yet (its name copied); its prototypes are the ones added next. */
+int32_t scene_add_species(scene *s, const char *name, err_buf *err);
 int32_t scene_add_prototype(scene *s, uint32_t species, uint32_t variant, double age,
                             double height, mesh *m, err_buf *err); /* takes m */
 int32_t scene_add_instance(scene *s, uint32_t prototype, const xform3x4 *xf, err_buf *err);

@@ -1,0 +1,131 @@
+/* test_ground_cover.c — the ground cover near the camera: its density by the ground's kinds and
+ * slope, placement that is the same in every run and follows the density (none on rock or
+ * water, plenty on meadow), only in view and within the radius, and a count kept to
+ * max_instances. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "harness.h"
+#include "geometry/ground_cover_place.h"
+
+/* A flat 201 x 201 m terrain, 1 m between nodes, centred on the origin: meadow for x < 0, rock
+ * for x >= 0, and water (below the water level at z = 0.5) for y > 60. The camera stands 1.6 m
+ * above the origin looking north and a little down. */
+static scene *split_scene(void)
+{
+    scene *s = scene_new();
+    sylva_heightfield *hf = calloc(1, sizeof *hf);
+    const uint32_t n = 201;
+    float *z = malloc((size_t)n * n * sizeof *z);
+    int32_t *mat = malloc((size_t)n * n * sizeof *mat);
+    err_buf err = {{0}};
+    sylva_material_desc grass = {.size = sizeof grass, .name = "terrain_ifs grass", .bsdf = SYLVA_BSDF_LAMBERT,
+                                 .texture = -1};
+    sylva_material_desc rock = grass;
+    rock.name = "terrain_ifs rock";
+    int32_t g = s ? scene_add_material(s, &grass, &err) : -1, r = s ? scene_add_material(s, &rock, &err) : -1;
+    if (!s || !hf || !z || !mat || g < 0 || r < 0) {
+        scene_free(s), free(hf), free(z), free(mat);
+        return NULL;
+    }
+    *hf = (sylva_heightfield){.size = sizeof *hf, .nx = n, .ny = n, .x0 = -100, .y0 = -100, .dx = 1, .dy = 1,
+                              .z = z, .material = mat, .has_water = 1, .water_level = 0.5, .water_material = -1};
+    for (uint32_t j = 0; j < n; j++)
+        for (uint32_t i = 0; i < n; i++) {
+            z[(size_t)j * n + i] = j > 160 ? 0.0f : 1.0f;
+            mat[(size_t)j * n + i] = i < 100 ? g : r;
+        }
+    s->terrain = hf;
+    s->image.seed = 7;
+    s->camera = (camera_settings){.position = {0, 0, 2.6}, .direction = {0, 0.97014, -0.24254}, .up = {0, 0, 1},
+                                  .fov_deg = 60};
+    return s;
+}
+
+static const ground_cover_settings cover = {.enabled = 1, .density = 10, .radius = 0, .max_instances = 200000};
+
+TEST(density_by_kind_and_slope)
+{
+    const double flat[3] = {0, 0, 1}, steep[3] = {0.866, 0, 0.5}; /* 60 degrees */
+    float w[COVER_KINDS] = {0};
+    w[COVER_MEADOW] = 1;
+    double meadow = ground_cover_density(w, flat);
+    CHECK_NEAR(meadow, 1, 0);
+    CHECK_NEAR(ground_cover_density(w, steep), 0, 0);
+    memset(w, 0, sizeof w), w[COVER_FOREST_FLOOR] = 1;
+    double forest = ground_cover_density(w, flat);
+    CHECK(forest > 0 && forest < meadow);
+    const cover_kind bare[] = {COVER_ROCK, COVER_SNOW, COVER_WATER};
+    for (size_t k = 0; k < 3; k++) {
+        memset(w, 0, sizeof w), w[bare[k]] = 1;
+        CHECK_NEAR(ground_cover_density(w, flat), 0, 0);
+    }
+    memset(w, 0, sizeof w); /* nothing known: nothing grows */
+    CHECK_NEAR(ground_cover_density(w, flat), 0, 0);
+}
+
+/* Where each tuft stands, relative to the eye. */
+TEST(placement_follows_the_ground)
+{
+    scene *a = split_scene(), *b = split_scene();
+    CHECK(a && b);
+    if (!a || !b) goto done;
+    err_buf err = {{0}};
+    ground_cover_report ra, rb;
+    CHECK_INT(ground_cover_add(a, &cover, 320, 180, &ra, &err), 0);
+    CHECK_INT(ground_cover_add(b, &cover, 320, 180, &rb, &err), 0);
+    /* the same tufts, to the bit */
+    CHECK(ra.instances > 1000);
+    CHECK_INT(ra.instances, rb.instances);
+    CHECK_INT(a->n_instances, b->n_instances);
+    CHECK(!memcmp(a->instances, b->instances, a->n_instances * sizeof *a->instances));
+    /* the pixel radius: 320 / (2 tan 30 deg) pixels of focal length times a 0.3 m blade */
+    CHECK_NEAR(ra.pixel_radius, 160.0 / tan(M_PI / 6) * 0.3, 1e-9);
+    uint32_t meadow = 0, rock = 0, water = 0, behind = 0, beyond = 0;
+    for (uint32_t i = 0; i < a->n_instances; i++) {
+        const float *t = &a->instances[i].xf.m[0][0];
+        double x = t[3], y = a->instances[i].xf.m[1][3];
+        if (y > 61) water++;
+        else if (x >= 0.5) rock++;
+        else if (x < -0.5) meadow++;
+        if (y < -1) behind++;
+        if (hypot(x, y) > ra.radius) beyond++;
+    }
+    CHECK(meadow > 1000);
+    CHECK_INT(rock, 0);
+    CHECK_INT(water, 0);
+    CHECK_INT(behind, 0);
+    CHECK_INT(beyond, 0);
+    /* the cover's own species and prototypes came with it */
+    CHECK_INT(a->n_species, 2);
+    CHECK(!strcmp(a->species[0].name, "ground cover grass"));
+done:
+    scene_free(a), scene_free(b);
+}
+
+TEST(count_kept_to_the_cap)
+{
+    scene *s = split_scene(), *off = split_scene();
+    CHECK(s && off);
+    if (!s || !off) goto done;
+    err_buf err = {{0}};
+    ground_cover_settings capped = cover;
+    capped.max_instances = 500;
+    ground_cover_report rep;
+    CHECK_INT(ground_cover_add(s, &capped, 320, 180, &rep, &err), 0);
+    CHECK(rep.instances > 0 && rep.instances <= 500);
+    CHECK_INT(rep.capped, 1);
+    CHECK(rep.radius < rep.pixel_radius);
+    ground_cover_settings disabled = cover;
+    disabled.enabled = 0;
+    CHECK_INT(ground_cover_add(off, &disabled, 320, 180, &rep, &err), 0);
+    CHECK_INT(rep.instances, 0);
+    CHECK_INT(off->n_instances, 0);
+    CHECK_INT(off->n_species, 0);
+done:
+    scene_free(s), scene_free(off);
+}
+
+TEST_LIST(TEST_CASE(density_by_kind_and_slope), TEST_CASE(placement_follows_the_ground),
+          TEST_CASE(count_kept_to_the_cap))

@@ -8,6 +8,7 @@
 
 #include "harness.h"
 #include "geometry/ground_cover_place.h"
+#include "scene/heightfield.h"
 
 /* A flat 201 x 201 m terrain, 1 m between nodes, centred on the origin: meadow for x < 0, rock
  * for x >= 0, and water (below the water level at z = 0.5) for y > 60. The camera stands 1.6 m
@@ -127,5 +128,23 @@ done:
     scene_free(s), scene_free(off);
 }
 
-TEST_LIST(TEST_CASE(density_by_kind_and_slope), TEST_CASE(placement_follows_the_ground),
+/* Tufts stand on the drawn surface: where a level of detail covers a point, that level's
+ * triangles (they were placed on the coarse grid's, buried or floating where the two differ). */
+TEST(surface_height_on_the_finest_level)
+{
+    float base[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0}; /* 3 x 3 nodes, 10 m apart, flat at 0 */
+    float fine[25];
+    for (int k = 0; k < 25; k++) fine[k] = 1.0f; /* cell (0, 0) refined 4 times, 1 m higher */
+    sylva_terrain_level lv = {.size = sizeof lv, .i0 = 0, .j0 = 0, .cells_x = 1, .cells_y = 1, .refine = 4,
+                              .nx = 5, .ny = 5, .z = fine};
+    sylva_heightfield hf = {.size = sizeof hf, .nx = 3, .ny = 3, .dx = 10, .dy = 10, .z = base, .water_material = -1,
+                            .n_levels = 1, .levels = &lv};
+    double z = -9;
+    CHECK_INT(heightfield_surface_height(&hf, 4.0, 6.0, &z), 0);
+    CHECK_NEAR(z, 1.0, 1e-9);
+    CHECK_INT(heightfield_surface_height(&hf, 15.0, 15.0, &z), 0); /* outside the level */
+    CHECK_NEAR(z, 0.0, 1e-9);
+}
+
+TEST_LIST(TEST_CASE(surface_height_on_the_finest_level), TEST_CASE(density_by_kind_and_slope), TEST_CASE(placement_follows_the_ground),
           TEST_CASE(count_kept_to_the_cap))

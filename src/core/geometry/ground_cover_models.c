@@ -8,7 +8,7 @@
 #include "util/rng.h"
 
 #define STRIP_SEGMENTS 5
-#define STRIP_MAX_VERTICES (2 * STRIP_SEGMENTS + 1)
+#define STRIP_MAX_VERTICES (2 * STRIP_SEGMENTS + 2) /* a stem keeps its width to the top */
 #define STRIP_MAX_TRIANGLES (2 * STRIP_SEGMENTS)
 
 typedef enum strip_profile {
@@ -37,8 +37,8 @@ static double strip_width(const strip *st, double t)
     return st->width;
 }
 
-/* Appends st to m: STRIP_SEGMENTS pairs of vertices along the centre line and a single vertex
- * at the tip, where the blade and leaf profiles come to a point. */
+/* Appends st to m: a pair of vertices across the centre line at each of its STRIP_SEGMENTS + 1
+ * stations, but a single vertex at the tip where the blade and leaf profiles come to a point. */
 static int strip_append(mesh *m, const strip *st, err_buf *err)
 {
     float pos[3 * STRIP_MAX_VERTICES], nrm[3 * STRIP_MAX_VERTICES], uv[2 * STRIP_MAX_VERTICES];

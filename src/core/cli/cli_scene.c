@@ -1,9 +1,11 @@
 /* cli_scene.c — loading and building a scene for a command. */
 #include "cli/cli_scene.h"
 
+#include <stdio.h>
 #include <string.h>
 
 #include "cli/cli_status.h"
+#include "geometry/ground_cover_place.h"
 #include "util/progress.h"
 
 int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const char *viewpoint,
@@ -27,4 +29,16 @@ void cli_scene_close(cli_scene *c)
     scene_file_free(c->sf);
     plugin_registry_free(c->reg);
     memset(c, 0, sizeof *c);
+}
+
+int cli_scene_ground_cover(cli_scene *c, const char *cmd, uint32_t width, uint32_t height, int quiet)
+{
+    err_buf err = {{0}};
+    ground_cover_report rep;
+    if (!width || !height) width = c->scene->image.width, height = c->scene->image.height;
+    if (ground_cover_add(c->scene, &c->sf->ground_cover, width, height, &rep, &err)) return cli_fail(cmd, &err, ERR_INTERNAL);
+    if (!quiet && rep.instances)
+        fprintf(stderr, "ground cover: %u tufts within %.0f m (a blade spans a pixel at %.0f m)%s\n", rep.instances,
+                rep.radius, rep.pixel_radius, rep.capped ? ", the radius shrunk to max_instances" : "");
+    return EXIT_OK;
 }

@@ -23,4 +23,9 @@ int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const 
                    const build_options *opt);
 void cli_scene_close(cli_scene *c);
 
+/* Adds the scene file's ground cover (geometry/ground_cover_place.h) for c's camera and an image
+ * width x height pixels (0: the scene's size), and says on stderr how many tufts stand within
+ * what radius unless quiet. Returns EXIT_OK or the exit status after printing the problem. */
+int cli_scene_ground_cover(cli_scene *c, const char *cmd, uint32_t width, uint32_t height, int quiet);
+
 #endif

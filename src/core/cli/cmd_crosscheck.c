@@ -151,6 +151,7 @@ int cmd_crosscheck(int argc, char **argv)
     err_buf err = {{0}};
     cli_scene cs;
     int rc = cli_scene_open(&cs, "crosscheck", scene_path, viewpoint, &bo);
+    if (!rc) rc = cli_scene_ground_cover(&cs, "crosscheck", co.width, co.height, co.quiet);
     if (rc) goto done;
     const scene *sc = cs.scene;
     crosscheck_result *r = malloc(sizeof *r);

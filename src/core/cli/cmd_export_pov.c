@@ -115,6 +115,7 @@ int cmd_export_pov(int argc, char **argv)
     err_buf err = {{0}};
     cli_scene cs;
     int rc = cli_scene_open(&cs, "export-pov", scene_path, viewpoint, &bo);
+    if (!rc && !species_name) rc = cli_scene_ground_cover(&cs, "export-pov", po.width, po.height, bo.quiet);
     if (rc) goto done;
     const scene *sc = cs.scene;
     double t1 = progress_now();

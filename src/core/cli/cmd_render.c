@@ -123,6 +123,7 @@ int cmd_render(int argc, char **argv)
     cli_scene cs;
     film *f = NULL;
     int rc = cli_scene_open(&cs, "render", scene_path, viewpoint, &bo);
+    if (!rc) rc = cli_scene_ground_cover(&cs, "render", ro.width, ro.height, ro.quiet);
     if (rc) goto done;
     const scene *sc = cs.scene;
     if (!ro.quiet)

@@ -13,6 +13,8 @@
  *   camera_frame.h    the camera's forward, right and up vectors, turned by its roll
  *   ground_cover.h    what covers the ground at any point: continuous weights of seven kinds
  *   ground_texture.h  the ground's albedo and micro-relief from those weights, filtered
+ *   ground_cover_place.h  grass and herbs near the camera (with ground_cover_models.h, the
+ *                     tufts' meshes)
  *
  * The height and normal of the terrain at any point are the scene's (scene/heightfield.h), since
  * the plugin host answers those queries below this layer. Including this header includes them

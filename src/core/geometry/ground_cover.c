@@ -63,6 +63,7 @@ static int build_canopy(ground_cover_map *m, const scene *s, err_buf *err)
     for (uint32_t p = 0; p < s->n_prototypes; p++) radius[p] = crown_radius(s->prototypes[p].mesh);
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (uint32_t i = 0; i < s->n_instances; i++) {
+        if (scene_instance_is_ground_cover(s, i)) continue; /* tufts are no canopy */
         const xform3x4 *xf = &s->instances[i].xf;
         double sc = sqrt(xf->m[0][0] * xf->m[0][0] + xf->m[1][0] * xf->m[1][0] + xf->m[2][0] * xf->m[2][0]);
         double r = CROWN_REACH * radius[s->instances[i].prototype] * sc;
@@ -82,6 +83,7 @@ static int build_canopy(ground_cover_map *m, const scene *s, err_buf *err)
         return err_nomem(err, "out of memory for a %u x %u canopy raster", m->cnx, m->cny);
     }
     for (uint32_t i = 0; i < s->n_instances; i++) {
+        if (scene_instance_is_ground_cover(s, i)) continue;
         const instance *in = &s->instances[i];
         const xform3x4 *xf = &in->xf;
         double sc = sqrt(xf->m[0][0] * xf->m[0][0] + xf->m[1][0] * xf->m[1][0] + xf->m[2][0] * xf->m[2][0]);

@@ -180,7 +180,7 @@ int crown_proxies_attach(accel *a, const camera *c, vec3 sun, double max_pixels,
     for (uint32_t k = 0; k < s->n_species; k++)
         p->materials[k] = (material){.bsdf = SYLVA_BSDF_LAMBERT, .albedo = v3(1, 1, 1), .texture = -1};
     for (uint32_t i = 0; i < s->n_instances; i++)
-        if (!s->instances[i].development && looks_small(s, i, c, pixel, max_pixels, leaf))
+        if (!s->instances[i].development && !scene_instance_is_ground_cover(s, i) && looks_small(s, i, c, pixel, max_pixels, leaf))
             far[i] = 1, used[s->instances[i].prototype] = 1;
     if (build_hulls(a, p, used, err)) goto fail;
     uint32_t n = 0;

@@ -80,6 +80,8 @@ int heightfield_height(const sylva_heightfield *h, double x, double y, double *z
 
 int heightfield_surface_height(const sylva_heightfield *h, double x, double y, double *z)
 {
+    sylva_heightfield view;
+    h = finest_at(h, x, y, &view); /* the drawn surface is the finest level there */
     cell c;
     if (cell_of(h, x, y, &c)) return -1;
     const float *r0 = h->z + (size_t)c.j * h->nx, *r1 = r0 + h->nx;

@@ -18,7 +18,7 @@
 
 const char *const host_sections[] = {"image",   "site",    "camera",  "sun",     "sky",     "materials",
                                      "terrain", "species", "plants",  "ecology", "groups",  "objects",
-                                     "earth",   "viewpoints", "ztv",     "photo",   NULL};
+                                     "earth",   "viewpoints", "ztv",     "photo",   "ground_cover", NULL};
 
 const char *const host_shape_names[] = {"mesh", "box", "sphere", "quad", "disk", NULL};
 const char *const host_sky_models[] = {"none", "constant", "preetham", "physical", NULL};
@@ -298,6 +298,21 @@ static const sylva_param_spec earth_params[] = {
 const host_schema host_schema_earth = {
     "earth", "The Earth's curvature and the atmosphere's refraction over long views.",
     earth_params, COUNT(earth_params)};
+
+/* --- ground_cover ---------------------------------------------------------------------------- */
+static const sylva_param_spec ground_cover_params[] = {
+    {.name = "enabled", .type = SYLVA_P_BOOL, .def = 1,
+     .help = "Place grass and herbs on the ground near the camera being rendered."},
+    {.name = "density", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 24, .min = 0, .max = 400,
+     .unit = "1/m^2", .help = "Tufts per square metre of full meadow; other ground takes its share."},
+    {.name = "radius", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = 0, .max = 5000, .unit = "m",
+     .help = "Farthest tuft from the camera (0: where a blade shrinks to about a pixel)."},
+    {.name = "max_instances", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 200000, .min = 0, .max = 5000000,
+     .help = "At most this many tufts; the radius shrinks until the count fits."},
+};
+const host_schema host_schema_ground_cover = {
+    "ground_cover", "Grass and herbs near the camera, placed by the ground's cover.",
+    ground_cover_params, COUNT(ground_cover_params)};
 
 /* --- ztv ----------------------------------------------------------------------------------- */
 static const char *const ztv_screenings[] = {"none", "vegetation", "all", NULL};
@@ -606,7 +621,7 @@ const host_schema *host_schema_at(uint32_t i)
         &host_schema_image,        &host_schema_site,         &host_schema_position,
         &host_schema_camera,       &host_schema_sun,          &host_schema_sky,
         &host_schema_earth,        &host_schema_ztv,          &host_schema_ztv_target,
-        &host_schema_photo,
+        &host_schema_photo,        &host_schema_ground_cover,
         &host_schema_material,     &host_schema_terrain,
         &host_schema_species,      &host_schema_plant,        &host_schema_ecology,
         &host_schema_object,       &host_schema_object_model, &host_schema_object_group,

@@ -112,6 +112,17 @@ int32_t scene_add_texture(scene *s, const char *name, uint32_t w, uint32_t h, co
     return (int32_t)s->n_textures++;
 }
 
+int32_t scene_add_species(scene *s, const char *name, err_buf *err)
+{
+    species *grown = realloc(s->species, (s->n_species + 1) * sizeof *grown);
+    if (!grown) return err_nomem(err, "out of memory adding species '%s'", name);
+    s->species = grown;
+    char *nm = strdup(name);
+    if (!nm) return err_nomem(err, "out of memory adding species '%s'", name);
+    s->species[s->n_species] = (species){.name = nm, .first_prototype = s->n_prototypes};
+    return (int32_t)s->n_species++;
+}
+
 int32_t scene_add_prototype(scene *s, uint32_t sp, uint32_t variant, double age, double height,
                             mesh *m, err_buf *err)
 {

@@ -46,6 +46,8 @@ typedef struct species {
     char *name;               /* owned */
     uint32_t first_prototype; /* its variants are prototypes [first, first + n_variants) */
     uint32_t n_variants;
+    int ground_cover;         /* 1: grass and herbs placed around the camera (ground_cover_place.h),
+                                 not plants of the scene: no canopy, no crown proxy */
 } species;
 
 typedef struct instance {
@@ -101,6 +103,8 @@ void scene_free(scene *s);   /* accepts NULL */
 int32_t scene_add_material(scene *s, const sylva_material_desc *d, err_buf *err);
 int32_t scene_add_texture(scene *s, const char *name, uint32_t w, uint32_t h,
                           const uint8_t *rgba, err_buf *err); /* copies rgba */
+/* A species with no variants yet (its name copied); its prototypes are the ones added next. */
+int32_t scene_add_species(scene *s, const char *name, err_buf *err);
 int32_t scene_add_prototype(scene *s, uint32_t species, uint32_t variant, double age,
                             double height, mesh *m, err_buf *err); /* takes m */
 int32_t scene_add_instance(scene *s, uint32_t prototype, const xform3x4 *xf, err_buf *err);
@@ -125,6 +129,13 @@ static inline uint32_t scene_triangle_material(const scene *s, const mesh *m, ui
 {
     int32_t id = m->mat[t];
     return id >= 0 && (uint32_t)id < s->n_materials ? (uint32_t)id : (uint32_t)s->default_material;
+}
+
+/* 1 when instance i is a tuft of ground cover rather than a plant of the scene. */
+static inline int scene_instance_is_ground_cover(const scene *s, uint32_t i)
+{
+    uint32_t sp = s->prototypes[s->instances[i].prototype].species;
+    return sp < s->n_species && s->species[sp].ground_cover;
 }
 
 /* The variant of `species` for normalised age t: the youngest variant at least as old as t. */

@@ -98,6 +98,14 @@ typedef struct earth_settings {
     double radius;          /* metres */
 } earth_settings;
 
+/* Grass and herbs near the camera (geometry/ground_cover_place.h, docs/rendering.md). */
+typedef struct ground_cover_settings {
+    int enabled;            /* 1: place ground cover for the camera being rendered */
+    double density;         /* tufts per square metre of full meadow */
+    double radius;          /* metres: the farthest tuft (0: where a blade shrinks to a pixel) */
+    uint32_t max_instances; /* the count is capped here (the radius shrinks to fit) */
+} ground_cover_settings;
+
 typedef enum sky_model { SKY_NONE = 0, SKY_CONSTANT = 1, SKY_PREETHAM = 2, SKY_PHYSICAL = 3 } sky_model;
 
 typedef struct sky_settings {
@@ -268,6 +276,7 @@ typedef struct scene_file {
     sun_settings sun;
     sky_settings sky;
     earth_settings earth;
+    ground_cover_settings ground_cover;
     terrain_spec terrain;
     species_spec *species; uint32_t n_species;
     plant_spec *plants; uint32_t n_plants;

@@ -145,6 +145,7 @@ int sf_read_camera(loader *L);
 int sf_read_sun(loader *L);
 int sf_read_sky(loader *L);
 int sf_read_earth(loader *L); /* after the site: its default depends on it */
+int sf_read_ground_cover(loader *L);
 int sf_read_materials(loader *L, const ynode *node);
 int sf_read_ecology(loader *L, const ynode *node, uint32_t line, uint32_t column);
 int sf_read_terrain(loader *L, const ynode *node, uint32_t line, uint32_t column);

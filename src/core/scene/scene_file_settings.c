@@ -2,8 +2,8 @@
  * direction or heading/pitch/roll, fov or focal length with sensor width, an up vector not
  * parallel to the view) and the named viewpoints read as the camera is, sun (direction,
  * azimuth and elevation, or a date and time at a place), sky (keys that apply to its model
- * only) and earth (curvature on by default only for a scene with a site, so read after the
- * site). */
+ * only), earth (curvature on by default only for a scene with a site, so read after the
+ * site) and ground_cover (the grass and herbs placed near the camera). */
 #include "scene/scene_file_loader.h"
 
 #include <float.h>
@@ -453,5 +453,17 @@ int sf_read_earth(loader *L)
     e->curvature = curvature->is_set ? (int)curvature->i : L->sf->site.crs_wkt != NULL;
     e->refraction = sylva_param_real(p, "refraction");
     e->radius = sylva_param_real(p, "radius");
+    return 0;
+}
+
+int sf_read_ground_cover(loader *L)
+{
+    const sylva_params *p;
+    if (read_section(L, "ground_cover", &host_schema_ground_cover, &p)) return -1;
+    ground_cover_settings *g = &L->sf->ground_cover;
+    g->enabled = (int)sylva_param_int(p, "enabled");
+    g->density = sylva_param_real(p, "density");
+    g->radius = sylva_param_real(p, "radius");
+    g->max_instances = (uint32_t)sylva_param_int(p, "max_instances");
     return 0;
 }

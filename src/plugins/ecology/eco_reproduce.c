@@ -3,7 +3,10 @@
  * one arrival a year that colonises an empty terrain), the fraction carried to the next year;
  * each lands beside a parent with chance p_s or anywhere the plants may grow, picked through
  * Algorithm 7's sorted index list so that adding is linear in the plants. A seedling that falls
- * into water or outside the growth area is lost. */
+ * into water or outside the growth area is lost; one in the edge band round the area takes root
+ * with the band's chance there (eco_edge.c). The seedlings from anywhere fall on the area's
+ * patches as in 004; the band receives the same rain per patch besides them (from its own
+ * stream, so the area's draws are the ones a hard edge makes). */
 #include <math.h>
 #include <stdlib.h>
 
@@ -31,7 +34,8 @@ static uint32_t beside(const eco_terrain *t, uint32_t p, double u)
 }
 
 /* A seedling of species j on patch p at a random point of it (Fig. 4.19); lost in water or
- * outside the growth area. The population has room (reserved by the caller). */
+ * outside the growth area, and in the edge band unless it takes root. The population has room
+ * (reserved by the caller). */
 static void sow(eco_sim *s, uint32_t j, uint32_t p, const eco_random *rnd)
 {
     const eco_terrain *t = &s->terrain;
@@ -39,6 +43,8 @@ static void sow(eco_sim *s, uint32_t j, uint32_t p, const eco_random *rnd)
     double x = t->x0 + (p % t->ni + rnd->uniform(&rng[ECO_RNG_POSITION_I])) * t->kx;
     double y = t->y0 + (p / t->ni + rnd->uniform(&rng[ECO_RNG_POSITION_J])) * t->ky;
     if (!s->growable[p] || eco_in_water(t, x, y)) return;
+    /* drawn only in the band, so a run without one draws what it always drew */
+    if (s->establish[p] < 1.0f && !(rnd->uniform(&rng[ECO_RNG_ESTABLISH]) < s->establish[p])) return;
     const eco_species *sp = &s->species[j];
     eco_plant *pl = &s->pop[j].plants[s->pop[j].n++];
     *pl = (eco_plant){.x = x, .y = y, .z = eco_height_at(t, x, y), .patch = p};
@@ -69,10 +75,14 @@ int eco_reproduce(eco_sim *s, const eco_random *rnd, plugin_err *err)
                                (unsigned long long)s->config.max_plants);
         }
         uint32_t n_new = (uint32_t)whole;
+        /* room for the band's share of the rain too: at most every seedling from anywhere times
+         * band patches per area patch, plus one for the rounding */
+        double band_ratio = s->n_band ? (double)s->n_band / s->n_growable : 0.0;
+        uint64_t band_max = s->n_band ? (uint64_t)ceil(n_new * band_ratio) + 1 : 0;
         living += n_new;
-        if (pop->n + (uint64_t)n_new > pop->cap) {
+        if (pop->n + (uint64_t)n_new + band_max > pop->cap) {
             uint64_t cap = pop->cap ? pop->cap : 64;
-            while (cap < pop->n + (uint64_t)n_new) cap *= 2;
+            while (cap < pop->n + (uint64_t)n_new + band_max) cap *= 2;
             if (cap > UINT32_MAX) cap = UINT32_MAX;
             eco_plant *q = realloc(pop->plants, cap * sizeof *q);
             if (!q)
@@ -103,6 +113,16 @@ int eco_reproduce(eco_sim *s, const eco_random *rnd, plugin_err *err)
         for (uint32_t q = 0; q < n_anywhere; q++) {
             uint32_t c = (uint32_t)(rnd->uniform(&rng[ECO_RNG_ANYWHERE]) * s->n_growable);
             sow(s, j, s->growable_list[c < s->n_growable ? c : s->n_growable - 1], rnd);
+        }
+        /* The edge band's share of that rain, at the area's density per patch (rounded at
+         * random), each seedling then taking root with the band's chance where it falls. */
+        if (s->n_band && n_anywhere) {
+            double share = n_anywhere * band_ratio;
+            uint32_t n_band = (uint32_t)(share + rnd->uniform(&rng[ECO_RNG_ESTABLISH]));
+            for (uint32_t q = 0; q < n_band; q++) {
+                uint32_t c = (uint32_t)(rnd->uniform(&rng[ECO_RNG_ESTABLISH]) * s->n_band);
+                sow(s, j, s->band_list[c < s->n_band ? c : s->n_band - 1], rnd);
+            }
         }
         free(parents);
     }

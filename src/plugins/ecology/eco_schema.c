@@ -62,6 +62,9 @@ const sylva_param_spec eco_params[ECO_PARAMS] = {
     {.name = "growth_mask", .type = SYLVA_P_GRID,
      .help = "Rows (south to north) of cells over the whole terrain; plants grow only on patches whose centre "
              "falls in a non-zero cell."},
+    {.name = "edge_fade", .type = SYLVA_P_REAL, .flags = RANGE, .def = 150, .min = 0, .max = 100000, .unit = "m",
+     .help = "Width of the band round the growth area or mask where seedlings take root less and less often, "
+             "its edge broken by noise (0: a hard edge)."},
     {.name = "water_altitude", .type = SYLVA_P_REAL, .flags = RANGE, .def = 0, .min = 0, .max = 1,
      .help = "Normalised altitude below which patches are water (0: only the terrain's own water surface)."},
     {.name = "rain", .type = SYLVA_P_REAL, .flags = RANGE, .def = 1, .min = 0, .max = 1000,

@@ -6,7 +6,7 @@
 
 #include "sylva/plugin.h"
 
-#define ECO_PARAMS 20 /* entries of eco_params */
+#define ECO_PARAMS 21 /* entries of eco_params */
 extern const sylva_param_spec eco_params[ECO_PARAMS];
 
 #define ECO_SPECIES_KEYS 23 /* entries of eco_species_schema */

@@ -14,7 +14,7 @@ const char *const eco_stream_purposes[ECO_N_STREAMS] = {
     "ecology.anywhere",       "ecology.position_i",      "ecology.position_j",
     "ecology.death_dominance", "ecology.death_altitude", "ecology.death_humidity",
     "ecology.death_sunniness", "ecology.death_windiness", "ecology.death_slope",
-    "ecology.death_age",      "ecology.rotation"};
+    "ecology.death_age",      "ecology.rotation",        "ecology.establish"};
 
 static uint64_t fnv1a(uint64_t h, const void *data, size_t n)
 {
@@ -33,7 +33,7 @@ void eco_sim_free(eco_sim *s)
     for (uint32_t i = 0; s->names && i < s->n_species; i++) free(s->names[i]);
     free(s->species), free(s->request_index), free(s->names), free(s->model_height), free(s->p_r);
     free(s->pop), free(s->seeds), free(s->carry), free(s->rng);
-    free(s->growable), free(s->growable_list);
+    free(s->growable), free(s->growable_list), free(s->establish), free(s->band_list);
     free(s->cell_start), free(s->patch_r_max), free(s->cell);
     free(s);
 }
@@ -83,8 +83,8 @@ static int pick_species(const sylva_params *params, const char *only, const sylv
     return SYLVA_OK;
 }
 
-/* The growth area: the rectangle and the mask, minus water. */
-static int growth_area(eco_sim *s, const sylva_params *params, plugin_err *err)
+/* The growth area: the rectangle and the mask, widened by the edge band, minus water. */
+static int growth_area(eco_sim *s, const eco_random *rnd, const sylva_params *params, plugin_err *err)
 {
     const eco_terrain *t = &s->terrain;
     const eco_config *c = &s->config;
@@ -111,7 +111,7 @@ static int growth_area(eco_sim *s, const sylva_params *params, plugin_err *err)
     for (uint32_t k = 0; k < t->nk; k++)
         for (uint32_t i = 0; i < t->ni; i++) {
             size_t p = i + (size_t)k * t->ni;
-            int ok = !t->water[p];
+            int ok = 1;
             if (c->area[0] >= 0) ok = ok && i >= c->area[0] && i <= c->area[2] && k >= c->area[1] && k <= c->area[3];
             if (c->mask) {
                 uint32_t col = (uint32_t)((i + 0.5) / t->ni * c->mask_cols);
@@ -121,8 +121,30 @@ static int growth_area(eco_sim *s, const sylva_params *params, plugin_err *err)
                 ok = ok && c->mask[(size_t)row * c->mask_cols + col] != 0;
             }
             s->growable[p] = (uint8_t)ok;
-            if (ok) s->growable_list[s->n_growable++] = (uint32_t)p;
         }
+    /* the edge band: an area or mask that leaves patches out fades into them */
+    int bounded = 0;
+    for (size_t p = 0; p < n && !bounded; p++) bounded = !s->growable[p];
+    if (bounded && c->edge_fade > 0) {
+        sylva_rng r;
+        rnd->stream(rnd->ctx, &r, "ecology.edge_noise", 0);
+        s->establish = eco_edge_establishment(t, s->growable, c->edge_fade,
+                                              (uint64_t)(rnd->uniform(&r) * 9007199254740992.0));
+    } else if ((s->establish = malloc(n * sizeof *s->establish))) {
+        for (size_t p = 0; p < n; p++) s->establish[p] = s->growable[p];
+    }
+    if (!s->establish) return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for the growth area's edge");
+    /* the area's patches take the seedlings from anywhere as before; the band's get their own
+     * share of that seed rain (eco_reproduce.c) */
+    s->band_list = malloc(n * sizeof *s->band_list);
+    if (!s->band_list) return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for the growth area's edge");
+    s->n_band = 0;
+    for (size_t p = 0; p < n; p++) {
+        s->growable[p] = !t->water[p] && s->establish[p] > 0;
+        if (!s->growable[p]) continue;
+        if (s->establish[p] >= 1.0f) s->growable_list[s->n_growable++] = (uint32_t)p;
+        else s->band_list[s->n_band++] = (uint32_t)p;
+    }
     if (!s->n_growable)
         return plugin_fail_param(err, params,
                                  c->area[0] >= 0 ? "growth_area"
@@ -143,6 +165,7 @@ static uint64_t sim_fingerprint(const eco_sim *s)
     h = fnv1a(h, t->cz, n * sizeof *t->cz);
     for (int f = 0; f < ECO_N_FACTORS; f++) h = fnv1a(h, t->factor[f], n * sizeof(float));
     h = fnv1a(h, s->growable, n);
+    h = fnv1a(h, s->establish, n * sizeof *s->establish);
     h = fnv1a(h, &s->n_species, sizeof s->n_species);
     for (uint32_t i = 0; i < s->n_species; i++) {
         h = fnv1a(h, s->names[i], strlen(s->names[i]) + 1);
@@ -207,7 +230,7 @@ int eco_sim_new(const eco_random *rnd, const sylva_params *params, const eco_con
         rc = plugin_fail_param(err, params, "patches", "%s", msg);
         goto fail;
     }
-    if ((rc = growth_area(s, params, err))) goto fail;
+    if ((rc = growth_area(s, rnd, params, err))) goto fail;
     s->config.mask = NULL; /* borrowed: not kept past this call */
     s->n_opt = eco_n_opt(s->max_r_s, s->terrain.k);
 

@@ -3,9 +3,9 @@
  * placement by Algorithm 7), grow (4.32) with power (4.18) and dominance (Algorithm 8), remove
  * the dead (age 4.26, domination p_m, unfavourable conditions).
  *
- * Randomness: fourteen streams per species from the caller's eco_random (the plugin file hands
+ * Randomness: fifteen streams per species from the caller's eco_random (the plugin file hands
  * in the host's streams), one per purpose — the thirteen of 004 Fig. C.16 and sylva's
- * rotation — keyed by purpose and (stream seed, species). Every draw
+ * rotation and edge-band establishment — keyed by purpose and (stream seed, species). Every draw
  * happens on the calling thread in a fixed order; the dominance search, the only part run on
  * worker threads, draws nothing. The same seeds therefore give the same forest for any thread
  * count.
@@ -42,6 +42,7 @@ typedef enum eco_stream {
     ECO_RNG_DEATH_SLOPE,      /* ... slope */
     ECO_RNG_DEATH_AGE,        /* the death age t_max (4.26) */
     ECO_RNG_ROTATION,         /* sylva's: the plant's turn about the vertical */
+    ECO_RNG_ESTABLISH,        /* sylva's: whether a seedling in the edge band takes root */
     ECO_N_STREAMS
 } eco_stream;
 
@@ -84,6 +85,8 @@ typedef struct eco_config {
     uint32_t years;             /* years the scene asks for */
     int64_t area[4];            /* growth rectangle i0, k0, i1, k1 (inclusive); area[0] < 0: none */
     const double *mask;         /* growth mask rows (row 0 south), or NULL; borrowed */
+    double edge_fade;           /* metres: the band round the area or mask where seedlings take
+                                   root less and less often (eco_edge.c); 0: a hard edge */
     uint32_t mask_rows, mask_cols;
     uint64_t stream_seeds[ECO_N_SEEDED_STREAMS];
     uint64_t max_plants;        /* limit on living plants */
@@ -106,8 +109,13 @@ typedef struct eco_sim {
     sylva_rng *rng;             /* owned: ECO_N_STREAMS per species */
     uint32_t year;
     uint8_t *growable;          /* owned: 1 for a patch where plants may grow */
-    uint32_t *growable_list;    /* owned: those patches, in index order */
+    float *establish;           /* owned: chance a seedling takes root on each patch (1 in the
+                                   area, falling across the edge band; eco_edge.c) */
+    uint32_t *growable_list;    /* owned: those of the area itself (not the edge band), in index
+                                   order: where a seedling from anywhere lands */
     uint32_t n_growable;
+    uint32_t *band_list;        /* owned: the edge band's patches (0 < establish < 1, no water) */
+    uint32_t n_band;
     double max_r_s;             /* max over species of R_s */
     uint32_t n_opt;             /* (4.27) */
     uint64_t fingerprint;       /* of the terrain factors, growth area and species (save/load) */
@@ -138,6 +146,13 @@ int eco_find_dominance(eco_sim *s, plugin_err *err);                     /* Algo
 void eco_remove_dead(eco_sim *s, const eco_random *rnd);              /* 4.26, p_m, env */
 
 uint32_t eco_sim_count(const eco_sim *s); /* living plants */
+
+/* The edge band (eco_edge.c): the chance that a seedling takes root at distance d metres
+ * outside the area, given the band's width fade and the noise n in [0, 1] there (1 for d <= 0),
+ * and that chance for every patch of t, `inside` marking the area's patches; a new array (the
+ * caller frees it), or NULL when out of memory. */
+double eco_edge_chance(double d, double fade, double noise);
+float *eco_edge_establishment(const eco_terrain *t, const uint8_t *inside, double fade, uint64_t seed);
 
 /* Save and load the whole state (eco_state_io.c). save writes the file whole or not at all:
  * through a new temporary file beside it (never an existing name, never through a symbolic

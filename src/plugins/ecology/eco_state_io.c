@@ -1,7 +1,7 @@
 /* eco_state_io.c — saving a run to a file and loading it back to continue.
  *
  * The file holds what changes during a run — the year, and per species the seeds, the carried
- * fraction of a seedling, the fourteen random streams (key and counter) and every living plant
+ * fraction of a seedling, the fifteen random streams (key and counter) and every living plant
  * with all its fields — plus a fingerprint of what does not (the terrain factors, the growth
  * area, the species' names and parameters), so that a state is only ever continued on the run
  * that saved it. Layout: "SYLVAECO", format version, a byte-order mark, the fingerprint, then
@@ -22,7 +22,7 @@
 #include "eco_sim.h"
 
 #define ECO_STATE_MAGIC "SYLVAECO"
-#define ECO_STATE_VERSION 1u
+#define ECO_STATE_VERSION 2u /* 2: the edge band's stream */
 #define ECO_BYTE_ORDER 0x01020304u
 
 typedef struct state_file {

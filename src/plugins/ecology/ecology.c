@@ -123,6 +123,7 @@ static int eco_create(const sylva_host_api *api, sylva_host *host, const sylva_p
     c->years = (uint32_t)sylva_param_int(params, "years");
     c->max_plants = (uint64_t)sylva_param_int(params, "max_plants");
     c->min_height = sylva_param_real(params, "min_height");
+    c->edge_fade = sylva_param_real(params, "edge_fade");
     int rc = SYLVA_OK;
     if (f->sun_samples % 2 == 0) {
         rc = api->param_error(host, params, "sun_samples", "sun_samples = %u is even; give an odd number so that "

@@ -309,6 +309,61 @@ TEST(growth_area_keeps_plants_inside)
     fixture_host_release(&f);
 }
 
+/* Plants per patch in columns [i0, i1] of s's patch grid (i west to east). */
+static double column_density(const eco_sim *s, uint32_t i0, uint32_t i1)
+{
+    uint32_t n = 0;
+    for (uint32_t q = 0; q < s->pop[0].n; q++) {
+        uint32_t i = s->pop[0].plants[q].patch % s->terrain.ni;
+        n += i >= i0 && i <= i1;
+    }
+    return (double)n / ((i1 - i0 + 1) * (double)s->terrain.nk);
+}
+
+/* The growth area's edge fades: across a 30 m band east of a growth area the plants thin out
+ * step by step instead of stopping at the rectangle's side, and none grow past the band. */
+TEST(growth_area_edge_fades)
+{
+    fixture_host f;
+    fixture_host_init(&f, 2);
+    sylva_heightfield hf = fixture_heightfield(201, 161, 0, 0, 1, flat); /* 200 x 160 m */
+    eco_config cfg = fixture_config(100);                                 /* 2 m patches, 100 x 80 */
+    cfg.area[0] = 0, cfg.area[1] = 0, cfg.area[2] = 49, cfg.area[3] = 79; /* x < 100 m */
+    cfg.edge_fade = 30;
+    /* quick to seed, so that the stand fills the area within the run */
+    const char *keys[] = {"t_m", "t_a", "t_f", "r_s", "g_s", NULL};
+    const double vals[] = {3, 30, 300, 4, 4};
+    fixture_block *b = fixture_species_block(keys, vals);
+    const char *names[] = {"tree"};
+    eco_sim *s = NULL;
+    CHECK_INT(fixture_sim(&f, &hf, &cfg, 1, names, &b, &s), 0);
+    if (!s) goto done;
+    /* the chance itself: 1 inside, falling with distance, 0 past 1.5 bands whatever the noise */
+    CHECK_NEAR(eco_edge_chance(0, 30, 0.9), 1, 0);
+    CHECK(eco_edge_chance(10, 30, 0.5) > eco_edge_chance(20, 30, 0.5));
+    CHECK_NEAR(eco_edge_chance(52.51, 30, 0.0), 0, 0);
+    run_years(&f, s, 40);
+    double inside = column_density(s, 30, 49), near = column_density(s, 51, 56), far = column_density(s, 57, 63),
+           beyond = column_density(s, 77, 99);
+    fprintf(stderr, "plants per patch: inside %.3f, 4-14 m out %.3f, 16-28 m out %.3f, beyond 54 m %.3f\n", inside,
+            near, far, beyond);
+    CHECK(inside > 0.2);
+    CHECK(near > 0.2 * inside && near < 1.5 * inside);
+    CHECK(far > 0.02 * inside && far < near);
+    CHECK_NEAR(beyond, 0, 0);
+    /* no step: between neighbouring 4-column windows (8 m) the density never drops by half of
+     * inside's (a hard edge drops by all of it) */
+    for (uint32_t i = 40; i + 7 < 80; i++) {
+        double a = column_density(s, i, i + 3), e = column_density(s, i + 4, i + 7);
+        if (a - e > 0.5 * inside) fprintf(stderr, "a step at column %u: %.3f to %.3f\n", i + 4, a, e);
+        CHECK(a - e <= 0.5 * inside);
+    }
+    eco_sim_free(s);
+done:
+    free(b), free(hf.z);
+    fixture_host_release(&f);
+}
+
 TEST(never_in_water)
 {
     fixture_host f;
@@ -368,4 +423,4 @@ TEST_LIST(TEST_CASE(dominance_grid_equals_all_pairs), TEST_CASE(single_species_s
           TEST_CASE(species_outside_its_optimum_dies_out), TEST_CASE(same_seeds_same_plants_any_threads),
           TEST_CASE(stream_seeds_change_only_their_purpose), TEST_CASE(save_load_continue_equals_uninterrupted),
           TEST_CASE(save_never_writes_through_a_planted_link),
-          TEST_CASE(growth_area_keeps_plants_inside), TEST_CASE(never_in_water), TEST_CASE(bad_growth_area_and_species))
+          TEST_CASE(growth_area_keeps_plants_inside), TEST_CASE(growth_area_edge_fades), TEST_CASE(never_in_water), TEST_CASE(bad_growth_area_and_species))

@@ -1,0 +1,192 @@
+/* ground_cover_place.c — where the ground cover's tufts stand (see ground_cover_place.h). */
+#include "geometry/ground_cover_place.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "geometry/camera_frame.h"
+#include "geometry/ground_cover_models.h"
+#include "scene/heightfield.h"
+#include "scene/scene_build.h"
+#include "util/rng.h"
+
+#define CELLS_PER_BLOCK 32     /* candidates are visited in blocks this many cells a side */
+#define TUFT_REACH 0.6         /* metres: a tuft's size round its base, for the frustum test */
+#define FADE_START 0.4         /* the tufts thin out from this fraction of the radius */
+#define CANDIDATES_PER_TUFT 16 /* the count looks at most at about this many candidates per tuft */
+
+double ground_cover_density(const float w[GROUND_KINDS], const double n[3])
+{
+    double share = w[GROUND_MEADOW] + 0.25 * w[GROUND_FOREST_FLOOR] + 0.1 * w[GROUND_SOIL] + 0.05 * w[GROUND_SCREE];
+    /* full cover up to 35 degrees of slope, none from 55 */
+    const double full = cos(35.0 * M_PI / 180.0), none = cos(55.0 * M_PI / 180.0);
+    double slope = (n[2] - none) / (full - none);
+    slope = slope < 0 ? 0 : slope > 1 ? 1 : slope;
+    share *= slope;
+    return share < 0 ? 0 : share > 1 ? 1 : share;
+}
+
+/* The view the tufts are placed for. */
+typedef struct cover_view {
+    double eye[3], forward[3], right[3], up[3];
+    double tan_h, tan_v;       /* half the field of view across and up the image */
+    int cylindrical;           /* a panorama: every bearing is in view */
+} cover_view;
+
+static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/* 1 when a sphere of radius reach round p may show in the view. */
+static int in_view(const cover_view *v, const double p[3], double reach)
+{
+    double q[3] = {p[0] - v->eye[0], p[1] - v->eye[1], p[2] - v->eye[2]};
+    double f = dot3(q, v->forward), x = dot3(q, v->right), y = dot3(q, v->up);
+    if (v->cylindrical) return fabs(y) <= v->tan_v * sqrt(f * f + x * x) + reach * sqrt(1 + v->tan_v * v->tan_v);
+    if (f < -reach) return 0;
+    return fabs(x) <= v->tan_h * f + reach * sqrt(1 + v->tan_h * v->tan_h) &&
+           fabs(y) <= v->tan_v * f + reach * sqrt(1 + v->tan_v * v->tan_v);
+}
+
+/* What one pass over the candidates does with those it keeps. */
+typedef struct cover_pass {
+    scene *s;
+    const ground_cover_map *ground;
+    const cover_view *view;
+    const ground_cover_models *models;
+    uint64_t seed;
+    double cell;               /* metres */
+    double radius;             /* metres */
+    int place;                 /* 0: count into histogram (no fade); 1: add the instances */
+    uint64_t *histogram;       /* count pass: tufts per metre of distance, radius + 1 long */
+    uint32_t max_instances;
+    uint32_t placed;
+} cover_pass;
+
+/* Candidate (ix, iy): its jittered point, whether it is kept, and what stands there. */
+static int visit_cell(cover_pass *c, int64_t ix, int64_t iy, err_buf *err)
+{
+    sylva_rng r;
+    rng_stream(&r, c->seed, "ground cover", ((uint64_t)(uint32_t)ix << 32) | (uint32_t)iy);
+    double p[3] = {((double)ix + rng_next_double(&r)) * c->cell, ((double)iy + rng_next_double(&r)) * c->cell, 0};
+    double keep = rng_next_double(&r), pick = rng_next_double(&r), turn = rng_next_double(&r),
+           size = rng_next_double(&r);
+    double dx = p[0] - c->view->eye[0], dy = p[1] - c->view->eye[1];
+    if (dx * dx + dy * dy > c->radius * c->radius) return 0;
+    if (heightfield_surface_height(c->s->terrain, p[0], p[1], &p[2])) return 0;
+    double dz = p[2] - c->view->eye[2], d = sqrt(dx * dx + dy * dy + dz * dz);
+    if (d > c->radius) return 0;
+    double mid[3] = {p[0], p[1], p[2] + 0.2};
+    if (!in_view(c->view, mid, TUFT_REACH)) return 0;
+    float w[GROUND_KINDS];
+    double n[3];
+    ground_cover_weights(c->ground, p[0], p[1], w);
+    if (heightfield_normal(c->s->terrain, p[0], p[1], n)) return 0;
+    double share = ground_cover_density(w, n);
+    if (c->place) {
+        double t = (d / c->radius - FADE_START) / (1.0 - FADE_START);
+        if (t > 0) share *= t >= 1 ? 0 : 1.0 - t * t * (3.0 - 2.0 * t);
+    }
+    if (!(keep < share)) return 0;
+    if (!c->place) {
+        c->histogram[(size_t)d]++;
+        return 0;
+    }
+    if (c->placed >= c->max_instances) return 0; /* kept by the radius fit; never reached */
+    /* a herb for one tuft in ten on meadow, for one in two on the forest floor */
+    double herb_share = 0.1 + 0.4 * w[GROUND_FOREST_FLOOR];
+    uint32_t proto = pick < herb_share
+                         ? c->models->herb_first + (uint32_t)(pick / herb_share * GROUND_COVER_HERB_VARIANTS)
+                         : c->models->grass_first +
+                               (uint32_t)((pick - herb_share) / (1.0 - herb_share) * GROUND_COVER_GRASS_VARIANTS);
+    p[2] -= 0.01; /* the base a centimetre into the ground, so that no tuft floats over a facet */
+    xform3x4 xf = plant_transform(p, 360.0 * turn, 0.7 + 0.6 * size);
+    if (scene_add_instance(c->s, proto, &xf, err) < 0) return -1;
+    c->placed++;
+    return 0;
+}
+
+/* Every candidate within c->radius of the eye whose block may show in the view. */
+static int visit_all(cover_pass *c, err_buf *err)
+{
+    const double block = CELLS_PER_BLOCK * c->cell, half_diagonal = block * M_SQRT1_2;
+    const double *eye = c->view->eye;
+    int64_t b0x = (int64_t)floor((eye[0] - c->radius) / block), b1x = (int64_t)floor((eye[0] + c->radius) / block);
+    int64_t b0y = (int64_t)floor((eye[1] - c->radius) / block), b1y = (int64_t)floor((eye[1] + c->radius) / block);
+    for (int64_t by = b0y; by <= b1y; by++)
+        for (int64_t bx = b0x; bx <= b1x; bx++) {
+            double centre[3] = {(bx + 0.5) * block, (by + 0.5) * block, 0};
+            double dx = fmax(fabs(centre[0] - eye[0]) - 0.5 * block, 0), dy = fmax(fabs(centre[1] - eye[1]) - 0.5 * block, 0);
+            if (dx * dx + dy * dy > c->radius * c->radius) continue;
+            centre[2] = heightfield_height_clamped(c->s->terrain, centre[0], centre[1]);
+            /* the ground within the block may climb or fall by its half-diagonal (45 degrees) */
+            if (!in_view(c->view, centre, 2.0 * half_diagonal + TUFT_REACH + 1.0)) continue;
+            for (int64_t iy = by * CELLS_PER_BLOCK; iy < (by + 1) * CELLS_PER_BLOCK; iy++)
+                for (int64_t ix = bx * CELLS_PER_BLOCK; ix < (bx + 1) * CELLS_PER_BLOCK; ix++)
+                    if (visit_cell(c, ix, iy, err)) return -1;
+        }
+    return 0;
+}
+
+int ground_cover_add(scene *s, const ground_cover_settings *gc, uint32_t width, uint32_t height,
+                     ground_cover_report *rep, err_buf *err)
+{
+    ground_cover_report local = {0};
+    if (!rep) rep = &local;
+    *rep = (ground_cover_report){0};
+    if (!gc->enabled || !(gc->density > 0) || !gc->max_instances || !s->terrain || !width || !height) return 0;
+
+    cover_view v = {.cylindrical = s->camera.cylindrical};
+    for (int k = 0; k < 3; k++) v.eye[k] = s->camera.position[k];
+    camera_frame(&s->camera, v.forward, v.right, v.up);
+    double fov = s->camera.fov_deg * M_PI / 180.0;
+    double focal_px;
+    if (v.cylindrical) {
+        focal_px = width / fov;                  /* pixels per radian across */
+        v.tan_v = 0.5 * height / focal_px;       /* the image's height on the unit cylinder */
+    } else {
+        v.tan_h = tan(0.5 * fov);
+        v.tan_v = v.tan_h * height / width;
+        focal_px = 0.5 * width / v.tan_h;
+    }
+    rep->pixel_radius = focal_px * GROUND_COVER_BLADE_LENGTH;
+    double radius = gc->radius > 0 ? gc->radius : rep->pixel_radius;
+    /* The count visits every candidate of the sector in view, 0.5 fov r^2 density of them: keep
+     * that within CANDIDATES_PER_TUFT times the cap, so that no radius makes the count slow. */
+    double sector = v.cylindrical ? M_PI : 0.5 * fmax(fov, 0.35);
+    double reach = sqrt(CANDIDATES_PER_TUFT * (double)gc->max_instances / (sector * gc->density));
+    if (radius > reach) radius = reach, rep->capped = 1;
+
+    ground_cover_models models;
+    err->msg[0] = '\0';
+    ground_cover_map *ground = ground_cover_map_new(s, err); /* owned here */
+    if (!ground) return err->msg[0] ? -1 : 0; /* a terrain of scene materials: no cover */
+    uint32_t first_instance = s->n_instances;
+    cover_pass c = {.s = s, .ground = ground, .view = &v, .models = &models, .seed = s->image.seed,
+                    .cell = 1.0 / sqrt(gc->density), .radius = radius, .max_instances = gc->max_instances};
+    int rc = -1;
+    /* count what the radius holds, metre by metre, and shrink it to the cap */
+    c.histogram = calloc((size_t)radius + 2, sizeof *c.histogram);
+    if (!c.histogram) {
+        err_nomem(err, "out of memory for the ground cover");
+        goto done;
+    }
+    if (visit_all(&c, err)) goto done;
+    uint64_t total = 0;
+    size_t fits = 0;
+    while (fits <= (size_t)radius && total + c.histogram[fits] <= gc->max_instances) total += c.histogram[fits++];
+    if (fits <= (size_t)radius) c.radius = (double)fits, rep->capped = 1;
+    rep->radius = c.radius;
+    if (!total) {
+        rc = 0;
+        goto done;
+    }
+    /* the prototypes, then the tufts: each one a candidate the count kept */
+    if (ground_cover_models_add(s, s->image.seed, &models, err)) goto done;
+    c.place = 1;
+    if (visit_all(&c, err)) goto done;
+    rep->instances = s->n_instances - first_instance;
+    rc = 0;
+done:
+    free(c.histogram);
+    ground_cover_map_free(ground);
+    return rc;
+}

@@ -160,6 +160,14 @@ static int32_t leaf_material(scene *s, const char *name, float r, float g, float
     return scene_add_material(s, &d, err);
 }
 
+/* A species of ground cover (no canopy, no crown proxy): its index, or -1 with err set. */
+static int32_t cover_species(scene *s, const char *name, err_buf *err)
+{
+    int32_t sp = scene_add_species(s, name, err);
+    if (sp >= 0) s->species[sp].ground_cover = 1;
+    return sp;
+}
+
 int ground_cover_models_add(scene *s, uint64_t seed, ground_cover_models *out, err_buf *err)
 {
     /* Linear reflectance and transmittance of fresh and cured grass blades, herb leaves and the
@@ -176,9 +184,8 @@ int ground_cover_models_add(scene *s, uint64_t seed, ground_cover_models *out, e
         uint32_t blades;
         double len_lo, len_hi, dry_share;
     } grass[GROUND_COVER_GRASS_VARIANTS] = {{28, 0.08, 0.22, 0.0}, {40, 0.18, 0.45, 0.05}, {34, 0.12, 0.35, 0.35}};
-    int32_t sp = scene_add_species(s, "ground cover grass", err);
+    int32_t sp = cover_species(s, "ground cover grass", err);
     if (sp < 0) return -1;
-    s->species[sp].ground_cover = 1;
     out->grass_first = s->n_prototypes;
     for (uint32_t v = 0; v < GROUND_COVER_GRASS_VARIANTS; v++) {
         sylva_rng r;
@@ -192,8 +199,7 @@ int ground_cover_models_add(scene *s, uint64_t seed, ground_cover_models *out, e
         if (scene_add_prototype(s, (uint32_t)sp, v, 1.0, grass[v].len_hi, m, err) < 0) return -1;
         s->species[sp].n_variants++;
     }
-    if ((sp = scene_add_species(s, "ground cover herb", err)) < 0) return -1;
-    s->species[sp].ground_cover = 1;
+    if ((sp = cover_species(s, "ground cover herb", err)) < 0) return -1;
     out->herb_first = s->n_prototypes;
     for (uint32_t v = 0; v < GROUND_COVER_HERB_VARIANTS; v++) {
         sylva_rng r;

@@ -88,7 +88,6 @@ static void ctx_init(render_ctx *ctx, render_setup *rs, const render_options *o,
                         .verify = o->verify, .recorder = o->recorder, .ray_mask = ~leave_out & ~ACCEL_MASK_PROXY};
     /* crown proxies stand in for their plants before camera rays alone, never in verification */
     ctx->camera_mask = o->verify ? ctx->ray_mask : ~leave_out & ~ACCEL_MASK_FAR_PLANT;
-    rs->acc.bark_relief = !o->verify; /* POV-Ray, which the verification matches, has none */
     camera_init(&ctx->camera, &s->camera, w, h);
     curved_rays_init(&ctx->curved, o->flat_earth ? NULL : &s->earth, &ctx->camera, rs->acc.bounds_lo,
                      rs->acc.bounds_hi);
@@ -125,6 +124,7 @@ render_setup *render_setup_new(const scene *s, const render_options *opt, err_bu
     camera_init(&cam, &s->camera, w, h);
     rs->acc.pixel_angle = (float)camera_smallest_pixel_angle(&cam);
     rs->acc.flat_ground = opt->verify;
+    rs->acc.bark_relief = !opt->verify; /* POV-Ray, which the verification matches, has none */
     if (lights_init(&rs->lt, &s->sun, &s->sky, s->site.origin[2], s->camera.position[2], err) ||
         setup_proxies(rs, opt, w, h, err)) {
         lights_free(&rs->lt);

@@ -1,8 +1,8 @@
 /* test_season.c — seasons and phenology (phenology.h, scene_season.h): season names and dates as
  * days of the year, bad ones refused at their place in the file; one scene built in summer and
- * in winter holds the same instances (prototype, transform, development) in the same order; in
- * winter no ray meets a deciduous species' leaves, while its wood, an evergreen's leaves and every
- * plant's place stay. */
+ * in winter (and in autumn) holds the same instances (prototype, transform, development) in the
+ * same order; in winter no ray meets a deciduous species' leaves, while its wood, an evergreen's
+ * leaves and every plant's place stay; in autumn only the deciduous leaves' materials turn. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -115,6 +115,21 @@ TEST(deciduous_in_leaf_between_its_days)
     CHECK_INT(phenology_in_leaf(&south, 200), 0);
 }
 
+TEST(leaves_turn_from_colouring_to_leaf_fall)
+{
+    phenology oak = {HABIT_DECIDUOUS, 110, 300, 270, {0.3, 0.1, 0}}, pine = {HABIT_EVERGREEN, 110, 300, 270, {0}};
+    CHECK_NEAR(phenology_autumn_share(&oak, 200), 0, 0);
+    CHECK_NEAR(phenology_autumn_share(&oak, 270), 0, 0);
+    CHECK_NEAR(phenology_autumn_share(&oak, 285), 0.5, 1e-12);
+    CHECK_NEAR(phenology_autumn_share(&oak, 299), 29.0 / 30, 1e-12);
+    CHECK_NEAR(phenology_autumn_share(&oak, 300), 0, 0); /* leaf-off */
+    CHECK_NEAR(phenology_autumn_share(&oak, 50), 0, 0);
+    CHECK_NEAR(phenology_autumn_share(&pine, 285), 0, 0);
+    phenology south = {HABIT_DECIDUOUS, 280, 120, 60, {0.3, 0.1, 0}}; /* turning from March to April */
+    CHECK_NEAR(phenology_autumn_share(&south, 90), 0.5, 1e-12);
+    CHECK_NEAR(phenology_autumn_share(&south, 10), 0, 0);
+}
+
 TEST(summer_and_winter_hold_the_same_instances)
 {
     scene *summer = build_season(""), *winter = build_season("season: winter\n"),
@@ -166,6 +181,37 @@ TEST(winter_rays_meet_no_deciduous_leaf)
     scene_free(summer), scene_free(winter);
 }
 
+TEST(autumn_turns_only_the_deciduous_leaves)
+{
+    scene *summer = build_season(""), *autumn = build_season("season: 2026-10-12\n"); /* day 285 */
+    CHECK(summer && autumn);
+    if (summer && autumn) {
+        CHECK_INT(autumn->n_instances, summer->n_instances);
+        for (uint32_t i = 0; i < summer->n_instances && i < autumn->n_instances; i++) {
+            CHECK_INT(autumn->instances[i].prototype, summer->instances[i].prototype);
+            CHECK(!memcmp(&autumn->instances[i].xf, &summer->instances[i].xf, sizeof(xform3x4)));
+        }
+        /* the oak (colouring 270, leaf_fall 300: half turned) toward the default autumn colour
+         * (0.3, 0.14, 0.03) from foliage (0.1, 0.3, 0.05), its transmittance in proportion */
+        const mesh *oak = autumn->prototypes[0].mesh, *pine = autumn->prototypes[1].mesh;
+        CHECK_INT(oak->nt, 2);
+        const material *turned = &autumn->materials[scene_triangle_material(autumn, oak, 0)];
+        const material *green = &autumn->materials[scene_triangle_material(autumn, pine, 0)];
+        CHECK_INT(turned->bsdf, SYLVA_BSDF_LEAF);
+        CHECK_STR_CONTAINS(turned->name, "oak, autumn");
+        CHECK_NEAR(turned->albedo.x, 0.2, 1e-6);
+        CHECK_NEAR(turned->albedo.y, 0.22, 1e-6);
+        CHECK_NEAR(turned->albedo.z, 0.04, 1e-6);
+        CHECK_NEAR(turned->transmittance.x, 0.05 * 2.0, 1e-6);
+        CHECK_NEAR(turned->transmittance.y, 0.2 * 0.22 / 0.3, 1e-6);
+        /* the evergreen keeps the shared material, untouched */
+        CHECK_STR_CONTAINS(green->name, "foliage");
+        CHECK_NEAR(green->albedo.y, 0.3, 1e-6);
+        CHECK_INT(autumn->n_materials, summer->n_materials + 1);
+    }
+    scene_free(summer), scene_free(autumn);
+}
+
 /* A bad season or phenology is refused at its place: file:line:column and what would be valid. */
 TEST(bad_season_is_located)
 {
@@ -190,7 +236,10 @@ TEST(bad_phenology_is_located)
         {"habit: deciduous, leaf_out: 110", "habit: leafy, leaf_out: 110", ":7:", "habit"},
         {"leaf_out: 110", "leaf_out: 400", ":7:", "leaf_out"},
         {"leaf_fall: 300", "leaf_fall: 110", ":7:", "leaf_fall (day 110) equals leaf_out"},
-        {"{habit: evergreen}", "{habit: evergreen, leaf_fall: 200}", ":8:", "leaf days apply to habit: deciduous"},
+        {"{habit: evergreen}", "{habit: evergreen, leaf_fall: 200}", ":8:", "leaf days and autumn_color apply"},
+        {"{habit: evergreen}", "{habit: evergreen, autumn_color: [1, 0, 0]}", ":8:", "leaf days and autumn_color apply"},
+        {"leaf_fall: 300", "leaf_fall: 300, colouring: 310", ":7:", "colouring (day 310) must fall while the species is in leaf"},
+        {"leaf_fall: 300", "leaf_fall: 300, autumn_color: [1.5, 0, 0]", ":7:", "autumn_color"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         char text[4096], name[64];
@@ -214,5 +263,6 @@ TEST(bad_phenology_is_located)
 }
 
 TEST_LIST(TEST_CASE(season_names_and_dates), TEST_CASE(deciduous_in_leaf_between_its_days),
+          TEST_CASE(leaves_turn_from_colouring_to_leaf_fall), TEST_CASE(autumn_turns_only_the_deciduous_leaves),
           TEST_CASE(summer_and_winter_hold_the_same_instances), TEST_CASE(winter_rays_meet_no_deciduous_leaf),
           TEST_CASE(bad_season_is_located), TEST_CASE(bad_phenology_is_located))

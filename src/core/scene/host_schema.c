@@ -418,6 +418,7 @@ const host_schema host_schema_terrain = {
     COUNT(terrain_params)};
 
 /* --- species -------------------------------------------------------------------------------- */
+static const double autumn_brown[3] = {0.3, 0.14, 0.03};
 static const char *const leaf_habits[] = {"evergreen", "deciduous", NULL}; /* leaf_habit order */
 static const sylva_param_spec phenology_params[] = {
     {.name = "habit", .type = SYLVA_P_ENUM, .def_str = "evergreen", .choices = leaf_habits,
@@ -426,6 +427,10 @@ static const sylva_param_spec phenology_params[] = {
      .help = "Day of the year a deciduous species comes into leaf."},
     {.name = "leaf_fall", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 305, .min = 1, .max = 366,
      .help = "Day of the year a deciduous species has shed its leaves (leaf-off from this day)."},
+    {.name = "colouring", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 270, .min = 1, .max = 366,
+     .help = "Day of the year a deciduous species' leaves start to turn toward autumn_color."},
+    {.name = "autumn_color", .type = SYLVA_P_VEC3, .flags = MIN | MAX, .def_list = autumn_brown, .def_len = 3, .min = 0,
+     .max = 1, .help = "Leaf albedo (linear RGB) a deciduous species reaches at leaf_fall."},
 };
 const host_schema host_schema_phenology = {
     "phenology", "When a species carries its leaves (docs/seasons.md).", phenology_params,

@@ -38,3 +38,11 @@ int phenology_in_leaf(const phenology *p, uint32_t day)
     if (p->leaf_out <= p->leaf_fall) return day >= p->leaf_out && day < p->leaf_fall;
     return day >= p->leaf_out || day < p->leaf_fall; /* the southern hemisphere: in leaf over new year */
 }
+
+double phenology_autumn_share(const phenology *p, uint32_t day)
+{
+    if (p->habit == HABIT_EVERGREEN || !phenology_in_leaf(p, day)) return 0;
+    uint32_t since = (day + 366 - p->colouring) % 366, span = (p->leaf_fall + 366 - p->colouring) % 366;
+    if (!span || since >= span) return 0; /* a day in leaf before colouring */
+    return (double)since / span;
+}

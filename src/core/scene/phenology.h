@@ -27,6 +27,8 @@ typedef struct phenology {
     leaf_habit habit;
     uint32_t leaf_out;        /* day of the year the leaves come out (deciduous) */
     uint32_t leaf_fall;       /* day of the year the last leaves have fallen (deciduous) */
+    uint32_t colouring;       /* day of the year the leaves start to turn (deciduous; in leaf then) */
+    double autumn_color[3];   /* linear RGB the leaves' albedo reaches at leaf_fall */
 } phenology;
 
 /* The day of the year of text: spring, summer, autumn, winter, or a date YYYY-MM-DD (the
@@ -37,5 +39,9 @@ int season_day_parse(const char *text, uint32_t *day, err_buf *err);
 /* 1 when a plant of phenology p carries its leaves on day (evergreens always do; a deciduous
  * plant from leaf_out up to the day before leaf_fall). */
 int phenology_in_leaf(const phenology *p, uint32_t day);
+
+/* How far the leaves have turned on day: 0 until colouring (and for evergreens and leafless
+ * days), rising linearly to 1 at leaf_fall (days counted round the year's end). */
+double phenology_autumn_share(const phenology *p, uint32_t day);
 
 #endif

@@ -270,7 +270,7 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
         build_terrain(s, sf, plugins, &out, err) || scene_ground_camera(s, sf, err) ||
         build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) ||
         build_ecology(s, sf, plugins, opt, &out, err) || scene_build_objects(s, sf, err) ||
-        scene_apply_season(s, sf)) {
+        scene_apply_season(s, sf, err)) {
         scene_free(s);
         return NULL;
     }

@@ -122,7 +122,7 @@ static const loaded_plugin *registry_lookup(const plugin_registry *reg, const ch
  */
 
 const char *const plugin_reserved_keys[] = {"plugin", "material", "variants", "shape",   "grid",
-                                            "origin", "spacing",  "include",  NULL};
+                                            "origin", "spacing",  "include",  "phenology", NULL};
 
 /* The host key `name` would take in a plugin block, or NULL when it is free. */
 static const char *reserved_key(const char *name)

@@ -18,7 +18,7 @@
 
 const char *const host_sections[] = {"image",   "site",    "camera",  "sun",     "sky",     "materials",
                                      "terrain", "species", "plants",  "ecology", "groups",  "objects",
-                                     "earth",   "viewpoints", "ztv",     "photo",   "ground_cover", NULL};
+                                     "earth",   "viewpoints", "ztv",     "photo",   "ground_cover", "season", NULL};
 
 const char *const host_shape_names[] = {"mesh", "box", "sphere", "quad", "disk", NULL};
 const char *const host_sky_models[] = {"none", "constant", "preetham", "physical", NULL};
@@ -418,6 +418,24 @@ const host_schema host_schema_terrain = {
     COUNT(terrain_params)};
 
 /* --- species -------------------------------------------------------------------------------- */
+static const double autumn_brown[3] = {0.3, 0.14, 0.03};
+static const char *const leaf_habits[] = {"evergreen", "deciduous", NULL}; /* leaf_habit order */
+static const sylva_param_spec phenology_params[] = {
+    {.name = "habit", .type = SYLVA_P_ENUM, .def_str = "evergreen", .choices = leaf_habits,
+     .help = "evergreen (in leaf all year) or deciduous (leaf-off outside leaf_out to leaf_fall)."},
+    {.name = "leaf_out", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 120, .min = 1, .max = 366,
+     .help = "Day of the year a deciduous species comes into leaf."},
+    {.name = "leaf_fall", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 305, .min = 1, .max = 366,
+     .help = "Day of the year a deciduous species has shed its leaves (leaf-off from this day)."},
+    {.name = "colouring", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 270, .min = 1, .max = 366,
+     .help = "Day of the year a deciduous species' leaves start to turn toward autumn_color."},
+    {.name = "autumn_color", .type = SYLVA_P_VEC3, .flags = MIN | MAX, .def_list = autumn_brown, .def_len = 3, .min = 0,
+     .max = 1, .help = "Leaf albedo (linear RGB) a deciduous species reaches at leaf_fall."},
+};
+const host_schema host_schema_phenology = {
+    "phenology", "When a species carries its leaves (docs/seasons.md).", phenology_params,
+    COUNT(phenology_params)};
+
 static const sylva_param_spec species_params[] = {
     {.name = "plugin", .type = SYLVA_P_STRING,
      .help = "Tree plugin that builds the model; its parameters sit beside this key."},
@@ -427,6 +445,8 @@ static const sylva_param_spec species_params[] = {
      .help = "A built-in prototype instead of a plugin (a species gives plugin or shape)."},
     {.name = "material", .type = SYLVA_P_STRING,
      .help = "Material of a built-in shape (a name from materials:)."},
+    {.name = "phenology", .type = SYLVA_P_GROUP, .group = phenology_params, .n_group = COUNT(phenology_params),
+     .help = "Leaf habit and leaf days of the species (evergreen when not given)."},
 };
 const host_schema host_schema_species = {
     "species entry", "One kind of plant: a tree plugin's block or a built-in shape.",
@@ -623,7 +643,7 @@ const host_schema *host_schema_at(uint32_t i)
         &host_schema_earth,        &host_schema_ztv,          &host_schema_ztv_target,
         &host_schema_photo,        &host_schema_ground_cover,
         &host_schema_material,     &host_schema_terrain,
-        &host_schema_species,      &host_schema_plant,        &host_schema_ecology,
+        &host_schema_species,      &host_schema_phenology,    &host_schema_plant,        &host_schema_ecology,
         &host_schema_object,       &host_schema_object_model, &host_schema_object_group,
         &host_schema_shape_box,    &host_schema_shape_sphere,
         &host_schema_shape_quad,   &host_schema_shape_disk,   &host_schema_shape_mesh};

@@ -15,6 +15,7 @@
 #include <stdint.h>
 
 #include "sylva/plugin.h"
+#include "scene/phenology.h"
 #include "util/err.h"
 #include "util/name_index.h"
 
@@ -190,6 +191,7 @@ typedef struct species_spec {
     const char *material;     /* shapes: material name or NULL */
     uint32_t variants;        /* age variants to build */
     const sylva_params *ecology; /* the block under the ecology plugin's species_section, or NULL */
+    phenology phenology;      /* its leaf habit and days (evergreen when not given) */
     uint32_t line, column;
 } species_spec;
 
@@ -277,6 +279,7 @@ typedef struct scene_file {
     sky_settings sky;
     earth_settings earth;
     ground_cover_settings ground_cover;
+    season_settings season;     /* the day of the year the plants are shown on */
     terrain_spec terrain;
     species_spec *species; uint32_t n_species;
     plant_spec *plants; uint32_t n_plants;

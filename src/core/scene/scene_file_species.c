@@ -61,6 +61,7 @@ static int read_species_entry(loader *L, const species_entry *e, species_spec *s
             return -1;
         sp->variants = 1;
     }
+    if (sf_read_phenology(L, file, e->name, sylva_param(host, "phenology"), &sp->phenology)) return -1;
     const ynode_pair *eco = ynode_get_pair(map, section);
     if (!eco) {
         /* A species without a block takes the ecology plugin's defaults, so the plugin always

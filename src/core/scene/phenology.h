@@ -1,0 +1,47 @@
+/* phenology.h — when a species carries its leaves: the scene's season (a named season or a
+ * calendar date, as a day of the year) and each species' habit (evergreen or deciduous) with
+ * the days its leaves come out and fall. One ecology run serves every season: the season
+ * changes only how the plants look (scene_season.h), never which plants stand where.
+ *
+ * Spring is where blossom belongs (a species' flowering days beside its leaf days). */
+#ifndef SYLVA_PHENOLOGY_H
+#define SYLVA_PHENOLOGY_H
+
+#include <stdint.h>
+
+#include "util/err.h"
+
+/* The day of the year (1..366) each named season stands for: the middle of its quarter in the
+ * temperate northern hemisphere (mid-April, mid-July, mid-October, mid-January). */
+enum { SEASON_SPRING_DAY = 105, SEASON_SUMMER_DAY = 196, SEASON_AUTUMN_DAY = 288, SEASON_WINTER_DAY = 15 };
+
+typedef struct season_settings {
+    uint32_t day;             /* day of the year, 1..366 (SEASON_SUMMER_DAY when not given) */
+    const char *text;         /* as written ("winter", "2026-01-20"), or "summer" by default */
+    uint32_t line, column;    /* of the value (0 when not given) */
+} season_settings;
+
+typedef enum leaf_habit { HABIT_EVERGREEN = 0, HABIT_DECIDUOUS = 1 } leaf_habit;
+
+typedef struct phenology {
+    leaf_habit habit;
+    uint32_t leaf_out;        /* day of the year the leaves come out (deciduous) */
+    uint32_t leaf_fall;       /* day of the year the last leaves have fallen (deciduous) */
+    uint32_t colouring;       /* day of the year the leaves start to turn (deciduous; in leaf then) */
+    double autumn_color[3];   /* linear RGB the leaves' albedo reaches at leaf_fall */
+} phenology;
+
+/* The day of the year of text: spring, summer, autumn, winter, or a date YYYY-MM-DD (the
+ * Gregorian calendar, leap years counted). Returns 0 with *day set, or -1 with err naming what
+ * would be valid (the caller locates it). */
+int season_day_parse(const char *text, uint32_t *day, err_buf *err);
+
+/* 1 when a plant of phenology p carries its leaves on day (evergreens always do; a deciduous
+ * plant from leaf_out up to the day before leaf_fall). */
+int phenology_in_leaf(const phenology *p, uint32_t day);
+
+/* How far the leaves have turned on day: 0 until colouring (and for evergreens and leafless
+ * days), rising linearly to 1 at leaf_fall (days counted round the year's end). */
+double phenology_autumn_share(const phenology *p, uint32_t day);
+
+#endif

@@ -1,0 +1,53 @@
+/* scene_file_season.c — the scene's season: key (a season's name or a date) and each species'
+ * phenology: block, read into days of the year (phenology.h). */
+#include "scene/scene_file_loader.h"
+
+int sf_read_season(loader *L)
+{
+    season_settings *s = &L->sf->season;
+    s->day = SEASON_SUMMER_DAY, s->text = "summer";
+    const ynode_pair *pr = ynode_get_pair(L->root, "season");
+    if (!pr) return 0;
+    const ynode *v = pr->value;
+    if (v->kind != YNODE_SCALAR)
+        return sf_located(L->err, L->file, v->line, v->column,
+                          "'season' must be spring, summer, autumn, winter or a date YYYY-MM-DD, got %s",
+                          ynode_kind_phrase(v));
+    err_buf why = {{0}};
+    if (season_day_parse(v->text, &s->day, &why))
+        return sf_located(L->err, L->file, v->line, v->column, "%s", why.msg);
+    s->text = v->text, s->line = v->line, s->column = v->column;
+    return 0;
+}
+
+int sf_read_phenology(loader *L, const char *file, const char *species, const sylva_value *v, phenology *out)
+{
+    const sylva_params *p = v->group;
+    const sylva_value *out_day = sylva_param(p, "leaf_out"), *fall_day = sylva_param(p, "leaf_fall"),
+                      *turn_day = sylva_param(p, "colouring"), *colour = sylva_param(p, "autumn_color");
+    out->habit = (leaf_habit)sylva_param(p, "habit")->i;
+    out->leaf_out = (uint32_t)out_day->i, out->leaf_fall = (uint32_t)fall_day->i;
+    out->colouring = (uint32_t)turn_day->i;
+    for (int c = 0; c < 3; c++) out->autumn_color[c] = colour->list[c];
+    if (out->habit == HABIT_DECIDUOUS && out->leaf_out == out->leaf_fall)
+        return sf_located(L->err, file, fall_day->is_set ? fall_day->line : v->line,
+                          fall_day->is_set ? fall_day->column : v->column,
+                          "species '%s': leaf_fall (day %u) equals leaf_out; a deciduous species needs "
+                          "some days in leaf (an evergreen: habit: evergreen)", species, out->leaf_fall);
+    if (out->habit == HABIT_EVERGREEN) {
+        const sylva_value *given[] = {out_day, fall_day, turn_day, colour};
+        for (int k = 0; k < 4; k++)
+            if (given[k]->is_set)
+                return sf_located(L->err, file, given[k]->line, given[k]->column,
+                                  "species '%s': leaf days and autumn_color apply to habit: deciduous; an "
+                                  "evergreen is in leaf all year", species);
+        return 0;
+    }
+    if (!phenology_in_leaf(out, out->colouring))
+        return sf_located(L->err, file, turn_day->is_set ? turn_day->line : v->line,
+                          turn_day->is_set ? turn_day->column : v->column,
+                          "species '%s': colouring (day %u) must fall while the species is in leaf, from "
+                          "leaf_out (day %u) to the day before leaf_fall (day %u)", species, out->colouring,
+                          out->leaf_out, out->leaf_fall);
+    return 0;
+}

@@ -1,0 +1,86 @@
+/* scene_season.c — leaf-off prototypes for the species out of leaf on the scene's day, and
+ * autumn leaf materials for the species whose leaves are turning (scene_season.h). */
+#include "scene/scene_season.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+uint32_t scene_drop_leaves(const scene *s, mesh *m)
+{
+    uint32_t kept = 0;
+    for (uint32_t t = 0; t < m->nt; t++) {
+        if (s->materials[scene_triangle_material(s, m, t)].bsdf == SYLVA_BSDF_LEAF) continue;
+        if (kept != t) {
+            memcpy(m->tri + (size_t)kept * 3, m->tri + (size_t)t * 3, 3 * sizeof *m->tri);
+            m->mat[kept] = m->mat[t];
+        }
+        kept++;
+    }
+    uint32_t dropped = m->nt - kept;
+    m->nt = kept;
+    return dropped;
+}
+
+/* A copy of leaf material id turned share f of the way toward autumn colour c (the
+ * transmittance keeps its ratio to the albedo, within what the albedo leaves of the light). */
+static int32_t autumn_material(scene *s, uint32_t id, const char *species_name, const double c[3], double f,
+                               err_buf *err)
+{
+    const material old = s->materials[id]; /* a copy: adding a material may move the array */
+    char name[256];
+    snprintf(name, sizeof name, "%s (%s, autumn)", old.name, species_name);
+    sylva_material_desc d = {.size = sizeof d, .name = name, .bsdf = SYLVA_BSDF_LEAF, .texture = old.texture,
+                             .alpha_mask = old.alpha_mask};
+    const double a[3] = {old.albedo.x, old.albedo.y, old.albedo.z};
+    const double t[3] = {old.transmittance.x, old.transmittance.y, old.transmittance.z};
+    for (int k = 0; k < 3; k++) {
+        double turned = a[k] + f * (c[k] - a[k]);
+        double through = a[k] > 0 ? t[k] * turned / a[k] : t[k];
+        d.albedo[k] = (float)turned;
+        d.transmittance[k] = (float)(through < 1 - turned ? through : 1 - turned);
+    }
+    return scene_add_material(s, &d, err);
+}
+
+/* Gives species sp's leaf triangles their own autumn materials (one per leaf material used). */
+static int colour_species(scene *s, uint32_t sp, const phenology *p, double f, err_buf *err)
+{
+    uint32_t n = s->n_materials;
+    int32_t *turned = malloc(n * sizeof *turned); /* old material id → its autumn copy, or -1; owned here */
+    if (!turned) return err_nomem(err, "out of memory colouring species '%s'", s->species[sp].name);
+    for (uint32_t k = 0; k < n; k++) turned[k] = -1;
+    const species *spc = &s->species[sp];
+    int rc = 0;
+    for (uint32_t v = 0; v < spc->n_variants && !rc; v++) {
+        mesh *m = s->prototypes[spc->first_prototype + v].mesh;
+        for (uint32_t t = 0; t < m->nt; t++) {
+            uint32_t id = scene_triangle_material(s, m, t);
+            if (id >= n || s->materials[id].bsdf != SYLVA_BSDF_LEAF) continue;
+            if (turned[id] < 0 && (turned[id] = autumn_material(s, id, spc->name, p->autumn_color, f, err)) < 0) {
+                rc = -1;
+                break;
+            }
+            m->mat[t] = turned[id];
+        }
+    }
+    free(turned);
+    return rc;
+}
+
+int scene_apply_season(scene *s, const scene_file *sf, err_buf *err)
+{
+    /* scene_build makes scene species i from scene-file species i; ground cover comes after */
+    for (uint32_t i = 0; i < sf->n_species && i < s->n_species; i++) {
+        const phenology *p = &sf->species[i].phenology;
+        const species *sp = &s->species[i];
+        if (!phenology_in_leaf(p, sf->season.day)) {
+            for (uint32_t v = 0; v < sp->n_variants; v++)
+                scene_drop_leaves(s, s->prototypes[sp->first_prototype + v].mesh);
+            continue;
+        }
+        double f = phenology_autumn_share(p, sf->season.day);
+        if (f > 0 && colour_species(s, i, p, f, err)) return -1;
+    }
+    return 0;
+}

@@ -11,7 +11,7 @@
 void blossom_params_default(blossom_params *p)
 {
     *p = (blossom_params){.first_day = 100, .last_day = 120, .lifetime_min = 6, .lifetime_max = 12,
-                          .per_point = 0.5, .max_per_plant = 4000, .speed_max = 0.002,
+                          .per_point = 0.5, .max_per_plant = 1500, .speed_max = 0.002,
                           .size_min = 0.006, .size_max = 0.01, .bud_size = 0.3, .opening = 0.3,
                           .aspect_min = 0.7, .colour_open = {0.85f, 0.62f, 0.7f},
                           .colour_faded = {0.7f, 0.6f, 0.5f}, .colour_jitter = 0.25,

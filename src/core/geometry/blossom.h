@@ -45,7 +45,7 @@ typedef struct blossom_params {
     float colour_open[3];              /* linear RGB of a flower that has just opened */
     float colour_faded[3];             /* linear RGB at the end of its life */
     double colour_jitter;              /* [0, 1]: share of a flower's colour that is random, not age */
-    uint64_t max_instances;            /* petals over the scene at most (a clear error beyond) */
+    uint64_t max_instances;            /* petals one blossom_add adds at most (a clear error beyond) */
 } blossom_params;
 
 /* One particle's random draws (its state over its whole life). */

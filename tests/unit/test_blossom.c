@@ -242,6 +242,34 @@ TEST(petals_in_the_plants_frame)
     scene_free(s);
 }
 
+/* A species' petals do not depend on which species bloomed before it: the plants keep their
+ * instance indices, and only they seed the particles. */
+TEST(species_order_does_not_matter)
+{
+    blossom_params p = busy();
+    scene *a = orchard(), *b = orchard();
+    err_buf err = {0};
+    blossom_report ra0, ra1, rb0, rb1;
+    CHECK(a && b);
+    if (!a || !b) goto done;
+    CHECK_INT(blossom_add(a, 0, &p, 111, 5, &ra0, &err), 0); /* cherry, then beech */
+    CHECK_INT(blossom_add(a, 1, &p, 111, 5, &ra1, &err), 0);
+    CHECK_INT(blossom_add(b, 1, &p, 111, 5, &rb1, &err), 0); /* beech, then cherry */
+    CHECK_INT(blossom_add(b, 0, &p, 111, 5, &rb0, &err), 0);
+    CHECK_INT(ra0.petals, rb0.petals);
+    CHECK_INT(ra1.petals, rb1.petals);
+    CHECK(ra0.petals > 0 && ra1.petals > 0);
+    CHECK_INT(a->n_instances, b->n_instances);
+    if (a->n_instances != b->n_instances) goto done;
+    /* a holds 3 plants, cherry's petals, beech's; b holds 3 plants, beech's, cherry's */
+    for (uint64_t k = 0; k < ra0.petals; k++)
+        CHECK(memcmp(&a->instances[3 + k].xf, &b->instances[3 + rb1.petals + k].xf, sizeof(xform3x4)) == 0);
+    for (uint64_t k = 0; k < ra1.petals; k++)
+        CHECK(memcmp(&a->instances[3 + ra0.petals + k].xf, &b->instances[3 + k].xf, sizeof(xform3x4)) == 0);
+done:
+    scene_free(a), scene_free(b);
+}
+
 TEST(bad_parameters)
 {
     scene *s = orchard();
@@ -274,4 +302,5 @@ TEST(bad_parameters)
 
 TEST_LIST(TEST_CASE(alive_by_lifetime), TEST_CASE(draws_within_their_ranges), TEST_CASE(crown_points_are_the_leaves),
           TEST_CASE(petals_deterministic_for_a_seed), TEST_CASE(none_outside_the_season),
-          TEST_CASE(petals_in_the_plants_frame), TEST_CASE(bad_parameters))
+          TEST_CASE(petals_in_the_plants_frame), TEST_CASE(species_order_does_not_matter),
+          TEST_CASE(bad_parameters))

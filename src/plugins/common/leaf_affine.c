@@ -56,7 +56,7 @@ static leaf_affine_map towards_tip(double s, double tip, double p)
 }
 
 static const char *const preset_names[LEAF_AFFINE_PRESET_COUNT] = {"beech", "maple", "spruce",
-                                                                   "shrub"};
+                                                                   "shrub", "willow"};
 
 const char *leaf_affine_preset_name(leaf_affine_preset preset)
 {
@@ -78,6 +78,7 @@ static const leaf_shape preset_shapes[LEAF_AFFINE_PRESET_COUNT] = {
                            {{0.5, 0.5, 0.85, 0.3, 0.22}, {0.3, 0.3, 1.75, 0.27, 0.1}}},
     [LEAF_AFFINE_SPRUCE] = {0.97, 0.05, 0.86, 0.97, 0.55, 1, {{0.05, 0.36, 0.95, 0.04, 0.2}}},
     [LEAF_AFFINE_SHRUB] = {0.93, 0.03, 0.74, 0.95, 0.5, 1, {{0.4, 0.5, 0.5, 0.12, 0.23}}},
+    [LEAF_AFFINE_WILLOW] = {0.97, 0.03, 0.84, 0.98, 0.55, 1, {{0.22, 0.3, 0.3, 0.06, 0.2}}},
 };
 
 void leaf_affine_preset_maps(leaf_affine_preset preset, leaf_affine_maps *out)
@@ -243,22 +244,28 @@ void leaf_affine_raster_free(leaf_affine_raster *raster)
 
 /* The chaos game reaches the ends of a midrib only through points already near them, so a
  * stalk below the blade, and its copies at the base of every vein, stay sparse. The attractor
- * holds its own images under every map (the Hutchinson operator's fixed point), so every found
- * texel is mapped through the maps until nothing new appears, carrying its vein order along.
- * A midrib map takes the texel's four corners, as its slow contraction along the midrib would
- * otherwise round back into the same texel; its images lie on the midrib's line, so this spreads
- * them only along it. The other maps take the texel's centre, which keeps a shape's edge where
- * it is (a texel centre outside the shape maps nearer to it). */
-static void close_under_maps(const leaf_affine_maps *maps, const uint8_t *kind, leaf_affine_raster *r)
+ * holds its own images under every map (the Hutchinson operator's fixed point), so the raster is
+ * completed from those images: first every texel found is mapped through the midrib maps, then
+ * every texel so added through every map, and so on until nothing new appears (vein orders
+ * carried along). A midrib map takes the texel's four corners, as its slow contraction along the
+ * midrib would otherwise round back into the same texel; its images lie on the midrib's line, so
+ * this spreads them only along it. The other maps take the texel's centre. Texels the game found
+ * are not mapped through those again: near a map's fixed point rounding would hold their images
+ * a texel away from it and blunt the tip. fresh (size^2 bytes) is scratch. */
+static void complete_from_images(const leaf_affine_maps *maps, const uint8_t *kind,
+                                 leaf_affine_raster *r, uint8_t *fresh)
 {
     uint32_t n = r->size;
+    size_t texels = (size_t)n * n;
+    memcpy(fresh, r->hit, texels); /* pass 0: the game's texels, through the midrib maps only */
     for (uint32_t pass = 0, changed = 1; changed && pass < 4 * n; pass++) {
         changed = 0;
-        for (size_t t = 0; t < (size_t)n * n; t++) {
-            if (!r->hit[t]) continue;
+        for (size_t t = 0; t < texels; t++) {
+            if (fresh[t] != 1) continue;
+            fresh[t] = 0;
             for (uint32_t k = 0; k < 4 * maps->n; k++) {
                 uint32_t i = k / 4;
-                if (kind[i] != 2 && (k & 3)) continue;
+                if (kind[i] != 2 && ((k & 3) || pass == 0)) continue;
                 double du = kind[i] != 2 ? 0 : (k & 1) ? 0.49 : -0.49;
                 double dv = kind[i] != 2 ? 0 : (k & 2) ? 0.49 : -0.49;
                 double u = (t % n + 0.5 + du) / n, v = 1 - (t / n + 0.5 + dv) / n;
@@ -274,9 +281,11 @@ static void close_under_maps(const leaf_affine_maps *maps, const uint8_t *kind, 
                 if (r->hit[image] && r->order[image] <= order) continue;
                 r->hit[image] = 1;
                 r->order[image] = (uint8_t)order;
+                fresh[image] = 2; /* mapped in the next pass */
                 changed = 1;
             }
         }
+        for (size_t t = 0; t < texels; t++) fresh[t] = fresh[t] == 2;
     }
 }
 
@@ -335,7 +344,13 @@ int leaf_affine_attractor(const leaf_affine_maps *maps, uint32_t size, uint64_t 
         out->hit[t] = 1;
         if (order < out->order[t]) out->order[t] = (uint8_t)order;
     }
-    close_under_maps(maps, kind, out);
+    uint8_t *fresh = malloc(texels); /* owned here */
+    if (!fresh) {
+        leaf_affine_raster_free(out);
+        return fail(err, err_size, "out of memory for a %ux%u leaf texture", size, size);
+    }
+    complete_from_images(maps, kind, out, fresh);
+    free(fresh);
     return 0;
 }
 

@@ -38,6 +38,7 @@ typedef enum leaf_affine_preset {
     LEAF_AFFINE_MAPLE,  /* palmate, five lobes, each lobed again */
     LEAF_AFFINE_SPRUCE, /* a twig with needles on both sides */
     LEAF_AFFINE_SHRUB,  /* small elliptic leaf with few veins */
+    LEAF_AFFINE_WILLOW, /* long, narrow (lanceolate) leaf */
     LEAF_AFFINE_PRESET_COUNT
 } leaf_affine_preset;
 
@@ -50,7 +51,7 @@ typedef struct leaf_affine_raster {
     uint8_t *order;
 } leaf_affine_raster;
 
-/* The preset's name ("beech", "maple", "spruce", "shrub"); NULL past the end. */
+/* The preset's name ("beech", "maple", "spruce", "shrub", "willow"); NULL past the end. */
 const char *leaf_affine_preset_name(leaf_affine_preset preset);
 
 /* The preset's maps. */

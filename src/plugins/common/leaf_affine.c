@@ -356,17 +356,14 @@ int leaf_affine_attractor(const leaf_affine_maps *maps, uint32_t size, uint64_t 
 
 /* --- outline and texture ------------------------------------------------------------------- */
 
-void leaf_affine_outline(const leaf_affine_raster *raster, uint8_t *inside)
+int leaf_affine_outline(const leaf_affine_raster *raster, uint8_t *inside)
 {
     /* Everything is inside until a flood from the border through empty texels reaches it. */
     uint32_t n = raster->size;
     size_t texels = (size_t)n * n;
     memset(inside, 1, texels);
     uint32_t *stack = malloc(texels * sizeof *stack); /* owned here */
-    if (!stack) { /* without room to flood, the outline is the attractor itself */
-        memcpy(inside, raster->hit, texels);
-        return;
-    }
+    if (!stack) return -1;
     size_t top = 0;
     for (uint32_t i = 0; i < n; i++) {
         const uint32_t edge[4] = {i, (n - 1) * n + i, i * n, i * n + n - 1};
@@ -385,6 +382,7 @@ void leaf_affine_outline(const leaf_affine_raster *raster, uint8_t *inside)
             if (!raster->hit[next[k]] && inside[next[k]]) inside[next[k]] = 0, stack[top++] = next[k];
     }
     free(stack);
+    return 0;
 }
 
 /* Smooth lattice noise in [0, 1) over an 8 x 8 grid of the unit square. */
@@ -416,11 +414,11 @@ int leaf_affine_render(const leaf_affine_maps *maps, uint32_t size, uint64_t see
     if (leaf_affine_attractor(maps, size, seed, &raster, err, err_size)) return -1;
     size_t texels = (size_t)size * size;
     uint8_t *inside = malloc(texels); /* owned here */
-    if (!inside) {
+    if (!inside || leaf_affine_outline(&raster, inside)) {
+        free(inside);
         leaf_affine_raster_free(&raster);
         return fail(err, err_size, "out of memory for a %ux%u leaf texture", size, size);
     }
-    leaf_affine_outline(&raster, inside);
     for (uint32_t row = 0; row < size; row++)
         for (uint32_t x = 0; x < size; x++) {
             size_t t = (size_t)row * size + x;

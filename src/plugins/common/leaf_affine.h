@@ -81,8 +81,9 @@ int leaf_affine_attractor(const leaf_affine_maps *maps, uint32_t size, uint64_t 
 void leaf_affine_raster_free(leaf_affine_raster *raster);
 
 /* Fills a caller-owned mask (size * size bytes) with 1 inside the outline of the raster's
- * attractor (its texels and every region they enclose), 0 outside. */
-void leaf_affine_outline(const leaf_affine_raster *raster, uint8_t *inside);
+ * attractor (its texels and every region they enclose), 0 outside. Returns 0, or -1 when out of
+ * memory (the mask is then undefined). */
+int leaf_affine_outline(const leaf_affine_raster *raster, uint8_t *inside);
 
 /* Draws the leaf texture into a caller-owned rgba (size * size * 4 bytes, sRGB-encoded):
  * alpha 255 inside the outline and 0 outside; the colour channels hold a grey brightness that

@@ -97,7 +97,7 @@ TEST(square_area)
     leaf_affine_raster r;
     CHECK_INT(leaf_affine_attractor(&m, n, 1, &r, NULL, 0), 0);
     uint8_t *inside = malloc((size_t)n * n);
-    leaf_affine_outline(&r, inside);
+    CHECK_INT(leaf_affine_outline(&r, inside), 0);
     double area = (double)count(r.hit, (size_t)n * n) / ((double)n * n);
     CHECK_NEAR(area, 0.64, 0.64 * 0.02);
     CHECK_NEAR((double)count(inside, (size_t)n * n) / ((double)n * n), 0.64, 0.64 * 0.02);
@@ -151,7 +151,7 @@ TEST(presets_are_leaves_with_a_midrib)
         leaf_affine_raster r;
         CHECK_INT(leaf_affine_attractor(&m, n, 5, &r, NULL, 0), 0);
         uint8_t *inside = malloc((size_t)n * n);
-        leaf_affine_outline(&r, inside);
+        CHECK_INT(leaf_affine_outline(&r, inside), 0);
         double cover = (double)count(inside, (size_t)n * n) / ((double)n * n);
         /* broad blades cover a good part of the square, the needle twig and willow much less */
         if (p == LEAF_AFFINE_SPRUCE || p == LEAF_AFFINE_WILLOW) CHECK(cover > 0.05 && cover < 0.3);

@@ -4,8 +4,6 @@
  * caller's raster. */
 #include "leaf_affine.h"
 
-#include <ctype.h>
-#include <errno.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -41,10 +39,10 @@ static leaf_affine_map placed(double sx, double sy, double angle, double bx, dou
     return m;
 }
 
-/* The midrib: the whole leaf squashed onto x = 0.5, y in [y0, y0 + len]. */
-static leaf_affine_map midrib(double y0, double len, double p)
+/* The midrib: the whole leaf squashed onto x = 0.5, y' = len y (from the stalk up). */
+static leaf_affine_map midrib(double len, double p)
 {
-    leaf_affine_map m = {0, 0, 0, len, 0.5, y0, p};
+    leaf_affine_map m = {0, 0, 0, len, 0.5, 0, p};
     return m;
 }
 
@@ -85,7 +83,7 @@ void leaf_affine_preset_maps(leaf_affine_preset preset, leaf_affine_maps *out)
 {
     memset(out, 0, sizeof *out);
     const leaf_shape *s = &preset_shapes[(unsigned)preset < LEAF_AFFINE_PRESET_COUNT ? preset : 0];
-    out->map[out->n++] = midrib(0.0, s->rib_length, s->rib_p);
+    out->map[out->n++] = midrib(s->rib_length, s->rib_p);
     out->map[out->n++] = towards_tip(s->tip_scale, s->tip, s->tip_p);
     for (uint32_t k = 0; k < s->pairs; k++)
         for (int side = 1; side >= -1; side -= 2)
@@ -173,7 +171,6 @@ int leaf_affine_parse(const char *text, leaf_affine_maps *out, char *err, size_t
         size_t col = (size_t)(p - text) + 1;
         if (count == 0) map_column = col;
         char *end;
-        errno = 0;
         double v = strtod(p, &end);
         if (end == p || (*end && !strchr(" \t,;\r\n", *end)))
             return fail(err, err_size, "column %zu: '%.12s' is not a number; maps are numbers "

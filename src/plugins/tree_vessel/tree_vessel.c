@@ -42,7 +42,11 @@ static int make_materials(const sylva_host_api *api, sylva_host *host, tree_vess
     snprintf(name, sizeof name, "tree_vessel bark %s", vessel_bark_names[p->bark]);
     int32_t bark_tex = api->texture_new(host, name, VESSEL_BARK_TEXTURE_SIZE,
                                         VESSEL_BARK_TEXTURE_SIZE, bark);
-    vessel_texture_leaf(p->leaf_shape, leaf);
+    if (vessel_texture_leaf(p->leaf_shape, leaf)) {
+        api->error(host, "tree_vessel: out of memory for the leaf texture");
+        rc = SYLVA_ERR_NOMEM;
+        goto done;
+    }
     snprintf(name, sizeof name, "tree_vessel leaf %s", vessel_leaf_shape_names[p->leaf_shape]);
     int32_t leaf_tex = api->texture_new(host, name, VESSEL_LEAF_TEXTURE_SIZE,
                                         VESSEL_LEAF_TEXTURE_SIZE, leaf);

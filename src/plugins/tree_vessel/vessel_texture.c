@@ -1,6 +1,8 @@
 /* vessel_texture.c — procedural bark (tileable lattice noise and cell edges) and leaf outlines
- * (analytic shapes), written as sRGB-encoded RGBA8. */
+ * (affine-map leaves from the shared presets), written as sRGB-encoded RGBA8. */
 #include "vessel_texture.h"
+
+#include "leaf_affine.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -124,141 +126,17 @@ void vessel_texture_bark(vessel_bark_kind kind, uint8_t *rgba)
 
 /* --- leaves -------------------------------------------------------------------------------- */
 
-/* Distance from p to the segment a-b. */
-static double segment_distance(double px, double py, double ax, double ay, double bx, double by)
+/* Each outline is an affine-map leaf (003 §2, leaf_affine.h) from the shared presets. */
+int vessel_texture_leaf(vessel_leaf_shape shape, uint8_t *rgba)
 {
-    double dx = bx - ax, dy = by - ay, t = ((px - ax) * dx + (py - ay) * dy) / (dx * dx + dy * dy);
-    t = t < 0 ? 0 : t > 1 ? 1 : t;
-    double ex = px - (ax + t * dx), ey = py - (ay + t * dy);
-    return sqrt(ex * ex + ey * ey);
-}
-
-/* A stalk up the middle from v = 0 to v = top. */
-static int stalk(double x, double y, double top, double half_width)
-{
-    return y >= 0 && y <= top && fabs(x - 0.5) < half_width;
-}
-
-/* One ovate blade from (bx, by) along the unit direction (dx, dy): length len, widest
- * half-width half, pointed tip, wavy margin, a midrib and straight side veins. */
-static int ovate_blade(double x, double y, double bx, double by, double dx, double dy, double len,
-                       double half, double *grey)
-{
-    double a = (x - bx) * dx + (y - by) * dy, q = (x - bx) * dy - (y - by) * dx;
-    double t = a / len;
-    if (t < 0 || t > 1) return 0;
-    double w = half * pow(sin(M_PI * pow(t, 0.75)), 0.9) * (1 + 0.05 * sin(t * 40));
-    double aq = fabs(q);
-    if (aq >= w) return 0;
-    *grey = 0.8 + 0.12 * t;
-    if (aq < 0.008 || fmod((a - 0.9 * aq) / len * 8 + 8, 1.0) < 0.08) *grey = 0.97;
-    return 1;
-}
-
-/* Beech: a twig up the middle with ovate leaves on alternate sides and one at its end. */
-static int leaf_ovate(double x, double y, double *grey)
-{
-    static const double at[4] = {0.1, 0.28, 0.46, 0.62};
-    if (stalk(x, y, 0.7, 0.011)) {
-        *grey = 0.6;
-        return 1;
-    }
-    if (ovate_blade(x, y, 0.5, 0.64, 0, 1, 0.35, 0.15, grey)) return 1;
-    for (int i = 0; i < 4; i++) {
-        double side = (i & 1) ? -1 : 1, c = cos(0.95), s = sin(0.95);
-        if (ovate_blade(x, y, 0.5, at[i], side * s, c, 0.45 - 0.03 * i, 0.16, grey)) return 1;
-    }
-    return 0;
-}
-
-/* Spruce: a twig up the middle with needles on both sides and along the top. */
-static int leaf_needles(double x, double y, double *grey)
-{
-    *grey = 0.85;
-    if (stalk(x, y, 0.98, 0.013)) {
-        *grey = 0.55;
-        return 1;
-    }
-    for (int i = 0; i < 24; i++) {
-        double y0 = 0.03 + i * 0.04;
-        double len = 0.4 * (1 - 0.55 * y0 * y0);
-        for (int s = -1; s <= 1; s++) {
-            double lean = s == 0 ? 0.35 * ((i & 1) ? 1 : -1) : s * 0.95; /* radians from the twig */
-            double l = s == 0 ? 0.55 * len : len;
-            double bx = 0.5 + l * sin(lean), by = y0 + l * cos(lean);
-            double d = segment_distance(x, y, 0.5, y0, bx, by);
-            double along = ((x - 0.5) * sin(lean) + (y - y0) * cos(lean)) / l;
-            double width = 0.012 * (1 - 0.6 * (along < 0 ? 0 : along > 1 ? 1 : along));
-            if (d < width) {
-                *grey = 0.75 + 0.25 * along;
-                return 1;
-            }
-        }
-    }
-    return 0;
-}
-
-/* Willow: a thin hanging shoot with long, narrow leaves on alternate sides, lying close to it. */
-static int leaf_lanceolate(double x, double y, double *grey)
-{
-    if (stalk(x, y, 0.9, 0.008)) {
-        *grey = 0.6;
-        return 1;
-    }
-    for (int i = 0; i < 9; i++) {
-        double y0 = 0.06 + i * 0.1, side = (i & 1) ? -1 : 1, lean = 0.32;
-        double dx = side * sin(lean), dy = cos(lean), len = 0.3 - 0.012 * i;
-        double a = (x - 0.5) * dx + (y - y0) * dy, q = (x - 0.5) * dy - (y - y0) * dx;
-        double t = a / len;
-        if (t < 0 || t > 1) continue;
-        double half = 0.03 * pow(sin(M_PI * pow(t, 0.7)), 0.8);
-        if (fabs(q) < half) {
-            *grey = fabs(q) < 0.005 ? 0.97 : 0.8 + 0.12 * t;
-            return 1;
-        }
-    }
-    return 0;
-}
-
-/* Maple: five pointed lobes round a centre, toothed, with a vein to each lobe. */
-static int leaf_palmate(double x, double y, double *grey)
-{
-    static const double lobe_angle[5] = {0.0, 0.84, -0.84, 1.75, -1.75};
-    static const double lobe_length[5] = {0.5, 0.44, 0.44, 0.3, 0.3};
-    const double cx = 0.5, cy = 0.42;
-    *grey = 0.85;
-    if (stalk(x, y, cy, 0.012)) return 1;
-    double dx = x - cx, dy = y - cy, r = sqrt(dx * dx + dy * dy);
-    double theta = atan2(dx, dy); /* from +v, clockwise toward +u */
-    double reach = 0.16;
-    for (int i = 0; i < 5; i++) {
-        double d = theta - lobe_angle[i];
-        double c = cos(1.7 * d);
-        if (fabs(1.7 * d) < M_PI / 2 && c > 0) {
-            double l = lobe_length[i] * pow(c, 1.6);
-            if (l > reach) reach = l;
-        }
-        if (r * fabs(sin(d)) < 0.01 && cos(d) > 0 && r < lobe_length[i]) *grey = 0.98;
-    }
-    reach *= 1 + 0.06 * sin(theta * 36);
-    return r < reach;
-}
-
-void vessel_texture_leaf(vessel_leaf_shape shape, uint8_t *rgba)
-{
-    const uint32_t n = VESSEL_LEAF_TEXTURE_SIZE;
-    for (uint32_t row = 0; row < n; row++)
-        for (uint32_t x = 0; x < n; x++) {
-            double u = (x + 0.5) / n, v = 1.0 - (row + 0.5) / n, grey = 0;
-            int inside;
-            switch (shape) {
-            case VESSEL_LEAF_SHAPE_OVATE: inside = leaf_ovate(u, v, &grey); break;
-            case VESSEL_LEAF_SHAPE_NEEDLES: inside = leaf_needles(u, v, &grey); break;
-            case VESSEL_LEAF_SHAPE_LANCEOLATE: inside = leaf_lanceolate(u, v, &grey); break;
-            case VESSEL_LEAF_SHAPE_PALMATE:
-            default: inside = leaf_palmate(u, v, &grey); break;
-            }
-            grey *= 0.92 + 0.16 * (value_noise(u, v, 16, 16, 51) - 0.5);
-            put(rgba, n, x, row, grey, inside);
-        }
+    static const leaf_affine_preset preset[VESSEL_LEAF_SHAPES] = {
+        [VESSEL_LEAF_SHAPE_OVATE] = LEAF_AFFINE_BEECH,
+        [VESSEL_LEAF_SHAPE_NEEDLES] = LEAF_AFFINE_SPRUCE,
+        [VESSEL_LEAF_SHAPE_LANCEOLATE] = LEAF_AFFINE_WILLOW,
+        [VESSEL_LEAF_SHAPE_PALMATE] = LEAF_AFFINE_MAPLE,
+    };
+    leaf_affine_maps maps;
+    leaf_affine_preset_maps(preset[(unsigned)shape < VESSEL_LEAF_SHAPES ? shape : 0], &maps);
+    return leaf_affine_render(&maps, VESSEL_LEAF_TEXTURE_SIZE, VESSEL_LEAF_TEXTURE_SEED, rgba,
+                              NULL, 0);
 }

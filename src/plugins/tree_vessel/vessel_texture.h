@@ -3,8 +3,8 @@
  * the top (v = 1). Colour channels hold a grey brightness pattern that the material's albedo
  * multiplies; a leaf's alpha holds its outline (255 inside, 0 outside).
  *
- * The patterns come from a fixed lattice hash, not from a random stream: every scene gets the
- * same textures. Bark tiles in u and v; a leaf's stalk is at v = 0 and its tip at v = 1. */
+ * The bark comes from a fixed lattice hash and the leaves from the chaos game with a fixed
+ * seed, not from the scene's random stream: every scene gets the same textures. Bark tiles in u and v; a leaf's stalk is at v = 0 and its tip at v = 1. */
 #ifndef VESSEL_TEXTURE_H
 #define VESSEL_TEXTURE_H
 
@@ -18,7 +18,10 @@
 /* Fills rgba (VESSEL_BARK_TEXTURE_SIZE^2 * 4 bytes) with the bark pattern. */
 void vessel_texture_bark(vessel_bark_kind kind, uint8_t *rgba);
 
-/* Fills rgba (VESSEL_LEAF_TEXTURE_SIZE^2 * 4 bytes) with the leaf outline and veins. */
-void vessel_texture_leaf(vessel_leaf_shape shape, uint8_t *rgba);
+#define VESSEL_LEAF_TEXTURE_SEED 1u /* the chaos game's seed: every scene, the same leaves */
+
+/* Fills rgba (VESSEL_LEAF_TEXTURE_SIZE^2 * 4 bytes) with the leaf outline and veins, the
+ * attractor of the shape's affine maps (leaf_affine.h). Returns 0, or -1 when out of memory. */
+int vessel_texture_leaf(vessel_leaf_shape shape, uint8_t *rgba);
 
 #endif

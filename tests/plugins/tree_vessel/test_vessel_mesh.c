@@ -141,7 +141,7 @@ TEST(textures_are_opaque_bark_and_outlined_leaves)
 {
     uint8_t *px = malloc(VESSEL_LEAF_TEXTURE_SIZE * VESSEL_LEAF_TEXTURE_SIZE * 4);
     for (int s = 0; s < VESSEL_LEAF_SHAPES; s++) {
-        vessel_texture_leaf((vessel_leaf_shape)s, px);
+        CHECK_INT(vessel_texture_leaf((vessel_leaf_shape)s, px), 0);
         uint32_t inside = 0, n = VESSEL_LEAF_TEXTURE_SIZE * VESSEL_LEAF_TEXTURE_SIZE;
         for (uint32_t i = 0; i < n; i++) inside += px[4 * i + 3] == 255;
         CHECK(inside > n / 20);  /* an outline, neither empty ... */

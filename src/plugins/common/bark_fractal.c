@@ -15,7 +15,7 @@ static const struct {
     uint32_t iterations;
     double crack, furrow, plate;
 } presets[BARK_FRACTAL_PRESETS] = {
-    [BARK_FRACTAL_SMOOTH] = {3.0, 0.5, 0.0, 0.07, 0.9, 96, 0.02, 0.62, 0.86},
+    [BARK_FRACTAL_SMOOTH] = {3.0, 0.5, 0.0, 0.07, 0.9, 96, 0.02, 0.50, 0.86},
     [BARK_FRACTAL_SCALY] = {1.8, 0.5, 0.0, 0.1, 0.9, 160, 0.04, 0.30, 0.85},
     [BARK_FRACTAL_FURROWED] = {2.3999632297286531, 0.5, 0.0, 0.08, 0.9, 200, 0.06, 0.22, 0.90},
     [BARK_FRACTAL_FISSURED] = {0.9, 0.5, 0.0, 0.25, 1.1, 160, 0.04, 0.35, 0.85},

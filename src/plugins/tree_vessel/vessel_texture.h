@@ -1,10 +1,12 @@
-/* vessel_texture.h — the plugin's own bark and leaf textures (t_bark, t_leaf of 004 §3.3),
- * drawn procedurally so that no image file is needed. Both are RGBA8, sRGB-encoded, row 0 at
+/* vessel_texture.h — the plugin's bark and leaf textures (t_bark, t_leaf of 004 §3.3), drawn
+ * procedurally so that no image file is needed: the bark is the shared fractal bark (003 §1,
+ * bark_fractal.h) with the preset of the kind's name. Both are RGBA8, sRGB-encoded, row 0 at
  * the top (v = 1). Colour channels hold a grey brightness pattern that the material's albedo
  * multiplies; a leaf's alpha holds its outline (255 inside, 0 outside).
  *
- * The bark comes from a fixed lattice hash and the leaves from the chaos game with a fixed
- * seed, not from the scene's random stream: every scene gets the same textures. Bark tiles in u and v; a leaf's stalk is at v = 0 and its tip at v = 1. */
+ * The bark is the escape-time pattern of a fixed λ and the leaves come from the chaos game with
+ * a fixed seed, not from the scene's random stream: every scene gets the same textures. Bark
+ * tiles in u and v; a leaf's stalk is at v = 0 and its tip at v = 1. */
 #ifndef VESSEL_TEXTURE_H
 #define VESSEL_TEXTURE_H
 

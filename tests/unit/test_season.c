@@ -2,7 +2,8 @@
  * days of the year, bad ones refused at their place in the file; one scene built in summer and
  * in winter (and in autumn) holds the same instances (prototype, transform, development) in the
  * same order; in winter no ray meets a deciduous species' leaves, while its wood, an evergreen's
- * leaves and every plant's place stay; in autumn only the deciduous leaves' materials turn. */
+ * leaves and every plant's place stay; in autumn only the deciduous leaves' materials turn; the
+ * command line's --season overrides the key. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -262,7 +263,24 @@ TEST(bad_phenology_is_located)
     }
 }
 
+TEST(season_option_overrides_the_key)
+{
+    err_buf err = {{0}};
+    scene_file *sf = load_season("season: summer\n", &err);
+    CHECK(sf != NULL);
+    if (!sf) return;
+    CHECK(scene_file_use_season(sf, "2026-01-20", &err) == 0);
+    CHECK(sf->season.day == 20 && !strcmp(sf->season.text, "2026-01-20"));
+    CHECK(scene_file_use_season(sf, "winter", &err) == 0);
+    CHECK(sf->season.day == SEASON_WINTER_DAY && !strcmp(sf->season.text, "winter"));
+    CHECK(scene_file_use_season(sf, "wintr", &err) == -1);
+    CHECK(err.status == ERR_USAGE && strstr(err.msg, "--season wintr: ") && strstr(err.msg, "nor a date"));
+    CHECK(sf->season.day == SEASON_WINTER_DAY); /* a refused day leaves the one before */
+    scene_file_free(sf);
+}
+
 TEST_LIST(TEST_CASE(season_names_and_dates), TEST_CASE(deciduous_in_leaf_between_its_days),
           TEST_CASE(leaves_turn_from_colouring_to_leaf_fall), TEST_CASE(autumn_turns_only_the_deciduous_leaves),
           TEST_CASE(summer_and_winter_hold_the_same_instances), TEST_CASE(winter_rays_meet_no_deciduous_leaf),
-          TEST_CASE(bad_season_is_located), TEST_CASE(bad_phenology_is_located))
+          TEST_CASE(bad_season_is_located), TEST_CASE(bad_phenology_is_located),
+          TEST_CASE(season_option_overrides_the_key))

@@ -9,7 +9,7 @@
 #include "util/progress.h"
 
 int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const char *viewpoint,
-                   const build_options *opt)
+                   const char *season, const build_options *opt)
 {
     memset(c, 0, sizeof *c);
     err_buf err = {{0}};
@@ -18,6 +18,7 @@ int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const 
     /* Problems of the scene file speak of it themselves. */
     if (!(c->sf = scene_file_load(scene_path, c->reg, &err))) return cli_fail(NULL, &err, ERR_INPUT);
     if (viewpoint && scene_file_use_viewpoint(c->sf, viewpoint, &err)) return cli_fail(cmd, &err, ERR_USAGE);
+    if (season && scene_file_use_season(c->sf, season, &err)) return cli_fail(cmd, &err, ERR_USAGE);
     if (!(c->scene = scene_build(c->sf, c->reg, opt, &err))) return cli_fail(NULL, &err, ERR_INPUT);
     c->seconds = progress_now() - t0;
     return EXIT_OK;

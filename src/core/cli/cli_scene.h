@@ -18,9 +18,10 @@ typedef struct cli_scene {
 
 /* Fills c and returns EXIT_OK, or the exit status of the problem after printing it
  * (cli_fail); in every case cli_scene_close releases what was made. viewpoint: NULL for the
- * scene's camera, or the name of one of its viewpoints (--viewpoint) to build the scene with. */
+ * scene's camera, or the name of one of its viewpoints (--viewpoint) to build the scene with.
+ * season: NULL for the scene's season: key, or a season's name or date (--season). */
 int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const char *viewpoint,
-                   const build_options *opt);
+                   const char *season, const build_options *opt);
 void cli_scene_close(cli_scene *c);
 
 /* Adds the scene file's ground cover (geometry/ground_cover_place.h) for c's camera and an image

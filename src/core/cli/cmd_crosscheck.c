@@ -41,6 +41,8 @@ static void crosscheck_usage(FILE *out)
             "  --max-class-mae X    MAE within each class covering >= %g of the picture (default %g)\n"
             "  --viewpoint NAME    the view from the scene's viewpoint NAME (its viewpoints:\n"
             "                      section) instead of its camera\n"
+            "  --season S           the plants on season S (spring, summer, autumn, winter) or\n"
+            "                       date YYYY-MM-DD, instead of the scene's season: key\n"
             "  -q, --quiet          no progress output\n"
             "  --allow-gdal-virtual let the scene name GDAL virtual paths, URLs and connection\n"
             "                      strings (these may reach the network; refused otherwise)\n"
@@ -68,7 +70,7 @@ static int parse_real(const char *opt, const char *s, double lo, double hi, doub
 
 int cmd_crosscheck(int argc, char **argv)
 {
-    const char *viewpoint = NULL;
+    const char *viewpoint = NULL, *season = NULL;
     const char *scene_path = NULL, *out = NULL;
     crosscheck_options co = {0};
     crosscheck_default_thresholds(&co.thresholds);
@@ -117,6 +119,9 @@ int cmd_crosscheck(int argc, char **argv)
         } else if (!strcmp(a, "--viewpoint")) {
             if (!val) goto missing;
             viewpoint = val, i++;
+        } else if (!strcmp(a, "--season")) {
+            if (!val) goto missing;
+            season = val, i++;
         } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
             co.quiet = bo.quiet = 1;
         } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
@@ -150,7 +155,7 @@ int cmd_crosscheck(int argc, char **argv)
 
     err_buf err = {{0}};
     cli_scene cs;
-    int rc = cli_scene_open(&cs, "crosscheck", scene_path, viewpoint, &bo);
+    int rc = cli_scene_open(&cs, "crosscheck", scene_path, viewpoint, season, &bo);
     if (!rc) rc = cli_scene_ground_cover(&cs, "crosscheck", co.width, co.height, co.quiet);
     if (rc) goto done;
     const scene *sc = cs.scene;

@@ -34,6 +34,8 @@ static void export_pov_usage(FILE *out)
             "  --variant K         with --species: variant K only (0 is the youngest)\n"
             "  --viewpoint NAME    the view from the scene's viewpoint NAME (its viewpoints:\n"
             "                      section) instead of its camera\n"
+            "  --season S          the plants on season S (spring, summer, autumn, winter) or\n"
+            "                      date YYYY-MM-DD, instead of the scene's season: key\n"
             "  -q, --quiet         no progress output\n"
             "  --allow-gdal-virtual let the scene name GDAL virtual paths, URLs and connection\n"
             "                      strings (these may reach the network; refused otherwise)\n"
@@ -46,7 +48,7 @@ static void export_pov_usage(FILE *out)
 
 int cmd_export_pov(int argc, char **argv)
 {
-    const char *viewpoint = NULL;
+    const char *viewpoint = NULL, *season = NULL;
     const char *scene_path = NULL, *out = NULL, *species_name = NULL;
     pov_export_options po = {0};
     build_options bo = {0};
@@ -76,6 +78,9 @@ int cmd_export_pov(int argc, char **argv)
         } else if (!strcmp(a, "--viewpoint")) {
             if (!val) goto missing;
             viewpoint = val, i++;
+        } else if (!strcmp(a, "--season")) {
+            if (!val) goto missing;
+            season = val, i++;
         } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
             bo.quiet = 1;
         } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
@@ -114,7 +119,7 @@ int cmd_export_pov(int argc, char **argv)
 
     err_buf err = {{0}};
     cli_scene cs;
-    int rc = cli_scene_open(&cs, "export-pov", scene_path, viewpoint, &bo);
+    int rc = cli_scene_open(&cs, "export-pov", scene_path, viewpoint, season, &bo);
     if (!rc && !species_name) rc = cli_scene_ground_cover(&cs, "export-pov", po.width, po.height, bo.quiet);
     if (rc) goto done;
     const scene *sc = cs.scene;

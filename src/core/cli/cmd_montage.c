@@ -27,6 +27,8 @@ static void montage_usage(FILE *out)
             "  --control-points FILE   the control points (default: photo: control_points)\n"
             "  --spp N                 samples per pixel (default: the scene's)\n"
             "  --threads N             worker threads (default: one per core)\n"
+            "  --season S              the plants on season S (spring, summer, autumn, winter)\n"
+            "                          or date YYYY-MM-DD, instead of the scene's season: key\n"
             "  -q, --quiet             no progress output\n"
             "  --allow-gdal-virtual    let the scene name GDAL virtual paths, URLs and connection\n"
             "                          strings (these may reach the network; refused otherwise)\n"
@@ -38,7 +40,7 @@ static void montage_usage(FILE *out)
 
 int cmd_montage(int argc, char **argv)
 {
-    const char *scene_path = NULL;
+    const char *scene_path = NULL, *season = NULL;
     montage_options mo = {0};
     build_options bo = {0};
     for (int i = 1; i < argc; i++) {
@@ -63,6 +65,9 @@ int cmd_montage(int argc, char **argv)
         } else if (!strcmp(a, "--threads")) {
             if (!val || cli_parse_u64("montage", a, val, 1, 1024, &v)) return EXIT_USAGE;
             mo.threads = (unsigned)v, i++;
+        } else if (!strcmp(a, "--season")) {
+            if (!val) goto missing;
+            season = val, i++;
         } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
             mo.quiet = bo.quiet = 1;
         } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
@@ -82,7 +87,7 @@ int cmd_montage(int argc, char **argv)
     err_buf err = {{0}};
     cli_scene cs;
     montage_report rep = {0};
-    int rc = cli_scene_open(&cs, "montage", scene_path, NULL, &bo);
+    int rc = cli_scene_open(&cs, "montage", scene_path, NULL, season, &bo);
     if (!rc && cli_make_folder(mo.dir, &err)) rc = cli_fail("montage", &err, ERR_OUTPUT);
     if (!rc && montage_run(cs.scene, cs.sf, &mo, &rep, &err)) rc = cli_fail("montage", &err, ERR_INPUT);
     if (!rc) printf("%s\n", mo.dir);

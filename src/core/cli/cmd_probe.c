@@ -130,7 +130,7 @@ int cmd_probe(int argc, char **argv)
 
     cli_scene cs;
     probe_result r = {0};
-    int rc = cli_scene_open(&cs, "probe", scene_path, NULL, &bo);
+    int rc = cli_scene_open(&cs, "probe", scene_path, NULL, NULL, &bo);
     if (rc) goto done;
     const site_settings *site = &cs.sf->site;
     int mapped = site->crs_wkt != NULL;

@@ -19,8 +19,8 @@ static void render_usage(FILE *out)
             "depth, normal, albedo and id layers plus a tone-mapped PNG.\n\n"
             "options:\n"
             "  -o, --output FILE   FILE.png or FILE.exr; the other format is written beside it\n"
-            "                      (default: the scene's name, and _VIEWPOINT with --viewpoint,\n"
-            "                      with .png in the current folder)\n"
+            "                      (default: the scene's name, _VIEWPOINT with --viewpoint and\n"
+            "                      _SEASON with --season, with .png in the current folder)\n"
             "  --spp N             samples per pixel (overrides image.spp)\n"
             "  --size WxH          image size in pixels (overrides image.width/height)\n"
             "  --threads N         worker threads (default: one per core); the image does not\n"
@@ -32,6 +32,8 @@ static void render_usage(FILE *out)
             "                      is on (the view POV-Ray's export gives)\n"
             "  --viewpoint NAME    the view from the scene's viewpoint NAME (its viewpoints:\n"
             "                      section) instead of its camera\n"
+            "  --season S          the plants on season S (spring, summer, autumn, winter) or\n"
+            "                      date YYYY-MM-DD, instead of the scene's season: key\n"
             "  -q, --quiet         no progress output\n"
             "  --allow-gdal-virtual let the scene name GDAL virtual paths, URLs and connection\n"
             "                      strings (these may reach the network; refused otherwise)\n"
@@ -41,9 +43,10 @@ static void render_usage(FILE *out)
             "4 out of memory or internal error\n");
 }
 
-/* Fills png and exr paths from -o (or the scene's stem, and the viewpoint's name after it). */
-static int output_paths(const char *scene_path, const char *viewpoint, const char *out, char *png, char *exr,
-                        size_t n)
+/* Fills png and exr paths from -o (or the scene's stem, and the viewpoint's name and the season
+ * after it). */
+static int output_paths(const char *scene_path, const char *viewpoint, const char *season, const char *out,
+                        char *png, char *exr, size_t n)
 {
     char base[4096];
     if (out) {
@@ -59,6 +62,8 @@ static int output_paths(const char *scene_path, const char *viewpoint, const cha
         if (cli_scene_stem(scene_path, "", "", base, sizeof base)) return -1;
         size_t l = strlen(base);
         if (viewpoint && (size_t)snprintf(base + l, sizeof base - l, "_%s", viewpoint) >= sizeof base - l) return -1;
+        l = strlen(base);
+        if (season && (size_t)snprintf(base + l, sizeof base - l, "_%s", season) >= sizeof base - l) return -1;
     }
     if ((size_t)snprintf(png, n, "%s.png", base) >= n || (size_t)snprintf(exr, n, "%s.exr", base) >= n) return -1;
     return 0;
@@ -66,7 +71,7 @@ static int output_paths(const char *scene_path, const char *viewpoint, const cha
 
 int cmd_render(int argc, char **argv)
 {
-    const char *viewpoint = NULL;
+    const char *viewpoint = NULL, *season = NULL;
     const char *scene_path = NULL, *out = NULL;
     render_options ro = {0};
     build_options bo = {0};
@@ -99,6 +104,9 @@ int cmd_render(int argc, char **argv)
         } else if (!strcmp(a, "--viewpoint")) {
             if (!val) goto missing;
             viewpoint = val, i++;
+        } else if (!strcmp(a, "--season")) {
+            if (!val) goto missing;
+            season = val, i++;
         } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
             ro.quiet = bo.quiet = 1;
         } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
@@ -116,13 +124,13 @@ int cmd_render(int argc, char **argv)
         return EXIT_USAGE;
     }
     char png[4200], exr[4200];
-    if (output_paths(scene_path, viewpoint, out, png, exr, sizeof png)) return EXIT_USAGE;
+    if (output_paths(scene_path, viewpoint, season, out, png, exr, sizeof png)) return EXIT_USAGE;
 
     err_buf err = {{0}};
     double t0 = progress_now();
     cli_scene cs;
     film *f = NULL;
-    int rc = cli_scene_open(&cs, "render", scene_path, viewpoint, &bo);
+    int rc = cli_scene_open(&cs, "render", scene_path, viewpoint, season, &bo);
     if (!rc) rc = cli_scene_ground_cover(&cs, "render", ro.width, ro.height, ro.quiet);
     if (rc) goto done;
     const scene *sc = cs.scene;

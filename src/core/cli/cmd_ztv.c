@@ -39,6 +39,8 @@ static void ztv_usage(FILE *out)
             "  --screening S           none | vegetation | all: what screens besides bare earth\n"
             "                          (default all: the plants and the objects)\n"
             "  --flat-earth            straight sightlines, whatever the earth: section says\n"
+            "  --season S              the plants on season S (spring, summer, autumn, winter)\n"
+            "                          or date YYYY-MM-DD, instead of the scene's season: key\n"
             "  --threads N             worker threads (default: one per core); the maps do not\n"
             "                          depend on it\n"
             "  -q, --quiet             no progress output\n"
@@ -72,7 +74,7 @@ static int sink_block(void *user, const ztv_block *b, err_buf *err)
 
 int cmd_ztv(int argc, char **argv)
 {
-    const char *scene_path = NULL, *dir = NULL;
+    const char *scene_path = NULL, *dir = NULL, *season = NULL;
     double radius = NAN, cell = NAN, eye = NAN;
     int screening = -1, flat = 0;
     unsigned threads = 0;
@@ -107,6 +109,9 @@ int cmd_ztv(int argc, char **argv)
             i++;
         } else if (!strcmp(a, "--flat-earth")) {
             flat = 1;
+        } else if (!strcmp(a, "--season")) {
+            if (!val) goto missing;
+            season = val, i++;
         } else if (!strcmp(a, "--threads")) {
             if (!val || cli_parse_u64("ztv", a, val, 1, 1024, &v)) return EXIT_USAGE;
             threads = (unsigned)v, i++;
@@ -132,7 +137,7 @@ int cmd_ztv(int argc, char **argv)
     ztv_targets targets = {0};
     accel acc = {0};
     ztv_output *out = NULL;
-    int rc = cli_scene_open(&cs, "ztv", scene_path, NULL, &bo);
+    int rc = cli_scene_open(&cs, "ztv", scene_path, NULL, season, &bo);
     if (rc) goto done;
     const scene_file *sf = cs.sf;
     const scene *sc = cs.scene;

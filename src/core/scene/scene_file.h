@@ -304,6 +304,11 @@ void scene_file_free(scene_file *sf); /* accepts NULL */
  * -1 with err (ERR_USAGE) naming the viewpoints there are. */
 int scene_file_use_viewpoint(scene_file *sf, const char *name, err_buf *err);
 
+/* Shows the plants on the day text names (a season's name or a date YYYY-MM-DD, as the season:
+ * key takes) instead of the scene's own season (before the scene is built). Returns 0, or -1
+ * with err (ERR_USAGE) saying what would be valid. */
+int scene_file_use_season(scene_file *sf, const char *text, err_buf *err);
+
 /* Index of a material or species by name, or -1 (a hash lookup). */
 int scene_file_material_index(const scene_file *sf, const char *name);
 int scene_file_species_index(const scene_file *sf, const char *name);

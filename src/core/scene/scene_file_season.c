@@ -20,6 +20,17 @@ int sf_read_season(loader *L)
     return 0;
 }
 
+int scene_file_use_season(scene_file *sf, const char *text, err_buf *err)
+{
+    uint32_t day;
+    err_buf why = {{0}};
+    if (season_day_parse(text, &day, &why)) return err_fail(err, ERR_USAGE, "--season %s: %s", text, why.msg);
+    const char *copy = arena_strdup(sf->arena, text);
+    if (!copy) return err_fail(err, ERR_NOMEM, "out of memory");
+    sf->season = (season_settings){.day = day, .text = copy};
+    return 0;
+}
+
 int sf_read_phenology(loader *L, const char *file, const char *species, const sylva_value *v, phenology *out)
 {
     const sylva_params *p = v->group;

@@ -112,7 +112,7 @@ int main(int argc, char **argv)
            bare.median <= 0.2 ? "met" : "missed");
 
     static const char *const figures[][2] = {
-        {"scenes/aono_fig18.yaml", "fig18"}, {"scenes/aono_fig21.yaml", "fig21"},
+        {"scenes/aono_fig18.yaml", "fig18"}, {"scenes/aono_fig19.yaml", "fig19"}, {"scenes/aono_fig21.yaml", "fig21"},
         {"scenes/aono_fig22.yaml", "fig22"}, {"scenes/aono_fig23.yaml", "fig23"},
         {"scenes/aono_fig24.yaml", "fig24"}, {"scenes/species/aono_broadleaf.yaml", "aono_broadleaf"},
     };

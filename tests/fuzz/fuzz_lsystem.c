@@ -10,7 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "box_count.h"
+#include "lsys_silhouette.h"
 #include "lsys_derive.h"
 #include "lsys_mesh.h"
 #include "lsys_system.h"
@@ -88,7 +88,7 @@ static void draw(const lsys_system *sys, const unsigned char *s, size_t n)
     box_raster r = {0};
     double side = fmax(ext[0], ext[2]) * 1.0001;
     int have_raster = st.segments && side > 0 && !box_raster_init(&r, RASTER_LEVEL, st.lo[0], st.lo[2], side);
-    lsys_sink sinks[2] = {lsys_mesh_sink(mesh), box_raster_sink(&r)};
+    lsys_sink sinks[2] = {lsys_mesh_sink(mesh), lsys_silhouette_sink(&r)};
     seed = 1;
     rc = lsys_interpret(s, n, &cfg, sinks, have_raster ? 2 : 1, &st, &e);
     check_status(rc, &e, "turtle (mesh)");

@@ -1,5 +1,8 @@
-/* plugin_host.c — a plugin model's failure and random streams through the host's API table. */
+/* plugin_host.c — a plugin model's failure and random streams through the host's API table, and
+ * its last model's figures to the host. */
 #include "plugin_host.h"
+
+#include <string.h>
 
 int plugin_report(const sylva_host_api *api, sylva_host *host, const plugin_err *err)
 {
@@ -12,4 +15,12 @@ void plugin_host_stream(void *ctx, sylva_rng *rng, const char *purpose, uint64_t
 {
     const plugin_host_ref *h = ctx;
     h->api->rng_init(h->host, rng, purpose, index);
+}
+
+int plugin_tree_stats_copy(const sylva_tree_stats *last, int has_last, sylva_tree_stats *out)
+{
+    if (!has_last || !out || out->size < sizeof out->size) return SYLVA_ERR_PARAM;
+    uint32_t size = out->size < sizeof *out ? out->size : (uint32_t)sizeof *out;
+    memcpy((char *)out + sizeof out->size, (const char *)last + sizeof out->size, size - sizeof out->size);
+    return SYLVA_OK;
 }

@@ -20,4 +20,9 @@ int plugin_report(const sylva_host_api *api, sylva_host *host, const plugin_err 
 /* A model's `stream` callback: api->rng_init on the host of ctx (a plugin_host_ref). */
 void plugin_host_stream(void *ctx, sylva_rng *rng, const char *purpose, uint64_t index);
 
+/* The "sylva.tree_stats.v1" interface's last_stats for a plugin that keeps its last model's
+ * figures: copies *last into *out up to out->size (the caller's struct may be older and
+ * smaller). Returns SYLVA_OK, or SYLVA_ERR_PARAM when has_last is 0 or out is unusable. */
+int plugin_tree_stats_copy(const sylva_tree_stats *last, int has_last, sylva_tree_stats *out);
+
 #endif

@@ -9,10 +9,12 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "aono_config.h"
 #include "aono_grow.h"
 #include "aono_mesh.h"
+#include "aono_stats.h"
 #include "plugin_host.h"
 
 /* What create() keeps for generate(). Owned by the plugin until aono_destroy. */
@@ -20,6 +22,8 @@ typedef struct aono_state {
     aono_config cfg;
     int32_t bark_material;
     int32_t leaf_material; /* -1 without leaves */
+    sylva_tree_stats last; /* the figures of the last model generate() built */
+    int has_last;
 } aono_state;
 
 static void host_progress(void *ctx, uint32_t levels_done, uint32_t levels)
@@ -91,7 +95,7 @@ static int aono_create(const sylva_host_api *api, sylva_host *host, const sylva_
 
 static int aono_generate(void *state, const sylva_host_api *api, sylva_host *host, const void *request, void *out)
 {
-    const aono_state *st = state;
+    aono_state *st = state;
     const sylva_tree_request *req = request;
     sylva_tree_out *o = out;
     if (req->size < offsetof(sylva_tree_request, age) + sizeof req->age ||
@@ -112,15 +116,33 @@ static int aono_generate(void *state, const sylva_host_api *api, sylva_host *hos
     int rc = aono_mesh_branches(&st->cfg, &skel, st->bark_material, &buf, &err);
     if (!rc) rc = aono_mesh_leaves(&st->cfg, &skel, st->leaf_material, &env, &buf, &err);
     if (rc) rc = plugin_report(api, host, &err);
+    st->has_last = 0;
+    st->last = (sylva_tree_stats){.size = sizeof st->last, .age = req->age};
+    if (!rc && aono_stats_measure(&skel, &buf, st->leaf_material, &st->last)) {
+        api->error(host, "tree_aono_kunii: out of memory measuring the tree's silhouette");
+        rc = SYLVA_ERR_NOMEM;
+    }
     aono_skeleton_release(&skel);
     if (!rc) rc = api->mesh_append(host, o->mesh, buf.pos, buf.nrm, buf.uv, buf.nv, buf.tri, buf.mat, buf.nt);
     if (!rc) {
-        double top = 0.0;
-        for (uint32_t i = 0; i < buf.nv; i++) top = fmax(top, buf.pos[3 * i + 2]);
-        o->height = top;
+        o->height = st->last.height;
+        st->has_last = 1;
     }
     aono_mesh_buffer_release(&buf);
     return rc;
+}
+
+static int aono_last_stats(void *state, sylva_tree_stats *out)
+{
+    const aono_state *st = state;
+    return st ? plugin_tree_stats_copy(&st->last, st->has_last, out) : SYLVA_ERR_PARAM;
+}
+
+static const sylva_tree_stats_v1 stats_interface = {.size = sizeof stats_interface, .last_stats = aono_last_stats};
+
+static const void *aono_extension(const char *name)
+{
+    return name && !strcmp(name, SYLVA_TREE_STATS_V1) ? &stats_interface : NULL;
 }
 
 static const sylva_plugin aono_descriptor = {
@@ -137,6 +159,7 @@ static const sylva_plugin aono_descriptor = {
     .create = aono_create,
     .generate = aono_generate,
     .destroy = aono_destroy,
+    .extension = aono_extension,
 };
 
 const sylva_plugin *aono_plugin(void) { return &aono_descriptor; }

@@ -21,20 +21,17 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "box_count.h"
 #include "branch_law.h"
 #include "lsys_derive.h"
 #include "lsys_mesh.h"
 #include "lsys_palette.h"
 #include "lsys_schema.h"
+#include "lsys_silhouette.h"
 #include "lsys_system.h"
 #include "lsys_turtle.h"
 #include "plugin_host.h"
 #include "sylva/plugin.h"
 
-#define SILHOUETTE_LEVEL 10     /* the silhouette raster is 1024 x 1024 */
-#define SILHOUETTE_FIT_MIN 0    /* D_B fits the grids 1 x 1 ... */
-#define SILHOUETTE_FIT_MAX 7    /* ... 128 x 128 (boxes of 8 pixels and more) */
 #define MAX_NESTING 65536       /* [ ] and { } nesting */
 #define START_COLOUR 2          /* Lparser's starting colour index */
 
@@ -252,13 +249,10 @@ static int interpret(const tree_state *s, const sylva_host_api *api, sylva_host 
     return lsys_interpret(str, n, &cfg, sinks, n_sinks, st, e);
 }
 
-/* The silhouette raster over the model's side view (x–z), square, from the bounds. */
+/* The silhouette raster over the model's side view (x–z), from the bounds. */
 static int silhouette_init(box_raster *r, const lsys_turtle_stats *st)
 {
-    double w = st->hi[0] - st->lo[0], h = st->hi[2] - st->lo[2];
-    double size = (w > h ? w : h) * 1.0001;
-    if (!(size > 0)) return -1;
-    return box_raster_init(r, SILHOUETTE_LEVEL, st->lo[0], st->lo[2], size);
+    return box_silhouette_init(r, st->lo[0], st->lo[2], st->hi[0] - st->lo[0], st->hi[2] - st->lo[2]);
 }
 
 /* ---- the branch-number law's figures of the full-grown tree ---------------------------------- */
@@ -294,9 +288,9 @@ static int prepare_law(tree_state *s, const sylva_host_api *api, sylva_host *hos
         rc = interpret(s, api, host, str, n, NULL, 0, &st, &e);
         box_raster r = {0};
         if (!rc && st.segments && !silhouette_init(&r, &st)) {
-            lsys_sink sink = box_raster_sink(&r);
+            lsys_sink sink = lsys_silhouette_sink(&r);
             rc = interpret(s, api, host, str, n, &sink, 1, &st, &e);
-            if (!rc) s->law_dimension = box_dimension(&r, SILHOUETTE_FIT_MIN, SILHOUETTE_FIT_MAX);
+            if (!rc) s->law_dimension = box_silhouette_dimension(&r);
         }
         box_raster_free(&r);
     }
@@ -459,7 +453,7 @@ static int tree_generate(void *state, const sylva_host_api *api, sylva_host *hos
     }
     box_raster r = {0};
     int have_raster = st.segments && !silhouette_init(&r, &st);
-    lsys_sink sinks[2] = {lsys_mesh_sink(mesh), box_raster_sink(&r)};
+    lsys_sink sinks[2] = {lsys_mesh_sink(mesh), lsys_silhouette_sink(&r)};
     rc = interpret(s, api, host, str, n, sinks, have_raster ? 2 : 1, &st, &e);
     if (!rc) rc = lsys_mesh_finish(mesh);
     uint64_t triangles = lsys_mesh_triangles(mesh);
@@ -473,7 +467,7 @@ static int tree_generate(void *state, const sylva_host_api *api, sylva_host *hos
         if (rc == LSYS_ERR_SINK) return mo.status ? mo.status : SYLVA_ERR_INTERNAL;
         return fail(api, host, rc, &e);
     }
-    stats.box_dimension = have_raster ? box_dimension(&r, SILHOUETTE_FIT_MIN, SILHOUETTE_FIT_MAX) : 0.0;
+    stats.box_dimension = have_raster ? box_silhouette_dimension(&r) : 0.0;
     box_raster_free(&r);
     warn_structure(s, api, host, &st);
     o->height = size * scale;
@@ -494,11 +488,8 @@ static int tree_generate(void *state, const sylva_host_api *api, sylva_host *hos
 
 static int tree_last_stats(void *state, sylva_tree_stats *out)
 {
-    tree_state *s = state;
-    if (!s || !s->has_last || !out || out->size < sizeof out->size) return SYLVA_ERR_PARAM;
-    uint32_t size = out->size < sizeof *out ? out->size : (uint32_t)sizeof *out;
-    memcpy((char *)out + sizeof out->size, (const char *)&s->last + sizeof out->size, size - sizeof out->size);
-    return SYLVA_OK;
+    const tree_state *s = state;
+    return s ? plugin_tree_stats_copy(&s->last, s->has_last, out) : SYLVA_ERR_PARAM;
 }
 
 static const sylva_tree_stats_v1 stats_interface = {.size = sizeof stats_interface, .last_stats = tree_last_stats};

@@ -9,11 +9,14 @@
  * limits and fault tests reach it; the model's own buffers use the C library's. */
 #include <stddef.h>
 #include <stdio.h>
+#include <string.h>
 
+#include "plugin_host.h"
 #include "sylva/plugin.h"
 #include "vessel_config.h"
 #include "vessel_mesh.h"
 #include "vessel_presets.h"
+#include "vessel_stats.h"
 #include "vessel_structure.h"
 #include "vessel_texture.h"
 
@@ -23,6 +26,8 @@ typedef struct tree_vessel_state {
     vessel_params params;
     int32_t bark_material, leaf_material;
     void (*mem_free)(void *);
+    sylva_tree_stats last; /* the figures of the last model generate() built */
+    int has_last;
 } tree_vessel_state;
 
 /* Textures and materials for the species; returns 0 or a negative status (message set). */
@@ -114,7 +119,7 @@ static double wind_uniform(void *ctx)
 static int tree_vessel_generate(void *state, const sylva_host_api *api, sylva_host *host,
                                 const void *request, void *out)
 {
-    const tree_vessel_state *s = state;
+    tree_vessel_state *s = state;
     const sylva_tree_request *req = request;
     sylva_tree_out *o = out;
     if (req->size < offsetof(sylva_tree_request, seed) + sizeof req->seed ||
@@ -143,11 +148,33 @@ static int tree_vessel_generate(void *state, const sylva_host_api *api, sylva_ho
              mesh.bark_triangles, mesh.leaf_triangles, mesh.top);
     rc = api->mesh_append(host, o->mesh, mesh.pos, mesh.nrm, mesh.uv, mesh.nv, mesh.tri, mesh.mat,
                           mesh.nt);
-    if (rc == SYLVA_OK) o->height = mesh.top;
+    if (rc == SYLVA_OK) {
+        o->height = mesh.top;
+        s->last = (sylva_tree_stats){.size = sizeof s->last, .age = req->age};
+        if (vessel_stats_measure(&tree, &mesh, &s->last)) {
+            api->error(host, "tree_vessel: out of memory measuring the tree's silhouette");
+            rc = SYLVA_ERR_NOMEM;
+        }
+        s->has_last = rc == SYLVA_OK;
+    }
 done:
     vessel_mesh_release(&mesh);
     vessel_tree_release(&tree);
     return rc;
+}
+
+static int tree_vessel_last_stats(void *state, sylva_tree_stats *out)
+{
+    const tree_vessel_state *s = state;
+    return s ? plugin_tree_stats_copy(&s->last, s->has_last, out) : SYLVA_ERR_PARAM;
+}
+
+static const sylva_tree_stats_v1 stats_interface = {.size = sizeof stats_interface,
+                                                    .last_stats = tree_vessel_last_stats};
+
+static const void *tree_vessel_extension(const char *name)
+{
+    return name && !strcmp(name, SYLVA_TREE_STATS_V1) ? &stats_interface : NULL;
 }
 
 static void tree_vessel_destroy(void *state)
@@ -170,6 +197,7 @@ static const sylva_plugin tree_vessel = {
     .create = tree_vessel_create,
     .generate = tree_vessel_generate,
     .destroy = tree_vessel_destroy,
+    .extension = tree_vessel_extension,
     .preset_param = "preset",
     .presets = vessel_presets,
     .n_presets = VESSEL_PRESETS,

@@ -649,7 +649,44 @@ TEST(leaves_and_texture)
     }
 }
 
-TEST_LIST(TEST_CASE(hand_branching_tilted_mother), TEST_CASE(hand_branching_two_levels),
+/* `sylva tree-stats` figures: 5 levels of two children make 2^6 − 1 segments (the trunk is
+ * level 0) and 32 axes (the trunk and, at each of the 31 forks, the child that does not continue
+ * its mother); 3 levels of three children 40 segments and 1 + 13 · 2 = 27 axes. D_B of a
+ * branching tree's wood lies between a line's and a plane's. */
+static sylva_tree_stats stats_of(const char *yaml)
+{
+    sylva_tree_stats st = {.size = sizeof st};
+    aono_fixture fx;
+    mesh *m = NULL;
+    if (aono_fixture_open(&fx, yaml, 3) || aono_fixture_generate(&fx, 1.0, &m, NULL)) {
+        fprintf(stderr, "%s\n", fx.err.msg);
+        CHECK(0);
+        aono_fixture_close(&fx);
+        return st;
+    }
+    const sylva_tree_stats_v1 *ext = aono_plugin()->extension(SYLVA_TREE_STATS_V1);
+    CHECK(ext != NULL);
+    if (ext) CHECK_INT(ext->last_stats(fx.state, &st), SYLVA_OK);
+    if (m) CHECK_INT(st.triangles, m->nt);
+    mesh_free(m);
+    aono_fixture_close(&fx);
+    return st;
+}
+
+TEST(tree_stats_count_segments_and_axes)
+{
+    sylva_tree_stats mono = stats_of("levels: 5\npattern: monopodial\nfi: [0, 35]\n");
+    CHECK_INT(mono.recursion, 5);
+    CHECK_INT(mono.segments, 63);
+    CHECK_INT(mono.branches, 32);
+    CHECK(mono.box_dimension > 1.0 && mono.box_dimension < 2.0);
+    CHECK(mono.height > 0 && mono.bbox_max[2] == mono.height);
+    sylva_tree_stats three = stats_of("levels: 3\npattern: ternary\nfi: [25, 35, 45]\nri: [0.8, 0.7, 0.7]\n");
+    CHECK_INT(three.segments, 40);
+    CHECK_INT(three.branches, 27);
+}
+
+TEST_LIST(TEST_CASE(tree_stats_count_segments_and_axes), TEST_CASE(hand_branching_tilted_mother), TEST_CASE(hand_branching_two_levels),
           TEST_CASE(paper_transform_mirrored), TEST_CASE(frame_orthonormal_and_vertical),
           TEST_CASE(law_linear_through_two_points), TEST_CASE(law_quadratic_least_squares),
           TEST_CASE(law_exponential_at_zero_and_n2), TEST_CASE(law_drives_branching_angle),

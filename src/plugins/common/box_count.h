@@ -1,6 +1,8 @@
 /* box_count.h — the box-counting fractal dimension (002 eq. 3) of a binary image, and the
  * image itself: a square raster onto which a tree's branches are projected side-on (x–z),
- * leaves left out, as 002 counts a tree "without its leaves".
+ * leaves left out, as 002 counts a tree "without its leaves". Every tree plugin measures its
+ * models' D_B the same way: a BOX_SILHOUETTE_LEVEL raster over the side view's bounds, fitted
+ * over the grids BOX_SILHOUETTE_FIT_MIN..MAX (box_silhouette_init, box_silhouette_dimension).
  *
  * Ownership: box_raster_init allocates the pixels; box_raster_free releases them.
  */
@@ -9,9 +11,10 @@
 
 #include <stdint.h>
 
-#include "lsys_turtle.h"
-
 #define BOX_RASTER_MAX_LEVEL 14 /* rasters up to 16384 x 16384 */
+#define BOX_SILHOUETTE_LEVEL 10    /* a tree's silhouette raster is 1024 x 1024 */
+#define BOX_SILHOUETTE_FIT_MIN 0   /* its D_B fits the grids 1 x 1 ... */
+#define BOX_SILHOUETTE_FIT_MAX 7   /* ... 128 x 128 (boxes of 8 pixels and more) */
 
 typedef struct box_raster {
     uint32_t level;            /* the raster is 2^level pixels on a side */
@@ -42,8 +45,12 @@ double box_dimension_fit(const double *eps, const double *counts, int m);
 /* D_B of the raster over the grids of 2^i x 2^i boxes, i = level_min..level_max. */
 double box_dimension(const box_raster *r, uint32_t level_min, uint32_t level_max);
 
-/* A sink that projects every segment onto the raster's x–z plane with its width (the raster's
- * coordinates are the turtle's: file units). */
-lsys_sink box_raster_sink(box_raster *r);
+/* A tree's silhouette raster: BOX_SILHOUETTE_LEVEL, square, over the side view whose lower-left
+ * corner is (x0, z0) and which is w wide and h high (the larger of the two sets the square's
+ * side). Returns 0, or -1 when the view is empty or memory runs out (r is then zeroed). */
+int box_silhouette_init(box_raster *r, double x0, double z0, double w, double h);
+
+/* D_B of a silhouette raster over the grids BOX_SILHOUETTE_FIT_MIN..MAX. */
+double box_silhouette_dimension(const box_raster *r);
 
 #endif

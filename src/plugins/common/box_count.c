@@ -119,14 +119,17 @@ double box_dimension(const box_raster *r, uint32_t level_min, uint32_t level_max
     return box_dimension_fit(eps, n, m);
 }
 
-static int raster_segment(void *ctx, const lsys_segment *s)
+int box_silhouette_init(box_raster *r, double x0, double z0, double w, double h)
 {
-    box_raster *r = ctx;
-    box_raster_line(r, s->p0[0], s->p0[2], s->p1[0], s->p1[2], s->radius);
-    return 0;
+    double size = (w > h ? w : h) * 1.0001;
+    if (!(size > 0)) {
+        *r = (box_raster){0};
+        return -1;
+    }
+    return box_raster_init(r, BOX_SILHOUETTE_LEVEL, x0, z0, size);
 }
 
-lsys_sink box_raster_sink(box_raster *r)
+double box_silhouette_dimension(const box_raster *r)
 {
-    return (lsys_sink){.ctx = r, .segment = raster_segment};
+    return box_dimension(r, BOX_SILHOUETTE_FIT_MIN, BOX_SILHOUETTE_FIT_MAX);
 }

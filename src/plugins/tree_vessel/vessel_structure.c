@@ -17,12 +17,15 @@
  * by alpha_m weighted with sin^2 of the inclination (3.23),
  * then bent by alpha_w about w0 = y x w (3.37, 3.38). y_m is the world's down direction read
  * through a second frame that takes every rotation but the directed wind's (004 tracks it as
- * the inverse matrix M_m^-1); the wind's w0 is read through the true frame (M_w^-1). */
+ * the inverse matrix M_m^-1); the wind's w0 is read through the true frame (M_w^-1). Hanging
+ * branches are then kept above the ground (vessel_ground.h). */
 #include "vessel_structure.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "vessel_ground.h"
 
 #define LOD_LEVELS 10u /* 3.28, 3.29: l_LOD = 10 leaves only the first trunk segment */
 
@@ -230,6 +233,7 @@ int vessel_tree_grow(const vessel_params *p, const vessel_growth *req, vessel_tr
     }
     free(stack);
     free(table);
+    if (!rc) rc = vessel_hang_above_ground(t, p, err);
     if (rc) vessel_tree_release(t);
     return rc;
 }

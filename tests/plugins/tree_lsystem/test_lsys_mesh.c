@@ -137,9 +137,10 @@ TEST(bent_branch_is_one_closed_tube)
 {
     collected c;
     CHECK_INT(build("F+F&(50)!F>(20)'F", 8, 0, 1.0, &c), 0);
-    /* Four segments joined: 5 rings of 8 vertices (the first written once for the base cap
-     * and once as a ring) plus the tip cap; 4 * 16 side triangles plus 2 caps of 6. */
+    /* Four segments joined: 5 rings of 8 corners and the seam (the first written once for the
+     * base cap and once as a ring) plus the tip cap; 4 * 16 side triangles plus 2 caps of 6. */
     CHECK_INT(c.nt, 4 * 16 + 2 * 6);
+    CHECK_INT(c.nv, 8 + 5 * 9 + 8);
     CHECK(closed_surface(&c));
     collected_free(&c);
 }

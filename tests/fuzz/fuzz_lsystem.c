@@ -44,13 +44,15 @@ static double next_uniform(void *ctx)
     return (double)(*x >> 11) * (1.0 / 9007199254740992.0);
 }
 
-static int check_chunk(void *ctx, const float *pos, const float *nrm, uint32_t nv, const uint32_t *tri,
+static int check_chunk(void *ctx, const float *pos, const float *nrm, const float *uv, uint32_t nv, const uint32_t *tri,
                        const int32_t *material_key, uint32_t nt)
 {
     for (uint32_t i = 0; i < 3 * nt; i++)
         if (tri[i] >= nv) fail("a triangle indexes past its chunk's vertices", NULL);
     for (uint32_t i = 0; i < 3 * nv; i++)
         if (!isfinite(pos[i]) || !isfinite(nrm[i])) fail("a vertex or normal is not finite", NULL);
+    for (uint32_t i = 0; i < 2 * nv; i++)
+        if (!isfinite(uv[i])) fail("a texture coordinate is not finite", NULL);
     return 0;
 }
 
@@ -81,7 +83,7 @@ static void draw(const lsys_system *sys, const unsigned char *s, size_t n)
     for (int k = 0; k < 3; k++)
         if (!(fabs(st.lo[k] * scale) < FLT_MAX && fabs(st.hi[k] * scale) < FLT_MAX)) return;
 
-    lsys_mesh_config mc = {.sides = sys->shape == 0 ? 4 : 8, .flat = sys->shape == 0, .scale = scale,
+    lsys_mesh_config mc = {.sides = sys->shape == 0 ? 4 : 8, .flat = sys->shape == 0, .scale = scale, .bark_tile = 0.5,
                            .max_polygon_vertices = MAX_POLYGON_VERTICES, .flush = check_chunk};
     lsys_mesh *mesh = lsys_mesh_new(&mc, &e); /* owned here */
     if (!mesh) fail("lsys_mesh_new", &e);

@@ -9,6 +9,12 @@
  * (Lparser's blocks, with sides = 4); otherwise normals are radial (smooth cylinders).
  * Polygons: triangulated by ear clipping (concave outlines too), with their plane's normal.
  *
+ * Texture coordinates: a tube's u goes once round it (0 to 1 over the sides; smooth tubes repeat
+ * the first corner of each ring at u = 1, the seam) and its v runs along the branch, in metres
+ * over `bark_tile` (metres per repeat of the bark texture), carried on from ring to ring and
+ * from a parent's last ring into its branches; caps show the bark projected square to the tube
+ * at the same scale. A polygon's (u, v) is its own leaf frame (lsys_leaf_uv.h).
+ *
  * Every triangle carries a material key: colour index * 2 for wood (segments) and
  * colour index * 2 + 1 for leaves (polygons); the consumer maps keys to materials.
  * Coordinates are multiplied by `scale` (file units to metres) on the way out.
@@ -29,16 +35,17 @@
 #define LSYS_MESH_CHUNK_VERTICES 65536u   /* most vertices handed over at once */
 #define LSYS_MESH_CHUNK_TRIANGLES 131072u /* most triangles handed over at once */
 
-/* Receives one chunk: nv vertices (xyz and unit normal, float) and nt triangles whose indices
+/* Receives one chunk: nv vertices (xyz, unit normal and uv, float) and nt triangles whose indices
  * count from this chunk's first vertex, each with its material key. Returns 0, or non-zero to
  * stop (the consumer keeps its own message). */
-typedef int (*lsys_flush_fn)(void *ctx, const float *pos, const float *nrm, uint32_t nv,
+typedef int (*lsys_flush_fn)(void *ctx, const float *pos, const float *nrm, const float *uv, uint32_t nv,
                              const uint32_t *tri, const int32_t *material_key, uint32_t nt);
 
 typedef struct lsys_mesh_config {
     uint32_t sides;            /* corners of a tube's cross-section, 3..32 */
     int flat;                  /* 1: flat side faces (blocks); 0: smooth */
     double scale;              /* metres per file unit */
+    double bark_tile;          /* metres of branch per repeat of the bark texture along it, > 0 */
     uint32_t max_polygon_vertices; /* the largest polygon the turtle may hand over */
     lsys_flush_fn flush;
     void *flush_ctx;

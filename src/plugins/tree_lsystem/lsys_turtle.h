@@ -45,6 +45,8 @@ typedef struct lsys_joint {
     double center[3];
     double e1[3], e2[3];  /* the ring's plane: unit, perpendicular, e1 x e2 along the tube */
     double radius;
+    double bark_v;        /* the bark texture's v at the ring: metres along the branches from
+                           * the model's base over the bark's tile length */
     int32_t colour;       /* colour index of the tube that ends at the ring */
     uint64_t chunk;       /* the sink's output chunk holding the ring's vertices */
     uint32_t first;       /* index of the ring's first vertex in that chunk */

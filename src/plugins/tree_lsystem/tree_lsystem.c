@@ -28,6 +28,7 @@
 #include "lsys_schema.h"
 #include "lsys_silhouette.h"
 #include "lsys_system.h"
+#include "lsys_texture.h"
 #include "lsys_turtle.h"
 #include "plugin_host.h"
 #include "sylva/plugin.h"
@@ -55,6 +56,8 @@ typedef struct tree_state {
     uint32_t n_height_by_age;
     int branch_law;
     double box_dimension;           /* 0: measure */
+    double bark_tile;               /* metres of branch per repeat of the bark texture */
+    int32_t bark_texture, leaf_texture; /* host texture ids, -1: none (the key says off) */
     palette_override *palette;      /* owned */
     uint32_t n_palette;
     int32_t *material;              /* owned: material id per key (-1: not made yet) */
@@ -150,6 +153,52 @@ static int read_height_by_age(tree_state *s, const sylva_host_api *api, sylva_ho
     return SYLVA_OK;
 }
 
+/* The species' bark texture handed to the host: its id, or a negative status (message set). */
+static int32_t bark_texture(int bark, const sylva_host_api *api, sylva_host *host)
+{
+    const size_t texels = (size_t)LSYS_BARK_TEXTURE_SIZE * LSYS_BARK_TEXTURE_SIZE;
+    float *height = malloc(texels * sizeof *height); /* owned here */
+    uint8_t *rgba = malloc(texels * 4);              /* owned here */
+    int32_t id = SYLVA_ERR_NOMEM;
+    if (height && rgba) {
+        char name[64];
+        snprintf(name, sizeof name, "tree_lsystem bark %s", lsys_bark_texture_names[bark]);
+        lsys_texture_bark(bark, height, rgba);
+        id = api->texture_new(host, name, LSYS_BARK_TEXTURE_SIZE, LSYS_BARK_TEXTURE_SIZE, rgba);
+    } else {
+        api->error(host, "tree_lsystem: out of memory for the bark texture");
+    }
+    free(height);
+    free(rgba);
+    return id;
+}
+
+/* The species' leaf texture handed to the host: its id, or a negative status (message set). */
+static int32_t leaf_texture(int leaf, const sylva_host_api *api, sylva_host *host)
+{
+    uint8_t *rgba = malloc((size_t)LSYS_LEAF_TEXTURE_SIZE * LSYS_LEAF_TEXTURE_SIZE * 4); /* owned here */
+    int32_t id = SYLVA_ERR_NOMEM;
+    if (rgba && !lsys_texture_leaf(leaf, rgba)) {
+        char name[64];
+        snprintf(name, sizeof name, "tree_lsystem leaf %s", lsys_leaf_texture_names[leaf]);
+        id = api->texture_new(host, name, LSYS_LEAF_TEXTURE_SIZE, LSYS_LEAF_TEXTURE_SIZE, rgba);
+    } else {
+        api->error(host, "tree_lsystem: out of memory for the leaf texture");
+    }
+    free(rgba);
+    return id;
+}
+
+/* The species' textures (bark_texture, leaf_texture keys), made once. */
+static int make_textures(tree_state *s, const sylva_host_api *api, sylva_host *host, const sylva_params *params)
+{
+    int bark = (int)sylva_param_int(params, "bark_texture"), leaf = (int)sylva_param_int(params, "leaf_texture");
+    s->bark_texture = s->leaf_texture = -1;
+    if (bark != LSYS_BARK_TEXTURE_OFF && (s->bark_texture = bark_texture(bark, api, host)) < 0) return s->bark_texture;
+    if (leaf != LSYS_LEAF_TEXTURE_OFF && (s->leaf_texture = leaf_texture(leaf, api, host)) < 0) return s->leaf_texture;
+    return SYLVA_OK;
+}
+
 /* H(age) / height: the polyline, flat beyond its ends; at a step the later point wins. */
 static double height_fraction(const tree_state *s, double age)
 {
@@ -209,7 +258,9 @@ static int tree_create(const sylva_host_api *api, sylva_host *host, const sylva_
     s->max_polygon_vertices = (uint32_t)sylva_param_int(params, "max_polygon_vertices");
     s->branch_law = (int)sylva_param_int(params, "branch_law");
     s->box_dimension = sylva_param_real(params, "box_dimension");
-    if ((rc = read_palette(s, api, host, params)) || (rc = read_height_by_age(s, api, host, params))) {
+    s->bark_tile = sylva_param_real(params, "bark_tile_length");
+    if ((rc = read_palette(s, api, host, params)) || (rc = read_height_by_age(s, api, host, params)) ||
+        (rc = make_textures(s, api, host, params))) {
         tree_destroy(s);
         return rc;
     }
@@ -350,8 +401,10 @@ static int32_t material_for(mesh_out *o, int32_t key)
     int leaf = key % 2;
     char name[64];
     snprintf(name, sizeof name, "tree_lsystem colour %d %s", colour, leaf ? "leaf" : "wood");
+    /* The texture multiplies the colour's albedo; a leaf polygon is its own outline, so its
+     * texture is opaque and no alpha mask applies. */
     sylva_material_desc d = {.size = sizeof d, .name = name, .bsdf = leaf ? SYLVA_BSDF_LEAF : SYLVA_BSDF_LAMBERT,
-                             .texture = -1};
+                             .texture = leaf ? s->leaf_texture : s->bark_texture};
     float trans[3];
     colour_of(s, colour, d.albedo, trans);
     if (leaf) memcpy(d.transmittance, trans, sizeof trans);
@@ -364,13 +417,14 @@ static int32_t material_for(mesh_out *o, int32_t key)
     return id;
 }
 
-static int flush_to_host(void *ctx, const float *pos, const float *nrm, uint32_t nv, const uint32_t *tri,
+static int flush_to_host(void *ctx, const float *pos, const float *nrm, const float *uv, uint32_t nv,
+                         const uint32_t *tri,
                          const int32_t *key, uint32_t nt)
 {
     mesh_out *o = ctx;
     for (uint32_t i = 0; i < nt; i++)
         if ((o->mat[i] = material_for(o, key[i])) < 0) return -1;
-    int rc = o->api->mesh_append(o->host, o->mesh, pos, nrm, NULL, nv, tri, o->mat, nt);
+    int rc = o->api->mesh_append(o->host, o->mesh, pos, nrm, uv, nv, tri, o->mat, nt);
     if (rc) {
         o->status = rc;
         return -1;
@@ -442,7 +496,7 @@ static int tree_generate(void *state, const sylva_host_api *api, sylva_host *hos
     }
     mesh_out mo = {.s = s, .api = api, .host = host, .mesh = o->mesh};
     mo.mat = malloc(LSYS_MESH_CHUNK_TRIANGLES * sizeof *mo.mat);
-    lsys_mesh_config mc = {.sides = s->sides, .flat = s->flat, .scale = scale,
+    lsys_mesh_config mc = {.sides = s->sides, .flat = s->flat, .scale = scale, .bark_tile = s->bark_tile,
                            .max_polygon_vertices = s->max_polygon_vertices, .flush = flush_to_host, .flush_ctx = &mo};
     lsys_mesh *mesh = mo.mat ? lsys_mesh_new(&mc, &e) : NULL; /* owned here */
     if (!mesh) {

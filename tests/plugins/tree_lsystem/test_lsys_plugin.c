@@ -1,7 +1,7 @@
 /* test_lsys_plugin.c — the tree_lsystem module through the real host: scene files validated
  * against its schema, create/generate with the host API, age variants chosen by the branch-number
- * law, scaling, materials from the palette, the statistics interface, determinism and the
- * errors a scene author sees. */
+ * law, scaling, materials from the palette, bark and leaf textures chosen by key, the statistics
+ * interface, determinism and the errors a scene author sees. */
 #include "harness.h"
 #include "work_dir.h"
 
@@ -259,10 +259,80 @@ TEST(same_seed_same_tree)
     CHECK_INT(run_generate(&r, 1.0, 11, b, NULL), SYLVA_OK);
     CHECK_INT(run_generate(&r, 1.0, 12, c, NULL), SYLVA_OK);
     CHECK(a->nv == b->nv && !memcmp(a->pos, b->pos, 3 * sizeof(float) * a->nv));
+    CHECK(a->nv == b->nv && !memcmp(a->uv, b->uv, 2 * sizeof(float) * a->nv));
     CHECK(a->nv == c->nv && memcmp(a->pos, c->pos, 3 * sizeof(float) * a->nv) != 0);
     mesh_free(a), mesh_free(b), mesh_free(c);
     run_end(&r);
     scene_file_free(sf);
+    plugin_registry_free(reg);
+}
+
+/* The material kinds of a generated tree: the texture (by its name, or "" for none) and
+ * alpha mask of the first wood and the first leaf material, and the range of the leaves' uvs. */
+typedef struct texture_use {
+    char wood[64], leaf[64];
+    int wood_mask, leaf_mask, leaf_alpha;
+    float leaf_uv_lo, leaf_uv_hi;
+} texture_use;
+
+static int textures_of(plugin_registry *reg, const char *keys, texture_use *u)
+{
+    char yaml[1024];
+    snprintf(yaml, sizeof yaml, "%s    source: |\n      recursion 1\n      axiom F[c(8){+f-(90)f-(90)f}]F\n", keys);
+    err_buf err = {{0}};
+    scene_file *sf = species_scene(reg, yaml, &err);
+    if (!sf) {
+        fprintf(stderr, "%s\n", err.msg);
+        return -1;
+    }
+    memset(u, 0, sizeof *u);
+    u->leaf_uv_lo = 1, u->leaf_uv_hi = 0;
+    run r;
+    int rc = run_create(&r, reg, sf);
+    mesh *m = mesh_new();
+    if (!rc) rc = run_generate(&r, 1.0, 1, m, NULL);
+    for (uint32_t t = 0; !rc && t < m->nt; t++) {
+        const material *mat = &r.sc->materials[m->mat[t]];
+        int leaf = mat->bsdf == SYLVA_BSDF_LEAF;
+        const texture *tex = mat->texture >= 0 ? &r.sc->textures[mat->texture] : NULL;
+        snprintf(leaf ? u->leaf : u->wood, sizeof u->leaf, "%s", tex ? tex->name : "");
+        if (leaf) {
+            u->leaf_mask = mat->alpha_mask, u->leaf_alpha = tex && tex->has_alpha;
+            for (int k = 0; k < 3; k++)
+                for (int i = 0; i < 2; i++) {
+                    float x = m->uv[2 * m->tri[3 * t + k] + i];
+                    u->leaf_uv_lo = fminf(u->leaf_uv_lo, x), u->leaf_uv_hi = fmaxf(u->leaf_uv_hi, x);
+                }
+        } else {
+            u->wood_mask = mat->alpha_mask;
+        }
+    }
+    mesh_free(m);
+    run_end(&r);
+    scene_file_free(sf);
+    return rc;
+}
+
+/* By default the segments wear the fractal bark and the leaf polygons the affine leaf, opaque
+ * (the polygon is the outline) over uvs spanning [0, 1]; the keys choose a preset or none. */
+TEST(bark_and_leaf_textures_by_key)
+{
+    plugin_registry *reg = registry();
+    if (!reg) return;
+    texture_use u;
+    CHECK_INT(textures_of(reg, "", &u), SYLVA_OK);
+    CHECK(!strcmp(u.wood, "tree_lsystem bark furrowed"));
+    CHECK(!strcmp(u.leaf, "tree_lsystem leaf beech"));
+    CHECK(!u.wood_mask && !u.leaf_mask && !u.leaf_alpha);
+    CHECK_NEAR(u.leaf_uv_lo, 0, 1e-7);
+    CHECK_NEAR(u.leaf_uv_hi, 1, 1e-7);
+    CHECK_INT(textures_of(reg, "    leaf_texture: willow\n    bark_texture: scaly\n", &u), SYLVA_OK);
+    CHECK(!strcmp(u.wood, "tree_lsystem bark scaly"));
+    CHECK(!strcmp(u.leaf, "tree_lsystem leaf willow"));
+    CHECK_INT(textures_of(reg, "    leaf_texture: off\n    bark_texture: off\n", &u), SYLVA_OK);
+    CHECK(!strcmp(u.wood, "") && !strcmp(u.leaf, ""));
+    CHECK_INT(textures_of(reg, "    leaf_texture: spruce\n    bark_texture: off\n", &u), SYLVA_OK);
+    CHECK(!strcmp(u.wood, "") && !strcmp(u.leaf, "tree_lsystem leaf spruce"));
     plugin_registry_free(reg);
 }
 
@@ -322,6 +392,16 @@ TEST(errors_a_scene_author_sees)
     /* The schema catches values out of range before any plugin code runs. */
     CHECK_INT(try_species(reg, "    sides: 2\n    source: \"axiom F\"\n", &msg), -100);
     CHECK_STR_CONTAINS(msg.msg, "'sides' must be an integer in [5, 32]");
+    /* The texture keys, located in the scene file (line 5, the value's column). */
+    CHECK_INT(try_species(reg, "    leaf_texture: oak\n    source: \"axiom F\"\n", &msg), -100);
+    CHECK_STR_CONTAINS(msg.msg, ".yaml:5:19: 'leaf_texture' must be one of beech, maple, spruce, shrub, willow, off; got");
+    CHECK_INT(try_species(reg, "    bark_texture: Furrowed\n    source: \"axiom F\"\n", &msg), -100);
+    CHECK_STR_CONTAINS(msg.msg, ".yaml:5:19: 'bark_texture' must be one of smooth, scaly, furrowed, fissured, off; got");
+    CHECK_STR_CONTAINS(msg.msg, "did you mean 'furrowed'?");
+    CHECK_INT(try_species(reg, "    bark_texture: [smooth]\n    source: \"axiom F\"\n", &msg), -100);
+    CHECK_STR_CONTAINS(msg.msg, ".yaml:5:19: 'bark_texture' must be one of");
+    CHECK_INT(try_species(reg, "    bark_tile_length: 0\n    source: \"axiom F\"\n", &msg), -100);
+    CHECK_STR_CONTAINS(msg.msg, ".yaml:5:23: 'bark_tile_length' must be");
     plugin_registry_free(reg);
 }
 
@@ -358,4 +438,5 @@ TEST(scene_build_with_variants)
 
 TEST_LIST(TEST_CASE(descriptor_and_schema), TEST_CASE(variants_follow_the_branch_law),
           TEST_CASE(palette_and_file_colours_make_materials), TEST_CASE(same_seed_same_tree),
+          TEST_CASE(bark_and_leaf_textures_by_key),
           TEST_CASE(errors_a_scene_author_sees), TEST_CASE(scene_build_with_variants))

@@ -58,6 +58,13 @@ const sylva_param_spec lsys_schema[LSYS_SCHEMA_COUNT] = {
      .help = "Height as a fraction of height against the normalised age, points [age, fraction] with age in [0, 1]."},
     {.name = "branch_law", .type = SYLVA_P_BOOL, .def = 1,
      .help = "Choose each age variant's recursion level by the branch-number law N2 = N1 (H1/H2)^(-D/2)."},
+    {.name = "law_height", .type = SYLVA_P_REAL, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
+     .max = 10000, .unit = "m",
+     .help = "H1 of the branch-number law: the height of a measured tree with law_branches branches, from which "
+             "eq. 6 gives every variant's count (002's direction, young to old); 0: the full-grown tree."},
+    {.name = "law_branches", .type = SYLVA_P_INT, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
+     .max = 1e12, .help = "N1 of the branch-number law: the branches of the measured tree law_height high; 0: "
+                          "counted on the full-grown tree."},
     {.name = "box_dimension", .type = SYLVA_P_REAL, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
      .max = 3, .help = "D of the branch-number law; 0 measures it from the full-grown tree's silhouette."},
     {.name = "bark_texture", .type = SYLVA_P_ENUM, .def_str = "furrowed", .choices = lsys_bark_texture_names,

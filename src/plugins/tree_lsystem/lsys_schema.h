@@ -4,7 +4,7 @@
 
 #include "sylva/plugin.h"
 
-#define LSYS_SCHEMA_COUNT 23 /* entries of lsys_schema */
+#define LSYS_SCHEMA_COUNT 25 /* entries of lsys_schema */
 extern const sylva_param_spec lsys_schema[LSYS_SCHEMA_COUNT];
 
 #endif

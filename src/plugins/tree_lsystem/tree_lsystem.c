@@ -55,6 +55,8 @@ typedef struct tree_state {
     double *height_by_age;          /* owned: x y pairs */
     uint32_t n_height_by_age;
     int branch_law;
+    double law_height;              /* H1 of a measured tree (0: the full-grown tree's) */
+    double law_branches;            /* its N1 (with law_height) */
     double box_dimension;           /* 0: measure */
     double bark_tile;               /* metres of branch per repeat of the bark texture */
     int32_t bark_texture, leaf_texture; /* host texture ids, -1: none (the key says off) */
@@ -258,6 +260,16 @@ static int tree_create(const sylva_host_api *api, sylva_host *host, const sylva_
     s->max_polygon_vertices = (uint32_t)sylva_param_int(params, "max_polygon_vertices");
     s->branch_law = (int)sylva_param_int(params, "branch_law");
     s->box_dimension = sylva_param_real(params, "box_dimension");
+    s->law_height = sylva_param_real(params, "law_height");
+    s->law_branches = (double)sylva_param_int(params, "law_branches");
+    if ((s->law_height > 0) != (s->law_branches > 0)) {
+        const char *given = s->law_height > 0 ? "law_height" : "law_branches";
+        tree_destroy(s);
+        return api->param_error(host, params, given,
+                                "the branch-number law's measured tree needs both law_height and law_branches "
+                                "(H1 and N1 of 002 eq. 6); give the other one too, or neither to start from the "
+                                "full-grown tree");
+    }
     s->bark_tile = sylva_param_real(params, "bark_tile_length");
     if ((rc = read_palette(s, api, host, params)) || (rc = read_height_by_age(s, api, host, params)) ||
         (rc = make_textures(s, api, host, params))) {
@@ -461,12 +473,16 @@ static int tree_generate(void *state, const sylva_host_api *api, sylva_host *hos
     sylva_tree_stats stats = {.size = sizeof stats, .age = age};
     uint32_t level = s->recursion;
     int rc;
-    if (s->branch_law && frac < 1.0) {
+    /* Eq. 6 from the full-grown tree to each younger one, or (law_height, law_branches given)
+     * from a measured tree to every variant, the full-grown one too: the paper's direction. */
+    int measured = s->law_height > 0;
+    if (s->branch_law && (frac < 1.0 || measured)) {
         if ((rc = prepare_law(s, api, host))) return rc;
-        uint64_t n1 = s->level_branches[s->recursion];
-        if (n1 && s->law_dimension > 0) {
+        double n1 = measured ? s->law_branches : (double)s->level_branches[s->recursion];
+        double h1 = measured ? s->law_height : s->height;
+        if (n1 > 0 && s->law_dimension > 0) {
             stats.law_dimension = s->law_dimension;
-            stats.target_branches = branch_law_count((double)n1, s->height, h2, s->law_dimension);
+            stats.target_branches = branch_law_count(n1, h1, h2, s->law_dimension);
             level = branch_law_level(s->level_branches, s->recursion + 1, stats.target_branches);
         }
     }

@@ -436,7 +436,57 @@ TEST(scene_build_with_variants)
     plugin_registry_free(reg);
 }
 
+/* 002's own direction: a measured tree (H1 = law_height, N1 = law_branches) gives every
+ * variant's N2 by eq. 6, the full-grown one too; a variant as high as the measured tree takes
+ * the level with its N1. One of the two keys alone is refused at its place. */
+TEST(branch_law_from_a_measured_tree)
+{
+    plugin_registry *reg = registry();
+    if (!reg) return;
+    const char *text = "8\n30\n10\nA\nA=F[&A]^A\n";
+    lsys_system *sys = NULL;
+    lsys_error le = {{0}};
+    unsigned char *full = NULL;
+    size_t full_n = 0;
+    uint64_t level_branches[9] = {0};
+    CHECK(!lsys_read(text, strlen(text), "t", NULL, &sys, &le));
+    CHECK(sys && !lsys_derive(sys, 8, 1u << 24, count_level, level_branches, &full, &full_n, &le));
+    free(full);
+    lsys_system_free(sys);
+    char keys[512];
+    snprintf(keys, sizeof keys,
+             "    height: 10\n    box_dimension: 1.5\n    law_height: 5\n    law_branches: %llu\n"
+             "    source: |\n      8\n      30\n      10\n      A\n      A=F[&A]^A\n      @\n",
+             (unsigned long long)level_branches[4]);
+    err_buf err = {{0}};
+    scene_file *sf = species_scene(reg, keys, &err);
+    CHECK(sf != NULL);
+    run r;
+    if (sf && !run_create(&r, reg, sf) && r.stats) {
+        const double ages[2] = {1.0, 0.5};
+        for (int v = 0; v < 2; v++) {
+            mesh *m = mesh_new();
+            sylva_tree_stats st = {.size = sizeof st};
+            CHECK_INT(run_generate(&r, ages[v], 1, m, NULL), SYLVA_OK);
+            CHECK_INT(r.stats->last_stats(r.state, &st), SYLVA_OK);
+            double want = branch_law_count((double)level_branches[4], 5, 10 * ages[v], 1.5);
+            CHECK_NEAR(st.target_branches, want, 1e-9 * want);
+            CHECK_INT(st.recursion, branch_law_level(level_branches, 9, want));
+            if (ages[v] == 0.5) CHECK_INT(st.recursion, 4); /* as high as the measured tree */
+            else CHECK(st.recursion > 4 && st.recursion < 8); /* the law, not the file's level 8 */
+            mesh_free(m);
+        }
+        run_end(&r);
+    }
+    scene_file_free(sf);
+    err_buf msg;
+    CHECK_INT(try_species(reg, "    law_height: 5.6\n    source: \"axiom F\"\n", &msg), SYLVA_ERR_PARAM);
+    CHECK_STR_CONTAINS(msg.msg, ".yaml:5:17: 'law_height': the branch-number law's measured tree needs both");
+    plugin_registry_free(reg);
+}
+
 TEST_LIST(TEST_CASE(descriptor_and_schema), TEST_CASE(variants_follow_the_branch_law),
+          TEST_CASE(branch_law_from_a_measured_tree),
           TEST_CASE(palette_and_file_colours_make_materials), TEST_CASE(same_seed_same_tree),
           TEST_CASE(bark_and_leaf_textures_by_key),
           TEST_CASE(errors_a_scene_author_sees), TEST_CASE(scene_build_with_variants))

@@ -609,6 +609,19 @@ typedef struct sylva_ecology_ext_v1 {
     int (*load)(sylva_ecology_run *, const sylva_host_api *, sylva_host *, const char *path);
 } sylva_ecology_ext_v1;
 
+/* "sylva.ecology.v2": v1's table, then place(). A plugin offering v2 may answer a request for v1
+ * with the same table's v1 part (its size is then v2's). */
+#define SYLVA_ECOLOGY_EXT_V2 "sylva.ecology.v2"
+
+typedef struct sylva_ecology_ext_v2 {
+    sylva_ecology_ext_v1 v1; /* v1.size = sizeof(sylva_ecology_ext_v2) as the plugin compiled it */
+    /* Adds the run's plants with api->plant_add exactly as generate() adds those of a run it
+     * simulated to the same year (the same plants, turns, heights and normalised ages, seedlings
+     * left out alike), so a run saved and loaded renders as the run itself; *placed gets how
+     * many. */
+    int (*place)(const sylva_ecology_run *, const sylva_host_api *, sylva_host *, uint32_t *placed);
+} sylva_ecology_ext_v2;
+
 /* =============================================================================================
  * Optional interface "sylva.tree_stats.v1": the figures of the model a tree plugin built.
  *

@@ -36,6 +36,8 @@ ecology_session *ecology_session_open(const scene_file *sf, scene *s, const plug
         ecology_session_free(e);
         return NULL;
     }
+    const sylva_ecology_ext_v2 *v2 = lp->desc->extension(SYLVA_ECOLOGY_EXT_V2);
+    e->ext2 = v2 && v2->v1.size >= sizeof *v2 ? v2 : NULL;
     int rc = e->ext->run_new(e->call.state, host_api_table(), &e->call.host, &e->call.ecology, &e->run);
     if (rc) {
         e->run = NULL;
@@ -76,6 +78,18 @@ int ecology_session_load(ecology_session *e, const char *path, err_buf *err)
 {
     int rc = e->ext->load(e->run, host_api_table(), &e->call.host, path);
     return rc ? plugin_call_failed(&e->call, "load", rc, err) : 0;
+}
+
+int ecology_session_place(ecology_session *e, uint32_t *placed, err_buf *err)
+{
+    *placed = 0;
+    if (!e->ext2)
+        return err_at(err, ERR_INPUT, e->sf->path, e->sf->ecology.line, e->sf->ecology.column,
+                      "ecology plugin '%s' (%s) cannot place a saved run's plants: it offers no '%s' interface; "
+                      "give the plants as a list, or let the ecology run", e->sf->ecology.plugin, e->call.plugin->file,
+                      SYLVA_ECOLOGY_EXT_V2);
+    int rc = e->ext2->place(e->run, host_api_table(), &e->call.host, placed);
+    return rc ? plugin_call_failed(&e->call, "place", rc, err) : 0;
 }
 
 uint32_t ecology_session_count(const ecology_session *e, uint32_t which)

@@ -19,6 +19,7 @@ typedef struct ecology_session {
     const scene_file *sf;               /* borrowed */
     plugin_call call;                   /* owned: the plugin, its state and host */
     const sylva_ecology_ext_v1 *ext;    /* the plugin's */
+    const sylva_ecology_ext_v2 *ext2;   /* the plugin's, or NULL when it offers only v1 */
     sylva_ecology_run *run;             /* owned */
 } ecology_session;
 
@@ -43,6 +44,11 @@ uint32_t ecology_session_count(const ecology_session *e, uint32_t which);
 int ecology_session_plants(ecology_session *e, sylva_ecology_plant_record **out, uint32_t *n, err_buf *err);
 
 /* Factor maps: their number and each one (values owned by the run). */
+/* Adds the run's plants to the session's host (e->call.host.plants) as the plugin's generate()
+ * would place them; *placed gets how many. Fails (err set) for a plugin without
+ * "sylva.ecology.v2". */
+int ecology_session_place(ecology_session *e, uint32_t *placed, err_buf *err);
+
 uint32_t ecology_session_factor_count(const ecology_session *e);
 int ecology_session_factor(ecology_session *e, uint32_t i, sylva_ecology_factor_map *out, err_buf *err);
 

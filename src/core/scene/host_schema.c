@@ -496,6 +496,14 @@ static const sylva_param_spec plant_params[] = {
 const host_schema host_schema_plant = {"plants item", "One plant placed by hand.", plant_params,
                                        COUNT(plant_params)};
 
+static const sylva_param_spec plants_file_params[] = {
+    {.name = "file", .type = SYLVA_P_PATH, .flags = REQ,
+     .help = "An ecology run saved by sylva simulate --save: its plants are placed as the ecology would "
+             "place them, without simulating again."},
+};
+const host_schema host_schema_plants_file = {"plants file", "The plants of a saved ecology run.", plants_file_params,
+                                             COUNT(plants_file_params)};
+
 /* --- objects -------------------------------------------------------------------------------- */
 /* Keys every kind of object has: its name, where it stands and how it is turned, whether it is
  * part of the development, and the CSV layout that places it many times. */
@@ -643,7 +651,8 @@ const host_schema *host_schema_at(uint32_t i)
         &host_schema_earth,        &host_schema_ztv,          &host_schema_ztv_target,
         &host_schema_photo,        &host_schema_ground_cover,
         &host_schema_material,     &host_schema_terrain,
-        &host_schema_species,      &host_schema_phenology,    &host_schema_plant,        &host_schema_ecology,
+        &host_schema_species,      &host_schema_phenology,    &host_schema_plant,        &host_schema_plants_file,
+        &host_schema_ecology,
         &host_schema_object,       &host_schema_object_model, &host_schema_object_group,
         &host_schema_shape_box,    &host_schema_shape_sphere,
         &host_schema_shape_quad,   &host_schema_shape_disk,   &host_schema_shape_mesh};

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "io/image_io.h"
+#include "scene/ecology_session.h"
 #include "scene/host.h"
 #include "scene/plugin_call.h"
 #include "scene/scene_ground.h"
@@ -240,10 +241,34 @@ int scene_place_plants(scene *s, const sylva_plant *plants, uint32_t n, err_buf 
     return 0;
 }
 
+/* plants: {file: F}: the saved run loaded by the scene's ecology plugin and its plants placed as
+ * generate() would place them, with no year simulated. */
+static int place_saved_run(scene *s, const scene_file *sf, const plugin_registry *reg, const build_options *opt,
+                           err_buf *err)
+{
+    ecology_session *e = ecology_session_open(sf, s, reg, opt, err); /* owned here */
+    if (!e) return -1;
+    uint32_t placed = 0;
+    err_buf load = {{0}};
+    int rc = ecology_session_load(e, sf->plants_file, &load); /* a bad file is the plants: key's fault */
+    if (rc)
+        err_at(err, load.status, sf->path, sf->plants_file_line, sf->plants_file_column, "%s", err_sentence(&load));
+    if (!rc) rc = ecology_session_place(e, &placed, err);
+    if (!rc && !opt->quiet) {
+        uint32_t year = ecology_session_year(e), wanted = ecology_session_years_wanted(e);
+        fprintf(stderr, "plants: %u from the ecology run saved in %s (year %u%s), not simulated again\n", placed,
+                sf->plants_file, year, year == wanted ? "" : ", not the scene's years");
+    }
+    if (!rc) rc = scene_place_plants(s, e->call.host.plants, e->call.host.n_plants, err);
+    ecology_session_free(e);
+    return rc;
+}
+
 static int build_ecology(scene *s, const scene_file *sf, const plugin_registry *reg, const build_options *opt,
                          const plugin_call_output *out, err_buf *err)
 {
     if (!sf->ecology.plugin || opt->no_ecology) return 0;
+    if (sf->plants_file) return place_saved_run(s, sf, reg, opt, err);
     plugin_call c;
     if (plugin_call_open_ecology(&c, sf, s, reg, out, err)) return -1;
     int rc = plugin_call_ecology(&c, err);

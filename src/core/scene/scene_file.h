@@ -283,6 +283,8 @@ typedef struct scene_file {
     terrain_spec terrain;
     species_spec *species; uint32_t n_species;
     plant_spec *plants; uint32_t n_plants;
+    const char *plants_file;    /* plants: {file: F}: a saved ecology run (resolved), or NULL */
+    uint32_t plants_file_line, plants_file_column;
     ecology_spec ecology;
     group_spec *groups; uint32_t n_groups;
     object_spec *objects; uint32_t n_objects; /* layouts expanded: one per CSV row */

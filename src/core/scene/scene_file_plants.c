@@ -17,10 +17,32 @@ static int read_plant_lift(loader *L, const sylva_params *p, const sf_position *
     return 0;
 }
 
+/* plants: {file: F}: the plants of a saved ecology run, placed by the scene's ecology plugin. */
+static int read_plants_file(loader *L, const ynode *node)
+{
+    param_scope scope = {L->file, L->dir, "plants", NULL, 0, node->line, node->column};
+    const sylva_params *p;
+    if (params_validate(L->a, node, host_schema_plants_file.params, host_schema_plants_file.n_params, &scope, &p,
+                        L->err))
+        return -1;
+    const sylva_value *file = sylva_param(p, "file");
+    scene_file *sf = L->sf;
+    sf->plants_file = file->s;
+    sf->plants_file_line = file->line, sf->plants_file_column = file->column;
+    if (!sf->ecology.plugin)
+        return sf_located(L->err, L->file, node->line, node->column,
+                          "'plants: {file: ...}' places the plants of a saved ecology run, which the scene's "
+                          "ecology plugin reads back; add the ecology: section the run was made with");
+    return 0;
+}
+
 int sf_read_plants(loader *L, const ynode *node)
 {
     if (!node || ynode_is_null(node)) return 0;
-    if (sf_expect_list(L, node, "plants", "- {species: name, position: [x, y]}")) return -1;
+    if (node->kind == YNODE_MAPPING && ynode_get_pair(node, "file")) return read_plants_file(L, node);
+    if (sf_expect_list(L, node, "plants", "- {species: name, position: [x, y]}; or {file: saved.state}, a saved "
+                       "ecology run"))
+        return -1;
     scene_file *sf = L->sf;
     sf->plants = arena_alloc(L->a, (size_t)node->n_items * sizeof *sf->plants + 1);
     const char **names = arena_alloc(L->a, ((size_t)sf->n_species + 1) * sizeof *names);

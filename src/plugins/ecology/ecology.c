@@ -36,6 +36,7 @@ typedef struct eco_plugin_state {
 struct sylva_ecology_run {
     eco_sim *sim;          /* owned */
     uint32_t years_wanted; /* the scene's `years` */
+    double min_height;     /* the scene's `min_height`: shorter plants are not placed */
 };
 
 /* ---- the model's failures and random numbers, through the host ------------------------------ */
@@ -166,6 +167,29 @@ fail:
     return rc;
 }
 
+/* Hands the living plants of sim that are no seedlings (at least min_height) to the host. */
+static int place_plants(const eco_sim *sim, double min_height, const sylva_host_api *api, sylva_host *host,
+                        uint32_t *placed)
+{
+    *placed = 0;
+    for (uint32_t j = 0; j < sim->n_species; j++) {
+        const eco_species *sp = &sim->species[j];
+        for (uint32_t q = 0; q < sim->pop[j].n; q++) {
+            const eco_plant *pl = &sim->pop[j].plants[q];
+            double height = pl->h * sim->model_height[j];
+            if (!(pl->h > 0) || height < min_height) continue; /* a seedling */
+            double age = pl->age / sp->t_a;
+            sylva_plant p = {.size = sizeof p, .species = sim->request_index[j], .position = {pl->x, pl->y, pl->z},
+                             .snap_to_terrain = 1, .rotation = pl->rotation,
+                             .height = height, .age = age < 1e-6 ? 1e-6 : age > 1 ? 1 : age};
+            int rc = api->plant_add(host, &p);
+            if (rc) return rc;
+            (*placed)++;
+        }
+    }
+    return SYLVA_OK;
+}
+
 static int eco_generate(void *state, const sylva_host_api *api, sylva_host *host, const void *request, void *out)
 {
     const eco_plugin_state *st = state;
@@ -178,27 +202,14 @@ static int eco_generate(void *state, const sylva_host_api *api, sylva_host *host
     int rc = run_start(st, api, host, req, &sim);
     if (rc) return rc;
     if ((rc = run_years(sim, api, host, st->cfg.years))) goto done;
-    for (uint32_t j = 0; j < sim->n_species; j++) {
-        const eco_species *sp = &sim->species[j];
-        for (uint32_t q = 0; q < sim->pop[j].n; q++) {
-            const eco_plant *pl = &sim->pop[j].plants[q];
-            double height = pl->h * sim->model_height[j];
-            if (!(pl->h > 0) || height < st->cfg.min_height) continue; /* a seedling */
-            double age = pl->age / sp->t_a;
-            sylva_plant p = {.size = sizeof p, .species = sim->request_index[j], .position = {pl->x, pl->y, pl->z},
-                             .snap_to_terrain = 1, .rotation = pl->rotation,
-                             .height = height, .age = age < 1e-6 ? 1e-6 : age > 1 ? 1 : age};
-            if ((rc = api->plant_add(host, &p))) goto done;
-            o->n_plants++;
-        }
-    }
+    if ((rc = place_plants(sim, st->cfg.min_height, api, host, &o->n_plants))) goto done;
     api->log(host, SYLVA_LOG_DEBUG, "%u plants placed after %u years", o->n_plants, sim->year);
 done:
     eco_sim_free(sim);
     return rc;
 }
 
-/* ---- the "sylva.ecology.v1" interface ------------------------------------------------------ */
+/* ---- the "sylva.ecology.v1" and "v2" interfaces ------------------------------------------------------ */
 
 static int run_new(void *state, const sylva_host_api *api, sylva_host *host, const sylva_ecology_request *req,
                    sylva_ecology_run **run)
@@ -218,6 +229,7 @@ static int run_new(void *state, const sylva_host_api *api, sylva_host *host, con
         return rc;
     }
     r->years_wanted = st->cfg.years;
+    r->min_height = st->cfg.min_height;
     *run = r;
     return SYLVA_OK;
 }
@@ -291,24 +303,33 @@ static int run_load(sylva_ecology_run *run, const sylva_host_api *api, sylva_hos
     return eco_sim_load(run->sim, path, &err) ? plugin_report(api, host, &err) : SYLVA_OK;
 }
 
-static const sylva_ecology_ext_v1 eco_extension_v1 = {
-    .size = sizeof(sylva_ecology_ext_v1),
-    .run_new = run_new,
-    .run_free = run_free,
-    .years_wanted = run_years_wanted,
-    .year = run_year,
-    .step = run_step,
-    .plant_count = run_plant_count,
-    .plants = run_plants,
-    .factor_count = run_factor_count,
-    .factor = run_factor,
-    .save = run_save,
-    .load = run_load,
+static int run_place(const sylva_ecology_run *run, const sylva_host_api *api, sylva_host *host, uint32_t *placed)
+{
+    return place_plants(run->sim, run->min_height, api, host, placed);
+}
+
+/* v2's table; a request for v1 gets its v1 part. */
+static const sylva_ecology_ext_v2 eco_extension_v2 = {
+    .v1 = {.size = sizeof(sylva_ecology_ext_v2),
+           .run_new = run_new,
+           .run_free = run_free,
+           .years_wanted = run_years_wanted,
+           .year = run_year,
+           .step = run_step,
+           .plant_count = run_plant_count,
+           .plants = run_plants,
+           .factor_count = run_factor_count,
+           .factor = run_factor,
+           .save = run_save,
+           .load = run_load},
+    .place = run_place,
 };
 
 static const void *eco_extension(const char *id)
 {
-    return id && !strcmp(id, SYLVA_ECOLOGY_EXT_V1) ? &eco_extension_v1 : NULL;
+    if (!id) return NULL;
+    if (!strcmp(id, SYLVA_ECOLOGY_EXT_V2)) return &eco_extension_v2;
+    return !strcmp(id, SYLVA_ECOLOGY_EXT_V1) ? &eco_extension_v2.v1 : NULL;
 }
 
 static const sylva_plugin eco_descriptor = {

@@ -4,7 +4,7 @@
  * changes only how the plants look (scene_season.h), never which plants stand where.
  *
  * In spring a deciduous species' new leaves are a lighter green for a few weeks after leaf_out,
- * and a species may flower (its blossom: block, drawn by scene_blossom.h). */
+ * and a species may flower (its blossom: block, drawn by scene_spring.h). */
 #ifndef SYLVA_PHENOLOGY_H
 #define SYLVA_PHENOLOGY_H
 

@@ -418,7 +418,27 @@ const host_schema host_schema_terrain = {
     COUNT(terrain_params)};
 
 /* --- species -------------------------------------------------------------------------------- */
-static const double autumn_brown[3] = {0.3, 0.14, 0.03};
+static const double autumn_brown[3] = {0.3, 0.14, 0.03}, fresh_green[3] = {0.2, 0.34, 0.06};
+static const double blossom_white[3] = {0.85, 0.7, 0.74}, blossom_faded[3] = {0.62, 0.55, 0.45};
+static const sylva_param_spec blossom_params[] = {
+    {.name = "first_day", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 100, .min = 1, .max = 366, .unit = "day",
+     .help = "Day of the year the first flowers open."},
+    {.name = "last_day", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 120, .min = 1, .max = 366, .unit = "day",
+     .help = "Day of the year the last flowers fade (before first_day: flowering over new year)."},
+    {.name = "color", .type = SYLVA_P_VEC3, .flags = MIN | MAX, .def_list = blossom_white, .def_len = 3, .min = 0,
+     .max = 1, .help = "Albedo (linear RGB) of a flower that has just opened."},
+    {.name = "faded_color", .type = SYLVA_P_VEC3, .flags = MIN | MAX, .def_list = blossom_faded, .def_len = 3,
+     .min = 0, .max = 1, .help = "Albedo (linear RGB) a flower fades to by the end of its life."},
+    {.name = "size", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0.02, .min = 0.001, .max = 2, .unit = "m",
+     .help = "Width of an open flower, or of the cluster of flowers one disc stands for."},
+    {.name = "per_point", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0.3, .min = 0, .max = 1000,
+     .help = "Flowers per crown point (leaf of the summer crown) over the whole season."},
+    {.name = "max_per_plant", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 1500, .min = 0, .max = 100000,
+     .help = "At most this many flowers on one plant over the season."},
+};
+const host_schema host_schema_blossom = {
+    "blossom", "When and how a species flowers (docs/seasons.md).", blossom_params, COUNT(blossom_params)};
+
 static const char *const leaf_habits[] = {"evergreen", "deciduous", NULL}; /* leaf_habit order */
 static const sylva_param_spec phenology_params[] = {
     {.name = "habit", .type = SYLVA_P_ENUM, .def_str = "evergreen", .choices = leaf_habits,
@@ -431,6 +451,12 @@ static const sylva_param_spec phenology_params[] = {
      .help = "Day of the year a deciduous species' leaves start to turn toward autumn_color."},
     {.name = "autumn_color", .type = SYLVA_P_VEC3, .flags = MIN | MAX, .def_list = autumn_brown, .def_len = 3, .min = 0,
      .max = 1, .help = "Leaf albedo (linear RGB) a deciduous species reaches at leaf_fall."},
+    {.name = "fresh_color", .type = SYLVA_P_VEC3, .flags = MIN | MAX, .def_list = fresh_green, .def_len = 3, .min = 0,
+     .max = 1, .help = "Albedo (linear RGB) of a deciduous species' new leaves at leaf_out."},
+    {.name = "fresh_days", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 21, .min = 0, .max = 120, .unit = "day",
+     .help = "Days after leaf_out the new leaves take to reach their summer colour (0: no fresh green)."},
+    {.name = "blossom", .type = SYLVA_P_GROUP, .group = blossom_params, .n_group = COUNT(blossom_params),
+     .help = "The species' flowers: days, colours, size and number (none when not given)."},
 };
 const host_schema host_schema_phenology = {
     "phenology", "When a species carries its leaves (docs/seasons.md).", phenology_params,
@@ -651,8 +677,8 @@ const host_schema *host_schema_at(uint32_t i)
         &host_schema_earth,        &host_schema_ztv,          &host_schema_ztv_target,
         &host_schema_photo,        &host_schema_ground_cover,
         &host_schema_material,     &host_schema_terrain,
-        &host_schema_species,      &host_schema_phenology,    &host_schema_plant,        &host_schema_plants_file,
-        &host_schema_ecology,
+        &host_schema_species,      &host_schema_phenology,    &host_schema_blossom,      &host_schema_plant,
+        &host_schema_plants_file,  &host_schema_ecology,
         &host_schema_object,       &host_schema_object_model, &host_schema_object_group,
         &host_schema_shape_box,    &host_schema_shape_sphere,
         &host_schema_shape_quad,   &host_schema_shape_disk,   &host_schema_shape_mesh};

@@ -39,6 +39,7 @@ extern const host_schema host_schema_material;     /* one entry of materials: */
 extern const host_schema host_schema_terrain;      /* terrain's host keys */
 extern const host_schema host_schema_species;      /* a species' host keys */
 extern const host_schema host_schema_phenology;    /* a species' phenology: block */
+extern const host_schema host_schema_blossom;      /* its blossom: block */
 extern const host_schema host_schema_plant;        /* one item of plants: */
 extern const host_schema host_schema_plants_file;  /* plants: {file: ...} */
 extern const host_schema host_schema_object;       /* one item of objects: (without shape keys) */

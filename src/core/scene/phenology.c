@@ -46,3 +46,17 @@ double phenology_autumn_share(const phenology *p, uint32_t day)
     if (!span || since >= span) return 0; /* a day in leaf before colouring */
     return (double)since / span;
 }
+
+double phenology_fresh_share(const phenology *p, uint32_t day)
+{
+    if (p->habit == HABIT_EVERGREEN || !p->fresh_days || !phenology_in_leaf(p, day)) return 0;
+    uint32_t since = (day + 366 - p->leaf_out) % 366;
+    return since >= p->fresh_days ? 0 : 1 - (double)since / p->fresh_days;
+}
+
+int phenology_blossom_day(const phenology *p, uint32_t day)
+{
+    if (!p->blossom.given) return -1;
+    uint32_t since = (day + 366 - p->blossom.first) % 366, span = (p->blossom.last + 366 - p->blossom.first) % 366;
+    return since <= span ? (int)since : -1;
+}

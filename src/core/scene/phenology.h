@@ -3,7 +3,8 @@
  * the days its leaves come out and fall. One ecology run serves every season: the season
  * changes only how the plants look (scene_season.h), never which plants stand where.
  *
- * Spring is where blossom belongs (a species' flowering days beside its leaf days). */
+ * In spring a deciduous species' new leaves are a lighter green for a few weeks after leaf_out,
+ * and a species may flower (its blossom: block, drawn by scene_spring.h). */
 #ifndef SYLVA_PHENOLOGY_H
 #define SYLVA_PHENOLOGY_H
 
@@ -29,6 +30,18 @@ typedef struct phenology {
     uint32_t leaf_fall;       /* day of the year the last leaves have fallen (deciduous) */
     uint32_t colouring;       /* day of the year the leaves start to turn (deciduous; in leaf then) */
     double autumn_color[3];   /* linear RGB the leaves' albedo reaches at leaf_fall */
+    double fresh_color[3];    /* linear RGB of the new leaves' albedo at leaf_out (deciduous) */
+    uint32_t fresh_days;      /* days after leaf_out until the leaves have their summer colour */
+    struct flowering {        /* the blossom: block */
+        int given;            /* 0: the species does not flower visibly */
+        uint32_t first, last; /* days of the year the flowers are open (last < first: over new year) */
+        double color[3], faded_color[3]; /* linear RGB of an open flower and of one at its end */
+        double size;          /* metres across an open flower */
+        double per_point;     /* flowers per crown point over the season (expected) */
+        uint32_t max_per_plant;
+        const char *file;     /* where the block is written, for messages at build time */
+        uint32_t line, column;
+    } blossom;
 } phenology;
 
 /* The day of the year of text: spring, summer, autumn, winter, or a date YYYY-MM-DD (the
@@ -43,5 +56,13 @@ int phenology_in_leaf(const phenology *p, uint32_t day);
 /* How far the leaves have turned on day: 0 until colouring (and for evergreens and leafless
  * days), rising linearly to 1 at leaf_fall (days counted round the year's end). */
 double phenology_autumn_share(const phenology *p, uint32_t day);
+
+/* How fresh the leaves still are on day: 1 at leaf_out, falling linearly to 0 at fresh_days
+ * after it (0 for evergreens, leafless days and fresh_days 0). */
+double phenology_fresh_share(const phenology *p, uint32_t day);
+
+/* Days since the blossom's first day when day falls in [first, last] (counted round the year's
+ * end), else -1 (and -1 when no blossom is given). */
+int phenology_blossom_day(const phenology *p, uint32_t day);
 
 #endif

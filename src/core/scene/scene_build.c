@@ -12,6 +12,7 @@
 #include "scene/plugin_call.h"
 #include "scene/scene_ground.h"
 #include "scene/scene_season.h"
+#include "scene/scene_spring.h"
 #include "scene/shapes.h"
 
 xform3x4 plant_transform(const double p[3], double rot_deg, double scale)
@@ -295,7 +296,8 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
         build_terrain(s, sf, plugins, &out, err) || scene_ground_camera(s, sf, err) ||
         build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) ||
         build_ecology(s, sf, plugins, opt, &out, err) || scene_build_objects(s, sf, err) ||
-        scene_apply_season(s, sf, err)) {
+        scene_apply_blossom(s, sf, NULL, err) || scene_apply_season(s, sf, err) ||
+        scene_apply_fresh_leaves(s, sf, err)) {
         scene_free(s);
         return NULL;
     }

@@ -1,5 +1,5 @@
 /* scene_file_season.c — the scene's season: key (a season's name or a date) and each species'
- * phenology: block, read into days of the year (phenology.h). */
+ * phenology: block with its blossom: block, read into days of the year (phenology.h). */
 #include "scene/scene_file_loader.h"
 
 int sf_read_season(loader *L)
@@ -31,6 +31,19 @@ int scene_file_use_season(scene_file *sf, const char *text, err_buf *err)
     return 0;
 }
 
+/* The blossom: block v (defaults when not given: no blossom). Its ranges are the schema's. */
+static void sf_read_blossom(const char *file, const sylva_value *v, struct flowering *out)
+{
+    const sylva_params *p = v->group;
+    out->given = v->is_set;
+    out->first = (uint32_t)sylva_param(p, "first_day")->i, out->last = (uint32_t)sylva_param(p, "last_day")->i;
+    const sylva_value *open = sylva_param(p, "color"), *faded = sylva_param(p, "faded_color");
+    for (int c = 0; c < 3; c++) out->color[c] = open->list[c], out->faded_color[c] = faded->list[c];
+    out->size = sylva_param(p, "size")->r, out->per_point = sylva_param(p, "per_point")->r;
+    out->max_per_plant = (uint32_t)sylva_param(p, "max_per_plant")->i;
+    out->file = file, out->line = v->line, out->column = v->column;
+}
+
 int sf_read_phenology(loader *L, const char *file, const char *species, const sylva_value *v, phenology *out)
 {
     const sylva_params *p = v->group;
@@ -45,13 +58,17 @@ int sf_read_phenology(loader *L, const char *file, const char *species, const sy
                           fall_day->is_set ? fall_day->column : v->column,
                           "species '%s': leaf_fall (day %u) equals leaf_out; a deciduous species needs "
                           "some days in leaf (an evergreen: habit: evergreen)", species, out->leaf_fall);
+    const sylva_value *fresh = sylva_param(p, "fresh_color"), *fresh_days = sylva_param(p, "fresh_days");
+    for (int c = 0; c < 3; c++) out->fresh_color[c] = fresh->list[c];
+    out->fresh_days = (uint32_t)fresh_days->i;
+    sf_read_blossom(file, sylva_param(p, "blossom"), &out->blossom);
     if (out->habit == HABIT_EVERGREEN) {
-        const sylva_value *given[] = {out_day, fall_day, turn_day, colour};
-        for (int k = 0; k < 4; k++)
+        const sylva_value *given[] = {out_day, fall_day, turn_day, colour, fresh, fresh_days};
+        for (int k = 0; k < 6; k++)
             if (given[k]->is_set)
                 return sf_located(L->err, file, given[k]->line, given[k]->column,
-                                  "species '%s': leaf days and autumn_color apply to habit: deciduous; an "
-                                  "evergreen is in leaf all year", species);
+                                  "species '%s': leaf days and autumn_color apply to habit: deciduous, as "
+                                  "do fresh_color and fresh_days; an evergreen is in leaf all year", species);
         return 0;
     }
     if (!phenology_in_leaf(out, out->colouring))

@@ -46,3 +46,11 @@ double phenology_autumn_share(const phenology *p, uint32_t day)
     if (!span || since >= span) return 0; /* a day in leaf before colouring */
     return (double)since / span;
 }
+
+double phenology_fallen_share(const phenology *p, uint32_t day)
+{
+    if (p->habit == HABIT_EVERGREEN) return 0;
+    if (!phenology_in_leaf(p, day)) return 1;
+    double f = phenology_autumn_share(p, day);
+    return f * f;
+}

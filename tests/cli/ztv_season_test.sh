@@ -5,10 +5,8 @@
 # it or part of it) must shrink to at most 75 % of summer's, the area from which it hides the
 # whole mast to at most half; the bare-earth map must not change.
 set -uo pipefail
-sylva=$1 scene=$2
-out=$(mktemp -d)
+sylva=$1 scene=$2 fails=0 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-fails=0
 fail() { echo "FAIL: $*" >&2; fails=$((fails + 1)); }
 
 grep -q '^season: summer$' "$scene" || { echo "FAIL: $scene has no 'season: summer' line" >&2; exit 1; }

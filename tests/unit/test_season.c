@@ -298,13 +298,19 @@ TEST(partial_leaf_fall_drops_whole_leaves_by_the_share)
     scene_free(s);
 }
 
-/* A bad season or phenology is refused at its place: file:line:column and what would be valid. */
+/* A bad season, snow or phenology is refused at its place: file:line:column and what would be
+ * valid. Snow needs a terrain with procedural ground (here there is none; an inline grid
+ * likewise). */
 TEST(bad_season_is_located)
 {
     static const struct { const char *line; const char *where; const char *says; } cases[] = {
         {"season: winterr\n", ":3:9:", "neither a season (spring, summer, autumn or winter) nor a date"},
         {"season: 2026-02-30\n", ":3:9:", "month 02 of 2026 has days 01 to 28"},
         {"season: {day: 3}\n", ":3:9:", "must be spring, summer, autumn, winter or a date YYYY-MM-DD"},
+        {"snow: {cover: 0.8}\n", ":3:1:", "'snow' lies on the procedural ground of a terrain plugin"},
+        {"snow: {cover: 1.5}\n", ":3:15:", "cover"},
+        {"snow: {depth: 0.3}\n", ":3:8:", "depth"},
+        {"snow: {min_height: 10000}\n", ":3:20:", "min_height"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         err_buf err = {{0}};
@@ -314,6 +320,15 @@ TEST(bad_season_is_located)
         CHECK_STR_CONTAINS(err.msg, cases[i].where);
         CHECK_STR_CONTAINS(err.msg, cases[i].says);
     }
+}
+
+/* Left out, a scene has no snow. */
+TEST(snow_is_off_by_default)
+{
+    err_buf err = {{0}};
+    scene_file *sf = load_season("", &err);
+    CHECK(sf && !sf->snow.on);
+    scene_file_free(sf);
 }
 
 TEST(bad_phenology_is_located)
@@ -352,4 +367,4 @@ TEST_LIST(TEST_CASE(season_names_and_dates), TEST_CASE(deciduous_in_leaf_between
           TEST_CASE(leaves_turn_from_colouring_to_leaf_fall), TEST_CASE(leaves_fall_ever_faster_while_they_turn),
           TEST_CASE(partial_leaf_fall_drops_whole_leaves_by_the_share), TEST_CASE(autumn_turns_only_the_deciduous_leaves),
           TEST_CASE(summer_and_winter_hold_the_same_instances), TEST_CASE(winter_rays_meet_no_deciduous_leaf),
-          TEST_CASE(bad_season_is_located), TEST_CASE(bad_phenology_is_located))
+          TEST_CASE(bad_season_is_located), TEST_CASE(snow_is_off_by_default), TEST_CASE(bad_phenology_is_located))

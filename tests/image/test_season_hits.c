@@ -3,7 +3,8 @@
  * seasons hold identical instance lists (prototype, transform, development); in winter no ray
  * through a pixel of the image meets a deciduous leaf (the hit the id layer records names the
  * species, its material says leaf or wood) while in summer many do; in autumn the share of each
- * deciduous species' leaves that is down is the one its phenology gives for the day. */
+ * deciduous species' leaves that is down is the one its phenology gives for the day; snow's
+ * min_height is read as a map height. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,9 +22,9 @@ static plugin_registry *registry; /* opened once, freed at exit */
 
 static void registry_free(void) { plugin_registry_free(registry); }
 
-/* The season scene with its `season: summer` line set to `season: name`; NULL after a failed
- * CHECK. The caller frees both. */
-static scene *build_in(const char *name, scene_file **out_sf)
+/* The season scene with its `season: summer` line set to `season: name` and the line `extra`
+ * after it, loaded; NULL after a failed CHECK. The caller frees it. */
+static scene_file *load_in(const char *name, const char *extra)
 {
     err_buf err = {{0}};
     if (!registry) {
@@ -34,7 +35,10 @@ static scene *build_in(const char *name, scene_file **out_sf)
     CHECK(registry != NULL);
     FILE *f = fopen(SYLVA_TEST_DATA_DIR "/scenes/image/season_summer.yaml", "rb");
     CHECK(f != NULL);
-    if (!f || !registry) return NULL;
+    if (!f || !registry) {
+        if (f) fclose(f);
+        return NULL;
+    }
     static char text[1 << 16];
     size_t n = fread(text, 1, sizeof text - 1, f);
     fclose(f);
@@ -43,14 +47,22 @@ static scene *build_in(const char *name, scene_file **out_sf)
     CHECK(at != NULL);
     if (!at) return NULL;
     static char changed[1 << 16];
-    snprintf(changed, sizeof changed, "%.*s\nseason: %s\n%s", (int)(at - text), text, name,
+    snprintf(changed, sizeof changed, "%.*s\nseason: %s\n%s%s", (int)(at - text), text, name, extra,
              at + strlen("\nseason: summer\n"));
     char file[64];
-    snprintf(file, sizeof file, "season_%s.yaml", name);
+    snprintf(file, sizeof file, "season_%s%s.yaml", name, extra[0] ? "_extra" : "");
     const char *path = work_file(file, changed);
     scene_file *sf = path ? scene_file_load(path, registry, &err) : NULL;
     if (!sf) fprintf(stderr, "%s\n", err.msg);
     CHECK(sf != NULL);
+    return sf;
+}
+
+/* The season scene in season `name`, built; NULL after a failed CHECK. The caller frees both. */
+static scene *build_in(const char *name, scene_file **out_sf)
+{
+    err_buf err = {{0}};
+    scene_file *sf = load_in(name, "");
     if (!sf) return NULL;
     build_options bo = {.quiet = 1};
     scene *s = scene_build(sf, registry, &bo, &err);
@@ -180,5 +192,22 @@ TEST(autumn_leaf_fall_matches_the_day)
     scene_file_free(sf_summer), scene_file_free(sf_autumn);
 }
 
-TEST_LIST(TEST_CASE(winter_pixels_meet_no_deciduous_leaf), TEST_CASE(four_seasons_hold_the_same_instances),
+/* snow: min_height is a map height, as the terrain's altitudes: the local frame's is that less
+ * the site origin's height; left out, snow lies at every height. */
+TEST(snow_min_height_is_a_map_height)
+{
+    scene_file *sf = load_in("winter", "site: {crs: EPSG:32633, origin: [500000, 5400000, 300]}\n"
+                                       "snow: {cover: 0.5, min_height: 350}\n");
+    CHECK(sf && sf->snow.on);
+    if (sf) {
+        CHECK_NEAR(sf->snow.min_height, 50, 1e-9);
+        CHECK_NEAR(sf->snow.cover, 0.5, 0);
+    }
+    scene_file_free(sf);
+    sf = load_in("winter", "snow: {}\n");
+    CHECK(sf && sf->snow.on && sf->snow.cover == 1 && sf->snow.min_height == -HUGE_VAL);
+    scene_file_free(sf);
+}
+
+TEST_LIST(TEST_CASE(snow_min_height_is_a_map_height), TEST_CASE(winter_pixels_meet_no_deciduous_leaf), TEST_CASE(four_seasons_hold_the_same_instances),
           TEST_CASE(autumn_leaf_fall_matches_the_day))

@@ -304,7 +304,7 @@ static const sylva_param_spec snow_params[] = {
     {.name = "cover", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 1, .min = 0, .max = 1,
      .help = "Share of the open ground under snow: 1 a closed cover, less leaves patches of ground bare."},
     {.name = "min_height", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = -12000, .max = 9000,
-     .unit = "m", .help = "Snow lies only above this height (default: at every height)."},
+     .unit = "m", .help = "Snow lies only above this map height, as the terrain's altitudes (default: at every height)."},
 };
 const host_schema host_schema_snow = {
     "snow", "Snow lying on the terrain's procedural ground (docs/seasons.md).", snow_params,

@@ -113,7 +113,7 @@ typedef struct ground_cover_settings {
 typedef struct snow_settings {
     int on;                 /* 1: the scene has a snow: section */
     double cover;           /* share of the open ground the snow covers, 0..1 (1: all of it) */
-    double min_height;      /* metres: snow lies only above this height (-HUGE_VAL: everywhere) */
+    double min_height;      /* metres, local frame: snow lies only above it (-HUGE_VAL: everywhere) */
 } snow_settings;
 
 typedef enum sky_model { SKY_NONE = 0, SKY_CONSTANT = 1, SKY_PREETHAM = 2, SKY_PHYSICAL = 3 } sky_model;

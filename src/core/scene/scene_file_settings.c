@@ -465,7 +465,8 @@ int sf_read_snow(loader *L)
     const sylva_value *min_height = sylva_param(p, "min_height");
     s->on = pr != NULL;
     s->cover = sylva_param_real(p, "cover");
-    s->min_height = min_height->is_set ? min_height->r : -HUGE_VAL;
+    /* a map height, as the terrain's altitudes are: the local frame's z = 0 is the site origin's */
+    s->min_height = min_height->is_set ? min_height->r - L->sf->site.origin[2] : -HUGE_VAL;
     if (s->on && L->sf->terrain.source != TERRAIN_PLUGIN)
         return sf_located(L->err, L->file, pr->key_line, pr->key_column,
                           "'snow' lies on the procedural ground of a terrain plugin (terrain: {plugin: "

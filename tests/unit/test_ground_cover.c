@@ -1,6 +1,7 @@
 /* Ground-cover weights (geometry/ground_cover.h): each rule picks its kind, the weights sum to
  * one and are continuous everywhere (no jump at a cell's edge, as per-node classes had), the
- * canopy comes from the plants' crowns, and a terrain without ground rules keeps its materials. */
+ * canopy comes from the plants' crowns, a terrain without ground rules keeps its materials, and
+ * the scene's lying snow (snow:) covers its share of the open ground above its height. */
 #include "geometry/ground_cover.h"
 #include "ground_fixture.h"
 #include "harness.h"
@@ -171,5 +172,41 @@ TEST(terrain_without_rules_keeps_its_materials)
     CHECK_STR_CONTAINS(ground_kind_name(GROUND_FOREST_FLOOR), "forest floor");
 }
 
-TEST_LIST(TEST_CASE(each_rule_picks_its_kind), TEST_CASE(canopy_from_the_crowns), TEST_CASE(dry_grass_from_the_humidity),
+/* The mean weight of kind k on map m of scene s with snow settings w. */
+static double mean_with_snow(scene *s, snow_settings w, ground_kind k)
+{
+    s->snow = w;
+    ground_cover_map *m = map_of(s);
+    double got = m ? mean_weight(m, k) : -1;
+    ground_cover_map_free(m);
+    return got;
+}
+
+TEST(lying_snow_covers_its_share_above_its_height)
+{
+    scene *s = fixture_scene(51, 51, 0, 0, 4, flat10, 1);
+    CHECK(s != NULL);
+    if (!s) return;
+    const double everywhere = -HUGE_VAL;
+    CHECK_NEAR(mean_with_snow(s, (snow_settings){0, 1, everywhere}, GROUND_SNOW), 0, 0); /* off: meadow */
+    CHECK(mean_with_snow(s, (snow_settings){1, 1, everywhere}, GROUND_SNOW) > 0.99);
+    CHECK_NEAR(mean_with_snow(s, (snow_settings){1, 0, everywhere}, GROUND_SNOW), 0, 0);
+    /* a partial cover: its share of the ground, in patches */
+    static const double covers[] = {0.25, 0.6, 0.9};
+    for (size_t i = 0; i < sizeof covers / sizeof *covers; i++) {
+        double got = mean_with_snow(s, (snow_settings){1, covers[i], everywhere}, GROUND_SNOW);
+        fprintf(stderr, "cover %.2f: mean snow weight %.3f\n", covers[i], got);
+        CHECK_NEAR(got, covers[i], 0.08);
+    }
+    /* above its height only: 10 m ground under snow from 5 m, not under snow from 20 m */
+    CHECK(mean_with_snow(s, (snow_settings){1, 1, 5}, GROUND_SNOW) > 0.99);
+    CHECK_NEAR(mean_with_snow(s, (snow_settings){1, 1, 20}, GROUND_SNOW), 0, 0);
+    scene_free(s);
+    /* it slides off 60-degree ground, as the snow line's does */
+    s = fixture_scene(51, 51, 0, 0, 4, steep, 1);
+    CHECK(s && mean_with_snow(s, (snow_settings){1, 1, everywhere}, GROUND_SNOW) < 0.01);
+    scene_free(s);
+}
+
+TEST_LIST(TEST_CASE(lying_snow_covers_its_share_above_its_height), TEST_CASE(each_rule_picks_its_kind), TEST_CASE(canopy_from_the_crowns), TEST_CASE(dry_grass_from_the_humidity),
           TEST_CASE(weights_sum_to_one_and_are_continuous), TEST_CASE(terrain_without_rules_keeps_its_materials))

@@ -1,7 +1,7 @@
 /* test_ground_cover_place.c — the ground cover near the camera: its density by the ground's
  * kinds and slope, placement that is the same in every run and follows the density (none on snow
- * or water, plenty on meadow), only in view and within the radius, and a count kept to
- * max_instances. */
+ * or water, plenty on meadow; none where the scene's snow lies), only in view and within the
+ * radius, and a count kept to max_instances. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -101,6 +101,37 @@ done:
     scene_free(a), scene_free(b);
 }
 
+/* Lying snow (snow:) buries the meadow's tufts where it lies: all under a closed cover (but on a
+ * cliff), about half under a cover of one half, the same ones on every run. */
+TEST(no_tufts_where_snow_lies)
+{
+    scene *open = split_scene(), *closed = split_scene(), *half = split_scene(), *again = split_scene();
+    CHECK(open && closed && half && again);
+    if (!open || !closed || !half || !again) goto done;
+    closed->snow = (snow_settings){1, 1, -HUGE_VAL};
+    half->snow = again->snow = (snow_settings){1, 0.5, -HUGE_VAL};
+    err_buf err = {{0}};
+    ground_cover_report r_open, r_closed, r_half, r_again;
+    CHECK_INT(ground_cover_add(open, &cover, 320, 180, &r_open, &err), 0);
+    CHECK_INT(ground_cover_add(closed, &cover, 320, 180, &r_closed, &err), 0);
+    CHECK_INT(ground_cover_add(half, &cover, 320, 180, &r_half, &err), 0);
+    CHECK_INT(ground_cover_add(again, &cover, 320, 180, &r_again, &err), 0);
+    fprintf(stderr, "tufts: %u without snow, %u under a closed cover, %u under half a cover\n", r_open.instances,
+            r_closed.instances, r_half.instances);
+    CHECK(r_open.instances > 1000);
+    /* none under a closed cover but on the plateau's cliff, where the snow slides off */
+    uint32_t off_the_cliff = 0;
+    for (uint32_t i = 0; i < closed->n_instances; i++) off_the_cliff += fabsf(closed->instances[i].xf.m[0][3]) > 3;
+    CHECK(r_closed.instances < 50);
+    CHECK_INT(off_the_cliff, 0);
+    CHECK(r_half.instances > 0.3 * r_open.instances && r_half.instances < 0.7 * r_open.instances);
+    CHECK_INT(r_again.instances, r_half.instances);
+    CHECK(half->n_instances == again->n_instances &&
+          !memcmp(half->instances, again->instances, half->n_instances * sizeof *half->instances));
+done:
+    scene_free(open), scene_free(closed), scene_free(half), scene_free(again);
+}
+
 TEST(count_kept_to_the_cap)
 {
     scene *s = split_scene(), *off = split_scene();
@@ -142,5 +173,5 @@ TEST(surface_height_on_the_finest_level)
     CHECK_NEAR(z, 0.0, 1e-9);
 }
 
-TEST_LIST(TEST_CASE(surface_height_on_the_finest_level), TEST_CASE(density_by_kind_and_slope), TEST_CASE(placement_follows_the_ground),
+TEST_LIST(TEST_CASE(surface_height_on_the_finest_level), TEST_CASE(no_tufts_where_snow_lies), TEST_CASE(density_by_kind_and_slope), TEST_CASE(placement_follows_the_ground),
           TEST_CASE(count_kept_to_the_cap))

@@ -2,8 +2,9 @@
  * days of the year, bad ones refused at their place in the file; one scene built in summer and
  * in winter (and in autumn) holds the same instances (prototype, transform, development) in the
  * same order; in winter no ray meets a deciduous species' leaves, while its wood, an evergreen's
- * leaves and every plant's place stay; in autumn only the deciduous leaves' materials turn; the
- * command line's --season overrides the key. */
+ * leaves and every plant's place stay; in autumn only the deciduous leaves' materials turn, and
+ * the share of whole leaves the day gives is down, the same leaves on every run; the command
+ * line's --season overrides the key. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -15,6 +16,7 @@
 #include "scene/scene_build.h"
 #include "scene/scene_file.h"
 #include "scene/scene_season.h"
+#include "scene/mesh.h"
 
 /* A deciduous "oak" (a leaf quad 3 m up), an evergreen "pine" (the same), a deciduous "post" of
  * wood (a Lambertian box): one plant of each along x. */
@@ -213,13 +215,103 @@ TEST(autumn_turns_only_the_deciduous_leaves)
     scene_free(summer), scene_free(autumn);
 }
 
-/* A bad season or phenology is refused at its place: file:line:column and what would be valid. */
+TEST(leaves_fall_ever_faster_while_they_turn)
+{
+    phenology oak = {HABIT_DECIDUOUS, 110, 300, 270, {0.3, 0.1, 0}}, pine = {HABIT_EVERGREEN, 110, 300, 270, {0}};
+    CHECK_NEAR(phenology_fallen_share(&oak, 200), 0, 0);
+    CHECK_NEAR(phenology_fallen_share(&oak, 270), 0, 0);
+    CHECK_NEAR(phenology_fallen_share(&oak, 285), 0.25, 1e-12); /* half turned, a quarter down */
+    CHECK_NEAR(phenology_fallen_share(&oak, 294), 0.64, 1e-12);
+    CHECK_NEAR(phenology_fallen_share(&oak, 300), 1, 0); /* leaf-off */
+    CHECK_NEAR(phenology_fallen_share(&oak, 20), 1, 0);
+    CHECK_NEAR(phenology_fallen_share(&pine, 294), 0, 0);
+}
+
+/* A mesh of n leaf quads (4 vertices, 2 triangles each, of material leaf) with a wood triangle
+ * after every tenth quad; caller frees. */
+static mesh *leaf_quads(uint32_t n, int32_t leaf, int32_t wood)
+{
+    mesh *m = mesh_new();
+    CHECK(m != NULL);
+    err_buf err = {{0}};
+    for (uint32_t q = 0; m && q < n; q++) {
+        float x = (float)(q % 64), y = (float)(q / 64);
+        const float pos[12] = {x, y, 0, x + 0.5f, y, 0, x + 0.5f, y + 0.5f, 0, x, y + 0.5f, 0};
+        static const uint32_t tri[6] = {0, 1, 2, 0, 2, 3};
+        CHECK_INT(mesh_append(m, pos, NULL, NULL, 4, tri, NULL, leaf, 2, &err), 0);
+        if (q % 10 == 9) CHECK_INT(mesh_append(m, pos, NULL, NULL, 3, tri, NULL, wood, 1, &err), 0);
+    }
+    return m;
+}
+
+/* Whole leaves fall, the share the day gives (within sampling error), the same leaves on every
+ * run, more of them on a later day; wood and vertices stay. */
+TEST(partial_leaf_fall_drops_whole_leaves_by_the_share)
+{
+    scene *s = build_season("");
+    CHECK(s != NULL);
+    if (!s) return;
+    int32_t leaf = scene_find_material(s, "foliage"), wood = scene_find_material(s, "wood");
+    CHECK(leaf >= 0 && wood >= 0);
+    enum { N = 4000 };
+    static const double shares[] = {0.04, 0.25, 0.5, 0.9, 1};
+    uint64_t key = scene_leaf_fall_key("oak", 0);
+    mesh *before = NULL;
+    for (size_t i = 0; i < sizeof shares / sizeof shares[0]; i++) {
+        mesh *m = leaf_quads(N, leaf, wood), *again = leaf_quads(N, leaf, wood);
+        uint32_t nv = m->nv, dropped = 0, dropped_again = 0;
+        err_buf err = {{0}};
+        CHECK_INT(scene_drop_fallen_leaves(s, m, key, shares[i], &dropped, &err), 0);
+        CHECK_INT(scene_drop_fallen_leaves(s, again, key, shares[i], &dropped_again, &err), 0);
+        CHECK_INT(dropped % 2, 0); /* a leaf's two triangles together */
+        /* binomial: 4 standard deviations of the share of N leaves */
+        double got = dropped / 2.0 / N, sd = sqrt(shares[i] * (1 - shares[i]) / N);
+        fprintf(stderr, "share %.2f: %.4f of the leaves down\n", shares[i], got);
+        CHECK_NEAR(got, shares[i], 4 * sd + 1e-12);
+        CHECK_INT(m->nv, nv);
+        CHECK_INT(again->nt, m->nt);
+        CHECK(!memcmp(again->tri, m->tri, (size_t)m->nt * 3 * sizeof *m->tri));
+        uint32_t wood_left = 0, quads_left = 0;
+        for (uint32_t t = 0; t < m->nt; t++) {
+            if (m->mat[t] == wood) wood_left++;
+            /* the first triangle of each leaf left is followed by its second */
+            else if (m->tri[t * 3 + 1] == m->tri[t * 3] + 1) {
+                quads_left++;
+                CHECK(t + 1 < m->nt && m->tri[(t + 1) * 3] == m->tri[t * 3] &&
+                      m->tri[(t + 1) * 3 + 2] == m->tri[t * 3] + 3);
+            }
+        }
+        CHECK_INT(wood_left, N / 10);
+        CHECK_INT(quads_left * 2 + wood_left, m->nt);
+        /* every leaf left at this share was left at the smaller one before it */
+        if (before) {
+            uint32_t j = 0;
+            for (uint32_t t = 0; t < m->nt; t++) {
+                while (j < before->nt && memcmp(before->tri + j * 3, m->tri + t * 3, 3 * sizeof *m->tri)) j++;
+                CHECK(j < before->nt);
+            }
+        }
+        mesh_free(before), mesh_free(again);
+        before = m;
+    }
+    CHECK_INT(before->nt, N / 10); /* all down: the wood alone */
+    mesh_free(before);
+    scene_free(s);
+}
+
+/* A bad season, snow or phenology is refused at its place: file:line:column and what would be
+ * valid. Snow needs a terrain with procedural ground (here there is none; an inline grid
+ * likewise). */
 TEST(bad_season_is_located)
 {
     static const struct { const char *line; const char *where; const char *says; } cases[] = {
         {"season: winterr\n", ":3:9:", "neither a season (spring, summer, autumn or winter) nor a date"},
         {"season: 2026-02-30\n", ":3:9:", "month 02 of 2026 has days 01 to 28"},
         {"season: {day: 3}\n", ":3:9:", "must be spring, summer, autumn, winter or a date YYYY-MM-DD"},
+        {"snow: {cover: 0.8}\n", ":3:1:", "'snow' lies on the procedural ground of a terrain plugin"},
+        {"snow: {cover: 1.5}\n", ":3:15:", "cover"},
+        {"snow: {depth: 0.3}\n", ":3:8:", "depth"},
+        {"snow: {min_height: 10000}\n", ":3:20:", "min_height"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         err_buf err = {{0}};
@@ -229,6 +321,15 @@ TEST(bad_season_is_located)
         CHECK_STR_CONTAINS(err.msg, cases[i].where);
         CHECK_STR_CONTAINS(err.msg, cases[i].says);
     }
+}
+
+/* Left out, a scene has no snow. */
+TEST(snow_is_off_by_default)
+{
+    err_buf err = {{0}};
+    scene_file *sf = load_season("", &err);
+    CHECK(sf && !sf->snow.on);
+    scene_file_free(sf);
 }
 
 TEST(bad_phenology_is_located)
@@ -280,7 +381,8 @@ TEST(season_option_overrides_the_key)
 }
 
 TEST_LIST(TEST_CASE(season_names_and_dates), TEST_CASE(deciduous_in_leaf_between_its_days),
-          TEST_CASE(leaves_turn_from_colouring_to_leaf_fall), TEST_CASE(autumn_turns_only_the_deciduous_leaves),
+          TEST_CASE(leaves_turn_from_colouring_to_leaf_fall), TEST_CASE(leaves_fall_ever_faster_while_they_turn),
+          TEST_CASE(partial_leaf_fall_drops_whole_leaves_by_the_share), TEST_CASE(autumn_turns_only_the_deciduous_leaves),
           TEST_CASE(summer_and_winter_hold_the_same_instances), TEST_CASE(winter_rays_meet_no_deciduous_leaf),
-          TEST_CASE(bad_season_is_located), TEST_CASE(bad_phenology_is_located),
+          TEST_CASE(bad_season_is_located), TEST_CASE(snow_is_off_by_default), TEST_CASE(bad_phenology_is_located),
           TEST_CASE(season_option_overrides_the_key))

@@ -7,6 +7,7 @@
 
 #include "scene/heightfield.h"
 #include "util/gradient_noise.h"
+#include "util/rng.h"
 
 #define CANOPY_MAX_CELLS 2048u     /* along each side of the canopy raster */
 #define CANOPY_MIN_CELL 0.5        /* metres */
@@ -23,6 +24,8 @@ struct ground_cover_map {
     float *canopy;                 /* cnx * cny crown cover in [0, 1], row 0 south; owned; or NULL */
     uint32_t cnx, cny;
     double cx0, cy0, cell;         /* centre of canopy cell (0, 0), and the cell size */
+    snow_settings snow;            /* the scene's snow lying on the ground (off unless asked) */
+    double snow_edge;              /* drift noise below which snow lies: its cover-quantile */
 };
 
 /* Boundary noise: where an edge between two kinds wanders (tens of metres), where patches lie
@@ -30,6 +33,10 @@ struct ground_cover_map {
 static const noise_fbm wander = {.wavelength = 60.0, .octaves = 5, .gain = 0.5f, .seed = 0x51u};
 static const noise_fbm patch = {.wavelength = 18.0, .octaves = 4, .gain = 0.5f, .seed = 0x7au};
 static const noise_fbm bare = {.wavelength = 35.0, .octaves = 4, .gain = 0.55f, .seed = 0xb3u};
+/* Where lying snow leaves the ground bare when it covers only part of it (metres). */
+static const noise_fbm drift = {.wavelength = 14.0, .octaves = 4, .gain = 0.5f, .seed = 0x5eu};
+#define DRIFT_SAMPLES 4096         /* points of the drift noise its quantiles are read from */
+#define DRIFT_SOFT 0.04            /* half-width of the edge of a snow patch, in noise units */
 
 static double smooth_step(double e0, double e1, double x)
 {
@@ -43,6 +50,30 @@ const char *ground_kind_name(ground_kind k)
     static const char *const names[GROUND_KINDS] = {"meadow", "forest floor", "soil", "rock",
                                                     "scree", "snow", "water"};
     return (unsigned)k < GROUND_KINDS ? names[k] : "?";
+}
+
+static int compare_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* The drift noise value below which a share `cover` of the ground lies: the quantile of the
+ * noise over DRIFT_SAMPLES points of a 2 km square (a fixed, irregular pattern). */
+static int snow_edge(ground_cover_map *m, err_buf *err)
+{
+    double *v = malloc(DRIFT_SAMPLES * sizeof *v); /* owned here */
+    if (!v) return err_nomem(err, "out of memory for the snow cover");
+    for (uint32_t k = 0; k < DRIFT_SAMPLES; k++) {
+        uint64_t key = rng_combine(rng_hash_str("snow drift"), k);
+        v[k] = noise_fbm2(&drift, 2000.0 * rng_u01f(key), 2000.0 * rng_u01f(rng_mix64(key)), 0.0, NULL);
+    }
+    qsort(v, DRIFT_SAMPLES, sizeof *v, compare_double);
+    double at = m->snow.cover * (DRIFT_SAMPLES - 1);
+    uint32_t k = (uint32_t)at;
+    m->snow_edge = k + 1 < DRIFT_SAMPLES ? v[k] + (at - k) * (v[k + 1] - v[k]) : v[DRIFT_SAMPLES - 1];
+    free(v);
+    return 0;
 }
 
 /* Radius of a prototype's crown: half the mean of its footprint's width and depth. */
@@ -122,7 +153,8 @@ ground_cover_map *ground_cover_map_new(const scene *s, err_buf *err)
     m->slope_step = fmin(hf->dx, hf->dy);
     if (hf->n_levels) m->slope_step /= hf->levels[hf->n_levels - 1].refine; /* the finest level's */
     m->slope_step = fmax(0.5, m->slope_step);
-    if (build_canopy(m, s, err)) {
+    m->snow = s->snow;
+    if (build_canopy(m, s, err) || (m->snow.on && snow_edge(m, err))) {
         ground_cover_map_free(m);
         return NULL;
     }
@@ -176,6 +208,21 @@ float ground_cover_dryness(const ground_cover_map *m, double x, double y)
     return (float)smooth_step(d + 0.08, d - 0.08, hum);
 }
 
+/* The scene's lying snow at (x, y): above its height (z moved by the patch noise), where the
+ * drift leaves it when it covers only part of the ground, and off steep ground as the snow line's
+ * snow slides off. */
+static double lying_snow(const ground_cover_map *m, double x, double y, double z, double slope)
+{
+    const snow_settings *s = &m->snow;
+    double b = m->band;
+    double above = s->min_height > -HUGE_VAL ? smooth_step(s->min_height - b, s->min_height + b, z) : 1.0;
+    double lies = s->cover >= 1   ? 1.0
+                  : s->cover <= 0 ? 0.0
+                                  : smooth_step(m->snow_edge + DRIFT_SOFT, m->snow_edge - DRIFT_SOFT,
+                                                noise_fbm2(&drift, x, y, 0.0, NULL));
+    return above * lies * smooth_step(60.0, 40.0, slope);
+}
+
 void ground_cover_weights(const ground_cover_map *m, double x, double y, float w[GROUND_KINDS])
 {
     const sylva_ground_rules *r = &m->rules;
@@ -190,6 +237,7 @@ void ground_cover_weights(const ground_cover_map *m, double x, double y, float w
     share[GROUND_WATER] = hf->has_water ? smooth_step(hf->water_level + 0.6, hf->water_level - 0.1, z + 0.3 * np) : 0.0;
     share[GROUND_ROCK] = smooth_step(r->rock_slope - 10.0, r->rock_slope + 2.0, slope + 8.0 * nw);
     share[GROUND_SNOW] = smooth_step(r->snow_z - b, r->snow_z + b, z + b * np) * smooth_step(60.0, 40.0, slope);
+    if (m->snow.on) share[GROUND_SNOW] = fmax(share[GROUND_SNOW], lying_snow(m, x, y, z + b * np, slope));
     share[GROUND_SCREE] = fmax(smooth_step(r->scree_slope - 8.0, r->scree_slope + 4.0, slope + 8.0 * np),
                                smooth_step(r->scree_z - b, r->scree_z + b, z + b * nw));
     share[GROUND_FOREST_FLOOR] = smooth_step(0.25, 0.75, ground_cover_canopy(m, x, y) + 0.25 * np);

@@ -18,7 +18,7 @@
 
 const char *const host_sections[] = {"image",   "site",    "camera",  "sun",     "sky",     "materials",
                                      "terrain", "species", "plants",  "ecology", "groups",  "objects",
-                                     "earth",   "viewpoints", "ztv",     "photo",   "ground_cover", "season", NULL};
+                                     "earth",   "viewpoints", "ztv",     "photo",   "ground_cover", "season",  "snow",    NULL};
 
 const char *const host_shape_names[] = {"mesh", "box", "sphere", "quad", "disk", NULL};
 const char *const host_sky_models[] = {"none", "constant", "preetham", "physical", NULL};
@@ -298,6 +298,17 @@ static const sylva_param_spec earth_params[] = {
 const host_schema host_schema_earth = {
     "earth", "The Earth's curvature and the atmosphere's refraction over long views.",
     earth_params, COUNT(earth_params)};
+
+/* --- snow ----------------------------------------------------------------------------------- */
+static const sylva_param_spec snow_params[] = {
+    {.name = "cover", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 1, .min = 0, .max = 1,
+     .help = "Share of the open ground under snow: 1 a closed cover, less leaves patches of ground bare."},
+    {.name = "min_height", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = -12000, .max = 9000,
+     .unit = "m", .help = "Snow lies only above this map height, as the terrain's altitudes (default: at every height)."},
+};
+const host_schema host_schema_snow = {
+    "snow", "Snow lying on the terrain's procedural ground (docs/seasons.md).", snow_params,
+    COUNT(snow_params)};
 
 /* --- ground_cover ---------------------------------------------------------------------------- */
 static const sylva_param_spec ground_cover_params[] = {
@@ -675,7 +686,7 @@ const host_schema *host_schema_at(uint32_t i)
         &host_schema_image,        &host_schema_site,         &host_schema_position,
         &host_schema_camera,       &host_schema_sun,          &host_schema_sky,
         &host_schema_earth,        &host_schema_ztv,          &host_schema_ztv_target,
-        &host_schema_photo,        &host_schema_ground_cover,
+        &host_schema_photo,        &host_schema_ground_cover, &host_schema_snow,
         &host_schema_material,     &host_schema_terrain,
         &host_schema_species,      &host_schema_phenology,    &host_schema_blossom,      &host_schema_plant,
         &host_schema_plants_file,  &host_schema_ecology,

@@ -31,6 +31,7 @@ extern const host_schema host_schema_camera;
 extern const host_schema host_schema_sun;
 extern const host_schema host_schema_sky;
 extern const host_schema host_schema_earth;
+extern const host_schema host_schema_snow;          /* snow: on the procedural ground */
 extern const host_schema host_schema_ground_cover;
 extern const host_schema host_schema_ztv;
 extern const host_schema host_schema_ztv_target; /* one entry of ztv: targets: */

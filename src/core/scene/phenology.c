@@ -60,3 +60,11 @@ int phenology_blossom_day(const phenology *p, uint32_t day)
     uint32_t since = (day + 366 - p->blossom.first) % 366, span = (p->blossom.last + 366 - p->blossom.first) % 366;
     return since <= span ? (int)since : -1;
 }
+
+double phenology_fallen_share(const phenology *p, uint32_t day)
+{
+    if (p->habit == HABIT_EVERGREEN) return 0;
+    if (!phenology_in_leaf(p, day)) return 1;
+    double f = phenology_autumn_share(p, day);
+    return f * f;
+}

@@ -65,4 +65,9 @@ double phenology_fresh_share(const phenology *p, uint32_t day);
  * end), else -1 (and -1 when no blossom is given). */
 int phenology_blossom_day(const phenology *p, uint32_t day);
 
+/* The share of a plant's leaves already down on day: 0 for evergreens and while the leaves are
+ * green, f^2 while they turn (f = phenology_autumn_share: the leaves colour first and fall ever
+ * faster, a quarter down when they are half turned), 1 for a deciduous plant out of leaf. */
+double phenology_fallen_share(const phenology *p, uint32_t day);
+
 #endif

@@ -80,6 +80,7 @@ typedef struct scene {
     sun_settings sun;
     sky_settings sky;
     earth_settings earth;
+    snow_settings snow;         /* snow on the procedural ground (geometry/ground_cover.h) */
 
     sylva_heightfield *terrain; /* owned (with its z and material arrays), or NULL */
     int32_t terrain_material;   /* default material of terrain nodes without one */

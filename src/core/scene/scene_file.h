@@ -107,6 +107,15 @@ typedef struct ground_cover_settings {
     uint32_t max_instances; /* the count is capped here (the radius shrinks to fit) */
 } ground_cover_settings;
 
+/* Snow lying on the ground (docs/seasons.md#snow): the procedural ground turns to snow where
+ * it lies (geometry/ground_cover.h), and no grass stands there. Off unless the scene has a
+ * snow: section. */
+typedef struct snow_settings {
+    int on;                 /* 1: the scene has a snow: section */
+    double cover;           /* share of the open ground the snow covers, 0..1 (1: all of it) */
+    double min_height;      /* metres, local frame: snow lies only above it (-HUGE_VAL: everywhere) */
+} snow_settings;
+
 typedef enum sky_model { SKY_NONE = 0, SKY_CONSTANT = 1, SKY_PREETHAM = 2, SKY_PHYSICAL = 3 } sky_model;
 
 typedef struct sky_settings {
@@ -279,6 +288,7 @@ typedef struct scene_file {
     sky_settings sky;
     earth_settings earth;
     ground_cover_settings ground_cover;
+    snow_settings snow;         /* snow on the ground (off by default) */
     season_settings season;     /* the day of the year the plants are shown on */
     terrain_spec terrain;
     species_spec *species; uint32_t n_species;

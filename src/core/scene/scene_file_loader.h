@@ -146,6 +146,7 @@ int sf_read_sun(loader *L);
 int sf_read_sky(loader *L);
 int sf_read_earth(loader *L); /* after the site: its default depends on it */
 int sf_read_ground_cover(loader *L);
+int sf_read_snow(loader *L); /* after the terrain: snow needs its procedural ground */
 int sf_read_season(loader *L); /* scene_file_season.c: the season: key */
 /* A species' phenology: block (value v of its host keys) into *out (scene_file_season.c). */
 int sf_read_phenology(loader *L, const char *file, const char *species, const sylva_value *v, phenology *out);

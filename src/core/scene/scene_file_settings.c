@@ -456,6 +456,25 @@ int sf_read_earth(loader *L)
     return 0;
 }
 
+int sf_read_snow(loader *L)
+{
+    const sylva_params *p;
+    if (read_section(L, "snow", &host_schema_snow, &p)) return -1;
+    snow_settings *s = &L->sf->snow;
+    const ynode_pair *pr = ynode_get_pair(L->root, "snow");
+    const sylva_value *min_height = sylva_param(p, "min_height");
+    s->on = pr != NULL;
+    s->cover = sylva_param_real(p, "cover");
+    /* a map height, as the terrain's altitudes are: the local frame's z = 0 is the site origin's */
+    s->min_height = min_height->is_set ? min_height->r - L->sf->site.origin[2] : -HUGE_VAL;
+    if (s->on && L->sf->terrain.source != TERRAIN_PLUGIN)
+        return sf_located(L->err, L->file, pr->key_line, pr->key_column,
+                          "'snow' lies on the procedural ground of a terrain plugin (terrain: {plugin: "
+                          "terrain_ifs, ...}); this scene's terrain is %s, which keeps its own materials",
+                          L->sf->terrain.source == TERRAIN_NONE ? "missing" : "an inline grid");
+    return 0;
+}
+
 int sf_read_ground_cover(loader *L)
 {
     const sylva_params *p;

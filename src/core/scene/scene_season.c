@@ -1,10 +1,13 @@
 /* scene_season.c — leaf-off prototypes for the species out of leaf on the scene's day, and
- * autumn leaf materials for the species whose leaves are turning (scene_season.h). */
+ * autumn leaf materials and the leaves already down for the species whose leaves are turning
+ * (scene_season.h). */
 #include "scene/scene_season.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "util/rng.h"
 
 uint32_t scene_drop_leaves(const scene *s, mesh *m)
 {
@@ -68,6 +71,68 @@ static int colour_species(scene *s, uint32_t sp, const phenology *p, double f, e
     return rc;
 }
 
+uint64_t scene_leaf_fall_key(const char *species_name, uint32_t v)
+{
+    return rng_combine(rng_combine(rng_hash_str("leaf fall"), rng_hash_str(species_name)), v);
+}
+
+/* The representative vertex of v's set (path halving). */
+static uint32_t leaf_set(uint32_t *parent, uint32_t v)
+{
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+}
+
+int scene_drop_fallen_leaves(const scene *s, mesh *m, uint64_t key, double share, uint32_t *dropped,
+                             err_buf *err)
+{
+    *dropped = 0;
+    if (share <= 0 || !m->nt) return 0;
+    /* parent: the vertices' sets joined by leaf triangles; first: each set's first leaf triangle */
+    uint32_t *parent = malloc((size_t)m->nv * 2 * sizeof *parent); /* owned here */
+    if (!parent) return err_nomem(err, "out of memory letting leaves fall from a %u-vertex mesh", m->nv);
+    uint32_t *first = parent + m->nv;
+    for (uint32_t v = 0; v < m->nv; v++) parent[v] = v, first[v] = UINT32_MAX;
+    for (uint32_t t = 0; t < m->nt; t++) {
+        if (s->materials[scene_triangle_material(s, m, t)].bsdf != SYLVA_BSDF_LEAF) continue;
+        const uint32_t *c = m->tri + (size_t)t * 3;
+        for (int k = 1; k < 3; k++) {
+            uint32_t a = leaf_set(parent, c[0]), b = leaf_set(parent, c[k]);
+            if (a != b) parent[a > b ? a : b] = a < b ? a : b; /* the smaller vertex leads the set */
+        }
+    }
+    uint32_t kept = 0;
+    for (uint32_t t = 0; t < m->nt; t++) {
+        if (s->materials[scene_triangle_material(s, m, t)].bsdf == SYLVA_BSDF_LEAF) {
+            uint32_t r = leaf_set(parent, m->tri[(size_t)t * 3]);
+            if (first[r] == UINT32_MAX) first[r] = t;
+            if (rng_u01f(rng_combine(key, first[r])) < share) continue;
+        }
+        if (kept != t) {
+            memcpy(m->tri + (size_t)kept * 3, m->tri + (size_t)t * 3, 3 * sizeof *m->tri);
+            m->mat[kept] = m->mat[t];
+        }
+        kept++;
+    }
+    free(parent);
+    *dropped = m->nt - kept;
+    m->nt = kept;
+    return 0;
+}
+
+/* Species sp's leaves already down on a day when share of them has fallen. */
+static int fall_species(scene *s, uint32_t sp, double share, err_buf *err)
+{
+    const species *spc = &s->species[sp];
+    for (uint32_t v = 0; v < spc->n_variants; v++) {
+        uint32_t dropped;
+        if (scene_drop_fallen_leaves(s, s->prototypes[spc->first_prototype + v].mesh,
+                                     scene_leaf_fall_key(spc->name, v), share, &dropped, err))
+            return -1;
+    }
+    return 0;
+}
+
 int scene_apply_season(scene *s, const scene_file *sf, err_buf *err)
 {
     /* scene_build makes scene species i from scene-file species i; ground cover comes after */
@@ -81,6 +146,7 @@ int scene_apply_season(scene *s, const scene_file *sf, err_buf *err)
         }
         double f = phenology_autumn_share(p, sf->season.day);
         if (f > 0 && colour_species(s, i, p, f, err)) return -1;
+        if (f > 0 && fall_species(s, i, phenology_fallen_share(p, sf->season.day), err)) return -1;
     }
     return 0;
 }

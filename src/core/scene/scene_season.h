@@ -2,7 +2,8 @@
  * species keeps its prototypes and every instance of them (the same plants in the same places,
  * with the same ids and transforms, as any other season of the scene): out of leaf, only its
  * prototypes' leaf triangles (those of a leaf material) are dropped; in autumn colour, only its
- * leaf triangles' materials change (to copies of its own). The crown proxies and
+ * leaf triangles' materials change (to copies of its own), and a share of its leaves (whole
+ * leaves, the same ones whatever the thread count) is already down. The crown proxies and
  * their calibration (render/crown_proxy.h) then see the bare plant: a prototype with no leaf
  * triangles has no crown and no proxy.
  *
@@ -16,11 +17,24 @@
 /* Applies sf's season to s (built from sf by scene_build): a species out of leaf loses its leaf
  * triangles; a species whose leaves are turning (phenology_autumn_share > 0) gets its own copy
  * of each leaf material of its prototypes, albedo and transmittance moved that share of the way
- * toward its autumn colour. Returns 0, or -1 with err set (out of memory). */
+ * toward its autumn colour, and loses the leaves already down (phenology_fallen_share). Returns 0, or -1 with err set (out of memory). */
 int scene_apply_season(scene *s, const scene_file *sf, err_buf *err);
 
 /* Drops the triangles of m whose material is a leaf (SYLVA_BSDF_LEAF); returns how many. The
  * vertices stay, so vertex indices and the mesh's bounds are unchanged. */
 uint32_t scene_drop_leaves(const scene *s, mesh *m);
+
+/* Drops the leaves of m that are down when share (0..1) of them has fallen. A leaf is a set of
+ * leaf triangles joined by shared vertices (a plugin's leaf quad, an imported leaf's fan); it
+ * is down when a number in [0, 1) drawn from a hash of key and its first triangle's index is
+ * below share, so the same leaves fall whatever the thread count, and a leaf down at one share
+ * is down at every larger one. key names the prototype (scene_leaf_fall_key). The vertices
+ * stay, as in scene_drop_leaves. Returns 0 with *dropped set to the triangles dropped, or -1 with
+ * err set (out of memory). */
+int scene_drop_fallen_leaves(const scene *s, mesh *m, uint64_t key, double share, uint32_t *dropped,
+                             err_buf *err);
+
+/* The leaf-fall key of variant v of the species named species_name. */
+uint64_t scene_leaf_fall_key(const char *species_name, uint32_t v);
 
 #endif

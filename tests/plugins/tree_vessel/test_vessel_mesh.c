@@ -140,8 +140,9 @@ TEST(triangle_limit_is_checked_before_building)
 TEST(textures_are_opaque_bark_and_outlined_leaves)
 {
     uint8_t *px = malloc(VESSEL_LEAF_TEXTURE_SIZE * VESSEL_LEAF_TEXTURE_SIZE * 4);
-    for (int s = 0; s < VESSEL_LEAF_SHAPES; s++) {
-        CHECK_INT(vessel_texture_leaf((vessel_leaf_shape)s, px), 0);
+    for (int s = 0; s < VESSEL_PRESETS; s++) {
+        vessel_params p = preset((vessel_preset)s);
+        CHECK_INT(vessel_texture_leaf(&p, px), 0);
         uint32_t inside = 0, n = VESSEL_LEAF_TEXTURE_SIZE * VESSEL_LEAF_TEXTURE_SIZE;
         for (uint32_t i = 0; i < n; i++) inside += px[4 * i + 3] == 255;
         CHECK(inside > n / 20);  /* an outline, neither empty ... */
@@ -151,8 +152,9 @@ TEST(textures_are_opaque_bark_and_outlined_leaves)
     }
     free(px);
     px = malloc(VESSEL_BARK_TEXTURE_SIZE * VESSEL_BARK_TEXTURE_SIZE * 4);
-    for (int k = 0; k < VESSEL_BARK_KINDS; k++) {
-        vessel_texture_bark((vessel_bark_kind)k, px);
+    for (int k = 0; k < VESSEL_PRESETS; k++) {
+        vessel_params p = preset((vessel_preset)k);
+        vessel_texture_bark(&p, px);
         uint32_t opaque = 0, lo = 255, hi = 0;
         for (uint32_t i = 0; i < VESSEL_BARK_TEXTURE_SIZE * VESSEL_BARK_TEXTURE_SIZE; i++) {
             opaque += px[4 * i + 3] == 255;

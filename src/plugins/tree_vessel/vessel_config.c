@@ -60,6 +60,8 @@ const sylva_param_spec vessel_schema[VESSEL_SCHEMA_COUNT] = {
     {.name = "leaf", .type = SYLVA_P_STRING, .def_str = "beech",
      .help = "t_leaf, drawn by affine maps: a preset (beech, maple, spruce, shrub, willow) or maps "
              "\"a b c d e f[ p]; ...\" of the leaf quad's unit square."},
+    {.name = "leaf_spray", .type = SYLVA_P_INT, .flags = RANGE, .def = 5, .min = 1, .max = VESSEL_MAX_LEAF_SPRAY,
+     .help = "Leaves (or twigs) fanned from the stalk on each leaf quad's texture: 1 draws one leaf filling the quad."},
     {.name = "bark", .type = SYLVA_P_ENUM, .def_str = "smooth", .choices = tree_look_bark_names,
      .help = "t_bark, the fractal bark's preset: smooth, scaly, furrowed or fissured."},
     {.name = "bark_angle", .type = SYLVA_P_REAL, .flags = RANGE, .def = 0, .min = -360, .max = 360,
@@ -154,6 +156,7 @@ static int read_given(const sylva_params *params, vessel_params *out, vessel_err
         out->leaf_density = (uint32_t)v->i;
     }
     if ((v = given(params, "leaf_type"))) out->leaf_type = (vessel_leaf_type)v->i;
+    if ((v = given(params, "leaf_spray"))) out->leaf_spray = (uint32_t)v->i;
     char why[VESSEL_ERR_MSG_MAX - 64];
     if ((v = given(params, "leaf"))) {
         if (tree_look_leaf(v->s, VESSEL_LEAF_TEXTURE_SIZE, &out->leaf, why, sizeof why))

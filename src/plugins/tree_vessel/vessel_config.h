@@ -14,7 +14,7 @@
 #include "vessel_error.h"
 #include "vessel_params.h"
 
-#define VESSEL_SCHEMA_COUNT 33u
+#define VESSEL_SCHEMA_COUNT 34u
 extern const sylva_param_spec vessel_schema[VESSEL_SCHEMA_COUNT];
 
 /* Reads a block validated against vessel_schema into *out and checks it (vessel_params_check

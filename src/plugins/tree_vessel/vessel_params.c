@@ -58,6 +58,9 @@ int vessel_params_check(const vessel_params *p, vessel_err *err)
         check_real(p->flexibility, 0.0, 1.0, 0, "flexibility", "", err) ||
         check_real(p->wind_time, -VESSEL_MAX_WIND_TIME, VESSEL_MAX_WIND_TIME, 0, "wind_time", " rad", err))
         return -1;
+    if (p->leaf_spray < 1 || p->leaf_spray > VESSEL_MAX_LEAF_SPRAY)
+        return vessel_fail(err, VESSEL_FAULT_PARAM, "leaf_spray", "'leaf_spray' is %u; a quad carries 1 to %u leaves",
+                           p->leaf_spray, VESSEL_MAX_LEAF_SPRAY);
     if (p->leaf_density > VESSEL_MAX_LEAF_DENSITY)
         return vessel_fail(err, VESSEL_FAULT_PARAM, "leaf_density",
                            "'leaf_density' is %u leaves per branch; valid values are 0 to %u",

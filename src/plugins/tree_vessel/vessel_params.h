@@ -19,6 +19,7 @@
 #define VESSEL_MAX_TRUNK_LENGTH 100.0    /* l0, metres */
 #define VESSEL_MAX_LEAF_SIZE 5.0         /* l_l, metres */
 #define VESSEL_MAX_LEAF_DENSITY 1000u    /* rho_l, leaves per terminal branch */
+#define VESSEL_MAX_LEAF_SPRAY 9u         /* leaves fanned on one leaf quad */
 #define VESSEL_MIN_SIDES 4u              /* n of the truncated cones (004 Fig. 3.11) */
 #define VESSEL_MAX_SIDES 15u
 #define VESSEL_MAX_TRIANGLES 20000000u   /* per tree model, checked before any mesh is built */
@@ -55,6 +56,7 @@ typedef struct vessel_params {
     uint32_t leaf_density;    /* rho_l, leaves per terminal branch, [0, VESSEL_MAX_LEAF_DENSITY] */
     vessel_leaf_type leaf_type;
     leaf_affine_maps leaf;    /* t_leaf: the leaf's affine maps (`leaf:`) */
+    uint32_t leaf_spray;      /* leaves fanned from the stalk on each quad, [1, VESSEL_MAX_LEAF_SPRAY] */
     int leaf_preset;          /* the leaf_affine_preset they are, or -1 for the scene's own maps */
     bark_fractal_params bark; /* t_bark: the fractal bark (`bark:`, `bark_angle:`) */
     bark_fractal_preset bark_preset; /* the preset it starts from */

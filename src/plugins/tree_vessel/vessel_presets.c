@@ -21,7 +21,7 @@ const char *const vessel_preset_names[VESSEL_PRESETS + 1] = {"beech", "spruce", 
 static const sylva_preset_value beech[] = {
     NUM("vessels", 1000), NUM("trunk_length", 5), NUM("thickness", 0.01),
     NUM("phyllotaxis", 85), NUM("gravicentralism", 0.3), NUM("leaf_size", 0.1),
-    NUM("leaf_density", 5), WORD("leaf_type", "spiral"),
+    NUM("leaf_density", 5), WORD("leaf_type", "spiral"), NUM("leaf_spray", 5),
     PL("split_g", 0, 0.75, 15, 0.9),
     PL("angle_g", 0, 45, 15, 45),
     PL("length_min_g", 0, 1, 7.5, 0.45, 15, 1),
@@ -37,7 +37,7 @@ static const sylva_preset_value beech[] = {
 static const sylva_preset_value spruce[] = {
     NUM("vessels", 6000), NUM("trunk_length", 5.47), NUM("thickness", 0.005),
     NUM("phyllotaxis", 85), NUM("gravicentralism", 0.98), NUM("leaf_size", 0.1815),
-    NUM("leaf_density", 30), WORD("leaf_type", "stacked"),
+    NUM("leaf_density", 30), WORD("leaf_type", "stacked"), NUM("leaf_spray", 9),
     PL("split_g", 0, 0.955, 0.7749, 0.9615, 1.827, 0.8288, 4.207, 0.8269, 15, 0.8294),
     PL("split_w", 0, 1, 42.89, 1.005, 42.89, 0.654, 50, 0.6256),
     PL("angle_g", 0, 128.8, 1.164, 17.91, 3.621, 45.21, 15, 35.83),
@@ -57,7 +57,7 @@ static const sylva_preset_value spruce[] = {
 static const sylva_preset_value weeping_willow[] = {
     NUM("vessels", 1500), NUM("trunk_length", 1), NUM("thickness", 0.01),
     NUM("phyllotaxis", 85), NUM("gravicentralism", 0.2), NUM("leaf_size", 0.3452),
-    NUM("leaf_density", 5), WORD("leaf_type", "coniferous"),
+    NUM("leaf_density", 5), WORD("leaf_type", "coniferous"), NUM("leaf_spray", 1),
     PL("split_g", 0, 0.8507, 3.75, 0.7749, 15, 0.9),
     PL("angle_g", 0, 17.91, 1.875, 57.16, 15, 45),
     PL("length_min_g", 0, 1, 1.81, 0.9953, 15, 1),
@@ -79,7 +79,7 @@ static const sylva_preset_value weeping_willow[] = {
 static const sylva_preset_value maple[] = {
     NUM("vessels", 2000), NUM("trunk_length", 4), NUM("thickness", 0.011),
     NUM("phyllotaxis", 90), NUM("gravicentralism", 0.5), NUM("leaf_size", 0.13),
-    NUM("leaf_density", 8), WORD("leaf_type", "stacked"),
+    NUM("leaf_density", 8), WORD("leaf_type", "stacked"), NUM("leaf_spray", 1),
     PL("split_g", 0, 0.6, 3, 0.72, 15, 0.85),
     PL("angle_g", 0, 40, 3, 45, 15, 40),
     PL("length_min_g", 0, 1, 5, 0.75, 15, 0.85),

@@ -23,8 +23,12 @@ void vessel_texture_bark(const vessel_params *p, uint8_t *rgba);
 
 #define VESSEL_LEAF_TEXTURE_SEED 1u /* the chaos game's seed: every scene, the same leaves */
 
+#define VESSEL_SPRAY_FAN 90.0  /* degrees between the outermost leaves of a spray */
+#define VESSEL_SPRAY_SCALE 0.7  /* each leaf of a spray, over the quad */
+
 /* Fills rgba (VESSEL_LEAF_TEXTURE_SIZE^2 * 4 bytes) with the leaf outline and veins, the
- * attractor of the species' affine maps (leaf_affine.h). Returns 0, or -1 when out of memory. */
+ * attractor of the species' affine maps (leaf_affine.h): one leaf filling the quad, or a spray
+ * of leaf_spray smaller ones fanned from the stalk. Returns 0, or -1 when out of memory. */
 int vessel_texture_leaf(const vessel_params *p, uint8_t *rgba);
 
 #endif

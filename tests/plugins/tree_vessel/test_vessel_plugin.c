@@ -140,6 +140,8 @@ TEST(bad_blocks_are_refused_with_clear_messages)
         {"leaf: '0.5 0 0 0.5 0.8 0'", {"'leaf'", "unit square"}},
         {"leaf: [1, 2]", {":3:", "'leaf'"}},
         {"bark: bumpy", {":3:", "'bark'"}},
+        {"leaf_spray: 0", {"'leaf_spray'", "[1, 9]"}},
+        {"leaf_spray: 10", {"'leaf_spray'", "[1, 9]"}},
         {"bark: scaly, bark_angle: 400", {"'bark_angle'", "[-360, 360]"}},
         {"vessels: 100000, leaf_density: 300", {"would need", "at most 20000000"}},
     };

@@ -28,7 +28,7 @@ int tree_look_leaf(const char *text, uint32_t size, leaf_affine_maps *out, char 
     for (int p = 0; p < LEAF_AFFINE_PRESET_COUNT; p++)
         if (!strcmp(text, leaf_affine_preset_name((leaf_affine_preset)p))) {
             leaf_affine_preset_maps((leaf_affine_preset)p, out);
-            return 0;
+            return p;
         }
     if (names_something(text)) {
         snprintf(msg, msg_size, "'%.40s' is not a leaf; give a preset (beech, maple, spruce, shrub, "
@@ -44,7 +44,7 @@ int tree_look_leaf(const char *text, uint32_t size, leaf_affine_maps *out, char 
     int rc = leaf_affine_attractor(out, size, 1, &raster, why, sizeof why);
     leaf_affine_raster_free(&raster);
     if (rc) snprintf(msg, msg_size, "leaf maps: %s", why);
-    return rc;
+    return rc ? -1 : TREE_LOOK_USER_MAPS;
 }
 
 int tree_look_bark(int preset, double angle_deg, bark_fractal_params *out, char *msg, size_t msg_size)

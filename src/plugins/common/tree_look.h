@@ -15,10 +15,12 @@
 /* The bark presets' names in bark_fractal_preset order, NULL-terminated (an enum's choices). */
 extern const char *const tree_look_bark_names[BARK_FRACTAL_PRESETS + 1];
 
+#define TREE_LOOK_USER_MAPS LEAF_AFFINE_PRESET_COUNT /* tree_look_leaf's answer for maps */
+
 /* The leaf of `text`: a preset's name (beech, maple, spruce, shrub, willow) or user maps, whose
  * attractor must lie in the unit square on a size x size texture (the chaos game is run once to
- * see). Returns 0, or -1 with "what is wrong, what would be valid" in msg (out of memory
- * included). */
+ * see). Returns the leaf_affine_preset named, TREE_LOOK_USER_MAPS for maps, or -1 with "what is
+ * wrong, what would be valid" in msg (out of memory included). */
 int tree_look_leaf(const char *text, uint32_t size, leaf_affine_maps *out, char *msg, size_t msg_size);
 
 /* The bark of preset `preset` with theta = angle_deg degrees (the preset's when angle_deg is

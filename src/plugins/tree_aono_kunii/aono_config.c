@@ -210,7 +210,7 @@ static int read_geometry(const sylva_params *p, aono_config *c, plugin_err *err)
                                      "more light than it receives, so keep the sum at most 1",
                                      c->leaf_color[k] + c->leaf_transmittance[k], k);
     char why[PLUGIN_ERR_MAX - 64];
-    if (c->leaf_count && tree_look_leaf(sylva_param_str(p, "leaf"), AONO_LEAF_TEXTURE_SIZE, &c->leaf, why, sizeof why))
+    if (c->leaf_count && tree_look_leaf(sylva_param_str(p, "leaf"), AONO_LEAF_TEXTURE_SIZE, &c->leaf, why, sizeof why) < 0)
         return plugin_fail_param(err, p, "leaf", "%s", why);
     const sylva_value *angle = sylva_param(p, "bark_angle");
     if (tree_look_bark((int)sylva_param_int(p, "bark"), angle->is_set ? angle->r : NAN, &c->bark, why, sizeof why))

@@ -159,11 +159,9 @@ static int read_given(const sylva_params *params, vessel_params *out, vessel_err
     if ((v = given(params, "leaf_spray"))) out->leaf_spray = (uint32_t)v->i;
     char why[VESSEL_ERR_MSG_MAX - 64];
     if ((v = given(params, "leaf"))) {
-        if (tree_look_leaf(v->s, VESSEL_LEAF_TEXTURE_SIZE, &out->leaf, why, sizeof why))
-            return vessel_fail(err, VESSEL_FAULT_PARAM, "leaf", "'leaf': %s", why);
-        out->leaf_preset = -1;
-        for (int k = 0; k < LEAF_AFFINE_PRESET_COUNT; k++)
-            if (!strcmp(v->s, leaf_affine_preset_name((leaf_affine_preset)k))) out->leaf_preset = k;
+        int named = tree_look_leaf(v->s, VESSEL_LEAF_TEXTURE_SIZE, &out->leaf, why, sizeof why);
+        if (named < 0) return vessel_fail(err, VESSEL_FAULT_PARAM, "leaf", "'leaf': %s", why);
+        out->leaf_preset = named == TREE_LOOK_USER_MAPS ? -1 : named;
     }
     /* a bark preset brings its own angle unless bark_angle is given too */
     const sylva_value *bark = given(params, "bark"), *angle = given(params, "bark_angle");

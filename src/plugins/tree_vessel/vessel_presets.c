@@ -37,7 +37,7 @@ static const sylva_preset_value beech[] = {
 static const sylva_preset_value spruce[] = {
     NUM("vessels", 6000), NUM("trunk_length", 5.47), NUM("thickness", 0.005),
     NUM("phyllotaxis", 85), NUM("gravicentralism", 0.98), NUM("leaf_size", 0.1815),
-    NUM("leaf_density", 30), WORD("leaf_type", "stacked"), NUM("leaf_spray", 9),
+    NUM("leaf_density", 30), WORD("leaf_type", "stacked"), NUM("leaf_spray", 1),
     PL("split_g", 0, 0.955, 0.7749, 0.9615, 1.827, 0.8288, 4.207, 0.8269, 15, 0.8294),
     PL("split_w", 0, 1, 42.89, 1.005, 42.89, 0.654, 50, 0.6256),
     PL("angle_g", 0, 128.8, 1.164, 17.91, 3.621, 45.21, 15, 35.83),

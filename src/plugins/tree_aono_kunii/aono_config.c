@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "aono_ratio.h"
+#include "tree_look.h"
 
 static const char *const pattern_names[] = {"dichotomous", "monopodial", "ternary", "stochastic"};
 
@@ -187,9 +188,7 @@ static int read_geometry(const sylva_params *p, aono_config *c, plugin_err *err)
         return plugin_fail_param(err, p, "min_sides", "min_sides %u is more than the trunk's sides %u; give "
                                  "min_sides <= sides", c->min_sides, c->sides);
     c->leaf_count = (uint32_t)sylva_param_int(p, "leaf_count");
-    c->leaf_shape = (aono_leaf_shape)sylva_param_int(p, "leaf_shape");
     c->leaf_length = sylva_param_real(p, "leaf_length");
-    c->leaf_width = sylva_param_real(p, "leaf_width");
     c->leaf_placement = (aono_leaf_placement)sylva_param_int(p, "leaf_placement");
     c->leaf_levels = (uint32_t)sylva_param_int(p, "leaf_levels");
     c->leaf_angle = sylva_param_real(p, "leaf_angle");
@@ -197,7 +196,7 @@ static int read_geometry(const sylva_params *p, aono_config *c, plugin_err *err)
     vec3(p, "leaf_color", c->leaf_color);
     vec3(p, "leaf_transmittance", c->leaf_transmittance);
     vec3(p, "bark_color", c->bark_color);
-    static const char *const leaf_keys[] = {"leaf_shape", "leaf_length", "leaf_width", "leaf_placement",
+    static const char *const leaf_keys[] = {"leaf", "leaf_length", "leaf_placement",
                                             "leaf_levels", "leaf_angle", "leaf_jitter", "leaf_color",
                                             "leaf_transmittance"};
     for (size_t k = 0; k < sizeof leaf_keys / sizeof leaf_keys[0]; k++) {
@@ -210,6 +209,12 @@ static int read_geometry(const sylva_params *p, aono_config *c, plugin_err *err)
                                      "leaf_color + leaf_transmittance is %g in channel %d; a leaf cannot scatter "
                                      "more light than it receives, so keep the sum at most 1",
                                      c->leaf_color[k] + c->leaf_transmittance[k], k);
+    char why[PLUGIN_ERR_MAX - 64];
+    if (c->leaf_count && tree_look_leaf(sylva_param_str(p, "leaf"), AONO_LEAF_TEXTURE_SIZE, &c->leaf, why, sizeof why) < 0)
+        return plugin_fail_param(err, p, "leaf", "%s", why);
+    const sylva_value *angle = sylva_param(p, "bark_angle");
+    if (tree_look_bark((int)sylva_param_int(p, "bark"), angle->is_set ? angle->r : NAN, &c->bark, why, sizeof why))
+        return plugin_fail_param(err, p, angle->is_set ? "bark_angle" : "bark", "%s", why);
     /* Leaves go by length: leaf_count on a branch of the mean outermost length H0 R̄^n, as many
      * per metre elsewhere. The full-grown tree's expected count (every branching with its most
      * children; read_structure has bounded the branch count) must stay within the limit. */

@@ -15,6 +15,8 @@
 #include <stdint.h>
 
 #include "aono_angle_law.h"
+#include "bark_fractal.h"
+#include "leaf_affine.h"
 #include "plugin_err.h"
 #include "sylva/plugin.h"
 
@@ -23,8 +25,9 @@
 #define AONO_MAX_CHILDREN 3
 #define AONO_MAX_CONTROLLERS 1024
 #define AONO_MAX_LEAVES (1u << 22)  /* leaves of one model */
-#define AONO_LEAF_TEXTURE_W 64
-#define AONO_LEAF_TEXTURE_H 128
+#define AONO_LEAF_TEXTURE_SIZE 128u /* square, the leaf's unit square */
+#define AONO_LEAF_TEXTURE_SEED 1u   /* the chaos game's seed: every scene, the same leaves */
+#define AONO_BARK_TEXTURE_SIZE 128u /* square, one circumference wide and long */
 
 typedef enum aono_pattern {
     AONO_DICHOTOMOUS = 0, /* two children, both at their angle FI */
@@ -43,14 +46,6 @@ typedef enum aono_del_mode {
     AONO_DEL_FIXED = 0, /* δ = DEL at every branching, as printed in (16) */
     AONO_DEL_SPIRAL = 1 /* δ = n DEL at level n: successive branchings turn by DEL */
 } aono_del_mode;
-
-typedef enum aono_leaf_shape {
-    AONO_LEAF_ELLIPTIC = 0,
-    AONO_LEAF_OVATE = 1,
-    AONO_LEAF_OBOVATE = 2,
-    AONO_LEAF_LANCEOLATE = 3,
-    AONO_LEAF_CORDATE = 4
-} aono_leaf_shape;
 
 typedef enum aono_leaf_placement {
     AONO_LEAVES_TIP = 0,  /* clustered at the tips of the leaf-bearing branches */
@@ -100,18 +95,18 @@ typedef struct aono_config {
     uint32_t leaf_count;       /* leaves on an outermost branch of the full-grown tree; 0: none */
     double leaf_reference_length; /* metres: that branch's nominal length H0 R̄^levels; a branch
                                      bears leaf_count leaves per this length */
-    aono_leaf_shape leaf_shape;
-    double leaf_length;        /* metres */
-    double leaf_width;         /* width over length */
+    leaf_affine_maps leaf;     /* the leaf's affine maps (`leaf:`), drawn into its texture */
+    double leaf_length;        /* metres: the side of the square leaf quad */
     aono_leaf_placement leaf_placement;
     uint32_t leaf_levels;      /* the outermost levels that bear leaves */
     double leaf_angle;         /* degrees between a leaf and its branch */
     double leaf_jitter;        /* degrees of random turn of each leaf */
     double leaf_color[3], leaf_transmittance[3], bark_color[3]; /* linear RGB */
+    bark_fractal_params bark;  /* the bark texture's fractal (`bark:`, `bark_angle:`) */
 } aono_config;
 
 /* The parameter schema (static const data) of AONO_N_PARAMS entries. */
-#define AONO_N_PARAMS 36
+#define AONO_N_PARAMS 37
 extern const sylva_param_spec aono_params[];
 
 /* Reads and checks `params` (validated against aono_params) into *cfg. Returns SYLVA_OK, or a

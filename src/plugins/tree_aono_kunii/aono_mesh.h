@@ -12,7 +12,8 @@
  * Leaves: quads on the branches of the outermost leaf_levels levels, as many per metre of
  * branch as an outermost branch of the full-grown tree carries, at the bark's surface,
  * leaf_angle from the branch, the blade turned to face upward; u across the blade, v from the
- * stalk (0) to the tip (1), matching aono_leaf_texture().
+ * stalk (0) to the tip (1), matching aono_leaf_texture(); the quad is leaf_length square, as the
+ * leaf fills its maps' unit square.
  */
 #ifndef AONO_MESH_H
 #define AONO_MESH_H
@@ -41,13 +42,14 @@ int aono_mesh_branches(const aono_config *cfg, const aono_skeleton *s, int32_t b
 int aono_mesh_leaves(const aono_config *cfg, const aono_skeleton *s, int32_t leaf, const aono_env *env,
                      aono_mesh_buffer *b, plugin_err *err);
 
-/* Fills w x h RGBA8 texels (row 0 at the top, v = 1) with a leaf of `shape`: the blade's outline
- * in alpha (0 or 255), its stalk along the bottom tenth, veins lighter than the blade; colour
- * is near white so that the material's albedo sets the leaf's colour. */
-void aono_leaf_texture(aono_leaf_shape shape, uint32_t w, uint32_t h, uint8_t *rgba);
+/* Fills AONO_LEAF_TEXTURE_SIZE^2 RGBA8 texels (row 0 at the top, v = 1) with the leaf of the
+ * config's affine maps (leaf_affine_render, seed AONO_LEAF_TEXTURE_SEED): the outline in alpha
+ * (0 or 255), veins lighter than the blade; grey, so that the material's albedo sets the
+ * leaf's colour. Returns 0, or -1 when out of memory. */
+int aono_leaf_texture(const aono_config *cfg, uint8_t *rgba);
 
-/* Half-width of the blade of `shape` at s in [0, 1] from its base to its tip, as a fraction of
- * the widest point (in [0, 1]). */
-double aono_leaf_half_width(aono_leaf_shape shape, double s);
+/* Fills AONO_BARK_TEXTURE_SIZE^2 RGBA8 texels with the config's fractal bark, one
+ * circumference wide and long (the tubes' u and v). */
+void aono_bark_texture(const aono_config *cfg, uint8_t *rgba);
 
 #endif

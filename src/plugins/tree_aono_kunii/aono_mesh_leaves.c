@@ -36,7 +36,7 @@ static void basis(const double d[3], double p[3], double q[3])
 static void emit_leaf(aono_mesh_buffer *b, const aono_config *cfg, const double at[3], const double L[3],
                       const double W[3], int32_t mat)
 {
-    double N[3], len = cfg->leaf_length, half = 0.5 * cfg->leaf_width * cfg->leaf_length;
+    double N[3], len = cfg->leaf_length, half = 0.5 * cfg->leaf_length;
     cross(W, L, N);
     double c[4][3];
     for (int i = 0; i < 3; i++) {

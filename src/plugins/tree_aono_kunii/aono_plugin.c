@@ -39,24 +39,40 @@ uint32_t aono_variant_levels(uint32_t levels, double age)
     return n > levels ? levels : (uint32_t)n;
 }
 
+/* A texture of size x size texels drawn by fill; returns its id or a negative status. */
+static int32_t make_texture(const sylva_host_api *api, sylva_host *host, const aono_config *c, const char *name,
+                            uint32_t size, int (*fill)(const aono_config *, uint8_t *))
+{
+    uint8_t *texels = malloc(4u * size * size); /* owned here; the host copies */
+    if (!texels || fill(c, texels)) {
+        free(texels);
+        api->error(host, "tree_aono_kunii: out of memory for the %s texture", name);
+        return SYLVA_ERR_NOMEM;
+    }
+    int32_t tex = api->texture_new(host, name, size, size, texels);
+    free(texels);
+    return tex;
+}
+
+static int fill_bark(const aono_config *c, uint8_t *rgba)
+{
+    aono_bark_texture(c, rgba);
+    return 0;
+}
+
 static int make_materials(const sylva_host_api *api, sylva_host *host, aono_state *st)
 {
     const aono_config *c = &st->cfg;
+    int32_t tex = make_texture(api, host, c, "tree_aono_kunii.bark", AONO_BARK_TEXTURE_SIZE, fill_bark);
+    if (tex < 0) return tex;
     sylva_material_desc bark = {.size = sizeof bark, .name = "tree_aono_kunii.bark", .bsdf = SYLVA_BSDF_LAMBERT,
-                                .texture = -1};
+                                .texture = tex};
     for (int k = 0; k < 3; k++) bark.albedo[k] = (float)c->bark_color[k];
     st->bark_material = api->material_new(host, &bark);
     if (st->bark_material < 0) return st->bark_material;
     st->leaf_material = -1;
     if (!c->leaf_count) return SYLVA_OK;
-    uint8_t *texels = malloc(4u * AONO_LEAF_TEXTURE_W * AONO_LEAF_TEXTURE_H); /* owned here; the host copies */
-    if (!texels) {
-        api->error(host, "out of memory for the leaf texture");
-        return SYLVA_ERR_NOMEM;
-    }
-    aono_leaf_texture(c->leaf_shape, AONO_LEAF_TEXTURE_W, AONO_LEAF_TEXTURE_H, texels);
-    int32_t tex = api->texture_new(host, "tree_aono_kunii.leaf", AONO_LEAF_TEXTURE_W, AONO_LEAF_TEXTURE_H, texels);
-    free(texels);
+    tex = make_texture(api, host, c, "tree_aono_kunii.leaf", AONO_LEAF_TEXTURE_SIZE, aono_leaf_texture);
     if (tex < 0) return tex;
     sylva_material_desc leaf = {.size = sizeof leaf, .name = "tree_aono_kunii.leaf", .bsdf = SYLVA_BSDF_LEAF,
                                 .texture = tex, .alpha_mask = 1};

@@ -3,6 +3,7 @@
  * with units, defaults, ranges and one help sentence each. The host validates scene files
  * against this table and prints it with `sylva plugins --describe tree_aono_kunii`. */
 #include "aono_config.h"
+#include "tree_look.h"
 
 #define MIN_MAX (SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX)
 #define POSITIVE_MAX (SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_MIN_EXCLUSIVE | SYLVA_PARAM_HAS_MAX)
@@ -11,7 +12,6 @@ static const char *const pattern_choices[] = {"dichotomous", "monopodial", "tern
 static const char *const law_choices[] = {"linear", "quadratic", "exponential", NULL};
 static const char *const ri_method_choices[] = {"constant", "dimensions", "random", NULL};
 static const char *const del_mode_choices[] = {"fixed", "spiral", NULL};
-static const char *const leaf_shape_choices[] = {"elliptic", "ovate", "obovate", "lanceolate", "cordate", NULL};
 static const char *const leaf_placement_choices[] = {"tip", "along", NULL};
 
 static const double def_fi[] = {0.0, 45.0};
@@ -113,12 +113,12 @@ const sylva_param_spec aono_params[] = {
     {.name = "leaf_count", .type = SYLVA_P_INT, .flags = MIN_MAX, .def = 0, .min = 0, .max = 1000,
      .help = "Leaves on an outermost branch of the full-grown tree; other leaf-bearing branches get as many "
              "per metre (0: a bare tree)."},
-    {.name = "leaf_shape", .type = SYLVA_P_ENUM, .def_str = "ovate", .choices = leaf_shape_choices,
-     .help = "Outline of the leaf blade drawn into the leaf texture."},
+    {.name = "leaf", .type = SYLVA_P_STRING, .def_str = "beech",
+     .help = "The leaf drawn into the leaf texture, as affine maps: a preset (beech, maple, spruce, shrub, "
+             "willow) or maps \"a b c d e f[ p]; ...\" of the leaf's unit square."},
     {.name = "leaf_length", .type = SYLVA_P_REAL, .flags = POSITIVE_MAX, .def = 0.12, .min = 0, .max = 10,
-     .unit = "m", .help = "Length of a leaf, stalk included."},
-    {.name = "leaf_width", .type = SYLVA_P_REAL, .flags = POSITIVE_MAX, .def = 0.6, .min = 0, .max = 2,
-     .help = "Width of a leaf blade over its length."},
+     .unit = "m", .help = "Side of the square leaf quad: the length of a leaf, stalk included (the maps give "
+                          "its width)."},
     {.name = "leaf_placement", .type = SYLVA_P_ENUM, .def_str = "along", .choices = leaf_placement_choices,
      .help = "tip: leaves clustered at the tips of the leaf-bearing branches; along: spread along them."},
     {.name = "leaf_levels", .type = SYLVA_P_INT, .flags = MIN_MAX, .def = 1, .min = 1, .max = AONO_MAX_LEVELS,
@@ -133,7 +133,11 @@ const sylva_param_spec aono_params[] = {
      .def_list = def_leaf_transmittance, .def_len = 3,
      .help = "Linear RGB diffuse transmittance of the leaves; plus leaf_color at most 1 per channel."},
     {.name = "bark_color", .type = SYLVA_P_VEC3, .flags = MIN_MAX, .min = 0, .max = 1, .def_list = def_bark_color,
-     .def_len = 3, .help = "Linear RGB reflectance of the bark."},
+     .def_len = 3, .help = "Linear RGB reflectance of the bark (multiplied by the bark texture)."},
+    {.name = "bark", .type = SYLVA_P_ENUM, .def_str = "smooth", .choices = tree_look_bark_names,
+     .help = "The fractal bark's preset: smooth, scaly, furrowed or fissured."},
+    {.name = "bark_angle", .type = SYLVA_P_REAL, .flags = MIN_MAX, .def = 0, .min = -360, .max = 360,
+     .unit = "deg", .help = "theta of the bark's lambda = e^(i theta); absent: the preset's own."},
 };
 
 _Static_assert(sizeof aono_params / sizeof aono_params[0] == AONO_N_PARAMS, "AONO_N_PARAMS counts the table");

@@ -13,6 +13,7 @@
 
 #include "plugin_host.h"
 #include "sylva/plugin.h"
+#include "tree_look.h"
 #include "vessel_config.h"
 #include "vessel_mesh.h"
 #include "vessel_presets.h"
@@ -43,16 +44,17 @@ static int make_materials(const sylva_host_api *api, sylva_host *host, tree_vess
         goto done;
     }
     char name[64];
-    vessel_texture_bark(p->bark, bark);
-    snprintf(name, sizeof name, "tree_vessel bark %s", vessel_bark_names[p->bark]);
+    vessel_texture_bark(p, bark);
+    snprintf(name, sizeof name, "tree_vessel bark %s", tree_look_bark_names[p->bark_preset]);
     int32_t bark_tex = api->texture_new(host, name, VESSEL_BARK_TEXTURE_SIZE,
                                         VESSEL_BARK_TEXTURE_SIZE, bark);
-    if (vessel_texture_leaf(p->leaf_shape, leaf)) {
+    if (vessel_texture_leaf(p, leaf)) {
         api->error(host, "tree_vessel: out of memory for the leaf texture");
         rc = SYLVA_ERR_NOMEM;
         goto done;
     }
-    snprintf(name, sizeof name, "tree_vessel leaf %s", vessel_leaf_shape_names[p->leaf_shape]);
+    snprintf(name, sizeof name, "tree_vessel leaf %s",
+             p->leaf_preset >= 0 ? leaf_affine_preset_name((leaf_affine_preset)p->leaf_preset) : "maps");
     int32_t leaf_tex = api->texture_new(host, name, VESSEL_LEAF_TEXTURE_SIZE,
                                         VESSEL_LEAF_TEXTURE_SIZE, leaf);
     if (bark_tex < 0 || leaf_tex < 0) {

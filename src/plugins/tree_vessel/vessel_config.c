@@ -4,19 +4,18 @@
  * or else the schema's default. */
 #include "vessel_config.h"
 
+#include <math.h>
 #include <stdint.h>
 #include <string.h>
 
+#include "tree_look.h"
 #include "vessel_presets.h"
+#include "vessel_texture.h"
 
 #define RANGE (SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX)
 #define POSITIVE_RANGE (SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_MIN_EXCLUSIVE | SYLVA_PARAM_HAS_MAX)
 
 static const char *const leaf_types[] = {"stacked", "staggered", "spiral", "bunched", "coniferous", NULL};
-const char *const vessel_leaf_shape_names[VESSEL_LEAF_SHAPES + 1] = {"ovate", "needles", "lanceolate",
-                                                                     "palmate", NULL};
-const char *const vessel_bark_names[VESSEL_BARK_KINDS + 1] = {"smooth", "scaly", "furrowed", "fissured",
-                                                              NULL};
 
 /* The beech preset's values, as the schema's defaults. */
 static const double flat_w[] = {0, 1, 50, 1};
@@ -58,10 +57,15 @@ const sylva_param_spec vessel_schema[VESSEL_SCHEMA_COUNT] = {
      .max = VESSEL_MAX_LEAF_DENSITY, .help = "rho_l: leaves on each terminal branch."},
     {.name = "leaf_type", .type = SYLVA_P_ENUM, .def_str = "spiral", .choices = leaf_types,
      .help = "How leaves sit on a terminal branch: stacked, staggered, spiral, bunched or coniferous."},
-    {.name = "leaf_texture", .type = SYLVA_P_ENUM, .def_str = "ovate", .choices = vessel_leaf_shape_names,
-     .help = "Leaf outline the plugin draws: ovate, needles, lanceolate or palmate."},
-    {.name = "bark_texture", .type = SYLVA_P_ENUM, .def_str = "smooth", .choices = vessel_bark_names,
-     .help = "Bark pattern the plugin draws: smooth, scaly, furrowed or fissured."},
+    {.name = "leaf", .type = SYLVA_P_STRING, .def_str = "beech",
+     .help = "t_leaf, drawn by affine maps: a preset (beech, maple, spruce, shrub, willow) or maps "
+             "\"a b c d e f[ p]; ...\" of the leaf quad's unit square."},
+    {.name = "leaf_spray", .type = SYLVA_P_INT, .flags = RANGE, .def = 5, .min = 1, .max = VESSEL_MAX_LEAF_SPRAY,
+     .help = "Leaves (or twigs) fanned from the stalk on each leaf quad's texture: 1 draws one leaf filling the quad."},
+    {.name = "bark", .type = SYLVA_P_ENUM, .def_str = "smooth", .choices = tree_look_bark_names,
+     .help = "t_bark, the fractal bark's preset: smooth, scaly, furrowed or fissured."},
+    {.name = "bark_angle", .type = SYLVA_P_REAL, .flags = RANGE, .def = 0, .min = -360, .max = 360,
+     .unit = "deg", .help = "theta of the bark's lambda = e^(i theta); absent: the bark preset's own."},
     {.name = "bark_color", .type = SYLVA_P_VEC3, .flags = RANGE, .min = 0, .max = 1,
      .def_list = beech_bark, .def_len = 3, .help = "Linear RGB albedo of the bark."},
     {.name = "leaf_color", .type = SYLVA_P_VEC3, .flags = RANGE, .min = 0, .max = 1,
@@ -152,8 +156,20 @@ static int read_given(const sylva_params *params, vessel_params *out, vessel_err
         out->leaf_density = (uint32_t)v->i;
     }
     if ((v = given(params, "leaf_type"))) out->leaf_type = (vessel_leaf_type)v->i;
-    if ((v = given(params, "leaf_texture"))) out->leaf_shape = (vessel_leaf_shape)v->i;
-    if ((v = given(params, "bark_texture"))) out->bark = (vessel_bark_kind)v->i;
+    if ((v = given(params, "leaf_spray"))) out->leaf_spray = (uint32_t)v->i;
+    char why[VESSEL_ERR_MSG_MAX - 64];
+    if ((v = given(params, "leaf"))) {
+        int named = tree_look_leaf(v->s, VESSEL_LEAF_TEXTURE_SIZE, &out->leaf, why, sizeof why);
+        if (named < 0) return vessel_fail(err, VESSEL_FAULT_PARAM, "leaf", "'leaf': %s", why);
+        out->leaf_preset = named == TREE_LOOK_USER_MAPS ? -1 : named;
+    }
+    /* a bark preset brings its own angle unless bark_angle is given too */
+    const sylva_value *bark = given(params, "bark"), *angle = given(params, "bark_angle");
+    if (bark) out->bark_preset = (bark_fractal_preset)bark->i;
+    if ((bark || angle) &&
+        tree_look_bark((int)out->bark_preset, angle ? angle->r : NAN, &out->bark, why, sizeof why))
+        return vessel_fail(err, VESSEL_FAULT_PARAM, angle ? "bark_angle" : "bark", "'%s': %s",
+                           angle ? "bark_angle" : "bark", why);
     read_colour(params, "bark_color", out->bark_albedo);
     read_colour(params, "leaf_color", out->leaf_albedo);
     read_colour(params, "leaf_transmittance", out->leaf_transmittance);
@@ -199,6 +215,7 @@ int vessel_preset_get(vessel_preset which, vessel_params *out)
                               .list = pv->list, .len = pv->len};
         }
         if (spec->type == SYLVA_P_ENUM) v.i = choice_index(spec, v.s);
+        if (!strcmp(spec->name, "bark_angle")) v.is_set = 0; /* a preset's bark keeps its own angle */
         values[k] = v;
     }
     values[0].i = which; /* the preset key itself */

@@ -14,12 +14,8 @@
 #include "vessel_error.h"
 #include "vessel_params.h"
 
-#define VESSEL_SCHEMA_COUNT 32u
+#define VESSEL_SCHEMA_COUNT 34u
 extern const sylva_param_spec vessel_schema[VESSEL_SCHEMA_COUNT];
-
-/* The choices of leaf_texture and bark_texture, in enum order, NULL-terminated. */
-extern const char *const vessel_leaf_shape_names[VESSEL_LEAF_SHAPES + 1];
-extern const char *const vessel_bark_names[VESSEL_BARK_KINDS + 1];
 
 /* Reads a block validated against vessel_schema into *out and checks it (vessel_params_check
  * plus the orders of the polylines). Returns 0, or a vessel_fault with err set; err->param names

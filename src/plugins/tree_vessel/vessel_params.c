@@ -58,6 +58,9 @@ int vessel_params_check(const vessel_params *p, vessel_err *err)
         check_real(p->flexibility, 0.0, 1.0, 0, "flexibility", "", err) ||
         check_real(p->wind_time, -VESSEL_MAX_WIND_TIME, VESSEL_MAX_WIND_TIME, 0, "wind_time", " rad", err))
         return -1;
+    if (p->leaf_spray < 1 || p->leaf_spray > VESSEL_MAX_LEAF_SPRAY)
+        return vessel_fail(err, VESSEL_FAULT_PARAM, "leaf_spray", "'leaf_spray' is %u; a quad carries 1 to %u leaves",
+                           p->leaf_spray, VESSEL_MAX_LEAF_SPRAY);
     if (p->leaf_density > VESSEL_MAX_LEAF_DENSITY)
         return vessel_fail(err, VESSEL_FAULT_PARAM, "leaf_density",
                            "'leaf_density' is %u leaves per branch; valid values are 0 to %u",
@@ -65,12 +68,11 @@ int vessel_params_check(const vessel_params *p, vessel_err *err)
     if ((unsigned)p->leaf_type >= VESSEL_LEAF_TYPES)
         return vessel_fail(err, VESSEL_FAULT_PARAM, "leaf_type", "'leaf_type' %d is not one of the five distributions",
                            (int)p->leaf_type);
-    if ((unsigned)p->leaf_shape >= VESSEL_LEAF_SHAPES)
-        return vessel_fail(err, VESSEL_FAULT_PARAM, "leaf_texture", "'leaf_texture' %d is not a known leaf outline",
-                           (int)p->leaf_shape);
-    if ((unsigned)p->bark >= VESSEL_BARK_KINDS)
-        return vessel_fail(err, VESSEL_FAULT_PARAM, "bark_texture", "'bark_texture' %d is not a known bark",
-                           (int)p->bark);
+    char why[256];
+    if (leaf_affine_check(&p->leaf, why, sizeof why))
+        return vessel_fail(err, VESSEL_FAULT_PARAM, "leaf", "'leaf': %s", why);
+    if ((unsigned)p->bark_preset >= BARK_FRACTAL_PRESETS || bark_fractal_check(&p->bark, why, sizeof why))
+        return vessel_fail(err, VESSEL_FAULT_PARAM, "bark", "'bark': %s", (unsigned)p->bark_preset >= BARK_FRACTAL_PRESETS ? "not a preset" : why);
     if (p->sides < VESSEL_MIN_SIDES || p->sides > VESSEL_MAX_SIDES)
         return vessel_fail(err, VESSEL_FAULT_PARAM, "sides", "'sides' is %u; branch cones have %u to %u sides",
                            p->sides, VESSEL_MIN_SIDES, VESSEL_MAX_SIDES);

@@ -9,6 +9,8 @@
 
 #include <stdint.h>
 
+#include "bark_fractal.h"
+#include "leaf_affine.h"
 #include "vessel_error.h"
 #include "vessel_polyline.h"
 
@@ -17,6 +19,7 @@
 #define VESSEL_MAX_TRUNK_LENGTH 100.0    /* l0, metres */
 #define VESSEL_MAX_LEAF_SIZE 5.0         /* l_l, metres */
 #define VESSEL_MAX_LEAF_DENSITY 1000u    /* rho_l, leaves per terminal branch */
+#define VESSEL_MAX_LEAF_SPRAY 9u         /* leaves fanned on one leaf quad */
 #define VESSEL_MIN_SIDES 4u              /* n of the truncated cones (004 Fig. 3.11) */
 #define VESSEL_MAX_SIDES 15u
 #define VESSEL_MAX_TRIANGLES 20000000u   /* per tree model, checked before any mesh is built */
@@ -31,24 +34,6 @@ typedef enum vessel_leaf_type {
     VESSEL_LEAF_CONIFEROUS,   /* staggered, at an acute angle to the branch */
     VESSEL_LEAF_TYPES
 } vessel_leaf_type;
-
-/* The leaf texture t_leaf: which outline the plugin draws into the leaf's alpha. */
-typedef enum vessel_leaf_shape {
-    VESSEL_LEAF_SHAPE_OVATE = 0, /* one broad leaf with a pointed tip (beech) */
-    VESSEL_LEAF_SHAPE_NEEDLES,   /* a spray of needles on a twig (spruce) */
-    VESSEL_LEAF_SHAPE_LANCEOLATE,/* a fan of long narrow leaves (willow) */
-    VESSEL_LEAF_SHAPE_PALMATE,   /* one five-lobed leaf (maple) */
-    VESSEL_LEAF_SHAPES
-} vessel_leaf_shape;
-
-/* The bark texture t_bark. */
-typedef enum vessel_bark_kind {
-    VESSEL_BARK_SMOOTH = 0, /* smooth, mottled (beech) */
-    VESSEL_BARK_SCALY,      /* small plates (spruce) */
-    VESSEL_BARK_FURROWED,   /* deep vertical ridges (willow) */
-    VESSEL_BARK_FISSURED,   /* shallow fissures and plates (maple) */
-    VESSEL_BARK_KINDS
-} vessel_bark_kind;
 
 /* The per-order parameters, each a product of a g polyline and a w polyline. */
 typedef enum vessel_local {
@@ -70,8 +55,11 @@ typedef struct vessel_params {
     double leaf_size;         /* l_l, metres, [0, VESSEL_MAX_LEAF_SIZE] */
     uint32_t leaf_density;    /* rho_l, leaves per terminal branch, [0, VESSEL_MAX_LEAF_DENSITY] */
     vessel_leaf_type leaf_type;
-    vessel_leaf_shape leaf_shape;
-    vessel_bark_kind bark;
+    leaf_affine_maps leaf;    /* t_leaf: the leaf's affine maps (`leaf:`) */
+    uint32_t leaf_spray;      /* leaves fanned from the stalk on each quad, [1, VESSEL_MAX_LEAF_SPRAY] */
+    int leaf_preset;          /* the leaf_affine_preset they are, or -1 for the scene's own maps */
+    bark_fractal_params bark; /* t_bark: the fractal bark (`bark:`, `bark_angle:`) */
+    bark_fractal_preset bark_preset; /* the preset it starts from */
     uint32_t sides;           /* n, [VESSEL_MIN_SIDES, VESSEL_MAX_SIDES] */
     vessel_polyline by_g[VESSEL_LOCALS]; /* the ^g polylines over g in [0, 15] */
     vessel_polyline by_w[VESSEL_LOCALS]; /* the ^w polylines over w in [0, 50] */

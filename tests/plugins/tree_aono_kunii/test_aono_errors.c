@@ -2,6 +2,7 @@
  * the schema's checks (negative or absurd levels, ratios of 1 or more) and create()'s and
  * generate()'s own (segment limits, ratios from dimensions, controllers on tips, angle laws,
  * pattern and list lengths, settings that would not be read). */
+#include <math.h>
 #include <string.h>
 
 #include "aono_fixture.h"
@@ -88,13 +89,43 @@ TEST(settings_that_would_not_be_read)
     expect_refused("pattern: dichotomous\nfi: [20, 30]\nlvt: 2\n", SYLVA_ERR_PARAM, "'lvt'", "unless pattern is monopodial");
     expect_refused("ri_method: random\nri: [0.5, 0.6]\n", SYLVA_ERR_PARAM, "'ri'", "unless ri_method is constant");
     expect_refused("crown_diameter: 9\n", SYLVA_ERR_PARAM, "'crown_diameter'", "unless ri_method is dimensions");
-    expect_refused("leaf_shape: cordate\n", SYLVA_ERR_PARAM, "'leaf_shape'", "when leaf_count is 0");
+    expect_refused("leaf: maple\n", SYLVA_ERR_PARAM, "'leaf'", "when leaf_count is 0");
     expect_refused("sides: 6\nmin_sides: 8\n", SYLVA_ERR_PARAM, "'min_sides'", "min_sides <= sides");
     expect_refused("leaf_count: 3\nleaf_color: [0.6, 0.5, 0.4]\nleaf_transmittance: [0.5, 0.4, 0.3]\n", SYLVA_ERR_PARAM,
                    "'leaf_transmittance'", "at most 1");
     expect_refused("levels: 12\npattern: dichotomous\nfi: [20, 30]\nleaf_count: 1000\nleaf_levels: 3\n", SYLVA_ERR_PARAM,
                    "'leaf_count'", "lower leaf_count");
     expect_refused("leves: 3\n", -1, "unknown key 'leves'", "did you mean 'levels'");
+}
+
+/* The leaf and bark keys: a preset's name or user maps, a bark preset and its angle; each kind
+ * of bad value is refused at its place in the file. */
+TEST(leaf_and_bark_keys)
+{
+    expect_refused("leaf_count: 3\nleaf: oak\n", SYLVA_ERR_PARAM, "test.yaml:2:7: 'leaf'",
+                   "'oak' is not a leaf; give a preset (beech, maple, spruce, shrub, willow) or affine maps");
+    expect_refused("leaf_count: 3\nleaf: \"0.5 0 0 0.5 0 x\"\n", SYLVA_ERR_PARAM, "test.yaml:2:7: 'leaf'", "column");
+    expect_refused("leaf_count: 3\nleaf: \"1.2 0 0 0.5 0 0\"\n", SYLVA_ERR_PARAM, "test.yaml:2:7: 'leaf'",
+                   "every map must shrink");
+    expect_refused("leaf_count: 3\nleaf: \"0.5 0 0 0.5 0.8 0\"\n", SYLVA_ERR_PARAM, "test.yaml:2:7: 'leaf'",
+                   "unit square");
+    expect_refused("leaf_count: 3\nleaf: \"\"\n", SYLVA_ERR_PARAM, "'leaf'", "is not a leaf");
+    expect_refused("leaf_count: 3\nleaf: [1, 2]\n", -1, "test.yaml:2:7", "'leaf'");
+    expect_refused("bark: bumpy\n", -1, "test.yaml:1:7: 'bark'", "smooth");
+    expect_refused("bark: scaly\nbark_angle: 400\n", -1, "test.yaml:2:13: 'bark_angle'", "[-360, 360]");
+    expect_refused("bark_angle: north\n", -1, "'bark_angle'", "number");
+    aono_fixture fx;
+    CHECK_INT(aono_fixture_open(&fx, "leaf_count: 3\nleaf: willow\nbark: fissured\nbark_angle: -35.5\n", 1), 0);
+    aono_config cfg;
+    CHECK_INT(aono_fixture_config(&fx, &cfg), 0);
+    leaf_affine_maps willow;
+    leaf_affine_preset_maps(LEAF_AFFINE_WILLOW, &willow);
+    CHECK(!memcmp(&cfg.leaf, &willow, sizeof willow));
+    bark_fractal_params fissured = bark_fractal_preset_params(BARK_FRACTAL_FISSURED);
+    CHECK(cfg.bark.radius_inner == fissured.radius_inner && cfg.bark.iterations == fissured.iterations);
+    CHECK(fabs(cfg.bark.theta - -35.5 * M_PI / 180.0) < 1e-12);
+    aono_config_release(&cfg);
+    aono_fixture_close(&fx);
 }
 
 /* A valid scene block opens without complaint and every default is usable. */
@@ -111,5 +142,5 @@ TEST(defaults_are_valid)
     aono_fixture_close(&fx);
 }
 
-TEST_LIST(TEST_CASE(levels_negative_and_absurd), TEST_CASE(ratios_of_one_or_more), TEST_CASE(controller_on_a_tip),
+TEST_LIST(TEST_CASE(leaf_and_bark_keys), TEST_CASE(levels_negative_and_absurd), TEST_CASE(ratios_of_one_or_more), TEST_CASE(controller_on_a_tip),
           TEST_CASE(pattern_and_angles), TEST_CASE(settings_that_would_not_be_read), TEST_CASE(defaults_are_valid))

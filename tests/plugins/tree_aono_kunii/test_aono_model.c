@@ -2,6 +2,7 @@
  * equations: the frame and child tips (16)–(19), the angle laws (13)–(15), the ratios (23)–(24),
  * the deviations (25), age variants, determinism, and the mesh (joints, winding, UVs, leaves). */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -12,6 +13,7 @@
 #include "aono_plugin.h"
 #include "aono_ratio.h"
 #include "harness.h"
+#include "tree_look.h"
 
 #define DEG (3.14159265358979323846 / 180.0)
 
@@ -606,8 +608,7 @@ TEST(bark_joints_closed_and_outward)
 /* Leaves: leaf_count quads on an outermost branch of the full-grown tree and as many per metre
  * on the other leaf-bearing branches, with the leaf material. Ratios 0.8 make every level-k
  * branch 4 x 0.8^k long: level 4 carries 5 leaves, level 3 6.25 (6 or 7); the age-0.5 variant
- * (2 levels) carries 5 x 3.2/1.6384 = 9.77 on level 1 and 7.81 on level 2. The texture holds an
- * opaque blade and stalk and transparent corners. */
+ * (2 levels) carries 5 x 3.2/1.6384 = 9.77 on level 1 and 7.81 on level 2. */
 static uint32_t leaf_quads(aono_fixture *fx, double age)
 {
     mesh *m = NULL;
@@ -621,7 +622,7 @@ static uint32_t leaf_quads(aono_fixture *fx, double age)
     return tris / 2;
 }
 
-TEST(leaves_and_texture)
+TEST(leaves_and_materials)
 {
     aono_fixture fx;
     CHECK_INT(aono_fixture_open(&fx,
@@ -632,20 +633,53 @@ TEST(leaves_and_texture)
     uint32_t old = leaf_quads(&fx, 1.0), young = leaf_quads(&fx, 0.5);
     CHECK(old >= 16 * 5 + 8 * 6 && old <= 16 * 5 + 8 * 7);
     CHECK(young >= 2 * 9 + 4 * 7 && young <= 2 * 10 + 4 * 8);
-    CHECK(fx.scene->n_textures == 1 && fx.scene->textures[0].has_alpha);
+    CHECK_INT(fx.scene->n_textures, 2);
     int32_t leaf_mat = scene_find_material(fx.scene, "tree_aono_kunii.leaf");
     CHECK(leaf_mat >= 0 && fx.scene->materials[leaf_mat].alpha_mask == 1);
     aono_fixture_close(&fx);
-    for (int shape = AONO_LEAF_ELLIPTIC; shape <= AONO_LEAF_CORDATE; shape++) {
-        uint8_t tex[32 * 64 * 4];
-        aono_leaf_texture((aono_leaf_shape)shape, 32, 64, tex);
-        CHECK_INT(tex[3], 0);                            /* top-left corner: outside */
-        CHECK_INT(tex[4 * (63 * 32 + 16) + 3], 255);     /* bottom middle: the stalk */
-        CHECK_INT(tex[4 * (24 * 32 + 16) + 3], 255);     /* the blade's middle */
-        for (int k = 1; k < 100; k++) {
-            double w = aono_leaf_half_width((aono_leaf_shape)shape, k / 100.0);
-            CHECK(w >= 0.0 && w <= 1.0);
-        }
+}
+
+/* The texture of material `name` of a tree made from `yaml` (owned by the fixture). */
+static const texture *material_texture(aono_fixture *fx, const char *yaml, const char *name)
+{
+    CHECK_INT(aono_fixture_open(fx, yaml, 2), 0);
+    int32_t mat = scene_find_material(fx->scene, name);
+    CHECK(mat >= 0);
+    int32_t tex = mat >= 0 ? fx->scene->materials[mat].texture : -1;
+    CHECK(tex >= 0 && (uint32_t)tex < fx->scene->n_textures);
+    return tex >= 0 ? &fx->scene->textures[tex] : NULL;
+}
+
+/* The leaf texture is the affine-map leaf of the `leaf:` key (the beech preset by default, user
+ * maps as given): the same texels, so the same alpha area and outline, as leaf_affine_render. */
+TEST(leaf_texture_is_the_affine_leaf)
+{
+    static const struct { const char *key, *maps; int preset; } cases[] = {
+        {"", NULL, LEAF_AFFINE_BEECH},
+        {"leaf: maple\n", NULL, LEAF_AFFINE_MAPLE},
+        {"leaf: willow\n", NULL, LEAF_AFFINE_WILLOW},
+        {"leaf: \"0.5 0 0 0.5 0.15 0; 0.5 0 0 0.5 0.35 0; 0.5 0 0 0.5 0.15 0.5; 0.5 0 0 0.5 0.35 0.5\"\n",
+         "0.5 0 0 0.5 0.15 0; 0.5 0 0 0.5 0.35 0; 0.5 0 0 0.5 0.15 0.5; 0.5 0 0 0.5 0.35 0.5", -1},
+    };
+    /* the user maps fill the rectangle [0.3, 0.7] x [0, 1] */
+    const uint32_t n = AONO_LEAF_TEXTURE_SIZE;
+    static uint8_t want[AONO_LEAF_TEXTURE_SIZE * AONO_LEAF_TEXTURE_SIZE * 4];
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        char yaml[256];
+        snprintf(yaml, sizeof yaml, "levels: 3\nleaf_count: 4\n%s", cases[c].key);
+        leaf_affine_maps maps;
+        if (cases[c].maps) CHECK_INT(leaf_affine_parse(cases[c].maps, &maps, NULL, 0), 0);
+        else leaf_affine_preset_maps((leaf_affine_preset)cases[c].preset, &maps);
+        CHECK_INT(leaf_affine_render(&maps, n, AONO_LEAF_TEXTURE_SEED, want, NULL, 0), 0);
+        aono_fixture fx;
+        const texture *t = material_texture(&fx, yaml, "tree_aono_kunii.leaf");
+        CHECK(t && t->width == n && t->height == n && t->has_alpha);
+        uint64_t area = 0, want_area = 0;
+        for (uint32_t i = 0; t && i < n * n; i++) area += t->rgba[4 * i + 3] > 127, want_area += want[4 * i + 3] > 127;
+        CHECK(want_area > n * n / 40);
+        CHECK(area == want_area);
+        CHECK(t && !memcmp(t->rgba, want, sizeof want));
+        aono_fixture_close(&fx);
     }
 }
 
@@ -686,10 +720,36 @@ TEST(tree_stats_count_segments_and_axes)
     CHECK_INT(three.branches, 27);
 }
 
+/* The bark texture is the fractal bark of `bark:` and `bark_angle:` (smooth by default). */
+TEST(bark_texture_is_the_fractal_bark)
+{
+    static const struct { const char *yaml; int preset; double angle; } cases[] = {
+        {"levels: 3\n", BARK_FRACTAL_SMOOTH, NAN},
+        {"levels: 3\nbark: furrowed\n", BARK_FRACTAL_FURROWED, NAN},
+        {"levels: 3\nbark: scaly\nbark_angle: 40\n", BARK_FRACTAL_SCALY, 40},
+    };
+    const uint32_t n = AONO_BARK_TEXTURE_SIZE;
+    static uint8_t want[AONO_BARK_TEXTURE_SIZE * AONO_BARK_TEXTURE_SIZE * 4];
+    uint64_t sums[3] = {0};
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        bark_fractal_params p = bark_fractal_preset_params((bark_fractal_preset)cases[c].preset);
+        if (!isnan(cases[c].angle)) p.theta = cases[c].angle * M_PI / 180.0;
+        tree_look_bark_texture(&p, n, want);
+        aono_fixture fx;
+        const texture *t = material_texture(&fx, cases[c].yaml, "tree_aono_kunii.bark");
+        CHECK(t && t->width == n && t->height == n && !t->has_alpha);
+        CHECK(t && !memcmp(t->rgba, want, sizeof want));
+        for (uint32_t i = 0; t && i < n * n; i++) sums[c] += t->rgba[4 * i];
+        aono_fixture_close(&fx);
+    }
+    CHECK(sums[0] != sums[1] && sums[1] != sums[2] && sums[0] != sums[2]); /* three different barks */
+}
+
 TEST_LIST(TEST_CASE(tree_stats_count_segments_and_axes), TEST_CASE(hand_branching_tilted_mother), TEST_CASE(hand_branching_two_levels),
           TEST_CASE(paper_transform_mirrored), TEST_CASE(frame_orthonormal_and_vertical),
           TEST_CASE(law_linear_through_two_points), TEST_CASE(law_quadratic_least_squares),
           TEST_CASE(law_exponential_at_zero_and_n2), TEST_CASE(law_drives_branching_angle),
           TEST_CASE(ratios_from_dimensions), TEST_CASE(ratios_reach_the_tree), TEST_CASE(attractor_and_inhibitor),
           TEST_CASE(gravity_lowers_every_tip), TEST_CASE(deviation_by_hand), TEST_CASE(age_variants_by_levels),
-          TEST_CASE(same_seed_same_mesh), TEST_CASE(bark_joints_closed_and_outward), TEST_CASE(leaves_and_texture))
+          TEST_CASE(same_seed_same_mesh), TEST_CASE(bark_joints_closed_and_outward), TEST_CASE(leaves_and_materials),
+          TEST_CASE(leaf_texture_is_the_affine_leaf), TEST_CASE(bark_texture_is_the_fractal_bark))

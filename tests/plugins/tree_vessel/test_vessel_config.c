@@ -1,5 +1,6 @@
 /* test_vessel_config.c — the tree_vessel schema: the host accepts it, its defaults are the beech
  * preset, and a block reads as its preset with the given keys replaced one by one. */
+#include <math.h>
 #include <string.h>
 
 #include "harness.h"
@@ -21,7 +22,8 @@ static void block_from_defaults(block *b, const char *preset_name)
         sylva_value *v = &b->values[i];
         v->is_set = 1;
         v->r = s->def, v->i = (int64_t)s->def;
-        v->list = s->def_list, v->len = s->def_len;
+        v->list = s->def_list, v->len = s->def_len, v->s = s->def_str;
+        if (!strcmp(s->name, "bark_angle")) v->is_set = 0; /* absent: the bark preset's own angle */
         if (s->type == SYLVA_P_ENUM) {
             const char *want = !strcmp(s->name, "preset") ? preset_name : s->def_str;
             for (int64_t k = 0; s->choices[k]; k++)
@@ -37,7 +39,9 @@ static int same_params(const vessel_params *a, const vessel_params *b)
                a->thickness == b->thickness && a->gravicentralism == b->gravicentralism &&
                a->phyllotaxis == b->phyllotaxis && a->leaf_size == b->leaf_size &&
                a->leaf_density == b->leaf_density && a->leaf_type == b->leaf_type &&
-               a->leaf_shape == b->leaf_shape && a->bark == b->bark && a->sides == b->sides &&
+               !memcmp(&a->leaf, &b->leaf, sizeof a->leaf) && a->leaf_preset == b->leaf_preset &&
+               !memcmp(&a->bark, &b->bark, sizeof a->bark) && a->bark_preset == b->bark_preset &&
+               a->sides == b->sides &&
                a->wind_sway == b->wind_sway && a->wind_strength == b->wind_strength &&
                a->flexibility == b->flexibility && a->wind_time == b->wind_time;
     for (int k = 0; k < 3; k++)
@@ -123,5 +127,69 @@ TEST(orders_past_the_span_are_refused_at_their_key)
     CHECK_INT(vessel_config_read(&b.params, &read, &err), 0);
 }
 
-TEST_LIST(TEST_CASE(the_host_accepts_the_schema), TEST_CASE(schema_defaults_are_the_beech_preset),
+/* leaf: names a preset or gives maps; bark: names a preset, whose own angle bark_angle: replaces.
+ * The presets keep the textures they had: beech smooth, spruce scaly, willow furrowed, maple
+ * fissured. */
+TEST(leaf_and_bark_keys)
+{
+    static const struct { int preset; leaf_affine_preset leaf; bark_fractal_preset bark; } kept[] = {
+        {VESSEL_PRESET_BEECH, LEAF_AFFINE_BEECH, BARK_FRACTAL_SMOOTH},
+        {VESSEL_PRESET_SPRUCE, LEAF_AFFINE_SPRUCE, BARK_FRACTAL_SCALY},
+        {VESSEL_PRESET_WEEPING_WILLOW, LEAF_AFFINE_WILLOW, BARK_FRACTAL_FURROWED},
+        {VESSEL_PRESET_MAPLE, LEAF_AFFINE_MAPLE, BARK_FRACTAL_FISSURED},
+    };
+    for (size_t i = 0; i < sizeof kept / sizeof kept[0]; i++) {
+        vessel_params p = preset((vessel_preset)kept[i].preset);
+        leaf_affine_maps maps;
+        leaf_affine_preset_maps(kept[i].leaf, &maps);
+        bark_fractal_params bark = bark_fractal_preset_params(kept[i].bark);
+        CHECK(!memcmp(&p.leaf, &maps, sizeof maps) && p.leaf_preset == (int)kept[i].leaf);
+        CHECK(!memcmp(&p.bark, &bark, sizeof bark) && p.bark_preset == kept[i].bark);
+    }
+    block b;
+    block_from_defaults(&b, "spruce");
+    for (uint32_t i = 0; i < VESSEL_SCHEMA_COUNT; i++) b.values[i].is_set = !strcmp(vessel_schema[i].name, "preset");
+    int leaf = sylva_param_index(&b.params, "leaf"), bark = sylva_param_index(&b.params, "bark");
+    int angle = sylva_param_index(&b.params, "bark_angle");
+    vessel_params read;
+    vessel_err err = {0};
+    /* a preset's name; a bark preset with its own angle */
+    b.values[leaf].is_set = 1, b.values[leaf].s = "shrub";
+    b.values[bark].is_set = 1, b.values[bark].i = BARK_FRACTAL_FISSURED;
+    CHECK_INT(vessel_config_read(&b.params, &read, &err), 0);
+    leaf_affine_maps shrub;
+    leaf_affine_preset_maps(LEAF_AFFINE_SHRUB, &shrub);
+    CHECK(!memcmp(&read.leaf, &shrub, sizeof shrub) && read.leaf_preset == LEAF_AFFINE_SHRUB);
+    bark_fractal_params fissured = bark_fractal_preset_params(BARK_FRACTAL_FISSURED);
+    CHECK(!memcmp(&read.bark, &fissured, sizeof fissured) && read.bark_preset == BARK_FRACTAL_FISSURED);
+    /* user maps; the spruce's own bark at another angle */
+    b.values[leaf].s = "0.5 0 0 0.5 0.15 0; 0.5 0 0 0.5 0.35 0; 0.5 0 0 0.5 0.15 0.5; 0.5 0 0 0.5 0.35 0.5";
+    b.values[bark].is_set = 0;
+    b.values[angle].is_set = 1, b.values[angle].r = -90;
+    CHECK_INT(vessel_config_read(&b.params, &read, &err), 0);
+    CHECK_INT(read.leaf.n, 4);
+    CHECK_INT(read.leaf_preset, -1);
+    CHECK_NEAR(read.leaf.map[3].f, 0.5, 0);
+    bark_fractal_params scaly = bark_fractal_preset_params(BARK_FRACTAL_SCALY);
+    CHECK_NEAR(read.bark.theta, -M_PI / 2, 1e-15);
+    read.bark.theta = scaly.theta;
+    CHECK(!memcmp(&read.bark, &scaly, sizeof scaly));
+    /* refused, naming the key */
+    static const struct { const char *leaf; const char *key, *why; } bad[] = {
+        {"oak", "leaf", "'oak' is not a leaf; give a preset (beech, maple, spruce, shrub, willow)"},
+        {"0.5 0 0 0.5 0 x", "leaf", "column"},
+        {"1.2 0 0 0.5 0 0", "leaf", "every map must shrink"},
+        {"0.5 0 0 0.5 0.8 0", "leaf", "outside the unit square"},
+    };
+    b.values[angle].is_set = 0;
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        b.values[leaf].s = bad[i].leaf;
+        memset(&err, 0, sizeof err);
+        CHECK_INT(vessel_config_read(&b.params, &read, &err), -1);
+        CHECK_STR_CONTAINS(err.param, bad[i].key);
+        CHECK_STR_CONTAINS(err.msg, bad[i].why);
+    }
+}
+
+TEST_LIST(TEST_CASE(leaf_and_bark_keys), TEST_CASE(the_host_accepts_the_schema), TEST_CASE(schema_defaults_are_the_beech_preset),
           TEST_CASE(a_preset_with_keys_replaced), TEST_CASE(orders_past_the_span_are_refused_at_their_key))

@@ -2,6 +2,7 @@
  * cone, n per terminal cone, 2 per leaf), valid indices, unit normals, outward winding, bark
  * texture coordinates that continue from mother to main child, the triangle limit, the
  * textures' alpha. */
+#include <stdlib.h>
 #include <string.h>
 
 #include "harness.h"
@@ -140,8 +141,9 @@ TEST(triangle_limit_is_checked_before_building)
 TEST(textures_are_opaque_bark_and_outlined_leaves)
 {
     uint8_t *px = malloc(VESSEL_LEAF_TEXTURE_SIZE * VESSEL_LEAF_TEXTURE_SIZE * 4);
-    for (int s = 0; s < VESSEL_LEAF_SHAPES; s++) {
-        CHECK_INT(vessel_texture_leaf((vessel_leaf_shape)s, px), 0);
+    for (int s = 0; s < VESSEL_PRESETS; s++) {
+        vessel_params p = preset((vessel_preset)s);
+        CHECK_INT(vessel_texture_leaf(&p, px), 0);
         uint32_t inside = 0, n = VESSEL_LEAF_TEXTURE_SIZE * VESSEL_LEAF_TEXTURE_SIZE;
         for (uint32_t i = 0; i < n; i++) inside += px[4 * i + 3] == 255;
         CHECK(inside > n / 20);  /* an outline, neither empty ... */
@@ -151,8 +153,9 @@ TEST(textures_are_opaque_bark_and_outlined_leaves)
     }
     free(px);
     px = malloc(VESSEL_BARK_TEXTURE_SIZE * VESSEL_BARK_TEXTURE_SIZE * 4);
-    for (int k = 0; k < VESSEL_BARK_KINDS; k++) {
-        vessel_texture_bark((vessel_bark_kind)k, px);
+    for (int k = 0; k < VESSEL_PRESETS; k++) {
+        vessel_params p = preset((vessel_preset)k);
+        vessel_texture_bark(&p, px);
         uint32_t opaque = 0, lo = 255, hi = 0;
         for (uint32_t i = 0; i < VESSEL_BARK_TEXTURE_SIZE * VESSEL_BARK_TEXTURE_SIZE; i++) {
             opaque += px[4 * i + 3] == 255;
@@ -165,7 +168,42 @@ TEST(textures_are_opaque_bark_and_outlined_leaves)
     free(px);
 }
 
-TEST_LIST(TEST_CASE(counts_indices_and_normals_on_every_preset), TEST_CASE(bark_faces_outward),
+static uint32_t alpha_area(const uint8_t *px)
+{
+    uint32_t inside = 0;
+    for (uint32_t i = 0; i < VESSEL_LEAF_TEXTURE_SIZE * VESSEL_LEAF_TEXTURE_SIZE; i++) inside += px[4 * i + 3] > 127;
+    return inside;
+}
+
+/* leaf_spray 1 is the affine leaf itself; a spray fans smaller copies of it from the stalk, so
+ * that a quad of the beech's ovate leaf carries about the leaf area the quad had before the
+ * leaves were drawn by maps (0.39 of the quad), and more than the one leaf (0.30). */
+TEST(leaf_spray_fans_the_affine_leaf)
+{
+    const uint32_t n = VESSEL_LEAF_TEXTURE_SIZE;
+    uint8_t *one = malloc(n * n * 4), *want = malloc(n * n * 4), *spray = malloc(n * n * 4);
+    vessel_params p = preset(VESSEL_PRESET_BEECH);
+    CHECK_INT(p.leaf_spray, 5);
+    CHECK_INT(vessel_texture_leaf(&p, spray), 0);
+    p.leaf_spray = 1;
+    CHECK_INT(vessel_texture_leaf(&p, one), 0);
+    CHECK_INT(leaf_affine_render(&p.leaf, n, VESSEL_LEAF_TEXTURE_SEED, want, NULL, 0), 0);
+    CHECK(!memcmp(one, want, (size_t)n * n * 4));
+    double a1 = alpha_area(one) / (double)(n * n), a5 = alpha_area(spray) / (double)(n * n);
+    CHECK(a1 > 0.28 && a1 < 0.32);
+    CHECK(a5 > 0.37 && a5 < 0.43);
+    /* the middle leaf lies on top: up the midline the spray shows the one leaf shrunk by the scale */
+    for (uint32_t row = 0; row < n; row++) {
+        double v = 1.0 - (row + 0.5) / n;
+        uint32_t src = n - 1 - (uint32_t)(v / VESSEL_SPRAY_SCALE * n);
+        if (v / VESSEL_SPRAY_SCALE >= 1) continue;
+        const uint8_t *s = one + 4 * ((size_t)src * n + n / 2), *t = spray + 4 * ((size_t)row * n + n / 2);
+        if (s[3] > 127) CHECK(!memcmp(s, t, 4));
+    }
+    free(one), free(want), free(spray);
+}
+
+TEST_LIST(TEST_CASE(leaf_spray_fans_the_affine_leaf), TEST_CASE(counts_indices_and_normals_on_every_preset), TEST_CASE(bark_faces_outward),
           TEST_CASE(bark_v_continues_into_the_main_child), TEST_CASE(level_of_detail_draws_fewer_triangles),
           TEST_CASE(triangle_limit_is_checked_before_building),
           TEST_CASE(textures_are_opaque_bark_and_outlined_leaves))

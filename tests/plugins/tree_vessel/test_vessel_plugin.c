@@ -134,6 +134,15 @@ TEST(bad_blocks_are_refused_with_clear_messages)
         {"gravimorphism_w: [[0, 1], [51, 1]]", {"'gravimorphism_w'", "orders run from 0 to 50"}},
         {"preset: oak", {"'preset'", "weeping_willow"}},
         {"sides: 3", {"'sides'", "[4, 15]"}},
+        {"leaf: oak", {":3:", "'leaf': 'oak' is not a leaf"}},
+        {"leaf: '0.5 0 0 0.5 0 x'", {"'leaf'", "column"}},
+        {"leaf: '1.2 0 0 0.5 0 0'", {"'leaf'", "every map must shrink"}},
+        {"leaf: '0.5 0 0 0.5 0.8 0'", {"'leaf'", "unit square"}},
+        {"leaf: [1, 2]", {":3:", "'leaf'"}},
+        {"bark: bumpy", {":3:", "'bark'"}},
+        {"leaf_spray: 0", {"'leaf_spray'", "[1, 9]"}},
+        {"leaf_spray: 10", {"'leaf_spray'", "[1, 9]"}},
+        {"bark: scaly, bark_angle: 400", {"'bark_angle'", "[-360, 360]"}},
         {"vessels: 100000, leaf_density: 300", {"would need", "at most 20000000"}},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {

@@ -121,8 +121,9 @@ static int move(turtle *t, double d, int draw, int record)
                              "level or raise max_segments",
                              (unsigned long long)t->cfg->max_segments);
         t->st.segments++;
-        double pct = c->thickness > t->cfg->min_thickness ? c->thickness : t->cfg->min_thickness;
-        double r = fabs(d) * pct / 200.0;
+        /* Width: thickness percent of the length, at least min_thickness / 100 file units. */
+        double width = fabs(d) * c->thickness / 100.0, floor = t->cfg->min_thickness / 100.0;
+        double r = 0.5 * (width > floor ? width : floor);
         lsys_segment seg = {.p0 = {p0[0], p0[1], p0[2]}, .p1 = {c->pos[0], c->pos[1], c->pos[2]},
                             .frame = &c->frame, .radius = r, .colour = c->colour, .joint = &c->joint};
         grow_tube_bounds(t, p0, c->pos, r);

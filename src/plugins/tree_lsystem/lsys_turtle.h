@@ -59,7 +59,7 @@ typedef struct lsys_joint {
 typedef struct lsys_segment {
     double p0[3], p1[3];  /* start and end */
     const lsys_frame *frame; /* the turtle's frame while drawing */
-    double radius;        /* half the width: length * max(thickness, min_thickness) / 200 */
+    double radius;        /* half the width: max(length * thickness, min_thickness) / 200 */
     int32_t colour;       /* colour index */
     lsys_joint *joint;    /* the branch's open end: the sink reads and updates it */
 } lsys_segment;
@@ -78,7 +78,7 @@ typedef struct lsys_sink {
 typedef struct lsys_turtle_config {
     double angle_deg;          /* standard angle */
     double thickness;          /* percent of the segment length */
-    double min_thickness;      /* percent of the segment length */
+    double min_thickness;      /* smallest width in hundredths of a file unit (Lparser) */
     double base_length;        /* length of F at the start */
     int32_t colour;            /* colour index at the start (Lparser: 2) */
     uint64_t max_segments;     /* limits: exceeding one is an LSYS_ERR_LIMIT naming it */

@@ -242,10 +242,13 @@ TEST(moves_and_modifiers)
     CHECK_NEAR(acos((rec.p1[9][2] - rec.p0[9][2]) / l2), a / 2 * DEG, 1e-9);
     CHECK_INT(st.segments, 10);
     CHECK_INT(st.symbols, 22);
-    /* min_thickness holds the width up. */
+    /* min_thickness holds the width up to min_thickness / 100 file units, whatever the length
+     * (Lparser): 0.5 here, against 2 x 0.1 x 0.7^3 and 0.1 x 0.1. */
     cfg.min_thickness = 50;
-    CHECK_INT(test_turtle("!!!F", &cfg, &rec, NULL, &e), LSYS_OK);
-    CHECK_NEAR(rec.radius[0], 2 * 0.5 / 2, 1e-12);
+    CHECK_INT(test_turtle("!!!FF(0.1)?(100)F", &cfg, &rec, NULL, &e), LSYS_OK);
+    CHECK_NEAR(rec.radius[0], 0.5 / 2, 1e-12);
+    CHECK_NEAR(rec.radius[1], 0.5 / 2, 1e-12);
+    CHECK_NEAR(rec.radius[2], 2 * 0.1 * 0.343 * 100 / 2, 1e-12);
 }
 
 TEST(random_turns_are_bounded_and_repeatable)
@@ -380,6 +383,7 @@ TEST(unbalanced_strings_are_survived)
 TEST_LIST(TEST_CASE(turn_pitch_and_roll_turn_as_in_lparser), TEST_CASE(dollar_lays_L_flat_and_changes_hand),
           TEST_CASE(tropism_pitches_by_e_times_horizontal_heading),
           TEST_CASE(tropism_argument_is_read_at_a_vertical_heading), TEST_CASE(turn_around_and_roll_around),
-          TEST_CASE(bare_size_modifiers_divide), TEST_CASE(only_f_z_and_dot_record_polygon_vertices), TEST_CASE(fig3_segments_halve), TEST_CASE(moves_and_modifiers),
+          TEST_CASE(bare_size_modifiers_divide), TEST_CASE(only_f_z_and_dot_record_polygon_vertices),
+          TEST_CASE(fig3_segments_halve), TEST_CASE(moves_and_modifiers),
           TEST_CASE(random_turns_are_bounded_and_repeatable), TEST_CASE(polygons_span_brackets_and_rules),
           TEST_CASE(colours), TEST_CASE(limits_are_named), TEST_CASE(unbalanced_strings_are_survived))

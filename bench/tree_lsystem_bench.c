@@ -92,7 +92,7 @@ int main(int argc, char **argv)
     uint64_t rng = 1;
     lsys_turtle_config cfg = {.angle_deg = 30, .thickness = 20, .base_length = 1, .colour = 2,
                               .max_segments = 100000000, .max_polygons = 100000000, .max_polygon_vertices = 4096,
-                              .max_depth = 65536, .tube_reach = 1.0, .random = lcg, .random_ctx = &rng};
+                              .max_depth = 65536, .tube_corners = 8, .random = lcg, .random_ctx = &rng};
     lsys_turtle_stats st;
     t0 = now();
     if (lsys_interpret(str, n, &cfg, NULL, 0, &st, &e)) {

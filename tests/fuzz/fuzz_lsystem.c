@@ -63,7 +63,7 @@ static void draw(const lsys_system *sys, const unsigned char *s, size_t n)
                               .min_thickness = sys->min_thickness, .base_length = sys->base_length, .colour = 2,
                               .max_segments = MAX_SEGMENTS, .max_polygons = MAX_POLYGONS,
                               .max_polygon_vertices = MAX_POLYGON_VERTICES, .max_depth = MAX_DEPTH,
-                              .tube_reach = sys->shape == 0 ? sqrt(2.0) : 1.0,
+                              .tube_corners = sys->shape == 0 ? 4 : 8,
                               .random = next_uniform, .random_ctx = &seed};
     if (sys->poly_limit && sys->poly_limit < cfg.max_polygons) cfg.max_polygons = sys->poly_limit;
     lsys_error e = {{0}};

@@ -1,5 +1,6 @@
-/* lsys_frame.c — the turtle's rotations: 001 Table 2 (R_U, R_L, R_H right-multiplying the frame
- * [H L U]), `$` (001 eq. 2) and tropism (001 eq. 3). */
+/* lsys_frame.c — the turtle's rotations as Lapré's Lparser 2.1 performs them: each command turns
+ * two of the frame's vectors about the third (taken as it stands, unit or not) and then rescales
+ * the two to unit length; `$` and `t` as Lparser defines them. */
 #include <math.h>
 
 #include "lsys_turtle.h"
@@ -10,67 +11,53 @@ static void cross(const double a[3], const double b[3], double out[3])
     out[0] = x, out[1] = y, out[2] = z;
 }
 
-/* (a, b) <- (c a + s b, -s a + c b): the two columns a rotation matrix of 001 mixes. */
-static void mix(double a[3], double b[3], double c, double s)
+static void unit(double v[3])
 {
-    for (int k = 0; k < 3; k++) {
-        double x = a[k], y = b[k];
-        a[k] = c * x + s * y;
-        b[k] = -s * x + c * y;
-    }
+    double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (n > 0.0)
+        for (int k = 0; k < 3; k++) v[k] /= n;
 }
 
-void lsys_frame_turn(lsys_frame *f, double a)
+/* v <- (cos a I + sin a [n]x + (1 - cos a) n n^T) v: a right-handed rotation by a about n when n
+ * is a unit vector; about a shorter n the turn is smaller (the matrix Lparser builds). */
+static void rotate(double v[3], const double n[3], double c, double s)
 {
-    /* R_U(a) = [[cos a, sin a, 0], [-sin a, cos a, 0], [0, 0, 1]]:
-     * H' = H cos a - L sin a, L' = H sin a + L cos a. */
-    mix(f->h, f->l, cos(a), -sin(a));
+    double nv[3];
+    cross(n, v, nv);
+    double d = n[0] * v[0] + n[1] * v[1] + n[2] * v[2];
+    for (int k = 0; k < 3; k++) v[k] = c * v[k] + s * nv[k] + (1.0 - c) * n[k] * d;
 }
 
-void lsys_frame_pitch(lsys_frame *f, double a)
+/* Rotates a and b by angle about axis, then makes both unit. */
+static void rotate_pair(double a[3], double b[3], const double axis[3], double angle)
 {
-    /* R_L(a) = [[cos a, 0, -sin a], [0, 1, 0], [sin a, 0, cos a]]:
-     * H' = H cos a + U sin a, U' = -H sin a + U cos a. */
-    mix(f->h, f->u, cos(a), sin(a));
+    double n[3] = {axis[0], axis[1], axis[2]};
+    double c = cos(angle), s = sin(angle);
+    rotate(a, n, c, s);
+    rotate(b, n, c, s);
+    unit(a);
+    unit(b);
 }
 
-void lsys_frame_roll(lsys_frame *f, double a)
-{
-    /* R_H(a) = [[1, 0, 0], [0, cos a, -sin a], [0, sin a, cos a]]:
-     * L' = L cos a + U sin a, U' = -L sin a + U cos a. */
-    mix(f->l, f->u, cos(a), sin(a));
-}
+void lsys_frame_turn(lsys_frame *f, double a) { rotate_pair(f->h, f->l, f->u, -a); }
+
+void lsys_frame_pitch(lsys_frame *f, double a) { rotate_pair(f->h, f->u, f->l, a); }
+
+void lsys_frame_roll(lsys_frame *f, double a) { rotate_pair(f->l, f->u, f->h, -a); }
 
 void lsys_frame_roll_horizontal(lsys_frame *f)
 {
-    static const double v[3] = {0.0, 0.0, -1.0};
-    double l[3];
-    cross(v, f->h, l);
-    double len = sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
-    if (len < 1e-12) return;
-    for (int k = 0; k < 3; k++) f->l[k] = l[k] / len;
+    static const double sky[3] = {0.0, 0.0, 1.0};
+    if (f->h[0] == 0.0 && f->h[1] == 0.0) return;
+    cross(f->h, sky, f->l);
     cross(f->h, f->l, f->u);
-}
-
-/* Rotates v about the unit axis k by angle a (Rodrigues). */
-static void rotate_about(double v[3], const double k[3], double c, double s)
-{
-    double kv[3];
-    cross(k, v, kv);
-    double d = k[0] * v[0] + k[1] * v[1] + k[2] * v[2];
-    for (int i = 0; i < 3; i++) v[i] = v[i] * c + kv[i] * s + k[i] * d * (1.0 - c);
+    if (f->u[2] < 0.0)
+        for (int k = 0; k < 3; k++) f->l[k] = -f->l[k], f->u[k] = -f->u[k];
 }
 
 void lsys_frame_tropism(lsys_frame *f, double e)
 {
-    static const double t[3] = {0.0, 0.0, -1.0};
-    double axis[3];
-    cross(f->h, t, axis);
-    double len = sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
-    if (len < 1e-12) return;
-    for (int k = 0; k < 3; k++) axis[k] /= len;
-    double a = e * len, c = cos(a), s = sin(a);
-    rotate_about(f->h, axis, c, s);
-    rotate_about(f->l, axis, c, s);
-    rotate_about(f->u, axis, c, s);
+    double hxy = sqrt(f->h[0] * f->h[0] + f->h[1] * f->h[1]);
+    if (hxy == 0.0) return;
+    lsys_frame_pitch(f, e * hxy);
 }

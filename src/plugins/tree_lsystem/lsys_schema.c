@@ -31,7 +31,7 @@ const sylva_param_spec lsys_schema[LSYS_SCHEMA_COUNT] = {
     {.name = "thickness", .type = SYLVA_P_REAL, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
      .max = 1e6, .unit = "%", .help = "Width of a segment in percent of its length at the start (default: the file's)."},
     {.name = "min_thickness", .type = SYLVA_P_REAL, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
-     .max = 1e6, .unit = "%", .help = "Smallest width of a segment in percent of its length (default: the file's, else 0)."},
+     .max = 1e6, .help = "Smallest width of a segment in hundredths of a file unit, as Lparser reads it (default: the file's, else 0)."},
     {.name = "base_length", .type = SYLVA_P_REAL, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
      .max = 1e9, .help = "Length of F at the start in the file's units; 0 takes the dialect's (numeric 100, keyword 1)."},
     {.name = "height", .type = SYLVA_P_REAL,

@@ -10,6 +10,7 @@
 
 #define DEG (M_PI / 180.0)
 #define DEFAULT_TROPISM 0.2    /* `t` without an argument (Lparser 2.1 manual) */
+#define BARE_RANDOM_TURN 6.0   /* `~` without an argument turns up to this many radians (Lparser) */
 #define MAX_COLOUR_INDEX 65535 /* colour indices are clamped to [0, this] */
 
 typedef struct turtle_state {
@@ -51,19 +52,37 @@ static void grow_bounds(turtle *t, const double p[3], const double r[3])
     }
 }
 
-/* Keeps the frame orthonormal against rounding drift over millions of rotations. */
-static void orthonormalize(lsys_frame *f)
+/* Grows the bounds by the corners of both ends of the tube p0..p1 of radius r (cfg->tube_corners
+ * of them, around U made square to the axis). */
+static void grow_tube_bounds(turtle *t, const double p0[3], const double p1[3], double r)
 {
-    double *h = f->h, *l = f->l, *u = f->u;
-    double n = sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
-    for (int k = 0; k < 3; k++) h[k] /= n;
-    double d = l[0] * h[0] + l[1] * h[1] + l[2] * h[2];
-    for (int k = 0; k < 3; k++) l[k] -= d * h[k];
-    n = sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
-    for (int k = 0; k < 3; k++) l[k] /= n;
-    u[0] = h[1] * l[2] - h[2] * l[1];
-    u[1] = h[2] * l[0] - h[0] * l[2];
-    u[2] = h[0] * l[1] - h[1] * l[0];
+    static const double none[3] = {0.0, 0.0, 0.0};
+    grow_bounds(t, p0, none);
+    grow_bounds(t, p1, none);
+    int corners = t->cfg->tube_corners;
+    if (corners != 4 && corners != 8) return;
+    double a[3] = {p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]}, e2[3], e3[3];
+    const double *u = t->cur.frame.u;
+    double na = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]), nu = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    if (!(na > 0.0) || !(nu > 0.0)) return;
+    for (int k = 0; k < 3; k++) a[k] /= na, e2[k] = u[k] / nu;
+    e3[0] = a[1] * e2[2] - a[2] * e2[1], e3[1] = a[2] * e2[0] - a[0] * e2[2], e3[2] = a[0] * e2[1] - a[1] * e2[0];
+    double n3 = sqrt(e3[0] * e3[0] + e3[1] * e3[1] + e3[2] * e3[2]);
+    if (!(n3 > 0.0)) return;
+    /* Offsets (i, j) along (e2, e3): a block's four corners, or a ring's eight vertices. */
+    static const double square[4][2] = {{1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
+    const double h = sqrt(0.5);
+    const double ring[8][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {h, h}, {h, -h}, {-h, h}, {-h, -h}};
+    for (int c = 0; c < corners; c++) {
+        double i = corners == 4 ? square[c][0] : ring[c][0], j = corners == 4 ? square[c][1] : ring[c][1];
+        double q0[3], q1[3];
+        for (int k = 0; k < 3; k++) {
+            double o = r * (i * e2[k] + j * e3[k] / n3);
+            q0[k] = p0[k] + o, q1[k] = p1[k] + o;
+        }
+        grow_bounds(t, q0, none);
+        grow_bounds(t, q1, none);
+    }
 }
 
 static int record_vertex(turtle *t)
@@ -102,19 +121,12 @@ static int move(turtle *t, double d, int draw, int record)
                              "level or raise max_segments",
                              (unsigned long long)t->cfg->max_segments);
         t->st.segments++;
-        double pct = c->thickness > t->cfg->min_thickness ? c->thickness : t->cfg->min_thickness;
-        double r = fabs(d) * pct / 200.0;
-        orthonormalize(&c->frame);
+        /* Width: thickness percent of the length, at least min_thickness / 100 file units. */
+        double width = fabs(d) * c->thickness / 100.0, floor = t->cfg->min_thickness / 100.0;
+        double r = 0.5 * (width > floor ? width : floor);
         lsys_segment seg = {.p0 = {p0[0], p0[1], p0[2]}, .p1 = {c->pos[0], c->pos[1], c->pos[2]},
                             .frame = &c->frame, .radius = r, .colour = c->colour, .joint = &c->joint};
-        /* A ring of radius r square to the unit axis a reaches r sqrt(1 - a_k^2) along axis k. */
-        double reach[3], sign = d < 0 ? -1.0 : 1.0;
-        for (int k = 0; k < 3; k++) {
-            double a = sign * c->frame.h[k];
-            reach[k] = r * t->cfg->tube_reach * sqrt(fmax(0.0, 1.0 - a * a));
-        }
-        grow_bounds(t, p0, reach);
-        grow_bounds(t, c->pos, reach);
+        grow_tube_bounds(t, p0, c->pos, r);
         for (int i = 0; i < t->n_sinks; i++)
             if (t->sinks[i].segment && t->sinks[i].segment(t->sinks[i].ctx, &seg)) return LSYS_ERR_SINK;
     }
@@ -211,9 +223,12 @@ static int polygon_end(turtle *t)
         return LSYS_OK;
     }
     uint32_t start = t->pstart[--t->npoly];
-    /* A polygon closed before any vertex was stored has no vertex buffer at all (pv is NULL). */
-    uint32_t n = t->npv > start ? drop_repeats(t->pv + 3 * (size_t)start, t->npv - start) : 0;
-    if (n >= 3) {
+    /* Three recorded vertices make a polygon, as in Lparser, even when they coincide; the sinks
+     * get it only when three distinct ones remain. A polygon closed before any vertex was stored
+     * has no vertex buffer at all (pv is NULL). */
+    uint32_t recorded = t->npv - start;
+    uint32_t n = recorded ? drop_repeats(t->pv + 3 * (size_t)start, recorded) : 0;
+    if (recorded >= 3) {
         if (t->st.polygons >= t->cfg->max_polygons)
             return lsys_fail(t->err, LSYS_ERR_LIMIT,
                              "the L-system draws more than max_polygons = %llu polygons; lower the recursion "
@@ -223,7 +238,7 @@ static int polygon_end(turtle *t)
         const double *v = t->pv + 3 * (size_t)start;
         static const double none[3] = {0.0, 0.0, 0.0};
         for (uint32_t i = 0; i < n; i++) grow_bounds(t, v + 3 * i, none);
-        for (int i = 0; i < t->n_sinks; i++)
+        for (int i = 0; n >= 3 && i < t->n_sinks; i++)
             if (t->sinks[i].polygon && t->sinks[i].polygon(t->sinks[i].ctx, v, n, t->cur.colour))
                 return LSYS_ERR_SINK;
     }
@@ -231,10 +246,10 @@ static int polygon_end(turtle *t)
     return LSYS_OK;
 }
 
-static void random_turn(turtle *t, double max_deg)
+/* Turns, pitches and rolls by three uniform angles in [-a, a], a in radians. */
+static void random_turn(turtle *t, double a)
 {
     const lsys_turtle_config *cfg = t->cfg;
-    double a = max_deg * DEG;
     double r1 = cfg->random(cfg->random_ctx), r2 = cfg->random(cfg->random_ctx), r3 = cfg->random(cfg->random_ctx);
     lsys_frame_turn(&t->cur.frame, (2.0 * r1 - 1.0) * a);
     lsys_frame_pitch(&t->cur.frame, (2.0 * r2 - 1.0) * a);
@@ -264,8 +279,8 @@ static int run(turtle *t, const unsigned char *s, size_t n)
         }
         t->st.symbols++;
         switch (sym) {
-        case 'F': rc = move(t, has_arg ? arg : c->length, 1, 1); break;
-        case 'Z': rc = move(t, has_arg ? arg : 0.5 * c->length, 1, 1); break;
+        case 'F': rc = move(t, has_arg ? arg : c->length, 1, 0); break;
+        case 'Z': rc = move(t, has_arg ? arg : 0.5 * c->length, 1, 0); break;
         case 'f': rc = move(t, has_arg ? arg : c->length, 0, 1); break;
         case 'z': rc = move(t, has_arg ? arg : 0.5 * c->length, 0, 1); break;
         case 'g': rc = move(t, has_arg ? arg : c->length, 0, 0); break;
@@ -285,7 +300,7 @@ static int run(turtle *t, const unsigned char *s, size_t n)
                 rc = lsys_fail(t->err, LSYS_ERR_SYNTAX, "'~' needs a random stream and none was given");
                 break;
             }
-            random_turn(t, has_arg ? arg : c->angle);
+            random_turn(t, has_arg ? arg * DEG : BARE_RANDOM_TURN);
             break;
         case '[': rc = push(t); break;
         case ']': rc = pop(t); break;
@@ -299,11 +314,11 @@ static int run(turtle *t, const unsigned char *s, size_t n)
                 c->colour++;
             }
             break;
-        case '"': c->length *= has_arg ? arg : 1.1; break;
+        case '"': c->length = has_arg ? c->length * arg : c->length / 0.9; break;
         case '\'': c->length *= has_arg ? arg : 0.9; break;
-        case ';': c->angle *= has_arg ? arg : 1.1; break;
+        case ';': c->angle = has_arg ? c->angle * arg : c->angle / 0.9; break;
         case ':': c->angle *= has_arg ? arg : 0.9; break;
-        case '?': c->thickness *= has_arg ? arg : 1.4; break;
+        case '?': c->thickness = has_arg ? c->thickness * arg : c->thickness / 0.7; break;
         case '!': c->thickness *= has_arg ? arg : 0.7; break;
         default: break; /* rule variables, digits, `_`: no drawing */
         }
@@ -321,7 +336,7 @@ int lsys_interpret(const unsigned char *s, size_t n, const lsys_turtle_config *c
                    int n_sinks, lsys_turtle_stats *stats, lsys_error *err)
 {
     turtle t = {.cfg = cfg, .sinks = sinks, .n_sinks = n_sinks, .err = err};
-    t.cur.frame = (lsys_frame){.h = {0, 0, 1}, .l = {0, 1, 0}, .u = {-1, 0, 0}};
+    t.cur.frame = (lsys_frame){.h = {0, 0, 1}, .l = {0, 1, 0}, .u = {1, 0, 0}};
     t.cur.length = cfg->base_length;
     t.cur.angle = cfg->angle_deg;
     t.cur.thickness = cfg->thickness;

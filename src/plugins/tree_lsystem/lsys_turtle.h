@@ -1,13 +1,14 @@
-/* lsys_turtle.h — the 3-D turtle that reads a derived string (001 §3; MODELS.md §3): position P
- * and the orthonormal frame H (heading), L (left), U (up) with U = H x L; the rotations of
- * 001 Table 2 right-multiply [H L U] by R_U, R_L, R_H; `$` rolls L horizontal (001 eq. 2);
- * `t` bends H toward T = (0, 0, -1) by e |H x T| (001 eq. 3); `~` turns at random; `[ ]`
- * push and pop the whole state; `{ }` collect polygon vertices (a polygon may span rules and
- * brackets: its vertices are kept apart from the bracket stack).
+/* lsys_turtle.h — the 3-D turtle that reads a derived string (001 §3; MODELS.md §3) as Lapré's
+ * Lparser 2.1 reads it: position P and the frame H (heading), L (left), U (up). The turtle starts
+ * at the origin with H = +Z, L = +Y, U = +X (so U = L x H); `+` turns H toward L, `&` pitches H
+ * toward U, `<` rolls L toward U, as Lparser's own figures show (reference-outputs/README.md);
+ * `$` lays L horizontal and changes the frame's handedness; `t` pitches by e |H_xy|; `~` turns
+ * at random; `[ ]` push and pop the whole state; `{ }` collect the vertices that f, z and `.`
+ * record (a polygon may span rules and brackets: its vertices are kept apart from the bracket
+ * stack). docs/models/tree_lsystem.md lists every command and each departure from Lparser.
  *
- * The turtle starts at the origin with H = +Z, L = +Y, U = -X (right-handed, as the Lparser 2.1
- * manual states). It draws nothing itself: segments and polygons go to sinks (the mesh builder,
- * the silhouette raster, tests). Lengths are in the file's units.
+ * It draws nothing itself: segments and polygons go to sinks (the mesh builder, the silhouette
+ * raster, tests). Lengths are in the file's units.
  *
  * Ownership: the caller owns the string, the config and the sinks; the turtle allocates its
  * stacks and frees them before returning.
@@ -20,22 +21,25 @@
 
 #include "lsys_error.h"
 
-/* The turtle's orientation: three orthonormal vectors, U = H x L. */
+/* The turtle's orientation. H is a unit vector; L and U are unit and square to H except after
+ * `$`, which leaves them |H_xy| long (as Lparser does); U = L x H until `$` makes it H x L. */
 typedef struct lsys_frame {
     double h[3], l[3], u[3];
 } lsys_frame;
 
-/* [H L U] <- [H L U] R_U(a): turn about U (`+` is a = +angle, `-` is -angle). Radians. */
+/* Each rotation turns two vectors about the third as it stands (a right-handed turn when that
+ * axis is unit, a smaller one when `$` left it shorter) and makes the two unit. Radians. */
+/* `+(a)`: H and L turn by -a about U (`-` is a = -angle). */
 void lsys_frame_turn(lsys_frame *f, double a);
-/* [H L U] <- [H L U] R_L(a): pitch about L (`&` +angle, `^` -angle). */
+/* `&(a)`: H and U turn by a about L (`^` is a = -angle). */
 void lsys_frame_pitch(lsys_frame *f, double a);
-/* [H L U] <- [H L U] R_H(a): roll about H (`<` +angle, `>` -angle). */
+/* `<(a)`: L and U turn by -a about H (`>` is a = -angle). */
 void lsys_frame_roll(lsys_frame *f, double a);
-/* `$` (001 eq. 2): L = V x H / |V x H| with V = (0, 0, -1), U = H x L; unchanged when H is
- * vertical (V x H vanishes). */
+/* `$`: L = H x Z, U = H x L, both negated when U points down (always, for a unit H), unit
+ * lengths not restored; unchanged when H is vertical. */
 void lsys_frame_roll_horizontal(lsys_frame *f);
-/* `t(e)` (001 eq. 3): rotates the frame about H x T by e |H x T| radians, T = (0, 0, -1); a
- * positive e bends H down, a negative one up; unchanged when H is vertical. */
+/* `t(e)`: `&` by e |H_xy| radians (a positive e bends a leaning H further down); unchanged when
+ * H is vertical. */
 void lsys_frame_tropism(lsys_frame *f, double e);
 
 /* The open end of the tube a branch is drawing: where the next segment joins without a gap.
@@ -57,7 +61,7 @@ typedef struct lsys_joint {
 typedef struct lsys_segment {
     double p0[3], p1[3];  /* start and end */
     const lsys_frame *frame; /* the turtle's frame while drawing */
-    double radius;        /* half the width: length * max(thickness, min_thickness) / 200 */
+    double radius;        /* half the width: max(length * thickness, min_thickness) / 200 */
     int32_t colour;       /* colour index */
     lsys_joint *joint;    /* the branch's open end: the sink reads and updates it */
 } lsys_segment;
@@ -76,16 +80,17 @@ typedef struct lsys_sink {
 typedef struct lsys_turtle_config {
     double angle_deg;          /* standard angle */
     double thickness;          /* percent of the segment length */
-    double min_thickness;      /* percent of the segment length */
+    double min_thickness;      /* smallest width in hundredths of a file unit (Lparser) */
     double base_length;        /* length of F at the start */
     int32_t colour;            /* colour index at the start (Lparser: 2) */
     uint64_t max_segments;     /* limits: exceeding one is an LSYS_ERR_LIMIT naming it */
     uint64_t max_polygons;
     uint32_t max_polygon_vertices; /* vertices held by open polygons at once */
     uint32_t max_depth;        /* nesting of [ ] */
-    /* How far a tube's corners reach from its axis, in radii (1 for cylinders, sqrt 2 for
-     * blocks), for the bounds; 0 counts the axis alone. */
-    double tube_reach;
+    /* The corners of a tube's end that the bounds take in, as Lparser places them: 8 (a
+     * cylinder's ring: radius r along U, U x H and their diagonals), 4 (a block: U +- U x H, each
+     * r long), 0 (the axis alone). */
+    int tube_corners;
     /* Uniform numbers in [0, 1) for `~`; NULL makes `~` an error. */
     double (*random)(void *ctx);
     void *random_ctx;
@@ -94,7 +99,7 @@ typedef struct lsys_turtle_config {
 typedef struct lsys_turtle_stats {
     uint64_t symbols;          /* commands and variables read (an argument belongs to its symbol) */
     uint64_t segments;         /* drawn segments */
-    uint64_t polygons;         /* closed polygons with >= 3 vertices */
+    uint64_t polygons;         /* closed polygons with >= 3 recorded vertices (degenerate ones too) */
     uint64_t stray_pops;       /* `]` with nothing pushed (ignored) */
     uint64_t stray_polygon_ends; /* `}` with no open polygon (ignored) */
     uint64_t open_at_end;      /* `[` and `{` still open at the end of the string */

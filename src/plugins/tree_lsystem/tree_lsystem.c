@@ -299,7 +299,7 @@ static lsys_turtle_config turtle_config(const tree_state *s, jitter *j)
                                 .base_length = s->base_length, .colour = START_COLOUR,
                                 .max_segments = s->max_segments, .max_polygons = s->max_polygons,
                                 .max_polygon_vertices = s->max_polygon_vertices, .max_depth = MAX_NESTING,
-                                .tube_reach = s->flat ? sqrt(2.0) : 1.0,
+                                .tube_corners = s->flat ? 4 : 8,
                                 .random = jitter_next, .random_ctx = j};
 }
 

@@ -93,7 +93,7 @@ static inline lsys_turtle_config test_config(double angle, double thickness, uin
 {
     return (lsys_turtle_config){.angle_deg = angle, .thickness = thickness, .base_length = 1.0, .colour = 2,
                                 .max_segments = 1000000, .max_polygons = 1000000, .max_polygon_vertices = 4096,
-                                .max_depth = 1024, .tube_reach = 1.0, .random = test_random,
+                                .max_depth = 1024, .tube_corners = 8, .random = test_random,
                                 .random_ctx = rng_state};
 }
 

@@ -228,7 +228,7 @@ TEST(k3d_reference_counts)
     CHECK_INT(lsys_derive(s, 2, 1u << 20, NULL, NULL, &str, &n, &e), LSYS_OK);
     lsys_turtle_config cfg = {.angle_deg = s->angle_deg, .thickness = s->thickness, .base_length = s->base_length,
                               .colour = 2, .max_segments = 1000, .max_polygons = 1000, .max_polygon_vertices = 1000,
-                              .max_depth = 1000, .tube_reach = 1.0};
+                              .max_depth = 1000, .tube_corners = 8};
     lsys_turtle_stats st;
     CHECK_INT(lsys_interpret(str, n, &cfg, NULL, 0, &st, &e), LSYS_OK);
     CHECK_INT(st.segments, 6);

@@ -10,7 +10,8 @@ const char *const eco_profile_names[ECO_N_PROFILES + 1] = {"generic", "beech", "
 /* sylva's values (the thesis gives none), chosen so that 004 ch. 6's succession happens on a
  * terrain with a stream valley, a hill and high ground (scenes/succession_*.yaml): shrubs
  * spread first (t_m 3 years, g_s 25) but are weak (power grows with t_f, 4.19), broadleaves
- * displace them, spruce advances later, and after ~180 years each holds its ground — maple the
+ * begin to displace them at about 50 years (they outnumber them from 115: docs/models/ecology.md,
+ * "Succession timing"), spruce advances later, and after ~180 years each holds its ground — maple the
  * humid valley, beech the middle altitudes, spruce the high, windy, less sunny ground, shrubs the
  * sunniest slopes. Altitude and humidity are normalised over the terrain; sunniness and
  * windiness are not, and lie near 0.5 and 1 on gentle terrain, hence the narrow tolerances.

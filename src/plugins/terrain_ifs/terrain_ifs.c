@@ -289,7 +289,8 @@ static int check_relations(const sylva_host_api *api, sylva_host *host, const sy
     if (!random && (is_set(params, "iterations") || is_set(params, "start")))
         return api->param_error(host, params, is_set(params, "iterations") ? "iterations" : "start",
                                 "iterations and start belong to method: random; this terrain is "
-                                "evaluated deterministically");
+                                "evaluated deterministically (the default): add method: random, "
+                                "or remove %s", is_set(params, "iterations") ? "iterations" : "start");
     if (sylva_param_int(params, "surface") == 1)
         for (size_t k = 0; k < sizeof classes_only / sizeof classes_only[0]; k++)
             if (is_set(params, classes_only[k]))

@@ -91,15 +91,17 @@ const sylva_param_spec terrain_ifs_params[] = {
      .help = "Per-cell weights R for picking the maps, laid out as alpha_field and normalised; "
              "empty: proportional to the cell area."},
     /* --- evaluation ----------------------------------------------------------------------- */
-    {.name = "method", .type = SYLVA_P_ENUM, .def_str = "random", .choices = method_choices,
-     .help = "random: the random iteration of Fig. 1, points averaged onto the output grid; "
-             "deterministic: f_K evaluated at every output node."},
+    {.name = "method", .type = SYLVA_P_ENUM, .def_str = "deterministic", .choices = method_choices,
+     .help = "deterministic: f_K evaluated at every output node, so the surface passes through "
+             "every DTM node (bilinear mode); random: the random iteration of Fig. 1, points "
+             "averaged onto the output grid (near, not on, the DTM's nodes)."},
     {.name = "iterations", .type = SYLVA_P_INT, .flags = RANGE, .def = 4000000, .min = 1,
      .max = (double)IFS_MAX_POINTS,
-     .help = "Number of iterations NK of the random iteration (one surface point each)."},
+     .help = "Number of iterations NK of the random iteration (one surface point each); "
+             "method: random only."},
     {.name = "start", .type = SYLVA_P_LIST, .max_len = 3, .unit = "m",
      .help = "Starting point [x, y, z] of the random iteration in scene coordinates; empty: "
-             "the DTM's origin (its south-west node)."},
+             "the DTM's origin (its south-west node); method: random only."},
     {.name = "depth", .type = SYLVA_P_INT, .flags = RANGE, .def = 0, .min = 0,
      .max = IFS_MAX_DEPTH,
      .help = "Levels K of the deterministic evaluation (also for nodes no random point "

@@ -1,7 +1,8 @@
 /* test_eco_scene.c — the plugin through the real host: scene files with bad ecology input stop
  * with located sentences; a small forest becomes instances standing on the terrain; the
  * "sylva.ecology.v1" session gives the plants scene_build places and continues a saved run
- * exactly; the host's instancing picks the variant by age, scales by height and turns. */
+ * exactly; the host's instancing picks the variant by age, scales by height and turns; the
+ * succession scene passes through the stages of 004 ch. 6. */
 #include <stdio.h>
 #include <unistd.h>
 
@@ -172,6 +173,79 @@ TEST(session_save_load_continue)
     plugin_registry_free(reg);
 }
 
+/* The shares of the living plants by species group at a year of the succession scene: beech
+ * and maple (broadleaves), spruce, shrub; counted as `sylva simulate --stats` counts (004
+ * Fig. C.13). */
+typedef struct succession_shares {
+    double broadleaf, spruce, shrub;
+    uint32_t plants;
+} succession_shares;
+
+static succession_shares shares_of(const scene_file *sf, const sylva_ecology_plant_record *p, uint32_t n)
+{
+    uint32_t broadleaf = 0, spruce = 0, shrub = 0;
+    for (uint32_t k = 0; k < n; k++) {
+        const char *name = sf->species[p[k].species].name;
+        if (!strcmp(name, "beech") || !strcmp(name, "maple")) broadleaf++;
+        else if (!strcmp(name, "spruce")) spruce++;
+        else if (!strcmp(name, "shrub")) shrub++;
+    }
+    double all = n ? n : 1;
+    return (succession_shares){broadleaf / all, spruce / all, shrub / all, n};
+}
+
+/* The thesis's succession (004 ch. 6) on scenes/succession_180.yaml, in bands read from its
+ * text (docs/models/ecology.md, "Succession timing"): at 20 years the shrubs have spread over the
+ * terrain and are nearly every plant (Fig. 6.2); at 60 they begin to give way and the larger
+ * broadleaves begin to settle (Fig. 6.3); at 80 the spruce advances (Fig. 6.4); at 180 all four
+ * grow, the trees outnumber the shrubs and the shrubs keep a share (Fig. 6.5). */
+TEST(succession_follows_the_thesis)
+{
+    plugin_registry *reg = registry();
+    err_buf err = {{0}};
+    const char *path = SYLVA_TEST_DATA_DIR "/../scenes/succession_180.yaml";
+    scene_file *sf = scene_file_load(path, reg, &err);
+    build_options bo = {.quiet = 1, .no_ecology = 1};
+    scene *s = sf ? scene_build(sf, reg, &bo, &err) : NULL;
+    ecology_session *e = s ? ecology_session_open(sf, s, reg, &bo, &err) : NULL;
+    CHECK(e != NULL);
+    if (!e) fprintf(stderr, "%s\n", err.msg);
+    static const uint32_t years[4] = {20, 60, 80, 180};
+    succession_shares at[4] = {{0}};
+    for (int k = 0; e && k < 4; k++) {
+        CHECK_INT(ecology_session_step(e, years[k] - (k ? years[k - 1] : 0), &err), 0);
+        sylva_ecology_plant_record *p = NULL;
+        uint32_t n = 0;
+        CHECK_INT(ecology_session_plants(e, &p, &n, &err), 0);
+        at[k] = shares_of(sf, p, n);
+        fprintf(stderr, "  year %3u: %6u plants, broadleaves %5.1f %%, spruce %5.1f %%, shrubs %5.1f %%\n",
+                years[k], n, 100 * at[k].broadleaf, 100 * at[k].spruce, 100 * at[k].shrub);
+        free(p);
+    }
+    if (e) {
+        /* 20 (Fig. 6.2): the shrubs spread first and fastest */
+        CHECK(at[0].plants >= 500);
+        CHECK(at[0].shrub >= 0.9);
+        /* 60 (Fig. 6.3): the broadleaves begin to settle, the shrubs begin to give way */
+        CHECK(at[1].broadleaf >= 0.005 && at[1].broadleaf <= 0.5);
+        CHECK(at[1].broadleaf > 2 * at[0].broadleaf);
+        CHECK(at[1].shrub < at[0].shrub);
+        CHECK(at[1].plants > 5 * at[0].plants); /* the terrain is overgrown */
+        /* 80 (Fig. 6.4): the spruce advances, the broadleaves go on gaining */
+        CHECK(at[2].spruce > 2 * at[1].spruce);
+        CHECK(at[2].broadleaf >= 0.05 && at[2].broadleaf <= 0.6);
+        CHECK(at[2].shrub < at[1].shrub);
+        /* 180 (Fig. 6.5): all four grow; the trees hold most of the terrain */
+        CHECK(at[3].broadleaf >= 0.2 && at[3].spruce >= 0.1);
+        CHECK(at[3].shrub >= 0.05 && at[3].shrub <= 0.3);
+        CHECK(at[3].broadleaf + at[3].spruce >= 0.6);
+    }
+    ecology_session_free(e);
+    scene_free(s);
+    scene_file_free(sf);
+    plugin_registry_free(reg);
+}
+
 /* A scene with one species of four age variants (heights 2, 4, 6, 8 m) over a tilted plane. */
 static scene *variant_scene(void)
 {
@@ -225,5 +299,5 @@ TEST(instancing_by_age_height_and_turn)
     scene_free(s);
 }
 
-TEST_LIST(TEST_CASE(bad_input_is_refused_with_its_place), TEST_CASE(forest_stands_on_the_terrain),
+TEST_LIST(TEST_CASE(bad_input_is_refused_with_its_place), TEST_CASE(succession_follows_the_thesis), TEST_CASE(forest_stands_on_the_terrain),
           TEST_CASE(session_save_load_continue), TEST_CASE(instancing_by_age_height_and_turn))

@@ -2,6 +2,7 @@
  * test are loaded and built with the plugin from the build tree, so the schema, create(),
  * generate() and the heightfield, materials and water the host receives are all checked, and
  * bad input comes back as a located sentence. */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -143,13 +144,81 @@ TEST(inline_dtm_deterministic)
     plugin_registry_free(reg);
 }
 
+/* The default method interpolates: with no method key, every DTM node's height on the built
+ * heightfield (and on every level of detail that holds the node) is the DTM's, to the float
+ * rounding of the heightfield, at alpha 0, 0.3 and 0.5 (000 §2: the attractor is the graph of a
+ * function through the DTM's points). The random iteration averaged the points around each
+ * node and missed this rough DTM's nodes by metres. */
+TEST(default_surface_passes_through_every_node)
+{
+    plugin_registry *reg = registry();
+    if (!reg) return;
+    enum { N = 17 };
+    double h[N][N];
+    char heights[8192];
+    int n = snprintf(heights, sizeof heights, "heights:");
+    for (int j = 0; j < N; j++) {
+        n += snprintf(heights + n, sizeof heights - n, "\n  - [");
+        for (int i = 0; i < N; i++) {
+            /* rolling relief plus a rough, fractional part: departures of tens of metres */
+            double rough = sin(12.9898 * i + 78.233 * j) * 43758.5453;
+            h[j][i] = 60 + 35 * sin(0.7 * i) * cos(0.45 * j) + 9 * (rough - floor(rough)) + 0.013 * i * j;
+            n += snprintf(heights + n, sizeof heights - n, "%s%.17g", i ? ", " : "", h[j][i]);
+        }
+        n += snprintf(heights + n, sizeof heights - n, "]");
+    }
+    static const double alphas[3] = {0, 0.3, 0.5};
+    /* uniform, and levels of detail around the camera (at (0, -300), over the footprint) */
+    static const char *const layouts[2] = {"refine: 4", "refine: 8\ndetail_radius: 60\n"
+                                           "centre: [0, -300]"};
+    for (int a = 0; a < 3; a++)
+        for (int l = 0; l < 2; l++) {
+            char keys[9000];
+            snprintf(keys, sizeof keys, "alpha: %g\ncell_size: [20, 20]\n%s\n%s", alphas[a],
+                     layouts[l], heights);
+            scene *s = scene_ok("default_through_nodes", 3, keys, reg);
+            if (!s || !s->terrain) {
+                scene_free(s);
+                continue;
+            }
+            const sylva_heightfield *t = s->terrain;
+            uint32_t r = l == 0 ? 4 : 1; /* heightfield nodes per DTM cell */
+            CHECK_INT(t->nx, (N - 1) * r + 1);
+            CHECK(l == 0 ? t->n_levels == 0 : t->n_levels == 3);
+            double worst = 0, worst_excess = 0;
+            uint32_t checked = 0;
+            for (uint32_t k = 0; k <= t->n_levels; k++) {
+                const sylva_terrain_level *lv = k ? &t->levels[k - 1] : NULL;
+                uint32_t nx = lv ? lv->nx : t->nx, ny = lv ? lv->ny : t->ny;
+                uint32_t step = lv ? lv->refine : r, i0 = lv ? lv->i0 : 0, j0 = lv ? lv->j0 : 0;
+                const float *z = lv ? lv->z : t->z;
+                for (uint32_t j = 0; j < ny; j += step)
+                    for (uint32_t i = 0; i < nx; i += step) {
+                        double want = h[j0 + j / step][i0 + i / step];
+                        double miss = fabs(z[(size_t)j * nx + i] - want);
+                        /* float keeps the height to half a unit in its last place */
+                        double precision = 0.5 * FLT_EPSILON * fabs(want) + 1e-9;
+                        worst = fmax(worst, miss);
+                        worst_excess = fmax(worst_excess, miss - precision);
+                        checked++;
+                    }
+            }
+            fprintf(stderr, "  alpha %.1f, %-26s %4u node heights, largest miss %.3g m\n",
+                    alphas[a], l ? "levels of detail:" : "uniform refine 4:", checked, worst);
+            CHECK(checked >= N * N);
+            CHECK(worst_excess <= 0);
+            scene_free(s);
+        }
+    plugin_registry_free(reg);
+}
+
 /* The generated DTM with random iteration: the same scene gives the same heights, another seed
  * other heights; water stands at y_w of the DTM's range with the plugin's water material. */
 TEST(generated_dtm_random_iteration)
 {
     plugin_registry *reg = registry();
     if (!reg) return;
-    const char *keys = "alpha: 0.2\niterations: 300000\nwater_level: 0.3\n"
+    const char *keys = "method: random\nalpha: 0.2\niterations: 300000\nwater_level: 0.3\n"
                        "generated: {nodes: [9, 9], relief: 60}\nwater_albedo: [0.1, 0.2, 0.3]";
     scene *a = scene_ok("generated_a", 7, keys, reg);
     scene *b = scene_ok("generated_b", 7, keys, reg);
@@ -295,10 +364,13 @@ TEST(bad_input_is_refused_clearly)
         {"dtm: x.tif\nheights: [[1, 2, 3], [1, 2, 3], [1, 2, 3]]", "give dtm or heights, not both"},
         {"step: 2", "step applies to a dtm file"},
         {"method: deterministic\niterations: 10", "iterations and start belong to method: random"},
+        {"iterations: 10", "evaluated deterministically (the default): add method: random, or "
+                           "remove iterations"},
+        {"start: [0, 0, 10]", "add method: random, or remove start"},
         {"output_nodes: [20000, 20000]", "the output grid would have 20000 x 20000 nodes"},
         {"output_nodes: [100]", "output_nodes must be two whole numbers"},
-        {"start: [100000, 0, 0]", "lies outside the DTM"},
-        {"start: [0, 0]", "start has 2 numbers"},
+        {"method: random\nstart: [100000, 0, 0]", "lies outside the DTM"},
+        {"method: random\nstart: [0, 0]", "start has 2 numbers"},
         {"scree_slope: 50", "scree_slope 50 exceeds rock_slope 42"},
         {"surface: scene\nsnow_line: 0.5", "belongs to surface: classes"},
         {"humidity_map: no_such_humidity.tif", "cannot read the humidity map"},
@@ -506,7 +578,8 @@ TEST(levels_of_detail_match_uniform_and_close)
 {
     plugin_registry *reg = registry();
     if (!reg) return;
-    static const char *const methods[2] = {"method: deterministic", "iterations: 2000000"};
+    static const char *const methods[2] = {"method: deterministic",
+                                           "method: random\n  iterations: 2000000"};
     for (int m = 0; m < 2; m++) {
         char keys[160];
         snprintf(keys, sizeof keys, "%s\n  detail_radius: 60", methods[m]);
@@ -653,6 +726,7 @@ TEST_LIST(TEST_CASE(descriptor_and_schema),
           TEST_CASE(site_places_and_warps_the_dtm),
           TEST_CASE(snow_and_scree_in_metres),
           TEST_CASE(inline_dtm_deterministic),
+          TEST_CASE(default_surface_passes_through_every_node),
           TEST_CASE(generated_dtm_random_iteration),
           TEST_CASE(surface_from_scene),
           TEST_CASE(humidity_map_dries_grass),

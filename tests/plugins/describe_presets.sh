@@ -19,7 +19,7 @@ want beech length_min_g "[[0, 1], [7.5, 0.45], [15, 1]]"
 want spruce vessels 6000
 want spruce sides 6
 want spruce split_w "[[0, 1], [42.89, 1.005], [42.89, 0.654], [50, 0.6256]]"
-want spruce leaf_texture needles
+want spruce leaf "\"spruce\""
 want weeping_willow leaf_size "0.3452 m"
 want weeping_willow gravimorphism_g "[[0, 84.45], [1.746, 94.69], [15, 110]] deg"
 want maple leaf_type stacked

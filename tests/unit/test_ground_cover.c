@@ -1,9 +1,11 @@
 /* Ground-cover weights (geometry/ground_cover.h): each rule picks its kind, the weights sum to
  * one and are continuous everywhere (no jump at a cell's edge, as per-node classes had), the
  * canopy comes from the plants' crowns, a terrain without ground rules keeps its materials, and
- * the scene's lying snow (snow:) covers its share of the open ground above its height. */
+ * the scene's lying snow (snow:) covers its share of the open ground above its height; the meadow
+ * rests out of its growing season (dull in winter, lush in summer, greening up in spring). */
 #include "geometry/ground_cover.h"
 #include "ground_fixture.h"
+#include "scene/phenology.h"
 #include "harness.h"
 
 static double flat10(double x, double y) { (void)x, (void)y; return 10; }
@@ -208,5 +210,29 @@ TEST(lying_snow_covers_its_share_above_its_height)
     scene_free(s);
 }
 
-TEST_LIST(TEST_CASE(lying_snow_covers_its_share_above_its_height), TEST_CASE(each_rule_picks_its_kind), TEST_CASE(canopy_from_the_crowns), TEST_CASE(dry_grass_from_the_humidity),
+TEST(meadow_rests_out_of_its_growing_season)
+{
+    CHECK_NEAR(meadow_dormancy(0), 0, 0);   /* no season given: summer */
+    CHECK_NEAR(meadow_dormancy(SEASON_SUMMER_DAY), 0, 0);
+    CHECK_NEAR(meadow_dormancy(SEASON_WINTER_DAY), 1, 0);
+    CHECK_NEAR(meadow_dormancy(350), 1, 0);
+    CHECK_NEAR(meadow_dormancy(280), 0.5, 1e-12);  /* half cured between days 230 and 330 */
+    CHECK_NEAR(meadow_dormancy(95), 0.5, 1e-12);   /* half green between days 60 and 130 */
+    scene *s = fixture_scene(11, 11, 0, 0, 20, flat10, 1);
+    s->terrain->humidity = malloc(121 * sizeof(float));
+    for (int k = 0; k < 121; k++) s->terrain->humidity[k] = (k % 11) < 5 ? 0.05f : 0.9f; /* dry west */
+    const uint32_t days[] = {SEASON_SUMMER_DAY, SEASON_AUTUMN_DAY, SEASON_WINTER_DAY};
+    const double lush[] = {0, GROUND_MEADOW_REST_SHARE * (SEASON_AUTUMN_DAY - 230) / 100.0, GROUND_MEADOW_REST_SHARE};
+    for (int d = 0; d < 3; d++) {
+        s->season_day = days[d];
+        ground_cover_map *m = map_of(s);
+        if (!m) break;
+        CHECK_NEAR(ground_cover_dryness(m, 180, 100), lush[d], 1e-6); /* the lush meadow rests */
+        CHECK_NEAR(ground_cover_dryness(m, 20, 100), 1, 1e-6);        /* the dry one stays dry */
+        ground_cover_map_free(m);
+    }
+    scene_free(s);
+}
+
+TEST_LIST(TEST_CASE(meadow_rests_out_of_its_growing_season), TEST_CASE(lying_snow_covers_its_share_above_its_height), TEST_CASE(each_rule_picks_its_kind), TEST_CASE(canopy_from_the_crowns), TEST_CASE(dry_grass_from_the_humidity),
           TEST_CASE(weights_sum_to_one_and_are_continuous), TEST_CASE(terrain_without_rules_keeps_its_materials))

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include "scene/heightfield.h"
+#include "scene/phenology.h"
 #include "util/gradient_noise.h"
 #include "util/rng.h"
 
@@ -26,6 +27,7 @@ struct ground_cover_map {
     double cx0, cy0, cell;         /* centre of canopy cell (0, 0), and the cell size */
     snow_settings snow;            /* the scene's snow lying on the ground (off unless asked) */
     double snow_edge;              /* drift noise below which snow lies: its cover-quantile */
+    float rest;                    /* how far the meadow has turned toward cured grass for its season */
 };
 
 /* Boundary noise: where an edge between two kinds wanders (tens of metres), where patches lie
@@ -154,6 +156,7 @@ ground_cover_map *ground_cover_map_new(const scene *s, err_buf *err)
     if (hf->n_levels) m->slope_step /= hf->levels[hf->n_levels - 1].refine; /* the finest level's */
     m->slope_step = fmax(0.5, m->slope_step);
     m->snow = s->snow;
+    m->rest = (float)(GROUND_MEADOW_REST_SHARE * meadow_dormancy(s->season_day));
     if (build_canopy(m, s, err) || (m->snow.on && snow_edge(m, err))) {
         ground_cover_map_free(m);
         return NULL;
@@ -201,11 +204,12 @@ float ground_cover_canopy(const ground_cover_map *m, double x, double y)
 float ground_cover_dryness(const ground_cover_map *m, double x, double y)
 {
     const sylva_heightfield *hf = m->hf;
-    if (!hf->humidity) return 0.0f;
+    if (!hf->humidity) return m->rest;
     double hum = raster_at(hf->humidity, hf->nx, hf->ny, hf->x0, hf->y0, hf->dx, hf->dy, x, y);
     hum += 0.05 * noise_fbm2(&patch, x, y, 0.0, NULL);
     double d = m->rules.dry_humidity;
-    return (float)smooth_step(d + 0.08, d - 0.08, hum);
+    float dry = (float)smooth_step(d + 0.08, d - 0.08, hum);
+    return 1.0f - (1.0f - dry) * (1.0f - m->rest); /* the season's rest tints the lush meadow too */
 }
 
 /* The scene's lying snow at (x, y): above its height (z moved by the patch noise), where the

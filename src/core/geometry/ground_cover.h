@@ -37,6 +37,11 @@ typedef enum ground_kind {
     GROUND_KINDS = 7
 } ground_kind;
 
+/* How far toward cured grass a meadow in its full winter rest turns (its ground and its grass
+ * tufts alike): winter grass is a dull olive-brown, half way from the growing turf to the straw
+ * of a dry summer meadow. */
+#define GROUND_MEADOW_REST_SHARE 0.5
+
 typedef struct ground_cover_map ground_cover_map;
 
 /* The map of scene s's terrain: NULL with err untouched when the terrain does not describe its
@@ -48,7 +53,8 @@ void ground_cover_map_free(ground_cover_map *m); /* accepts NULL */
  * [0, 1], summing to 1, continuous in (x, y). Outside the terrain the nearest edge point's. */
 void ground_cover_weights(const ground_cover_map *m, double x, double y, float w[GROUND_KINDS]);
 
-/* How dry the meadow is at (x, y), in [0, 1]: 0 lush, 1 dry grass (from the humidity). */
+/* How dry the meadow is at (x, y), in [0, 1]: 0 lush, 1 dry grass (from the humidity, and from
+ * the season: a resting meadow in autumn and winter, phenology.h meadow_dormancy). */
 float ground_cover_dryness(const ground_cover_map *m, double x, double y);
 
 /* Canopy cover at (x, y) in [0, 1]: the share of the ground under the plants' crowns. */

@@ -5,6 +5,8 @@
 
 #include <math.h>
 
+#include "geometry/ground_cover.h"
+#include "scene/phenology.h"
 #include "util/rng.h"
 
 #define STRIP_SEGMENTS 5
@@ -172,13 +174,21 @@ int ground_cover_models_add(scene *s, uint64_t seed, ground_cover_models *out, e
 {
     /* Linear reflectance and transmittance of fresh and cured grass blades, herb leaves and the
      * petals of white and yellow meadow flowers (docs/rendering.md, Ground cover). */
-    int32_t green = leaf_material(s, "ground cover grass", 0.075f, 0.13f, 0.035f, 0.05f, 0.12f, 0.02f, err);
-    int32_t dry = leaf_material(s, "ground cover dry grass", 0.30f, 0.25f, 0.13f, 0.14f, 0.11f, 0.05f, err);
+    static const float fresh[6] = {0.075f, 0.13f, 0.035f, 0.05f, 0.12f, 0.02f},
+                       cured[6] = {0.30f, 0.25f, 0.13f, 0.14f, 0.11f, 0.05f};
+    /* out of the growing season the green blades turn toward cured grass as the meadow's ground
+     * does, and the herbs stand without flowers */
+    double dormancy = meadow_dormancy(s->season_day);
+    float t = (float)(GROUND_MEADOW_REST_SHARE * dormancy), g[6];
+    for (int k = 0; k < 6; k++) g[k] = fresh[k] + t * (cured[k] - fresh[k]);
+    int32_t green = leaf_material(s, "ground cover grass", g[0], g[1], g[2], g[3], g[4], g[5], err);
+    int32_t dry = leaf_material(s, "ground cover dry grass", cured[0], cured[1], cured[2], cured[3], cured[4], cured[5], err);
     int32_t leaf = leaf_material(s, "ground cover herb leaf", 0.06f, 0.12f, 0.04f, 0.04f, 0.10f, 0.02f, err);
     int32_t white = leaf_material(s, "ground cover white petal", 0.70f, 0.70f, 0.62f, 0.20f, 0.20f, 0.17f, err);
     int32_t yellow = leaf_material(s, "ground cover yellow petal", 0.62f, 0.45f, 0.03f, 0.25f, 0.15f, 0.01f, err);
     int32_t centre = leaf_material(s, "ground cover flower centre", 0.45f, 0.32f, 0.03f, 0.10f, 0.07f, 0.01f, err);
     if (green < 0 || dry < 0 || leaf < 0 || white < 0 || yellow < 0 || centre < 0) return -1;
+    if (dormancy >= 0.5) white = yellow = centre = leaf;
 
     static const struct {
         uint32_t blades;

@@ -68,3 +68,12 @@ double phenology_fallen_share(const phenology *p, uint32_t day)
     double f = phenology_autumn_share(p, day);
     return f * f;
 }
+
+double meadow_dormancy(uint32_t day)
+{
+    enum { GREEN_UP = 60, GROWING = 130, CURING = 230, RESTING = 330 };
+    if (day == 0 || (day >= GROWING && day <= CURING)) return 0;
+    if (day > CURING && day < RESTING) return (double)(day - CURING) / (RESTING - CURING);
+    if (day > GREEN_UP && day < GROWING) return (double)(GROWING - day) / (GROWING - GREEN_UP);
+    return 1;
+}

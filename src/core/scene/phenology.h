@@ -70,4 +70,10 @@ int phenology_blossom_day(const phenology *p, uint32_t day);
  * faster, a quarter down when they are half turned), 1 for a deciduous plant out of leaf. */
 double phenology_fallen_share(const phenology *p, uint32_t day);
 
+/* How far a temperate meadow's grass is into its winter rest on day, in [0, 1]: 0 in full growth
+ * (10 May to 18 August, days 130..230), rising to 1 as it cures and dies back by late November
+ * (day 330), 1 through the winter to 1 March (day 60), falling to 0 as it greens up again. Day 0
+ * (no season) is summer's 0. */
+double meadow_dormancy(uint32_t day);
+
 #endif

@@ -290,7 +290,7 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
         return NULL;
     }
     s->image = sf->image, s->camera = sf->camera, s->sun = sf->sun, s->sky = sf->sky;
-    s->earth = sf->earth, s->snow = sf->snow;
+    s->earth = sf->earth, s->snow = sf->snow, s->season_day = sf->season.day;
     plugin_call_output out = {.verbose = opt->verbose, .quiet = opt->quiet};
     if (scene_set_site(s, &sf->site, err) || add_materials(s, sf, err) ||
         build_terrain(s, sf, plugins, &out, err) || scene_ground_camera(s, sf, err) ||

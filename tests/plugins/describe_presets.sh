@@ -13,7 +13,7 @@ want() { # PRESET KEY VALUE
         { echo "FAIL: preset $1 does not show $2 $3" >&2; preset "$1" >&2; exit 1; }
 }
 grep -q "^presets (chosen with \`preset\`" <<<"$out" || { echo "FAIL: no presets section" >&2; exit 1; }
-want beech vessels 1000
+want beech vessels 4000
 want beech trunk_length "5 m"
 want beech length_min_g "[[0, 1], [7.5, 0.45], [15, 1]]"
 want spruce vessels 6000

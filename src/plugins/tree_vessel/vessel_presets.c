@@ -19,9 +19,9 @@ const char *const vessel_preset_names[VESSEL_PRESETS + 1] = {"beech", "spruce", 
 #define COUNT(t) (uint32_t)(sizeof t / sizeof t[0])
 
 static const sylva_preset_value beech[] = {
-    NUM("vessels", 1000), NUM("trunk_length", 5), NUM("thickness", 0.01),
-    NUM("phyllotaxis", 85), NUM("gravicentralism", 0.3), NUM("leaf_size", 0.1),
-    NUM("leaf_density", 5), WORD("leaf_type", "spiral"), NUM("leaf_spray", 5),
+    NUM("vessels", 4000), NUM("trunk_length", 5), NUM("thickness", 0.01),
+    NUM("phyllotaxis", 85), NUM("gravicentralism", 0.3), NUM("leaf_size", 0.12),
+    NUM("leaf_density", 16), WORD("leaf_type", "spiral"), NUM("leaf_spray", 5),
     PL("split_g", 0, 0.75, 15, 0.9),
     PL("angle_g", 0, 45, 15, 45),
     PL("length_min_g", 0, 1, 7.5, 0.45, 15, 1),

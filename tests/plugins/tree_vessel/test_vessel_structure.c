@@ -200,9 +200,9 @@ TEST(growth_scales_vessels_and_first_segment)
     vessel_params p = preset(VESSEL_PRESET_BEECH);
     vessel_tree t = {0};
     CHECK_INT(grow(&p, 0.5, 0, &t), 0);
-    CHECK_INT(t.vessels, 250);
-    CHECK_INT(t.n, 499);
-    CHECK_INT(t.n_terminal, 250);
+    CHECK_INT(t.vessels, 1000);    /* the preset's 4000 at t = 0.5 */
+    CHECK_INT(t.n, 1999);
+    CHECK_INT(t.n_terminal, 1000);
     CHECK_NEAR(t.branches[0].length, 0.25 * 5, 1e-12); /* l0' = t^2 l0 (3.34) */
     double young = t.height;
     vessel_tree_release(&t);

@@ -67,13 +67,13 @@ const sylva_param_spec lsys_schema[LSYS_SCHEMA_COUNT] = {
                           "counted on the full-grown tree."},
     {.name = "box_dimension", .type = SYLVA_P_REAL, .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_HAS_MAX, .min = 0,
      .max = 3, .help = "D of the branch-number law; 0 measures it from the full-grown tree's silhouette."},
-    {.name = "bark_texture", .type = SYLVA_P_ENUM, .def_str = "furrowed", .choices = lsys_bark_texture_names,
+    {.name = "bark", .type = SYLVA_P_ENUM, .def_str = "furrowed", .choices = lsys_bark_texture_names,
      .help = "Fractal bark on the segments (smooth, scaly, furrowed, fissured), multiplied by the colour's albedo; "
              "off: plain colour."},
     {.name = "bark_tile_length", .type = SYLVA_P_REAL,
      .flags = SYLVA_PARAM_HAS_MIN | SYLVA_PARAM_MIN_EXCLUSIVE | SYLVA_PARAM_HAS_MAX, .def = 0.5, .min = 0, .max = 100,
      .unit = "m", .help = "Length of branch over which the bark texture repeats once (it goes once round every branch)."},
-    {.name = "leaf_texture", .type = SYLVA_P_ENUM, .def_str = "beech", .choices = lsys_leaf_texture_names,
+    {.name = "leaf", .type = SYLVA_P_ENUM, .def_str = "beech", .choices = lsys_leaf_texture_names,
      .help = "Affine-map leaf colour (blade, midrib, veins) on the leaf polygons, whose outline stays the grammar's "
              "(beech, maple, spruce, shrub, willow); off: plain colour."},
     {.name = "palette", .type = SYLVA_P_GROUP_LIST, .group = palette_members,

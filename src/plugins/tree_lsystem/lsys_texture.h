@@ -1,6 +1,6 @@
 /* lsys_texture.h — the textures of an L-system plant: the shared fractal bark (bark_fractal.h)
  * on its tubes and the shared affine-map leaf (leaf_affine.h) on its leaf polygons, one preset
- * of each per species, named by the keys `bark_texture` and `leaf_texture`.
+ * of each per species, named by the keys `bark` and `leaf`.
  *
  * The leaf texture keeps the affine leaf's colour (blade, midrib, veins, mottling) over the
  * whole square and is opaque everywhere: the grammar's polygon is the leaf's outline, so the

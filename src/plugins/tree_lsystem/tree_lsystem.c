@@ -191,10 +191,10 @@ static int32_t leaf_texture(int leaf, const sylva_host_api *api, sylva_host *hos
     return id;
 }
 
-/* The species' textures (bark_texture, leaf_texture keys), made once. */
+/* The species' textures (the bark and leaf keys), made once. */
 static int make_textures(tree_state *s, const sylva_host_api *api, sylva_host *host, const sylva_params *params)
 {
-    int bark = (int)sylva_param_int(params, "bark_texture"), leaf = (int)sylva_param_int(params, "leaf_texture");
+    int bark = (int)sylva_param_int(params, "bark"), leaf = (int)sylva_param_int(params, "leaf");
     s->bark_texture = s->leaf_texture = -1;
     if (bark != LSYS_BARK_TEXTURE_OFF && (s->bark_texture = bark_texture(bark, api, host)) < 0) return s->bark_texture;
     if (leaf != LSYS_LEAF_TEXTURE_OFF && (s->leaf_texture = leaf_texture(leaf, api, host)) < 0) return s->leaf_texture;

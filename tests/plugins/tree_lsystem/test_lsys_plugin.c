@@ -326,12 +326,12 @@ TEST(bark_and_leaf_textures_by_key)
     CHECK(!u.wood_mask && !u.leaf_mask && !u.leaf_alpha);
     CHECK_NEAR(u.leaf_uv_lo, 0, 1e-7);
     CHECK_NEAR(u.leaf_uv_hi, 1, 1e-7);
-    CHECK_INT(textures_of(reg, "    leaf_texture: willow\n    bark_texture: scaly\n", &u), SYLVA_OK);
+    CHECK_INT(textures_of(reg, "    leaf: willow\n    bark: scaly\n", &u), SYLVA_OK);
     CHECK(!strcmp(u.wood, "tree_lsystem bark scaly"));
     CHECK(!strcmp(u.leaf, "tree_lsystem leaf willow"));
-    CHECK_INT(textures_of(reg, "    leaf_texture: off\n    bark_texture: off\n", &u), SYLVA_OK);
+    CHECK_INT(textures_of(reg, "    leaf: off\n    bark: off\n", &u), SYLVA_OK);
     CHECK(!strcmp(u.wood, "") && !strcmp(u.leaf, ""));
-    CHECK_INT(textures_of(reg, "    leaf_texture: spruce\n    bark_texture: off\n", &u), SYLVA_OK);
+    CHECK_INT(textures_of(reg, "    leaf: spruce\n    bark: off\n", &u), SYLVA_OK);
     CHECK(!strcmp(u.wood, "") && !strcmp(u.leaf, "tree_lsystem leaf spruce"));
     plugin_registry_free(reg);
 }
@@ -393,13 +393,13 @@ TEST(errors_a_scene_author_sees)
     CHECK_INT(try_species(reg, "    sides: 2\n    source: \"axiom F\"\n", &msg), -100);
     CHECK_STR_CONTAINS(msg.msg, "'sides' must be an integer in [5, 32]");
     /* The texture keys, located in the scene file (line 5, the value's column). */
-    CHECK_INT(try_species(reg, "    leaf_texture: oak\n    source: \"axiom F\"\n", &msg), -100);
-    CHECK_STR_CONTAINS(msg.msg, ".yaml:5:19: 'leaf_texture' must be one of beech, maple, spruce, shrub, willow, off; got");
-    CHECK_INT(try_species(reg, "    bark_texture: Furrowed\n    source: \"axiom F\"\n", &msg), -100);
-    CHECK_STR_CONTAINS(msg.msg, ".yaml:5:19: 'bark_texture' must be one of smooth, scaly, furrowed, fissured, off; got");
+    CHECK_INT(try_species(reg, "    leaf: oak\n    source: \"axiom F\"\n", &msg), -100);
+    CHECK_STR_CONTAINS(msg.msg, ".yaml:5:11: 'leaf' must be one of beech, maple, spruce, shrub, willow, off; got");
+    CHECK_INT(try_species(reg, "    bark: Furrowed\n    source: \"axiom F\"\n", &msg), -100);
+    CHECK_STR_CONTAINS(msg.msg, ".yaml:5:11: 'bark' must be one of smooth, scaly, furrowed, fissured, off; got");
     CHECK_STR_CONTAINS(msg.msg, "did you mean 'furrowed'?");
-    CHECK_INT(try_species(reg, "    bark_texture: [smooth]\n    source: \"axiom F\"\n", &msg), -100);
-    CHECK_STR_CONTAINS(msg.msg, ".yaml:5:19: 'bark_texture' must be one of");
+    CHECK_INT(try_species(reg, "    bark: [smooth]\n    source: \"axiom F\"\n", &msg), -100);
+    CHECK_STR_CONTAINS(msg.msg, ".yaml:5:11: 'bark' must be one of");
     CHECK_INT(try_species(reg, "    bark_tile_length: 0\n    source: \"axiom F\"\n", &msg), -100);
     CHECK_STR_CONTAINS(msg.msg, ".yaml:5:23: 'bark_tile_length' must be");
     plugin_registry_free(reg);

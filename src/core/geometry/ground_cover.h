@@ -38,9 +38,9 @@ typedef enum ground_kind {
 } ground_kind;
 
 /* How far toward cured grass a meadow in its full winter rest turns (its ground and its grass
- * tufts alike): winter grass is a dull olive-brown, half way from the growing turf to the straw
- * of a dry summer meadow. */
-#define GROUND_MEADOW_REST_SHARE 0.5
+ * tufts alike): winter grass is a duller, browner green, a third of the way from the growing turf
+ * to the straw of a dry summer meadow. */
+#define GROUND_MEADOW_REST_SHARE 0.35
 
 typedef struct ground_cover_map ground_cover_map;
 

@@ -69,7 +69,7 @@ struct render_setup {
     const scene *scene;
     accel acc;
     lights lt;
-    double build_seconds;
+    double build_seconds, bvh_seconds;
 };
 
 static unsigned thread_count(const render_options *o)
@@ -120,6 +120,7 @@ render_setup *render_setup_new(const scene *s, const render_options *opt, err_bu
         free(rs);
         return NULL;
     }
+    rs->bvh_seconds = progress_now() - t0;
     camera cam; /* the pixel's angle sets how finely the ground's texture is resolved */
     camera_init(&cam, &s->camera, w, h);
     rs->acc.pixel_angle = (float)camera_smallest_pixel_angle(&cam);
@@ -172,6 +173,7 @@ film *render_setup_run(render_setup *rs, const render_options *opt, render_stats
     double t2 = progress_now();
     if (stats) {
         stats->build_seconds = rs->build_seconds;
+        stats->bvh_seconds = rs->bvh_seconds;
         stats->render_seconds = t2 - t1;
         stats->samples = (uint64_t)w * h * ctx.spp;
     }

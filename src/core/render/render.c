@@ -101,7 +101,8 @@ static int setup_proxies(render_setup *rs, const render_options *o, uint32_t w, 
     render_ctx ctx;
     ctx_init(&ctx, rs, o, w, h);
     vec3 sun = rs->lt.summary.sun_on ? rs->lt.summary.sun_dir : v3(0.0f, 0.7071f, 0.7071f);
-    if (crown_proxies_attach(&rs->acc, &ctx.camera, sun, rs->scene->image.crown_proxy, err)) return -1;
+    if (crown_proxies_attach(&rs->acc, &ctx.camera, sun, rs->scene->image.crown_proxy, thread_count(o), err))
+        return -1;
     return crown_proxies_calibrate(&rs->acc, &ctx, thread_count(o), err);
 }
 

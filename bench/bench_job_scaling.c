@@ -5,7 +5,11 @@
  * parallel). Runs alternate between the thread counts so that a change in the machine's load
  * falls on both; the best of the repetitions is kept. The process CPU time of each run is printed
  * beside its wall time: on a machine shared with other work, a 1-thread run whose CPU time is
- * well under its wall time was not given a whole core, and the ratio is then not the code's.
+ * well under its wall time was not given a whole core, and the measured ratio is then the
+ * machine's, not the code's. So it also prints each phase's time on an idle machine as its CPU
+ * times give it (phase_idle_estimate: the calling thread works through every phase, so a phase
+ * lasts at least the calling thread's CPU time, and at least the process's shared over the
+ * threads) and the ratio and predictions from those.
  * Usage:
  *   bench_job_scaling [SCENE] [--size WxH] [--spp N] [--threads N] [--reps N]
  * (default: scenes/default.yaml at 480x270, 16 spp, 1 against 2 threads, 2 repetitions). */
@@ -33,11 +37,9 @@ static double cpu_now(void)
 }
 
 typedef struct job_run {
-    phase_times phases;
+    phase_times phases; /* the render setup's CPU times go to PHASE_RENDER_SETUP, its BVH's wall time
+                           to PHASE_BVH */
     double wall, cpu;
-    double setup_cpu, render_cpu; /* the process CPU time of the render setup (BVH, lights and
-                                     proxies) and of the pixel loop: on 1 thread, their work
-                                     whatever else the machine runs */
 } job_run;
 
 /* One whole job as `sylva render` runs it; 0 or -1 after printing the problem. */
@@ -46,40 +48,47 @@ static int run_job(const char *path, const plugin_registry *reg, uint32_t w, uin
 {
     memset(run, 0, sizeof *run);
     err_buf err = {{0}};
-    double t0 = progress_now(), c0 = cpu_now();
+    phase_mark t0 = phase_start();
     scene_file *sf = scene_file_load(path, reg, &err);
     build_options bo = {.quiet = 1, .threads = threads, .times = &run->phases};
     scene *s = sf ? scene_build(sf, reg, &bo, &err) : NULL;
     film *f = NULL;
     int rc = -1;
     if (!s) goto done;
-    const double *ph = run->phases.seconds;
-    phase_add(&run->phases, PHASE_SCENE_OTHER,
-              progress_now() - t0 - ph[PHASE_TERRAIN] - ph[PHASE_TREES] - ph[PHASE_ECOLOGY]);
-    double t = progress_now();
+    /* the rest of the scene build: all of it less the phases it timed itself */
+    phase_times build = {{0}};
+    phase_mark t = phase_stop(&build, PHASE_SCENE_OTHER, t0);
+    phase_times *ph = &run->phases;
+    const job_phase timed[] = {PHASE_TERRAIN, PHASE_TREES, PHASE_ECOLOGY};
+    for (size_t i = 0; i < sizeof timed / sizeof timed[0]; i++) {
+        build.seconds[PHASE_SCENE_OTHER] -= ph->seconds[timed[i]];
+        build.cpu[PHASE_SCENE_OTHER] -= ph->cpu[timed[i]];
+        build.thread_cpu[PHASE_SCENE_OTHER] -= ph->thread_cpu[timed[i]];
+    }
+    ph->seconds[PHASE_SCENE_OTHER] = build.seconds[PHASE_SCENE_OTHER];
+    ph->cpu[PHASE_SCENE_OTHER] = build.cpu[PHASE_SCENE_OTHER];
+    ph->thread_cpu[PHASE_SCENE_OTHER] = build.thread_cpu[PHASE_SCENE_OTHER];
     if (ground_cover_add(s, &sf->ground_cover, w, h, NULL, &err)) goto done;
-    phase_since(&run->phases, PHASE_GROUND_COVER, t);
+    t = phase_stop(&run->phases, PHASE_GROUND_COVER, t);
     render_options ro = {.quiet = 1, .threads = threads, .spp = spp, .width = w, .height = h};
     render_stats st;
-    double c = cpu_now();
     render_setup *rs = render_setup_new(s, &ro, &err);
     if (!rs) goto done;
-    run->setup_cpu = cpu_now() - c, c = cpu_now();
+    t = phase_stop(&run->phases, PHASE_RENDER_SETUP, t);
     f = render_setup_run(rs, &ro, &st, &err);
-    run->render_cpu = cpu_now() - c;
+    t = phase_stop(&run->phases, PHASE_RENDER, t);
     render_setup_free(rs);
     if (!f) goto done;
+    run->phases.seconds[PHASE_RENDER_SETUP] -= st.bvh_seconds; /* the BVH's wall time on its own line */
     phase_add(&run->phases, PHASE_BVH, st.bvh_seconds);
-    phase_add(&run->phases, PHASE_RENDER_SETUP, st.build_seconds - st.bvh_seconds);
-    phase_add(&run->phases, PHASE_RENDER, st.render_seconds);
-    t = progress_now();
+    t = phase_start();
     char exr[4200], png[4200];
     snprintf(exr, sizeof exr, "%s/job.exr", out_dir);
     snprintf(png, sizeof png, "%s/job.png", out_dir);
     double ev = s->image.exposure_set ? s->image.exposure : auto_exposure_stops(f);
     if (film_write_exr(f, &s->site, ev, exr, &err) || film_write_png(f, png, s->image.tone, ev, &err)) goto done;
-    phase_since(&run->phases, PHASE_OUTPUT, t);
-    run->wall = progress_now() - t0, run->cpu = cpu_now() - c0;
+    phase_stop(&run->phases, PHASE_OUTPUT, t);
+    run->wall = progress_now() - t0.wall, run->cpu = cpu_now() - t0.cpu;
     rc = 0;
 done:
     if (rc) fprintf(stderr, "bench_job_scaling: %s\n", err.msg);
@@ -95,12 +104,20 @@ static void keep_best(job_run *best, const job_run *r)
     if (!(best->wall > 0) || r->wall < best->wall) *best = *r;
 }
 
-/* The time of the job on n threads predicted from each phase's 1- and N-thread times. */
+/* Phase p's time on an idle machine on 1 and on `threads` threads, from the runs' CPU times
+ * (the BVH's is in the setup's). */
+static double idle(const job_run *r, job_phase p, unsigned threads)
+{
+    return p == PHASE_BVH ? 0 : phase_idle_estimate(&r->phases, p, threads);
+}
+
+/* The time of the job on n threads predicted from each phase's idle-machine times on 1 and on
+ * n_threads threads. */
 static double predict(const job_run *one, const job_run *many, unsigned n_threads, unsigned n)
 {
     double total = 0;
     for (int p = 0; p < PHASE_COUNT; p++) {
-        double t1 = one->phases.seconds[p], tn = many->phases.seconds[p];
+        double t1 = idle(one, p, 1), tn = idle(many, p, n_threads);
         if (!(t1 > 0)) continue;
         double r = tn > 0 ? t1 / tn : 1, par = (1 - 1 / r) / (1 - 1.0 / n_threads);
         par = par < 0 ? 0 : par > 1 ? 1 : par;
@@ -166,14 +183,28 @@ int main(int argc, char **argv)
     }
     printf("%-20s %9.2fs %9.2fs %7.2fx\n", "whole job (wall)", one.wall, many.wall, one.wall / many.wall);
     printf("%-20s %9.2fs %9.2fs\n", "whole job (CPU)", one.cpu, many.cpu);
-    printf("%-20s %9.2fs %9.2fs\n", "render setup (CPU)", one.setup_cpu, many.setup_cpu);
-    printf("%-20s %9.2fs %9.2fs\n", "render (CPU)", one.render_cpu, many.render_cpu);
-    printf("whole job on %u threads: %.2fx the 1-thread job (goal >= %.1fx on 2 cores)\n", threads,
+    printf("whole job on %u threads, as measured: %.2fx the 1-thread job (goal >= %.1fx on 2 cores)\n", threads,
            one.wall / many.wall, 1.9);
+
+    /* The same from CPU times: what an idle machine would show (phase_idle_estimate). */
+    printf("\non an idle machine, from the CPU times (1 thread: its CPU time; %u: the longer of the\n"
+           "calling thread's CPU time and the process's over %u):\n", threads, threads);
+    printf("%-20s %10s %10s %8s\n", "phase", "1 thread", "threads", "ratio");
+    double sum_one = 0, sum_many = 0;
+    for (int p = 0; p < PHASE_COUNT; p++) {
+        double a = idle(&one, p, 1), b = idle(&many, p, threads);
+        sum_one += a, sum_many += b;
+        if (!(a >= 0.005 || b >= 0.005)) continue;
+        printf("%-20s %9.2fs %9.2fs %7.2fx\n", p == PHASE_RENDER_SETUP ? "BVH, lights, proxies" : phase_name(p), a, b,
+               b > 0 ? a / b : 0.0);
+    }
+    printf("%-20s %9.2fs %9.2fs %7.2fx\n", "whole job", sum_one, sum_many, sum_one / sum_many);
+    printf("whole job on %u idle cores: %.2fx the 1-thread job (goal >= %.1fx on 2 cores)\n", threads,
+           sum_one / sum_many, 1.9);
     const unsigned predicted[] = {4, 8, 16};
     for (size_t i = 0; i < sizeof predicted / sizeof predicted[0]; i++) {
         double t = predict(&one, &many, threads, predicted[i]);
-        printf("predicted from the phases on %2u cores: %.2fs, %.1fx\n", predicted[i], t, one.wall / t);
+        printf("predicted from the phases on %2u idle cores: %.2fs, %.1fx\n", predicted[i], t, sum_one / t);
     }
     if (getloadavg(load, 3) >= 1) printf("load average at the end: %.2f\n", load[0]);
     plugin_registry_free(reg);

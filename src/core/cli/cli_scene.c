@@ -41,9 +41,9 @@ int cli_scene_ground_cover(cli_scene *c, const char *cmd, uint32_t width, uint32
     err_buf err = {{0}};
     ground_cover_report rep;
     if (!width || !height) width = c->scene->image.width, height = c->scene->image.height;
-    double t0 = progress_now();
+    phase_mark t0 = phase_start();
     if (ground_cover_add(c->scene, &c->sf->ground_cover, width, height, &rep, &err)) return cli_fail(cmd, &err, ERR_INTERNAL);
-    phase_since(&c->times, PHASE_GROUND_COVER, t0);
+    phase_stop(&c->times, PHASE_GROUND_COVER, t0);
     if (!quiet && rep.instances)
         fprintf(stderr, "ground cover: %u tufts within %.0f m (a blade spans a pixel at %.0f m)%s\n", rep.instances,
                 rep.radius, rep.pixel_radius, rep.capped ? ", the radius shrunk to max_instances" : "");

@@ -148,14 +148,14 @@ int cmd_render(int argc, char **argv)
     phase_add(&cs.times, PHASE_BVH, st.bvh_seconds);
     phase_add(&cs.times, PHASE_RENDER_SETUP, st.build_seconds - st.bvh_seconds);
     phase_add(&cs.times, PHASE_RENDER, st.render_seconds);
-    double t_out = progress_now();
+    phase_mark t_out = phase_start();
     double ev = sc->image.exposure_set ? sc->image.exposure : auto_exposure_stops(f);
     if (!ro.quiet) fprintf(stderr, "exposure: %+.2f EV (%s)\n", ev, sc->image.exposure_set ? "image.exposure" : "metered");
     if (film_write_exr(f, &sc->site, ev, exr, &err) || film_write_png(f, png, sc->image.tone, ev, &err)) {
         rc = cli_fail("render", &err, ERR_OUTPUT);
         goto done;
     }
-    phase_since(&cs.times, PHASE_OUTPUT, t_out);
+    phase_stop(&cs.times, PHASE_OUTPUT, t_out);
     if (!ro.quiet) {
         fprintf(stderr, "rendered %ux%u, %llu samples in %.2fs (BVH %.2fs); total %.2fs\n", f->width, f->height,
                 (unsigned long long)st.samples, st.render_seconds, st.build_seconds, progress_now() - t0);

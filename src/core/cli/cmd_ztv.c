@@ -166,12 +166,12 @@ int cmd_ztv(int argc, char **argv)
                 targets.n, targets.n_developments, targets.n_developments == 1 ? "" : "s", job.grid.nx,
                 job.grid.ny, job.grid.cell, eye, job.screened == ZTV_BARE ? "bare earth only" : "bare earth and ",
                 job.screened == ZTV_BARE ? "" : mode_names[job.screened]);
-    double t_phase = progress_now();
+    phase_mark t_phase = phase_start();
     if (accel_build(&acc, sc, threads, &err)) {
         rc = cli_fail("ztv", &err, ERR_INTERNAL);
         goto done;
     }
-    t_phase = phase_since(&cs.times, PHASE_BVH, t_phase);
+    t_phase = phase_stop(&cs.times, PHASE_BVH, t_phase);
     ztv_info info = {.grid = job.grid, .crs_wkt = sf->site.crs_wkt, .crs_name = sf->site.crs_name,
                      .observer_height = eye, .radius = radius, .curvature = job.earth && job.earth->curvature,
                      .refraction = sc->earth.refraction, .n_targets = targets.n,
@@ -186,14 +186,14 @@ int cmd_ztv(int argc, char **argv)
         goto done;
     }
     ztv_stats st;
-    t_phase = progress_now(); /* the grid's rays, its blocks written as they come */
+    t_phase = phase_start(); /* the grid's rays, its blocks written as they come */
     int traced = ztv_trace(&job, sink_block, out, &st, &err);
-    t_phase = phase_since(&cs.times, PHASE_RENDER, t_phase);
+    t_phase = phase_stop(&cs.times, PHASE_RENDER, t_phase);
     if (traced || ztv_output_finish(out, &err)) {
         rc = cli_fail("ztv", &err, ERR_OUTPUT);
         goto done;
     }
-    phase_since(&cs.times, PHASE_OUTPUT, t_phase);
+    phase_stop(&cs.times, PHASE_OUTPUT, t_phase);
     if (!bo.quiet) {
         fprintf(stderr, "ztv: %llu cells x %u targets in %.2fs: %.3g sightlines/s, %.2f rays each\n",
                 (unsigned long long)st.cells, targets.n, st.seconds, st.pairs / fmax(st.seconds, 1e-9),

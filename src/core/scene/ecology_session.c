@@ -6,8 +6,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "util/progress.h"
-
 ecology_session *ecology_session_open(const scene_file *sf, scene *s, const plugin_registry *reg,
                                       const build_options *opt, err_buf *err)
 {
@@ -64,9 +62,9 @@ uint32_t ecology_session_years_wanted(const ecology_session *e) { return e->ext-
 
 int ecology_session_step(ecology_session *e, uint32_t years, err_buf *err)
 {
-    double t0 = progress_now();
+    phase_mark t0 = phase_start();
     int rc = e->ext->step(e->run, host_api_table(), &e->call.host, years);
-    phase_since(e->call.times, PHASE_ECOLOGY, t0);
+    phase_stop(e->call.times, PHASE_ECOLOGY, t0);
     return rc ? plugin_call_failed(&e->call, "step", rc, err) : 0;
 }
 
@@ -81,9 +79,9 @@ int ecology_session_save(ecology_session *e, const char *path, err_buf *err)
 
 int ecology_session_load(ecology_session *e, const char *path, err_buf *err)
 {
-    double t0 = progress_now();
+    phase_mark t0 = phase_start();
     int rc = e->ext->load(e->run, host_api_table(), &e->call.host, path);
-    phase_since(e->call.times, PHASE_ECOLOGY, t0);
+    phase_stop(e->call.times, PHASE_ECOLOGY, t0);
     return rc ? plugin_call_failed(&e->call, "load", rc, err) : 0;
 }
 
@@ -95,9 +93,9 @@ int ecology_session_place(ecology_session *e, uint32_t *placed, err_buf *err)
                       "ecology plugin '%s' (%s) cannot place a saved run's plants: it offers no '%s' interface; "
                       "give the plants as a list, or let the ecology run", e->sf->ecology.plugin, e->call.plugin->file,
                       SYLVA_ECOLOGY_EXT_V2);
-    double t0 = progress_now();
+    phase_mark t0 = phase_start();
     int rc = e->ext2->place(e->run, host_api_table(), &e->call.host, placed);
-    phase_since(e->call.times, PHASE_ECOLOGY, t0);
+    phase_stop(e->call.times, PHASE_ECOLOGY, t0);
     return rc ? plugin_call_failed(&e->call, "place", rc, err) : 0;
 }
 

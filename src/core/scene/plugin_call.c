@@ -7,7 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "util/progress.h"
 #include "util/rng.h"
 
 /* The seed of a tree plugin's random streams for one species (by name) and variant. */
@@ -183,9 +182,9 @@ int plugin_call_terrain(plugin_call *c, err_buf *err)
                                  .site_origin = {sf->site.origin[0], sf->site.origin[1], sf->site.origin[2]},
                                  .eye = {sf->camera.position[0], sf->camera.position[1], sf->camera.position[2]}};
     sylva_terrain_out out = {.size = sizeof out};
-    double t0 = progress_now();
+    phase_mark t0 = phase_start();
     int rc = c->plugin->desc->generate(c->state, host_api_table(), &c->host, &req, &out);
-    phase_since(c->times, PHASE_TERRAIN, t0);
+    phase_stop(c->times, PHASE_TERRAIN, t0);
     if (rc) return plugin_call_failed(c, "generate", rc, err);
     const sylva_heightfield *hf = s->terrain;
     if (!out.terrain || out.terrain != hf)
@@ -220,8 +219,8 @@ int plugin_call_tree(plugin_call *c, tree_variant *v, mesh *m, err_buf *err)
 int plugin_call_ecology(plugin_call *c, err_buf *err)
 {
     sylva_ecology_out out = {.size = sizeof out};
-    double t0 = progress_now();
+    phase_mark t0 = phase_start();
     int rc = c->plugin->desc->generate(c->state, host_api_table(), &c->host, &c->ecology, &out);
-    phase_since(c->times, PHASE_ECOLOGY, t0);
+    phase_stop(c->times, PHASE_ECOLOGY, t0);
     return rc ? plugin_call_failed(c, "generate", rc, err) : 0;
 }

@@ -14,7 +14,6 @@
 #include "scene/scene_season.h"
 #include "scene/scene_tree_variants.h"
 #include "scene/shapes.h"
-#include "util/progress.h"
 
 xform3x4 plant_transform(const double p[3], double rot_deg, double scale)
 {
@@ -143,12 +142,12 @@ static int build_plugin_species(scene *s, const scene_file *sf, uint32_t i, cons
                                 const plugin_call_output *out, err_buf *err)
 {
     const species_spec *sp = &sf->species[i];
-    double t0 = progress_now();
+    phase_mark t0 = phase_start();
     plugin_call c;
     if (plugin_call_open_tree(&c, sf, sp, s, reg, out, err)) return -1;
     int rc = tree_variants_build(&c, s, i, sp->variants, out->threads, err);
     plugin_call_close(&c);
-    phase_since(out->times, PHASE_TREES, t0);
+    phase_stop(out->times, PHASE_TREES, t0);
     if (rc && !err_has_place(err)) {
         err_prefix(err, "species '%s': ", sp->name);
         err_locate(err, sf->path, sp->line, sp->column);

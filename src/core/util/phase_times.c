@@ -1,6 +1,8 @@
 /* phase_times.c — adding up and printing the time of a job's phases. */
 #include "util/phase_times.h"
 
+#include <time.h>
+
 #include "util/progress.h"
 
 static const char *const names[PHASE_COUNT] = {
@@ -16,11 +18,35 @@ void phase_add(phase_times *t, job_phase p, double seconds)
     if (t && p < PHASE_COUNT && seconds > 0) t->seconds[p] += seconds;
 }
 
-double phase_since(phase_times *t, job_phase p, double since)
+static double clock_seconds(clockid_t id)
 {
-    double now = progress_now();
-    phase_add(t, p, now - since);
+    struct timespec ts;
+    clock_gettime(id, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+phase_mark phase_start(void)
+{
+    return (phase_mark){progress_now(), clock_seconds(CLOCK_PROCESS_CPUTIME_ID), clock_seconds(CLOCK_THREAD_CPUTIME_ID)};
+}
+
+phase_mark phase_stop(phase_times *t, job_phase p, phase_mark m)
+{
+    phase_mark now = phase_start();
+    if (t && p < PHASE_COUNT) {
+        phase_add(t, p, now.wall - m.wall);
+        t->cpu[p] += now.cpu - m.cpu;
+        t->thread_cpu[p] += now.thread_cpu - m.thread_cpu;
+    }
     return now;
+}
+
+double phase_idle_estimate(const phase_times *t, job_phase p, unsigned threads)
+{
+    if (p >= PHASE_COUNT) return 0;
+    if (!(t->cpu[p] > 0)) return t->seconds[p];
+    double shared = t->cpu[p] / (threads ? threads : 1);
+    return t->thread_cpu[p] > shared ? t->thread_cpu[p] : shared;
 }
 
 const char *phase_name(job_phase p) { return p < PHASE_COUNT ? names[p] : "?"; }

@@ -20,15 +20,33 @@ typedef enum job_phase {
 } job_phase;
 
 typedef struct phase_times {
-    double seconds[PHASE_COUNT];
+    double seconds[PHASE_COUNT];    /* wall time */
+    double cpu[PHASE_COUNT];        /* the process's CPU time, every thread's (0: not measured) */
+    double thread_cpu[PHASE_COUNT]; /* the CPU time of the thread that ran the phase, a worker too */
 } phase_times;
 
-/* Adds seconds to phase p; t may be NULL (nothing is kept). */
+/* When a phase started: the clocks phase_stop reads. */
+typedef struct phase_mark {
+    double wall, cpu, thread_cpu;
+} phase_mark;
+
+/* Adds wall seconds to phase p; t may be NULL (nothing is kept). */
 void phase_add(phase_times *t, job_phase p, double seconds);
 
-/* Adds the time since `since` (a progress_now() value) to phase p and returns progress_now(),
- * so consecutive phases chain: `t0 = phase_since(times, PHASE_X, t0);`. t may be NULL. */
-double phase_since(phase_times *t, job_phase p, double since);
+/* The clocks now. */
+phase_mark phase_start(void);
+
+/* Adds the wall, process CPU and calling thread's CPU time since m to phase p and returns
+ * phase_start(), so consecutive phases chain: `m = phase_stop(times, PHASE_X, m);`. t may be
+ * NULL. */
+phase_mark phase_stop(phase_times *t, job_phase p, phase_mark m);
+
+/* The wall time phase p would take on an otherwise idle machine, from its CPU times on `threads`
+ * threads: the longer of the calling thread's CPU time (it works through the phase, so the
+ * phase lasts at least that) and the process's CPU time shared over the threads. Its wall time
+ * when no CPU time was measured. On a machine busy with other work, wall times are the
+ * machine's; this is the code's. */
+double phase_idle_estimate(const phase_times *t, job_phase p, unsigned threads);
 
 /* The phase's name as printed ("tree variants"). */
 const char *phase_name(job_phase p);

@@ -8,8 +8,8 @@
  *     building pass with tubes, leaves, materials and the silhouette, appended to a host mesh):
  *     seconds, symbols/s, triangles;
  *  4. the process's peak resident memory;
- * against the goals of ≤ 2 s for deriving and interpreting 10^7 symbols on one core and
- * ≤ 1 GiB of memory. Usage: bench_tree_lsystem [RECURSION] (default 21: 1.16e7 symbols). */
+ * and the headline, the real mesh build (3) per 10^7 symbols, against the goals of ≤ 2 s per
+ * 10^7 symbols on one core and ≤ 1 GiB of memory. Usage: bench_tree_lsystem [RECURSION] (default 21: 1.16e7 symbols). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -106,7 +106,7 @@ int main(int argc, char **argv)
            (double)st.symbols, (unsigned long long)st.segments, (unsigned long long)st.polygons);
     printf("derivation:        %.3f s  (%.3g symbols/s)\n", t_derive, st.symbols / t_derive);
     printf("turtle pass:       %.3f s  (%.3g symbols/s)\n", t_turtle, st.symbols / t_turtle);
-    printf("derive + interpret %.3f s for %.3g symbols  (goal: 1e7 symbols in <= 2 s: %.2f s per 1e7)\n",
+    printf("derive + interpret %.3f s for %.3g symbols  (%.2f s per 1e7; the goal is the whole build below)\n",
            t_derive + t_turtle, (double)st.symbols, (t_derive + t_turtle) * 1e7 / st.symbols);
 
     /* 3. the plugin's generate() through the host */
@@ -154,6 +154,8 @@ int main(int argc, char **argv)
     }
     printf("plugin generate(): %.3f s  (%.3g symbols/s end to end), %u triangles, %u vertices, height %.2f m\n", t_gen,
            st.symbols / t_gen, m->nt, m->nv, out.height);
+    printf("headline: the real mesh build (create + generate) %.2f s per 1e7 symbols (goal <= 2 s)\n",
+           t_gen * 1e7 / st.symbols);
     lp->desc->destroy(state);
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);

@@ -50,7 +50,7 @@ extern "C" {
 #endif
 
 #define SYLVA_ABI_MAJOR 1
-#define SYLVA_ABI_MINOR 3
+#define SYLVA_ABI_MINOR 4
 
 /* Bytes from the start of `type` to the end of `field`. */
 #define SYLVA_FIELD_END(type, field) (offsetof(type, field) + sizeof(((type *)0)->field))
@@ -383,6 +383,13 @@ typedef struct sylva_host_api {
     sylva_terrain_level *(*heightfield_level_new)(sylva_host *, sylva_heightfield *hf, uint32_t i0,
                                                   uint32_t j0, uint32_t cells_x, uint32_t cells_y,
                                                   uint32_t refine, int with_material);
+
+    /* ---- ABI 1.4 ---- */
+
+    /* How many threads the plugin's own workers may use at once in this call: the run's
+     * `--threads`, or one per processor (at least 1). A plugin parameter that names a thread
+     * count of its own takes precedence; results must not depend on either. */
+    unsigned (*threads)(sylva_host *);
 } sylva_host_api;
 
 /* The host table's size in each minor version: a table at least this long holds every
@@ -390,6 +397,7 @@ typedef struct sylva_host_api {
 #define SYLVA_HOST_API_SIZE_1_0 SYLVA_FIELD_END(sylva_host_api, resolve_path)
 #define SYLVA_HOST_API_SIZE_1_1 SYLVA_FIELD_END(sylva_host_api, param)
 #define SYLVA_HOST_API_SIZE_1_2 SYLVA_FIELD_END(sylva_host_api, heightfield_level_new)
+#define SYLVA_HOST_API_SIZE_1_4 SYLVA_FIELD_END(sylva_host_api, threads)
 
 /* 1 when the host that passed `api` offers function `member` (its table reaches that far and
  * the entry is set), e.g. `if (SYLVA_API_HAS(api, mem_alloc)) ...`. */
@@ -491,13 +499,25 @@ typedef struct sylva_plugin {
     const char *preset_param;
     const sylva_preset *presets;
     uint32_t n_presets;
+
+    /* ---- ABI 1.4 ---- */
+
+    uint32_t flags; /* SYLVA_PLUGIN_* below; 0: none */
 } sylva_plugin;
+
+/* generate() may run for several requests at once on one state (tree variants built in
+ * parallel), each call with its own sylva_host. A plugin that declares it creates no materials,
+ * textures or other host objects in generate() (create() makes them) and guards whatever it
+ * writes in its state; each request's result depends on the request alone. Without it the host
+ * calls generate() on a state one request at a time. */
+#define SYLVA_PLUGIN_CONCURRENT_GENERATE 1u
 
 /* The descriptor's size in each minor version (an ABI 1.0 plugin declares the 1.0 size). */
 #define SYLVA_PLUGIN_SIZE_1_0 SYLVA_FIELD_END(sylva_plugin, extension)
 #define SYLVA_PLUGIN_SIZE_1_1 SYLVA_FIELD_END(sylva_plugin, n_presets)
 #define SYLVA_PLUGIN_SIZE_1_2 SYLVA_PLUGIN_SIZE_1_1 /* 1.2 appended to the terrain request only */
 #define SYLVA_PLUGIN_SIZE_1_3 SYLVA_PLUGIN_SIZE_1_2 /* 1.3 appended to the heightfield only */
+#define SYLVA_PLUGIN_SIZE_1_4 SYLVA_FIELD_END(sylva_plugin, flags)
 
 /* The one exported symbol: descriptor `index` of this module, NULL past the end. */
 #define SYLVA_PLUGIN_ENTRY "sylva_plugin_get"

@@ -132,7 +132,7 @@ TEST(api_table_versions)
     CHECK_INT(host_api_table()->size, sizeof(sylva_host_api));
     CHECK_INT(host_api_table()->abi_major, SYLVA_ABI_MAJOR);
     CHECK_INT(host_api_table()->abi_minor, SYLVA_ABI_MINOR);
-    CHECK_INT(SYLVA_ABI_MINOR, 3);
+    CHECK_INT(SYLVA_ABI_MINOR, 4);
 }
 
 TEST(param_by_unknown_name_is_an_error)
@@ -229,7 +229,35 @@ TEST(resolve_path_refuses_special_files)
     scene_free(s);
 }
 
-TEST_LIST(TEST_CASE(api_table_versions), TEST_CASE(param_by_unknown_name_is_an_error),
+/* A host calling a generate() that runs beside others on one state refuses new materials and
+ * textures (their ids would follow the threads' order); api->threads gives the run's bound. */
+TEST(concurrent_host_refuses_materials_and_tells_threads)
+{
+    scene *s = scene_new();
+    err_buf err = {{0}};
+    sylva_host h;
+    host_init(&h, s, "/tmp", 1, "tree plugin 'x'", &err);
+    const sylva_host_api *api = host_api_table();
+    CHECK(SYLVA_API_HAS(api, threads));
+    CHECK(api->threads(&h) >= 1); /* 0: one per processor */
+    h.threads = 3;
+    CHECK_INT(api->threads(&h), 3);
+    uint32_t before = s->n_materials;
+    h.concurrent = 1;
+    sylva_material_desc d = {.size = sizeof d, .name = "bark", .bsdf = SYLVA_BSDF_LAMBERT, .texture = -1};
+    CHECK(api->material_new(&h, &d) < 0);
+    CHECK_STR_CONTAINS(err.msg, "make materials and textures in create()");
+    uint8_t texel[4] = {1, 2, 3, 4};
+    CHECK(api->texture_new(&h, "t", 1, 1, texel) < 0);
+    CHECK_INT(s->n_materials, before);
+    CHECK_INT(s->n_textures, 0);
+    h.concurrent = 0;
+    CHECK(api->material_new(&h, &d) >= 0);
+    host_release(&h);
+    scene_free(s);
+}
+
+TEST_LIST(TEST_CASE(concurrent_host_refuses_materials_and_tells_threads), TEST_CASE(api_table_versions), TEST_CASE(param_by_unknown_name_is_an_error),
           TEST_CASE(allocation_through_the_host), TEST_CASE(version_markers), TEST_CASE(rng_streams_are_keyed), TEST_CASE(heightfield_only_for_terrain),
           TEST_CASE(plants_only_for_ecology_and_checked), TEST_CASE(mesh_and_material_misuse),
           TEST_CASE(param_error_is_located), TEST_CASE(resolve_path_refuses_special_files))

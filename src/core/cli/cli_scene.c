@@ -19,8 +19,12 @@ int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const 
     if (!(c->sf = scene_file_load(scene_path, c->reg, &err))) return cli_fail(NULL, &err, ERR_INPUT);
     if (viewpoint && scene_file_use_viewpoint(c->sf, viewpoint, &err)) return cli_fail(cmd, &err, ERR_USAGE);
     if (season && scene_file_use_season(c->sf, season, &err)) return cli_fail(cmd, &err, ERR_USAGE);
-    if (!(c->scene = scene_build(c->sf, c->reg, opt, &err))) return cli_fail(NULL, &err, ERR_INPUT);
+    build_options bo = opt ? *opt : (build_options){0};
+    bo.times = &c->times;
+    if (!(c->scene = scene_build(c->sf, c->reg, &bo, &err))) return cli_fail(NULL, &err, ERR_INPUT);
     c->seconds = progress_now() - t0;
+    const double *ph = c->times.seconds; /* loading the file, materials, objects, season: the rest */
+    phase_add(&c->times, PHASE_SCENE_OTHER, c->seconds - ph[PHASE_TERRAIN] - ph[PHASE_TREES] - ph[PHASE_ECOLOGY]);
     return EXIT_OK;
 }
 
@@ -37,7 +41,9 @@ int cli_scene_ground_cover(cli_scene *c, const char *cmd, uint32_t width, uint32
     err_buf err = {{0}};
     ground_cover_report rep;
     if (!width || !height) width = c->scene->image.width, height = c->scene->image.height;
+    phase_mark t0 = phase_start();
     if (ground_cover_add(c->scene, &c->sf->ground_cover, width, height, &rep, &err)) return cli_fail(cmd, &err, ERR_INTERNAL);
+    phase_stop(&c->times, PHASE_GROUND_COVER, t0);
     if (!quiet && rep.instances)
         fprintf(stderr, "ground cover: %u tufts within %.0f m (a blade spans a pixel at %.0f m)%s\n", rep.instances,
                 rep.radius, rep.pixel_radius, rep.capped ? ", the radius shrunk to max_instances" : "");

@@ -8,12 +8,14 @@
 #include "scene/scene.h"
 #include "scene/scene_build.h"
 #include "scene/scene_file.h"
+#include "util/phase_times.h"
 
 typedef struct cli_scene {
     plugin_registry *reg;  /* owned */
     scene_file *sf;        /* owned */
     scene *scene;          /* owned */
     double seconds;        /* to load and build */
+    phase_times times;     /* the scene build's phases and the ground cover; a command adds its own */
 } cli_scene;
 
 /* Fills c and returns EXIT_OK, or the exit status of the problem after printing it

@@ -30,7 +30,8 @@ static void crosscheck_usage(FILE *out)
             "  -o, --output DIR     output folder (default: crosscheck-<scene name>)\n"
             "  --size WxH           image size (default: the scene's)\n"
             "  --spp N              samples per pixel, rounded down to a square (default: the scene's)\n"
-            "  --threads N          threads for both renderers (default: one per core)\n"
+            "  --threads N          threads for the scene build and both renderers (default: one\n"
+            "                       per core)\n"
             "  --povray PATH        POV-Ray's executable (default: $SYLVA_POVRAY, else povray)\n"
             "  --pov FILE.pov       compare against this POV-Ray scene instead of exporting SCENE\n"
             "                       (an export for the same size, e.g. edited by hand)\n"
@@ -94,7 +95,7 @@ int cmd_crosscheck(int argc, char **argv)
             co.spp = (uint32_t)v, i++;
         } else if (!strcmp(a, "--threads")) {
             if (!val || cli_parse_u64("crosscheck", a, val, 1, 1024, &v)) return EXIT_USAGE;
-            co.threads = (unsigned)v, i++;
+            co.threads = bo.threads = (unsigned)v, i++;
         } else if (!strcmp(a, "--povray")) {
             if (!val) goto missing;
             co.povray = val, i++;

@@ -26,7 +26,7 @@ static void montage_usage(FILE *out)
             "  --photo IMG             the photograph (default: photo: file)\n"
             "  --control-points FILE   the control points (default: photo: control_points)\n"
             "  --spp N                 samples per pixel (default: the scene's)\n"
-            "  --threads N             worker threads (default: one per core)\n"
+            "  --threads N             threads for every phase (default: one per core)\n"
             "  --season S              the plants on season S (spring, summer, autumn, winter)\n"
             "                          or date YYYY-MM-DD, instead of the scene's season: key\n"
             "  -q, --quiet             no progress output\n"
@@ -64,7 +64,7 @@ int cmd_montage(int argc, char **argv)
             mo.spp = (uint32_t)v, i++;
         } else if (!strcmp(a, "--threads")) {
             if (!val || cli_parse_u64("montage", a, val, 1, 1024, &v)) return EXIT_USAGE;
-            mo.threads = (unsigned)v, i++;
+            mo.threads = bo.threads = (unsigned)v, i++;
         } else if (!strcmp(a, "--season")) {
             if (!val) goto missing;
             season = val, i++;

@@ -23,8 +23,9 @@ static void render_usage(FILE *out)
             "                      _SEASON with --season, with .png in the current folder)\n"
             "  --spp N             samples per pixel (overrides image.spp)\n"
             "  --size WxH          image size in pixels (overrides image.width/height)\n"
-            "  --threads N         worker threads (default: one per core); the image does not\n"
-            "                      depend on it\n"
+            "  --threads N         threads for every phase: tree variants, ecology, BVH and\n"
+            "                      pixels (default: one per core); the image does not depend\n"
+            "                      on it\n"
             "  --seed N            random seed (overrides image.seed)\n"
             "  --verify            verification mode: direct sun with hard shadows plus the\n"
             "                      constant ambient term, no indirect light (as POV-Ray)\n"
@@ -90,7 +91,7 @@ int cmd_render(int argc, char **argv)
             ro.spp = (uint32_t)v, i++;
         } else if (!strcmp(a, "--threads")) {
             if (!val || cli_parse_u64("render", a, val, 1, 1024, &v)) return EXIT_USAGE;
-            ro.threads = (unsigned)v, i++;
+            ro.threads = bo.threads = (unsigned)v, i++;
         } else if (!strcmp(a, "--seed")) {
             if (!val || cli_parse_u64("render", a, val, 0, UINT64_MAX, &v)) return EXIT_USAGE;
             ro.seed = v, ro.seed_set = 1, i++;
@@ -144,15 +145,22 @@ int cmd_render(int argc, char **argv)
         rc = cli_fail("render", &err, ERR_INTERNAL);
         goto done;
     }
+    phase_add(&cs.times, PHASE_BVH, st.bvh_seconds);
+    phase_add(&cs.times, PHASE_RENDER_SETUP, st.build_seconds - st.bvh_seconds);
+    phase_add(&cs.times, PHASE_RENDER, st.render_seconds);
+    phase_mark t_out = phase_start();
     double ev = sc->image.exposure_set ? sc->image.exposure : auto_exposure_stops(f);
     if (!ro.quiet) fprintf(stderr, "exposure: %+.2f EV (%s)\n", ev, sc->image.exposure_set ? "image.exposure" : "metered");
     if (film_write_exr(f, &sc->site, ev, exr, &err) || film_write_png(f, png, sc->image.tone, ev, &err)) {
         rc = cli_fail("render", &err, ERR_OUTPUT);
         goto done;
     }
-    if (!ro.quiet)
+    phase_stop(&cs.times, PHASE_OUTPUT, t_out);
+    if (!ro.quiet) {
         fprintf(stderr, "rendered %ux%u, %llu samples in %.2fs (BVH %.2fs); total %.2fs\n", f->width, f->height,
                 (unsigned long long)st.samples, st.render_seconds, st.build_seconds, progress_now() - t0);
+        phase_times_print(&cs.times, stderr);
+    }
     printf("%s\n%s\n", png, exr);
 done:
     film_free(f);

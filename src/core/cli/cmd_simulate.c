@@ -35,6 +35,8 @@ static void simulate_usage(FILE *out)
             "                      year) and DIR/map_YEAR.png (the plants seen from above)\n"
             "  --maps Y,Y,...      the years to map with --stats (default 0,20,60,80,180 and the\n"
             "                      last year)\n"
+            "  --threads N         threads for the tree models and the ecology's workers (default:\n"
+            "                      one per core); the plants do not depend on it\n"
             "  -q, --quiet         no progress output\n"
             "  --allow-gdal-virtual let the scene name GDAL virtual paths, URLs and connection\n"
             "                      strings (these may reach the network; refused otherwise)\n"
@@ -124,7 +126,8 @@ int cmd_simulate(int argc, char **argv)
         const char *a = argv[i];
         const char *val = i + 1 < argc ? argv[i + 1] : NULL;
         int takes_value = !strcmp(a, "--years") || !strcmp(a, "-o") || !strcmp(a, "--output") ||
-                          !strcmp(a, "--save") || !strcmp(a, "--load") || !strcmp(a, "--stats") || !strcmp(a, "--maps");
+                          !strcmp(a, "--save") || !strcmp(a, "--load") || !strcmp(a, "--stats") || !strcmp(a, "--maps") ||
+                          !strcmp(a, "--threads");
         if (takes_value && !val) {
             fprintf(stderr, "sylva simulate: %s needs a value\n", a);
             return EXIT_USAGE;
@@ -135,6 +138,10 @@ int cmd_simulate(int argc, char **argv)
         } else if (!strcmp(a, "--years")) {
             if (cli_parse_u64("simulate", a, val, 0, 1000000, &years)) return EXIT_USAGE;
             years_given = 1;
+        } else if (!strcmp(a, "--threads")) {
+            uint64_t v;
+            if (cli_parse_u64("simulate", a, val, 1, 1024, &v)) return EXIT_USAGE;
+            bo.threads = (unsigned)v;
         } else if (!strcmp(a, "--maps")) {
             if (parse_years_list(val, map_years, &n_map_years)) return EXIT_USAGE;
         } else if (!strcmp(a, "--save")) {

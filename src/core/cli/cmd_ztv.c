@@ -41,8 +41,8 @@ static void ztv_usage(FILE *out)
             "  --flat-earth            straight sightlines, whatever the earth: section says\n"
             "  --season S              the plants on season S (spring, summer, autumn, winter)\n"
             "                          or date YYYY-MM-DD, instead of the scene's season: key\n"
-            "  --threads N             worker threads (default: one per core); the maps do not\n"
-            "                          depend on it\n"
+            "  --threads N             threads for every phase (default: one per core); the\n"
+            "                          maps do not depend on it\n"
             "  -q, --quiet             no progress output\n"
             "  --allow-gdal-virtual    let the scene name GDAL virtual paths, URLs and connection\n"
             "                          strings (these may reach the network; refused otherwise)\n"
@@ -114,7 +114,7 @@ int cmd_ztv(int argc, char **argv)
             season = val, i++;
         } else if (!strcmp(a, "--threads")) {
             if (!val || cli_parse_u64("ztv", a, val, 1, 1024, &v)) return EXIT_USAGE;
-            threads = (unsigned)v, i++;
+            threads = bo.threads = (unsigned)v, i++;
         } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
             bo.quiet = 1;
         } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
@@ -166,10 +166,12 @@ int cmd_ztv(int argc, char **argv)
                 targets.n, targets.n_developments, targets.n_developments == 1 ? "" : "s", job.grid.nx,
                 job.grid.ny, job.grid.cell, eye, job.screened == ZTV_BARE ? "bare earth only" : "bare earth and ",
                 job.screened == ZTV_BARE ? "" : mode_names[job.screened]);
+    phase_mark t_phase = phase_start();
     if (accel_build(&acc, sc, threads, &err)) {
         rc = cli_fail("ztv", &err, ERR_INTERNAL);
         goto done;
     }
+    t_phase = phase_stop(&cs.times, PHASE_BVH, t_phase);
     ztv_info info = {.grid = job.grid, .crs_wkt = sf->site.crs_wkt, .crs_name = sf->site.crs_name,
                      .observer_height = eye, .radius = radius, .curvature = job.earth && job.earth->curvature,
                      .refraction = sc->earth.refraction, .n_targets = targets.n,
@@ -184,14 +186,20 @@ int cmd_ztv(int argc, char **argv)
         goto done;
     }
     ztv_stats st;
-    if (ztv_trace(&job, sink_block, out, &st, &err) || ztv_output_finish(out, &err)) {
+    t_phase = phase_start(); /* the grid's rays, its blocks written as they come */
+    int traced = ztv_trace(&job, sink_block, out, &st, &err);
+    t_phase = phase_stop(&cs.times, PHASE_RENDER, t_phase);
+    if (traced || ztv_output_finish(out, &err)) {
         rc = cli_fail("ztv", &err, ERR_OUTPUT);
         goto done;
     }
-    if (!bo.quiet)
+    phase_stop(&cs.times, PHASE_OUTPUT, t_phase);
+    if (!bo.quiet) {
         fprintf(stderr, "ztv: %llu cells x %u targets in %.2fs: %.3g sightlines/s, %.2f rays each\n",
                 (unsigned long long)st.cells, targets.n, st.seconds, st.pairs / fmax(st.seconds, 1e-9),
                 st.pairs ? (double)st.rays / st.pairs : 0.0);
+        phase_times_print(&cs.times, stderr);
+    }
     printf("%s\n", dir);
 done:
     ztv_output_free(out);

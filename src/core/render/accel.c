@@ -135,7 +135,7 @@ int accel_build_shared(accel *a, const mesh *m, geom_kind kind, RTCScene *out, g
     RTCScene ps = rtcNewScene(a->device);
     if (!ps) return accel_device_error(a, err) ? -1 : err_set(err, "Embree could not create a scene");
     *out = ps;
-    rtcSetSceneBuildQuality(ps, RTC_BUILD_QUALITY_HIGH);
+    rtcSetSceneBuildQuality(ps, RTC_BUILD_QUALITY_MEDIUM);
     if (add_mesh(a, ps, m, kind, 0, ~0u, g, err)) return -1; /* the instance's mask decides */
     rtcCommitScene(ps);
     return accel_device_error(a, err);

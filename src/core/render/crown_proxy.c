@@ -9,6 +9,7 @@
 #include "geometry/crown_hull.h"
 #include "scene/mesh.h"
 #include "util/rng.h"
+#include "util/task_pool.h"
 
 void crown_proxies_free(crown_proxies *p)
 {
@@ -133,33 +134,84 @@ static void hull_camera_filter(const struct RTCFilterFunctionNArguments *args)
     }
 }
 
-/* The envelopes of the prototypes that some chosen plant uses, and their BVHs. */
-static int build_hulls(accel *a, crown_proxies *p, const uint8_t *used, err_buf *err)
+typedef struct hull_job {
+    accel *a;
+    crown_proxies *p;
+    const uint8_t *used;
+    uint32_t *order;  /* prototypes by falling triangle count: the largest start first */
+    err_buf *errs;    /* per prototype */
+    int *rc;          /* per prototype */
+} hull_job;
+
+/* The envelope of prototype order[i] and its BVH: it writes only that prototype's slots. */
+static void build_hull(void *ctx, unsigned worker, uint32_t i)
 {
+    hull_job *job = ctx;
+    accel *a = job->a;
+    crown_proxies *p = job->p;
     const scene *s = a->scene;
-    for (uint32_t k = 0; k < s->n_prototypes; k++) {
-        if (!used[k]) continue;
-        if (crown_hull_build(s, s->prototypes[k].mesh, &p->hull[k], err)) return -1;
-        if (!p->hull[k]) continue;
-        if (accel_build_shared(a, p->hull[k], GEOM_PROTOTYPE, &p->hull_scene[k], &p->hull_geom[k * ACCEL_PARTS],
-                               err))
-            return -1;
-        geom_info *gi = &p->hull_geom[k * ACCEL_PARTS];
-        gi->crossing = sqrtf(1.0f - blocked_share(a, k, p->sun.z));
-        gi->opacity = blocked_share(a, k, p->view.z);
-        if (gi->opacity >= DENSE_CROWN) gi->opacity = 1.0f;
-        RTCGeometry g = rtcGetGeometry(p->hull_scene[k], ACCEL_PART_OPAQUE);
-        rtcSetGeometryOccludedFilterFunction(g, hull_shadow_filter);
-        rtcSetGeometryIntersectFilterFunction(g, hull_camera_filter);
-        rtcCommitGeometry(g);
-        /* no spatial splits: a triangle met twice would count twice */
-        rtcSetSceneBuildQuality(p->hull_scene[k], RTC_BUILD_QUALITY_MEDIUM);
-        rtcCommitScene(p->hull_scene[k]);
+    uint32_t k = job->order[i];
+    err_buf *err = &job->errs[k];
+    if (!job->used[k]) return;
+    if (crown_hull_build(s, s->prototypes[k].mesh, &p->hull[k], err)) {
+        job->rc[k] = -1;
+        return;
     }
-    return 0;
+    if (!p->hull[k]) return;
+    if (accel_build_shared(a, p->hull[k], GEOM_PROTOTYPE, &p->hull_scene[k], &p->hull_geom[k * ACCEL_PARTS], err)) {
+        job->rc[k] = -1;
+        return;
+    }
+    geom_info *gi = &p->hull_geom[k * ACCEL_PARTS];
+    gi->crossing = sqrtf(1.0f - blocked_share(a, k, p->sun.z));
+    gi->opacity = blocked_share(a, k, p->view.z);
+    if (gi->opacity >= DENSE_CROWN) gi->opacity = 1.0f;
+    RTCGeometry g = rtcGetGeometry(p->hull_scene[k], ACCEL_PART_OPAQUE);
+    rtcSetGeometryOccludedFilterFunction(g, hull_shadow_filter);
+    rtcSetGeometryIntersectFilterFunction(g, hull_camera_filter);
+    rtcCommitGeometry(g);
+    /* no spatial splits: a triangle met twice would count twice */
+    rtcSetSceneBuildQuality(p->hull_scene[k], RTC_BUILD_QUALITY_MEDIUM);
+    rtcCommitScene(p->hull_scene[k]);
 }
 
-int crown_proxies_attach(accel *a, const camera *c, vec3 sun, double max_pixels, err_buf *err)
+typedef struct proto_size {
+    uint32_t triangles, k;
+} proto_size;
+
+static int more_triangles(const void *x, const void *y)
+{
+    const proto_size *a = x, *b = y;
+    if (a->triangles != b->triangles) return a->triangles > b->triangles ? -1 : 1;
+    return (a->k > b->k) - (a->k < b->k);
+}
+
+/* The envelopes of the prototypes that some chosen plant uses, and their BVHs, on up to
+ * `threads` threads; each prototype's own slots, so the result is the same for any count. */
+static int build_hulls(accel *a, crown_proxies *p, const uint8_t *used, unsigned threads, err_buf *err)
+{
+    const scene *s = a->scene;
+    uint32_t n = s->n_prototypes;
+    hull_job job = {.a = a, .p = p, .used = used};
+    proto_size *size = calloc(n ? n : 1, sizeof *size); /* owned here */
+    job.order = calloc(n ? n : 1, sizeof *job.order);
+    job.errs = calloc(n ? n : 1, sizeof *job.errs);
+    job.rc = calloc(n ? n : 1, sizeof *job.rc);
+    int rc = 0;
+    if (!size || !job.order || !job.errs || !job.rc) rc = err_nomem(err, "out of memory for the crown envelopes");
+    if (!rc) {
+        for (uint32_t k = 0; k < n; k++) size[k] = (proto_size){s->prototypes[k].mesh->nt, k};
+        qsort(size, n, sizeof *size, more_triangles);
+        for (uint32_t k = 0; k < n; k++) job.order[k] = size[k].k;
+        task_pool_run(threads, n, build_hull, &job);
+        for (uint32_t k = 0; k < n && !rc; k++)
+            if (job.rc[k]) *err = job.errs[k], rc = -1;
+    }
+    free(size), free(job.order), free(job.errs), free(job.rc);
+    return rc;
+}
+
+int crown_proxies_attach(accel *a, const camera *c, vec3 sun, double max_pixels, unsigned threads, err_buf *err)
 {
     const scene *s = a->scene;
     if (!(max_pixels > 0) || !s->n_instances) return 0;
@@ -182,7 +234,7 @@ int crown_proxies_attach(accel *a, const camera *c, vec3 sun, double max_pixels,
     for (uint32_t i = 0; i < s->n_instances; i++)
         if (!s->instances[i].development && !scene_instance_is_ground_cover(s, i) && looks_small(s, i, c, pixel, max_pixels, leaf))
             far[i] = 1, used[s->instances[i].prototype] = 1;
-    if (build_hulls(a, p, used, err)) goto fail;
+    if (build_hulls(a, p, used, threads, err)) goto fail;
     uint32_t n = 0;
     for (uint32_t i = 0; i < s->n_instances; i++) n += far[i] && p->hull_scene[s->instances[i].prototype];
     p->plant = calloc(n ? n : 1, sizeof *p->plant);

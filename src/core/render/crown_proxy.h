@@ -57,9 +57,10 @@ typedef struct crown_proxies {
 
 /* Adds to a (built by accel_build) a crown proxy for every plant outside the development whose
  * species has a crown and whose projected height through camera c is below max_pixels, with
- * reflectance 1 until calibrated; sun (unit, toward it) sets the envelopes' transmittance.
- * Nothing when max_pixels is 0. Returns 0, or -1 with err set. */
-int crown_proxies_attach(accel *a, const camera *c, vec3 sun, double max_pixels, err_buf *err);
+ * reflectance 1 until calibrated; sun (unit, toward it) sets the envelopes' transmittance. The
+ * envelopes are built on up to `threads` threads (0: one per processor), the same for any
+ * count. Nothing when max_pixels is 0. Returns 0, or -1 with err set. */
+int crown_proxies_attach(accel *a, const camera *c, vec3 sun, double max_pixels, unsigned threads, err_buf *err);
 void crown_proxies_free(crown_proxies *p); /* accepts NULL */
 
 /* Calibrates the proxies' reflectances for ctx (its camera, lights and masks; its seed keys the

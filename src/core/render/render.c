@@ -69,7 +69,7 @@ struct render_setup {
     const scene *scene;
     accel acc;
     lights lt;
-    double build_seconds;
+    double build_seconds, bvh_seconds;
 };
 
 static unsigned thread_count(const render_options *o)
@@ -101,7 +101,8 @@ static int setup_proxies(render_setup *rs, const render_options *o, uint32_t w, 
     render_ctx ctx;
     ctx_init(&ctx, rs, o, w, h);
     vec3 sun = rs->lt.summary.sun_on ? rs->lt.summary.sun_dir : v3(0.0f, 0.7071f, 0.7071f);
-    if (crown_proxies_attach(&rs->acc, &ctx.camera, sun, rs->scene->image.crown_proxy, err)) return -1;
+    if (crown_proxies_attach(&rs->acc, &ctx.camera, sun, rs->scene->image.crown_proxy, thread_count(o), err))
+        return -1;
     return crown_proxies_calibrate(&rs->acc, &ctx, thread_count(o), err);
 }
 
@@ -120,6 +121,7 @@ render_setup *render_setup_new(const scene *s, const render_options *opt, err_bu
         free(rs);
         return NULL;
     }
+    rs->bvh_seconds = progress_now() - t0;
     camera cam; /* the pixel's angle sets how finely the ground's texture is resolved */
     camera_init(&cam, &s->camera, w, h);
     rs->acc.pixel_angle = (float)camera_smallest_pixel_angle(&cam);
@@ -172,6 +174,7 @@ film *render_setup_run(render_setup *rs, const render_options *opt, render_stats
     double t2 = progress_now();
     if (stats) {
         stats->build_seconds = rs->build_seconds;
+        stats->bvh_seconds = rs->bvh_seconds;
         stats->render_seconds = t2 - t1;
         stats->samples = (uint64_t)w * h * ctx.spp;
     }

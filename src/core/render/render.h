@@ -24,7 +24,8 @@ typedef struct render_options {
 } render_options;
 
 typedef struct render_stats {
-    double build_seconds;   /* BVH build */
+    double build_seconds;   /* the setup: BVH, lights, crown proxies */
+    double bvh_seconds;     /* of which the BVH (accel_build) */
     double render_seconds;  /* pixels */
     uint64_t samples;
 } render_stats;

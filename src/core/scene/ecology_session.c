@@ -22,7 +22,8 @@ ecology_session *ecology_session_open(const scene_file *sf, scene *s, const plug
     }
     e->sf = sf;
     /* The command reports progress per year itself. */
-    plugin_call_output out = {.verbose = opt ? opt->verbose : 0, .quiet = 1};
+    plugin_call_output out = {.verbose = opt ? opt->verbose : 0, .quiet = 1, .threads = opt ? opt->threads : 0,
+                              .times = opt ? opt->times : NULL};
     if (plugin_call_open_ecology(&e->call, sf, s, reg, &out, err)) {
         free(e);
         return NULL;
@@ -61,7 +62,9 @@ uint32_t ecology_session_years_wanted(const ecology_session *e) { return e->ext-
 
 int ecology_session_step(ecology_session *e, uint32_t years, err_buf *err)
 {
+    phase_mark t0 = phase_start();
     int rc = e->ext->step(e->run, host_api_table(), &e->call.host, years);
+    phase_stop(e->call.times, PHASE_ECOLOGY, t0);
     return rc ? plugin_call_failed(&e->call, "step", rc, err) : 0;
 }
 
@@ -76,7 +79,9 @@ int ecology_session_save(ecology_session *e, const char *path, err_buf *err)
 
 int ecology_session_load(ecology_session *e, const char *path, err_buf *err)
 {
+    phase_mark t0 = phase_start();
     int rc = e->ext->load(e->run, host_api_table(), &e->call.host, path);
+    phase_stop(e->call.times, PHASE_ECOLOGY, t0);
     return rc ? plugin_call_failed(&e->call, "load", rc, err) : 0;
 }
 
@@ -88,7 +93,9 @@ int ecology_session_place(ecology_session *e, uint32_t *placed, err_buf *err)
                       "ecology plugin '%s' (%s) cannot place a saved run's plants: it offers no '%s' interface; "
                       "give the plants as a list, or let the ecology run", e->sf->ecology.plugin, e->call.plugin->file,
                       SYLVA_ECOLOGY_EXT_V2);
+    phase_mark t0 = phase_start();
     int rc = e->ext2->place(e->run, host_api_table(), &e->call.host, placed);
+    phase_stop(e->call.times, PHASE_ECOLOGY, t0);
     return rc ? plugin_call_failed(&e->call, "place", rc, err) : 0;
 }
 

@@ -12,6 +12,7 @@
 #include "util/file_check.h"
 #include "util/memory_budget.h"
 #include "util/rng.h"
+#include "util/task_pool.h"
 
 void host_init(sylva_host *h, scene *sc, const char *scene_dir, uint64_t seed, const char *context,
                err_buf *err)
@@ -34,9 +35,11 @@ static void host_log(sylva_host *h, sylva_log_level level, const char *fmt, ...)
     if (level == SYLVA_LOG_DEBUG && !h->verbose) return;
     va_list ap;
     va_start(ap, fmt);
+    flockfile(stderr); /* one line, whole, when tree variants log from several threads */
     fprintf(stderr, "sylva: %s%s: ", level == SYLVA_LOG_WARN ? "warning: " : "", h->context);
     vfprintf(stderr, fmt, ap);
     fputc('\n', stderr);
+    funlockfile(stderr);
     va_end(ap);
 }
 
@@ -126,9 +129,18 @@ static int host_mesh_append(sylva_host *h, sylva_mesh *m, const float *pos, cons
 
 static uint32_t host_mesh_triangle_count(const sylva_mesh *m) { return m ? m->nt : 0; }
 
+/* A plugin that lets generate() run concurrently must make its materials and textures in
+ * create(): ids handed out in whichever order the threads came would differ from run to run. */
+static int host_refuse_concurrent(sylva_host *h, const char *fn)
+{
+    return host_error(h, "%s called from a generate() that the plugin declares concurrent "
+                      "(SYLVA_PLUGIN_CONCURRENT_GENERATE); make materials and textures in create()", fn);
+}
+
 static int32_t host_texture_new(sylva_host *h, const char *name, uint32_t w, uint32_t hh,
                                 const uint8_t *rgba)
 {
+    if (h->concurrent) return host_refuse_concurrent(h, "texture_new");
     if (!rgba) return host_error(h, "texture_new called without texels");
     err_buf e;
     int32_t id = scene_add_texture(h->scene, name ? name : "texture", w, hh, rgba, &e);
@@ -137,6 +149,7 @@ static int32_t host_texture_new(sylva_host *h, const char *name, uint32_t w, uin
 
 static int32_t host_material_new(sylva_host *h, const sylva_material_desc *d)
 {
+    if (h->concurrent) return host_refuse_concurrent(h, "material_new");
     if (!d || d->size < sizeof(sylva_material_desc))
         return host_error(h, "material_new: the descriptor is missing or its size is wrong");
     if (d->bsdf != SYLVA_BSDF_LAMBERT && d->bsdf != SYLVA_BSDF_LEAF)
@@ -355,6 +368,8 @@ static const sylva_value *host_param(sylva_host *h, const sylva_params *p, const
     return NULL;
 }
 
+static unsigned host_threads(sylva_host *h) { return h && h->threads ? h->threads : task_pool_default_threads(); }
+
 static const sylva_host_api api_table = {
     .size = sizeof(sylva_host_api),
     .abi_major = SYLVA_ABI_MAJOR,
@@ -382,6 +397,7 @@ static const sylva_host_api api_table = {
     .param = host_param,
     .memory_check = host_memory_check,
     .heightfield_level_new = host_heightfield_level_new,
+    .threads = host_threads,
 };
 
 const sylva_host_api *host_api_table(void) { return &api_table; }

@@ -28,6 +28,9 @@ struct sylva_host {
     uint32_t n_species;    /* ecology: species count for checking plant_add */
     sylva_kind kind;       /* the calling plugin's kind: heightfield_new only for terrain,
                               plant_add only for ecology; 0 (tests) allows both */
+    unsigned threads;      /* the plugin's worker threads (api->threads); 0: one per processor */
+    int concurrent;        /* 1: one of several hosts calling generate() at once on one plugin
+                              state; material_new and texture_new refuse (create() makes them) */
 };
 
 void host_init(sylva_host *h, scene *sc, const char *scene_dir, uint64_t seed, const char *context,

@@ -80,6 +80,8 @@ static int call_open(plugin_call *c, scene *s, const plugin_registry *reg, const
     }
     host_init(&c->host, s, c->sf->dir, seed, c->context, &c->plugin_err);
     c->host.verbose = out ? out->verbose : 0, c->host.quiet = out ? out->quiet : 0, c->host.kind = kind;
+    c->host.threads = out ? out->threads : 0;
+    c->times = out ? out->times : NULL;
     c->host.n_species = kind == SYLVA_KIND_ECOLOGY ? c->sf->n_species : 0;
     int rc = c->plugin->desc->create(host_api_table(), &c->host, params, &c->state);
     if (rc) {
@@ -89,6 +91,28 @@ static int call_open(plugin_call *c, scene *s, const plugin_registry *reg, const
         return -1;
     }
     return 0;
+}
+
+int plugin_call_concurrent(const plugin_call *c)
+{
+    return c->plugin && (c->plugin->desc->flags & SYLVA_PLUGIN_CONCURRENT_GENERATE);
+}
+
+void plugin_call_share(const plugin_call *c, plugin_call *w)
+{
+    *w = *c;
+    err_clear(&w->plugin_err);
+    w->species_info = NULL; /* c's */
+    const sylva_host *h = &c->host;
+    host_init(&w->host, h->scene, h->scene_dir, h->seed, w->context, &w->plugin_err);
+    w->host.verbose = h->verbose, w->host.quiet = h->quiet, w->host.kind = h->kind, w->host.threads = h->threads;
+    w->host.concurrent = 1;
+}
+
+void plugin_call_unshare(plugin_call *w)
+{
+    host_release(&w->host);
+    memset(w, 0, sizeof *w);
 }
 
 void plugin_call_close(plugin_call *c)
@@ -158,7 +182,9 @@ int plugin_call_terrain(plugin_call *c, err_buf *err)
                                  .site_origin = {sf->site.origin[0], sf->site.origin[1], sf->site.origin[2]},
                                  .eye = {sf->camera.position[0], sf->camera.position[1], sf->camera.position[2]}};
     sylva_terrain_out out = {.size = sizeof out};
+    phase_mark t0 = phase_start();
     int rc = c->plugin->desc->generate(c->state, host_api_table(), &c->host, &req, &out);
+    phase_stop(c->times, PHASE_TERRAIN, t0);
     if (rc) return plugin_call_failed(c, "generate", rc, err);
     const sylva_heightfield *hf = s->terrain;
     if (!out.terrain || out.terrain != hf)
@@ -193,6 +219,8 @@ int plugin_call_tree(plugin_call *c, tree_variant *v, mesh *m, err_buf *err)
 int plugin_call_ecology(plugin_call *c, err_buf *err)
 {
     sylva_ecology_out out = {.size = sizeof out};
+    phase_mark t0 = phase_start();
     int rc = c->plugin->desc->generate(c->state, host_api_table(), &c->host, &c->ecology, &out);
+    phase_stop(c->times, PHASE_ECOLOGY, t0);
     return rc ? plugin_call_failed(c, "generate", rc, err) : 0;
 }

@@ -23,6 +23,7 @@
 #include "scene/mesh.h"
 #include "scene/scene.h"
 #include "scene/scene_file.h"
+#include "util/phase_times.h"
 
 typedef struct plugin_call {
     const loaded_plugin *plugin;   /* the registry's */
@@ -35,11 +36,16 @@ typedef struct plugin_call {
     const species_spec *species;   /* tree: borrowed from sf */
     sylva_species_info *species_info; /* ecology: owned array of sf->n_species */
     sylva_ecology_request ecology; /* ecology: the request for generate() and the run */
+    phase_times *times;            /* borrowed, may be NULL: where the calls' wall times add up */
 } plugin_call;
 
-/* Messages and progress of the plugin: verbose prints its DEBUG logs, quiet hides progress. */
+/* How the plugin runs: verbose prints its DEBUG logs, quiet hides progress, threads bounds its
+ * worker threads (api->threads; 0: one per processor), and times (may be NULL) collects the wall
+ * time of the terrain's and the ecology's generate(). */
 typedef struct plugin_call_output {
     int verbose, quiet;
+    unsigned threads;
+    phase_times *times;
 } plugin_call_output;
 
 /* Each opens the plugin the scene file names for that part of the scene (the terrain, species
@@ -70,6 +76,16 @@ typedef struct tree_variant {
  * index; sets v->age when it was 0 and v->height (from the mesh's bounds when the plugin gave
  * none). Returns 0, or -1 with err set. */
 int plugin_call_tree(plugin_call *c, tree_variant *v, mesh *m, err_buf *err);
+
+/* 1 when c's plugin lets generate() run for several requests at once on its state
+ * (SYLVA_PLUGIN_CONCURRENT_GENERATE). */
+int plugin_call_concurrent(const plugin_call *c);
+
+/* A second caller of c's plugin state for a concurrent generate(): w gets c's plugin, state and
+ * request settings with a host and failure sentence of its own. c must stay open while w is in
+ * use; plugin_call_unshare(w) releases w's host (never the state, which c owns). */
+void plugin_call_share(const plugin_call *c, plugin_call *w);
+void plugin_call_unshare(plugin_call *w);
 
 /* The ecology: generate(); its plants are then c->host.plants (c->host.n_plants), owned by the
  * host until plugin_call_close. Returns 0, or -1 with err set. */

@@ -13,6 +13,7 @@
 #include "scene/scene_ground.h"
 #include "scene/scene_season.h"
 #include "scene/scene_spring.h"
+#include "scene/scene_tree_variants.h"
 #include "scene/shapes.h"
 
 xform3x4 plant_transform(const double p[3], double rot_deg, double scale)
@@ -142,27 +143,12 @@ static int build_plugin_species(scene *s, const scene_file *sf, uint32_t i, cons
                                 const plugin_call_output *out, err_buf *err)
 {
     const species_spec *sp = &sf->species[i];
+    phase_mark t0 = phase_start();
     plugin_call c;
     if (plugin_call_open_tree(&c, sf, sp, s, reg, out, err)) return -1;
-    int rc = 0;
-    for (uint32_t v = 0; v < sp->variants && !rc; v++) {
-        mesh *m = mesh_new();
-        if (!m) {
-            rc = err_nomem(err, "out of memory");
-            break;
-        }
-        tree_variant tv = {.index = v, .count = sp->variants};
-        if ((rc = plugin_call_tree(&c, &tv, m, err))) {
-            mesh_free(m);
-            break;
-        }
-        if (scene_add_prototype(s, i, v, tv.age, tv.height, m, err) < 0) {
-            rc = -1;
-            break;
-        }
-        s->species[i].n_variants++;
-    }
+    int rc = tree_variants_build(&c, s, i, sp->variants, out->threads, err);
     plugin_call_close(&c);
+    phase_stop(out->times, PHASE_TREES, t0);
     if (rc && !err_has_place(err)) {
         err_prefix(err, "species '%s': ", sp->name);
         err_locate(err, sf->path, sp->line, sp->column);
@@ -291,7 +277,7 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
     }
     s->image = sf->image, s->camera = sf->camera, s->sun = sf->sun, s->sky = sf->sky;
     s->earth = sf->earth, s->snow = sf->snow, s->season_day = sf->season.day;
-    plugin_call_output out = {.verbose = opt->verbose, .quiet = opt->quiet};
+    plugin_call_output out = {.verbose = opt->verbose, .quiet = opt->quiet, .threads = opt->threads, .times = opt->times};
     if (scene_set_site(s, &sf->site, err) || add_materials(s, sf, err) ||
         build_terrain(s, sf, plugins, &out, err) || scene_ground_camera(s, sf, err) ||
         build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) ||

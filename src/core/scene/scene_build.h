@@ -8,11 +8,14 @@
 #include "plugin/plugin_host.h"
 #include "scene/scene.h"
 #include "scene/scene_file.h"
+#include "util/phase_times.h"
 
 typedef struct build_options {
     int verbose;     /* plugin DEBUG logs */
     int quiet;       /* no progress output */
     int no_ecology;  /* 1: leave the ecology plugin out (a caller that drives it itself) */
+    unsigned threads; /* threads for the tree variants and the plugins' workers; 0: one per processor */
+    phase_times *times; /* may be NULL: where the terrain, tree variant and ecology times add up */
 } build_options;
 
 /* Returns a new scene (free with scene_free) or NULL with err set. plugins may be NULL when the

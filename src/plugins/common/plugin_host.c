@@ -24,3 +24,30 @@ int plugin_tree_stats_copy(const sylva_tree_stats *last, int has_last, sylva_tre
     memcpy((char *)out + sizeof out->size, (const char *)last + sizeof out->size, size - sizeof out->size);
     return SYLVA_OK;
 }
+
+void plugin_last_stats_init(plugin_last_stats *l)
+{
+    memset(l, 0, sizeof *l);
+    pthread_mutex_init(&l->lock, NULL);
+}
+
+void plugin_last_stats_release(plugin_last_stats *l)
+{
+    if (l) pthread_mutex_destroy(&l->lock);
+}
+
+void plugin_last_stats_set(plugin_last_stats *l, const sylva_tree_stats *st)
+{
+    pthread_mutex_lock(&l->lock);
+    if (st) l->stats = *st;
+    l->has = st != NULL;
+    pthread_mutex_unlock(&l->lock);
+}
+
+int plugin_last_stats_get(plugin_last_stats *l, sylva_tree_stats *out)
+{
+    pthread_mutex_lock(&l->lock);
+    int rc = plugin_tree_stats_copy(&l->stats, l->has, out);
+    pthread_mutex_unlock(&l->lock);
+    return rc;
+}

@@ -4,6 +4,8 @@
 #ifndef PLUGIN_HOST_H
 #define PLUGIN_HOST_H
 
+#include <pthread.h>
+
 #include "plugin_err.h"
 #include "sylva/plugin.h"
 
@@ -24,5 +26,21 @@ void plugin_host_stream(void *ctx, sylva_rng *rng, const char *purpose, uint64_t
  * figures: copies *last into *out up to out->size (the caller's struct may be older and
  * smaller). Returns SYLVA_OK, or SYLVA_ERR_PARAM when has_last is 0 or out is unusable. */
 int plugin_tree_stats_copy(const sylva_tree_stats *last, int has_last, sylva_tree_stats *out);
+
+/* A tree plugin's last model's figures, kept under a lock so that generate() calls running at
+ * once (SYLVA_PLUGIN_CONCURRENT_GENERATE) may each set them: last_stats then gives the figures
+ * of whichever finished last (`sylva tree-stats` asks after each call, one at a time). */
+typedef struct plugin_last_stats {
+    pthread_mutex_t lock;
+    sylva_tree_stats stats;
+    int has;
+} plugin_last_stats;
+
+void plugin_last_stats_init(plugin_last_stats *l);
+void plugin_last_stats_release(plugin_last_stats *l); /* accepts NULL */
+/* Keeps *st as the last figures; st NULL: there are none (the last call failed). */
+void plugin_last_stats_set(plugin_last_stats *l, const sylva_tree_stats *st);
+/* plugin_tree_stats_copy of the kept figures. */
+int plugin_last_stats_get(plugin_last_stats *l, sylva_tree_stats *out);
 
 #endif

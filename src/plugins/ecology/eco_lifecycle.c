@@ -3,32 +3,43 @@
  * (4.31); and removing the dead: at the death age (4.26), a dominated plant with chance p_m,
  * and — sylva's rule, which the thesis leaves unprinted — a plant in unfavourable conditions
  * with chance env_death (1 - c) for each factor whose favourability c is below 1, each factor
- * drawing from its own stream in the order altitude, humidity, sunniness, windiness, slope. */
+ * drawing from its own stream in the order altitude, humidity, sunniness, windiness, slope. Each
+ * species has its own plants and streams, so the species run on worker threads with the same
+ * result for any thread count. */
 #include "eco_growth.h"
+#include "eco_parallel.h"
 #include "eco_sim.h"
 
-void eco_grow(eco_sim *s)
+/* One species' year of growth: it writes only its own plants and seeds. */
+static void grow_species(void *ctx, size_t j)
 {
-    for (uint32_t j = 0; j < s->n_species; j++) {
-        const eco_species *sp = &s->species[j];
-        eco_population *pop = &s->pop[j];
-        double seeds = 0;
-        for (uint32_t q = 0; q < pop->n; q++) {
-            eco_plant *pl = &pop->plants[q];
-            if (!pl->dominated) {
-                pl->h += eco_growth(sp, pl->age, pl->v);
-                if (pl->h > 1) pl->h = 1;
-            }
-            pl->age++;
-            pl->r = pl->h * sp->r_s;
-            pl->power = eco_power(pl->v, pl->h, s->p_r[j]);
-            if (pl->age >= sp->t_m) seeds += pl->power;
+    eco_sim *s = ctx;
+    const eco_species *sp = &s->species[j];
+    eco_population *pop = &s->pop[j];
+    double seeds = 0;
+    for (uint32_t q = 0; q < pop->n; q++) {
+        eco_plant *pl = &pop->plants[q];
+        if (!pl->dominated) {
+            pl->h += eco_growth(sp, pl->age, pl->v);
+            if (pl->h > 1) pl->h = 1;
         }
-        s->seeds[j] = seeds;
+        pl->age++;
+        pl->r = pl->h * sp->r_s;
+        pl->power = eco_power(pl->v, pl->h, s->p_r[j]);
+        if (pl->age >= sp->t_m) seeds += pl->power;
     }
+    s->seeds[j] = seeds;
 }
 
-void eco_remove_dead(eco_sim *s, const eco_random *rnd)
+void eco_grow(eco_sim *s) { eco_parallel_each(s->config.threads, s->n_species, grow_species, s); }
+
+typedef struct death_job {
+    eco_sim *s;
+    const eco_random *rnd;
+} death_job;
+
+/* One species' deaths: its own plants and its own streams, so the species run on any thread. */
+static void remove_dead_species(void *ctx, size_t j)
 {
     static const struct {
         int fav;
@@ -38,21 +49,28 @@ void eco_remove_dead(eco_sim *s, const eco_random *rnd)
                 {ECO_FAV_SUNNINESS, ECO_RNG_DEATH_SUNNINESS},
                 {ECO_FAV_WINDINESS, ECO_RNG_DEATH_WINDINESS},
                 {ECO_FAV_SLOPE, ECO_RNG_DEATH_SLOPE}};
-    for (uint32_t j = 0; j < s->n_species; j++) {
-        const eco_species *sp = &s->species[j];
-        eco_population *pop = &s->pop[j];
-        sylva_rng *rng = &s->rng[(size_t)j * ECO_N_STREAMS];
-        uint32_t kept = 0;
-        for (uint32_t q = 0; q < pop->n; q++) {
-            const eco_plant *pl = &pop->plants[q];
-            int dead = pl->age >= pl->t_max;
-            if (!dead && pl->dominated) dead = rnd->uniform(&rng[ECO_RNG_DEATH_DOMINANCE]) < sp->p_m;
-            for (int f = 0; f < 5 && !dead && sp->env_death > 0; f++) {
-                double c = pl->fav[env[f].fav];
-                if (c < 1) dead = rnd->uniform(&rng[env[f].stream]) < sp->env_death * (1.0 - c);
-            }
-            if (!dead) pop->plants[kept++] = *pl;
+    const death_job *job = ctx;
+    eco_sim *s = job->s;
+    const eco_random *rnd = job->rnd;
+    const eco_species *sp = &s->species[j];
+    eco_population *pop = &s->pop[j];
+    sylva_rng *rng = &s->rng[j * ECO_N_STREAMS];
+    uint32_t kept = 0;
+    for (uint32_t q = 0; q < pop->n; q++) {
+        const eco_plant *pl = &pop->plants[q];
+        int dead = pl->age >= pl->t_max;
+        if (!dead && pl->dominated) dead = rnd->uniform(&rng[ECO_RNG_DEATH_DOMINANCE]) < sp->p_m;
+        for (int f = 0; f < 5 && !dead && sp->env_death > 0; f++) {
+            double c = pl->fav[env[f].fav];
+            if (c < 1) dead = rnd->uniform(&rng[env[f].stream]) < sp->env_death * (1.0 - c);
         }
-        pop->n = kept;
+        if (!dead) pop->plants[kept++] = *pl;
     }
+    pop->n = kept;
+}
+
+void eco_remove_dead(eco_sim *s, const eco_random *rnd)
+{
+    death_job job = {s, rnd};
+    eco_parallel_each(s->config.threads, s->n_species, remove_dead_species, &job);
 }

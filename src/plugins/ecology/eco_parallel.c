@@ -1,7 +1,8 @@
-/* eco_parallel.c — contiguous chunks of a loop on pthreads. */
+/* eco_parallel.c — contiguous chunks of a loop, or its items one at a time, on pthreads. */
 #include "eco_parallel.h"
 
 #include <pthread.h>
+#include <stdatomic.h>
 #include <unistd.h>
 
 #define ECO_MAX_THREADS 256
@@ -38,6 +39,34 @@ void eco_parallel_for(unsigned threads, size_t n, eco_range_fn fn, void *ctx)
         if (started[t]) pthread_join(tid[t], NULL);
         else eco_chunk_run(&chunk[t]);
     }
+}
+
+typedef struct eco_items {
+    eco_item_fn fn;
+    void *ctx;
+    size_t n;
+    atomic_size_t next;
+} eco_items;
+
+static void *eco_items_run(void *arg)
+{
+    eco_items *it = arg;
+    for (size_t i; (i = atomic_fetch_add(&it->next, 1)) < it->n;) it->fn(it->ctx, i);
+    return NULL;
+}
+
+void eco_parallel_each(unsigned threads, size_t n, eco_item_fn fn, void *ctx)
+{
+    if (threads > ECO_MAX_THREADS) threads = ECO_MAX_THREADS;
+    if (threads > n) threads = (unsigned)n;
+    eco_items it = {.fn = fn, .ctx = ctx, .n = n};
+    atomic_init(&it.next, 0);
+    pthread_t tid[ECO_MAX_THREADS];
+    unsigned started = 1;
+    for (; started < threads; started++)
+        if (pthread_create(&tid[started], NULL, eco_items_run, &it)) break;
+    eco_items_run(&it); /* the caller works too, and finishes what a thread that did not start left */
+    for (unsigned t = 1; t < started; t++) pthread_join(tid[t], NULL);
 }
 
 unsigned eco_cpu_count(void)

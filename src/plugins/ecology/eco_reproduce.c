@@ -11,6 +11,7 @@
 #include <stdlib.h>
 
 #include "eco_growth.h"
+#include "eco_parallel.h"
 #include "eco_sim.h"
 
 static int by_index(const void *a, const void *b)
@@ -58,73 +59,118 @@ static void sow(eco_sim *s, uint32_t j, uint32_t p, const eco_random *rnd)
     pl->rotation = 2.0 * M_PI * rnd->uniform(&rng[ECO_RNG_ROTATION]);
 }
 
+typedef struct sowing_job {
+    eco_sim *s;
+    const eco_random *rnd;
+    const uint32_t *n_new;    /* per species: this year's seedlings */
+    int *failed;              /* per species: 1 when its parent list could not be allocated */
+} sowing_job;
+
+/* One species' seedlings (Algorithm 7), from its own streams into its own population, whose
+ * room the caller reserved: so the species may run on any thread. */
+static void sow_species(void *ctx, size_t j)
+{
+    const sowing_job *job = ctx;
+    eco_sim *s = job->s;
+    const eco_random *rnd = job->rnd;
+    const eco_species *sp = &s->species[j];
+    eco_population *pop = &s->pop[j];
+    uint32_t n_new = job->n_new[j];
+    double band_ratio = s->n_band ? (double)s->n_band / s->n_growable : 0.0;
+    uint32_t *parents = malloc((n_new ? n_new : 1) * sizeof *parents); /* owned here */
+    if (!parents) {
+        job->failed[j] = 1;
+        return;
+    }
+    sylva_rng *rng = &s->rng[j * ECO_N_STREAMS];
+    /* Algorithm 7: first decide every seedling (near a parent, which one; or anywhere) ... */
+    uint32_t existing = pop->n, n_near = 0, n_anywhere = 0;
+    for (uint32_t q = 0; q < n_new; q++) {
+        if (existing && rnd->uniform(&rng[ECO_RNG_NEAR]) < sp->p_s) {
+            uint32_t idx = (uint32_t)(rnd->uniform(&rng[ECO_RNG_PARENT]) * existing);
+            parents[n_near++] = idx < existing ? idx : existing - 1;
+        } else {
+            n_anywhere++;
+        }
+    }
+    /* ... then walk the parents once in index order ... */
+    qsort(parents, n_near, sizeof *parents, by_index);
+    for (uint32_t q = 0; q < n_near; q++) {
+        uint32_t p = beside(&s->terrain, pop->plants[parents[q]].patch, rnd->uniform(&rng[ECO_RNG_SIDE]));
+        sow(s, (uint32_t)j, p, rnd);
+    }
+    /* ... and place the rest anywhere the plants may grow. */
+    for (uint32_t q = 0; q < n_anywhere; q++) {
+        uint32_t c = (uint32_t)(rnd->uniform(&rng[ECO_RNG_ANYWHERE]) * s->n_growable);
+        sow(s, (uint32_t)j, s->growable_list[c < s->n_growable ? c : s->n_growable - 1], rnd);
+    }
+    /* The edge band's share of that rain, at the area's density per patch (rounded at
+     * random), each seedling then taking root with the band's chance where it falls. */
+    if (s->n_band && n_anywhere) {
+        double share = n_anywhere * band_ratio;
+        uint32_t n_band = (uint32_t)(share + rnd->uniform(&rng[ECO_RNG_ESTABLISH]));
+        for (uint32_t q = 0; q < n_band; q++) {
+            uint32_t c = (uint32_t)(rnd->uniform(&rng[ECO_RNG_ESTABLISH]) * s->n_band);
+            sow(s, (uint32_t)j, s->band_list[c < s->n_band ? c : s->n_band - 1], rnd);
+        }
+    }
+    free(parents);
+}
+
 int eco_reproduce(eco_sim *s, const eco_random *rnd, plugin_err *err)
 {
+    /* How many seedlings each species brings, and room for them, in species order (the
+     * max_plants check counts the species before it) ... */
+    uint32_t *n_new = calloc(s->n_species ? s->n_species : 1, sizeof *n_new); /* owned here */
+    int *failed = calloc(s->n_species ? s->n_species : 1, sizeof *failed);   /* owned here */
+    int rc = SYLVA_OK;
+    if (!n_new || !failed) {
+        rc = plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for the year's seedlings");
+        goto done;
+    }
     uint64_t living = eco_sim_count(s);
-    for (uint32_t j = 0; j < s->n_species; j++) {
+    for (uint32_t j = 0; j < s->n_species && !rc; j++) {
         const eco_species *sp = &s->species[j];
         eco_population *pop = &s->pop[j];
         double want = 1.0 + sp->g_s * s->seeds[j] + s->carry[j]; /* (4.30) with s_s from (4.31) */
         double whole = floor(want);
         s->carry[j] = want - whole;
         if (living + whole > (double)s->config.max_plants) {
-            return plugin_fail(err, SYLVA_ERR_LIMIT,
-                               "year %u: species '%s' would bring %.0f seedlings to %llu living plants, more than "
-                               "max_plants = %llu; raise max_plants or lower the species' g_s",
-                               s->year + 1, s->names[j], whole, (unsigned long long)living,
-                               (unsigned long long)s->config.max_plants);
+            rc = plugin_fail(err, SYLVA_ERR_LIMIT,
+                             "year %u: species '%s' would bring %.0f seedlings to %llu living plants, more than "
+                             "max_plants = %llu; raise max_plants or lower the species' g_s",
+                             s->year + 1, s->names[j], whole, (unsigned long long)living,
+                             (unsigned long long)s->config.max_plants);
+            break;
         }
-        uint32_t n_new = (uint32_t)whole;
+        n_new[j] = (uint32_t)whole;
         /* room for the band's share of the rain too: at most every seedling from anywhere times
          * band patches per area patch, plus one for the rounding */
         double band_ratio = s->n_band ? (double)s->n_band / s->n_growable : 0.0;
-        uint64_t band_max = s->n_band ? (uint64_t)ceil(n_new * band_ratio) + 1 : 0;
-        living += n_new;
-        if (pop->n + (uint64_t)n_new + band_max > pop->cap) {
+        uint64_t band_max = s->n_band ? (uint64_t)ceil(n_new[j] * band_ratio) + 1 : 0;
+        living += n_new[j];
+        if (pop->n + (uint64_t)n_new[j] + band_max > pop->cap) {
             uint64_t cap = pop->cap ? pop->cap : 64;
-            while (cap < pop->n + (uint64_t)n_new + band_max) cap *= 2;
+            while (cap < pop->n + (uint64_t)n_new[j] + band_max) cap *= 2;
             if (cap > UINT32_MAX) cap = UINT32_MAX;
             eco_plant *q = realloc(pop->plants, cap * sizeof *q);
-            if (!q)
-                return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for %llu plants of '%s'",
-                                   (unsigned long long)cap, s->names[j]);
+            if (!q) {
+                rc = plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for %llu plants of '%s'",
+                                 (unsigned long long)cap, s->names[j]);
+                break;
+            }
             pop->plants = q, pop->cap = (uint32_t)cap;
         }
-        uint32_t *parents = malloc((n_new ? n_new : 1) * sizeof *parents);
-        if (!parents) return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for %u seedlings", n_new);
-        sylva_rng *rng = &s->rng[(size_t)j * ECO_N_STREAMS];
-        /* Algorithm 7: first decide every seedling (near a parent, which one; or anywhere) ... */
-        uint32_t existing = pop->n, n_near = 0, n_anywhere = 0;
-        for (uint32_t q = 0; q < n_new; q++) {
-            if (existing && rnd->uniform(&rng[ECO_RNG_NEAR]) < sp->p_s) {
-                uint32_t idx = (uint32_t)(rnd->uniform(&rng[ECO_RNG_PARENT]) * existing);
-                parents[n_near++] = idx < existing ? idx : existing - 1;
-            } else {
-                n_anywhere++;
-            }
-        }
-        /* ... then walk the parents once in index order ... */
-        qsort(parents, n_near, sizeof *parents, by_index);
-        for (uint32_t q = 0; q < n_near; q++) {
-            uint32_t p = beside(&s->terrain, pop->plants[parents[q]].patch, rnd->uniform(&rng[ECO_RNG_SIDE]));
-            sow(s, j, p, rnd);
-        }
-        /* ... and place the rest anywhere the plants may grow. */
-        for (uint32_t q = 0; q < n_anywhere; q++) {
-            uint32_t c = (uint32_t)(rnd->uniform(&rng[ECO_RNG_ANYWHERE]) * s->n_growable);
-            sow(s, j, s->growable_list[c < s->n_growable ? c : s->n_growable - 1], rnd);
-        }
-        /* The edge band's share of that rain, at the area's density per patch (rounded at
-         * random), each seedling then taking root with the band's chance where it falls. */
-        if (s->n_band && n_anywhere) {
-            double share = n_anywhere * band_ratio;
-            uint32_t n_band = (uint32_t)(share + rnd->uniform(&rng[ECO_RNG_ESTABLISH]));
-            for (uint32_t q = 0; q < n_band; q++) {
-                uint32_t c = (uint32_t)(rnd->uniform(&rng[ECO_RNG_ESTABLISH]) * s->n_band);
-                sow(s, j, s->band_list[c < s->n_band ? c : s->n_band - 1], rnd);
-            }
-        }
-        free(parents);
     }
-    return SYLVA_OK;
+    /* ... then every species sows its own, on worker threads. */
+    if (!rc) {
+        sowing_job job = {s, rnd, n_new, failed};
+        eco_parallel_each(s->config.threads, s->n_species, sow_species, &job);
+        for (uint32_t j = 0; j < s->n_species && !rc; j++)
+            if (failed[j]) rc = plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for %u seedlings", n_new[j]);
+    }
+done:
+    free(n_new);
+    free(failed);
+    return rc;
 }

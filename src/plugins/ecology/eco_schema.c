@@ -98,5 +98,5 @@ const sylva_param_spec eco_params[ECO_PARAMS] = {
     {.name = "max_plants", .type = SYLVA_P_INT, .flags = RANGE, .def = 5000000, .min = 1, .max = 100000000,
      .help = "Most living plants the simulation may hold; more is an error."},
     {.name = "threads", .type = SYLVA_P_INT, .flags = RANGE, .def = 0, .min = 0, .max = 256,
-     .help = "Worker threads (0: one per processor); the forest does not depend on it."},
+     .help = "Worker threads (0: the run's --threads, else one per processor); the forest does not depend on it."},
 };

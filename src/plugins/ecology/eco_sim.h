@@ -5,10 +5,11 @@
  *
  * Randomness: fifteen streams per species from the caller's eco_random (the plugin file hands
  * in the host's streams), one per purpose — the thirteen of 004 Fig. C.16 and sylva's
- * rotation and edge-band establishment — keyed by purpose and (stream seed, species). Every draw
- * happens on the calling thread in a fixed order; the dominance search, the only part run on
- * worker threads, draws nothing. The same seeds therefore give the same forest for any thread
- * count.
+ * rotation and edge-band establishment — keyed by purpose and (stream seed, species). A species'
+ * draws come from its own streams in a fixed order, and a species' seedlings, growth and deaths
+ * touch only its own plants, so the species run on worker threads; the dominance search, also
+ * on worker threads, draws nothing. The same seeds therefore give the same forest for any
+ * thread count.
  *
  * Failures: functions that can fail return SYLVA_OK or a negative sylva_status with the sentence
  * in a plugin_err; the model never calls the host.

@@ -119,7 +119,10 @@ static int eco_create(const sylva_host_api *api, sylva_host *host, const sylva_p
     f->sun_samples = (uint32_t)sylva_param_int(params, "sun_samples");
     f->ambient = sylva_param_real(params, "ambient");
     int64_t threads = sylva_param_int(params, "threads");
-    c->threads = threads > 0 ? (unsigned)threads : eco_cpu_count();
+    /* The scene's own count, else the run's (--threads), else one per processor. */
+    c->threads = threads > 0                     ? (unsigned)threads
+                 : SYLVA_API_HAS(api, threads) ? api->threads(host)
+                                               : eco_cpu_count();
     f->threads = c->threads;
     c->years = (uint32_t)sylva_param_int(params, "years");
     c->max_plants = (uint64_t)sylva_param_int(params, "max_plants");

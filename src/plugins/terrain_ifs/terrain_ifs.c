@@ -397,7 +397,11 @@ static int terrain_setup(const sylva_host_api *api, sylva_host *host, const sylv
     s->iterations = (uint64_t)sylva_param_int(params, "iterations");
     s->depth = (uint32_t)sylva_param_int(params, "depth");
     uint32_t threads = (uint32_t)sylva_param_int(params, "threads");
-    s->threads = threads ? threads : ifs_online_processors();
+    /* The scene's own count, else the run's (--threads), else one per processor. */
+    s->threads = threads                       ? threads
+                 : SYLVA_API_HAS(api, threads) ? api->threads(host)
+                                               : ifs_online_processors();
+    if (s->threads > IFS_MAX_THREADS) s->threads = IFS_MAX_THREADS;
 
     /* The starting point: the DTM origin (U, V) = (0, 0) at its height, or the scene's point. */
     const sylva_value *start = sylva_param(params, "start");

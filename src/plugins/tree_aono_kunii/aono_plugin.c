@@ -22,8 +22,7 @@ typedef struct aono_state {
     aono_config cfg;
     int32_t bark_material;
     int32_t leaf_material; /* -1 without leaves */
-    sylva_tree_stats last; /* the figures of the last model generate() built */
-    int has_last;
+    plugin_last_stats last; /* the figures of the last model generate() built */
 } aono_state;
 
 static void host_progress(void *ctx, uint32_t levels_done, uint32_t levels)
@@ -87,6 +86,7 @@ static void aono_destroy(void *state)
     aono_state *st = state;
     if (!st) return;
     aono_config_release(&st->cfg);
+    plugin_last_stats_release(&st->last);
     free(st);
 }
 
@@ -98,6 +98,7 @@ static int aono_create(const sylva_host_api *api, sylva_host *host, const sylva_
         api->error(host, "tree_aono_kunii: out of memory for its settings");
         return SYLVA_ERR_NOMEM;
     }
+    plugin_last_stats_init(&st->last);
     plugin_err err = {0};
     int rc = aono_config_read(params, &st->cfg, &err) ? plugin_report(api, host, &err) : SYLVA_OK;
     if (!rc) rc = make_materials(api, host, st);
@@ -132,26 +133,23 @@ static int aono_generate(void *state, const sylva_host_api *api, sylva_host *hos
     int rc = aono_mesh_branches(&st->cfg, &skel, st->bark_material, &buf, &err);
     if (!rc) rc = aono_mesh_leaves(&st->cfg, &skel, st->leaf_material, &env, &buf, &err);
     if (rc) rc = plugin_report(api, host, &err);
-    st->has_last = 0;
-    st->last = (sylva_tree_stats){.size = sizeof st->last, .age = req->age};
-    if (!rc && aono_stats_measure(&skel, &buf, st->leaf_material, &st->last)) {
+    sylva_tree_stats last = {.size = sizeof last, .age = req->age};
+    if (!rc && aono_stats_measure(&skel, &buf, st->leaf_material, &last)) {
         api->error(host, "tree_aono_kunii: out of memory measuring the tree's silhouette");
         rc = SYLVA_ERR_NOMEM;
     }
     aono_skeleton_release(&skel);
     if (!rc) rc = api->mesh_append(host, o->mesh, buf.pos, buf.nrm, buf.uv, buf.nv, buf.tri, buf.mat, buf.nt);
-    if (!rc) {
-        o->height = st->last.height;
-        st->has_last = 1;
-    }
+    if (!rc) o->height = last.height;
+    plugin_last_stats_set(&st->last, rc ? NULL : &last);
     aono_mesh_buffer_release(&buf);
     return rc;
 }
 
 static int aono_last_stats(void *state, sylva_tree_stats *out)
 {
-    const aono_state *st = state;
-    return st ? plugin_tree_stats_copy(&st->last, st->has_last, out) : SYLVA_ERR_PARAM;
+    aono_state *st = state;
+    return st ? plugin_last_stats_get(&st->last, out) : SYLVA_ERR_PARAM;
 }
 
 static const sylva_tree_stats_v1 stats_interface = {.size = sizeof stats_interface, .last_stats = aono_last_stats};
@@ -176,6 +174,7 @@ static const sylva_plugin aono_descriptor = {
     .generate = aono_generate,
     .destroy = aono_destroy,
     .extension = aono_extension,
+    .flags = SYLVA_PLUGIN_CONCURRENT_GENERATE, /* generate() writes only st->last, under its lock */
 };
 
 const sylva_plugin *aono_plugin(void) { return &aono_descriptor; }

@@ -27,8 +27,7 @@ typedef struct tree_vessel_state {
     vessel_params params;
     int32_t bark_material, leaf_material;
     void (*mem_free)(void *);
-    sylva_tree_stats last; /* the figures of the last model generate() built */
-    int has_last;
+    plugin_last_stats last; /* the figures of the last model generate() built */
 } tree_vessel_state;
 
 /* Textures and materials for the species; returns 0 or a negative status (message set). */
@@ -102,6 +101,7 @@ static int tree_vessel_create(const sylva_host_api *api, sylva_host *host,
         api->mem_free(s);
         return rc;
     }
+    plugin_last_stats_init(&s->last);
     *state = s;
     return SYLVA_OK;
 }
@@ -152,12 +152,12 @@ static int tree_vessel_generate(void *state, const sylva_host_api *api, sylva_ho
                           mesh.nt);
     if (rc == SYLVA_OK) {
         o->height = mesh.top;
-        s->last = (sylva_tree_stats){.size = sizeof s->last, .age = req->age};
-        if (vessel_stats_measure(&tree, &mesh, &s->last)) {
+        sylva_tree_stats last = {.size = sizeof last, .age = req->age};
+        if (vessel_stats_measure(&tree, &mesh, &last)) {
             api->error(host, "tree_vessel: out of memory measuring the tree's silhouette");
             rc = SYLVA_ERR_NOMEM;
         }
-        s->has_last = rc == SYLVA_OK;
+        plugin_last_stats_set(&s->last, rc == SYLVA_OK ? &last : NULL);
     }
 done:
     vessel_mesh_release(&mesh);
@@ -167,8 +167,8 @@ done:
 
 static int tree_vessel_last_stats(void *state, sylva_tree_stats *out)
 {
-    const tree_vessel_state *s = state;
-    return s ? plugin_tree_stats_copy(&s->last, s->has_last, out) : SYLVA_ERR_PARAM;
+    tree_vessel_state *s = state;
+    return s ? plugin_last_stats_get(&s->last, out) : SYLVA_ERR_PARAM;
 }
 
 static const sylva_tree_stats_v1 stats_interface = {.size = sizeof stats_interface,
@@ -182,7 +182,9 @@ static const void *tree_vessel_extension(const char *name)
 static void tree_vessel_destroy(void *state)
 {
     tree_vessel_state *s = state;
-    if (s) s->mem_free(s);
+    if (!s) return;
+    plugin_last_stats_release(&s->last);
+    s->mem_free(s);
 }
 
 static const sylva_plugin tree_vessel = {
@@ -203,6 +205,7 @@ static const sylva_plugin tree_vessel = {
     .preset_param = "preset",
     .presets = vessel_presets,
     .n_presets = VESSEL_PRESETS,
+    .flags = SYLVA_PLUGIN_CONCURRENT_GENERATE, /* generate() writes only s->last, under its lock */
 };
 
 SYLVA_EXPORT const sylva_plugin *sylva_plugin_get(uint32_t index)

@@ -2,7 +2,8 @@
 # simulate_cli_test.sh SYLVA SCENE OUTDIR — `sylva simulate` and `sylva factors` end to end:
 # a run saved at year 15 and continued to 40 writes the same plant CSV as a run straight to 40;
 # --stats writes the population CSV and chart and the maps; factors writes every map; bad
-# options and a state from another scene fail with their exit status and message.
+# options and a state from another scene fail with their exit status and message; --threads 1
+# and 3 write the same plants.
 set -euo pipefail
 sylva=$1 scene=$2 out=$3
 rm -rf "$out"
@@ -14,6 +15,12 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 "$sylva" simulate "$scene" --load "$out/y15.state" --years 25 -o "$out/continued.csv" \
   --stats "$out/stats" --maps 15,30 -q >/dev/null
 cmp -s "$out/whole.csv" "$out/continued.csv" || fail "the continued run differs from the uninterrupted one"
+# the species' seedlings, growth and deaths and the dominance search on worker threads: the same
+# plants, byte for byte, for any thread count
+"$sylva" simulate "$scene" --years 40 --threads 1 -o "$out/t1.csv" -q >/dev/null
+"$sylva" simulate "$scene" --years 40 --threads 3 -o "$out/t3.csv" -q >/dev/null
+cmp -s "$out/whole.csv" "$out/t1.csv" || fail "--threads 1 differs from the default thread count"
+cmp -s "$out/t1.csv" "$out/t3.csv" || fail "--threads 3 differs from --threads 1"
 head -1 "$out/whole.csv" | grep -qx 'species,x,y,z,age,height,radius,vigour' || fail "CSV header"
 [ "$(wc -l < "$out/whole.csv")" -gt 50 ] || fail "too few plants in the CSV"
 for f in population.csv population.png map_0015.png map_0030.png map_0040.png; do

@@ -9,13 +9,13 @@
 #include "render/crown_proxy.h"
 #include "render/film.h"
 #include "render/lens.h"
-#include "render/pixel_strata.h"
 #include "render/sampler.h"
 
-/* Sampler dimensions: 0-1 unused (the pixel position comes from pixel_strata.h); then DIMS_PER_VERTEX per path vertex. */
-enum { DIM_SUN = 0, DIM_SKY = 2, DIM_BSDF = 4, DIM_RR = 7, DIMS_PER_VERTEX = 8 };
-/* The lens point: far past every vertex's dimensions, so a pinhole's samples stay as they were. */
-#define DIM_LENS (1u << 24)
+/* Sampler dimensions (sampler.h), 2-D points in consecutive pairs: the position in the pixel,
+ * the point on the lens, then DIMS_PER_VERTEX for each path vertex from DIM_VERTEX on: the sun
+ * sample, the sky sample, the BSDF direction (pairs), the BSDF's lobe and Russian roulette. */
+enum { DIM_PIXEL = 0, DIM_LENS = 2, DIM_VERTEX = 4 };
+enum { DIM_SUN = 0, DIM_SKY = 2, DIM_BSDF = 4, DIM_LOBE = 6, DIM_RR = 7, DIMS_PER_VERTEX = 8 };
 
 static inline float power_heuristic(float a, float b)
 {
@@ -107,24 +107,7 @@ static int on_development(const accel *a, const struct RTCRayHit *rh)
 /* *hit: 0 when the camera ray hit nothing, 1 when it hit a surface, 2 when that surface is part
  * of the development. *proxy (when not NULL): the crown proxy the camera ray met (its index + 1),
  * or 0. */
-/* Which of a pixel's samples a path is: at the first vertex its 2-D sample pairs (sun, sky,
- * BSDF direction) are spread over the pixel's samples as its positions are (pixel_strata.h). */
-typedef struct pixel_sample {
-    uint32_t index, count;
-    uint64_t pattern;
-} pixel_sample;
-
-/* The 2-D sample pair at dimensions (d, d + 1) of vertex `depth`. */
-static void sample_pair(const sampler *smp, const pixel_sample *ps, uint32_t depth, uint32_t d, float *u, float *v)
-{
-    if (depth == 0 && ps->count > 1) {
-        strata_position(ps->index, ps->count, rng_combine(ps->pattern, d), u, v);
-        return;
-    }
-    *u = sampler_at(smp, d), *v = sampler_at(smp, d + 1);
-}
-
-static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, const pixel_sample *ps, vec3 o, vec3 d, int *hit,
+static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec3 d, int *hit,
                           uint32_t *proxy)
 {
     const accel *a = ctx->accel;
@@ -148,11 +131,15 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, const pixel
         }
         if (!found) {
             /* The camera sees the exact sky; light reaching surfaces uses the tabulated sky, the
-             * same function next-event estimation samples, so both MIS strategies agree. */
+             * same function next-event estimation samples, so both MIS strategies agree. The
+             * table's constant base is BSDF sampling's alone (weight 1), the part above it is
+             * shared with next-event estimation. */
             if (prev_pdf > 0.0f && l->table.rgb) {
                 float rgb[3], fd[3] = {d.x, d.y, d.z};
                 float w = power_heuristic(prev_pdf, sky_table_pdf(&l->table, fd, rgb));
-                L = v3_add(L, v3_scale(v3_mul(beta, v3(rgb[0], rgb[1], rgb[2])), w));
+                vec3 sky = v3_add(v3(l->table.base[0], l->table.base[1], l->table.base[2]),
+                                  v3_scale(v3(rgb[0], rgb[1], rgb[2]), w));
+                L = v3_add(L, v3_mul(beta, sky));
             } else {
                 L = v3_add(L, v3_mul(beta, light_summary_sky(&l->summary, d)));
             }
@@ -169,13 +156,13 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, const pixel
         vec3 wo = v3_scale(d, -1.0f);
         vec3 ng = v3_dot(h.ng, wo) < 0.0f ? v3_scale(h.ng, -1.0f) : h.ng;
         vec3 n = v3_dot(h.ns, ng) < 0.0f ? v3_scale(h.ns, -1.0f) : h.ns;
-        uint32_t base = 2 + depth * DIMS_PER_VERTEX;
+        uint32_t base = DIM_VERTEX + depth * DIMS_PER_VERTEX;
 
         /* next-event estimation: the sun */
         if (l->summary.sun_on) {
             vec3 wi;
             float u, v;
-            sample_pair(smp, ps, depth, base + DIM_SUN, &u, &v);
+            sampler_2d(smp, base + DIM_SUN, &u, &v);
             float pdf_l = lights_sun_sample(l, u, v, &wi);
             float pdf_b;
             vec3 f = bsdf_eval(h.mat, h.albedo, n, wo, wi, &pdf_b);
@@ -193,7 +180,7 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, const pixel
         if (l->table.rgb) {
             float fwi[3], rgb[3];
             float u, v;
-            sample_pair(smp, ps, depth, base + DIM_SKY, &u, &v);
+            sampler_2d(smp, base + DIM_SKY, &u, &v);
             float pdf_l = sky_table_sample(&l->table, u, v, fwi, rgb);
             vec3 wi = v3(fwi[0], fwi[1], fwi[2]);
             float pdf_b;
@@ -208,13 +195,13 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, const pixel
         /* continue the path */
         bsdf_sample bs;
         float u, v;
-        sample_pair(smp, ps, depth, base + DIM_BSDF + 1, &u, &v);
-        if (!bsdf_sample_dir(h.mat, h.albedo, n, wo, sampler_at(smp, base + DIM_BSDF), u, v, &bs))
+        sampler_2d(smp, base + DIM_BSDF, &u, &v);
+        if (!bsdf_sample_dir(h.mat, h.albedo, n, wo, sampler_1d(smp, base + DIM_LOBE), u, v, &bs))
             break;
         beta = v3_mul(beta, v3_scale(bs.f, fabsf(v3_dot(n, bs.wi)) / bs.pdf));
         if (depth >= 3) {
             float q = fminf(0.95f, v3_max(beta));
-            if (sampler_at(smp, base + DIM_RR) >= q) break;
+            if (sampler_1d(smp, base + DIM_RR) >= q) break;
             beta = v3_scale(beta, 1.0f / q);
         }
         if (!(v3_max(beta) > 0.0f)) break;
@@ -348,15 +335,16 @@ static vec3 camera_sample(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_
 {
     sampler smp;
     sampler_start(&smp, ctx->seed, (uint64_t)y * ctx->camera.width + x, s);
-    pixel_sample ps = {.index = s, .count = ctx->spp,
-                       .pattern = rng_combine(ctx->seed, (uint64_t)y * ctx->camera.width + x)};
     float px, py;
-    strata_position(s, ctx->spp, ps.pattern, &px, &py);
+    sampler_2d(&smp, DIM_PIXEL, &px, &py);
     vec3 d = camera_direction(&ctx->camera, x + px, y + py), o = ctx->camera.origin;
     float vignette = lens_vignette(&ctx->camera, d);
-    if (ctx->camera.lens_radius > 0.0f)
-        lens_ray(&ctx->camera, sampler_at(&smp, DIM_LENS), sampler_at(&smp, DIM_LENS + 1), &o, &d);
-    vec3 L = v3_scale(path_radiance(ctx, &smp, &ps, o, d, hit, proxy), vignette);
+    if (ctx->camera.lens_radius > 0.0f) {
+        float lu, lv;
+        sampler_2d(&smp, DIM_LENS, &lu, &lv);
+        lens_ray(&ctx->camera, lu, lv, &o, &d);
+    }
+    vec3 L = v3_scale(path_radiance(ctx, &smp, o, d, hit, proxy), vignette);
     return isfinite(L.x) && isfinite(L.y) && isfinite(L.z) ? L : v3(0, 0, 0);
 }
 

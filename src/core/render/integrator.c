@@ -12,10 +12,11 @@
 #include "render/sampler.h"
 
 /* Sampler dimensions (sampler.h), 2-D points in consecutive pairs: the position in the pixel,
- * the point on the lens, then DIMS_PER_VERTEX for each path vertex from DIM_VERTEX on: the sun
- * sample, the sky sample, the BSDF direction (pairs), the BSDF's lobe and Russian roulette. */
+ * the point on the lens, then DIMS_PER_VERTEX for each path vertex from DIM_VERTEX on: the light
+ * sample (the sun's, or the one light's), the sky's when both are sampled, the BSDF direction
+ * (pairs), the BSDF's lobe and Russian roulette. */
 enum { DIM_PIXEL = 0, DIM_LENS = 2, DIM_VERTEX = 4 };
-enum { DIM_SUN = 0, DIM_SKY = 2, DIM_BSDF = 4, DIM_LOBE = 6, DIM_RR = 7, DIMS_PER_VERTEX = 8 };
+enum { DIM_LIGHT = 0, DIM_LIGHT2 = 2, DIM_BSDF = 4, DIM_LOBE = 6, DIM_RR = 7, DIMS_PER_VERTEX = 8 };
 
 static inline float power_heuristic(float a, float b)
 {
@@ -104,6 +105,41 @@ static int on_development(const accel *a, const struct RTCRayHit *rh)
            inst - a->first_instance < a->scene->n_instances && a->scene->instances[inst - a->first_instance].development;
 }
 
+/* 1 when the sky's table holds radiance above its base (next-event estimation's part). */
+static int sky_varies(const lights *l) { return l->table.rgb && l->table.cdf_rows[l->table.nt] > 0.0f; }
+
+/* The probabilities p[0] of the sun's and p[1] of the sky's next-event estimation at hit h
+ * (shading normal n toward wo). At the first vertex each light that can contribute is sampled
+ * (probability 1): there the sun's sample is nearly free of noise and the sky's carries it, so
+ * thinning either costs more than the shadow ray it saves. At deeper vertices one light is
+ * sampled, chosen by the lights' expected contributions without shadows: the sun's
+ * f(wo, sun) |n.sun| E, the sky's the surface's reflectance (and a leaf's transmittance) over pi
+ * times the irradiance of the sky above its base on the normal's side (and the other side),
+ * interpolated between the table's irradiance on surfaces facing up and down. Any
+ * probabilities keep the estimate unbiased: the MIS weights use them, and a light left out (an
+ * expected contribution of 0) is still met by BSDF sampling. */
+static void light_probabilities(const lights *l, const hit_info *h, vec3 n, vec3 wo, int first, float p[2])
+{
+    float e[2] = {0.0f, 0.0f};
+    if (l->summary.sun_on) {
+        vec3 s = l->summary.sun_dir;
+        float pdf;
+        e[0] = v3_luminance(bsdf_eval(h->mat, h->albedo, n, wo, s, &pdf)) * fabsf(v3_dot(n, s)) *
+               v3_luminance(l->summary.sun_irradiance);
+        /* a point-like sun is met by nothing else: sample it whenever it can light h */
+        if (l->summary.solid_angle <= 0.0f && e[0] > 0.0f) first = 1;
+    }
+    if (sky_varies(l)) {
+        float up = 0.5f + 0.5f * n.z, front = up * l->table.irradiance_up + (1.0f - up) * l->table.irradiance_down,
+              back = up * l->table.irradiance_down + (1.0f - up) * l->table.irradiance_up;
+        e[1] = v3_luminance(h->albedo) * front;
+        if (h->mat->bsdf == SYLVA_BSDF_LEAF) e[1] += v3_luminance(h->mat->transmittance) * back;
+        e[1] *= (float)M_1_PI;
+    }
+    float total = e[0] + e[1];
+    for (int j = 0; j < 2; j++) p[j] = !(e[j] > 0.0f) ? 0.0f : first ? 1.0f : e[j] / total;
+}
+
 /* *hit: 0 when the camera ray hit nothing, 1 when it hit a surface, 2 when that surface is part
  * of the development. *proxy (when not NULL): the crown proxy the camera ray met (its index + 1),
  * or 0. */
@@ -114,6 +150,7 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
     const lights *l = ctx->lights;
     vec3 L = v3(0, 0, 0), beta = v3(1, 1, 1);
     float prev_pdf = 0.0f; /* 0: the previous vertex was the camera (no MIS on emission) */
+    float prev_p[2] = {0.0f, 0.0f}; /* the previous vertex's light probabilities (sun, sky) */
     unsigned mask = ctx->ray_mask; /* a path from a crown proxy stays among the proxies */
     const unsigned shadow_mask = ctx->camera_mask; /* shadows cross the proxies, not the far plants */
     for (uint32_t depth = 0;; depth++) {
@@ -132,19 +169,18 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
         if (!found) {
             /* The camera sees the exact sky; light reaching surfaces uses the tabulated sky, the
              * same function next-event estimation samples, so both MIS strategies agree. The
-             * table's constant base is BSDF sampling's alone (weight 1), the part above it is
+             * table's base is BSDF sampling's alone (weight 1), the part above it is
              * shared with next-event estimation. */
             if (prev_pdf > 0.0f && l->table.rgb) {
-                float rgb[3], fd[3] = {d.x, d.y, d.z};
-                float w = power_heuristic(prev_pdf, sky_table_pdf(&l->table, fd, rgb));
-                vec3 sky = v3_add(v3(l->table.base[0], l->table.base[1], l->table.base[2]),
-                                  v3_scale(v3(rgb[0], rgb[1], rgb[2]), w));
+                float above[3], below[3], fd[3] = {d.x, d.y, d.z};
+                float w = power_heuristic(prev_pdf, prev_p[1] * sky_table_pdf(&l->table, fd, above, below));
+                vec3 sky = v3_add(v3(below[0], below[1], below[2]), v3_scale(v3(above[0], above[1], above[2]), w));
                 L = v3_add(L, v3_mul(beta, sky));
             } else {
                 L = v3_add(L, v3_mul(beta, light_summary_sky(&l->summary, d)));
             }
             if (lights_in_sun(l, d)) {
-                float ws = prev_pdf > 0.0f ? power_heuristic(prev_pdf, 1.0f / l->summary.solid_angle) : 1.0f;
+                float ws = prev_pdf > 0.0f ? power_heuristic(prev_pdf, prev_p[0] / l->summary.solid_angle) : 1.0f;
                 L = v3_add(L, v3_scale(v3_mul(beta, l->summary.sun_radiance), ws));
             }
             break;
@@ -158,38 +194,33 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
         vec3 n = v3_dot(h.ns, ng) < 0.0f ? v3_scale(h.ns, -1.0f) : h.ns;
         uint32_t base = DIM_VERTEX + depth * DIMS_PER_VERTEX;
 
-        /* next-event estimation: the sun */
-        if (l->summary.sun_on) {
-            vec3 wi;
-            float u, v;
-            sampler_2d(smp, base + DIM_SUN, &u, &v);
-            float pdf_l = lights_sun_sample(l, u, v, &wi);
-            float pdf_b;
-            vec3 f = bsdf_eval(h.mat, h.albedo, n, wo, wi, &pdf_b);
-            float c = fabsf(v3_dot(n, wi)), vis;
-            if (v3_max(f) > 0.0f && c > 0.0f && (vis = visible(ctx, offset_point(h.p, ng, wi), wi, INFINITY, shadow_mask)) > 0.0f) {
-                vec3 contrib;
-                if (l->summary.solid_angle > 0.0f)
-                    contrib = v3_scale(v3_mul(f, l->summary.sun_radiance), c / pdf_l * power_heuristic(pdf_l, pdf_b));
-                else
-                    contrib = v3_scale(v3_mul(f, l->summary.sun_irradiance), c);
-                L = v3_add(L, v3_mul(beta, v3_scale(contrib, vis)));
+        /* next-event estimation (light_probabilities): both lights, each from a pair of its own,
+         * or one, chosen by where the first pair's u falls (the rest of u places the point on it) */
+        float p_light[2];
+        light_probabilities(l, &h, n, wo, depth == 0, p_light);
+        int one = p_light[0] + p_light[1] <= 1.0f;
+        for (int j = 0; j < 2; j++) {
+            float u, v, pdf_l, pdf_b, p = p_light[j], lo = one && j ? p_light[0] : 0.0f;
+            if (!(p > 0.0f)) continue;
+            sampler_2d(smp, base + (j && !one ? DIM_LIGHT2 : DIM_LIGHT), &u, &v);
+            if (u < lo || u >= lo + p) continue;
+            u = fminf((u - lo) / p, 0x1.fffffep-1f);
+            vec3 wi, Le;
+            if (j == 0) {
+                pdf_l = lights_sun_sample(l, u, v, &wi);
+                Le = l->summary.solid_angle > 0.0f ? l->summary.sun_radiance : l->summary.sun_irradiance;
+            } else {
+                float fwi[3], rgb[3];
+                pdf_l = sky_table_sample(&l->table, u, v, fwi, rgb);
+                wi = v3(fwi[0], fwi[1], fwi[2]), Le = v3(rgb[0], rgb[1], rgb[2]);
             }
-        }
-        /* next-event estimation: the sky */
-        if (l->table.rgb) {
-            float fwi[3], rgb[3];
-            float u, v;
-            sampler_2d(smp, base + DIM_SKY, &u, &v);
-            float pdf_l = sky_table_sample(&l->table, u, v, fwi, rgb);
-            vec3 wi = v3(fwi[0], fwi[1], fwi[2]);
-            float pdf_b;
             vec3 f = bsdf_eval(h.mat, h.albedo, n, wo, wi, &pdf_b);
             float c = fabsf(v3_dot(n, wi)), vis;
             if (pdf_l > 0.0f && v3_max(f) > 0.0f && c > 0.0f &&
                 (vis = visible(ctx, offset_point(h.p, ng, wi), wi, INFINITY, shadow_mask)) > 0.0f) {
-                vec3 Ls = v3_scale(v3(rgb[0], rgb[1], rgb[2]), vis);
-                L = v3_add(L, v3_mul(beta, v3_scale(v3_mul(f, Ls), c / pdf_l * power_heuristic(pdf_l, pdf_b))));
+                /* a point-like sun is a delta: its pdf 1 stands for the irradiance, no MIS */
+                float w = j == 0 && l->summary.solid_angle <= 0.0f ? 1.0f : power_heuristic(p * pdf_l, pdf_b);
+                L = v3_add(L, v3_mul(beta, v3_scale(v3_mul(f, Le), c * vis * w / (p * pdf_l))));
             }
         }
         /* continue the path */
@@ -208,6 +239,7 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
         o = offset_point(h.p, ng, bs.wi);
         d = bs.wi;
         prev_pdf = bs.pdf;
+        prev_p[0] = p_light[0], prev_p[1] = p_light[1];
     }
     return L;
 }

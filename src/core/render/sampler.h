@@ -44,13 +44,13 @@ static inline uint32_t sampler_reverse_bits(uint32_t x)
     return ((x & 0xaaaaaaaau) >> 1) | ((x & 0x55555555u) << 1);
 }
 
-/* Owen scrambling of x read as a binary fraction (bit 31 first): bit 31 - j is flipped by a
- * function of the seed and of the bits before it. On the reversed bits every step keeps
- * "bit j depends on bits 0 .. j alone": adding, multiplying by an odd number, and xoring with
- * the product by an even number. */
-static inline uint32_t sampler_owen(uint32_t x, uint64_t seed)
+/* Owen scrambling of x read as a binary fraction (bit 31 first), on its bits reversed: bit j of
+ * r (bit 31 - j of x) is flipped by a function of the seed and of bits 0 .. j - 1 alone. Every
+ * step keeps that: adding, multiplying by an odd number, and xoring with the product by an even
+ * number. */
+static inline uint32_t sampler_owen_reversed(uint32_t r, uint64_t seed)
 {
-    uint32_t r = sampler_reverse_bits(x), lo = (uint32_t)seed, hi = (uint32_t)(seed >> 32);
+    uint32_t lo = (uint32_t)seed, hi = (uint32_t)(seed >> 32);
     r += lo;
     r ^= r * 0x6a5d39eau;
     r *= hi | 1u;
@@ -59,37 +59,54 @@ static inline uint32_t sampler_owen(uint32_t x, uint64_t seed)
     r ^= r * 0x3c8f71a6u;
     r *= 0x2c9277b5u ^ (lo & 0xfffffffeu);
     r ^= r * 0x8d2e6c58u;
-    return sampler_reverse_bits(r);
+    return r;
 }
 
-/* The second Sobol dimension (primitive polynomial x + 1): generator columns v_0 = 2^31,
- * v_j = v_(j-1) xor v_(j-1) / 2, i.e. Pascal's triangle modulo 2. */
-static inline uint32_t sampler_sobol1(uint32_t i)
+/* Owen scrambling of x (bit 31 first). */
+static inline uint32_t sampler_owen(uint32_t x, uint64_t seed)
 {
-    uint32_t x = 0;
-    for (uint32_t v = 0x80000000u; i; i >>= 1, v ^= v >> 1)
-        if (i & 1u) x ^= v;
-    return x;
+    return sampler_reverse_bits(sampler_owen_reversed(sampler_reverse_bits(x), seed));
+}
+
+/* The second Sobol dimension (primitive polynomial x + 1), its bits reversed: its generator
+ * matrix is Pascal's triangle modulo 2, so by Lucas's theorem bit r of the reversed value is
+ * the parity of the index's bits j with j & r == r, a sum over supersets that five shift-and-xor
+ * steps compute. */
+static inline uint32_t sampler_sobol1_reversed(uint32_t i)
+{
+    i ^= (i >> 1) & 0x55555555u;
+    i ^= (i >> 2) & 0x33333333u;
+    i ^= (i >> 4) & 0x0f0f0f0fu;
+    i ^= (i >> 8) & 0x00ff00ffu;
+    return i ^ ((i >> 16) & 0x0000ffffu);
 }
 
 static inline float sampler_float(uint32_t x) { return (float)(x >> 8) * (1.0f / 16777216.0f); }
 
-/* The value of dimension d, in [0, 1). */
-static inline float sampler_1d(const sampler *s, uint32_t d)
+/* The key of dimension d's index shuffle; its values' keys follow by mixing it again. */
+static inline uint64_t sampler_key(const sampler *s, uint32_t d, uint32_t pair)
 {
-    uint64_t k = rng_combine(s->key, (uint64_t)d << 2);
-    uint32_t i = sampler_owen(s->index, k);
-    return sampler_float(sampler_owen(sampler_reverse_bits(i), rng_mix64(k)));
+    return rng_mix64(s->key ^ ((uint64_t)(2 * d + pair) * 0x9e3779b97f4a7c15ull));
 }
 
-/* The values of dimensions d and d + 1, a 2-D point in [0, 1)^2. */
+/* The value of dimension d, in [0, 1): the first Sobol dimension of the shuffled index is the
+ * index's bits reversed, so its scrambling needs no reversal of its own. */
+static inline float sampler_1d(const sampler *s, uint32_t d)
+{
+    uint64_t k = sampler_key(s, d, 0);
+    uint32_t i = sampler_owen(s->index, k);
+    return sampler_float(sampler_reverse_bits(sampler_owen_reversed(i, rng_mix64(k))));
+}
+
+/* The values of dimensions d and d + 1, a 2-D point in [0, 1)^2 (both Sobol dimensions are
+ * scrambled in their reversed form). */
 static inline void sampler_2d(const sampler *s, uint32_t d, float *u, float *v)
 {
-    uint64_t k = rng_combine(s->key, (uint64_t)d << 2 | 1u);
+    uint64_t k = sampler_key(s, d, 1);
     uint32_t i = sampler_owen(s->index, k);
     uint64_t kx = rng_mix64(k), ky = rng_mix64(kx);
-    *u = sampler_float(sampler_owen(sampler_reverse_bits(i), kx));
-    *v = sampler_float(sampler_owen(sampler_sobol1(i), ky));
+    *u = sampler_float(sampler_reverse_bits(sampler_owen_reversed(i, kx)));
+    *v = sampler_float(sampler_reverse_bits(sampler_owen_reversed(sampler_sobol1_reversed(i), ky)));
 }
 
 #endif

@@ -99,6 +99,7 @@ measure() {
     rm -rf "$tmp"
 }
 
+measure "$root/bench/sunlit_ground.yaml" "sunlit ground" 64x64 16 4 8 16 32
 measure "$root/tests/scenes/image/sphere_on_plane.yaml" "sphere on plane" 96x64 16 4 8 16 32
 measure "$root/scenes/default.yaml" "default forest" 160x90 8 2 4 8 16
 

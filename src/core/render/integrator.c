@@ -386,26 +386,50 @@ vec3 integrate_sample(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t s,
     return camera_sample(ctx, x, y, s, &hit, proxy);
 }
 
+/* Adaptive sampling: a pixel may stop at ADAPTIVE_FIRST samples or any power of two after it
+ * (where the sampler's strata are complete), once the standard error of its mean luminance,
+ * estimated from the samples' variance, is at most target times the mean. The variance of
+ * stratified samples overstates the error of their mean, so the test errs toward more samples.
+ * The variance is taken as at least mean^2 / n: n samples that happen to agree (a pixel whose
+ * rarer paths, a bounce that meets an object, none has taken yet) have not shown that an event
+ * of probability 1 / n is absent, so no pixel stops before 1 / target samples. It depends on the
+ * pixel's own samples alone: deterministic for any thread count. */
+#define ADAPTIVE_FIRST 16u
+
+static int adaptive_done(double lum, double lum2, uint32_t n, float target)
+{
+    double mean = lum / n, var = fmax((lum2 - lum * mean) / (n - 1), mean * mean / n);
+    return var / n <= (double)target * target * mean * mean;
+}
+
 void integrate_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_result *out)
 {
     if (ctx->verify) {
         uint32_t grid = 1; /* spp rounded down to a square */
         while ((grid + 1) * (grid + 1) <= ctx->spp) grid++;
         verify_pixel(ctx, x, y, grid, out);
+        out->samples = grid > 1 ? grid * grid + 1 : 1;
         aux_layers(ctx, x, y, out);
         return;
     }
     vec3 sum = v3(0, 0, 0), dev_sum = v3(0, 0, 0);
-    uint32_t n = ctx->spp, hits = 0, dev_hits = 0;
-    for (uint32_t s = 0; s < n; s++) {
+    uint32_t n = 0, hits = 0, dev_hits = 0;
+    double lum = 0.0, lum2 = 0.0; /* the samples' luminance and its square, summed */
+    while (n < ctx->spp) {
         int hit = 0;
-        vec3 L = camera_sample(ctx, x, y, s, &hit, NULL);
+        vec3 L = camera_sample(ctx, x, y, n++, &hit, NULL);
         sum = v3_add(sum, L);
         hits += hit != 0;
         dev_hits += hit == 2;
         if (hit == 2) dev_sum = v3_add(dev_sum, L);
+        double l = v3_luminance(L);
+        lum += l, lum2 += l * l;
+        if (ctx->noise_target > 0.0f && n >= ADAPTIVE_FIRST && (n & (n - 1)) == 0 &&
+            adaptive_done(lum, lum2, n, ctx->noise_target))
+            break;
     }
     out->rgb = v3_scale(sum, 1.0f / (float)n);
+    out->samples = n;
     out->coverage = (float)hits / (float)n;
     out->development = (float)dev_hits / (float)n;
     out->development_rgb = v3_scale(dev_sum, 1.0f / (float)n);

@@ -54,6 +54,7 @@ typedef struct render_ctx {
     camera camera;
     curved_rays curved;  /* camera rays over the curved Earth, or straight (curved.on 0) */
     uint32_t spp, max_depth;
+    float noise_target;   /* adaptive sampling (integrate_pixel); 0: every pixel takes spp */
     uint64_t seed;
     int verify;
     unsigned ray_mask;  /* the geometry rays meet (ACCEL_MASK_* bits); ~0u: all */
@@ -68,6 +69,7 @@ typedef struct pixel_result {
     vec3 albedo;
     uint32_t instance_id, species_id, object_id;
     uint8_t pixel_class;  /* a pixel_class (render/film.h) */
+    uint32_t samples;     /* camera samples taken */
     float coverage;
     float development;
     vec3 development_rgb;

@@ -45,8 +45,8 @@ int main(int argc, char **argv)
             patch_figures pf;
             if (patch_measure(rs, &ro, seeds, &b, &pf, &err)) goto fail;
             printf("spp %4u depth %u: patch %ux%u at (%u,%u) mean %.5f noise %.4f (plants %.4f, "
-                   "ground %.4f) (%.2f s)\n", ro.spp, d, b.x1 - b.x0, b.y1 - b.y0, b.x0, b.y0, pf.mean, pf.noise,
-                   pf.noise_plant, pf.noise_ground, pf.seconds);
+                   "ground %.4f) (%.2f s, %.2f s CPU)\n", ro.spp, d, b.x1 - b.x0, b.y1 - b.y0, b.x0, b.y0, pf.mean, pf.noise,
+                   pf.noise_plant, pf.noise_ground, pf.seconds, pf.cpu_seconds);
             fflush(stdout);
         }
     }

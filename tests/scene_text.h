@@ -39,17 +39,20 @@ static inline scene *scene_text_build_ok(const char *text)
     return s;
 }
 
-/* Renders s at its own settings on two threads; the test fails (and the message is printed)
- * when it cannot. The caller frees the film with film_free. */
-static inline film *scene_text_render(const scene *s)
+/* Renders s at its own settings on `threads` threads; the test fails (and the message is
+ * printed) when it cannot. The caller frees the film with film_free. */
+static inline film *scene_text_render_on(const scene *s, unsigned threads)
 {
-    render_options ro = {.threads = 2, .quiet = 1};
+    render_options ro = {.threads = threads, .quiet = 1};
     err_buf err = {{0}};
     film *f = render_scene(s, &ro, NULL, &err);
     if (!f) fprintf(stderr, "%s\n", err.msg);
     CHECK(f != NULL);
     return f;
 }
+
+/* As scene_text_render_on, on two threads. */
+static inline film *scene_text_render(const scene *s) { return scene_text_render_on(s, 2); }
 
 /* The world bounds of object o's vertices. */
 static inline void scene_text_object_bounds(const scene *s, uint32_t o, double lo[3], double hi[3])

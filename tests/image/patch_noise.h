@@ -23,14 +23,18 @@ typedef struct patch_figures {
     double noise_plant, noise_ground; /* the same over the patch's pixels whose centre ray meets a
                                        * plant (in the first render), and over the others */
     double seconds; /* render time of all the renders */
+    double cpu_seconds; /* the process's processor time over the renders (all threads): the
+                         * figure to compare on a machine that other work shares */
 } patch_figures;
 
-static inline double patch_seconds(void)
+static inline double patch_clock(clockid_t clock)
 {
     struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
+    clock_gettime(clock, &ts);
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
+
+static inline double patch_seconds(void) { return patch_clock(CLOCK_MONOTONIC); }
 
 static inline double patch_luminance(const float *rgb) { return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]; }
 
@@ -54,7 +58,7 @@ static inline int patch_find(const film *f, patch_box *b)
 static inline int patch_measure(render_setup *rs, const render_options *opt, uint32_t n_seeds, patch_box *b,
                                 patch_figures *out, err_buf *err)
 {
-    double *sum = NULL, *sum2 = NULL, t0 = patch_seconds();
+    double *sum = NULL, *sum2 = NULL, t0 = patch_seconds(), c0 = patch_clock(CLOCK_PROCESS_CPUTIME_ID);
     uint8_t *plant = NULL;
     size_t n = 0;
     uint32_t w = 0;
@@ -95,6 +99,7 @@ static inline int patch_measure(render_setup *rs, const render_options *opt, uin
     out->noise_plant = m_p > 0 ? sqrt(fmax(var_p / m_p, 0)) / out->mean : 0;
     out->noise_ground = m > m_p ? sqrt(fmax((var - var_p) / (m - m_p), 0)) / out->mean : 0;
     out->seconds = patch_seconds() - t0;
+    out->cpu_seconds = patch_clock(CLOCK_PROCESS_CPUTIME_ID) - c0;
     rc = 0;
 done:
     free(sum);

@@ -1,4 +1,4 @@
-/* test_render_math.c — transforms, the sampler, the camera, BSDFs, sun sampling and meshes. */
+/* test_render_math.c — transforms, the camera, BSDFs, sun sampling and meshes. */
 #include "harness.h"
 
 #include "render/bsdf.h"
@@ -6,7 +6,6 @@
 #include "render/film.h"
 #include "render/leaf_coat.h"
 #include "render/lights.h"
-#include "render/sampler.h"
 #include "scene/mesh.h"
 #include "scene/shapes.h"
 #include "util/vec3.h"
@@ -50,30 +49,6 @@ TEST(trs_composition)
     vec3 q = xf_point(&ab, v3(1, 0, 0));
     CHECK_NEAR(q.z, 5.0, 1e-6);
     CHECK_NEAR(q.y, 2.0, 1e-6);
-}
-
-TEST(sampler_keyed_and_uniform)
-{
-    sampler a, b;
-    sampler_start(&a, 1, 100, 3);
-    sampler_start(&b, 1, 100, 3);
-    for (int d = 0; d < 64; d++) CHECK(sampler_at(&a, d) == sampler_at(&b, d));
-    sampler_start(&b, 1, 101, 3);
-    int same = 0;
-    for (int d = 0; d < 64; d++) same += sampler_at(&a, d) == sampler_at(&b, d);
-    CHECK(same < 2);
-    /* mean and variance of one dimension over many pixels */
-    double sum = 0, sq = 0;
-    int n = 200000;
-    for (int i = 0; i < n; i++) {
-        sampler s;
-        sampler_start(&s, 9, (uint64_t)i, 0);
-        float u = sampler_at(&s, 5);
-        CHECK(u >= 0.0f && u < 1.0f);
-        sum += u, sq += u * u;
-    }
-    CHECK_NEAR(sum / n, 0.5, 0.005);
-    CHECK_NEAR(sq / n - (sum / n) * (sum / n), 1.0 / 12.0, 0.002);
 }
 
 TEST(camera_frame)
@@ -282,7 +257,7 @@ TEST(film_refuses_what_cannot_be_rendered)
 }
 
 TEST_LIST(TEST_CASE(normal_transform_rotation), TEST_CASE(normal_transform_nonuniform_scale),
-          TEST_CASE(trs_composition), TEST_CASE(sampler_keyed_and_uniform), TEST_CASE(camera_frame),
+          TEST_CASE(trs_composition), TEST_CASE(camera_frame),
           TEST_CASE(lambert_sampling_matches_eval), TEST_CASE(leaf_transmits_to_the_other_side), TEST_CASE(leaf_white_furnace),
           TEST_CASE(sun_cone_sampling), TEST_CASE(shapes_closed_and_outward), TEST_CASE(mesh_append_checks),
           TEST_CASE(camera_frame_extreme_offsets), TEST_CASE(film_refuses_what_cannot_be_rendered))

@@ -3,8 +3,11 @@
  * Path tracing: unidirectional paths from the camera (through the thin lens and weighted by the
  * vignette when the camera has them, render/lens.h; the verification mode and the auxiliary
  * layers use the pinhole); at each vertex next-event estimation of
- * the sun and of the sky, each combined with BSDF sampling by multiple importance sampling
- * (power heuristic); Russian roulette from the fourth vertex on; at most max_depth vertices.
+ * the sun and of the sky's part above its base (both at the first vertex, one chosen by their
+ * expected contributions at later ones), each combined with BSDF sampling by multiple
+ * importance sampling (power heuristic), the sky's base reached by BSDF sampling alone;
+ * Russian roulette from the fourth vertex on; at most max_depth vertices. Sample values come
+ * from render/sampler.h (Owen-scrambled Sobol, keyed by seed, pixel, sample and dimension).
  *
  * Verification mode: what POV-Ray computes from the same scene — at the first hit,
  * albedo * (ambient + sun irradiance * max(0, n.l) * visibility), with the normal turned toward
@@ -51,6 +54,7 @@ typedef struct render_ctx {
     camera camera;
     curved_rays curved;  /* camera rays over the curved Earth, or straight (curved.on 0) */
     uint32_t spp, max_depth;
+    float noise_target;   /* adaptive sampling (integrate_pixel); 0: every pixel takes spp */
     uint64_t seed;
     int verify;
     unsigned ray_mask;  /* the geometry rays meet (ACCEL_MASK_* bits); ~0u: all */
@@ -65,6 +69,7 @@ typedef struct pixel_result {
     vec3 albedo;
     uint32_t instance_id, species_id, object_id;
     uint8_t pixel_class;  /* a pixel_class (render/film.h) */
+    uint32_t samples;     /* camera samples taken */
     float coverage;
     float development;
     vec3 development_rgb;

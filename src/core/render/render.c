@@ -19,6 +19,7 @@ typedef struct render_job {
     film *film;
     uint32_t tiles_x, tiles_y;
     atomic_uint next_tile;
+    atomic_uint_fast64_t samples; /* camera samples taken (fewer than spp per pixel when adaptive) */
     progress *prog;
 } render_job;
 
@@ -32,6 +33,7 @@ static void render_tile(render_job *job, uint32_t tile)
 {
     film *f = job->film;
     uint32_t tx = tile % job->tiles_x, ty = tile / job->tiles_x;
+    uint64_t samples = 0;
     for (uint32_t y = ty * TILE; y < (ty + 1) * TILE && y < f->height; y++)
         for (uint32_t x = tx * TILE; x < (tx + 1) * TILE && x < f->width; x++) {
             pixel_result r;
@@ -49,7 +51,9 @@ static void render_tile(render_job *job, uint32_t tile)
             f->development_rgb[k * 3 + 2] = r.development_rgb.z;
             f->pixel_class[k] = r.pixel_class;
             f->coverage[k] = r.coverage;
+            samples += r.samples;
         }
+    atomic_fetch_add(&job->samples, samples);
 }
 
 static void *render_worker(void *arg)
@@ -84,6 +88,7 @@ static void ctx_init(render_ctx *ctx, render_setup *rs, const render_options *o,
     unsigned leave_out = o->leave_out;
     if (leave_out & ACCEL_MASK_PLANT) leave_out |= ACCEL_MASK_FAR_PLANT | ACCEL_MASK_PROXY;
     *ctx = (render_ctx){.accel = &rs->acc, .lights = &rs->lt, .spp = o->spp ? o->spp : s->image.spp,
+                        .noise_target = (float)s->image.noise_target,
                         .max_depth = s->image.max_depth, .seed = o->seed_set ? o->seed : s->image.seed,
                         .verify = o->verify, .recorder = o->recorder, .ray_mask = ~leave_out & ~ACCEL_MASK_PROXY};
     /* crown proxies stand in for their plants before camera rays alone, never in verification */
@@ -159,6 +164,7 @@ film *render_setup_run(render_setup *rs, const render_options *opt, render_stats
     ctx_init(&ctx, rs, &o, w, h);
     render_job job = {.ctx = &ctx, .film = f, .tiles_x = (w + TILE - 1) / TILE, .tiles_y = (h + TILE - 1) / TILE};
     atomic_init(&job.next_tile, 0);
+    atomic_init(&job.samples, 0);
     progress prog;
     progress_begin(&prog, o.verify ? "render (verify)" : "render", (uint64_t)job.tiles_x * job.tiles_y, o.quiet);
     job.prog = &prog;
@@ -176,7 +182,7 @@ film *render_setup_run(render_setup *rs, const render_options *opt, render_stats
         stats->build_seconds = rs->build_seconds;
         stats->bvh_seconds = rs->bvh_seconds;
         stats->render_seconds = t2 - t1;
-        stats->samples = (uint64_t)w * h * ctx.spp;
+        stats->samples = atomic_load(&job.samples);
     }
     if (accel_device_error(&rs->acc, err)) {
         film_free(f);

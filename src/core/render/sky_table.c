@@ -1,6 +1,7 @@
 /* sky_table.c — a sky tabulated on a lat-long grid for importance sampling: the cells'
- * radiance, a piecewise-constant distribution proportional to luminance times sin(theta) with a
- * small floor, and sampling and pdf lookups that agree with each other.
+ * radiance split into a base (each row's per-channel minimum) and what varies above it, a
+ * piecewise-constant distribution proportional to the varying part's luminance times
+ * sin(theta) with a small floor, and sampling and pdf lookups that agree with each other.
  * See docs/models/sky.md for the sampling scheme.
  */
 #include "render/sky_table.h"
@@ -25,6 +26,7 @@ void sky_table_free(sky_table *t)
     free(t->cdf_rows);
     free(t->cdf_cols);
     free(t->pdf);
+    free(t->base);
     memset(t, 0, sizeof *t);
 }
 
@@ -54,38 +56,59 @@ int sky_table_build(sky_table *t, uint32_t nt, uint32_t np,
     t->cdf_rows = malloc(((size_t)nt + 1) * sizeof *t->cdf_rows);
     t->cdf_cols = malloc((size_t)nt * ((size_t)np + 1) * sizeof *t->cdf_cols);
     t->pdf = malloc(cells * sizeof *t->pdf);
-    if (!weight || !row_sum || !t->rgb || !t->cdf_rows || !t->cdf_cols || !t->pdf) goto done;
+    t->base = malloc((size_t)nt * 3 * sizeof *t->base);
+    if (!weight || !row_sum || !t->rgb || !t->cdf_rows || !t->cdf_cols || !t->pdf || !t->base) goto done;
 
     double dtheta = M_PI / nt, dphi = 2.0 * M_PI / np;
-    double lum_area = 0.0;
     for (uint32_t i = 0; i < nt; i++) {
         double theta = (i + 0.5) * dtheta;
-        double solid = (cos(i * dtheta) - cos((i + 1) * dtheta)) * dphi;
+        float *base = t->base + 3 * (size_t)i;
+        base[0] = base[1] = base[2] = INFINITY;
         for (uint32_t j = 0; j < np; j++) {
             double phi = (j + 0.5) * dphi;
             double dir[3] = {sin(theta) * cos(phi), sin(theta) * sin(phi), cos(theta)};
             double c[3] = {0.0, 0.0, 0.0};
             radiance(dir, c, user);
             float *cell = t->rgb + 3 * ((size_t)i * np + j);
-            for (int k = 0; k < 3; k++) cell[k] = (float)c[k];
-            double lum = cell_importance(cell);
-            weight[(size_t)i * np + j] = lum;
-            lum_area += lum * solid;
+            for (int k = 0; k < 3; k++) {
+                cell[k] = (float)c[k];
+                base[k] = fminf(base[k], isfinite(cell[k]) && cell[k] > 0.0f ? cell[k] : 0.0f);
+            }
         }
     }
+    /* The varying part's luminance, its solid-angle integral and its irradiance on surfaces
+     * facing up and down. */
+    double lum_area = 0.0, up = 0.0, down = 0.0;
+    for (uint32_t i = 0; i < nt; i++) {
+        double solid = (cos(i * dtheta) - cos((i + 1) * dtheta)) * dphi, mu = cos((i + 0.5) * dtheta);
+        const float *base = t->base + 3 * (size_t)i;
+        for (uint32_t j = 0; j < np; j++) {
+            const float *cell = t->rgb + 3 * ((size_t)i * np + j);
+            float above[3] = {cell[0] - base[0], cell[1] - base[1], cell[2] - base[2]};
+            double lum = cell_importance(above);
+            weight[(size_t)i * np + j] = lum;
+            lum_area += lum * solid;
+            if (mu > 0.0)
+                up += lum * solid * mu;
+            else
+                down -= lum * solid * mu;
+        }
+    }
+    t->irradiance_up = (float)up, t->irradiance_down = (float)down;
     double floor_lum = SKY_TABLE_FLOOR * lum_area / (4.0 * M_PI);
 
     /* Weight of a cell: (luminance + floor) times its solid angle, i.e. luminance times
-     * sin(theta) integrated over the cell; 0 where the cell has no positive component. */
+     * sin(theta) integrated over the cell; 0 where nothing of the cell lies above the base. */
     double total = 0.0;
     for (uint32_t i = 0; i < nt; i++) {
         double solid = (cos(i * dtheta) - cos((i + 1) * dtheta)) * dphi;
         double sum = 0.0;
+        const float *base = t->base + 3 * (size_t)i;
         for (uint32_t j = 0; j < np; j++) {
             size_t idx = (size_t)i * np + j;
             const float *cell = t->rgb + 3 * idx;
-            int lit = (isfinite(cell[0]) && cell[0] > 0.0f) || (isfinite(cell[1]) && cell[1] > 0.0f) ||
-                      (isfinite(cell[2]) && cell[2] > 0.0f);
+            int lit = (isfinite(cell[0]) && cell[0] > base[0]) || (isfinite(cell[1]) && cell[1] > base[1]) ||
+                      (isfinite(cell[2]) && cell[2] > base[2]);
             weight[idx] = lit ? (weight[idx] + floor_lum) * solid : 0.0;
             sum += weight[idx];
         }
@@ -94,8 +117,8 @@ int sky_table_build(sky_table *t, uint32_t nt, uint32_t np,
     }
 
     /* CDFs in float with exact 0 and 1 ends; a row of zero weight gets a uniform conditional
-     * CDF (never used: its row probability is 0). A sky without radiance leaves every CDF
-     * entry at 0, which sampling reports as pdf 0. */
+     * CDF (never used: its row probability is 0). A sky without variation (a constant or no
+     * radiance) leaves every CDF entry at 0, which sampling reports as pdf 0. */
     double acc = 0.0;
     t->cdf_rows[0] = 0.0f;
     for (uint32_t i = 0; i < nt; i++) {
@@ -176,24 +199,35 @@ float sky_table_sample(const sky_table *t, float u1, float u2, float dir[3], flo
     dir[2] = (float)cos_theta;
 
     size_t idx = (size_t)i * t->np + j;
-    memcpy(rgb, t->rgb + 3 * idx, 3 * sizeof(float));
+    for (int k = 0; k < 3; k++) rgb[k] = t->rgb[3 * idx + k] - t->base[3 * i + k];
     return t->pdf[idx];
 }
 
-float sky_table_pdf(const sky_table *t, const float dir[3], float rgb[3])
+/* The cell of direction dir (any length). */
+static void cell_of(const sky_table *t, const float dir[3], uint32_t *i, uint32_t *j)
 {
-    if (t->nt == 0 || t->np == 0) {
-        rgb[0] = rgb[1] = rgb[2] = 0.0f;
-        return 0.0f;
-    }
     double x = dir[0], y = dir[1], z = dir[2];
     double theta = atan2(sqrt(x * x + y * y), z);
     double phi = atan2(y, x);
     if (phi < 0.0) phi += 2.0 * M_PI;
     double fi = theta / M_PI * t->nt, fj = phi / (2.0 * M_PI) * t->np;
-    uint32_t i = fi > 0.0 ? (fi < t->nt - 1 ? (uint32_t)fi : t->nt - 1) : 0;
-    uint32_t j = fj > 0.0 ? (fj < t->np - 1 ? (uint32_t)fj : t->np - 1) : 0;
+    *i = fi > 0.0 ? (fi < t->nt - 1 ? (uint32_t)fi : t->nt - 1) : 0;
+    *j = fj > 0.0 ? (fj < t->np - 1 ? (uint32_t)fj : t->np - 1) : 0;
+}
+
+float sky_table_pdf(const sky_table *t, const float dir[3], float above[3], float base[3])
+{
+    if (t->nt == 0 || t->np == 0) {
+        above[0] = above[1] = above[2] = 0.0f;
+        if (base) base[0] = base[1] = base[2] = 0.0f;
+        return 0.0f;
+    }
+    uint32_t i, j;
+    cell_of(t, dir, &i, &j);
     size_t idx = (size_t)i * t->np + j;
-    memcpy(rgb, t->rgb + 3 * idx, 3 * sizeof(float));
+    for (int k = 0; k < 3; k++) {
+        above[k] = t->rgb[3 * idx + k] - t->base[3 * i + k];
+        if (base) base[k] = t->base[3 * i + k];
+    }
     return t->pdf[idx];
 }

@@ -56,7 +56,8 @@ static const sylva_param_spec image_params[] = {
      .min = 1,
      .max = 1048576,
      .unit = "samples",
-     .help = "Samples per pixel; noise falls as one over its square root."},
+     .help = "Samples per pixel (the most, with noise_target); stratified, so noise falls as one over "
+             "its square root or faster."},
     {.name = "seed",
      .type = SYLVA_P_INT,
      .flags = MIN | MAX,
@@ -97,6 +98,15 @@ static const sylva_param_spec image_params[] = {
      .unit = "px",
      .help = "Plants drawn smaller than this height in pixels show camera rays a calibrated crown envelope "
              "instead of their leaves (a smooth distant forest); 0: always the full plants."},
+    {.name = "noise_target",
+     .type = SYLVA_P_REAL,
+     .flags = MIN | MAX,
+     .def = 0,
+     .min = 0,
+     .max = 1,
+     .help = "Adaptive sampling: a pixel stops taking samples, at 16, 32, 64, ... up to spp, once the "
+             "standard error of its luminance is at most this share of its mean; 0: every pixel "
+             "takes spp samples."},
 };
 const host_schema host_schema_image = {"image", "Output size, sampling and the scene seed.",
                                        image_params, COUNT(image_params)};

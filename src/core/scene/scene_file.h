@@ -26,7 +26,8 @@ typedef enum tone_curve { TONE_AGX = 0, TONE_ACES = 1 } tone_curve;
 
 typedef struct image_settings {
     uint32_t width, height; /* pixels */
-    uint32_t spp;           /* samples per pixel */
+    uint32_t spp;           /* samples per pixel (the most, with noise_target) */
+    double noise_target;    /* relative standard error at which a pixel stops sampling; 0: off */
     uint64_t seed;
     uint32_t max_depth;     /* path vertices after the camera */
     double exposure;        /* stops applied before tone mapping (PNG only), when exposure_set */

@@ -51,6 +51,7 @@ int sf_read_image(loader *L)
     im->width = (uint32_t)sylva_param_int(p, "width");
     im->height = (uint32_t)sylva_param_int(p, "height");
     im->spp = (uint32_t)sylva_param_int(p, "spp");
+    im->noise_target = sylva_param_real(p, "noise_target");
     im->seed = (uint64_t)sylva_param_int(p, "seed");
     im->max_depth = (uint32_t)sylva_param_int(p, "max_depth");
     im->exposure = sylva_param_real(p, "exposure");

@@ -10,10 +10,11 @@
 /* Camera samples per species region for the calibration: the mean of a region's radiance then
  * carries a relative error of about 0.6 / sqrt(this) (a sample's spread is some 60 % of the
  * mean over a distant forest, less with stratified samples), 0.4 %; but all regions together
- * take at most PROBE_SHARE of the render's own samples (each is traced three times). */
+ * take at most PROBE_SHARE of the render's own samples (each is traced three times): on a small
+ * image that bound decides, and a tenth left a 96 x 64, 16 spp forest 1 % off. */
 #define PROBE_SAMPLES 20000.0
 #define PROBE_MAX_SPP 64u
-#define PROBE_SHARE 0.1
+#define PROBE_SHARE 0.4
 
 typedef struct probe_job {
     const render_ctx *ctx;       /* the proxies' view */

@@ -1,13 +1,15 @@
 /* cmd_ztv.c — `sylva ztv SCENE -o DIR`: the zone of theoretical visibility of the scene's
  * development (docs/ztv.md): for every cell of a map over the terrain, how many of the
  * development's targets an observer standing there sees, on bare earth and screened by the
- * forest and the buildings, written as GeoTIFFs, PNG maps and a summary. */
+ * forest and the buildings, written as GeoTIFFs, PNG maps and a summary. Under mpirun each rank
+ * traces every N-th row of the map and rank 0 writes the files (cli/cli_mpi.h). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli/cli_args.h"
+#include "cli/cli_mpi.h"
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
@@ -41,13 +43,18 @@ static void ztv_usage(FILE *out)
             "  --flat-earth            straight sightlines, whatever the earth: section says\n"
             "  --season S              the plants on season S (spring, summer, autumn, winter)\n"
             "                          or date YYYY-MM-DD, instead of the scene's season: key\n"
-            "  --threads N             worker threads (default: one per core); the maps do not\n"
+            "  --threads N             worker threads (default: one per core, shared out between\n"
+            "                          the ranks of an MPI job on one machine); the maps do not\n"
             "                          depend on it\n"
             "  -q, --quiet             no progress output\n"
             "  --allow-gdal-virtual    let the scene name GDAL virtual paths, URLs and connection\n"
             "                          strings (these may reach the network; refused otherwise)\n"
             "  -v, --verbose           plugin debug messages\n"
             "  -h, --help              this text\n\n"
+            "Under MPI (`mpirun -np N sylva ztv ...`, in a build with SYLVA_MPI), every rank builds\n"
+            "the scene itself and traces every N-th row of the map; rank 0 gathers the rows and\n"
+            "writes the files, byte for byte those of a single process. Only rank 0 prints. See\n"
+            "docs/mpi.md.\n\n"
             "exit status: 0 done, 1 usage, 2 bad scene, plugin failure or nothing to map, 3 output\n"
             "not written, 4 out of memory or internal error\n");
 }
@@ -67,12 +74,59 @@ static int parse_metres(const char *opt, const char *s, double lo, double hi, do
     return 0;
 }
 
+/* Where the blocks of rows go: straight to the output in one process; in an MPI job, into a
+ * copy of the block on every rank, in which rank 0 gathers the other ranks' rows before
+ * writing it. */
+typedef struct block_sink {
+    cli_mpi *m;
+    ztv_output *out; /* rank 0's; NULL on the other ranks */
+    uint32_t nx;     /* cells in a row */
+} block_sink;
+
+#define BLOCK_ARRAYS (1 + 4 * ZTV_MODES) /* the ground, and four layers per computed mode */
+
 static int sink_block(void *user, const ztv_block *b, err_buf *err)
 {
-    return ztv_output_block(user, b, err);
+    block_sink *s = user;
+    if (s->m->ranks < 2) return ztv_output_block(s->out, b, err);
+    const void *from[BLOCK_ARRAYS];
+    size_t cell_bytes[BLOCK_ARRAYS];
+    unsigned n = 0;
+    from[n] = b->ground, cell_bytes[n++] = sizeof *b->ground;
+    for (int md = 0; md < ZTV_MODES; md++) {
+        const ztv_layer *l = b->layer[md];
+        if (!l) continue;
+        from[n] = l->visible, cell_bytes[n++] = sizeof *l->visible;
+        from[n] = l->fraction, cell_bytes[n++] = sizeof *l->fraction;
+        from[n] = l->cls, cell_bytes[n++] = sizeof *l->cls;
+        from[n] = l->developments, cell_bytes[n++] = sizeof *l->developments;
+    }
+    size_t cells = (size_t)b->rows * s->nx, total = 0;
+    for (unsigned k = 0; k < n; k++) total += cells * cell_bytes[k];
+    uint8_t *copy = malloc(total); /* owned: the block's arrays one after another */
+    if (!copy) return err_nomem(err, "out of memory for a copy of %zu cells of the map", cells);
+    cli_rows rows[BLOCK_ARRAYS];
+    for (unsigned k = 0, at = 0; k < n; at += cells * cell_bytes[k], k++) {
+        memcpy(copy + at, from[k], cells * cell_bytes[k]);
+        rows[k] = (cli_rows){copy + at, s->nx * cell_bytes[k]};
+    }
+    int rc = cli_mpi_gather_rows(s->m, rows, n, b->j0, b->rows, 1, err);
+    if (!rc && !s->m->rank) {
+        ztv_layer layers[ZTV_MODES];
+        ztv_block whole = {.j0 = b->j0, .rows = b->rows, .ground = rows[0].data};
+        for (int md = 0, k = 1; md < ZTV_MODES; md++) {
+            if (!b->layer[md]) continue;
+            layers[md] = (ztv_layer){rows[k].data, rows[k + 1].data, rows[k + 2].data, rows[k + 3].data};
+            whole.layer[md] = &layers[md];
+            k += 4;
+        }
+        rc = ztv_output_block(s->out, &whole, err);
+    }
+    free(copy);
+    return rc;
 }
 
-int cmd_ztv(int argc, char **argv)
+static int ztv_run(cli_mpi *m, int argc, char **argv)
 {
     const char *scene_path = NULL, *dir = NULL, *season = NULL;
     double radius = NAN, cell = NAN, eye = NAN;
@@ -131,6 +185,8 @@ int cmd_ztv(int argc, char **argv)
         ztv_usage(stderr);
         return EXIT_USAGE;
     }
+    if (!threads) threads = m->threads;
+    if (m->rank) bo.quiet = 1;
 
     err_buf err = {{0}};
     cli_scene cs;
@@ -155,7 +211,7 @@ int cmd_ztv(int argc, char **argv)
 
     ztv_job job = {.scene = sc, .accel = &acc, .targets = &targets, .observer_height = eye, .radius = radius,
                    .screened = (ztv_mode)screening, .earth = flat ? NULL : &sc->earth, .threads = threads,
-                   .quiet = bo.quiet};
+                   .quiet = bo.quiet, .part = (uint32_t)m->rank, .parts = (uint32_t)m->ranks};
     if (ztv_targets_build(&targets, sf, sc, sf->image.seed, &err) ||
         ztv_grid_make(sc, &targets, cell, radius, &job.grid, &err)) {
         rc = cli_fail("ztv", &err, ERR_INPUT);
@@ -179,19 +235,29 @@ int cmd_ztv(int argc, char **argv)
     if (sf->site.crs_wkt) memcpy(info.origin, sf->site.origin, sizeof info.origin);
     info.computed[ZTV_BARE] = 1;
     info.computed[job.screened] = 1;
-    if (cli_make_folder(dir, &err) || !(out = ztv_output_open(dir, &info, &err))) {
+    /* rank 0 alone writes */
+    if (!m->rank && (cli_make_folder(dir, &err) || !(out = ztv_output_open(dir, &info, &err)))) {
         rc = cli_fail("ztv", &err, ERR_OUTPUT);
         goto done;
     }
     ztv_stats st;
-    if (ztv_trace(&job, sink_block, out, &st, &err) || ztv_output_finish(out, &err)) {
+    block_sink sink = {.m = m, .out = out, .nx = job.grid.nx};
+    if (ztv_trace(&job, sink_block, &sink, &st, &err)) rc = cli_fail("ztv", &err, ERR_OUTPUT);
+    if ((rc = cli_mpi_agree(m, rc))) goto done;
+    uint64_t total[3] = {st.cells, st.pairs, st.rays};
+    cli_mpi_sum(m, total, 3);
+    if (m->rank) goto done;
+    if (ztv_output_finish(out, &err)) {
         rc = cli_fail("ztv", &err, ERR_OUTPUT);
         goto done;
     }
-    if (!bo.quiet)
-        fprintf(stderr, "ztv: %llu cells x %u targets in %.2fs: %.3g sightlines/s, %.2f rays each\n",
-                (unsigned long long)st.cells, targets.n, st.seconds, st.pairs / fmax(st.seconds, 1e-9),
-                st.pairs ? (double)st.rays / st.pairs : 0.0);
+    if (!bo.quiet) {
+        char ranks[32] = "";
+        if (m->ranks > 1) snprintf(ranks, sizeof ranks, " on %d ranks", m->ranks);
+        fprintf(stderr, "ztv: %llu cells x %u targets in %.2fs%s: %.3g sightlines/s, %.2f rays each\n",
+                (unsigned long long)total[0], targets.n, st.seconds, ranks, total[1] / fmax(st.seconds, 1e-9),
+                total[1] ? (double)total[2] / total[1] : 0.0);
+    }
     printf("%s\n", dir);
 done:
     ztv_output_free(out);
@@ -199,4 +265,12 @@ done:
     ztv_targets_free(&targets);
     cli_scene_close(&cs);
     return rc;
+}
+
+int cmd_ztv(int argc, char **argv)
+{
+    cli_mpi m;
+    int rc = cli_mpi_begin(&m, "ztv", argc, argv);
+    if (!rc) rc = ztv_run(&m, argc, argv);
+    return cli_mpi_end(&m, rc);
 }

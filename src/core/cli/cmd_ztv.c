@@ -101,14 +101,15 @@ static int sink_block(void *user, const ztv_block *b, err_buf *err)
         from[n] = l->cls, cell_bytes[n++] = sizeof *l->cls;
         from[n] = l->developments, cell_bytes[n++] = sizeof *l->developments;
     }
-    size_t cells = (size_t)b->rows * s->nx, total = 0;
-    for (unsigned k = 0; k < n; k++) total += cells * cell_bytes[k];
-    uint8_t *copy = malloc(total); /* owned: the block's arrays one after another */
+    /* each array at a multiple of 8 bytes, aligned for its type */
+    size_t cells = (size_t)b->rows * s->nx, at[BLOCK_ARRAYS + 1] = {0};
+    for (unsigned k = 0; k < n; k++) at[k + 1] = at[k] + (cells * cell_bytes[k] + 7) / 8 * 8;
+    uint8_t *copy = malloc(at[n]); /* owned: the block's arrays one after another */
     if (!copy) return err_nomem(err, "out of memory for a copy of %zu cells of the map", cells);
     cli_rows rows[BLOCK_ARRAYS];
-    for (unsigned k = 0, at = 0; k < n; at += cells * cell_bytes[k], k++) {
-        memcpy(copy + at, from[k], cells * cell_bytes[k]);
-        rows[k] = (cli_rows){copy + at, s->nx * cell_bytes[k]};
+    for (unsigned k = 0; k < n; k++) {
+        memcpy(copy + at[k], from[k], cells * cell_bytes[k]);
+        rows[k] = (cli_rows){copy + at[k], s->nx * cell_bytes[k]};
     }
     int rc = cli_mpi_gather_rows(s->m, rows, n, b->j0, b->rows, 1, err);
     if (!rc && !s->m->rank) {

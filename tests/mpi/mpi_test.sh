@@ -9,7 +9,8 @@
 #   failures  a failure ends every rank with one message and the right exit status, never a
 #             hang: rank 0 cannot write (render, ztv), one rank alone is refused by its memory
 #             budget (render: its frame, while rank 0 waits to gather; ztv: the scene file,
-#             while rank 0 traces), the ranks were given different arguments
+#             while rank 0 traces), the ranks were given different arguments, or the same ones
+#             that name another scene file on one rank (render, ztv)
 set -uo pipefail
 case=$1 sylva=$2 scenes=$3
 command -v mpirun >/dev/null || { echo "no mpirun: skipped"; exit 77; }
@@ -98,6 +99,22 @@ failures)
     ranks 1 "$sylva" render "$scene" --size 40x30 --spp 2 -o "$out/args.png" : \
     -np 1 "$sylva" render "$scene" --size 40x31 --spp 2 -o "$out/args.png"
   [ -e "$out/args.png" ] && fail "ranks given different arguments: args.png was written"
+  # the same arguments, but rank 1's working folder holds another scene.yaml (a bigger ball)
+  mkdir -p "$out/a" "$out/b"
+  cp "$scene" "$out/a/scene.yaml"
+  sed 's/radius: 1,/radius: 1.2,/' "$scene" >"$out/b/scene.yaml"
+  for job in "render other.png" "ztv other_maps"; do
+    read -r cmd output <<<"$job"
+    expect "$cmd, rank 1 sees another scene" 2 "rank 1 of the 2 ranks built another scene than rank 0" \
+      ranks 1 -wdir "$out/a" "$sylva" $cmd scene.yaml -q -o "$out/$output" : \
+      -np 1 -wdir "$out/b" "$sylva" $cmd scene.yaml -q -o "$out/$output"
+    [ -e "$out/$output" ] && fail "$cmd, rank 1 sees another scene: $output was written"
+  done
+  # and with the same scene on both, the same job goes through
+  cp "$scene" "$out/b/scene.yaml"
+  ranks 1 -wdir "$out/a" "$sylva" render scene.yaml --size 40x30 --spp 2 -q -o "$out/same.png" : \
+    -np 1 -wdir "$out/b" "$sylva" render scene.yaml --size 40x30 --spp 2 -q -o "$out/same.png" >/dev/null 2>&1 ||
+    fail "render, the same scene in two folders: exit status $?"
   ;;
 *)
   echo "mpi_test.sh: unknown case '$case'" >&2

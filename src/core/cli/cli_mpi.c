@@ -66,6 +66,11 @@ void cli_mpi_sum(cli_mpi *m, uint64_t *v, unsigned n)
 {
 }
 
+int cli_mpi_same_scene(cli_mpi *m, const scene *s, err_buf *err)
+{
+    return 0;
+}
+
 #else
 
 /* FNV-1a over the arguments, each with its terminating NUL. */
@@ -261,6 +266,89 @@ int cli_mpi_gather_rows(cli_mpi *m, const cli_rows *arrays, unsigned n_arrays, u
     }
     free(buf);
     return 0;
+}
+
+/* FNV-1a, 8 bytes at a time (with the tail byte by byte), continuing from h. */
+static uint64_t digest_bytes(uint64_t h, const void *p, size_t n)
+{
+    const uint8_t *b = p;
+    size_t k = 0;
+    for (; k + 8 <= n; k += 8) {
+        uint64_t w;
+        memcpy(&w, b + k, 8);
+        h = (h ^ w) * 1099511628211ull;
+    }
+    for (; k < n; k++) h = (h ^ b[k]) * 1099511628211ull;
+    return h;
+}
+
+static uint64_t digest_mesh(uint64_t h, const mesh *me)
+{
+    if (!me) return digest_bytes(h, "", 1);
+    h = digest_bytes(h, &me->nv, sizeof me->nv);
+    h = digest_bytes(h, &me->nt, sizeof me->nt);
+    h = digest_bytes(h, me->pos, (size_t)me->nv * 3 * sizeof(float));
+    h = digest_bytes(h, me->nrm, (size_t)me->nv * 3 * sizeof(float));
+    h = digest_bytes(h, me->uv, (size_t)me->nv * 2 * sizeof(float));
+    h = digest_bytes(h, me->tri, (size_t)me->nt * 3 * sizeof(uint32_t));
+    return digest_bytes(h, me->mat, (size_t)me->nt * sizeof(int32_t));
+}
+
+/* A digest of what the pixels depend on, field by field (never a struct's padding or pointers). */
+static uint64_t scene_digest(const scene *s)
+{
+    uint64_t h = 1469598103934665603ull;
+    const camera_settings *c = &s->camera;
+    const double view[] = {c->position[0], c->position[1], c->position[2], c->direction[0], c->direction[1],
+                           c->direction[2], c->up[0], c->up[1], c->up[2], c->fov_deg, c->roll_deg};
+    h = digest_bytes(h, view, sizeof view);
+    for (uint32_t k = 0; k < s->n_materials; k++) {
+        const material *mt = &s->materials[k];
+        const float v[] = {mt->albedo.x, mt->albedo.y, mt->albedo.z, mt->transmittance.x, mt->transmittance.y,
+                           mt->transmittance.z};
+        const int32_t i[] = {(int32_t)mt->bsdf, mt->texture, mt->alpha_mask};
+        h = digest_bytes(digest_bytes(h, v, sizeof v), i, sizeof i);
+    }
+    for (uint32_t k = 0; k < s->n_prototypes; k++) h = digest_mesh(h, s->prototypes[k].mesh);
+    for (uint32_t k = 0; k < s->n_instances; k++) {
+        const instance *in = &s->instances[k];
+        const int32_t i[] = {(int32_t)in->prototype, in->development};
+        h = digest_bytes(digest_bytes(h, i, sizeof i), &in->xf, sizeof in->xf);
+    }
+    for (uint32_t k = 0; k < s->n_objects; k++) {
+        const object *o = &s->objects[k];
+        const int32_t i[] = {o->model, o->development};
+        h = digest_bytes(digest_mesh(digest_bytes(h, i, sizeof i), o->mesh), &o->xf, sizeof o->xf);
+    }
+    for (uint32_t k = 0; k < s->n_models; k++) h = digest_mesh(h, s->models[k].mesh);
+    const sylva_heightfield *t = s->terrain;
+    if (t) {
+        const double at[] = {t->x0, t->y0, t->dx, t->dy};
+        h = digest_bytes(digest_bytes(h, at, sizeof at), t->z, (size_t)t->nx * t->ny * sizeof(float));
+        for (uint32_t l = 0; l < t->n_levels; l++)
+            h = digest_bytes(h, t->levels[l].z, (size_t)t->levels[l].nx * t->levels[l].ny * sizeof(float));
+    }
+    return h;
+}
+
+int cli_mpi_same_scene(cli_mpi *m, const scene *s, err_buf *err)
+{
+    if (m->ranks < 2) return 0;
+    if (cli_mpi_agree(m, EXIT_OK)) {
+        err_set(err, "rank %d of the %d ranks failed; the job ends", m->failed_rank, m->ranks);
+        err->status = ERR_INTERNAL;
+        return -1;
+    }
+    uint64_t mine = scene_digest(s), rank0 = mine;
+    MPI_Bcast(&rank0, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+    int other = mine != rank0 ? m->rank : INT_MAX, first;
+    MPI_Allreduce(&other, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+    if (first == INT_MAX) return 0;
+    m->decided = 1, m->failed_rank = first, m->status = cli_exit_status(ERR_INPUT);
+    err_set(err, "rank %d of the %d ranks built another scene than rank 0 from the same arguments: every rank "
+            "must see the same scene file, data and plugins (docs/mpi.md)", first, m->ranks);
+    err->status = ERR_INPUT;
+    return -1;
 }
 
 void cli_mpi_sum(cli_mpi *m, uint64_t *v, unsigned n)

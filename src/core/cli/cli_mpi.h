@@ -21,6 +21,7 @@
 #include <stdio.h>
 
 #include "render/film.h"
+#include "scene/scene.h"
 #include "util/err.h"
 
 typedef struct cli_mpi {
@@ -81,6 +82,14 @@ int cli_mpi_gather_rows(cli_mpi *m, const cli_rows *arrays, unsigned n_arrays, u
 /* The same for every layer of a frame whose bands were rendered as render_band_part splits
  * them. */
 int cli_mpi_gather_film(cli_mpi *m, film *f, err_buf *err);
+
+/* Collective, for the ranks whose steps all went well so far (as cli_mpi_gather_rows): agrees
+ * that every rank is ready, then checks that every rank built the same scene s, from a digest of
+ * its camera, materials, meshes, placements and terrain (ranks on several machines that do not
+ * see the same files would otherwise make one picture of several scenes). Returns 0, or -1 with
+ * err set: another rank failed, or some rank built another scene than rank 0 (the job then ends
+ * with exit status 2). Outside a job, returns 0. */
+int cli_mpi_same_scene(cli_mpi *m, const scene *s, err_buf *err);
 
 /* Collective, right after an agreement that found no failure: v[i] becomes the sum over the
  * ranks. Outside a job, leaves v. */

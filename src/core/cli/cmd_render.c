@@ -142,6 +142,10 @@ static int render_run(cli_mpi *m, int argc, char **argv)
     int rc = cli_scene_open(&cs, "render", scene_path, viewpoint, season, &bo);
     if (!rc) rc = cli_scene_ground_cover(&cs, "render", ro.width, ro.height, ro.quiet);
     if (rc) goto done;
+    if (cli_mpi_same_scene(m, cs.scene, &err)) {
+        rc = cli_fail("render", &err, ERR_INPUT);
+        goto done;
+    }
     const scene *sc = cs.scene;
     if (!ro.quiet)
         fprintf(stderr, "scene: %u species, %u prototypes, %u instances, %u objects (%u shared models)%s (built in "

@@ -196,6 +196,10 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
     ztv_output *out = NULL;
     int rc = cli_scene_open(&cs, "ztv", scene_path, NULL, season, &bo);
     if (rc) goto done;
+    if (cli_mpi_same_scene(m, cs.scene, &err)) {
+        rc = cli_fail("ztv", &err, ERR_INPUT);
+        goto done;
+    }
     const scene_file *sf = cs.sf;
     const scene *sc = cs.scene;
     const ztv_settings *z = &sf->ztv;

@@ -79,8 +79,8 @@ static inline int cli_mpi_row_rank(const cli_mpi *m, uint32_t y, uint32_t band)
 int cli_mpi_gather_rows(cli_mpi *m, const cli_rows *arrays, unsigned n_arrays, uint32_t first_row, uint32_t rows,
                         uint32_t band, err_buf *err);
 
-/* The same for every layer of a frame whose bands were rendered as render_band_part splits
- * them. */
+/* The same for every layer of a frame whose bands of RENDER_BAND_ROWS rows the ranks rendered
+ * as render_options' part and parts split them (part: the rank, parts: the ranks). */
 int cli_mpi_gather_film(cli_mpi *m, film *f, err_buf *err);
 
 /* Collective, for the ranks whose steps all went well so far (as cli_mpi_gather_rows): agrees

@@ -24,17 +24,11 @@ typedef struct render_options {
                          * it were not in the scene; 0: none. ACCEL_MASK_DEVELOPMENT renders the
                          * scene without its development, with the same samples as the whole */
     uint32_t part, parts; /* parts > 1: render only the bands of RENDER_BAND_ROWS rows whose
-                           * index modulo parts is part (render_band_part); the other pixels
-                           * are left zero. 0 or 1: every pixel */
+                           * index modulo parts is part (band k holds rows [16 k, 16 k + 16));
+                           * the other pixels are left zero. 0 or 1: every pixel */
 } render_options;
 
 #define RENDER_BAND_ROWS 16u /* rows of one band of a part: one row of tiles */
-
-/* The part (of parts) that renders row y. */
-static inline uint32_t render_band_part(uint32_t y, uint32_t parts)
-{
-    return parts > 1 ? y / RENDER_BAND_ROWS % parts : 0;
-}
 
 typedef struct render_stats {
     double build_seconds;   /* BVH build */

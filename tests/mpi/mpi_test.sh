@@ -4,8 +4,8 @@
 #   render    scenes rendered by 2 and 4 ranks (and 3 and 1 on a frame of fewer bands than
 #             ranks) give the PNG and the EXR of a plain run, byte for byte; the plain run of
 #             this build (no mpirun, so no MPI) prints what it always did
-#   ztv       maps traced by 2 and 3 ranks, one block of rows and two, give every file of a
-#             plain run byte for byte
+#   ztv       maps traced by 2 and 4 ranks (and 3), one block of rows and two, give every file
+#             of a plain run byte for byte
 #   failures  a failure ends every rank with one message and the right exit status, never a
 #             hang: rank 0 cannot write (render, ztv), one rank alone is refused by its memory
 #             budget (render: its frame, while rank 0 waits to gather; ztv: the scene file,
@@ -60,7 +60,7 @@ ztv)
     read -r name cell <<<"$job"
     plain "$sylva" ztv "$site" --cell "$cell" --threads 2 -q -o "$out/$name" >/dev/null ||
       fail "ztv $name: the plain run exited with $?"
-    for n in 2 3; do
+    for n in 2 4 $([ $name = one ] && echo 3); do
       ranks $n "$sylva" ztv "$site" --cell "$cell" --threads 1 -q -o "$out/$name.$n" >"$out/$name.$n.stdout" ||
         fail "ztv $name: $n ranks exited with $?"
       [ "$(ls "$out/$name")" = "$(ls "$out/$name.$n")" ] || fail "ztv $name: $n ranks wrote other files"

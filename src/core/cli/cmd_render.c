@@ -42,9 +42,10 @@ static void render_usage(FILE *out)
             "  -v, --verbose       plugin debug messages\n"
             "  -h, --help          this text\n\n"
             "Under MPI (`mpirun -np N sylva render ...`, in a build with SYLVA_MPI), every rank\n"
-            "builds the scene itself and renders every N-th band of 16 rows; rank 0 gathers the\n"
-            "bands, meters the exposure and writes the one PNG and EXR, byte for byte those of a\n"
-            "single process. Only rank 0 prints. See docs/mpi.md.\n\n"
+            "builds the scene itself (on separate machines as soon as rank 0 could build and\n"
+            "broadcast it, with no scene format to keep in step) and renders every N-th band of\n"
+            "16 rows; rank 0 gathers the bands, meters the exposure and writes the one PNG and\n"
+            "EXR, byte for byte those of a single process. Only rank 0 prints. See docs/mpi.md.\n\n"
             "exit status: 0 done, 1 usage, 2 bad scene or plugin failure, 3 output not written,\n"
             "4 out of memory or internal error\n");
 }

@@ -52,9 +52,10 @@ static void ztv_usage(FILE *out)
             "  -v, --verbose           plugin debug messages\n"
             "  -h, --help              this text\n\n"
             "Under MPI (`mpirun -np N sylva ztv ...`, in a build with SYLVA_MPI), every rank builds\n"
-            "the scene itself and traces every N-th row of the map; rank 0 gathers the rows and\n"
-            "writes the files, byte for byte those of a single process. Only rank 0 prints. See\n"
-            "docs/mpi.md.\n\n"
+            "the scene itself (on separate machines as soon as rank 0 could build and broadcast\n"
+            "it, with no scene format to keep in step) and traces every N-th row of the map; rank 0\n"
+            "gathers the rows and writes the files, byte for byte those of a single process. Only\n"
+            "rank 0 prints. See docs/mpi.md.\n\n"
             "exit status: 0 done, 1 usage, 2 bad scene, plugin failure or nothing to map, 3 output\n"
             "not written, 4 out of memory or internal error\n");
 }

@@ -11,11 +11,12 @@
 #   slow        more than ~10 s in a Release build; also carries its area's label
 #   fuzz        short runs of the fuzz targets (only with -DSYLVA_FUZZ=ON)
 #   ztv         visibility maps (`sylva ztv`), against gdal_viewshed and known geometry
+#   mpi         render and ztv split between the ranks of an MPI job (mpirun on this machine)
 #
 # A test that cannot run here (no POV-Ray, no shared data) exits 77 and ctest reports it as
 # skipped, never as passed.
 
-set(SYLVA_TEST_LABELS unit plugin image crosscheck faults slow fuzz ztv)
+set(SYLVA_TEST_LABELS unit plugin image crosscheck faults slow fuzz ztv mpi)
 set(SYLVA_TEST_SKIP_CODE 77)
 set(SYLVA_SHARED_DATA_DIR "${CMAKE_SOURCE_DIR}/../shared/data" CACHE PATH
     "The shared data folder (DEMs, L-parser corpus) that tests registered NEEDS_SHARED_DATA read; they skip when it is absent")

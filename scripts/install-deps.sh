@@ -17,6 +17,7 @@ packages=(
   libassimp-dev          # 3-D model import (OBJ, glTF, PLY, STL, FBX, COLLADA, 3DS)
   libgsl-dev             # photomontage camera match: nonlinear least squares (multifit_nlinear)
   libimage-exiftool-perl # exiftool: the EXIF tests compare what sylva reads with what it reports
+  libopenmpi-dev openmpi-bin  # MPI: render and ztv split between ranks (docs/mpi.md); optional
 )
 
 missing=()

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # test.sh — the whole test suite: installs the dependencies, then builds sylva four ways and
 # tests each (15 to 20 minutes on 2 cores):
-#   build/        gcc, Release: every ctest test
+#   build/        gcc, Release, with MPI: every ctest test (the mpi ones with mpirun)
 #   build-asan/   gcc, AddressSanitizer + UndefinedBehaviorSanitizer: every test but the slow ones
-#   build-clang/  clang, Release, warnings as errors: every test but the slow ones
+#   build-clang/  clang, Release, warnings as errors, without MPI (SYLVA_MPI=OFF, as on a machine
+#                 without Open MPI): every test but the slow ones
 #   build-fuzz/   clang with libFuzzer: each fuzz target for a short fixed number of runs
 # Stops at the first build or stage that fails. Tests that cannot run here (no POV-Ray, no
 # ../shared/data) are reported as skipped.
@@ -28,8 +29,8 @@ stage "gcc AddressSanitizer + UndefinedBehaviorSanitizer build"
 "$root/scripts/build.sh" "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSYLVA_SANITIZE=ON
 (cd "$root/build-asan" && ctest --output-on-failure -j"$jobs" -LE slow)
 
-stage "clang Release build, warnings as errors"
-CC=clang CXX=clang++ "$root/scripts/build.sh" "$root/build-clang" -DSYLVA_WERROR=ON
+stage "clang Release build, warnings as errors, without MPI"
+CC=clang CXX=clang++ "$root/scripts/build.sh" "$root/build-clang" -DSYLVA_WERROR=ON -DSYLVA_MPI=OFF
 (cd "$root/build-clang" && ctest --output-on-failure -j"$jobs" -LE slow)
 
 stage "clang libFuzzer build: short fuzz runs"

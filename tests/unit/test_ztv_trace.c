@@ -3,7 +3,8 @@
  * curved Earth's horizon (visible to the distance sqrt(h_o / c) + sqrt(h_t / c)), a wall of
  * trees that hides a target with vegetation screening and not on bare earth, leaves with holes
  * that let some sightlines through, observers under a crown and inside a building, two named
- * developments told apart, and the same map from one thread and from four. */
+ * developments told apart, the same map from one thread and from four, and from parts that
+ * compute every third row each (the ranks of an MPI job). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,6 +24,7 @@ typedef struct map_copy {
     uint32_t *developments[ZTV_MODES];
     float *ground;
     uint32_t next_row;
+    uint32_t part, parts;           /* the part being traced: only its rows are copied */
 } map_copy;
 
 static int copy_block(void *user, const ztv_block *b, err_buf *err)
@@ -31,14 +33,18 @@ static int copy_block(void *user, const ztv_block *b, err_buf *err)
     map_copy *m = user;
     CHECK_INT(b->j0, m->next_row);
     m->next_row = b->j0 + b->rows;
-    size_t at = (size_t)b->j0 * m->grid.nx, n = (size_t)b->rows * m->grid.nx;
-    memcpy(m->ground + at, b->ground, n * sizeof(float));
-    for (int k = 0; k < ZTV_MODES; k++)
-        if (b->layer[k]) {
-            memcpy(m->visible[k] + at, b->layer[k]->visible, n * sizeof(uint16_t));
-            memcpy(m->cls[k] + at, b->layer[k]->cls, n);
-            memcpy(m->developments[k] + at, b->layer[k]->developments, n * sizeof(uint32_t));
-        }
+    size_t nx = m->grid.nx;
+    for (uint32_t r = 0; r < b->rows; r++) {
+        if ((b->j0 + r) % m->parts != m->part) continue;
+        size_t at = (size_t)(b->j0 + r) * nx, from = (size_t)r * nx;
+        memcpy(m->ground + at, b->ground + from, nx * sizeof(float));
+        for (int k = 0; k < ZTV_MODES; k++)
+            if (b->layer[k]) {
+                memcpy(m->visible[k] + at, b->layer[k]->visible + from, nx * sizeof(uint16_t));
+                memcpy(m->cls[k] + at, b->layer[k]->cls + from, nx);
+                memcpy(m->developments[k] + at, b->layer[k]->developments + from, nx * sizeof(uint32_t));
+            }
+    }
     return 0;
 }
 
@@ -48,9 +54,10 @@ static void map_free(map_copy *m)
     free(m->ground);
 }
 
-/* Maps scene file `name` (text) with cell size `cell`, screened as `mode`, into *m. */
-static int run_map(const char *name, const char *text, double cell, ztv_mode mode, unsigned threads, int flat,
-                   map_copy *m, scene **out)
+/* Maps scene file `name` (text) with cell size `cell`, screened as `mode`, into *m, as `parts`
+ * parts one after another (1: the whole map at once). */
+static int run_map_parts(const char *name, const char *text, double cell, ztv_mode mode, unsigned threads, int flat,
+                         uint32_t parts, map_copy *m, scene **out)
 {
     memset(m, 0, sizeof *m);
     static char full[1 << 17];
@@ -81,8 +88,11 @@ static int run_map(const char *name, const char *text, double cell, ztv_mode mod
         m->ground = calloc(n, sizeof(float));
         for (int k = 0; k < ZTV_MODES; k++)
             m->visible[k] = calloc(n, 2), m->cls[k] = calloc(n, 1), m->developments[k] = calloc(n, 4);
-        if (!rc) rc = ztv_trace(&job, copy_block, m, NULL, &err);
-        CHECK_INT(m->next_row, job.grid.ny);
+        for (m->parts = parts, m->part = 0; !rc && m->part < parts; m->part++) {
+            job.part = m->part, job.parts = parts, m->next_row = 0;
+            rc = ztv_trace(&job, copy_block, m, NULL, &err);
+            CHECK_INT(m->next_row, job.grid.ny);
+        }
         accel_free(&a);
         ztv_targets_free(&t);
     }
@@ -92,6 +102,12 @@ static int run_map(const char *name, const char *text, double cell, ztv_mode mod
     if (out) *out = s;
     else scene_free(s);
     return rc;
+}
+
+static int run_map(const char *name, const char *text, double cell, ztv_mode mode, unsigned threads, int flat,
+                   map_copy *m, scene **out)
+{
+    return run_map_parts(name, text, cell, mode, threads, flat, 1, m, out);
 }
 
 /* A ridge 50 m high along y at x = 0 (a tent 100 m to each side), a target 100 m above the
@@ -295,7 +311,29 @@ TEST(one_thread_and_four_give_the_same_map)
     map_free(&b);
 }
 
+/* Three parts, each computing every third row, give the map of one (ground, counts, classes and
+ * developments, in both modes). */
+TEST(three_parts_give_the_map_of_one)
+{
+    static char text[1 << 16];
+    wall_scene(text, sizeof text, "");
+    map_copy a, b;
+    if (run_map("parts1.yaml", text, 3, ZTV_ALL, 2, 0, &a, NULL)) return;
+    if (run_map_parts("parts3.yaml", text, 3, ZTV_ALL, 1, 0, 3, &b, NULL)) return;
+    size_t n = (size_t)a.grid.nx * a.grid.ny;
+    CHECK(a.grid.ny > 3);
+    CHECK(memcmp(a.ground, b.ground, n * sizeof(float)) == 0);
+    for (int k = ZTV_BARE; k <= ZTV_ALL; k += ZTV_ALL) {
+        CHECK(memcmp(a.visible[k], b.visible[k], n * 2) == 0);
+        CHECK(memcmp(a.cls[k], b.cls[k], n) == 0);
+        CHECK(memcmp(a.developments[k], b.developments[k], n * 4) == 0);
+    }
+    map_free(&a);
+    map_free(&b);
+}
+
 TEST_LIST(TEST_CASE(ridge_hides_what_the_geometry_says), TEST_CASE(curvature_hides_a_low_target_beyond_the_horizon),
           TEST_CASE(a_wall_of_trees_screens_and_bare_earth_does_not),
           TEST_CASE(holes_in_a_leaf_texture_let_some_sightlines_through),
-          TEST_CASE(two_developments_are_told_apart), TEST_CASE(one_thread_and_four_give_the_same_map))
+          TEST_CASE(two_developments_are_told_apart), TEST_CASE(one_thread_and_four_give_the_same_map),
+          TEST_CASE(three_parts_give_the_map_of_one))

@@ -1,9 +1,11 @@
-/* cmd_render.c — `sylva render SCENE`: load, build, render, write EXR and PNG. */
+/* cmd_render.c — `sylva render SCENE`: load, build, render, write EXR and PNG; under mpirun, each
+ * rank renders its bands of the frame and rank 0 writes the files (cli/cli_mpi.h). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli/cli_args.h"
+#include "cli/cli_mpi.h"
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
@@ -40,6 +42,11 @@ static void render_usage(FILE *out)
             "                      strings (these may reach the network; refused otherwise)\n"
             "  -v, --verbose       plugin debug messages\n"
             "  -h, --help          this text\n\n"
+            "Under MPI (`mpirun -np N sylva render ...`, in a build with SYLVA_MPI), every rank\n"
+            "builds the scene itself (on separate machines as soon as rank 0 could build and\n"
+            "broadcast it, with no scene format to keep in step) and renders every N-th band of\n"
+            "16 rows; rank 0 gathers the bands, meters the exposure and writes the one PNG and\n"
+            "EXR, byte for byte those of a single process. Only rank 0 prints. See docs/mpi.md.\n\n"
             "exit status: 0 done, 1 usage, 2 bad scene or plugin failure, 3 output not written,\n"
             "4 out of memory or internal error\n");
 }
@@ -70,7 +77,7 @@ static int output_paths(const char *scene_path, const char *viewpoint, const cha
     return 0;
 }
 
-int cmd_render(int argc, char **argv)
+static int render_run(cli_mpi *m, int argc, char **argv)
 {
     const char *viewpoint = NULL, *season = NULL;
     const char *scene_path = NULL, *out = NULL;
@@ -126,6 +133,9 @@ int cmd_render(int argc, char **argv)
     }
     char png[4200], exr[4200];
     if (output_paths(scene_path, viewpoint, season, out, png, exr, sizeof png)) return EXIT_USAGE;
+    if (!ro.threads) ro.threads = bo.threads = m->threads;
+    ro.part = (uint32_t)m->rank, ro.parts = (uint32_t)m->ranks;
+    if (m->rank) ro.quiet = bo.quiet = 1;
 
     err_buf err = {{0}};
     double t0 = progress_now();
@@ -134,6 +144,10 @@ int cmd_render(int argc, char **argv)
     int rc = cli_scene_open(&cs, "render", scene_path, viewpoint, season, &bo);
     if (!rc) rc = cli_scene_ground_cover(&cs, "render", ro.width, ro.height, ro.quiet);
     if (rc) goto done;
+    if (cli_mpi_same_scene(m, cs.scene, &err)) {
+        rc = cli_fail("render", &err, ERR_INPUT);
+        goto done;
+    }
     const scene *sc = cs.scene;
     if (!ro.quiet)
         fprintf(stderr, "scene: %u species, %u prototypes, %u instances, %u objects (%u shared models)%s (built in "
@@ -149,6 +163,14 @@ int cmd_render(int argc, char **argv)
     phase_add(&cs.times, PHASE_RENDER_SETUP, st.build_seconds - st.bvh_seconds);
     phase_add(&cs.times, PHASE_RENDER, st.render_seconds);
     phase_mark t_out = phase_start();
+    /* the whole frame on rank 0; the exposure is metered on it there */
+    if (cli_mpi_gather_film(m, f, &err)) {
+        rc = cli_fail("render", &err, ERR_INTERNAL);
+        goto done;
+    }
+    uint64_t samples = st.samples;
+    cli_mpi_sum(m, &samples, 1);
+    if (m->rank) goto done;
     double ev = sc->image.exposure_set ? sc->image.exposure : auto_exposure_stops(f);
     if (!ro.quiet) fprintf(stderr, "exposure: %+.2f EV (%s)\n", ev, sc->image.exposure_set ? "image.exposure" : "metered");
     if (film_write_exr(f, &sc->site, ev, exr, &err) || film_write_png(f, png, sc->image.tone, ev, &err)) {
@@ -157,8 +179,10 @@ int cmd_render(int argc, char **argv)
     }
     phase_stop(&cs.times, PHASE_OUTPUT, t_out);
     if (!ro.quiet) {
-        fprintf(stderr, "rendered %ux%u, %llu samples in %.2fs (BVH %.2fs); total %.2fs\n", f->width, f->height,
-                (unsigned long long)st.samples, st.render_seconds, st.build_seconds, progress_now() - t0);
+        char ranks[32] = "";
+        if (m->ranks > 1) snprintf(ranks, sizeof ranks, " on %d ranks", m->ranks);
+        fprintf(stderr, "rendered %ux%u%s, %llu samples in %.2fs (BVH %.2fs); total %.2fs\n", f->width, f->height,
+                ranks, (unsigned long long)samples, st.render_seconds, st.build_seconds, progress_now() - t0);
         phase_times_print(&cs.times, stderr);
     }
     printf("%s\n%s\n", png, exr);
@@ -166,4 +190,12 @@ done:
     film_free(f);
     cli_scene_close(&cs);
     return rc;
+}
+
+int cmd_render(int argc, char **argv)
+{
+    cli_mpi m;
+    int rc = cli_mpi_begin(&m, "render", argc, argv);
+    if (!rc) rc = render_run(&m, argc, argv);
+    return cli_mpi_end(&m, rc);
 }

@@ -1,13 +1,15 @@
 /* cmd_ztv.c — `sylva ztv SCENE -o DIR`: the zone of theoretical visibility of the scene's
  * development (docs/ztv.md): for every cell of a map over the terrain, how many of the
  * development's targets an observer standing there sees, on bare earth and screened by the
- * forest and the buildings, written as GeoTIFFs, PNG maps and a summary. */
+ * forest and the buildings, written as GeoTIFFs, PNG maps and a summary. Under mpirun each rank
+ * traces every N-th row of the map and rank 0 writes the files (cli/cli_mpi.h). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli/cli_args.h"
+#include "cli/cli_mpi.h"
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
@@ -41,13 +43,19 @@ static void ztv_usage(FILE *out)
             "  --flat-earth            straight sightlines, whatever the earth: section says\n"
             "  --season S              the plants on season S (spring, summer, autumn, winter)\n"
             "                          or date YYYY-MM-DD, instead of the scene's season: key\n"
-            "  --threads N             threads for every phase (default: one per core); the\n"
+            "  --threads N             threads for every phase (default: one per core, shared\n"
+            "                          out between the ranks of an MPI job on one machine); the\n"
             "                          maps do not depend on it\n"
             "  -q, --quiet             no progress output\n"
             "  --allow-gdal-virtual    let the scene name GDAL virtual paths, URLs and connection\n"
             "                          strings (these may reach the network; refused otherwise)\n"
             "  -v, --verbose           plugin debug messages\n"
             "  -h, --help              this text\n\n"
+            "Under MPI (`mpirun -np N sylva ztv ...`, in a build with SYLVA_MPI), every rank builds\n"
+            "the scene itself (on separate machines as soon as rank 0 could build and broadcast\n"
+            "it, with no scene format to keep in step) and traces every N-th row of the map; rank 0\n"
+            "gathers the rows and writes the files, byte for byte those of a single process. Only\n"
+            "rank 0 prints. See docs/mpi.md.\n\n"
             "exit status: 0 done, 1 usage, 2 bad scene, plugin failure or nothing to map, 3 output\n"
             "not written, 4 out of memory or internal error\n");
 }
@@ -67,12 +75,60 @@ static int parse_metres(const char *opt, const char *s, double lo, double hi, do
     return 0;
 }
 
+/* Where the blocks of rows go: straight to the output in one process; in an MPI job, into a
+ * copy of the block on every rank, in which rank 0 gathers the other ranks' rows before
+ * writing it. */
+typedef struct block_sink {
+    cli_mpi *m;
+    ztv_output *out; /* rank 0's; NULL on the other ranks */
+    uint32_t nx;     /* cells in a row */
+} block_sink;
+
+#define BLOCK_ARRAYS (1 + 4 * ZTV_MODES) /* the ground, and four layers per computed mode */
+
 static int sink_block(void *user, const ztv_block *b, err_buf *err)
 {
-    return ztv_output_block(user, b, err);
+    block_sink *s = user;
+    if (s->m->ranks < 2) return ztv_output_block(s->out, b, err);
+    const void *from[BLOCK_ARRAYS];
+    size_t cell_bytes[BLOCK_ARRAYS];
+    unsigned n = 0;
+    from[n] = b->ground, cell_bytes[n++] = sizeof *b->ground;
+    for (int md = 0; md < ZTV_MODES; md++) {
+        const ztv_layer *l = b->layer[md];
+        if (!l) continue;
+        from[n] = l->visible, cell_bytes[n++] = sizeof *l->visible;
+        from[n] = l->fraction, cell_bytes[n++] = sizeof *l->fraction;
+        from[n] = l->cls, cell_bytes[n++] = sizeof *l->cls;
+        from[n] = l->developments, cell_bytes[n++] = sizeof *l->developments;
+    }
+    /* each array at a multiple of 8 bytes, aligned for its type */
+    size_t cells = (size_t)b->rows * s->nx, at[BLOCK_ARRAYS + 1] = {0};
+    for (unsigned k = 0; k < n; k++) at[k + 1] = at[k] + (cells * cell_bytes[k] + 7) / 8 * 8;
+    uint8_t *copy = malloc(at[n]); /* owned: the block's arrays one after another */
+    if (!copy) return err_nomem(err, "out of memory for a copy of %zu cells of the map", cells);
+    cli_rows rows[BLOCK_ARRAYS];
+    for (unsigned k = 0; k < n; k++) {
+        memcpy(copy + at[k], from[k], cells * cell_bytes[k]);
+        rows[k] = (cli_rows){copy + at[k], s->nx * cell_bytes[k]};
+    }
+    int rc = cli_mpi_gather_rows(s->m, rows, n, b->j0, b->rows, 1, err);
+    if (!rc && !s->m->rank) {
+        ztv_layer layers[ZTV_MODES];
+        ztv_block whole = {.j0 = b->j0, .rows = b->rows, .ground = rows[0].data};
+        for (int md = 0, k = 1; md < ZTV_MODES; md++) {
+            if (!b->layer[md]) continue;
+            layers[md] = (ztv_layer){rows[k].data, rows[k + 1].data, rows[k + 2].data, rows[k + 3].data};
+            whole.layer[md] = &layers[md];
+            k += 4;
+        }
+        rc = ztv_output_block(s->out, &whole, err);
+    }
+    free(copy);
+    return rc;
 }
 
-int cmd_ztv(int argc, char **argv)
+static int ztv_run(cli_mpi *m, int argc, char **argv)
 {
     const char *scene_path = NULL, *dir = NULL, *season = NULL;
     double radius = NAN, cell = NAN, eye = NAN;
@@ -131,6 +187,8 @@ int cmd_ztv(int argc, char **argv)
         ztv_usage(stderr);
         return EXIT_USAGE;
     }
+    if (!threads) threads = bo.threads = m->threads;
+    if (m->rank) bo.quiet = 1;
 
     err_buf err = {{0}};
     cli_scene cs;
@@ -139,6 +197,10 @@ int cmd_ztv(int argc, char **argv)
     ztv_output *out = NULL;
     int rc = cli_scene_open(&cs, "ztv", scene_path, NULL, season, &bo);
     if (rc) goto done;
+    if (cli_mpi_same_scene(m, cs.scene, &err)) {
+        rc = cli_fail("ztv", &err, ERR_INPUT);
+        goto done;
+    }
     const scene_file *sf = cs.sf;
     const scene *sc = cs.scene;
     const ztv_settings *z = &sf->ztv;
@@ -155,7 +217,7 @@ int cmd_ztv(int argc, char **argv)
 
     ztv_job job = {.scene = sc, .accel = &acc, .targets = &targets, .observer_height = eye, .radius = radius,
                    .screened = (ztv_mode)screening, .earth = flat ? NULL : &sc->earth, .threads = threads,
-                   .quiet = bo.quiet};
+                   .quiet = bo.quiet, .part = (uint32_t)m->rank, .parts = (uint32_t)m->ranks};
     if (ztv_targets_build(&targets, sf, sc, sf->image.seed, &err) ||
         ztv_grid_make(sc, &targets, cell, radius, &job.grid, &err)) {
         rc = cli_fail("ztv", &err, ERR_INPUT);
@@ -181,23 +243,31 @@ int cmd_ztv(int argc, char **argv)
     if (sf->site.crs_wkt) memcpy(info.origin, sf->site.origin, sizeof info.origin);
     info.computed[ZTV_BARE] = 1;
     info.computed[job.screened] = 1;
-    if (cli_make_folder(dir, &err) || !(out = ztv_output_open(dir, &info, &err))) {
+    /* rank 0 alone writes */
+    if (!m->rank && (cli_make_folder(dir, &err) || !(out = ztv_output_open(dir, &info, &err)))) {
         rc = cli_fail("ztv", &err, ERR_OUTPUT);
         goto done;
     }
     ztv_stats st;
+    block_sink sink = {.m = m, .out = out, .nx = job.grid.nx};
     t_phase = phase_start(); /* the grid's rays, its blocks written as they come */
-    int traced = ztv_trace(&job, sink_block, out, &st, &err);
+    if (ztv_trace(&job, sink_block, &sink, &st, &err)) rc = cli_fail("ztv", &err, ERR_OUTPUT);
     t_phase = phase_stop(&cs.times, PHASE_RENDER, t_phase);
-    if (traced || ztv_output_finish(out, &err)) {
+    if ((rc = cli_mpi_agree(m, rc))) goto done;
+    uint64_t total[3] = {st.cells, st.pairs, st.rays};
+    cli_mpi_sum(m, total, 3);
+    if (m->rank) goto done;
+    if (ztv_output_finish(out, &err)) {
         rc = cli_fail("ztv", &err, ERR_OUTPUT);
         goto done;
     }
     phase_stop(&cs.times, PHASE_OUTPUT, t_phase);
     if (!bo.quiet) {
-        fprintf(stderr, "ztv: %llu cells x %u targets in %.2fs: %.3g sightlines/s, %.2f rays each\n",
-                (unsigned long long)st.cells, targets.n, st.seconds, st.pairs / fmax(st.seconds, 1e-9),
-                st.pairs ? (double)st.rays / st.pairs : 0.0);
+        char ranks[32] = "";
+        if (m->ranks > 1) snprintf(ranks, sizeof ranks, " on %d ranks", m->ranks);
+        fprintf(stderr, "ztv: %llu cells x %u targets in %.2fs%s: %.3g sightlines/s, %.2f rays each\n",
+                (unsigned long long)total[0], targets.n, st.seconds, ranks, total[1] / fmax(st.seconds, 1e-9),
+                total[1] ? (double)total[2] / total[1] : 0.0);
         phase_times_print(&cs.times, stderr);
     }
     printf("%s\n", dir);
@@ -207,4 +277,12 @@ done:
     ztv_targets_free(&targets);
     cli_scene_close(&cs);
     return rc;
+}
+
+int cmd_ztv(int argc, char **argv)
+{
+    cli_mpi m;
+    int rc = cli_mpi_begin(&m, "ztv", argc, argv);
+    if (!rc) rc = ztv_run(&m, argc, argv);
+    return cli_mpi_end(&m, rc);
 }

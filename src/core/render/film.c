@@ -63,6 +63,17 @@ film *film_new(uint32_t w, uint32_t h, err_buf *err)
     return f;
 }
 
+void film_layers(film *f, film_layer out[FILM_LAYERS])
+{
+    const film_layer l[FILM_LAYERS] = {
+        {f->rgb, 3 * sizeof(float)},         {f->depth, sizeof(float)},       {f->normal, 3 * sizeof(float)},
+        {f->albedo, 3 * sizeof(float)},      {f->instance_id, sizeof(uint32_t)},
+        {f->species_id, sizeof(uint32_t)},   {f->object_id, sizeof(uint32_t)},
+        {f->development, sizeof(float)},     {f->development_rgb, 3 * sizeof(float)},
+        {f->pixel_class, 1},                 {f->coverage, sizeof(float)}};
+    memcpy(out, l, sizeof l);
+}
+
 void film_free(film *f)
 {
     if (!f) return;

@@ -17,6 +17,7 @@
 #ifndef SYLVA_FILM_H
 #define SYLVA_FILM_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "scene/scene_file.h"
@@ -43,6 +44,16 @@ typedef struct film {
     uint8_t *pixel_class;  /* 1 per pixel: a pixel_class */
     float *coverage;       /* 1 per pixel: share of the camera samples that hit a surface */
 } film;
+
+/* The layers above as arrays of bytes, in a fixed order, for whatever moves a frame's rows
+ * elsewhere whole (the ranks of an MPI job gather their bands, docs/mpi.md). A layer added to
+ * the film is added here too. */
+#define FILM_LAYERS 11
+typedef struct film_layer {
+    void *data;            /* the film's array */
+    size_t pixel_bytes;    /* bytes per pixel (width * height of them, row by row) */
+} film_layer;
+void film_layers(film *f, film_layer out[FILM_LAYERS]);
 
 /* Bytes a frame needs per pixel: the layers above, the 8-bit copy for PNG and the EXR writer's
  * half-float and line buffers (estimated from above). */

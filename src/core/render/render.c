@@ -12,12 +12,13 @@
 #include "render/integrator.h"
 #include "util/progress.h"
 
-#define TILE 16
+#define TILE RENDER_BAND_ROWS /* a row of tiles is a band of a part */
 
 typedef struct render_job {
     const render_ctx *ctx;
     film *film;
-    uint32_t tiles_x, tiles_y;
+    uint32_t tiles_x, tiles_y;     /* tiles_y: the rows of tiles of this part */
+    uint32_t part, parts;          /* this part's tile row k is the frame's part + k * parts */
     atomic_uint next_tile;
     atomic_uint_fast64_t samples; /* camera samples taken (fewer than spp per pixel when adaptive) */
     progress *prog;
@@ -32,7 +33,7 @@ unsigned render_default_threads(void)
 static void render_tile(render_job *job, uint32_t tile)
 {
     film *f = job->film;
-    uint32_t tx = tile % job->tiles_x, ty = tile / job->tiles_x;
+    uint32_t tx = tile % job->tiles_x, ty = job->part + tile / job->tiles_x * job->parts;
     uint64_t samples = 0;
     for (uint32_t y = ty * TILE; y < (ty + 1) * TILE && y < f->height; y++)
         for (uint32_t x = tx * TILE; x < (tx + 1) * TILE && x < f->width; x++) {
@@ -162,7 +163,9 @@ film *render_setup_run(render_setup *rs, const render_options *opt, render_stats
     if (!f) return NULL;
     render_ctx ctx;
     ctx_init(&ctx, rs, &o, w, h);
-    render_job job = {.ctx = &ctx, .film = f, .tiles_x = (w + TILE - 1) / TILE, .tiles_y = (h + TILE - 1) / TILE};
+    uint32_t parts = o.parts > 1 ? o.parts : 1, part = parts > 1 ? o.part : 0, tile_rows = (h + TILE - 1) / TILE;
+    render_job job = {.ctx = &ctx, .film = f, .tiles_x = (w + TILE - 1) / TILE, .part = part, .parts = parts,
+                      .tiles_y = part < tile_rows ? (tile_rows - part + parts - 1) / parts : 0};
     atomic_init(&job.next_tile, 0);
     atomic_init(&job.samples, 0);
     progress prog;

@@ -1,7 +1,9 @@
 /* render.h — rendering a scene into a film: the Embree scene, the lights and the camera are set
  * up, then tiles of 16x16 pixels are handed to worker threads from one atomic counter. Every
  * pixel is computed wholly by one thread from samples keyed by the pixel, so the film is
- * bit-identical for any thread count. */
+ * bit-identical for any thread count. A render can be one part of several (the ranks of an MPI
+ * job, docs/mpi.md): it computes only its bands of rows, and the same pixels come out as from
+ * the whole. */
 #ifndef SYLVA_RENDER_H
 #define SYLVA_RENDER_H
 
@@ -21,13 +23,18 @@ typedef struct render_options {
     unsigned leave_out; /* ACCEL_MASK_* bits (render/accel.h): geometry that no ray meets, as if
                          * it were not in the scene; 0: none. ACCEL_MASK_DEVELOPMENT renders the
                          * scene without its development, with the same samples as the whole */
+    uint32_t part, parts; /* parts > 1: render only the bands of RENDER_BAND_ROWS rows whose
+                           * index modulo parts is part (band k holds rows [16 k, 16 k + 16));
+                           * the other pixels are left zero. 0 or 1: every pixel */
 } render_options;
+
+#define RENDER_BAND_ROWS 16u /* rows of one band of a part: one row of tiles */
 
 typedef struct render_stats {
     double build_seconds;   /* the setup: BVH, lights, crown proxies */
     double bvh_seconds;     /* of which the BVH (accel_build) */
     double render_seconds;  /* pixels */
-    uint64_t samples;
+    uint64_t samples;       /* camera samples traced (of this part alone) */
 } render_stats;
 
 /* Renders s; returns a new film (film_free) or NULL with err set. stats may be NULL. */

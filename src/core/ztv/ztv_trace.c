@@ -35,6 +35,7 @@ typedef struct trace_ctx {
     ztv_sight sight;
     const ztv_cover *cover;
     uint32_t j0, rows;             /* the block being computed */
+    uint32_t first, step, own;     /* its rows of this part: first + k * step, k < own */
     atomic_uint next_row;
     float *ground;                 /* block cells; owned */
     layer_buf layer[2];            /* [0] bare earth, [1] the screened mode */
@@ -127,8 +128,8 @@ static void *trace_worker(void *arg)
     uint32_t nx = c->job->grid.nx;
     row_scratch w = {malloc((size_t)nx * sizeof(float)), malloc(nx), malloc(nx), 0, 0}; /* freed below */
     uint64_t cells = 0, pairs = 0, rays = 0;
-    for (uint32_t row; w.eye && w.under && w.inside && (row = atomic_fetch_add(&c->next_row, 1)) < c->rows;) {
-        trace_row(c, row, &w, &cells, &pairs, &rays);
+    for (uint32_t k; w.eye && w.under && w.inside && (k = atomic_fetch_add(&c->next_row, 1)) < c->own;) {
+        trace_row(c, c->first + k * c->step, &w, &cells, &pairs, &rays);
         progress_advance(c->prog, 1);
     }
     free(w.eye), free(w.under), free(w.inside);
@@ -176,12 +177,15 @@ int ztv_trace(const ztv_job *job, ztv_sink sink, void *user, ztv_stats *stats, e
     c.cover = cover;
     unsigned threads = job->threads ? job->threads : render_default_threads();
     progress prog;
-    progress_begin(&prog, "ztv", g->ny, job->quiet);
+    uint32_t parts = job->parts > 1 ? job->parts : 1, part = parts > 1 ? job->part : 0;
+    progress_begin(&prog, "ztv", part < g->ny ? (g->ny - part + parts - 1) / parts : 0, job->quiet);
     c.prog = &prog;
     pthread_t *tids = calloc(threads, sizeof *tids); /* freed below */
     for (uint32_t j0 = 0; !rc && j0 < g->ny; j0 += block_rows) {
         c.j0 = j0;
         c.rows = g->ny - j0 < block_rows ? g->ny - j0 : block_rows;
+        c.first = (part + parts - j0 % parts) % parts, c.step = parts;
+        c.own = c.first < c.rows ? (c.rows - c.first + parts - 1) / parts : 0;
         atomic_init(&c.next_row, 0);
         unsigned started = 0;
         if (tids)
@@ -189,7 +193,7 @@ int ztv_trace(const ztv_job *job, ztv_sink sink, void *user, ztv_stats *stats, e
                 if (pthread_create(&tids[started], NULL, trace_worker, &c)) break;
         trace_worker(&c);
         for (unsigned k = 0; k < started; k++) pthread_join(tids[k], NULL);
-        if (atomic_load(&c.next_row) < c.rows) { /* the workers could not get their scratch */
+        if (atomic_load(&c.next_row) < c.own) { /* the workers could not get their scratch */
             rc = err_nomem(err, "out of memory for the rows of the map");
             break;
         }

@@ -37,9 +37,12 @@ typedef struct ztv_job {
     const earth_settings *earth;    /* NULL: a flat Earth */
     unsigned threads;               /* 0: one per core */
     int quiet;                      /* 1: no progress on stderr */
+    uint32_t part, parts;           /* parts > 1: compute only the rows j with j % parts == part
+                                     * (one rank of an MPI job, docs/mpi.md); a block's other
+                                     * rows are left undefined. 0 or 1: every row */
 } ztv_job;
 
-typedef struct ztv_stats {
+typedef struct ztv_stats {         /* of this part alone */
     uint64_t cells;                 /* computed (within the radius, on the terrain) */
     uint64_t pairs;                 /* cells x targets traced */
     uint64_t rays;                  /* Embree occlusion rays (chords of the sightlines) */

@@ -2,6 +2,7 @@
  * its last model's figures to the host. */
 #include "plugin_host.h"
 
+#include <float.h>
 #include <string.h>
 
 int plugin_report(const sylva_host_api *api, sylva_host *host, const plugin_err *err)
@@ -23,6 +24,17 @@ int plugin_tree_stats_copy(const sylva_tree_stats *last, int has_last, sylva_tre
     uint32_t size = out->size < sizeof *out ? out->size : (uint32_t)sizeof *out;
     memcpy((char *)out + sizeof out->size, (const char *)last + sizeof out->size, size - sizeof out->size);
     return SYLVA_OK;
+}
+
+void plugin_tree_stats_bounds(sylva_tree_stats *st, const float *pos, uint32_t nv)
+{
+    for (int k = 0; k < 3; k++) st->bbox_min[k] = nv ? DBL_MAX : 0, st->bbox_max[k] = nv ? -DBL_MAX : 0;
+    for (uint32_t v = 0; v < nv; v++)
+        for (int k = 0; k < 3; k++) {
+            double x = pos[3 * v + k];
+            if (x < st->bbox_min[k]) st->bbox_min[k] = x;
+            if (x > st->bbox_max[k]) st->bbox_max[k] = x;
+        }
 }
 
 void plugin_last_stats_init(plugin_last_stats *l)

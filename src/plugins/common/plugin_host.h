@@ -27,6 +27,10 @@ void plugin_host_stream(void *ctx, sylva_rng *rng, const char *purpose, uint64_t
  * smaller). Returns SYLVA_OK, or SYLVA_ERR_PARAM when has_last is 0 or out is unusable. */
 int plugin_tree_stats_copy(const sylva_tree_stats *last, int has_last, sylva_tree_stats *out);
 
+/* Sets st's bbox_min and bbox_max from a model's nv vertices (pos: 3 * nv, metres); both 0 for
+ * an empty model. */
+void plugin_tree_stats_bounds(sylva_tree_stats *st, const float *pos, uint32_t nv);
+
 /* A tree plugin's last model's figures, kept under a lock so that generate() calls running at
  * once (SYLVA_PLUGIN_CONCURRENT_GENERATE) may each set them: last_stats then gives the figures
  * of whichever finished last (`sylva tree-stats` asks after each call, one at a time). */

@@ -5,6 +5,7 @@
 #include <math.h>
 
 #include "box_count.h"
+#include "plugin_host.h"
 
 int aono_stats_measure(const aono_skeleton *s, const aono_mesh_buffer *b, int32_t leaf, sylva_tree_stats *st)
 {
@@ -21,13 +22,7 @@ int aono_stats_measure(const aono_skeleton *s, const aono_mesh_buffer *b, int32_
     for (uint32_t t = 0; t < b->nt; t++) leaf_triangles += leaf >= 0 && b->mat[t] == leaf;
     st->leaves = leaf_triangles / 2; /* a leaf is a quad */
     st->triangles = b->nt;
-    for (int k = 0; k < 3; k++) st->bbox_min[k] = b->nv ? DBL_MAX : 0, st->bbox_max[k] = b->nv ? -DBL_MAX : 0;
-    for (uint32_t v = 0; v < b->nv; v++)
-        for (int k = 0; k < 3; k++) {
-            double x = b->pos[3 * v + k];
-            if (x < st->bbox_min[k]) st->bbox_min[k] = x;
-            if (x > st->bbox_max[k]) st->bbox_max[k] = x;
-        }
+    plugin_tree_stats_bounds(st, b->pos, b->nv);
     st->height = b->nv ? fmax(0.0, st->bbox_max[2]) : 0;
     st->box_dimension = 0;
     double w = hi_x - lo_x, h = hi_z - lo_z;

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include "box_count.h"
+#include "plugin_host.h"
 
 /* Where segment b's axis ends, tree frame. */
 static vessel_vec segment_tip(const vessel_branch *b)
@@ -36,13 +37,7 @@ int vessel_stats_measure(const vessel_tree *t, const vessel_mesh *m, sylva_tree_
     free(depth);
     st->leaves = m->leaf_triangles / 2; /* a leaf is a quad */
     st->triangles = m->nt;
-    for (int k = 0; k < 3; k++) st->bbox_min[k] = m->nv ? DBL_MAX : 0, st->bbox_max[k] = m->nv ? -DBL_MAX : 0;
-    for (uint32_t v = 0; v < m->nv; v++)
-        for (int k = 0; k < 3; k++) {
-            double x = m->pos[3 * v + k];
-            if (x < st->bbox_min[k]) st->bbox_min[k] = x;
-            if (x > st->bbox_max[k]) st->bbox_max[k] = x;
-        }
+    plugin_tree_stats_bounds(st, m->pos, m->nv);
     st->height = m->top;
     st->box_dimension = 0;
     if (!st->segments) return 0;

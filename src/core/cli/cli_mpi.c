@@ -133,8 +133,10 @@ static void replay(const cli_mpi *m)
     char line[4096];
     int start = 1;
     while (fgets(line, sizeof line, m->kept)) {
-        if (start) dprintf(m->real_stderr, "[rank %d of %d] ", m->rank, m->ranks);
-        dprintf(m->real_stderr, "%s", line);
+        /* prefix and line in one write: the launcher forwards each write whole, so another
+         * rank's message never lands between the two */
+        if (start) dprintf(m->real_stderr, "[rank %d of %d] %s", m->rank, m->ranks, line);
+        else dprintf(m->real_stderr, "%s", line);
         start = strchr(line, '\n') != NULL;
     }
     if (!start) dprintf(m->real_stderr, "\n");

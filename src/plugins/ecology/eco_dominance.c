@@ -17,6 +17,7 @@
  * random numbers and writes only A's flag, so it runs on worker threads with the same result for
  * any thread count. */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 
 #include "eco_parallel.h"
@@ -98,25 +99,38 @@ static void dominance_range(void *ctx, size_t begin, size_t end)
         uint32_t w_i = wi < max_w ? (uint32_t)wi : max_w, w_k = wk < max_w ? (uint32_t)wk : max_w;
         uint32_t i0 = i > w_i ? i - w_i : 0, i1 = i + w_i < ni ? i + w_i : ni - 1;
         uint32_t k0 = k > w_k ? k - w_k : 0, k1 = k + w_k < nk ? k + w_k : nk - 1;
+        /* cells ring by ring outward from A's own, where a stronger neighbour is likeliest, so
+         * a dominated plant is found early; a cell wholly beyond reach of A is not opened */
         int dominated = 0;
-        for (uint32_t kk = k0; kk <= k1 && !dominated; kk++) {
-            double ya = t->y0 + kk * cy, dy = A->y < ya ? ya - A->y : A->y > ya + cy ? A->y - ya - cy : 0;
-            for (uint32_t ii = i0; ii <= i1 && !dominated; ii++) {
-                size_t q = ii + (size_t)kk * ni;
-                uint32_t b = s->cell_start[q], b1 = s->cell_start[q + 1];
-                if (b == b1) continue;
-                double xa = t->x0 + ii * cx;
-                double dx = A->x < xa ? xa - A->x : A->x > xa + cx ? A->x - xa - cx : 0;
-                double d2 = dx * dx + dy * dy;
-                for (; b < b1; b++) {
-                    const eco_cell_entry *B = &s->cell[b];
-                    double reach_rest = A->r + B->r_rest;
-                    if (d2 >= reach_rest * reach_rest) break; /* none of the rest reaches A */
-                    if (stronger_first(B, A) >= 0) break;     /* the rest are no stronger */
-                    double ex = A->x - B->x, ey = A->y - B->y, ez = A->z - B->z, r = A->r + B->r;
-                    if (ex * ex + ey * ey + ez * ez < r * r) {
-                        dominated = 1;
-                        break;
+        uint32_t rings = w_i > w_k ? w_i : w_k;
+        double reach2 = reach * reach;
+        for (uint32_t ring = 0; ring <= rings && !dominated; ring++) {
+            uint32_t rk0 = k > ring ? k - ring : 0, rk1 = k + ring < k1 ? k + ring : k1;
+            if (rk0 < k0) rk0 = k0;
+            for (uint32_t kk = rk0; kk <= rk1 && !dominated; kk++) {
+                double ya = t->y0 + kk * cy, dy = A->y < ya ? ya - A->y : A->y > ya + cy ? A->y - ya - cy : 0;
+                int whole_row = kk + ring == k || kk == k + ring; /* the ring's bottom or top row */
+                int64_t step = whole_row || ring == 0 ? 1 : 2 * (int64_t)ring;
+                for (int64_t c = (int64_t)i - ring; c <= (int64_t)i + ring && !dominated; c += step) {
+                    if (c < (int64_t)i0 || c > (int64_t)i1) continue;
+                    uint32_t ii = (uint32_t)c;
+                    size_t q = ii + (size_t)kk * ni;
+                    uint32_t b = s->cell_start[q], b1 = s->cell_start[q + 1];
+                    if (b == b1) continue;
+                    double xa = t->x0 + ii * cx;
+                    double dx = A->x < xa ? xa - A->x : A->x > xa + cx ? A->x - xa - cx : 0;
+                    double d2 = dx * dx + dy * dy;
+                    if (d2 >= reach2) continue;
+                    for (; b < b1; b++) {
+                        const eco_cell_entry *B = &s->cell[b];
+                        double reach_rest = A->r + B->r_rest;
+                        if (d2 >= reach_rest * reach_rest) break; /* none of the rest reaches A */
+                        if (stronger_first(B, A) >= 0) break;     /* the rest are no stronger */
+                        double ex = A->x - B->x, ey = A->y - B->y, ez = A->z - B->z, r = A->r + B->r;
+                        if (ex * ex + ey * ey + ez * ez < r * r) {
+                            dominated = 1;
+                            break;
+                        }
                     }
                 }
             }

@@ -27,6 +27,8 @@ typedef struct eco_cell_entry {
     double x, y, z, r, power;
     double r_rest;    /* the largest radius from this entry to the end of its cell's list */
     eco_plant *owner;
+    uint32_t age;     /* the owner's, copied: equal power is common, and the tie-break would
+                       * otherwise read every rival's plant record (most of the search's time) */
     uint32_t order;   /* species-then-birth order: the tie-break that keeps the sort fixed */
     uint32_t cell;    /* index of its cell */
 } eco_cell_entry;
@@ -40,7 +42,7 @@ typedef struct dominance_job {
 static int stronger_first(const eco_cell_entry *a, const eco_cell_entry *b)
 {
     if (a->power != b->power) return a->power > b->power ? -1 : 1;
-    if (a->owner->age != b->owner->age) return a->owner->age > b->owner->age ? -1 : 1;
+    if (a->age != b->age) return a->age > b->age ? -1 : 1;
     return a->order < b->order ? -1 : a->order > b->order;
 }
 
@@ -191,7 +193,8 @@ int eco_find_dominance(eco_sim *s, plugin_err *err)
         for (uint32_t q = 0; q < s->pop[j].n; q++) {
             eco_plant *pl = &s->pop[j].plants[q];
             uint32_t c = cell_of(s, pl->x, pl->y);
-            s->cell[start[c]++] = (eco_cell_entry){pl->x, pl->y, pl->z, pl->r, pl->power, 0, pl, order++, c};
+            s->cell[start[c]++] = (eco_cell_entry){.x = pl->x, .y = pl->y, .z = pl->z, .r = pl->r, .power = pl->power,
+                                                   .owner = pl, .age = pl->age, .order = order++, .cell = c};
         }
     /* start[c] now holds the end of cell c: shift back to starts. */
     for (size_t c = n_cells; c > 0; c--) start[c] = start[c - 1];

@@ -25,6 +25,7 @@ void crown_proxies_free(crown_proxies *p)
     free(p->hull_geom);
     free(p->materials);
     free(p->plant);
+    free(p->hull_box);
     free(p);
 }
 
@@ -248,8 +249,7 @@ static void proxy_bounds(const struct RTCBoundsFunctionArguments *args)
 {
     const accel *a = args->geometryUserPtr;
     const instance *in = &a->scene->instances[a->proxies->plant[args->primID]];
-    float lo[3], hi[3];
-    mesh_bounds(a->proxies->hull[in->prototype], lo, hi);
+    const float *lo = a->proxies->hull_box + 6 * (size_t)in->prototype, *hi = lo + 3;
     float wlo[3] = {INFINITY, INFINITY, INFINITY}, whi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (int c = 0; c < 8; c++) {
         vec3 w = xf_point(&in->xf, v3(c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]));
@@ -316,6 +316,11 @@ static void proxy_occluded(const struct RTCOccludedFunctionNArguments *args)
  * share of the top BVH. Hits carry the ids an instance of the envelope's scene would. */
 static int add_proxy_field(accel *a, err_buf *err)
 {
+    crown_proxies *p = a->proxies;
+    p->hull_box = calloc(6 * (size_t)(p->n_prototypes ? p->n_prototypes : 1), sizeof *p->hull_box);
+    if (!p->hull_box) return err_nomem(err, "out of memory for the crown proxies");
+    for (uint32_t k = 0; k < p->n_prototypes; k++)
+        if (p->hull[k]) mesh_bounds(p->hull[k], p->hull_box + 6 * (size_t)k, p->hull_box + 6 * (size_t)k + 3);
     RTCGeometry g = rtcNewGeometry(a->device, RTC_GEOMETRY_TYPE_USER);
     if (!g) return accel_device_error(a, err) ? -1 : err_nomem(err, "out of memory for the crown proxies");
     rtcSetGeometryUserPrimitiveCount(g, a->proxies->n);

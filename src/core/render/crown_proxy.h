@@ -52,6 +52,7 @@ typedef struct crown_proxies {
     material *materials;    /* per species: Lambertian, the calibrated reflectance; owned */
     uint32_t n_species;
     uint32_t *plant;        /* per proxy: the plant instance it stands for; owned */
+    float *hull_box;        /* per prototype: its envelope's bounds, lo xyz then hi xyz; owned */
     uint32_t n;             /* proxies in the top scene */
     vec3 sun;               /* unit, toward the sun: the envelopes' transmittance is measured along it */
     vec3 view;              /* the camera's forward direction: their opacity is measured along it */

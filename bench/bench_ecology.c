@@ -18,6 +18,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include "bench_forest.h"
 #include "eco_sim.h"
 #include "render/accel.h"
 #include "plugin/plugin_host.h"
@@ -29,77 +30,18 @@
 #include "util/progress.h"
 #include "util/rng.h"
 
-static double peak_mib(void)
-{
-    struct rusage ru;
-    getrusage(RUSAGE_SELF, &ru);
-    return ru.ru_maxrss / 1024.0;
-}
-
-static float hill_height(double x, double y, double side)
-{
-    double u = x / side, v = y / side;
-    return (float)(40 * sin(5 * u) * cos(4 * v) + 25 * sin(11 * u + 3 * v) + 60 * u);
-}
-
-/* A terrain of n x n nodes over side x side metres. */
-static sylva_heightfield *terrain_new(uint32_t n, double side)
-{
-    sylva_heightfield *hf = calloc(1, sizeof *hf);
-    float *z = malloc((size_t)n * n * sizeof *z);
-    if (!hf || !z) return NULL;
-    *hf = (sylva_heightfield){.size = sizeof *hf, .nx = n, .ny = n, .dx = side / (n - 1), .dy = side / (n - 1),
-                              .z = z, .water_material = -1};
-    for (uint32_t j = 0; j < n; j++)
-        for (uint32_t i = 0; i < n; i++) z[(size_t)j * n + i] = hill_height(i * hf->dx, j * hf->dy, side);
-    return hf;
-}
-
-/* The species of the main job (scenes/default.yaml: beech and spruce by the vessel model, maple by
- * Aono-Kunii, the shrub by the L-system) with `variants` age variants each, from their plugins,
- * on a 513 x 513 terrain of side x side metres instead of the scene's. */
-static scene *real_species(uint32_t variants, double side, unsigned threads, phase_times *times, err_buf *err)
-{
-    plugin_registry *reg = plugin_registry_open(err);
-    scene_file *sf = reg ? scene_file_load(SYLVA_SOURCE_DIR "/scenes/default.yaml", reg, err) : NULL;
-    scene *s = NULL;
-    if (sf) {
-        for (uint32_t i = 0; i < sf->n_species; i++) sf->species[i].variants = variants;
-        build_options bo = {.quiet = 1, .no_ecology = 1, .threads = threads, .times = times};
-        s = scene_build(sf, reg, &bo, err);
-    }
-    if (s) {
-        heightfield_free(s->terrain);
-        if (!(s->terrain = terrain_new(513, side))) {
-            err_nomem(err, "out of memory for the terrain");
-            scene_free(s);
-            s = NULL;
-        }
-    }
-    scene_file_free(sf);
-    plugin_registry_free(reg);
-    return s;
-}
-
 static int bench_instances(uint32_t n_plants, unsigned threads)
 {
     err_buf err = {{0}};
     double side = 2000;
     phase_times times = {{0}};
-    scene *s = real_species(8, side, threads, &times, &err);
+    scene *s = bench_forest_species(8, side, threads, &times, &err);
     if (!s) return fprintf(stderr, "bench: %s\n", err.msg), 4;
     uint64_t tris = 0;
     for (uint32_t p = 0; p < s->n_prototypes; p++) tris += s->prototypes[p].mesh->nt;
-    sylva_plant *plants = malloc((size_t)n_plants * sizeof *plants);
+    sylva_plant *plants = bench_forest_plants(s, n_plants, side);
     if (!plants) return fprintf(stderr, "bench: out of memory\n"), 4;
-    sylva_rng r;
-    rng_stream(&r, 7, "bench plants", 0);
-    for (uint32_t i = 0; i < n_plants; i++)
-        plants[i] = (sylva_plant){.size = sizeof(sylva_plant), .species = i % s->n_species,
-                                  .position = {side * rng_next_double(&r), side * rng_next_double(&r), 0},
-                                  .snap_to_terrain = 1, .rotation = 2 * M_PI * rng_next_double(&r),
-                                  .height = 1 + 20 * rng_next_double(&r), .age = 0.01 + 0.99 * rng_next_double(&r)};
-    double before = peak_mib();
+    double before = bench_peak_mib();
     double t0 = progress_now();
     if (scene_place_plants(s, plants, n_plants, &err)) return fprintf(stderr, "bench: %s\n", err.msg), 4;
     double t_place = progress_now() - t0;
@@ -109,16 +51,16 @@ static int bench_instances(uint32_t n_plants, unsigned threads)
            (unsigned long long)tris, threads);
     printf("  tree variants (the plugins): %.3f s\n", times.seconds[PHASE_TREES]);
     printf("  plants -> instances (scene_place_plants): %.3f s; peak memory %.0f MiB (%.0f MiB before)\n", t_place,
-           peak_mib(), before);
+           bench_peak_mib(), before);
     accel acc;
     t0 = progress_now();
     if (accel_build(&acc, s, threads, &err)) return fprintf(stderr, "bench: %s\n", err.msg), 4;
     double t_bvh = progress_now() - t0;
     printf("  Embree scene over them (accel_build: prototypes and instances): %.3f s; peak memory %.0f MiB\n", t_bvh,
-           peak_mib());
+           bench_peak_mib());
     double total = times.seconds[PHASE_TREES] + t_place + t_bvh;
     printf("  scene build of a saved 1 M-plant forest (variants + instances + BVH): %.2f s (goal <= 3 s); "
-           "peak %.0f MiB (goal <= 1536 MiB)\n", total, peak_mib());
+           "peak %.0f MiB (goal <= 1536 MiB)\n", total, bench_peak_mib());
     accel_free(&acc);
     scene_free(s);
     return 0;
@@ -139,7 +81,7 @@ static int bench_simulation(double side, uint32_t years, unsigned threads)
     host.kind = SYLVA_KIND_ECOLOGY, host.quiet = 1, host.n_species = 4;
     const sylva_host_api *api = host_api_table();
     uint32_t n = (uint32_t)(side / 4) + 1;
-    sylva_heightfield *hf = terrain_new(n, side);
+    sylva_heightfield *hf = bench_terrain_new(n, side);
     const char *names[4] = {"beech", "maple", "spruce", "shrub"};
     sylva_species_info info[4];
     for (int i = 0; i < 4; i++)
@@ -177,7 +119,7 @@ static int bench_simulation(double side, uint32_t years, unsigned threads)
     printf("  per-year time ~ %.3f us x plants (least squares through the origin)\n", 1e6 * slope);
     eco_sim_free(s);
     host_release(&host);
-    free(hf->z), free(hf);
+    heightfield_free(hf);
     scene_free(sc);
     return 0;
 }

@@ -25,6 +25,7 @@ void crown_proxies_free(crown_proxies *p)
     free(p->hull_geom);
     free(p->materials);
     free(p->plant);
+    free(p->hull_box);
     free(p);
 }
 
@@ -211,6 +212,129 @@ static int build_hulls(accel *a, crown_proxies *p, const uint8_t *used, unsigned
     return rc;
 }
 
+/* --- the envelopes as one geometry of the top scene ---------------------------------------- */
+
+/* The inverse of xf (a plant's placement: turn, uniform scale, translation; any invertible xf). */
+static xform3x4 xf_inverse(const xform3x4 *xf)
+{
+    const float(*m)[4] = xf->m;
+    float c00 = m[1][1] * m[2][2] - m[1][2] * m[2][1], c01 = m[1][2] * m[2][0] - m[1][0] * m[2][2],
+          c02 = m[1][0] * m[2][1] - m[1][1] * m[2][0];
+    float det = m[0][0] * c00 + m[0][1] * c01 + m[0][2] * c02, r = 1.0f / det;
+    xform3x4 v;
+    v.m[0][0] = c00 * r, v.m[1][0] = c01 * r, v.m[2][0] = c02 * r;
+    v.m[0][1] = (m[0][2] * m[2][1] - m[0][1] * m[2][2]) * r;
+    v.m[1][1] = (m[0][0] * m[2][2] - m[0][2] * m[2][0]) * r;
+    v.m[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) * r;
+    v.m[0][2] = (m[0][1] * m[1][2] - m[0][2] * m[1][1]) * r;
+    v.m[1][2] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) * r;
+    v.m[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) * r;
+    for (int i = 0; i < 3; i++)
+        v.m[i][3] = -(v.m[i][0] * m[0][3] + v.m[i][1] * m[1][3] + v.m[i][2] * m[2][3]);
+    return v;
+}
+
+/* Proxy j's envelope scene and the ray (org, dir) in its frame. */
+static RTCScene proxy_local_ray(const accel *a, uint32_t j, float org[3], float dir[3])
+{
+    const instance *in = &a->scene->instances[a->proxies->plant[j]];
+    xform3x4 inv = xf_inverse(&in->xf);
+    vec3 o = xf_point(&inv, v3(org[0], org[1], org[2])), d = xf_vector(&inv, v3(dir[0], dir[1], dir[2]));
+    org[0] = o.x, org[1] = o.y, org[2] = o.z, dir[0] = d.x, dir[1] = d.y, dir[2] = d.z;
+    return a->proxies->hull_scene[in->prototype];
+}
+
+/* World bounds of proxy j: its envelope's box, placed. */
+static void proxy_bounds(const struct RTCBoundsFunctionArguments *args)
+{
+    const accel *a = args->geometryUserPtr;
+    const instance *in = &a->scene->instances[a->proxies->plant[args->primID]];
+    const float *lo = a->proxies->hull_box + 6 * (size_t)in->prototype, *hi = lo + 3;
+    float wlo[3] = {INFINITY, INFINITY, INFINITY}, whi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int c = 0; c < 8; c++) {
+        vec3 w = xf_point(&in->xf, v3(c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]));
+        float f[3] = {w.x, w.y, w.z};
+        for (int k = 0; k < 3; k++) wlo[k] = fminf(wlo[k], f[k]), whi[k] = fmaxf(whi[k], f[k]);
+    }
+    /* a little slack for the rounding of the ray's transform into the envelope's frame */
+    float pad = 1e-5f * fmaxf(fmaxf(whi[0] - wlo[0], whi[1] - wlo[1]), whi[2] - wlo[2]);
+    *args->bounds_o = (struct RTCBounds){.lower_x = wlo[0] - pad, .lower_y = wlo[1] - pad, .lower_z = wlo[2] - pad,
+                                         .upper_x = whi[0] + pad, .upper_y = whi[1] + pad, .upper_z = whi[2] + pad};
+}
+
+/* A camera ray against proxy j: its envelope's hit reported as an instance's would be (geomID the
+ * envelope's part, instID[0] the proxy's top-level id, Ng in the envelope's frame). */
+static void proxy_intersect(const struct RTCIntersectFunctionNArguments *args)
+{
+    const accel *a = args->geometryUserPtr;
+    const unsigned n = args->N;
+    float *ray = (float *)args->rayhit;
+    unsigned *hit = (unsigned *)(ray + 12 * (size_t)n); /* RTCHitN after the 12 fields of RTCRayN */
+    for (unsigned i = 0; i < n; i++) {
+        if (args->valid[i] != -1) continue;
+        struct RTCRayHit rh = {.hit = {.geomID = RTC_INVALID_GEOMETRY_ID, .instID = {RTC_INVALID_GEOMETRY_ID}}};
+        float org[3] = {ray[i], ray[n + i], ray[2 * n + i]}, dir[3] = {ray[4 * n + i], ray[5 * n + i], ray[6 * n + i]};
+        RTCScene hull = proxy_local_ray(a, args->primID, org, dir);
+        rh.ray = (struct RTCRay){.org_x = org[0], .org_y = org[1], .org_z = org[2], .tnear = ray[3 * n + i],
+                                 .dir_x = dir[0], .dir_y = dir[1], .dir_z = dir[2], .time = ray[7 * n + i],
+                                 .tfar = ray[8 * n + i], .mask = ~0u};
+        args->context->instID[0] = a->first_proxy + args->primID;
+        rtcIntersect1(hull, args->context, &rh);
+        args->context->instID[0] = RTC_INVALID_GEOMETRY_ID;
+        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
+        ray[8 * n + i] = rh.ray.tfar;
+        float *fhit = (float *)hit;
+        fhit[i] = rh.hit.Ng_x, fhit[n + i] = rh.hit.Ng_y, fhit[2 * n + i] = rh.hit.Ng_z;
+        fhit[3 * n + i] = rh.hit.u, fhit[4 * n + i] = rh.hit.v;
+        hit[5 * n + i] = rh.hit.primID, hit[6 * n + i] = rh.hit.geomID, hit[7 * n + i] = a->first_proxy + args->primID;
+    }
+}
+
+/* A shadow ray across proxy j: through its envelope's transmittance filter, which stops the ray
+ * (and so this) once it is nearly opaque. */
+static void proxy_occluded(const struct RTCOccludedFunctionNArguments *args)
+{
+    const accel *a = args->geometryUserPtr;
+    const unsigned n = args->N;
+    float *ray = (float *)args->ray;
+    for (unsigned i = 0; i < n; i++) {
+        if (args->valid[i] != -1) continue;
+        float org[3] = {ray[i], ray[n + i], ray[2 * n + i]}, dir[3] = {ray[4 * n + i], ray[5 * n + i], ray[6 * n + i]};
+        RTCScene hull = proxy_local_ray(a, args->primID, org, dir);
+        struct RTCRay r = {.org_x = org[0], .org_y = org[1], .org_z = org[2], .tnear = ray[3 * n + i],
+                           .dir_x = dir[0], .dir_y = dir[1], .dir_z = dir[2], .time = ray[7 * n + i],
+                           .tfar = ray[8 * n + i], .mask = ~0u};
+        args->context->instID[0] = a->first_proxy + args->primID;
+        rtcOccluded1(hull, args->context, &r);
+        args->context->instID[0] = RTC_INVALID_GEOMETRY_ID;
+        if (r.tfar < 0.0f) ray[8 * n + i] = -INFINITY;
+    }
+}
+
+/* The proxies as one user geometry of the top scene at a->first_proxy, primitive j proxy j: an
+ * Embree instance per proxy would cost some 400 bytes each (docs/scale.md); a primitive costs its
+ * share of the top BVH. Hits carry the ids an instance of the envelope's scene would. */
+static int add_proxy_field(accel *a, err_buf *err)
+{
+    crown_proxies *p = a->proxies;
+    p->hull_box = calloc(6 * (size_t)(p->n_prototypes ? p->n_prototypes : 1), sizeof *p->hull_box);
+    if (!p->hull_box) return err_nomem(err, "out of memory for the crown proxies");
+    for (uint32_t k = 0; k < p->n_prototypes; k++)
+        if (p->hull[k]) mesh_bounds(p->hull[k], p->hull_box + 6 * (size_t)k, p->hull_box + 6 * (size_t)k + 3);
+    RTCGeometry g = rtcNewGeometry(a->device, RTC_GEOMETRY_TYPE_USER);
+    if (!g) return accel_device_error(a, err) ? -1 : err_nomem(err, "out of memory for the crown proxies");
+    rtcSetGeometryUserPrimitiveCount(g, a->proxies->n);
+    rtcSetGeometryUserData(g, a);
+    rtcSetGeometryBoundsFunction(g, proxy_bounds, NULL);
+    rtcSetGeometryIntersectFunction(g, proxy_intersect);
+    rtcSetGeometryOccludedFunction(g, proxy_occluded);
+    rtcSetGeometryMask(g, ACCEL_MASK_PROXY);
+    rtcCommitGeometry(g);
+    rtcAttachGeometryByID(a->top, g, a->first_proxy);
+    rtcReleaseGeometry(g);
+    return accel_device_error(a, err);
+}
+
 int crown_proxies_attach(accel *a, const camera *c, vec3 sun, double max_pixels, unsigned threads, err_buf *err)
 {
     const scene *s = a->scene;
@@ -241,14 +365,13 @@ int crown_proxies_attach(accel *a, const camera *c, vec3 sun, double max_pixels,
     if (!p->plant) goto nomem;
     a->first_proxy = a->first_instance + s->n_instances;
     for (uint32_t i = 0; i < s->n_instances; i++) {
-        RTCScene hull = p->hull_scene[s->instances[i].prototype];
-        if (!far[i] || !hull) continue;
+        if (!far[i] || !p->hull_scene[s->instances[i].prototype]) continue;
         RTCGeometry g = rtcGetGeometry(a->top, a->first_instance + i);
         rtcSetGeometryMask(g, ACCEL_MASK_FAR_PLANT);
         rtcCommitGeometry(g);
-        if (accel_add_instance(a, hull, &s->instances[i].xf, a->first_proxy + p->n, ACCEL_MASK_PROXY, err)) goto fail;
         p->plant[p->n++] = i;
     }
+    if (p->n && add_proxy_field(a, err)) goto fail;
     rtcCommitScene(a->top);
     free(used);
     free(far);

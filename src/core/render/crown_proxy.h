@@ -27,8 +27,10 @@
  * its branches rather than a pale ball calibrated to the sky's light. A denser crown is opaque
  * and its gaps' light goes into the calibrated reflectance.
  *
- * Ids: crown proxy j is the top-level instance accel.first_proxy + j, mask ACCEL_MASK_PROXY; the
- * plant it stands for keeps its id with mask ACCEL_MASK_FAR_PLANT. Camera rays carry neither
+ * Ids: the proxies are one user geometry of the top scene (mask ACCEL_MASK_PROXY), primitive j
+ * proxy j, whose hits carry the ids an instance of the envelope would: instID[0]
+ * accel.first_proxy + j, geomID the envelope's part (an Embree instance per proxy would cost some
+ * 400 bytes, as much again as the plant's own: docs/scale.md). The plant it stands for keeps its id with mask ACCEL_MASK_FAR_PLANT. Camera rays carry neither
  * ACCEL_MASK_FAR_PLANT nor, in verification mode, ACCEL_MASK_PROXY; every other ray lacks
  * ACCEL_MASK_PROXY (render_ctx.camera_mask, ray_mask).
  *
@@ -50,6 +52,7 @@ typedef struct crown_proxies {
     material *materials;    /* per species: Lambertian, the calibrated reflectance; owned */
     uint32_t n_species;
     uint32_t *plant;        /* per proxy: the plant instance it stands for; owned */
+    float *hull_box;        /* per prototype: its envelope's bounds, lo xyz then hi xyz; owned */
     uint32_t n;             /* proxies in the top scene */
     vec3 sun;               /* unit, toward the sun: the envelopes' transmittance is measured along it */
     vec3 view;              /* the camera's forward direction: their opacity is measured along it */

@@ -17,6 +17,7 @@
  * random numbers and writes only A's flag, so it runs on worker threads with the same result for
  * any thread count. */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 
 #include "eco_parallel.h"
@@ -26,6 +27,8 @@ typedef struct eco_cell_entry {
     double x, y, z, r, power;
     double r_rest;    /* the largest radius from this entry to the end of its cell's list */
     eco_plant *owner;
+    uint32_t age;     /* the owner's, copied: equal power is common, and the tie-break would
+                       * otherwise read every rival's plant record (most of the search's time) */
     uint32_t order;   /* species-then-birth order: the tie-break that keeps the sort fixed */
     uint32_t cell;    /* index of its cell */
 } eco_cell_entry;
@@ -39,7 +42,7 @@ typedef struct dominance_job {
 static int stronger_first(const eco_cell_entry *a, const eco_cell_entry *b)
 {
     if (a->power != b->power) return a->power > b->power ? -1 : 1;
-    if (a->owner->age != b->owner->age) return a->owner->age > b->owner->age ? -1 : 1;
+    if (a->age != b->age) return a->age > b->age ? -1 : 1;
     return a->order < b->order ? -1 : a->order > b->order;
 }
 
@@ -98,25 +101,38 @@ static void dominance_range(void *ctx, size_t begin, size_t end)
         uint32_t w_i = wi < max_w ? (uint32_t)wi : max_w, w_k = wk < max_w ? (uint32_t)wk : max_w;
         uint32_t i0 = i > w_i ? i - w_i : 0, i1 = i + w_i < ni ? i + w_i : ni - 1;
         uint32_t k0 = k > w_k ? k - w_k : 0, k1 = k + w_k < nk ? k + w_k : nk - 1;
+        /* cells ring by ring outward from A's own, where a stronger neighbour is likeliest, so
+         * a dominated plant is found early; a cell wholly beyond reach of A is not opened */
         int dominated = 0;
-        for (uint32_t kk = k0; kk <= k1 && !dominated; kk++) {
-            double ya = t->y0 + kk * cy, dy = A->y < ya ? ya - A->y : A->y > ya + cy ? A->y - ya - cy : 0;
-            for (uint32_t ii = i0; ii <= i1 && !dominated; ii++) {
-                size_t q = ii + (size_t)kk * ni;
-                uint32_t b = s->cell_start[q], b1 = s->cell_start[q + 1];
-                if (b == b1) continue;
-                double xa = t->x0 + ii * cx;
-                double dx = A->x < xa ? xa - A->x : A->x > xa + cx ? A->x - xa - cx : 0;
-                double d2 = dx * dx + dy * dy;
-                for (; b < b1; b++) {
-                    const eco_cell_entry *B = &s->cell[b];
-                    double reach_rest = A->r + B->r_rest;
-                    if (d2 >= reach_rest * reach_rest) break; /* none of the rest reaches A */
-                    if (stronger_first(B, A) >= 0) break;     /* the rest are no stronger */
-                    double ex = A->x - B->x, ey = A->y - B->y, ez = A->z - B->z, r = A->r + B->r;
-                    if (ex * ex + ey * ey + ez * ez < r * r) {
-                        dominated = 1;
-                        break;
+        uint32_t rings = w_i > w_k ? w_i : w_k;
+        double reach2 = reach * reach;
+        for (uint32_t ring = 0; ring <= rings && !dominated; ring++) {
+            uint32_t rk0 = k > ring ? k - ring : 0, rk1 = k + ring < k1 ? k + ring : k1;
+            if (rk0 < k0) rk0 = k0;
+            for (uint32_t kk = rk0; kk <= rk1 && !dominated; kk++) {
+                double ya = t->y0 + kk * cy, dy = A->y < ya ? ya - A->y : A->y > ya + cy ? A->y - ya - cy : 0;
+                int whole_row = kk + ring == k || kk == k + ring; /* the ring's bottom or top row */
+                int64_t step = whole_row || ring == 0 ? 1 : 2 * (int64_t)ring;
+                for (int64_t c = (int64_t)i - ring; c <= (int64_t)i + ring && !dominated; c += step) {
+                    if (c < (int64_t)i0 || c > (int64_t)i1) continue;
+                    uint32_t ii = (uint32_t)c;
+                    size_t q = ii + (size_t)kk * ni;
+                    uint32_t b = s->cell_start[q], b1 = s->cell_start[q + 1];
+                    if (b == b1) continue;
+                    double xa = t->x0 + ii * cx;
+                    double dx = A->x < xa ? xa - A->x : A->x > xa + cx ? A->x - xa - cx : 0;
+                    double d2 = dx * dx + dy * dy;
+                    if (d2 >= reach2) continue;
+                    for (; b < b1; b++) {
+                        const eco_cell_entry *B = &s->cell[b];
+                        double reach_rest = A->r + B->r_rest;
+                        if (d2 >= reach_rest * reach_rest) break; /* none of the rest reaches A */
+                        if (stronger_first(B, A) >= 0) break;     /* the rest are no stronger */
+                        double ex = A->x - B->x, ey = A->y - B->y, ez = A->z - B->z, r = A->r + B->r;
+                        if (ex * ex + ey * ey + ez * ez < r * r) {
+                            dominated = 1;
+                            break;
+                        }
                     }
                 }
             }
@@ -177,7 +193,8 @@ int eco_find_dominance(eco_sim *s, plugin_err *err)
         for (uint32_t q = 0; q < s->pop[j].n; q++) {
             eco_plant *pl = &s->pop[j].plants[q];
             uint32_t c = cell_of(s, pl->x, pl->y);
-            s->cell[start[c]++] = (eco_cell_entry){pl->x, pl->y, pl->z, pl->r, pl->power, 0, pl, order++, c};
+            s->cell[start[c]++] = (eco_cell_entry){.x = pl->x, .y = pl->y, .z = pl->z, .r = pl->r, .power = pl->power,
+                                                   .owner = pl, .age = pl->age, .order = order++, .cell = c};
         }
     /* start[c] now holds the end of cell c: shift back to starts. */
     for (size_t c = n_cells; c > 0; c--) start[c] = start[c - 1];

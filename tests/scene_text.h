@@ -1,5 +1,5 @@
 /* scene_text.h — scene files written by a test into its work folder (work_dir.h), loaded and
- * built without plugins, rendered, and the world bounds of a built object. Header-only, for the test
+ * built without plugins, rendered, a grey material added, and the world bounds of a built object. Header-only, for the test
  * executables. */
 #ifndef SYLVA_TEST_SCENE_TEXT_H
 #define SYLVA_TEST_SCENE_TEXT_H
@@ -53,6 +53,17 @@ static inline film *scene_text_render_on(const scene *s, unsigned threads)
 
 /* As scene_text_render_on, on two threads. */
 static inline film *scene_text_render(const scene *s) { return scene_text_render_on(s, 2); }
+
+/* Adds a grey Lambertian material to s; its id. */
+static inline int32_t scene_text_lambert(scene *s, const char *name, double albedo)
+{
+    err_buf err = {{0}};
+    sylva_material_desc m = {.size = sizeof m, .name = name, .bsdf = SYLVA_BSDF_LAMBERT,
+                             .albedo = {(float)albedo, (float)albedo, (float)albedo}, .texture = -1};
+    int32_t id = scene_add_material(s, &m, &err);
+    CHECK(!err.msg[0]);
+    return id;
+}
 
 /* The world bounds of object o's vertices. */
 static inline void scene_text_object_bounds(const scene *s, uint32_t o, double lo[3], double hi[3])

@@ -11,16 +11,6 @@
 
 #define SIZE 16
 
-static int32_t lambert(scene *s, const char *name, double albedo)
-{
-    err_buf err = {{0}};
-    sylva_material_desc m = {.size = sizeof m, .name = name, .bsdf = SYLVA_BSDF_LAMBERT,
-                             .albedo = {(float)albedo, (float)albedo, (float)albedo}, .texture = -1};
-    int32_t id = scene_add_material(s, &m, &err);
-    CHECK(!err.msg[0]);
-    return id;
-}
-
 static void add_shape(scene *s, const char *name, const shape_spec *spec, int32_t mat)
 {
     err_buf err = {{0}};
@@ -56,7 +46,7 @@ TEST(constant_sky_is_reached_by_bsdf_sampling)
     s->sun = (sun_settings){.enabled = 0, .direction = {0, 0, 1}};
     s->sky = (sky_settings){.model = SKY_CONSTANT, .scale = 1, .color = {1, 1, 1}};
     shape_spec box = {.kind = SHAPE_BOX, .size = {6, 6, 6}};
-    add_shape(s, "cube", &box, lambert(s, "white", 0.8));
+    add_shape(s, "cube", &box, scene_text_lambert(s, "white", 0.8));
     film *one = scene_text_render_on(s, 1), *two = scene_text_render_on(s, 2);
     if (one && two) {
         double mean, sd;
@@ -110,7 +100,7 @@ TEST(ground_under_sun_and_sky)
         else
             s->sky = (sky_settings){.model = SKY_PREETHAM, .turbidity = 3, .scale = 1, .ground_albedo = 0.2};
         shape_spec quad = {.kind = SHAPE_QUAD, .size = {400, 400}};
-        add_shape(s, "ground", &quad, lambert(s, "grey", 0.5));
+        add_shape(s, "ground", &quad, scene_text_lambert(s, "grey", 0.5));
         double expect = 0.5 / M_PI * (sin(el) + sky_irradiance_up(&s->sun, &s->sky));
         film *f = scene_text_render_on(s, 2);
         if (f) {

@@ -36,7 +36,7 @@ static void print_machine(void)
             break;
         }
     if (f) fclose(f);
-    printf("machine: %s, %u processors online\n", model, ifs_online_processors());
+    printf("machine: %s, %u processors online\n", model, plugin_threads_online());
 }
 
 static ifs_maps *bench_maps(uint32_t n, double alpha, ifs_dtm **dtm_out)

@@ -20,7 +20,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
-#include "eco_parallel.h"
+#include "plugin_threads.h"
 #include "eco_sim.h"
 
 typedef struct eco_cell_entry {
@@ -199,8 +199,8 @@ int eco_find_dominance(eco_sim *s, plugin_err *err)
     /* start[c] now holds the end of cell c: shift back to starts. */
     for (size_t c = n_cells; c > 0; c--) start[c] = start[c - 1];
     start[0] = 0;
-    eco_parallel_for(s->config.threads, n_cells, sort_range, s);
+    plugin_threads_for(s->config.threads, n_cells, sort_range, s);
     dominance_job job = {s, r_max};
-    eco_parallel_for(s->config.threads, n, dominance_range, &job);
+    plugin_threads_for(s->config.threads, n, dominance_range, &job);
     return SYLVA_OK;
 }

@@ -7,12 +7,13 @@
  * species has its own plants and streams, so the species run on worker threads with the same
  * result for any thread count. */
 #include "eco_growth.h"
-#include "eco_parallel.h"
+#include "plugin_threads.h"
 #include "eco_sim.h"
 
 /* One species' year of growth: it writes only its own plants and seeds. */
-static void grow_species(void *ctx, size_t j)
+static void grow_species(void *ctx, uint32_t worker, uint64_t j)
 {
+    (void)worker;
     eco_sim *s = ctx;
     const eco_species *sp = &s->species[j];
     eco_population *pop = &s->pop[j];
@@ -31,7 +32,7 @@ static void grow_species(void *ctx, size_t j)
     s->seeds[j] = seeds;
 }
 
-void eco_grow(eco_sim *s) { eco_parallel_each(s->config.threads, s->n_species, grow_species, s); }
+void eco_grow(eco_sim *s) { plugin_threads_run(s->config.threads, s->n_species, grow_species, s, NULL, NULL); }
 
 typedef struct death_job {
     eco_sim *s;
@@ -39,8 +40,9 @@ typedef struct death_job {
 } death_job;
 
 /* One species' deaths: its own plants and its own streams, so the species run on any thread. */
-static void remove_dead_species(void *ctx, size_t j)
+static void remove_dead_species(void *ctx, uint32_t worker, uint64_t j)
 {
+    (void)worker;
     static const struct {
         int fav;
         eco_stream stream;
@@ -72,5 +74,5 @@ static void remove_dead_species(void *ctx, size_t j)
 void eco_remove_dead(eco_sim *s, const eco_random *rnd)
 {
     death_job job = {s, rnd};
-    eco_parallel_each(s->config.threads, s->n_species, remove_dead_species, &job);
+    plugin_threads_run(s->config.threads, s->n_species, remove_dead_species, &job, NULL, NULL);
 }

@@ -11,7 +11,7 @@
 #include <stdlib.h>
 
 #include "eco_growth.h"
-#include "eco_parallel.h"
+#include "plugin_threads.h"
 #include "eco_sim.h"
 
 static int by_index(const void *a, const void *b)
@@ -68,8 +68,9 @@ typedef struct sowing_job {
 
 /* One species' seedlings (Algorithm 7), from its own streams into its own population, whose
  * room the caller reserved: so the species may run on any thread. */
-static void sow_species(void *ctx, size_t j)
+static void sow_species(void *ctx, uint32_t worker, uint64_t j)
 {
+    (void)worker;
     const sowing_job *job = ctx;
     eco_sim *s = job->s;
     const eco_random *rnd = job->rnd;
@@ -165,7 +166,7 @@ int eco_reproduce(eco_sim *s, const eco_random *rnd, plugin_err *err)
     /* ... then every species sows its own, on worker threads. */
     if (!rc) {
         sowing_job job = {s, rnd, n_new, failed};
-        eco_parallel_each(s->config.threads, s->n_species, sow_species, &job);
+        plugin_threads_run(s->config.threads, s->n_species, sow_species, &job, NULL, NULL);
         for (uint32_t j = 0; j < s->n_species && !rc; j++)
             if (failed[j]) rc = plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for %u seedlings", n_new[j]);
     }

@@ -9,7 +9,7 @@
  * picture is mirrored: noon in the north, sunrise south of east. */
 #include <math.h>
 
-#include "eco_parallel.h"
+#include "plugin_threads.h"
 #include "eco_terrain.h"
 
 void eco_sun_sample(double latitude_deg, uint32_t n_l, uint32_t n, double dir[3], double *weight)
@@ -95,5 +95,5 @@ void eco_sunniness(eco_terrain *t, const eco_factor_params *fp)
     double z_max = t->cz[0];
     for (size_t p = 1; p < n; p++) z_max = t->cz[p] > z_max ? t->cz[p] : z_max;
     sun_job j = {t, fp, z_max};
-    eco_parallel_for(fp->threads, n, sun_range, &j);
+    plugin_threads_for(fp->threads, n, sun_range, &j);
 }

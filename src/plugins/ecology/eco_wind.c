@@ -5,7 +5,7 @@
  * stores the angle itself, which is not in [0, 1].) */
 #include <math.h>
 
-#include "eco_parallel.h"
+#include "plugin_threads.h"
 #include "eco_terrain.h"
 
 typedef struct wind_job {
@@ -45,5 +45,5 @@ void eco_windiness(eco_terrain *t, const eco_factor_params *fp)
 {
     double az = fp->wind_azimuth_deg * M_PI / 180.0;
     wind_job j = {t, sin(az), cos(az), fp->wind_samples, fp->shelter_deg * M_PI / 180.0};
-    eco_parallel_for(fp->threads, (size_t)t->ni * t->nk, wind_range, &j);
+    plugin_threads_for(fp->threads, (size_t)t->ni * t->nk, wind_range, &j);
 }

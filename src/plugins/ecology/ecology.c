@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "eco_parallel.h"
+#include "plugin_threads.h"
 #include "eco_schema.h"
 #include "eco_sim.h"
 #include "plugin_host.h"
@@ -122,7 +122,7 @@ static int eco_create(const sylva_host_api *api, sylva_host *host, const sylva_p
     /* The scene's own count, else the run's (--threads), else one per processor. */
     c->threads = threads > 0                     ? (unsigned)threads
                  : SYLVA_API_HAS(api, threads) ? api->threads(host)
-                                               : eco_cpu_count();
+                                               : plugin_threads_online();
     f->threads = c->threads;
     c->years = (uint32_t)sylva_param_int(params, "years");
     c->max_plants = (uint64_t)sylva_param_int(params, "max_plants");

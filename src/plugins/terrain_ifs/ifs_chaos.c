@@ -169,10 +169,10 @@ int ifs_chaos_grid(const ifs_maps *m, const ifs_chaos_job *job, float *z, ifs_ch
                         job->nx, job->ny);
     uint64_t chains = ifs_chaos_chain_count(job->points);
     uint32_t workers = job->threads < 1 ? 1 : job->threads;
-    if (workers > IFS_MAX_THREADS) workers = IFS_MAX_THREADS;
+    if (workers > PLUGIN_MAX_THREADS) workers = PLUGIN_MAX_THREADS;
     if (workers > chains) workers = (uint32_t)chains;
     size_t nodes = (size_t)win.nx * win.ny;
-    node_sum *acc[IFS_MAX_THREADS] = {0}; /* owned here, one grid per worker */
+    node_sum *acc[PLUGIN_MAX_THREADS] = {0}; /* owned here, one grid per worker */
     uint64_t *empty_per_row = malloc((size_t)win.ny * sizeof *empty_per_row);
     int rc = SYLVA_OK;
     if (!empty_per_row) {
@@ -197,18 +197,18 @@ int ifs_chaos_grid(const ifs_maps *m, const ifs_chaos_job *job, float *z, ifs_ch
     double quantum_per_metre = m->z_bound > 0 ? 2147483647.0 / m->z_bound : 1.0;
     chaos_run run = {.m = m, .job = job, .acc = acc, .window = win,
                      .quantum_per_metre = quantum_per_metre};
-    uint32_t ran = ifs_parallel_run(workers, chains, chaos_chain, &run, job->progress, job->pctx);
+    uint32_t ran = plugin_threads_run(workers, chains, chaos_chain, &run, job->progress, job->pctx);
     merge_run mr = {.m = m, .job = job, .acc = acc, .workers = workers, .window = win,
                     .metres_per_quantum = 1.0 / quantum_per_metre, .z = z,
                     .empty_per_row = empty_per_row};
-    ifs_parallel_run(workers, win.ny, merge_row, &mr, NULL, NULL);
+    plugin_threads_run(workers, win.ny, merge_row, &mr, NULL, NULL);
     if (stats) {
         stats->empty_nodes = 0;
         for (uint32_t j = 0; j < win.ny; j++) stats->empty_nodes += empty_per_row[j];
         stats->workers = ran;
     }
 done:
-    for (uint32_t w = 0; w < IFS_MAX_THREADS; w++) free(acc[w]);
+    for (uint32_t w = 0; w < PLUGIN_MAX_THREADS; w++) free(acc[w]);
     free(empty_per_row);
     return rc;
 }

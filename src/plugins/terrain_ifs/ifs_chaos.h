@@ -16,7 +16,7 @@
 #include "ifs_err.h"
 #include "ifs_eval.h"
 #include "ifs_maps.h"
-#include "ifs_parallel.h"
+#include "plugin_threads.h"
 #include "sylva/plugin.h"
 
 #define IFS_CHAIN_POINTS (1u << 20) /* points per chain */
@@ -32,8 +32,8 @@ typedef struct ifs_chaos_job {
     ifs_window window;        /* the nodes written (points nearest other nodes are dropped);
                                  all zero: the whole grid */
     uint32_t depth;           /* depth of the deterministic evaluation for nodes no point reached */
-    uint32_t threads;         /* workers, 1 .. IFS_MAX_THREADS */
-    ifs_progress_fn progress; /* may be NULL; called on the calling thread */
+    uint32_t threads;         /* workers, 1 .. PLUGIN_MAX_THREADS */
+    plugin_progress_fn progress; /* may be NULL; called on the calling thread */
     void *pctx;
 } ifs_chaos_job;
 

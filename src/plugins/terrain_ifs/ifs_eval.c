@@ -77,14 +77,14 @@ static void eval_row(void *ctx, uint32_t worker, uint64_t row)
 }
 
 int ifs_eval_grid(const ifs_maps *m, uint32_t nx_out, uint32_t ny_out, uint32_t depth,
-                  uint32_t threads, float *z, ifs_progress_fn progress, void *pctx, ifs_err *err)
+                  uint32_t threads, float *z, plugin_progress_fn progress, void *pctx, ifs_err *err)
 {
     ifs_window whole = {0, 0, nx_out, ny_out};
     return ifs_eval_window(m, nx_out, ny_out, &whole, depth, threads, z, progress, pctx, err);
 }
 
 int ifs_eval_window(const ifs_maps *m, uint32_t nx_out, uint32_t ny_out, const ifs_window *w,
-                    uint32_t depth, uint32_t threads, float *z, ifs_progress_fn progress,
+                    uint32_t depth, uint32_t threads, float *z, plugin_progress_fn progress,
                     void *pctx, ifs_err *err)
 {
     if (nx_out < 2 || ny_out < 2)
@@ -99,6 +99,6 @@ int ifs_eval_window(const ifs_maps *m, uint32_t nx_out, uint32_t ny_out, const i
                         "not lie inside the %u x %u output grid", w->nx, w->ny, w->i0, w->j0,
                         nx_out, ny_out);
     eval_job job = {.m = m, .nx = nx_out, .ny = ny_out, .depth = depth, .w = *w, .z = z};
-    ifs_parallel_run(threads, w->ny, eval_row, &job, progress, pctx);
+    plugin_threads_run(threads, w->ny, eval_row, &job, progress, pctx);
     return SYLVA_OK;
 }

@@ -16,7 +16,7 @@
 
 #include "ifs_err.h"
 #include "ifs_maps.h"
-#include "ifs_parallel.h"
+#include "plugin_threads.h"
 
 #define IFS_MAX_DEPTH 64u          /* deepest f_K evaluated */
 #define IFS_DEPTH_TOLERANCE 1e-4   /* auto depth: the weight alpha_max^K of what is left out */
@@ -36,7 +36,7 @@ uint32_t ifs_eval_auto_depth(const ifs_maps *m, uint32_t nx_out, uint32_t ny_out
  * sx = i (N - 1) / (nx_out - 1), sy likewise), row 0 south, into z (nx_out * ny_out floats).
  * Rows are shared among `threads` workers; the result does not depend on their number. */
 int ifs_eval_grid(const ifs_maps *m, uint32_t nx_out, uint32_t ny_out, uint32_t depth,
-                  uint32_t threads, float *z, ifs_progress_fn progress, void *pctx, ifs_err *err);
+                  uint32_t threads, float *z, plugin_progress_fn progress, void *pctx, ifs_err *err);
 
 /* A window of an output grid: its nodes [i0, i0 + nx) x [j0, j0 + ny). */
 typedef struct ifs_window {
@@ -47,7 +47,7 @@ typedef struct ifs_window {
  * (w->nx * w->ny floats, row 0 the window's southern row): each node the same number as in the
  * whole grid. */
 int ifs_eval_window(const ifs_maps *m, uint32_t nx_out, uint32_t ny_out, const ifs_window *w,
-                    uint32_t depth, uint32_t threads, float *z, ifs_progress_fn progress,
+                    uint32_t depth, uint32_t threads, float *z, plugin_progress_fn progress,
                     void *pctx, ifs_err *err);
 
 #endif

@@ -20,7 +20,7 @@
 #include "dtm_generate.h"
 #include "humidity_map.h"
 #include "raster_gdal.h"
-#include "ifs_parallel.h"
+#include "plugin_threads.h"
 #include "lod_levels.h"
 #include "ifs_chaos.h"
 #include "ifs_eval.h"
@@ -150,7 +150,7 @@ static int memory_fits(void *ctx, uint32_t nx, uint32_t ny, ifs_err *err)
     if (sylva_param_str(m->params, "humidity_map")) per_out += 4;
     if (sylva_param_int(m->params, "method") == 0) {
         uint64_t threads = (uint64_t)sylva_param_int(m->params, "threads");
-        per_out += 16 * (threads ? threads : ifs_online_processors());
+        per_out += 16 * (threads ? threads : plugin_threads_online());
     }
     char what[600];
     snprintf(what, sizeof what, "terrain_ifs: the %u x %u node DTM %s refined to %llu x %llu "
@@ -400,8 +400,8 @@ static int terrain_setup(const sylva_host_api *api, sylva_host *host, const sylv
     /* The scene's own count, else the run's (--threads), else one per processor. */
     s->threads = threads                       ? threads
                  : SYLVA_API_HAS(api, threads) ? api->threads(host)
-                                               : ifs_online_processors();
-    if (s->threads > IFS_MAX_THREADS) s->threads = IFS_MAX_THREADS;
+                                               : plugin_threads_online();
+    if (s->threads > PLUGIN_MAX_THREADS) s->threads = PLUGIN_MAX_THREADS;
 
     /* The starting point: the DTM origin (U, V) = (0, 0) at its height, or the scene's point. */
     const sylva_value *start = sylva_param(params, "start");

@@ -117,7 +117,7 @@ const sylva_param_spec terrain_ifs_params[] = {
     {.name = "output_nodes", .type = SYLVA_P_LIST, .flags = RANGE, .min = 2, .max = 65536,
      .max_len = 2, .help = "Output grid size [nx, ny] in nodes, instead of refine."},
     {.name = "threads", .type = SYLVA_P_INT, .flags = RANGE, .def = 0, .min = 0,
-     .max = IFS_MAX_THREADS,
+     .max = PLUGIN_MAX_THREADS,
      .help = "Worker threads; 0: the run's --threads, else one per processor. The heights do not depend on it."},
     /* --- ground cover and water ----------------------------------------------------------- */
     {.name = "surface", .type = SYLVA_P_ENUM, .def_str = "classes", .choices = surface_choices,

@@ -201,11 +201,10 @@ static int build_top(accel *a, const scene *s, err_buf *err)
         if (accel_add_instance(a, a->proto_scenes[s->instances[i].prototype], &s->instances[i].xf, a->first_instance + i,
                          s->instances[i].development ? ACCEL_MASK_DEVELOPMENT : ACCEL_MASK_PLANT, err))
             return -1;
-    rtcCommitScene(a->top);
     return accel_device_error(a, err);
 }
 
-int accel_build(accel *a, const scene *s, unsigned threads, err_buf *err)
+int accel_build_open(accel *a, const scene *s, unsigned threads, err_buf *err)
 {
     memset(a, 0, sizeof *a);
     a->scene = s;
@@ -234,14 +233,29 @@ int accel_build(accel *a, const scene *s, unsigned threads, err_buf *err)
         goto fail;
     }
     if (build_prototypes(a, s, err) || build_top(a, s, err)) goto fail;
+    return 0;
+fail:
+    accel_free(a);
+    return -1;
+}
+
+int accel_commit(accel *a, err_buf *err)
+{
+    rtcCommitScene(a->top);
+    if (accel_device_error(a, err)) {
+        accel_free(a);
+        return -1;
+    }
     struct RTCBounds b;
     rtcGetSceneBounds(a->top, &b);
     a->bounds_lo[0] = b.lower_x, a->bounds_lo[1] = b.lower_y, a->bounds_lo[2] = b.lower_z;
     a->bounds_hi[0] = b.upper_x, a->bounds_hi[1] = b.upper_y, a->bounds_hi[2] = b.upper_z;
     return 0;
-fail:
-    accel_free(a);
-    return -1;
+}
+
+int accel_build(accel *a, const scene *s, unsigned threads, err_buf *err)
+{
+    return accel_build_open(a, s, threads, err) || accel_commit(a, err) ? -1 : 0;
 }
 
 void accel_free(accel *a)

@@ -115,8 +115,15 @@ typedef struct hit_info {
     geom_kind kind;
 } hit_info;
 
-/* Builds everything. threads: Embree's build threads (0: all). Returns 0 or -1 with err. */
+/* Builds everything. threads: Embree's build threads (0: all). Returns 0 or -1 with err.
+ * accel_build_open then accel_commit. */
 int accel_build(accel *a, const scene *s, unsigned threads, err_buf *err);
+/* Builds everything but the top scene's BVH, so that geometry can still be added to the top
+ * scene or re-masked (the crown proxies) before its one build; accel_commit finishes. Returns 0
+ * or -1 with err (a freed). */
+int accel_build_open(accel *a, const scene *s, unsigned threads, err_buf *err);
+/* Builds the top scene's BVH and reads the scene's bounds. Returns 0 or -1 with err (a freed). */
+int accel_commit(accel *a, err_buf *err);
 void accel_free(accel *a); /* accepts a zeroed accel */
 
 /* The first error Embree reported on a's device since it was built, into err: returns -1 with

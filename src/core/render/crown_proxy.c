@@ -372,7 +372,6 @@ int crown_proxies_attach(accel *a, const camera *c, vec3 sun, double max_pixels,
         p->plant[p->n++] = i;
     }
     if (p->n && add_proxy_field(a, err)) goto fail;
-    rtcCommitScene(a->top);
     free(used);
     free(far);
     free(leaf);

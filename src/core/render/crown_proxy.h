@@ -58,7 +58,7 @@ typedef struct crown_proxies {
     vec3 view;              /* the camera's forward direction: their opacity is measured along it */
 } crown_proxies;
 
-/* Adds to a (built by accel_build) a crown proxy for every plant outside the development whose
+/* Adds to a (built by accel_build_open, before accel_commit) a crown proxy for every plant outside the development whose
  * species has a crown and whose projected height through camera c is below max_pixels, with
  * reflectance 1 until calibrated; sun (unit, toward it) sets the envelopes' transmittance. The
  * envelopes are built on up to `threads` threads (0: one per processor), the same for any

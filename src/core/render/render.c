@@ -100,15 +100,23 @@ static void ctx_init(render_ctx *ctx, render_setup *rs, const render_options *o,
 }
 
 /* The crown proxies of the plants that look small through the camera at w x h
- * (crown_proxy.h), calibrated; nothing in verification mode or with image.crown_proxy 0. */
-static int setup_proxies(render_setup *rs, const render_options *o, uint32_t w, uint32_t h, err_buf *err)
+ * (crown_proxy.h), before the top scene's BVH is built; nothing in verification mode or with
+ * image.crown_proxy 0. */
+static int attach_proxies(render_setup *rs, const render_options *o, uint32_t w, uint32_t h, err_buf *err)
 {
     if (o->verify || !(rs->scene->image.crown_proxy > 0)) return 0;
+    camera cam;
+    camera_init(&cam, &rs->scene->camera, w, h);
+    vec3 sun = rs->lt.summary.sun_on ? rs->lt.summary.sun_dir : v3(0.0f, 0.7071f, 0.7071f);
+    return crown_proxies_attach(&rs->acc, &cam, sun, rs->scene->image.crown_proxy, thread_count(o), err);
+}
+
+/* The proxies' reflectances, once the top scene's BVH is built. */
+static int calibrate_proxies(render_setup *rs, const render_options *o, uint32_t w, uint32_t h, err_buf *err)
+{
+    if (!rs->acc.proxies) return 0;
     render_ctx ctx;
     ctx_init(&ctx, rs, o, w, h);
-    vec3 sun = rs->lt.summary.sun_on ? rs->lt.summary.sun_dir : v3(0.0f, 0.7071f, 0.7071f);
-    if (crown_proxies_attach(&rs->acc, &ctx.camera, sun, rs->scene->image.crown_proxy, thread_count(o), err))
-        return -1;
     return crown_proxies_calibrate(&rs->acc, &ctx, thread_count(o), err);
 }
 
@@ -123,18 +131,32 @@ render_setup *render_setup_new(const scene *s, const render_options *opt, err_bu
         return NULL;
     }
     rs->scene = s;
-    if (accel_build(&rs->acc, s, thread_count(opt), err)) {
+    /* one build of the top scene's BVH, with the crown proxies already in it */
+    if (accel_build_open(&rs->acc, s, thread_count(opt), err)) {
         free(rs);
         return NULL;
     }
-    rs->bvh_seconds = progress_now() - t0;
+    double t_open = progress_now() - t0;
     camera cam; /* the pixel's angle sets how finely the ground's texture is resolved */
     camera_init(&cam, &s->camera, w, h);
     rs->acc.pixel_angle = (float)camera_smallest_pixel_angle(&cam);
     rs->acc.flat_ground = opt->verify;
     rs->acc.bark_relief = !opt->verify; /* POV-Ray, which the verification matches, has none */
     if (lights_init(&rs->lt, &s->sun, &s->sky, s->site.origin[2], s->camera.position[2], err) ||
-        setup_proxies(rs, opt, w, h, err)) {
+        attach_proxies(rs, opt, w, h, err)) {
+        lights_free(&rs->lt);
+        accel_free(&rs->acc);
+        free(rs);
+        return NULL;
+    }
+    double t_commit = progress_now();
+    if (accel_commit(&rs->acc, err)) {
+        lights_free(&rs->lt);
+        free(rs);
+        return NULL;
+    }
+    rs->bvh_seconds = t_open + progress_now() - t_commit;
+    if (calibrate_proxies(rs, opt, w, h, err)) {
         lights_free(&rs->lt);
         accel_free(&rs->acc);
         free(rs);

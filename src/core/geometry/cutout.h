@@ -8,10 +8,10 @@
  * The test at a hit runs millions of times per frame, on meshes of a million triangles and more,
  * so a cut-out part carries what it needs in its own triangle order: per triangle one small
  * record (its corners' uvs as numbers into the part's table of distinct uvs, and its mask: one
- * byte on leaf cards, whose corners hold 4 distinct uvs), and per texture a coverage mask, one bit per
- * texel (cutout_texel_kept, decided once). Its decision
- * (cutout_part_point_kept) is the one cutout_point_kept takes from the mesh, bit for bit: the
- * same uvs, interpolated by the same arithmetic (cutout_uv), at the same texel.
+ * byte on leaf cards, whose corners hold 4 distinct uvs), and per texture a coverage mask, one
+ * bit per texel (cutout_texel_kept, decided once). Its decision (cutout_part_point_kept) is the
+ * one cutout_point_kept takes from the mesh, bit for bit: the same uvs, interpolated by the same
+ * arithmetic (cutout_uv), at the same texel.
  *
  * Ownership: a cutout_part owns all its arrays (cutout_part_free); it borrows nothing.
  */
@@ -66,7 +66,7 @@ typedef struct cutout_part {
     /* per triangle a record of 4 numbers, each number_bits wide (2, 4, 8, 16 or 32: as few as
      * hold the largest), little-endian, number 0 in the lowest bits: its 3 corners' uvs, as
      * numbers into uv, and its texture's mask, a number into masks. 8 bytes of slack at the end
-     * let a record be read as one 64-bit word. Owned. */
+     * let a record be read in whole 64-bit words. Owned. */
     uint8_t *corners;
     uint32_t number_bits;
     float *uv;          /* 2 per distinct uv of the triangles' corners, bit for bit the mesh's; owned */

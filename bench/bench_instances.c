@@ -10,9 +10,15 @@
  *     (cut-out filters included), timed, scheduled as the renderer schedules its tiles: the
  *     rays, in the order they were cast, cut into as many runs as the frame has 16 x 16 tiles,
  *     one run at a time handed to the threads from one atomic counter;
+ *  4. on the leaf cards, replays them again with the cut-out test reading the mesh as it did
+ *     before the parts carried their own records (cutout_point_kept: the triangle's number, its
+ *     corners, material and uvs, and the texture's alpha), the baseline of the test's cost;
  * renderer and replay runs alternate, three of each, and the best of each is kept; then it
- * prints the renderer's share of raw Embree throughput. Usage:
- *   bench_instances [--instances N] [--size WxH] [--spp N] [--threads N]
+ * prints the renderer's share of raw Embree throughput and the replay's speed with the part's
+ * cut-out test against the mesh-reading one. Usage:
+ *   bench_instances [--instances N] [--cards N] [--size WxH] [--spp N] [--threads N]
+ * (--cards: leaf cards in the crown, 2000 unless given; a crown of a million triangles and more
+ * shows the memory waits of the leaf forests.)
  */
 #include <math.h>
 #include <stdio.h>
@@ -57,13 +63,13 @@ static void record_ray(void *user, vec3 o, vec3 d, float tfar, int shadow)
     log->shadow += shadow;
 }
 
-/* 2000 leaf cards (two triangles each, uv over the whole texture) in a crown of radius 3 about
- * (0, 0, 3), all in material mat. */
-static int leaf_cards(int32_t mat, mesh *m, err_buf *err)
+/* n_cards leaf cards (two triangles each, uv over the whole texture) in a crown of radius 3
+ * about (0, 0, 3), all in material mat. */
+static int leaf_cards(int32_t mat, uint32_t n_cards, mesh *m, err_buf *err)
 {
     sylva_rng r;
     rng_stream(&r, 9, "bench leaf cards", 0);
-    for (int k = 0; k < 2000; k++) {
+    for (uint32_t k = 0; k < n_cards; k++) {
         vec3 c;
         do c = v3((float)(2 * rng_next_double(&r) - 1), (float)(2 * rng_next_double(&r) - 1),
                   (float)(2 * rng_next_double(&r) - 1));
@@ -98,7 +104,7 @@ static int32_t leaf_texture(scene *s, err_buf *err)
     return scene_add_texture(s, "bench leaf", N, N, rgba, err);
 }
 
-static scene *bench_scene(uint32_t n_instances, int cards, err_buf *err)
+static scene *bench_scene(uint32_t n_instances, uint32_t cards, err_buf *err)
 {
     scene *s = scene_new();
     if (!s) return NULL;
@@ -125,11 +131,11 @@ static scene *bench_scene(uint32_t n_instances, int cards, err_buf *err)
     sylva_material_desc green = {.size = sizeof green, .name = "crown", .bsdf = SYLVA_BSDF_LEAF,
                                  .albedo = {0.1f, 0.25f, 0.06f}, .transmittance = {0.05f, 0.12f, 0.03f}, .texture = -1};
     if (cards && (green.texture = leaf_texture(s, err)) < 0) return NULL;
-    green.alpha_mask = cards;
+    green.alpha_mask = cards > 0;
     int32_t mat = scene_add_material(s, &green, err);
     mesh *m = mesh_new();
     shape_spec sphere = {.kind = SHAPE_SPHERE, .radius = 3, .subdivisions = 5};
-    if (mat < 0 || !m || (cards ? leaf_cards(mat, m, err) : shape_build(&sphere, mat, m, err))) return NULL;
+    if (mat < 0 || !m || (cards ? leaf_cards(mat, cards, m, err) : shape_build(&sphere, mat, m, err))) return NULL;
     s->species = calloc(1, sizeof(species));
     s->species[0] = (species){.name = strdup(cards ? "cards" : "ball"), .first_prototype = 0, .n_variants = 1};
     s->n_species = 1;
@@ -149,6 +155,26 @@ static scene *bench_scene(uint32_t n_instances, int cards, err_buf *err)
 }
 
 #define TILE 16 /* the renderer's tile side (render.c) */
+
+/* The cut-out test of the replay's filters: 0, the part's own records (cutout_part_point_kept,
+ * as the renderer tests); 1, the mesh read through the part's to_mesh (cutout_point_kept), as
+ * the renderer tested before. Set between replays, read by their threads. */
+static int replay_reads_mesh;
+
+static void replay_cutout_filter(const struct RTCFilterFunctionNArguments *args)
+{
+    const geom_info *g = args->geometryUserPtr;
+    const unsigned n = args->N;
+    const float *hit = (const float *)args->hit; /* RTCHitN: Ng x, y, z, u, v, primID, ... each n long */
+    for (unsigned i = 0; i < n; i++) {
+        if (args->valid[i] != -1) continue;
+        float u = hit[3 * n + i], v = hit[4 * n + i];
+        uint32_t prim = ((const uint32_t *)hit)[5 * n + i];
+        int kept = replay_reads_mesh ? cutout_point_kept(g->scene, g->mesh, g->part.to_mesh[prim], u, v)
+                                     : cutout_part_point_kept(&g->part, prim, u, v);
+        if (!kept) args->valid[i] = 0;
+    }
+}
 
 /* The replay: run t is rays[start[t], start[t + 1]). */
 typedef struct replay_job {
@@ -181,7 +207,7 @@ static void replay_tile(void *ctx, unsigned worker, uint32_t t)
 
 /* One scene: record, then renderer and replay alternately; prints its figures. Returns 0 or the
  * exit status. */
-static int bench_one(int cards, uint32_t n_inst, uint32_t w, uint32_t h, uint32_t spp, unsigned threads)
+static int bench_one(uint32_t cards, uint32_t n_inst, uint32_t w, uint32_t h, uint32_t spp, unsigned threads)
 {
     err_buf err = {{0}};
     double t0 = progress_now();
@@ -220,7 +246,15 @@ static int bench_one(int cards, uint32_t n_inst, uint32_t w, uint32_t h, uint32_
     if (!start) return fprintf(stderr, "bench: out of memory\n"), 4;
     for (uint32_t t = 0; t <= runs; t++) start[t] = log.n * t / runs;
     replay_job job = {&acc, log.rays, start};
-    double best_render = 1e30, best_raw = 1e30;
+    if (cards) { /* the replay's cut-out filters, which can read the mesh as before */
+        RTCGeometry leaves = rtcGetGeometry(acc.proto_scenes[0], ACCEL_PART_CUTOUT);
+        rtcSetGeometryIntersectFilterFunction(leaves, replay_cutout_filter);
+        rtcSetGeometryOccludedFilterFunction(leaves, replay_cutout_filter);
+        rtcCommitGeometry(leaves);
+        rtcCommitScene(acc.proto_scenes[0]);
+        rtcCommitScene(acc.top);
+    }
+    double best_render = 1e30, best_raw = 1e30, best_mesh = 1e30;
     render_stats st = {0};
     for (int rep = 0; rep < 3; rep++) {
         render_stats one;
@@ -235,6 +269,13 @@ static int bench_one(int cards, uint32_t n_inst, uint32_t w, uint32_t h, uint32_
         task_pool_run(threads, runs, replay_tile, &job);
         double dt = progress_now() - r0;
         if (dt < best_raw) best_raw = dt;
+        if (!cards) continue;
+        replay_reads_mesh = 1;
+        r0 = progress_now();
+        task_pool_run(threads, runs, replay_tile, &job);
+        dt = progress_now() - r0;
+        replay_reads_mesh = 0;
+        if (dt < best_mesh) best_mesh = dt;
     }
     double renderer_rays = log.n / best_render, raw_rays = log.n / best_raw;
     printf("renderer:   %.3fs for %llu samples: %.0f samples/s, %.2f Mrays/s (%zu rays, %zu shadow); setup %.2fs "
@@ -244,6 +285,9 @@ static int bench_one(int cards, uint32_t n_inst, uint32_t w, uint32_t h, uint32_
            runs, raw_rays / 1e6);
     printf("renderer / raw Embree throughput: %.1f %% (goal >= 70 %%); best of 3 each, alternating\n",
            100.0 * renderer_rays / raw_rays);
+    if (cards)
+        printf("cut-out test: the replay takes %.3fs with the parts' own records, %.3fs reading the mesh as "
+               "before: %.2fx the rays/s (best of 3 each, alternating)\n", best_raw, best_mesh, best_mesh / best_raw);
     accel_free(&acc);
     render_setup_free(rs);
     free(start), free(log.rays);
@@ -253,15 +297,16 @@ static int bench_one(int cards, uint32_t n_inst, uint32_t w, uint32_t h, uint32_
 
 int main(int argc, char **argv)
 {
-    uint32_t n_inst = 100000, spp = 4, w = 480, h = 270;
+    uint32_t n_inst = 100000, spp = 4, w = 480, h = 270, cards = 2000;
     unsigned threads = render_default_threads();
     for (int i = 1; i + 1 < argc; i += 2) {
         if (!strcmp(argv[i], "--instances")) n_inst = (uint32_t)atol(argv[i + 1]);
         else if (!strcmp(argv[i], "--spp")) spp = (uint32_t)atol(argv[i + 1]);
+        else if (!strcmp(argv[i], "--cards") && atol(argv[i + 1]) > 0) cards = (uint32_t)atol(argv[i + 1]);
         else if (!strcmp(argv[i], "--threads")) threads = (unsigned)atol(argv[i + 1]);
         else if (!strcmp(argv[i], "--size")) sscanf(argv[i + 1], "%ux%u", &w, &h);
         else {
-            fprintf(stderr, "usage: bench_instances [--instances N] [--size WxH] [--spp N] [--threads N]\n");
+            fprintf(stderr, "usage: bench_instances [--instances N] [--cards N] [--size WxH] [--spp N] [--threads N]\n");
             return 1;
         }
     }
@@ -272,7 +317,7 @@ int main(int argc, char **argv)
     printf("machine: %s, %ld processors online, load average %.2f\n", cpu, sysconf(_SC_NPROCESSORS_ONLN), load[0]);
     printf("frame: %ux%u, %u spp, max depth 4, %u threads\n", w, h, spp, threads);
     int rc = bench_one(0, n_inst, w, h, spp, threads);
-    if (!rc) rc = bench_one(1, n_inst, w, h, spp, threads);
+    if (!rc) rc = bench_one(cards, n_inst, w, h, spp, threads);
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
     printf("peak memory: %.0f MiB\n", ru.ru_maxrss / 1024.0);

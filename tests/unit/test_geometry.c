@@ -236,6 +236,13 @@ TEST(cutouts)
         CHECK_INT(solid_part.to_mesh[0], 0); CHECK_INT(solid_part.to_mesh[1], 2);
         CHECK(!memcmp(cut.tri + 3, m->tri + 9, 3 * sizeof(uint32_t)));
         CHECK(!memcmp(solid_part.tri + 3, m->tri + 6, 3 * sizeof(uint32_t)));
+        /* the cut-out part's own test: two distinct uvs, one mask, the same decisions */
+        CHECK_INT(cut.n_uv, 2);
+        CHECK_INT(cut.n_masks, 1);
+        CHECK_INT(cut.number_bits, 2);
+        CHECK_INT(cutout_part_point_kept(&cut, 0, 0.2f, 0.2f), 0); /* alpha 127 */
+        CHECK_INT(cutout_part_point_kept(&cut, 1, 0.2f, 0.2f), 1); /* alpha 128 */
+        CHECK(solid_part.corners == NULL && solid_part.masks == NULL); /* an opaque part has no test */
     }
     cutout_part_free(&cut);
     cutout_part_free(&solid_part);

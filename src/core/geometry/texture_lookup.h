@@ -10,14 +10,21 @@
 
 float texture_srgb_to_linear(uint8_t v);
 
+/* The number (row y * width + column x) of the texel of a width x height texture nearest to
+ * (u, v). */
+static inline size_t texture_texel_index(uint32_t width, uint32_t height, float u, float v)
+{
+    float fu = u - floorf(u), fv = v - floorf(v);
+    uint32_t x = (uint32_t)(fu * width), y = (uint32_t)((1.0f - fv) * height);
+    if (x >= width) x = width - 1;
+    if (y >= height) y = height - 1;
+    return (size_t)y * width + x;
+}
+
 /* The 4 stored bytes (sRGB colour, alpha) of the texel nearest to (u, v). */
 static inline const uint8_t *texture_texel(const texture *t, float u, float v)
 {
-    float fu = u - floorf(u), fv = v - floorf(v);
-    uint32_t x = (uint32_t)(fu * t->width), y = (uint32_t)((1.0f - fv) * t->height);
-    if (x >= t->width) x = t->width - 1;
-    if (y >= t->height) y = t->height - 1;
-    return t->rgba + ((size_t)y * t->width + x) * 4;
+    return t->rgba + texture_texel_index(t->width, t->height, u, v) * 4;
 }
 
 static inline void texture_sample(const texture *t, float u, float v, float rgba[4])

@@ -66,16 +66,16 @@ static unsigned hitn_uint(const struct RTCHitN *hit, unsigned n, unsigned i, hit
     return ((const unsigned *)hit)[(size_t)f * n + i];
 }
 
-/* Rejects the hits that fall where the cut-out's texture is transparent. */
+/* Rejects the hits that fall where the cut-out's texture is transparent, by the part's own test
+ * (one record per triangle and the textures' coverage masks: cutout.h). */
 static void cutout_filter(const struct RTCFilterFunctionNArguments *args)
 {
     const geom_info *g = args->geometryUserPtr;
     const unsigned n = args->N;
     for (unsigned i = 0; i < n; i++) {
         if (args->valid[i] != -1) continue;
-        uint32_t t = g->part.to_mesh[hitn_uint(args->hit, n, i, HITN_PRIM_ID)];
-        if (!cutout_point_kept(g->scene, g->mesh, t, hitn_float(args->hit, n, i, HITN_U),
-                               hitn_float(args->hit, n, i, HITN_V)))
+        if (!cutout_part_point_kept(&g->part, hitn_uint(args->hit, n, i, HITN_PRIM_ID),
+                                    hitn_float(args->hit, n, i, HITN_U), hitn_float(args->hit, n, i, HITN_V)))
             args->valid[i] = 0;
     }
 }
@@ -322,7 +322,7 @@ void accel_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h)
     }
     const mesh *m = g->mesh;
     uint32_t t = g->part.to_mesh[rh->hit.primID];
-    const uint32_t *k = m->tri + (size_t)t * 3;
+    const uint32_t *k = g->part.tri + (size_t)rh->hit.primID * 3; /* m's triangle t, read beside to_mesh */
     float bu = rh->hit.u, bv = rh->hit.v, bw = 1.0f - bu - bv;
     vec3 p0 = v3(m->pos[k[0] * 3], m->pos[k[0] * 3 + 1], m->pos[k[0] * 3 + 2]);
     vec3 p1 = v3(m->pos[k[1] * 3], m->pos[k[1] * 3 + 1], m->pos[k[1] * 3 + 2]);

@@ -85,9 +85,17 @@ static int write_mesh(const scene *s, const mesh *m, const xform3x4 *xf, const c
         const float *p = m->pos + 3 * v, *n = m->nrm + 3 * v;
         for (int r = 0; r < 3; r++)
             rec[r] = xf ? xf->m[r][0] * p[0] + xf->m[r][1] * p[1] + xf->m[r][2] * p[2] + xf->m[r][3] : p[r];
-        if (xf) { /* normals by the inverse transpose; the objects placed here are rotations and scales */
+        if (xf) { /* normals by the cofactor matrix (the inverse transpose times the determinant):
+                     * columns b x c, c x a, a x b of the columns a, b, c */
             float t[3];
-            for (int r = 0; r < 3; r++) t[r] = xf->m[r][0] * n[0] + xf->m[r][1] * n[1] + xf->m[r][2] * n[2];
+            for (int r = 0; r < 3; r++) {
+                int r1 = (r + 1) % 3, r2 = (r + 2) % 3;
+                t[r] = 0;
+                for (int k = 0; k < 3; k++) {
+                    int k1 = (k + 1) % 3, k2 = (k + 2) % 3; /* column k of the cofactor: col k1 x col k2 */
+                    t[r] += n[k] * (xf->m[r1][k1] * xf->m[r2][k2] - xf->m[r2][k1] * xf->m[r1][k2]);
+                }
+            }
             float l = sqrtf(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
             for (int r = 0; r < 3; r++) rec[3 + r] = l > 0 ? t[r] / l : n[r];
         } else

@@ -81,11 +81,11 @@ measure() {
             k = 0
             for (s in sn) sp[k++] = s + 0
             for (i = 0; i < k; i++) for (j = i + 1; j < k; j++) if (sp[j] < sp[i]) { x = sp[i]; sp[i] = sp[j]; sp[j] = x }
-            printf "%s (%s, references %d spp, %d reps): mean luminance sylva %.5f, Cycles %.5f (%+.1f %%)\n",
+            printf "%s (%s, references %d spp, %d reps): mean luminance sylva %.5f, Cycles %.5f (sylva %+.1f %%)\n",
                 label, size, ref, reps, smean, cmean, 100 * (smean / cmean - 1)
             for (i = 0; i < k; i++) {
                 s = sp[i]
-                printf "  %4d spp: sylva noise %.4f in %.3f s CPU (%.3f s wall); Cycles noise %.4f in %.3f s CPU (%.3f s)\n",
+                printf "  %4d spp: sylva noise %.4f in %.3f s CPU (%.3f s wall); Cycles noise %.4f in %.3f s CPU (%.3f s wall)\n",
                     s, sn[s], st[s] / sc[s], sw[s] / sc[s], cn[s], ct[s] / cc[s], cw[s] / cc[s]
             }
             for (c = 0; c < k; c++) {
@@ -108,5 +108,6 @@ measure() {
         }'
 }
 
+measure "$root/bench/sunlit_ground.yaml" "sunlit ground" 64x64 1024 1 2 4 8 16 32 64
 measure "$root/tests/scenes/image/sphere_on_plane.yaml" "sphere on plane" 192x128 1024 1 2 4 8 16 32 64
 measure "$root/scenes/default.yaml" "default forest" 320x180 256 1 2 4 8 16

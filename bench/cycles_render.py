@@ -3,7 +3,7 @@
 # Cycles").
 #
 # usage: blender -b --factory-startup -P bench/cycles_render.py -- EXPORT_DIR OUT_DIR SPP,SPP,...
-#        [--threads N] [--seed S] [--size WxH]
+#        [--threads N] [--seed S] [--size WxH] [--cycles-defaults 1]
 #
 # Settings as sylva renders: CPU, N threads (default 2), box pixel filter one pixel wide, the
 # scene's max_depth (Cycles' bounces = max_depth - 1 for every kind of bounce; transparent
@@ -14,6 +14,8 @@
 #   cycles spp N cpu C wall W render R sync S file PATH
 # C and W the process's processor time and the wall time around the render call, R and S Cycles'
 # own render and synchronisation times (from the render's metadata, 10 ms steps).
+# --cycles-defaults 1 keeps Cycles' own pixel filter (Blackman-Harris, 1.5 pixels), clamping of
+# indirect light (10) and glossy filter (1) instead, for a comparison of what they change.
 #
 # The scene: meshes from binary PLY (smooth-shaded with sylva's vertex normals as custom split
 # normals), plants and ground cover as geometry-node instances (Instance on Points over a point
@@ -194,7 +196,7 @@ def make_instances(scene, folder, spec, protos):
                              ("scl", "FLOAT_VECTOR", scale.astype(np.float32).ravel())):
         a = me.attributes.new(name, kind, "POINT")
         a.data.foreach_set("value" if kind == "INT" else "vector", data)
-    ob = bpy.data.objects.new("instances", me)
+    ob = bpy.data.objects.new("instances", me)  # its points are not drawn: the modifier replaces them
     scene.collection.objects.link(ob)
     tree = bpy.data.node_groups.new("instance_plants", "GeometryNodeTree")
     tree.inputs.new("NodeSocketGeometry", "Geometry")
@@ -298,7 +300,9 @@ def main():
     folder, out_dir, ladder = args[0], args[1], [int(x) for x in args[2].split(",")]
     opts = dict(zip(args[3::2], args[4::2]))
     threads, seed = int(opts.get("--threads", 2)), opts.get("--seed")
+    t0 = time.perf_counter()
     sc = build(folder)
+    print("cycles: scene imported in %.2f s" % (time.perf_counter() - t0), flush=True)
     scene = bpy.context.scene
     r, c = scene.render, scene.cycles
     r.engine = "CYCLES"
@@ -313,10 +317,11 @@ def main():
     c.max_bounces = c.diffuse_bounces = c.glossy_bounces = c.transmission_bounces = bounces
     c.volume_bounces = 0
     c.transparent_max_bounces = 1024
-    c.pixel_filter_type, c.filter_width = "BOX", 1.0
+    if opts.get("--cycles-defaults") != "1":
+        c.pixel_filter_type, c.filter_width = "BOX", 1.0
+        c.sample_clamp_direct = c.sample_clamp_indirect = 0.0
+        c.blur_glossy = 0.0
     c.use_denoising = c.use_adaptive_sampling = False
-    c.sample_clamp_direct = c.sample_clamp_indirect = 0.0
-    c.blur_glossy = 0.0
     c.seed = int(seed) if seed is not None else int(sc["image"]["seed"])
     scene.view_settings.view_transform, scene.view_settings.look = "Standard", "None"
     scene.view_settings.exposure, scene.view_settings.gamma = 0.0, 1.0

@@ -45,17 +45,15 @@
 #define SKY_H 512u
 #define PATH_LEN 4096
 
-static const char *outdir;
-
-static int out_path(char *p, const char *name, err_buf *err)
+static int out_path(const char *dir, char *p, const char *name, err_buf *err)
 {
-    if ((size_t)snprintf(p, PATH_LEN, "%s/%s", outdir, name) >= PATH_LEN) return err_set(err, "%s/%s: path too long", outdir, name);
+    if ((size_t)snprintf(p, PATH_LEN, "%s/%s", dir, name) >= PATH_LEN) return err_set(err, "%s/%s: path too long", dir, name);
     return 0;
 }
 
-static FILE *open_out(const char *name, char *path, err_buf *err)
+static FILE *open_out(const char *dir, const char *name, char *path, err_buf *err)
 {
-    if (out_path(path, name, err)) return NULL;
+    if (out_path(dir, path, name, err)) return NULL;
     FILE *f = fopen(path, "wb");
     if (!f) err_set(err, "%s: cannot write (%s)", path, strerror(errno));
     return f;
@@ -69,11 +67,11 @@ static int close_out(FILE *f, const char *path, err_buf *err)
 }
 
 /* m as mesh_NAME.ply, positions carried by xf when given (NULL: as they are). */
-static int write_mesh(const scene *s, const mesh *m, const xform3x4 *xf, const char *name, err_buf *err)
+static int write_mesh(const char *dir, const scene *s, const mesh *m, const xform3x4 *xf, const char *name, err_buf *err)
 {
     char file[256], path[PATH_LEN];
     snprintf(file, sizeof file, "mesh_%s.ply", name);
-    FILE *f = open_out(file, path, err);
+    FILE *f = open_out(dir, file, path, err);
     if (!f) return -1;
     fprintf(f, "ply\nformat binary_little_endian 1.0\ncomment sylva %s\nelement vertex %u\n"
                "property float x\nproperty float y\nproperty float z\nproperty float nx\nproperty float ny\n"
@@ -113,10 +111,10 @@ static int write_mesh(const scene *s, const mesh *m, const xform3x4 *xf, const c
     return close_out(f, path, err);
 }
 
-static int write_instances(const scene *s, err_buf *err)
+static int write_instances(const char *dir, const scene *s, err_buf *err)
 {
     char path[PATH_LEN];
-    FILE *f = open_out("instances.ply", path, err);
+    FILE *f = open_out(dir, "instances.ply", path, err);
     if (!f) return -1;
     fprintf(f, "ply\nformat binary_little_endian 1.0\nelement vertex %u\n", s->n_instances);
     for (int r = 0; r < 3; r++)
@@ -131,7 +129,7 @@ static int write_instances(const scene *s, err_buf *err)
 }
 
 /* texture t as texture_N.png; alpha cut at one half when cut. */
-static int write_texture(const scene *s, uint32_t t, int cut, err_buf *err)
+static int write_texture(const char *dir, const scene *s, uint32_t t, int cut, err_buf *err)
 {
     const texture *tx = &s->textures[t];
     size_t n = (size_t)tx->width * tx->height;
@@ -143,14 +141,14 @@ static int write_texture(const scene *s, uint32_t t, int cut, err_buf *err)
     }
     char name[64], path[PATH_LEN];
     snprintf(name, sizeof name, "texture_%u%s.png", t, cut ? "_cut" : "");
-    int rc = out_path(path, name, err) || image_write_u8(path, tx->width, tx->height, 4, px, err);
+    int rc = out_path(dir, path, name, err) || image_write_u8(path, tx->width, tx->height, 4, px, err);
     free(px);
     return rc ? -1 : 0;
 }
 
 /* The ground's image (as pov_ground.c writes it) and its placement into the json; nothing when
  * the terrain keeps its materials. */
-static int write_ground(FILE *js, const scene *s, err_buf *err)
+static int write_ground(const char *dir, FILE *js, const scene *s, err_buf *err)
 {
     ground_texture *g = NULL;
     if (!s->terrain || ground_texture_build(s, &g, err)) return s->terrain ? -1 : 0;
@@ -167,7 +165,7 @@ static int write_ground(FILE *js, const scene *s, err_buf *err)
     for (uint32_t r = 0; r < ih; r++)
         for (uint32_t c = 0; c < iw; c++) ground_texture_image_texel(g, c, r, px + ((size_t)r * iw + c) * 3);
     char path[PATH_LEN];
-    int rc = out_path(path, "ground.png", err) || image_write_u8(path, iw, ih, 3, px, err);
+    int rc = out_path(dir, path, "ground.png", err) || image_write_u8(path, iw, ih, 3, px, err);
     free(px);
     if (!rc)
         fprintf(js, "  \"ground\": {\"image\": \"ground.png\", \"origin\": [%.9g, %.9g], \"size\": [%.9g, %.9g], "
@@ -177,7 +175,7 @@ static int write_ground(FILE *js, const scene *s, err_buf *err)
     return rc ? -1 : 0;
 }
 
-static int write_sky(const light_summary *l, err_buf *err)
+static int write_sky(const char *dir, const light_summary *l, err_buf *err)
 {
     float *rgb = calloc((size_t)SKY_W * SKY_H * 3, sizeof(float)); /* owned here */
     if (!rgb) return err_nomem(err, "out of memory for the sky's image");
@@ -193,7 +191,7 @@ static int write_sky(const light_summary *l, err_buf *err)
     }
     char path[PATH_LEN];
     exr_frame fr = {.width = SKY_W, .height = SKY_H, .rgb = rgb};
-    int rc = out_path(path, "sky.exr", err) || exr_write(path, &fr, err);
+    int rc = out_path(dir, path, "sky.exr", err) || exr_write(path, &fr, err);
     free(rgb);
     return rc ? -1 : 0;
 }
@@ -203,14 +201,14 @@ static void json_vec(FILE *f, const char *key, const double *v, const char *tail
     fprintf(f, "\"%s\": [%.9g, %.9g, %.9g]%s", key, v[0], v[1], v[2], tail);
 }
 
-static int export_scene(const scene *s, uint32_t w, uint32_t h, err_buf *err)
+static int export_scene(const char *dir, const scene *s, uint32_t w, uint32_t h, err_buf *err)
 {
     light_summary l;
     if (light_summary_init(&l, &s->sun, &s->sky, s->site.origin[2], s->camera.position[2], err)) return -1;
     if (s->camera.cylindrical || s->camera.f_number > 0 || s->camera.k1 != 0 || s->camera.k2 != 0)
         return err_set(err, "the export takes a pinhole camera only (no panorama, lens or distortion)");
     char path[PATH_LEN];
-    FILE *js = open_out("scene.json", path, err);
+    FILE *js = open_out(dir, "scene.json", path, err);
     if (!js) return -1;
     int rc = -1;
     mesh *terrain = NULL, *water = NULL, *apron = NULL;
@@ -231,7 +229,7 @@ static int export_scene(const scene *s, uint32_t w, uint32_t h, err_buf *err)
     fprintf(js, "\"angular_diameter_deg\": %.9g},\n", s->sun.angular_diameter_deg);
     fprintf(js, "  \"sky\": {\"image\": \"sky.exr\", \"aerial_perspective_left_out\": %d},\n",
             l.sky_kind == SKY_PHYSICAL);
-    if (write_sky(&l, err) || write_ground(js, s, err)) goto done;
+    if (write_sky(dir, &l, err) || write_ground(dir, js, s, err)) goto done;
     /* materials: each textured one's texture written once per cut (a texture may serve both) */
     fprintf(js, "  \"materials\": [\n");
     for (uint32_t i = 0; i < s->n_materials; i++) {
@@ -246,7 +244,7 @@ static int export_scene(const scene *s, uint32_t w, uint32_t h, err_buf *err)
             for (uint32_t k = 0; k < i && first; k++)
                 first = !(s->materials[k].texture == m->texture &&
                           (s->materials[k].texture >= 0 && cutout_material(s, &s->materials[k])) == cut);
-            if (first && write_texture(s, (uint32_t)m->texture, cut, err)) goto done;
+            if (first && write_texture(dir, s, (uint32_t)m->texture, cut, err)) goto done;
             fprintf(js, "\"texture\": \"texture_%d%s.png\", ", m->texture, cut ? "_cut" : "");
         }
         fprintf(js, "\"alpha_cut\": %d}%s\n", cut, i + 1 < s->n_materials ? "," : "");
@@ -262,10 +260,10 @@ static int export_scene(const scene *s, uint32_t w, uint32_t h, err_buf *err)
         if (apron && mesh_append(terrain, apron->pos, apron->nrm, apron->uv, apron->nv, apron->tri, apron->mat,
                                  s->terrain_material, apron->nt, err))
             goto done;
-        if (write_mesh(s, terrain, NULL, "terrain", err)) goto done;
+        if (write_mesh(dir, s, terrain, NULL, "terrain", err)) goto done;
         fprintf(js, "    {\"file\": \"mesh_terrain.ply\", \"ground\": true}"), sep = ",\n";
         if (water) {
-            if (write_mesh(s, water, NULL, "water", err)) goto done;
+            if (write_mesh(dir, s, water, NULL, "water", err)) goto done;
             fprintf(js, "%s    {\"file\": \"mesh_water.ply\"}", sep);
         }
     }
@@ -275,17 +273,17 @@ static int export_scene(const scene *s, uint32_t w, uint32_t h, err_buf *err)
         const mesh *m = scene_object_mesh(s, o, &xf);
         if (!m->nt) continue;
         snprintf(name, sizeof name, "object_%u", o);
-        if (write_mesh(s, m, xf, name, err)) goto done;
+        if (write_mesh(dir, s, m, xf, name, err)) goto done;
         fprintf(js, "%s    {\"file\": \"mesh_%s.ply\"}", sep, name), sep = ",\n";
     }
     fprintf(js, "\n  ],\n  \"prototypes\": [\n");
     for (uint32_t p = 0; p < s->n_prototypes; p++) {
         snprintf(name, sizeof name, "prototype_%05u", p);
-        if (write_mesh(s, s->prototypes[p].mesh, NULL, name, err)) goto done;
+        if (write_mesh(dir, s, s->prototypes[p].mesh, NULL, name, err)) goto done;
         fprintf(js, "    \"mesh_%s.ply\"%s\n", name, p + 1 < s->n_prototypes ? "," : "");
     }
     fprintf(js, "  ],\n  \"instances\": %s\n}\n", s->n_instances ? "\"instances.ply\"" : "null");
-    if (s->n_instances && write_instances(s, err)) goto done;
+    if (s->n_instances && write_instances(dir, s, err)) goto done;
     rc = 0;
 done:
     mesh_free(terrain);
@@ -301,7 +299,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: %s SCENE OUTDIR [WxH]\n", argv[0]);
         return 1;
     }
-    outdir = argv[2];
+    const char *outdir = argv[2];
     uint32_t w = 0, h = 0;
     if (argc == 4 && (sscanf(argv[3], "%ux%u", &w, &h) != 2 || !w || !h)) {
         fprintf(stderr, "%s: %s: the size is WxH, e.g. 320x180\n", argv[0], argv[3]);
@@ -320,7 +318,7 @@ int main(int argc, char **argv)
     }
     if (!rc) {
         err_buf err = {{0}};
-        if (export_scene(c.scene, w, h, &err)) {
+        if (export_scene(outdir, c.scene, w, h, &err)) {
             fprintf(stderr, "blender-export: %s\n", err.msg);
             rc = 2;
         } else

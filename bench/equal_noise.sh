@@ -19,8 +19,8 @@
 #   processor time, and plugins/); default: revision BASE_REV (the renderer with independent
 #   random numbers past the first vertex and multi-jittered pixel positions) exported with git
 #   archive, given the current measuring code, and built (core and plugins) under $TMPDIR.
-# Cycles: a comparison needs the same geometry in Blender, and sylva has no Blender export; the
-# script says so when `blender` is installed rather than comparing different scenes.
+# Cycles: then bench/cycles_noise.sh compares sylva with Blender Cycles on the same scenes, or
+# says that blender is not installed (scripts/install-deps.sh --bench installs it).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 BASE_REV=${BASE_REV:-826c449}
@@ -103,8 +103,4 @@ measure "$root/bench/sunlit_ground.yaml" "sunlit ground" 64x64 16 4 8 16 32
 measure "$root/tests/scenes/image/sphere_on_plane.yaml" "sphere on plane" 96x64 16 4 8 16 32
 measure "$root/scenes/default.yaml" "default forest" 160x90 8 2 4 8 16
 
-if command -v blender >/dev/null 2>&1; then
-    echo "Cycles: not compared (sylva has no Blender export of its scenes to render the same geometry)"
-else
-    echo "Cycles: blender not installed; not compared"
-fi
+CURRENT_BUILD=$current "$root/bench/cycles_noise.sh"

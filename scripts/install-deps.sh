@@ -19,6 +19,11 @@ packages=(
   libimage-exiftool-perl # exiftool: the EXIF tests compare what sylva reads with what it reports
   libopenmpi-dev openmpi-bin  # MPI: render and ztv split between ranks (docs/mpi.md); optional
 )
+case ${1:-} in
+  --bench) packages+=(blender) ;;  # never a build or test dependency
+  "") ;;
+  *) echo "usage: $0 [--bench]" >&2; exit 1 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

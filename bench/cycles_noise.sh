@@ -91,6 +91,11 @@ measure() {
             for (c = 0; c < k; c++) {
                 target = cn[sp[c]]; tc = ct[sp[c]] / cc[sp[c]]; wc = cw[sp[c]] / cc[sp[c]]
                 found = 0
+                if (!(tc > 0) || !(wc > 0)) {
+                    # Cycles reports its render time in steps of 10 ms
+                    printf "  at Cycles %d spp (noise %.4f): Cycles'"'"' time under its 10 ms resolution; not compared\n", sp[c], target
+                    continue
+                }
                 for (i = 0; i + 1 < k && !found; i++) {
                     a = sp[i]; b = sp[i + 1]
                     if (sn[a] >= target && sn[b] <= target) {

@@ -6,32 +6,17 @@
  */
 #include <math.h>
 #include <stdio.h>
-#include <string.h>
 
-#include "io/image_io.h"
-
-/* The channel index named `name` in img, else -1. */
-static int channel(const image_f32 *img, const char *name)
-{
-    for (uint32_t c = 0; c < img->channels; c++)
-        if (!strcmp(img->channel_names[c], name)) return (int)c;
-    return -1;
-}
+#include "bench_image.h"
 
 static int luminance_channels(const image_f32 *img, int ch[3], const char *path)
 {
-    ch[0] = channel(img, "R"), ch[1] = channel(img, "G"), ch[2] = channel(img, "B");
+    ch[0] = bench_channel(img, "R"), ch[1] = bench_channel(img, "G"), ch[2] = bench_channel(img, "B");
     if (ch[0] < 0 || ch[1] < 0 || ch[2] < 0) {
         fprintf(stderr, "image_rms: %s: no R, G, B channels\n", path);
         return -1;
     }
     return 0;
-}
-
-static double lum(const image_f32 *img, const int ch[3], size_t i)
-{
-    const float *p = img->pixels + i * img->channels;
-    return 0.2126 * p[ch[0]] + 0.7152 * p[ch[1]] + 0.0722 * p[ch[2]];
 }
 
 int main(int argc, char **argv)
@@ -50,7 +35,7 @@ int main(int argc, char **argv)
     if (luminance_channels(&ref, rch, argv[1])) rc = 2;
     size_t n = (size_t)ref.width * ref.height;
     double ref_mean = 0;
-    for (size_t i = 0; !rc && i < n; i++) ref_mean += lum(&ref, rch, i);
+    for (size_t i = 0; !rc && i < n; i++) ref_mean += bench_luminance(&ref, rch, i);
     ref_mean /= (double)n;
     for (int a = 2; !rc && a < argc; a++) {
         image_f32 img = {0};
@@ -66,7 +51,7 @@ int main(int argc, char **argv)
         }
         double se = 0, mean = 0;
         for (size_t i = 0; !rc && i < n; i++) {
-            double l = lum(&img, ch, i), d = l - lum(&ref, rch, i);
+            double l = bench_luminance(&img, ch, i), d = l - bench_luminance(&ref, rch, i);
             se += d * d, mean += l;
         }
         if (!rc) printf("%s rms %.6f mean %.6f ref_mean %.6f\n", argv[a], sqrt(se / (double)n) / ref_mean, mean / (double)n, ref_mean);

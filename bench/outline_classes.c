@@ -11,26 +11,12 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
-#include "io/image_io.h"
+#include "bench_image.h"
 
 enum pixel_class { CLASS_OUTLINE, CLASS_GROUND_BESIDE, CLASS_PLANT_INSIDE, CLASS_OPEN_GROUND, CLASSES, CLASS_NONE };
 static const char *const class_names[CLASSES] = {"plant next to ground (outline)", "ground next to a plant",
                                                  "plant inside", "open ground"};
-
-static int channel(const image_f32 *img, const char *name)
-{
-    for (uint32_t c = 0; c < img->channels; c++)
-        if (!strcmp(img->channel_names[c], name)) return (int)c;
-    return -1;
-}
-
-static double lum(const image_f32 *img, const int ch[3], size_t i)
-{
-    const float *p = img->pixels + i * img->channels;
-    return 0.2126 * p[ch[0]] + 0.7152 * p[ch[1]] + 0.0722 * p[ch[2]];
-}
 
 /* 1 plant, 0 ground, -1 sky (no depth). */
 static int kind(const image_f32 *img, int inst, int depth, uint32_t x, uint32_t y)
@@ -77,9 +63,9 @@ int main(int argc, char **argv)
         image_free(&a);
         return 2;
     }
-    int ca[3] = {channel(&a, "R"), channel(&a, "G"), channel(&a, "B")};
-    int cb[3] = {channel(&b, "R"), channel(&b, "G"), channel(&b, "B")};
-    int inst = channel(&a, "id.instance"), depth = channel(&a, "Z");
+    int ca[3] = {bench_channel(&a, "R"), bench_channel(&a, "G"), bench_channel(&a, "B")};
+    int cb[3] = {bench_channel(&b, "R"), bench_channel(&b, "G"), bench_channel(&b, "B")};
+    int inst = bench_channel(&a, "id.instance"), depth = bench_channel(&a, "Z");
     int rc = 0;
     if (ca[0] < 0 || ca[1] < 0 || ca[2] < 0 || cb[0] < 0 || cb[1] < 0 || cb[2] < 0 || inst < 0 || depth < 0) {
         fprintf(stderr, "outline_classes: %s needs R, G, B, Z and id.instance; %s R, G, B\n", argv[1], argv[2]);
@@ -96,7 +82,7 @@ int main(int argc, char **argv)
             enum pixel_class c = classify(&a, inst, depth, x, y);
             if (c == CLASS_NONE) continue;
             size_t i = (size_t)y * a.width + x;
-            double la = lum(&a, ca, i), lb = lum(&b, cb, i);
+            double la = bench_luminance(&a, ca, i), lb = bench_luminance(&b, cb, i);
             sa[c] += la, sb[c] += lb, sd2[c] += (lb - la) * (lb - la), n[c]++;
         }
     if (!rc) {

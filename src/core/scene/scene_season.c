@@ -25,14 +25,14 @@ uint32_t scene_drop_leaves(const scene *s, mesh *m)
     return dropped;
 }
 
-/* A copy of leaf material id turned share f of the way toward autumn colour c (the
+/* A copy of leaf material id turned share f of the way toward colour c, named with `label` (the
  * transmittance keeps its ratio to the albedo, within what the albedo leaves of the light). */
-static int32_t autumn_material(scene *s, uint32_t id, const char *species_name, const double c[3], double f,
-                               err_buf *err)
+static int32_t turned_material(scene *s, uint32_t id, const char *species_name, const char *label, const double c[3],
+                               double f, err_buf *err)
 {
     const material old = s->materials[id]; /* a copy: adding a material may move the array */
     char name[256];
-    snprintf(name, sizeof name, "%s (%s, autumn)", old.name, species_name);
+    snprintf(name, sizeof name, "%s (%s, %s)", old.name, species_name, label);
     sylva_material_desc d = {.size = sizeof d, .name = name, .bsdf = SYLVA_BSDF_LEAF, .texture = old.texture,
                              .alpha_mask = old.alpha_mask};
     const double a[3] = {old.albedo.x, old.albedo.y, old.albedo.z};
@@ -46,12 +46,11 @@ static int32_t autumn_material(scene *s, uint32_t id, const char *species_name, 
     return scene_add_material(s, &d, err);
 }
 
-/* Gives species sp's leaf triangles their own autumn materials (one per leaf material used). */
-static int colour_species(scene *s, uint32_t sp, const phenology *p, double f, err_buf *err)
+int scene_turn_leaves(scene *s, uint32_t sp, const char *label, const double c[3], double f, err_buf *err)
 {
     uint32_t n = s->n_materials;
-    int32_t *turned = malloc(n * sizeof *turned); /* old material id → its autumn copy, or -1; owned here */
-    if (!turned) return err_nomem(err, "out of memory colouring species '%s'", s->species[sp].name);
+    int32_t *turned = malloc((n ? n : 1) * sizeof *turned); /* old material id → its copy, or -1; owned here */
+    if (!turned) return err_nomem(err, "out of memory colouring the leaves of species '%s'", s->species[sp].name);
     for (uint32_t k = 0; k < n; k++) turned[k] = -1;
     const species *spc = &s->species[sp];
     int rc = 0;
@@ -60,7 +59,7 @@ static int colour_species(scene *s, uint32_t sp, const phenology *p, double f, e
         for (uint32_t t = 0; t < m->nt; t++) {
             uint32_t id = scene_triangle_material(s, m, t);
             if (id >= n || s->materials[id].bsdf != SYLVA_BSDF_LEAF) continue;
-            if (turned[id] < 0 && (turned[id] = autumn_material(s, id, spc->name, p->autumn_color, f, err)) < 0) {
+            if (turned[id] < 0 && (turned[id] = turned_material(s, id, spc->name, label, c, f, err)) < 0) {
                 rc = -1;
                 break;
             }
@@ -145,7 +144,7 @@ int scene_apply_season(scene *s, const scene_file *sf, err_buf *err)
             continue;
         }
         double f = phenology_autumn_share(p, sf->season.day);
-        if (f > 0 && colour_species(s, i, p, f, err)) return -1;
+        if (f > 0 && scene_turn_leaves(s, i, "autumn", p->autumn_color, f, err)) return -1;
         if (f > 0 && fall_species(s, i, phenology_fallen_share(p, sf->season.day), err)) return -1;
     }
     return 0;

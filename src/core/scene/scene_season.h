@@ -34,6 +34,11 @@ uint32_t scene_drop_leaves(const scene *s, mesh *m);
 int scene_drop_fallen_leaves(const scene *s, mesh *m, uint64_t key, double share, uint32_t *dropped,
                              err_buf *err);
 
+/* Gives species sp's leaf triangles their own copies of their leaf materials (one per material
+ * used), each albedo share f of the way toward colour c, the copies named "(species, label)":
+ * autumn colour, or spring's fresh green. Returns 0, or -1 with err set. */
+int scene_turn_leaves(scene *s, uint32_t sp, const char *label, const double c[3], double f, err_buf *err);
+
 /* The leaf-fall key of variant v of the species named species_name. */
 uint64_t scene_leaf_fall_key(const char *species_name, uint32_t v);
 

@@ -248,9 +248,9 @@ static vec3 path_radiance(const render_ctx *ctx, const sampler *smp, vec3 o, vec
 
 /* The verification samples of pixel (x, y): the centre, then (grid > 1) a grid x grid grid;
  * camera rays go to Embree as coherent streams, then the shadow rays of the hits the sun can
- * light. Sets out's rgb to the samples' mean, coverage to the share that hit a surface,
- * development to the share that hit the development and development_rgb to those samples'
- * radiance over all samples. */
+ * light. Sets out's samples to their count, rgb to their mean, coverage to the share that hit a
+ * surface, development to the share that hit the development and development_rgb to those
+ * samples' radiance over all samples. */
 static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t grid, pixel_result *out)
 {
     const accel *a = ctx->accel;
@@ -326,6 +326,7 @@ static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t
             if (on_dev[i]) dev_sum = v3_add(dev_sum, L);
         }
     }
+    out->samples = n;
     out->rgb = v3_scale(sum, 1.0f / (float)n);
     out->coverage = (float)hits / (float)n;
     out->development = (float)dev_hits / (float)n;
@@ -408,7 +409,6 @@ void integrate_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_result
         uint32_t grid = 1; /* spp rounded down to a square */
         while ((grid + 1) * (grid + 1) <= ctx->spp) grid++;
         verify_pixel(ctx, x, y, grid, out);
-        out->samples = grid > 1 ? grid * grid + 1 : 1;
         aux_layers(ctx, x, y, out);
         return;
     }

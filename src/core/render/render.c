@@ -100,15 +100,13 @@ static void ctx_init(render_ctx *ctx, render_setup *rs, const render_options *o,
 }
 
 /* The crown proxies of the plants that look small through the camera at w x h
- * (crown_proxy.h), before the top scene's BVH is built; nothing in verification mode or with
- * image.crown_proxy 0. */
-static int attach_proxies(render_setup *rs, const render_options *o, uint32_t w, uint32_t h, err_buf *err)
+ * (crown_proxy.h) through camera cam, before the top scene's BVH is built; nothing in
+ * verification mode or with image.crown_proxy 0. */
+static int attach_proxies(render_setup *rs, const render_options *o, const camera *cam, err_buf *err)
 {
     if (o->verify || !(rs->scene->image.crown_proxy > 0)) return 0;
-    camera cam;
-    camera_init(&cam, &rs->scene->camera, w, h);
     vec3 sun = rs->lt.summary.sun_on ? rs->lt.summary.sun_dir : v3(0.0f, 0.7071f, 0.7071f);
-    return crown_proxies_attach(&rs->acc, &cam, sun, rs->scene->image.crown_proxy, thread_count(o), err);
+    return crown_proxies_attach(&rs->acc, cam, sun, rs->scene->image.crown_proxy, thread_count(o), err);
 }
 
 /* The proxies' reflectances, once the top scene's BVH is built. */
@@ -131,11 +129,9 @@ render_setup *render_setup_new(const scene *s, const render_options *opt, err_bu
         return NULL;
     }
     rs->scene = s;
-    /* one build of the top scene's BVH, with the crown proxies already in it */
-    if (accel_build_open(&rs->acc, s, thread_count(opt), err)) {
-        free(rs);
-        return NULL;
-    }
+    /* one build of the top scene's BVH, with the crown proxies already in it (a failed build
+     * leaves rs->acc zeroed, which render_setup_free accepts) */
+    if (accel_build_open(&rs->acc, s, thread_count(opt), err)) goto fail;
     double t_open = progress_now() - t0;
     camera cam; /* the pixel's angle sets how finely the ground's texture is resolved */
     camera_init(&cam, &s->camera, w, h);
@@ -143,27 +139,17 @@ render_setup *render_setup_new(const scene *s, const render_options *opt, err_bu
     rs->acc.flat_ground = opt->verify;
     rs->acc.bark_relief = !opt->verify; /* POV-Ray, which the verification matches, has none */
     if (lights_init(&rs->lt, &s->sun, &s->sky, s->site.origin[2], s->camera.position[2], err) ||
-        attach_proxies(rs, opt, w, h, err)) {
-        lights_free(&rs->lt);
-        accel_free(&rs->acc);
-        free(rs);
-        return NULL;
-    }
+        attach_proxies(rs, opt, &cam, err))
+        goto fail;
     double t_commit = progress_now();
-    if (accel_commit(&rs->acc, err)) {
-        lights_free(&rs->lt);
-        free(rs);
-        return NULL;
-    }
+    if (accel_commit(&rs->acc, err)) goto fail;
     rs->bvh_seconds = t_open + progress_now() - t_commit;
-    if (calibrate_proxies(rs, opt, w, h, err)) {
-        lights_free(&rs->lt);
-        accel_free(&rs->acc);
-        free(rs);
-        return NULL;
-    }
+    if (calibrate_proxies(rs, opt, w, h, err)) goto fail;
     rs->build_seconds = progress_now() - t0;
     return rs;
+fail:
+    render_setup_free(rs);
+    return NULL;
 }
 
 void render_setup_free(render_setup *rs)

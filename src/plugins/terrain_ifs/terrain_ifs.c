@@ -117,6 +117,15 @@ static void lod_plan(const sylva_params *params, const ifs_dtm *d, int *lod, uin
 }
 
 /* What the memory check needs beside the DTM's size. */
+/* The worker threads of a run: the scene's own count, else the run's (--threads), else one per
+ * processor; at most PLUGIN_MAX_THREADS. */
+static uint32_t run_threads(const sylva_host_api *api, sylva_host *host, const sylva_params *params)
+{
+    uint32_t threads = (uint32_t)sylva_param_int(params, "threads");
+    if (!threads) threads = SYLVA_API_HAS(api, threads) ? api->threads(host) : plugin_threads_online();
+    return threads < PLUGIN_MAX_THREADS ? threads : PLUGIN_MAX_THREADS;
+}
+
 typedef struct memory_ask {
     const sylva_host_api *api;
     sylva_host *host;
@@ -149,8 +158,7 @@ static int memory_fits(void *ctx, uint32_t nx, uint32_t ny, ifs_err *err)
     uint64_t out = nxo * nyo, per_out = 1;
     if (sylva_param_str(m->params, "humidity_map")) per_out += 4;
     if (sylva_param_int(m->params, "method") == 0) {
-        uint64_t threads = (uint64_t)sylva_param_int(m->params, "threads");
-        per_out += 16 * (threads ? threads : plugin_threads_online());
+        per_out += 16 * (uint64_t)run_threads(m->api, m->host, m->params);
     }
     char what[600];
     snprintf(what, sizeof what, "terrain_ifs: the %u x %u node DTM %s refined to %llu x %llu "
@@ -396,12 +404,7 @@ static int terrain_setup(const sylva_host_api *api, sylva_host *host, const sylv
     s->random = sylva_param_int(params, "method") == 0;
     s->iterations = (uint64_t)sylva_param_int(params, "iterations");
     s->depth = (uint32_t)sylva_param_int(params, "depth");
-    uint32_t threads = (uint32_t)sylva_param_int(params, "threads");
-    /* The scene's own count, else the run's (--threads), else one per processor. */
-    s->threads = threads                       ? threads
-                 : SYLVA_API_HAS(api, threads) ? api->threads(host)
-                                               : plugin_threads_online();
-    if (s->threads > PLUGIN_MAX_THREADS) s->threads = PLUGIN_MAX_THREADS;
+    s->threads = run_threads(api, host, params);
 
     /* The starting point: the DTM origin (U, V) = (0, 0) at its height, or the scene's point. */
     const sylva_value *start = sylva_param(params, "start");

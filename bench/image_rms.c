@@ -45,8 +45,11 @@ int main(int argc, char **argv)
             rc = 2;
             break;
         }
-        if (luminance_channels(&img, ch, argv[a]) || img.width != ref.width || img.height != ref.height) {
-            if (!rc && img.width != ref.width) fprintf(stderr, "image_rms: %s: size differs from %s\n", argv[a], argv[1]);
+        if (luminance_channels(&img, ch, argv[a])) {
+            rc = 2;
+        } else if (img.width != ref.width || img.height != ref.height) {
+            fprintf(stderr, "image_rms: %s is %ux%u, %s %ux%u\n", argv[a], img.width, img.height, argv[1], ref.width,
+                    ref.height);
             rc = 2;
         }
         double se = 0, mean = 0;

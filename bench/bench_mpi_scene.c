@@ -67,8 +67,13 @@ int main(int argc, char **argv)
     MPI_Bcast(&bytes, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
     char *buf = malloc(bytes ? bytes : 1); /* owned: the broadcast's bytes */
     if (buf) memset(buf, rank, bytes);
+    /* every rank broadcasts, or none does: a rank without its buffer would leave the others waiting */
+    int held = buf != NULL, all_held = 0;
+    MPI_Allreduce(&held, &all_held, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+    if (!all_held && rank == 0) fprintf(stderr, "bench_mpi_scene: a rank could not hold %llu bytes\n",
+                                        (unsigned long long)bytes);
     double best = 1e30;
-    for (int round = 0; buf && round < 3; round++) {
+    for (int round = 0; all_held && round < 3; round++) {
         MPI_Barrier(MPI_COMM_WORLD);
         double t1 = progress_now();
         for (uint64_t at = 0; at < bytes; at += 1u << 30)

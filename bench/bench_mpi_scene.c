@@ -70,10 +70,15 @@ int main(int argc, char **argv)
     /* every rank broadcasts, or none does: a rank without its buffer would leave the others waiting */
     int held = buf != NULL, all_held = 0;
     MPI_Allreduce(&held, &all_held, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
-    if (!all_held && rank == 0) fprintf(stderr, "bench_mpi_scene: a rank could not hold %llu bytes\n",
-                                        (unsigned long long)bytes);
+    if (!all_held) {
+        if (rank == 0) fprintf(stderr, "bench_mpi_scene: a rank could not hold %llu bytes\n", (unsigned long long)bytes);
+        free(buf);
+        cli_scene_close(&cs);
+        MPI_Finalize();
+        return 1;
+    }
     double best = 1e30;
-    for (int round = 0; all_held && round < 3; round++) {
+    for (int round = 0; round < 3; round++) {
         MPI_Barrier(MPI_COMM_WORLD);
         double t1 = progress_now();
         for (uint64_t at = 0; at < bytes; at += 1u << 30)

@@ -9,16 +9,21 @@
 
 #include "util/rng.h"
 
+/* Moves triangle t of m (its vertices and material) to place `kept`, at or before t, as a mesh
+ * is compacted in order. */
+static void keep_triangle(mesh *m, uint32_t t, uint32_t kept)
+{
+    if (kept == t) return;
+    memcpy(m->tri + (size_t)kept * 3, m->tri + (size_t)t * 3, 3 * sizeof *m->tri);
+    m->mat[kept] = m->mat[t];
+}
+
 uint32_t scene_drop_leaves(const scene *s, mesh *m)
 {
     uint32_t kept = 0;
     for (uint32_t t = 0; t < m->nt; t++) {
         if (s->materials[scene_triangle_material(s, m, t)].bsdf == SYLVA_BSDF_LEAF) continue;
-        if (kept != t) {
-            memcpy(m->tri + (size_t)kept * 3, m->tri + (size_t)t * 3, 3 * sizeof *m->tri);
-            m->mat[kept] = m->mat[t];
-        }
-        kept++;
+        keep_triangle(m, t, kept++);
     }
     uint32_t dropped = m->nt - kept;
     m->nt = kept;
@@ -107,11 +112,7 @@ int scene_drop_fallen_leaves(const scene *s, mesh *m, uint64_t key, double share
             if (first[r] == UINT32_MAX) first[r] = t;
             if (rng_u01f(rng_combine(key, first[r])) < share) continue;
         }
-        if (kept != t) {
-            memcpy(m->tri + (size_t)kept * 3, m->tri + (size_t)t * 3, 3 * sizeof *m->tri);
-            m->mat[kept] = m->mat[t];
-        }
-        kept++;
+        keep_triangle(m, t, kept++);
     }
     free(parent);
     *dropped = m->nt - kept;

@@ -10,6 +10,7 @@
 #include "render/accel.h"
 #include "render/crown_proxy.h"
 #include "render/integrator.h"
+#include "util/interleave.h"
 #include "util/progress.h"
 
 #define TILE RENDER_BAND_ROWS /* a row of tiles is a band of a part */
@@ -173,7 +174,7 @@ film *render_setup_run(render_setup *rs, const render_options *opt, render_stats
     ctx_init(&ctx, rs, &o, w, h);
     uint32_t parts = o.parts > 1 ? o.parts : 1, part = parts > 1 ? o.part : 0, tile_rows = (h + TILE - 1) / TILE;
     render_job job = {.ctx = &ctx, .film = f, .tiles_x = (w + TILE - 1) / TILE, .part = part, .parts = parts,
-                      .tiles_y = part < tile_rows ? (tile_rows - part + parts - 1) / parts : 0};
+                      .tiles_y = interleave_count(tile_rows, part, parts)};
     atomic_init(&job.next_tile, 0);
     atomic_init(&job.samples, 0);
     progress prog;

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "render/render.h"
+#include "util/interleave.h"
 #include "util/progress.h"
 #include "ztv/ztv_cover.h"
 #include "ztv/ztv_grid.h"
@@ -178,14 +179,14 @@ int ztv_trace(const ztv_job *job, ztv_sink sink, void *user, ztv_stats *stats, e
     unsigned threads = job->threads ? job->threads : render_default_threads();
     progress prog;
     uint32_t parts = job->parts > 1 ? job->parts : 1, part = parts > 1 ? job->part : 0;
-    progress_begin(&prog, "ztv", part < g->ny ? (g->ny - part + parts - 1) / parts : 0, job->quiet);
+    progress_begin(&prog, "ztv", interleave_count(g->ny, part, parts), job->quiet);
     c.prog = &prog;
     pthread_t *tids = calloc(threads, sizeof *tids); /* freed below */
     for (uint32_t j0 = 0; !rc && j0 < g->ny; j0 += block_rows) {
         c.j0 = j0;
         c.rows = g->ny - j0 < block_rows ? g->ny - j0 : block_rows;
         c.first = (part + parts - j0 % parts) % parts, c.step = parts;
-        c.own = c.first < c.rows ? (c.rows - c.first + parts - 1) / parts : 0;
+        c.own = interleave_count(c.rows, c.first, parts);
         atomic_init(&c.next_row, 0);
         unsigned started = 0;
         if (tids)

@@ -49,10 +49,9 @@ void lsys_frame_roll_horizontal(lsys_frame *f)
 {
     static const double sky[3] = {0.0, 0.0, 1.0};
     if (f->h[0] == 0.0 && f->h[1] == 0.0) return;
-    cross(f->h, sky, f->l);
+    /* L = Z x H and U = H x L: U's z is |H_xy|^2, so U points up for any heading not vertical */
+    cross(sky, f->h, f->l);
     cross(f->h, f->l, f->u);
-    if (f->u[2] < 0.0)
-        for (int k = 0; k < 3; k++) f->l[k] = -f->l[k], f->u[k] = -f->u[k];
 }
 
 void lsys_frame_tropism(lsys_frame *f, double e)

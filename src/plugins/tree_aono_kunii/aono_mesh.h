@@ -49,7 +49,8 @@ int aono_mesh_leaves(const aono_config *cfg, const aono_skeleton *s, int32_t lea
 int aono_leaf_texture(const aono_config *cfg, uint8_t *rgba);
 
 /* Fills AONO_BARK_TEXTURE_SIZE^2 RGBA8 texels with the config's fractal bark, one
- * circumference wide and long (the tubes' u and v). */
-void aono_bark_texture(const aono_config *cfg, uint8_t *rgba);
+ * circumference wide and long (the tubes' u and v). Returns 0 (the shape of
+ * aono_leaf_texture, so that both are made alike). */
+int aono_bark_texture(const aono_config *cfg, uint8_t *rgba);
 
 #endif

@@ -53,16 +53,10 @@ static int32_t make_texture(const sylva_host_api *api, sylva_host *host, const a
     return tex;
 }
 
-static int fill_bark(const aono_config *c, uint8_t *rgba)
-{
-    aono_bark_texture(c, rgba);
-    return 0;
-}
-
 static int make_materials(const sylva_host_api *api, sylva_host *host, aono_state *st)
 {
     const aono_config *c = &st->cfg;
-    int32_t tex = make_texture(api, host, c, "tree_aono_kunii.bark", AONO_BARK_TEXTURE_SIZE, fill_bark);
+    int32_t tex = make_texture(api, host, c, "tree_aono_kunii.bark", AONO_BARK_TEXTURE_SIZE, aono_bark_texture);
     if (tex < 0) return tex;
     sylva_material_desc bark = {.size = sizeof bark, .name = "tree_aono_kunii.bark", .bsdf = SYLVA_BSDF_LAMBERT,
                                 .texture = tex};

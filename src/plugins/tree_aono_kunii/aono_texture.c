@@ -8,7 +8,8 @@ int aono_leaf_texture(const aono_config *cfg, uint8_t *rgba)
     return leaf_affine_render(&cfg->leaf, AONO_LEAF_TEXTURE_SIZE, AONO_LEAF_TEXTURE_SEED, rgba, NULL, 0);
 }
 
-void aono_bark_texture(const aono_config *cfg, uint8_t *rgba)
+int aono_bark_texture(const aono_config *cfg, uint8_t *rgba)
 {
     tree_look_bark_texture(&cfg->bark, AONO_BARK_TEXTURE_SIZE, rgba);
+    return 0;
 }

@@ -71,8 +71,10 @@ int vessel_params_check(const vessel_params *p, vessel_err *err)
     char why[256];
     if (leaf_affine_check(&p->leaf, why, sizeof why))
         return vessel_fail(err, VESSEL_FAULT_PARAM, "leaf", "'leaf': %s", why);
-    if ((unsigned)p->bark_preset >= BARK_FRACTAL_PRESETS || bark_fractal_check(&p->bark, why, sizeof why))
-        return vessel_fail(err, VESSEL_FAULT_PARAM, "bark", "'bark': %s", (unsigned)p->bark_preset >= BARK_FRACTAL_PRESETS ? "not a preset" : why);
+    if ((unsigned)p->bark_preset >= BARK_FRACTAL_PRESETS)
+        return vessel_fail(err, VESSEL_FAULT_PARAM, "bark", "'bark': not a preset");
+    if (bark_fractal_check(&p->bark, why, sizeof why))
+        return vessel_fail(err, VESSEL_FAULT_PARAM, "bark", "'bark': %s", why);
     if (p->sides < VESSEL_MIN_SIDES || p->sides > VESSEL_MAX_SIDES)
         return vessel_fail(err, VESSEL_FAULT_PARAM, "sides", "'sides' is %u; branch cones have %u to %u sides",
                            p->sides, VESSEL_MIN_SIDES, VESSEL_MAX_SIDES);

@@ -81,23 +81,13 @@ static int write_mesh(const char *dir, const scene *s, const mesh *m, const xfor
     for (uint32_t v = 0; v < m->nv; v++) {
         float rec[8];
         const float *p = m->pos + 3 * v, *n = m->nrm + 3 * v;
-        for (int r = 0; r < 3; r++)
-            rec[r] = xf ? xf->m[r][0] * p[0] + xf->m[r][1] * p[1] + xf->m[r][2] * p[2] + xf->m[r][3] : p[r];
-        if (xf) { /* normals by the cofactor matrix (the inverse transpose times the determinant):
-                     * columns b x c, c x a, a x b of the columns a, b, c */
-            float t[3];
-            for (int r = 0; r < 3; r++) {
-                int r1 = (r + 1) % 3, r2 = (r + 2) % 3;
-                t[r] = 0;
-                for (int k = 0; k < 3; k++) {
-                    int k1 = (k + 1) % 3, k2 = (k + 2) % 3; /* column k of the cofactor: col k1 x col k2 */
-                    t[r] += n[k] * (xf->m[r1][k1] * xf->m[r2][k2] - xf->m[r2][k1] * xf->m[r1][k2]);
-                }
-            }
-            float l = sqrtf(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
-            for (int r = 0; r < 3; r++) rec[3 + r] = l > 0 ? t[r] / l : n[r];
-        } else
-            memcpy(rec + 3, n, sizeof(float) * 3);
+        vec3 pw = v3(p[0], p[1], p[2]), nw = v3(n[0], n[1], n[2]);
+        if (xf) { /* normals by the renderer's rule: the cofactor matrix, flipped for a mirror */
+            pw = xf_point(xf, pw);
+            vec3 t = xf_normal(xf, nw);
+            if (v3_len(t) > 0) nw = v3_norm(t);
+        }
+        rec[0] = pw.x, rec[1] = pw.y, rec[2] = pw.z, rec[3] = nw.x, rec[4] = nw.y, rec[5] = nw.z;
         rec[6] = m->uv[2 * v], rec[7] = m->uv[2 * v + 1];
         fwrite(rec, sizeof rec, 1, f);
     }

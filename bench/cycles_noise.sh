@@ -55,7 +55,7 @@ measure() {
     "$build/bench/bench_blender_export" "$scene" "$dir/export" "$size" 2>"$dir/export.log" ||
         { cat "$dir/export.log" >&2; return 1; }
     # references: each renderer's own, another seed than its ladder
-    "$build/bench/bench_time_to_noise" "$scene" "$size" "$dir/sylva_ref" "$ref" 1 --threads "$threads" \
+    "$build/bench/bench_time_to_noise" "$scene" "$size" "$dir/sylva_ref" "$ref" --threads "$threads" \
         --crown-proxy 0 2>"$dir/sylva.log" >/dev/null || { cat "$dir/sylva.log" >&2; return 1; }
     cycles "$dir" "$ref" "$dir/cycles_ref" --seed 9173 >/dev/null
     [ -f "$dir/sylva_ref/sylva_ref.exr" ] && [ -f "$dir/cycles_ref/cycles_$ref.exr" ] ||

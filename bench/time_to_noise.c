@@ -2,7 +2,7 @@
  * its pixel phase, and a reference at many samples, as EXR files for bench_image_rms
  * (bench/cycles_noise.sh compares them with Cycles' renders of the same scene).
  *
- * usage: bench_time_to_noise SCENE WxH OUTDIR REF_SPP SPP... [--threads N] [--crown-proxy PX]
+ * usage: bench_time_to_noise SCENE WxH OUTDIR REF_SPP [SPP...] [--threads N] [--crown-proxy PX]
  *
  * The scene is built once (ground cover for WxH, as `sylva render` places it); each render is
  * render_setup_run alone, so the times are the pixel phase's: wall and the process's processor
@@ -15,25 +15,20 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "io/exr_write.h"
 #include "render/render.h"
-
-static double clock_s(clockid_t id)
-{
-    struct timespec ts;
-    clock_gettime(id, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
+#include "util/phase_times.h"
 
 static int render_one(render_setup *rs, render_options o, const char *dir, const char *tag, err_buf *err)
 {
-    double c0 = clock_s(CLOCK_PROCESS_CPUTIME_ID), w0 = clock_s(CLOCK_MONOTONIC);
+    phase_times t = {{0}};
+    phase_mark m = phase_start();
     film *f = render_setup_run(rs, &o, NULL, err);
-    double cpu = clock_s(CLOCK_PROCESS_CPUTIME_ID) - c0, wall = clock_s(CLOCK_MONOTONIC) - w0;
+    phase_stop(&t, PHASE_RENDER, m);
+    double cpu = t.cpu[PHASE_RENDER], wall = t.seconds[PHASE_RENDER];
     if (!f) return -1;
     char path[4096];
     snprintf(path, sizeof path, "%s/sylva_%s.exr", dir, tag);
@@ -57,8 +52,8 @@ int main(int argc, char **argv)
         else if (n < 64) pos[n++] = argv[a];
     }
     uint32_t w = 0, h = 0;
-    if (n < 5 || sscanf(pos[1], "%ux%u", &w, &h) != 2 || !w || !h || atoi(pos[3]) < 0) {
-        fprintf(stderr, "usage: %s SCENE WxH OUTDIR REF_SPP SPP... [--threads N] [--crown-proxy PX]\n", argv[0]);
+    if (n < 4 || sscanf(pos[1], "%ux%u", &w, &h) != 2 || !w || !h || atoi(pos[3]) < 0) {
+        fprintf(stderr, "usage: %s SCENE WxH OUTDIR REF_SPP [SPP...] [--threads N] [--crown-proxy PX]\n", argv[0]);
         return 1;
     }
     cli_scene c;

@@ -36,7 +36,6 @@
 #include "geometry/ground_texture.h"
 #include "geometry/light_summary.h"
 #include "geometry/terrain_apron.h"
-#include "geometry/terrain_mesh.h"
 #include "geometry/water_surface.h"
 #include "io/exr_write.h"
 #include "io/image_io.h"
@@ -201,7 +200,7 @@ static int export_scene(const char *dir, const scene *s, uint32_t w, uint32_t h,
     FILE *js = open_out(dir, "scene.json", path, err);
     if (!js) return -1;
     int rc = -1;
-    mesh *terrain = NULL, *water = NULL, *apron = NULL;
+    mesh *terrain = NULL, *water = NULL;
     const camera_settings *c = &s->camera;
     double fwd[3], right[3], up[3];
     camera_frame(c, fwd, right, up);
@@ -242,14 +241,9 @@ static int export_scene(const char *dir, const scene *s, uint32_t w, uint32_t h,
     fprintf(js, "  ],\n  \"meshes\": [\n");
     const char *sep = "";
     if (s->terrain) {
-        terrain = terrain_mesh_build(s->terrain, s->terrain_material, err);
         double eye[3] = {c->position[0], c->position[1], c->position[2]};
-        if (!terrain || water_surface_build(s, &water, err) ||
-            terrain_apron_build(s->terrain, s->terrain_material, terrain_apron_reach(s->terrain, eye), &apron, err))
-            goto done;
-        if (apron && mesh_append(terrain, apron->pos, apron->nrm, apron->uv, apron->nv, apron->tri, apron->mat,
-                                 s->terrain_material, apron->nt, err))
-            goto done;
+        terrain = terrain_mesh_with_apron(s->terrain, s->terrain_material, eye, err);
+        if (!terrain || water_surface_build(s, &water, err)) goto done;
         if (write_mesh(dir, s, terrain, NULL, "terrain", err)) goto done;
         fprintf(js, "    {\"file\": \"mesh_terrain.ply\", \"ground\": true}"), sep = ",\n";
         if (water) {
@@ -278,7 +272,6 @@ static int export_scene(const char *dir, const scene *s, uint32_t w, uint32_t h,
 done:
     mesh_free(terrain);
     mesh_free(water);
-    mesh_free(apron);
     if (close_out(js, path, rc ? &(err_buf){{0}} : err)) rc = -1;
     return rc;
 }

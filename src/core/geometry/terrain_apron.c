@@ -116,3 +116,18 @@ fail:
     mesh_free(m);
     return -1;
 }
+
+mesh *terrain_mesh_with_apron(const sylva_heightfield *hf, int32_t material, const double eye[3], err_buf *err)
+{
+    mesh *terrain = terrain_mesh_build(hf, material, err);
+    mesh *apron = NULL;
+    if (!terrain || terrain_apron_build(hf, material, terrain_apron_reach(hf, eye), &apron, err) ||
+        (apron && mesh_append(terrain, apron->pos, apron->nrm, apron->uv, apron->nv, apron->tri, apron->mat, material,
+                              apron->nt, err))) {
+        mesh_free(apron);
+        mesh_free(terrain);
+        return NULL;
+    }
+    mesh_free(apron);
+    return terrain;
+}

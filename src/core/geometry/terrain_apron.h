@@ -31,4 +31,9 @@ double terrain_apron_reach(const sylva_heightfield *hf, const double eye[3]);
 int terrain_apron_build(const sylva_heightfield *hf, int32_t fallback, double reach, mesh **out,
                         err_buf *err);
 
+/* The terrain's mesh (terrain_mesh_build, material `material`) with its apron for an eye at
+ * `eye` appended: the ground the path tracer sees, for the exporters. A new mesh (caller frees
+ * with mesh_free), or NULL with err set. */
+mesh *terrain_mesh_with_apron(const sylva_heightfield *hf, int32_t material, const double eye[3], err_buf *err);
+
 #endif

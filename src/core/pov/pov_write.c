@@ -616,19 +616,10 @@ int pov_export_scene(const scene *s, const char *pov_path, const pov_export_opti
     int rc = -1;
     mesh *terrain = NULL, *water = NULL;
     if (s->terrain) {
-        terrain = terrain_mesh_build(s->terrain, s->terrain_material, err);
-        if (!terrain) goto done;
-        if (water_surface_build(s, &water, err)) goto done;
         /* the apron beyond the edge, as the path tracer has it, in the terrain's mesh */
-        mesh *apron = NULL;
         double eye[3] = {s->camera.position[0], s->camera.position[1], s->camera.position[2]};
-        if (terrain_apron_build(s->terrain, s->terrain_material, terrain_apron_reach(s->terrain, eye), &apron,
-                                err))
-            goto done;
-        int bad = apron && mesh_append(terrain, apron->pos, apron->nrm, apron->uv, apron->nv, apron->tri,
-                                       apron->mat, s->terrain_material, apron->nt, err);
-        mesh_free(apron);
-        if (bad) goto done;
+        terrain = terrain_mesh_with_apron(s->terrain, s->terrain_material, eye, err);
+        if (!terrain || water_surface_build(s, &water, err)) goto done;
     }
     char path[POV_PATH_MAX], name[POV_PATH_MAX];
     if (path_with(&ep, "_materials.inc", path, err)) goto done;

@@ -143,19 +143,8 @@ static int write_ground(const char *dir, FILE *js, const scene *s, err_buf *err)
     if (!s->terrain || ground_texture_build(s, &g, err)) return s->terrain ? -1 : 0;
     if (!g) return 0;
     const sylva_heightfield *hf = s->terrain;
-    uint32_t iw, ih;
-    double texel;
-    ground_texture_image_size(hf, &iw, &ih, &texel);
-    uint8_t *px = malloc((size_t)iw * ih * 3); /* owned here */
-    if (!px) {
-        ground_texture_free(g);
-        return err_nomem(err, "out of memory for the ground's image");
-    }
-    for (uint32_t r = 0; r < ih; r++)
-        for (uint32_t c = 0; c < iw; c++) ground_texture_image_texel(g, c, r, px + ((size_t)r * iw + c) * 3);
     char path[PATH_LEN];
-    int rc = out_path(dir, path, "ground.png", err) || image_write_u8(path, iw, ih, 3, px, err);
-    free(px);
+    int rc = out_path(dir, path, "ground.png", err) || ground_texture_write_image(g, path, err);
     if (!rc)
         fprintf(js, "  \"ground\": {\"image\": \"ground.png\", \"origin\": [%.9g, %.9g], \"size\": [%.9g, %.9g], "
                     "\"beyond\": [%.9g, %.9g, %.9g]},\n",

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include "geometry/texture_lookup.h"
+#include "io/image_io.h"
 #include "util/gradient_noise.h"
 #include "util/srgb.h"
 
@@ -198,4 +199,18 @@ void ground_texture_relief(const ground_texture *g, double x, double y, double f
         gy += w[k] * t->tilt * t->relief.wavelength * gr[1];
     }
     grad[0] = (float)gx, grad[1] = (float)gy;
+}
+
+int ground_texture_write_image(const ground_texture *g, const char *path, err_buf *err)
+{
+    uint32_t iw, ih;
+    double texel;
+    ground_texture_image_size(g->hf, &iw, &ih, &texel);
+    uint8_t *px = malloc((size_t)iw * ih * 3); /* owned here */
+    if (!px) return err_nomem(err, "out of memory for the %ux%u image of the ground", iw, ih);
+    for (uint32_t r = 0; r < ih; r++)
+        for (uint32_t c = 0; c < iw; c++) ground_texture_image_texel(g, c, r, px + ((size_t)r * iw + c) * 3);
+    int rc = image_write_u8(path, iw, ih, 3, px, err);
+    free(px);
+    return rc;
 }

@@ -43,6 +43,10 @@ void ground_texture_image_size(const sylva_heightfield *hf, uint32_t *iw, uint32
 /* Texel (c, r) of that image, 8-bit sRGB into rgb. */
 void ground_texture_image_texel(const ground_texture *g, uint32_t c, uint32_t r, uint8_t rgb[3]);
 
+/* That whole image written to path (a PNG, or what its extension names). Returns 0, or -1 with
+ * err set. */
+int ground_texture_write_image(const ground_texture *g, const char *path, err_buf *err);
+
 /* The image's colour (linear RGB) at map point (x, y): bilinear between the texels' centres (as
  * POV-Ray's image_map with interpolate 2), the edge texels' between the outermost centres and
  * the footprint's edge, and `beyond` outside the footprint (the apron). */

@@ -2,9 +2,7 @@
 #include "pov/pov_ground.h"
 
 #include <math.h>
-#include <stdlib.h>
 
-#include "io/image_io.h"
 #include "pov/pov_number.h"
 #include "geometry/ground_texture.h"
 
@@ -19,17 +17,9 @@ int pov_write_ground(pov_file *pf, const scene *s, const char *image_path, const
     double w = hf->dx * (hf->nx - 1), h = hf->dy * (hf->ny - 1), texel;
     uint32_t iw, ih;
     ground_texture_image_size(hf, &iw, &ih, &texel);
-    uint8_t *px = malloc((size_t)iw * ih * 3); /* owned here */
-    if (!px) {
-        ground_texture_free(g);
-        return err_nomem(err, "out of memory for the %ux%u image of the ground", iw, ih);
-    }
-    for (uint32_t r = 0; r < ih; r++)
-        for (uint32_t c = 0; c < iw; c++) ground_texture_image_texel(g, c, r, px + ((size_t)r * iw + c) * 3);
     vec3 beyond = g->beyond;
+    int rc = ground_texture_write_image(g, image_path, err);
     ground_texture_free(g);
-    int rc = image_write_u8(image_path, iw, ih, 3, px, err);
-    free(px);
     if (rc) return -1;
     char rgb[3 * POV_NUMBER_MAX + 8], size[3 * POV_NUMBER_MAX + 8], origin[3 * POV_NUMBER_MAX + 8];
     pov_append_vec3f(rgb, beyond.x, beyond.y, beyond.z, NULL);

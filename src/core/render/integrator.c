@@ -126,7 +126,8 @@ static void light_probabilities(const lights *l, const hit_info *h, vec3 n, vec3
         float pdf;
         e[0] = v3_luminance(bsdf_eval(h->mat, h->albedo, n, wo, s, &pdf)) * fabsf(v3_dot(n, s)) *
                v3_luminance(l->summary.sun_irradiance);
-        /* a point-like sun is met by nothing else: sample it whenever it can light h */
+        /* a point-like sun is met by nothing else: sample it whenever it can light h (as at the
+         * first vertex, so the sky is sampled too: a shadow ray more per vertex, no bias) */
         if (l->summary.solid_angle <= 0.0f && e[0] > 0.0f) first = 1;
     }
     if (sky_varies(l)) {

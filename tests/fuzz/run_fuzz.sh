@@ -7,7 +7,8 @@
 #   lsystem     tests/fuzz/seeds/lsystem/, the .ls files of $SYLVA_SHARED_DATA_DIR/lparser
 #               (default ../shared/data beside the clone) when present,
 #               tests/fuzz/regressions/lsystem/
-# Exits with libFuzzer's status: 0 when nothing was found.
+# Exits 0 when nothing was found, 1 when an input crashed, leaked, hung or tripped a sanitizer
+# (libFuzzer's own status for that is 77, which ctest reads as "skipped").
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -45,5 +46,6 @@ case $name in
 esac
 [ -d "$here/regressions/$name" ] && seeds+=("$here/regressions/$name")
 
-exec "$target" -dict="$here/$name.dict" -max_len="$max_len" -timeout=10 -print_final_stats=1 \
+exec "$target" -dict="$here/$name.dict" -max_len="$max_len" -timeout=10 -error_exitcode=1 -timeout_exitcode=1 \
+     -print_final_stats=1 \
      -artifact_prefix="$work/" "$@" "$work/corpus" "${seeds[@]}"

@@ -41,10 +41,10 @@ void box_raster_line(box_raster *r, double ax, double ay, double bx, double by, 
                       {bx + ex - px, by + ey - py}, {ax - ex - px, ay - ey - py}};
     double ylo = q[0][1], yhi = q[0][1];
     for (int k = 1; k < 4; k++) ylo = fmin(ylo, q[k][1]), yhi = fmax(yhi, q[k][1]);
-    long j0 = (long)floor(ylo), j1 = (long)ceil(yhi);
-    if (j0 < 0) j0 = 0;
-    if (j1 > (long)r->n - 1) j1 = (long)r->n - 1;
-    for (long j = j0; j <= j1; j++) {
+    /* rows clamped to the raster while still doubles: a branch at 1e308 m (or NaN) is no long */
+    double jlo = fmax(floor(ylo), 0.0), jhi = fmin(ceil(yhi), (double)r->n - 1);
+    if (!(jlo <= jhi)) return;
+    for (long j = (long)jlo; j <= (long)jhi; j++) {
         double yc = j + 0.5, xlo = INFINITY, xhi = -INFINITY;
         for (int k = 0; k < 4; k++) {
             const double *p = q[k], *s = q[(k + 1) % 4];
@@ -55,10 +55,8 @@ void box_raster_line(box_raster *r, double ax, double ay, double bx, double by, 
             }
         }
         if (!(xlo <= xhi)) continue;
-        long i0 = (long)ceil(xlo - 0.5), i1 = (long)floor(xhi - 0.5);
-        if (i0 < 0) i0 = 0;
-        if (i1 > (long)r->n - 1) i1 = (long)r->n - 1;
-        if (i0 <= i1) memset(r->px + (size_t)j * r->n + i0, 1, (size_t)(i1 - i0 + 1));
+        double ilo = fmax(ceil(xlo - 0.5), 0.0), ihi = fmin(floor(xhi - 0.5), (double)r->n - 1);
+        if (ilo <= ihi) memset(r->px + (size_t)j * r->n + (size_t)ilo, 1, (size_t)(ihi - ilo + 1));
     }
 }
 

@@ -53,7 +53,7 @@ static int write_csv(const char *path, const sylva_ecology_factor_map *maps, uin
 int cmd_factors(int argc, char **argv)
 {
     const char *scene_path = NULL, *dir = NULL;
-    build_options bo = {0};
+    build_options bo = {.analysis = 1}; /* the ground as surveyed, whatever the camera */
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {

@@ -14,6 +14,7 @@
 #include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "render/accel.h"
+#include "scene/heightfield.h"
 #include "util/progress.h"
 #include "ztv/ztv_grid.h"
 #include "ztv/ztv_output.h"
@@ -40,6 +41,10 @@ static void ztv_usage(FILE *out)
             "  --observer-height M     eye height above the ground (default 2)\n"
             "  --screening S           none | vegetation | all: what screens besides bare earth\n"
             "                          (default all: the plants and the objects)\n"
+            "  --ground G              surveyed | refined: the ground the sightlines trace: the\n"
+            "                          DTM as surveyed (default; a ZTV is a property of the DTM and\n"
+            "                          the development), or the terrain plugin's refinement, with\n"
+            "                          its levels of detail around the development, not the camera\n"
             "  --flat-earth            straight sightlines, whatever the earth: section says\n"
             "  --season S              the plants on season S (spring, summer, autumn, winter)\n"
             "                          or date YYYY-MM-DD, instead of the scene's season: key\n"
@@ -134,7 +139,7 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
     double radius = NAN, cell = NAN, eye = NAN;
     int screening = -1, flat = 0;
     unsigned threads = 0;
-    build_options bo = {0};
+    build_options bo = {.analysis = 1}; /* the ground as surveyed, whatever the camera */
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *val = i + 1 < argc ? argv[i + 1] : NULL;
@@ -163,6 +168,12 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
                 return EXIT_USAGE;
             }
             i++;
+        } else if (!strcmp(a, "--ground")) {
+            if (!val || (strcmp(val, "surveyed") && strcmp(val, "refined"))) {
+                fprintf(stderr, "sylva ztv: --ground expects surveyed or refined, got '%s'\n", val ? val : "");
+                return EXIT_USAGE;
+            }
+            bo.analysis = !strcmp(val, "surveyed"), bo.detail_at_development = !bo.analysis, i++;
         } else if (!strcmp(a, "--flat-earth")) {
             flat = 1;
         } else if (!strcmp(a, "--season")) {
@@ -234,8 +245,13 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
         goto done;
     }
     t_phase = phase_stop(&cs.times, PHASE_BVH, t_phase);
+    char ground[256], described[192];
+    heightfield_describe(sc->terrain, described, sizeof described);
+    snprintf(ground, sizeof ground, "%s: %s", sc->terrain == sc->surveyed ? "the DTM as surveyed"
+             : "the terrain refined around the development", described);
+    if (!bo.quiet) fprintf(stderr, "ztv: ground: %s\n", ground);
     ztv_info info = {.grid = job.grid, .crs_wkt = sf->site.crs_wkt, .crs_name = sf->site.crs_name,
-                     .observer_height = eye, .radius = radius, .curvature = job.earth && job.earth->curvature,
+                     .observer_height = eye, .ground = ground, .radius = radius, .curvature = job.earth && job.earth->curvature,
                      .refraction = sc->earth.refraction, .n_targets = targets.n,
                      .n_developments = targets.n_developments, .development_names = targets.names,
                      .development_xy = (const double(*)[2])targets.centre,

@@ -107,22 +107,22 @@ static void bounds_add(const mesh *m, const xform3x4 *xf, double lo[3], double h
     }
 }
 
-/* The lowest ground under the rectangle [x0, x1] x [y0, y1], sampled at the terrain's spacing
- * with its edges included; 0 without a terrain. -1 when no point of it lies on the terrain. */
+/* The lowest ground as surveyed under the rectangle [x0, x1] x [y0, y1], sampled at its spacing
+ * with its edges included (objects stand on the same ground whatever the camera); 0 without a terrain. -1 when no point of it lies on the terrain. */
 static int lowest_ground(const scene *s, double x0, double y0, double x1, double y1, double *z)
 {
-    if (!s->terrain) {
+    if (!s->surveyed) {
         *z = 0;
         return 0;
     }
-    double step = fmin(s->terrain->dx, s->terrain->dy);
+    double step = fmin(s->surveyed->dx, s->surveyed->dy);
     double nx = ceil((x1 - x0) / step), ny = ceil((y1 - y0) / step);
     while ((nx + 1) * (ny + 1) > FOOTPRINT_MAX_SAMPLES) step *= 2, nx = ceil((x1 - x0) / step), ny = ceil((y1 - y0) / step);
     double best = INFINITY;
     for (double j = 0; j <= ny; j++)
         for (double i = 0; i <= nx; i++) {
             double h, x = nx > 0 ? x0 + (x1 - x0) * i / nx : x0, y = ny > 0 ? y0 + (y1 - y0) * j / ny : y0;
-            if (!scene_terrain_height(s, x, y, &h)) best = fmin(best, h);
+            if (!scene_surveyed_height(s, x, y, &h)) best = fmin(best, h);
         }
     if (!isfinite(best)) return -1;
     *z = best;
@@ -137,7 +137,7 @@ static int resolve_height(const scene *s, const object_spec *o, const double lo[
     switch (o->base) {
     case OBJECT_AT_Z: *z = o->position[2]; return 0;
     case OBJECT_ABOVE_GROUND:
-        if (s->terrain && scene_terrain_height(s, x, y, &ground))
+        if (s->surveyed && scene_surveyed_height(s, x, y, &ground))
             return err_set(err, "position (%g, %g) lies outside the terrain; height_above_ground needs the "
                            "ground there", x, y);
         *z = ground + o->height_above_ground;

@@ -7,7 +7,7 @@ int ztv_grid_make(const scene *s, const ztv_targets *t, double cell, double radi
 {
     const sylva_heightfield *h = s->terrain;
     if (!h) return err_set(err, "the scene has no terrain to map; add a 'terrain:' section");
-    if (cell <= 0) cell = fmax(h->dx, h->dy);
+    if (cell <= 0) cell = fmax(s->surveyed->dx, s->surveyed->dy); /* the DTM's cells, whichever ground */
     /* the terrain's extent, and the lattice: cell centres at x0 + i cell, y = north - j cell */
     double west = h->x0, east = h->x0 + (h->nx - 1) * h->dx;
     double south = h->y0, north = h->y0 + (h->ny - 1) * h->dy;

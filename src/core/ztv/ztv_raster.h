@@ -63,6 +63,8 @@ typedef struct ztv_info {
     double origin[3];            /* map coordinates of the local origin (0 without a site) */
     int computed[ZTV_MODES];     /* 1: the blocks carry this mode's layer */
     double observer_height;      /* metres above the ground */
+    const char *ground;          /* the ground the sightlines traced, a phrase for the summary
+                                    ("the DTM as surveyed: ..."), or NULL */
     double radius;               /* metres from the nearest target; INFINITY: the whole grid */
     int curvature;               /* 1: Earth curvature and refraction applied */
     double refraction;           /* k */

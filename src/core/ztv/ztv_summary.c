@@ -161,6 +161,11 @@ int ztv_summary_write_csv(const ztv_summary *s, FILE *f, err_buf *err)
     csv_text(f, info->crs_name ? info->crs_name : "local metres");
     fputs(",\n", f);
     fprintf(f, "observer_height,,,%.12g,m above ground\n", info->observer_height);
+    if (info->ground) {
+        fputs("ground,,,", f);
+        csv_text(f, info->ground);
+        fputs(",\n", f);
+    }
     if (isfinite(info->radius)) fprintf(f, "radius,,,%.12g,m\n", info->radius);
     else fputs("radius,,,none,whole grid\n", f);
     fprintf(f, "earth_curvature,,,%d,1 applied / 0 not\n", info->curvature ? 1 : 0);
@@ -216,6 +221,11 @@ int ztv_summary_write_json(const ztv_summary *s, FILE *f, err_buf *err)
     if (info->crs_name) json_write_string(f, info->crs_name);
     else fputs("null", f);
     fprintf(f, ",\n  \"observer_height_m\": %.12g,\n", info->observer_height);
+    if (info->ground) {
+        fputs("  \"ground\": ", f);
+        json_write_string(f, info->ground);
+        fputs(",\n", f);
+    }
     if (isfinite(info->radius)) fprintf(f, "  \"radius_m\": %.12g,\n", info->radius);
     else fputs("  \"radius_m\": null,\n", f);
     fprintf(f, "  \"earth_curvature\": %s,\n  \"refraction_k\": %.12g,\n",

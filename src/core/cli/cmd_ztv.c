@@ -234,6 +234,9 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
         rc = cli_fail("ztv", &err, ERR_INPUT);
         goto done;
     }
+    char past_edge[256]; /* said even with -q: the map is not what the radius asked for */
+    if (!m->rank && !ztv_grid_past_edge_text(&job.grid, radius, past_edge, sizeof past_edge))
+        fprintf(stderr, "sylva ztv: %s; its cells there are mapped as no terrain\n", past_edge);
     if (!bo.quiet)
         fprintf(stderr, "ztv: %u targets of %u development%s, %u x %u cells of %g m, observer %g m, %s%s\n",
                 targets.n, targets.n_developments, targets.n_developments == 1 ? "" : "s", job.grid.nx,

@@ -63,14 +63,18 @@ typedef struct object_model {
     mesh *mesh;               /* owned; in the model's own frame (metres, Z up) */
 } object_model;
 
-/* An object is either its own mesh in world space (a built-in shape of the objects section)
- * or an instance of a model: mesh NULL, model >= 0, xf its placement. */
+/* An object is either its own mesh in world space (scene_add_object) or an instance of a model:
+ * mesh NULL, model >= 0, xf its placement. The objects section places every object, a built-in
+ * shape too, as an instance of a shared model. */
 typedef struct object {
     char *name;               /* owned */
     mesh *mesh;               /* owned; world space (the object's transform applied), or NULL */
     int32_t model;            /* index into scene.models when mesh is NULL, else -1 */
     xform3x4 xf;              /* model frame → world (model instances only) */
     int development;          /* 1: part of the development's coverage mask */
+    uint32_t entry;           /* the objects: entry that placed it (scene_file.objects index) */
+    double base;              /* z of that entry's lowest point as placed (on the ground it was
+                                 snapped to, for an object standing on the terrain) */
 } object;
 
 typedef struct scene {

@@ -74,7 +74,7 @@ int cli_outputs_check(const char *cmd, const scene_file *sf, const cli_file *inp
         const cli_file *o = &outputs[i];
         if (!o->path) continue;
         if (output_guard_check(o->path, &err)) {
-            err_prefix(&err, "%s: ", o->option);
+            if (o->option[0] == '-') err_prefix(&err, "%s: ", o->option); /* not for a default name */
             return cli_fail(cmd, &err, ERR_USAGE);
         }
         for (uint32_t k = 0; k < i; k++)

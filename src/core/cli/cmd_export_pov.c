@@ -121,7 +121,7 @@ int cmd_export_pov(int argc, char **argv)
     err_buf err = {{0}};
     cli_scene cs;
     int rc = cli_scene_open(&cs, "export-pov", scene_path, viewpoint, season, &bo);
-    cli_file output = {out, "-o"};
+    cli_file output = {out, out == out_default ? "the output" : "-o"};
     if (!rc) rc = cli_outputs_check("export-pov", cs.sf, NULL, 0, &output, 1);
     if (!rc && !species_name) rc = cli_scene_ground_cover(&cs, "export-pov", po.width, po.height, bo.quiet);
     if (rc) goto done;

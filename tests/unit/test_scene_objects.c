@@ -234,6 +234,22 @@ static void expect_error(const char *body, const char *want1, const char *want2)
     scene_free(s);
 }
 
+/* A layout saved by a spreadsheet starts with a UTF-8 byte-order mark: read as if it had none.
+ * A quote left open is refused where it opens. */
+TEST(layout_with_byte_order_mark_and_open_quote)
+{
+    write_models();
+    CHECK(work_file("bom.csv", "\xef\xbb\xbfid,x,y\nA,5,6\n") != NULL);
+    scene *s = build_ok("objects:\n  - {layout: bom.csv, model: tet.stl}\n");
+    if (s) CHECK_STR_CONTAINS(s->objects[0].name, "A");
+    scene_free(s);
+    CHECK(work_file("open_quote.csv", "id,x,y\n\"A,5,6\nB, \"7, 8\n") != NULL);
+    expect_error("objects:\n  - {layout: open_quote.csv, model: tet.stl}\n", "open_quote.csv:2:1: this field "
+                 "opens a double quote that is not closed", NULL);
+    CHECK(work_file("open_quote2.csv", "id,x,y\nB, \"7, 8\n") != NULL);
+    expect_error("objects:\n  - {layout: open_quote2.csv, model: tet.stl}\n", "open_quote2.csv:2:4:", NULL);
+}
+
 /* Each problem stops the build with a sentence naming the file and place. */
 TEST(clear_errors)
 {
@@ -340,5 +356,6 @@ TEST(pov_export_declares_a_model_once)
 
 TEST_LIST(TEST_CASE(model_placement), TEST_CASE(probe_finds_a_placed_model), TEST_CASE(instances_share_one_mesh), TEST_CASE(group_layout),
           TEST_CASE(shapes_share_one_mesh),
-          TEST_CASE(layout_in_map_coordinates), TEST_CASE(clear_errors),
+          TEST_CASE(layout_in_map_coordinates), TEST_CASE(layout_with_byte_order_mark_and_open_quote),
+          TEST_CASE(clear_errors),
           TEST_CASE(object_id_and_development_layers), TEST_CASE(pov_export_declares_a_model_once))

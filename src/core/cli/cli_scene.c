@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cli/cli_status.h"
+#include "io/output_guard.h"
 #include "geometry/ground_cover_place.h"
 #include "util/progress.h"
 
@@ -39,6 +40,7 @@ void cli_scene_close(cli_scene *c)
     scene_free(c->scene);
     scene_file_free(c->sf);
     plugin_registry_free(c->reg);
+    output_guard_clear();
     memset(c, 0, sizeof *c);
 }
 

@@ -8,6 +8,7 @@
 
 #include "cli/cli_args.h"
 #include "cli/cli_ecology.h"
+#include "cli/cli_outputs.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "io/atomic_file.h"
@@ -79,6 +80,7 @@ int cmd_factors(int argc, char **argv)
     }
     cli_ecology e;
     int rc = cli_ecology_open(&e, "factors", scene_path, &bo);
+    if (!rc) rc = cli_outputs_check("factors", e.base.sf, NULL, 0, NULL, 0); /* the folder's files */
     if (rc) {
         cli_ecology_close(&e);
         return rc;

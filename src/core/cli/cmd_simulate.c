@@ -9,6 +9,7 @@
 
 #include "cli/cli_args.h"
 #include "cli/cli_ecology.h"
+#include "cli/cli_outputs.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "io/atomic_file.h"
@@ -173,6 +174,15 @@ int cmd_simulate(int argc, char **argv)
     uint32_t *counts = NULL, *row_years = NULL, rows = 0;
     const char **names = NULL;
     if (rc) goto done;
+    char stats_csv[4200] = "", stats_png[4200] = "";
+    if (stats) {
+        snprintf(stats_csv, sizeof stats_csv, "%s/population.csv", stats);
+        snprintf(stats_png, sizeof stats_png, "%s/population.png", stats);
+    }
+    cli_file inputs[] = {{load, "--load"}};
+    cli_file outputs[] = {{out, "-o"}, {save, "--save"}, {stats ? stats_csv : NULL, "--stats"},
+                          {stats ? stats_png : NULL, "--stats"}};
+    if ((rc = cli_outputs_check("simulate", e.base.sf, inputs, 1, outputs, 4))) goto done;
     if (load && ecology_session_load(e.session, load, &err)) {
         rc = cli_fail("simulate", &err, ERR_INPUT);
         goto done;

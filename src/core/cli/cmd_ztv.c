@@ -10,6 +10,7 @@
 
 #include "cli/cli_args.h"
 #include "cli/cli_mpi.h"
+#include "cli/cli_outputs.h"
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
@@ -207,6 +208,7 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
     accel acc = {0};
     ztv_output *out = NULL;
     int rc = cli_scene_open(&cs, "ztv", scene_path, NULL, season, &bo);
+    if (!rc) rc = cli_outputs_check("ztv", cs.sf, NULL, 0, NULL, 0); /* the folder's files */
     if (rc) goto done;
     if (cli_mpi_same_scene(m, cs.scene, &err)) {
         rc = cli_fail("ztv", &err, ERR_INPUT);

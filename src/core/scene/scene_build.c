@@ -16,6 +16,7 @@
 #include "scene/scene_spring.h"
 #include "scene/scene_tree_variants.h"
 #include "scene/shapes.h"
+#include "scene/terrain_extent.h"
 
 xform3x4 plant_transform(const double p[3], double rot_deg, double scale)
 {
@@ -198,7 +199,11 @@ static int place_plant(scene *s, uint32_t sp, double pos[3], int snap, double ab
     if (snap) {
         double z = 0;
         if (!scene_terrain_height(s, pos[0], pos[1], &z)) pos[2] = z + above;
-        else if (s->terrain) return err_set(err, "position (%g, %g) lies outside the terrain", pos[0], pos[1]);
+        else if (s->terrain) {
+            char where[512];
+            terrain_extent_text(s, pos[0], pos[1], where, sizeof where);
+            return err_set(err, "position (%g, %g) lies outside the terrain%s", pos[0], pos[1], where);
+        }
         else pos[2] = above;
     }
     uint32_t proto = s->species[sp].first_prototype + scene_variant_for_age(s, sp, age);
@@ -297,7 +302,8 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
     s->earth = sf->earth, s->snow = sf->snow, s->season_day = sf->season.day;
     plugin_call_output out = {.verbose = opt->verbose, .quiet = opt->quiet, .threads = opt->threads, .times = opt->times};
     if (scene_set_site(s, &sf->site, err) || add_materials(s, sf, err) ||
-        build_terrain(s, sf, plugins, opt, &out, err) || scene_ground_camera(s, sf, err) ||
+        build_terrain(s, sf, plugins, opt, &out, err) || terrain_near_site(s, sf, err) ||
+        scene_ground_camera(s, sf, err) ||
         build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) ||
         build_ecology(s, sf, plugins, opt, &out, err) || scene_build_objects(s, sf, err) ||
         scene_apply_blossom(s, sf, NULL, err) || scene_apply_season(s, sf, err) ||

@@ -14,6 +14,7 @@
 #include "scene/model_import.h"
 #include "scene/scene_build.h"
 #include "scene/shape_index.h"
+#include "scene/terrain_extent.h"
 
 /* Footprint samples at most per object; beyond it the spacing grows past the terrain's. */
 #define FOOTPRINT_MAX_SAMPLES 1000000.0
@@ -178,12 +179,14 @@ static int origin_height(const scene *s, const object_spec *o, const double lo[3
                          err_buf *err)
 {
     double x = o->position[0], y = o->position[1], ground = 0;
+    char where[512];
+    terrain_extent_text(s, x, y, where, sizeof where);
     switch (o->base) {
     case OBJECT_AT_Z: *z = o->position[2]; return 0;
     case OBJECT_ABOVE_GROUND:
         if (s->surveyed && scene_surveyed_height(s, x, y, &ground))
-            return err_set(err, "position (%g, %g) lies outside the terrain; height_above_ground needs the "
-                           "ground there", x, y);
+            return err_set(err, "position (%g, %g) lies outside the terrain%s; height_above_ground needs the "
+                           "ground there", x, y, where);
         *z = ground + o->height_above_ground;
         return 0;
     case OBJECT_ON_GROUND:
@@ -192,8 +195,8 @@ static int origin_height(const scene *s, const object_spec *o, const double lo[3
             return 0;
         }
         if (lowest_ground(s, x + lo[0], y + lo[1], x + hi[0], y + hi[1], &ground))
-            return err_set(err, "the footprint [%g, %g] x [%g, %g] lies outside the terrain", x + lo[0], x + hi[0],
-                           y + lo[1], y + hi[1]);
+            return err_set(err, "the footprint [%g, %g] x [%g, %g] around (%g, %g) lies outside the terrain%s",
+                           x + lo[0], x + hi[0], y + lo[1], y + hi[1], x, y, where);
         *z = ground - lo[2];
         return 0;
     }

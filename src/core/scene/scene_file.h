@@ -281,6 +281,8 @@ typedef struct photo_settings {
 typedef struct scene_file {
     const char *path;           /* as given */
     const char *dir;            /* absolute folder of the file */
+    const char **includes; uint32_t n_includes; /* the species files `include:` read, as
+                                                   canonical paths, in the order read */
     site_settings site;
     image_settings image;
     camera_settings camera;

@@ -12,6 +12,7 @@
 #include "cli/commands.h"
 #include "render/auto_exposure.h"
 #include "render/render.h"
+#include "scene/heightfield.h"
 #include "util/progress.h"
 
 static void render_usage(FILE *out)
@@ -156,6 +157,13 @@ static int render_run(cli_mpi *m, int argc, char **argv)
         fprintf(stderr, "scene: %u species, %u prototypes, %u instances, %u objects (%u shared models)%s (built in "
                 "%.2fs)\n", sc->n_species, sc->n_prototypes, sc->n_instances, sc->n_objects, sc->n_models,
                 sc->terrain ? ", terrain" : "", cs.seconds);
+    if (!ro.quiet && sc->terrain) {
+        char shown[192], surveyed[192];
+        heightfield_describe(sc->terrain, shown, sizeof shown);
+        heightfield_describe(sc->surveyed, surveyed, sizeof surveyed);
+        if (sc->terrain == sc->surveyed) fprintf(stderr, "ground: %s, as the analyses read it\n", shown);
+        else fprintf(stderr, "ground: rendered %s; the analyses read the DTM as surveyed, %s\n", shown, surveyed);
+    }
     render_stats st;
     f = render_scene(sc, &ro, &st, &err);
     if (!f) {

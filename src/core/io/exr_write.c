@@ -39,12 +39,16 @@ typedef struct exr_channel_src {
     int rgb_index;        /* 0..2 for a half R, G, B channel, else -1 */
 } exr_channel_src;
 
+/* The stream exr_write is writing on this thread, for the error handler: OpenEXRCore calls the
+ * handler while it holds the context's lock (a failed write inside exr_encoding_run, say), and
+ * exr_get_user_data takes that lock again, which would wait for ever. */
+static _Thread_local exr_stream *exr_stream_now;
+
 static void exr_on_error(exr_const_context_t ctxt, exr_result_t code, const char *msg)
 {
-    void *user = NULL;
-    if (!ctxt || exr_get_user_data(ctxt, &user) != EXR_ERR_SUCCESS || !user) return;
-    exr_stream *s = user;
-    if (s->reported) return;
+    (void)ctxt;
+    exr_stream *s = exr_stream_now;
+    if (!s || s->reported) return;
     s->reported = 1;
     err_set(s->err, "%s: OpenEXR could not write the file: %s (%s)", s->path, msg,
             exr_get_error_code_as_string(code));
@@ -251,6 +255,7 @@ int exr_write(const char *path, const exr_frame *f, err_buf *err)
 
     exr_context_t ctx = NULL;
     int status = 0;
+    exr_stream_now = &s;
     exr_result_t rc = exr_start_write(&ctx, path, EXR_WRITE_FILE_DIRECTLY, &init);
     if (rc) status = exr_fail(&s, rc, "starting the file");
     if (!status) status = exr_write_part(ctx, &s, f, ch, n_ch);
@@ -258,6 +263,7 @@ int exr_write(const char *path, const exr_frame *f, err_buf *err)
         rc = exr_finish(&ctx); /* writes the chunk offset table */
         if (rc && !status) status = exr_fail(&s, rc, "writing the chunk offset table");
     }
+    exr_stream_now = NULL;
     if (status) {
         atomic_file_abort(&out);
         return -1;

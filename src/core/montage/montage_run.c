@@ -182,7 +182,8 @@ static int write_files(const scene *s, const scene_file *sf, const photo *ph, co
     wireline_free(&wl);
     free(plate8);
     free(mont8);
-    return rc;
+    /* a file that could not be written (a full disk) is an output failure, not a bad input */
+    return rc ? err_default(err, ERR_OUTPUT) : 0;
 }
 
 int montage_run(scene *s, const scene_file *sf, const montage_options *o, montage_report *rep, err_buf *err)

@@ -12,7 +12,7 @@
 
 typedef struct build_options {
     int verbose;     /* plugin DEBUG logs */
-    int quiet;       /* no progress output */
+    int quiet;       /* no progress output, and no plugin INFO logs (warnings still print) */
     int no_ecology;  /* 1: leave the ecology plugin out (a caller that drives it itself) */
     unsigned threads; /* threads for the tree variants and the plugins' workers; 0: one per processor */
     phase_times *times; /* may be NULL: where the terrain, tree variant and ecology times add up */

@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "cut_image.h"
 #include "harness.h"
 #include "work_dir.h"
 #include "io/image_io.h"
@@ -208,7 +209,25 @@ TEST(foreign_files_are_not_quoted)
     }
 }
 
-TEST_LIST(TEST_CASE(png_rgb_round_trip), TEST_CASE(png_rgba_round_trip),
+/* A texture cut short is refused with its name and what is wrong, not read with grey for the
+ * missing part. */
+TEST(cut_images_are_refused)
+{
+    const char *names[] = {"cut.jpg", "cut.tif", "cut.png"};
+    for (int i = 0; i < 3; i++) {
+        const char *path = cut_image_write(names[i], 0.6);
+        err_buf err = {{0}};
+        image_f32 img = {0};
+        CHECK_INT(image_read(path, &img, &err), -1);
+        fprintf(stderr, "%s\n", err.msg);
+        CHECK_STR_CONTAINS(err.msg, path);
+        CHECK(img.pixels == NULL);
+        if (i < 2) CHECK_STR_CONTAINS(err.msg, "damaged or cut short");
+        remove(path);
+    }
+}
+
+TEST_LIST(TEST_CASE(cut_images_are_refused), TEST_CASE(png_rgb_round_trip), TEST_CASE(png_rgba_round_trip),
           TEST_CASE(png_grey_round_trip), TEST_CASE(overwrite_replaces_the_file),
           TEST_CASE(unreadable_files), TEST_CASE(failed_writes_leave_nothing),
           TEST_CASE(devices_and_fifos_are_refused), TEST_CASE(foreign_files_are_not_quoted))

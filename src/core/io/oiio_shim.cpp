@@ -49,6 +49,16 @@ int read_integer_channel(OIIO::ImageInput *in, int c, image_f32 *img, err_buf *e
     return 0;
 }
 
+// What OpenImageIO noted while it read pixels it still handed over: libjpeg and libtiff let a
+// reader go on past the end of a file cut short (the rest of the image filled with grey) and
+// only record the complaint. The first line of it (a TIFF gives one per missing strip), or "".
+std::string damage_noted(OIIO::ImageInput *in)
+{
+    std::string why = in->geterror();
+    size_t eol = why.find('\n');
+    return eol == std::string::npos ? why : why.substr(0, eol);
+}
+
 // Reads the file `path`, or the bytes behind `proxy` when it is not NULL (OpenImageIO then
 // takes the format from the extension of `open_name`); `path` names the image in messages.
 int read_into(const char *path, const char *open_name, OIIO::Filesystem::IOProxy *proxy,
@@ -101,10 +111,15 @@ int read_into(const char *path, const char *open_name, OIIO::Filesystem::IOProxy
         if (!img->channel_names[c])
             return err_nomem(err, "%s: out of memory for the channel names", path);
     }
+    (void)in->geterror(); // anything noted while opening is not about the pixels
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img->pixels)) {
         std::string why = in->geterror();
         return err_set(err, "%s: cannot read the pixels: %s", path, why.c_str());
     }
+    const std::string damage = damage_noted(in.get());
+    if (!damage.empty())
+        return err_set(err, "%s: cannot read the image: it is damaged or cut short (OpenImageIO "
+                       "says: %s)", path, damage.c_str());
     for (int c = 0; c < spec.nchannels; c++)
         if (read_integer_channel(in.get(), c, img, err)) return err_prefix(err, "%s: ", path);
     in->close();
@@ -321,11 +336,16 @@ int photo_read_into(const char *path, image_f32 *img, photo *meta, err_buf *err)
     if (!img->pixels)
         return err_nomem(err, "%s: out of memory for %zu float samples", path, count);
     img->channels = static_cast<uint32_t>(spec.nchannels);
+    (void)in->geterror(); // anything noted while opening is not about the pixels
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img->pixels)) {
         std::string why = in->geterror();
         return err_fail(err, ERR_INPUT, "%s: cannot read the photograph's pixels: OpenImageIO "
                         "says: %s", path, why.c_str());
     }
+    const std::string damage = damage_noted(in.get());
+    if (!damage.empty())
+        return err_fail(err, ERR_INPUT, "%s: cannot read the photograph: it is damaged or cut "
+                        "short (OpenImageIO says: %s)", path, damage.c_str());
     in->close();
     return 0;
 }

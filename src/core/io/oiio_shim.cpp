@@ -93,8 +93,17 @@ int read_into(const char *path, const char *open_name, OIIO::Filesystem::IOProxy
     const size_t count = static_cast<size_t>(spec.width) * static_cast<size_t>(spec.height) *
                          static_cast<size_t>(spec.nchannels);
     if (count > SIZE_MAX / sizeof(float) / 2)
-        return err_set(err, "%s: cannot read the image: %dx%d pixels with %d channels is too "
-                       "large", path, spec.width, spec.height, spec.nchannels);
+        return err_fail(err, ERR_LIMIT, "%s: cannot read the image: %dx%d pixels with %d channels "
+                        "is too large", path, spec.width, spec.height, spec.nchannels);
+    // The size comes from the file's header alone (any file can claim 60000 x 60000): checked
+    // against the memory budget before anything is allocated, as photographs and DTMs are.
+    const uint64_t n_px = static_cast<uint64_t>(spec.width) * static_cast<uint64_t>(spec.height);
+    const uint64_t need = n_px * (static_cast<uint64_t>(spec.nchannels) * sizeof(float) +
+                                  IMAGE_READ_COPY_BYTES_PER_PIXEL);
+    const std::string what = std::string("reading the image '") + path + "' (" +
+                             std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                             ", " + std::to_string(spec.nchannels) + " channels)";
+    if (memory_check(need, what.c_str(), err)) return err_default(err, ERR_LIMIT);
 
     img->width = static_cast<uint32_t>(spec.width);
     img->height = static_cast<uint32_t>(spec.height);

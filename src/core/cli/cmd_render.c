@@ -174,7 +174,7 @@ static int render_run(cli_mpi *m, int argc, char **argv)
     if (m->rank) goto done;
     double ev = sc->image.exposure_set ? sc->image.exposure : auto_exposure_stops(f);
     if (!ro.quiet) fprintf(stderr, "exposure: %+.2f EV (%s)\n", ev, sc->image.exposure_set ? "image.exposure" : "metered");
-    if (film_write_exr(f, &sc->site, ev, exr, &err) || film_write_png(f, png, sc->image.tone, ev, &err)) {
+    if (film_write_pair(f, &sc->site, sc->image.tone, ev, png, exr, &err)) {
         rc = cli_fail("render", &err, ERR_OUTPUT);
         goto done;
     }

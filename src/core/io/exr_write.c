@@ -231,9 +231,10 @@ static int exr_write_part(exr_context_t ctx, exr_stream *s, const exr_frame *f,
     return status;
 }
 
-int exr_write(const char *path, const exr_frame *f, err_buf *err)
+int exr_write_into(atomic_file *out, const exr_frame *f, err_buf *err)
 {
-    if (!path || !f) return err_set(err, "exr_write needs an output path and a frame");
+    if (!out || out->fd < 0 || !f) return err_set(err, "exr_write_into needs an open temporary and a frame");
+    const char *path = out->path;
     if (f->width == 0 || f->height == 0 || f->width > EXR_MAX_SIDE || f->height > EXR_MAX_SIDE)
         return err_set(err, "%s: a frame of %ux%u pixels cannot be written; width and height "
                        "must be between 1 and %d", path, (unsigned)f->width, (unsigned)f->height,
@@ -244,9 +245,7 @@ int exr_write(const char *path, const exr_frame *f, err_buf *err)
         return err_set(err, "%s: the frame has no layers; give at least one of rgb, depth, "
                        "normal, albedo, instance_id, species_id, object_id, development, development_rgb", path);
 
-    atomic_file out;
-    if (atomic_file_open(&out, path, err)) return -1;
-    exr_stream s = {.fd = out.fd, .path = path, .err = err};
+    exr_stream s = {.fd = out->fd, .path = path, .err = err};
 
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     init.error_handler_fn = exr_on_error;
@@ -264,7 +263,15 @@ int exr_write(const char *path, const exr_frame *f, err_buf *err)
         if (rc && !status) status = exr_fail(&s, rc, "writing the chunk offset table");
     }
     exr_stream_now = NULL;
-    if (status) {
+    return status ? -1 : 0;
+}
+
+int exr_write(const char *path, const exr_frame *f, err_buf *err)
+{
+    if (!path || !f) return err_set(err, "exr_write needs an output path and a frame");
+    atomic_file out;
+    if (atomic_file_open(&out, path, err)) return -1;
+    if (exr_write_into(&out, f, err)) {
         atomic_file_abort(&out);
         return -1;
     }

@@ -146,6 +146,7 @@ TEST(obj_material_libraries_and_maps_stay_in_the_folder)
     snprintf(abs_tex, sizeof abs_tex, "%s", at("outside/tex.png"));
     refused(obj("map_abs.obj", NULL, abs_tex), abs_tex, "is an absolute path");
     refused(obj("map_back.obj", NULL, "..\\outside\\tex.png"), "..\\outside\\tex.png", "climbs out of the model's folder");
+    refused(obj("map_drive.obj", NULL, "C:\\textures\\tex.png"), "C:\\textures\\tex.png", "is an absolute path");
     accepted(at("model/map_up.obj"), work_dir());
 }
 

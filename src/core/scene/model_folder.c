@@ -51,7 +51,9 @@ static int path_inside(const char *root, const char *p)
 static const char *escape(const model_folder *mf, const char *base, const char *ref, const char *file)
 {
     if (!strncmp(ref, "file://", 7)) ref += 7;
-    if (ref[0] == '/' || ref[0] == '\\' || (ref[0] && ref[1] == ':')) return why_absolute;
+    int drive = ((ref[0] >= 'A' && ref[0] <= 'Z') || (ref[0] >= 'a' && ref[0] <= 'z')) && ref[1] == ':' &&
+                (ref[2] == '/' || ref[2] == '\\'); /* C:\tex.png */
+    if (ref[0] == '/' || ref[0] == '\\' || drive) return why_absolute;
     char lexical[2 * MODEL_FOLDER_PATH_MAX + 2];
     int n = snprintf(lexical, sizeof lexical, "%s/%s", base, ref);
     if (n < 0 || (size_t)n >= sizeof lexical) return why_climbs; /* cannot be shown inside */

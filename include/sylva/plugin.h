@@ -50,7 +50,7 @@ extern "C" {
 #endif
 
 #define SYLVA_ABI_MAJOR 1
-#define SYLVA_ABI_MINOR 4
+#define SYLVA_ABI_MINOR 5
 
 /* Bytes from the start of `type` to the end of `field`. */
 #define SYLVA_FIELD_END(type, field) (offsetof(type, field) + sizeof(((type *)0)->field))
@@ -334,7 +334,8 @@ typedef struct sylva_host_api {
     sylva_heightfield *(*heightfield_new)(sylva_host *, uint32_t nx, uint32_t ny,
                                           int with_material);
 
-    /* Terrain queries over the scene's terrain (valid during ecology calls). */
+    /* Terrain queries over the scene's ground as surveyed (valid during ecology calls): the
+     * same ground whatever the camera, as the ecology request's terrain. */
     int (*terrain_height)(sylva_host *, double x, double y, double *z);
     int (*terrain_normal)(sylva_host *, double x, double y, double n[3]);
 
@@ -418,11 +419,23 @@ typedef struct sylva_terrain_request {
                              h - origin[2]); zeros without a CRS */
     double eye[3];        /* the camera's position in the local frame; eye[2] is NaN while the
                              camera's height is given above a ground not yet built */
+    /* ---- ABI 1.5 (test with SYLVA_HAS_FIELD) ---- */
+    int32_t surveyed;     /* 1: the ground as surveyed, which the analyses read (ZTV, probe,
+                             objects' heights, the ecology's terrain factors): the DTM's own nodes
+                             and heights, with no detail added and no levels of detail, whatever
+                             the eye. 0: the ground to render. A host asks a plugin of ABI 1.5 or
+                             later for both, the surveyed ground first; each answer is a new
+                             heightfield_new. */
 } sylva_terrain_request;
 
 typedef struct sylva_terrain_out {
     uint32_t size;
     sylva_heightfield *terrain; /* set by the plugin: from api->heightfield_new */
+    /* ---- ABI 1.5 (test with SYLVA_HAS_FIELD) ---- */
+    int32_t renders_as_is; /* set by the plugin on a `surveyed` request: 1 when the ground it
+                              would render is this one, node for node and with its materials
+                              (no detail added, no levels): the host then renders it and asks
+                              for no second ground */
 } sylva_terrain_out;
 
 typedef struct sylva_tree_request {
@@ -518,6 +531,7 @@ typedef struct sylva_plugin {
 #define SYLVA_PLUGIN_SIZE_1_2 SYLVA_PLUGIN_SIZE_1_1 /* 1.2 appended to the terrain request only */
 #define SYLVA_PLUGIN_SIZE_1_3 SYLVA_PLUGIN_SIZE_1_2 /* 1.3 appended to the heightfield only */
 #define SYLVA_PLUGIN_SIZE_1_4 SYLVA_FIELD_END(sylva_plugin, flags)
+#define SYLVA_PLUGIN_SIZE_1_5 SYLVA_PLUGIN_SIZE_1_4 /* 1.5 appended to the terrain request only */
 
 /* The one exported symbol: descriptor `index` of this module, NULL past the end. */
 #define SYLVA_PLUGIN_ENTRY "sylva_plugin_get"

@@ -148,6 +148,11 @@ TEST(height_above_ground_off_terrain)
     CHECK(s == NULL);
     scene_free(s);
     CHECK_STR_CONTAINS(err.msg, "plant_off.yaml:5:10: plant 0: position (50, 0) lies outside the terrain");
+    /* its extent in local metres, and on the site's map the position and the extent */
+    CHECK_STR_CONTAINS(err.msg, "which spans x from 0.000 to 10.000 and y from 0.000 to 10.000 (local metres); on "
+                                "the map (WGS 84 / UTM zone 14N) the point is at easting 650050.000, northing "
+                                "3600000.000 and the terrain spans easting 650000.000 to 650010.000, northing "
+                                "3600000.000 to 3600010.000");
 }
 
 /* Every EXR sylva writes names the site's CRS (WKT and name) and origin in its header, and the

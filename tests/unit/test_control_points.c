@@ -46,6 +46,20 @@ TEST(csv_map_columns)
     control_points_free(cp);
 }
 
+/* A spreadsheet's CSV starts with a UTF-8 byte-order mark: read as if it had none. */
+TEST(csv_with_byte_order_mark)
+{
+    const char *path = write_file("bom.csv", "\xef\xbb\xbfu,v,x,y,z\n1,2,3,4,5\n");
+    err_buf err = {{0}};
+    control_points *cp = control_points_read(path, NULL, &err);
+    if (!cp) fprintf(stderr, "%s\n", err.msg);
+    CHECK(cp != NULL);
+    if (!cp) return;
+    CHECK_INT(cp->n, 1);
+    CHECK_NEAR(cp->points[0].pixel[0], 1, 0);
+    control_points_free(cp);
+}
+
 TEST(csv_local_columns_any_order_without_id)
 {
     const char *path = write_file("local.csv", "x,y,z,v,u\n1,2,3,40,50\n-1.5e2,2,0.5,4,5\n");
@@ -120,6 +134,8 @@ TEST(malformed_files_refused_where_they_are_wrong)
     refused("u,v,x,y,z\n1,2,3,4\n", "bad.txt:2:1:", "4 fields, but the first line names 5 columns");
     refused("u,v,x,y,z\n1,2,3,4,5+1\n", "bad.txt:2:9:", "'z' must be a finite number, got '5+1'");
     refused("id,u,v,x,y,z\n,1,2,3,4,5\n", "bad.txt:2:1:", "'id' is empty");
+    refused("id,u,v,x,y,z\n\"p1,1,2,3,4,5\n", "bad.txt:2:1:", "opens a double quote that is not closed");
+    refused("id,u,v,x,y,z\np1,1, \"2,3,4,5\n", "bad.txt:2:7:", "opens a double quote that is not closed");
     err_buf err = {{0}};
     CHECK(control_points_read(work_dir(), "a folder", &err) == NULL);
     CHECK_STR_CONTAINS(err.msg, "a folder");
@@ -223,7 +239,7 @@ TEST(engabreen_survey)
     control_points_free(cp);
 }
 
-TEST_LIST(TEST_CASE(points_outside_the_photograph), TEST_CASE(csv_map_columns),
+TEST_LIST(TEST_CASE(points_outside_the_photograph), TEST_CASE(csv_map_columns), TEST_CASE(csv_with_byte_order_mark),
           TEST_CASE(csv_local_columns_any_order_without_id), TEST_CASE(imgraft_text),
           TEST_CASE(malformed_files_refused_where_they_are_wrong), TEST_CASE(nul_byte_refused), TEST_CASE(random_text_read_or_refused),
           TEST_CASE(engabreen_survey))

@@ -341,6 +341,48 @@ TEST(start_camera_from_exif)
     scene_file_free(sf);
 }
 
-TEST_LIST(TEST_CASE(renderer_rays_follow_the_lens), TEST_CASE(start_camera_from_exif),
+/* Without a photo: section, a plate sylva rendered is composited with a gain of 1 (its light is
+ * the render's own); a photograph is refused before anything is rendered, saying what to add. */
+TEST(plate_without_photo_section)
+{
+    err_buf err = {{0}};
+#define SMALL_IMAGE "image: {width: 48, height: 30, spp: 4, seed: 11, max_depth: 2}\n"
+    const char *path = work_file("no_photo.yaml", SMALL_IMAGE TRUE_CAMERA SCENE_BODY);
+    scene_file *sf = path ? scene_file_load(path, NULL, &err) : NULL;
+    build_options bo = {.quiet = 1};
+    scene *s = sf ? scene_build(sf, NULL, &bo, &err) : NULL;
+    CHECK(s != NULL);
+    if (!s) {
+        scene_file_free(sf);
+        return;
+    }
+    render_options ro = {.threads = 2, .quiet = 1, .leave_out = ACCEL_MASK_DEVELOPMENT};
+    film *shot = render_scene(s, &ro, NULL, &err);
+    CHECK(shot != NULL);
+    char plate[4096], snapshot[4096], dir[4096];
+    snprintf(plate, sizeof plate, "%s", work_path("own_plate.png"));
+    CHECK_INT(shot ? composite_write_srgb(plate, shot->width, shot->height, shot->rgb, &err) : -1, 0);
+    snprintf(snapshot, sizeof snapshot, "%s", work_file("photo.ppm", "P3\n2 1\n255\n90 120 160 60 90 40\n"));
+    snprintf(dir, sizeof dir, "%s", work_path("no_photo_out"));
+    mkdir(dir, 0700);
+    montage_options mo = {.dir = dir, .threads = 2, .quiet = 1, .photo = plate};
+    montage_report rep;
+    int rc = montage_run(s, sf, &mo, &rep, &err);
+    if (rc) fprintf(stderr, "%s\n", err.msg);
+    CHECK_INT(rc, 0);
+    if (!rc) montage_report_free(&rep);
+    mo.photo = snapshot;
+    double t0 = harness_seconds();
+    CHECK_INT(montage_run(s, sf, &mo, &rep, &err), -1);
+    CHECK(harness_seconds() - t0 < 0.5); /* refused before any render */
+    CHECK_INT(err.status, ERR_USAGE);
+    CHECK_STR_CONTAINS(err.msg, "photo.ppm is a photograph and the scene has no photo: section");
+    CHECK_STR_CONTAINS(err.msg, "add photo: {file: ");
+    film_free(shot);
+    scene_free(s);
+    scene_file_free(sf);
+}
+
+TEST_LIST(TEST_CASE(renderer_rays_follow_the_lens), TEST_CASE(start_camera_from_exif), TEST_CASE(plate_without_photo_section),
           TEST_CASE(new_planting_is_part_of_the_development),
           TEST_CASE(panorama_montage), TEST_CASE(photograph_to_montage), TEST_CASE(photograph_with_lens_distortion))

@@ -515,15 +515,15 @@ TEST(scene_extreme_directions)
     scene_file_free(sf);
 }
 
-/* 3,000 finely subdivided spheres (a 180 KB file) would need far more memory than allowed:
- * refused at load, before any mesh is built. */
+/* 3,000 finely subdivided spheres of as many sizes (a 220 KB file) would need far more memory
+ * than allowed: refused at load, before any mesh is built. */
 TEST(scene_shapes_beyond_memory)
 {
-    static char text[200000];
+    static char text[260000];
     size_t n = (size_t)snprintf(text, sizeof text, "camera:\n  position: [0, -50, 5]\nobjects:\n");
     for (int i = 0; i < 3000; i++)
         n += (size_t)snprintf(text + n, sizeof text - n,
-                              "  - {shape: sphere, subdivisions: 7, position: [%d, 0, 1]}\n", i);
+                              "  - {shape: sphere, subdivisions: 7, radius: %d, position: [%d, 0, 1]}\n", i + 1, i);
     const char *scene = work_file("spheres.yaml", text);
     CHECK(scene != NULL);
     if (!scene) return;
@@ -533,7 +533,8 @@ TEST(scene_shapes_beyond_memory)
     CHECK(sf == NULL);
     scene_file_free(sf);
     CHECK_STR_CONTAINS(err.msg, "spheres.yaml:4:5: building the scene's shapes (983040000 "
-                                "triangles) needs about 131.8 GiB of memory, more than the 4.0 GiB");
+                                "triangles) and 3000 placements of objects needs about 131.8 GiB of memory, "
+                                "more than the 4.0 GiB");
     /* one such sphere fits */
     sf = load_ok(work_file("few_spheres.yaml", "camera:\n  position: [0, -50, 5]\nobjects:\n"
                                                "  - {shape: sphere, subdivisions: 7}\n"), NULL);

@@ -176,6 +176,42 @@ TEST(group_layout)
     scene_free(s);
 }
 
+/* Built-in shapes of one kind, size and material share one mesh as models do: a layout of 30
+ * boxes and a box written alone hold one box; another size, another material, a sphere and an
+ * inline mesh are models of their own. Each object is an instance of its shape, snapped to the
+ * slope as before. */
+TEST(shapes_share_one_mesh)
+{
+    char csv[2048] = "id,x,y\n";
+    for (int i = 0; i < 30; i++) {
+        size_t used = strlen(csv);
+        snprintf(csv + used, sizeof csv - used, "B%d,%d,%d\n", i, -29 + 2 * i, 10);
+    }
+    CHECK(work_file("boxes.csv", csv) != NULL);
+    scene *s = build_ok("materials:\n  red: {type: lambert, albedo: [0.8, 0.1, 0.1]}\n"
+                        "objects:\n"
+                        "  - {layout: boxes.csv, shape: box, size: [1, 1, 3], material: red}\n"
+                        "  - {name: alone, shape: box, size: [1, 1, 3], material: red, position: [0, -20]}\n"
+                        "  - {name: grey, shape: box, size: [1, 1, 3], position: [5, -20]}\n"
+                        "  - {name: tall, shape: box, size: [1, 1, 4], material: red, position: [10, -20]}\n"
+                        "  - {name: ball, shape: sphere, radius: 1, position: [15, -20, 1]}\n"
+                        "  - {name: tri, shape: mesh, vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]],"
+                        " triangles: [[0, 1, 2]], position: [20, -20, 0]}\n");
+    if (!s) return;
+    CHECK_INT(s->n_objects, 35);
+    CHECK_INT(s->n_models, 5);
+    uint64_t triangles = 0;
+    for (uint32_t m = 0; m < s->n_models; m++) triangles += s->models[m].mesh->nt;
+    CHECK_INT(triangles - s->models[s->objects[33].model].mesh->nt, 3 * 12 + 1); /* three boxes, a triangle */
+    for (uint32_t o = 0; o < s->n_objects; o++) CHECK(s->objects[o].mesh == NULL);
+    for (uint32_t o = 0; o < 31; o++) CHECK_INT(s->objects[o].model, 0);
+    CHECK(s->objects[31].model != 0 && s->objects[32].model != 0 && s->objects[31].model != s->objects[32].model);
+    /* B0 at x = -29 snapped: its bottom on the lowest ground under [-29.5, -28.5], -2.95 m */
+    check_bounds(s, 0, -29.5, -28.5, 9.5, 10.5, -2.95, 0.05);
+    check_bounds(s, 30, -0.5, 0.5, -20.5, -19.5, -0.05, 2.95);
+    scene_free(s);
+}
+
 /* Map coordinates: easting and northing less the site origin (none here: the origin is 0). */
 TEST(layout_in_map_coordinates)
 {
@@ -196,6 +232,22 @@ static void expect_error(const char *body, const char *want1, const char *want2)
     CHECK_STR_CONTAINS(err.msg, want1);
     if (want2) CHECK_STR_CONTAINS(err.msg, want2);
     scene_free(s);
+}
+
+/* A layout saved by a spreadsheet starts with a UTF-8 byte-order mark: read as if it had none.
+ * A quote left open is refused where it opens. */
+TEST(layout_with_byte_order_mark_and_open_quote)
+{
+    write_models();
+    CHECK(work_file("bom.csv", "\xef\xbb\xbfid,x,y\nA,5,6\n") != NULL);
+    scene *s = build_ok("objects:\n  - {layout: bom.csv, model: tet.stl}\n");
+    if (s) CHECK_STR_CONTAINS(s->objects[0].name, "A");
+    scene_free(s);
+    CHECK(work_file("open_quote.csv", "id,x,y\n\"A,5,6\nB, \"7, 8\n") != NULL);
+    expect_error("objects:\n  - {layout: open_quote.csv, model: tet.stl}\n", "open_quote.csv:2:1: this field "
+                 "opens a double quote that is not closed", NULL);
+    CHECK(work_file("open_quote2.csv", "id,x,y\nB, \"7, 8\n") != NULL);
+    expect_error("objects:\n  - {layout: open_quote2.csv, model: tet.stl}\n", "open_quote2.csv:2:4:", NULL);
 }
 
 /* Each problem stops the build with a sentence naming the file and place. */
@@ -303,5 +355,7 @@ TEST(pov_export_declares_a_model_once)
 }
 
 TEST_LIST(TEST_CASE(model_placement), TEST_CASE(probe_finds_a_placed_model), TEST_CASE(instances_share_one_mesh), TEST_CASE(group_layout),
-          TEST_CASE(layout_in_map_coordinates), TEST_CASE(clear_errors),
+          TEST_CASE(shapes_share_one_mesh),
+          TEST_CASE(layout_in_map_coordinates), TEST_CASE(layout_with_byte_order_mark_and_open_quote),
+          TEST_CASE(clear_errors),
           TEST_CASE(object_id_and_development_layers), TEST_CASE(pov_export_declares_a_model_once))

@@ -216,5 +216,51 @@ TEST(site_scene_from_dtm)
     plugin_registry_free(reg);
 }
 
+/* The scene built from load_with_dtm's file, or NULL with err set. */
+static scene *build_with_dtm(const char *site, const char *dtm, err_buf *err)
+{
+    plugin_registry *reg = plugin_registry_open(err);
+    scene_file *sf = load_with_dtm(site, dtm, "{position: [0, 0, 900]}", err);
+    build_options quiet = {.quiet = 1};
+    scene *s = sf && reg ? scene_build(sf, reg, &quiet, err) : NULL;
+    scene_file_free(sf);
+    plugin_registry_free(reg);
+    return s;
+}
+
+/* A site is local: a DTM whose footprint lies more than 100 km plus its own size from the site
+ * origin is refused at the terrain section with the distance in km; one within it is built. */
+TEST(dtm_far_from_the_site_origin)
+{
+    const char *dtm = write_dtm("far.tif", 32614, 649990.3, 3600110.7, 10.0); /* 210 x 110 m */
+    CHECK(dtm != NULL);
+    if (!dtm) return;
+    err_buf err = {{0}};
+    /* an origin given 2,900 km from the DTM (in the DTM's own CRS) */
+    scene *s = build_with_dtm("{origin: [100000, 1000000]}", dtm, &err);
+    CHECK(s == NULL);
+    CHECK_STR_CONTAINS(err.msg, "dtm_site.yaml:3:10: the DTM '");
+    CHECK_STR_CONTAINS(err.msg, "' lies 2658 km from the site origin (easting 100000, northing 1000000)");
+    CHECK_STR_CONTAINS(err.msg, "spans easting 649995 to 650195, northing 3600006 to 3600106, 0.2 km across");
+    CHECK_STR_CONTAINS(err.msg, "must come within 100.2 km of the origin");
+    scene_free(s);
+    /* the site in another CRS's area: the DTM warped into UTM zone 33N, thousands of km away */
+    s = build_with_dtm("{crs: EPSG:32633, origin: [500000, 5000000]}", dtm, &err);
+    CHECK(s == NULL);
+    CHECK_STR_CONTAINS(err.msg, " km from the site origin (easting 500000, northing 5000000): in the site's CRS "
+                                "(WGS 84 / UTM zone 33N)");
+    scene_free(s);
+    /* 99.8 km beyond the DTM's east edge: local enough; 100.3 km: not */
+    s = build_with_dtm("{origin: [750000, 3600056]}", dtm, &err);
+    if (!s) fprintf(stderr, "%s\n", err.msg);
+    CHECK(s != NULL);
+    scene_free(s);
+    s = build_with_dtm("{origin: [750500, 3600056]}", dtm, &err);
+    CHECK(s == NULL);
+    CHECK_STR_CONTAINS(err.msg, "lies 100 km from the site origin");
+    scene_free(s);
+}
+
 TEST_LIST(TEST_CASE(lonlat_to_utm), TEST_CASE(crs_rules), TEST_CASE(utm_zones),
-          TEST_CASE(site_from_geographic_dtm), TEST_CASE(site_from_projected_dtm), TEST_CASE(site_scene_from_dtm))
+          TEST_CASE(site_from_geographic_dtm), TEST_CASE(site_from_projected_dtm), TEST_CASE(site_scene_from_dtm),
+          TEST_CASE(dtm_far_from_the_site_origin))

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "scene/proj_network.h"
 #include "util/file_check.h"
 
 int cli_parse_u64(const char *cmd, const char *opt, const char *s, uint64_t lo, uint64_t hi, uint64_t *out)
@@ -26,16 +27,28 @@ int cli_parse_u64(const char *cmd, const char *opt, const char *s, uint64_t lo, 
     return 0;
 }
 
+/* One side of WIDTHxHEIGHT: decimal digits only, read without wrapping. Sets *end past them. */
+static int parse_side(const char *s, const char **end, uint64_t *v)
+{
+    *v = 0;
+    const char *c = s;
+    for (; *c >= '0' && *c <= '9'; c++)
+        if (*v <= UINT64_MAX / 100) *v = *v * 10 + (uint64_t)(*c - '0'); /* past 1e17 it only grows */
+    *end = c;
+    return c == s ? -1 : 0;
+}
+
 int cli_parse_size(const char *cmd, const char *opt, const char *s, uint32_t *w, uint32_t *h)
 {
-    unsigned a, b;
-    char tail;
-    if (!s || sscanf(s, "%ux%u%c", &a, &b, &tail) != 2 || a < 1 || b < 1 || a > 16384 || b > 16384) {
-        fprintf(stderr, "sylva %s: %s expects WIDTHxHEIGHT with each side from 1 to 16384, got '%s'\n", cmd, opt,
-                s ? s : "");
+    uint64_t a = 0, b = 0;
+    const char *c = s;
+    int bad = !s || parse_side(c, &c, &a) || *c != 'x' || parse_side(c + 1, &c, &b) || *c;
+    if (bad || a < 1 || b < 1 || a > CLI_SIZE_MAX || b > CLI_SIZE_MAX) {
+        fprintf(stderr, "sylva %s: %s expects WIDTHxHEIGHT with each side a whole number from 1 to %u, got '%s'\n",
+                cmd, opt, CLI_SIZE_MAX, s ? s : "");
         return -1;
     }
-    *w = a, *h = b;
+    *w = (uint32_t)a, *h = (uint32_t)b;
     return 0;
 }
 
@@ -43,6 +56,7 @@ int cli_scene_argument(const char *cmd, const char *arg, const char **scene_path
 {
     if (!strcmp(arg, "--allow-gdal-virtual")) {
         file_allow_gdal_virtual(1);
+        proj_network_allow(1);
         return 0;
     }
     if (arg[0] == '-') {

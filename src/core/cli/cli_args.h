@@ -22,7 +22,10 @@ int cli_scene_stem(const char *scene_path, const char *prefix, const char *suffi
 /* Creates the output folder `dir` when it does not exist (its parent must). Returns 0, or -1
  * with err (ERR_OUTPUT). */
 int cli_make_folder(const char *dir, err_buf *err);
-/* Parses "WxH" with each side in [1, 16384]. */
+/* The largest side of an image --size takes. */
+#define CLI_SIZE_MAX 16384u
+/* Parses "WxH" with each side in [1, CLI_SIZE_MAX]; a side too long for any integer type is
+ * refused as out of range, never wrapped. */
 int cli_parse_size(const char *cmd, const char *opt, const char *s, uint32_t *w, uint32_t *h);
 
 #endif

@@ -5,8 +5,15 @@
 #include <string.h>
 
 #include "cli/cli_status.h"
+#include "io/output_guard.h"
 #include "geometry/ground_cover_place.h"
 #include "util/progress.h"
+
+/* The commands that draw no picture, for which a scene needs no camera: section. */
+static unsigned load_flags(const char *cmd)
+{
+    return cmd && (!strcmp(cmd, "ztv") || !strcmp(cmd, "probe")) ? SCENE_FILE_NO_CAMERA : 0;
+}
 
 int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const char *viewpoint,
                    const char *season, const build_options *opt)
@@ -16,7 +23,7 @@ int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const 
     double t0 = progress_now();
     if (!(c->reg = plugin_registry_open(&err))) return cli_fail(cmd, &err, ERR_INTERNAL);
     /* Problems of the scene file speak of it themselves. */
-    if (!(c->sf = scene_file_load(scene_path, c->reg, &err))) return cli_fail(NULL, &err, ERR_INPUT);
+    if (!(c->sf = scene_file_load_with(scene_path, c->reg, load_flags(cmd), &err))) return cli_fail(NULL, &err, ERR_INPUT);
     if (viewpoint && scene_file_use_viewpoint(c->sf, viewpoint, &err)) return cli_fail(cmd, &err, ERR_USAGE);
     if (season && scene_file_use_season(c->sf, season, &err)) return cli_fail(cmd, &err, ERR_USAGE);
     build_options bo = opt ? *opt : (build_options){0};
@@ -33,6 +40,7 @@ void cli_scene_close(cli_scene *c)
     scene_free(c->scene);
     scene_file_free(c->sf);
     plugin_registry_free(c->reg);
+    output_guard_clear();
     memset(c, 0, sizeof *c);
 }
 

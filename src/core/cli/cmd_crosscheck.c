@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "cli/cli_args.h"
+#include "cli/cli_outputs.h"
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
@@ -158,6 +159,7 @@ int cmd_crosscheck(int argc, char **argv)
     err_buf err = {{0}};
     cli_scene cs;
     int rc = cli_scene_open(&cs, "crosscheck", scene_path, viewpoint, season, &bo);
+    if (!rc) rc = cli_outputs_check("crosscheck", cs.sf, NULL, 0, NULL, 0); /* the folder's files */
     if (!rc) rc = cli_scene_ground_cover(&cs, "crosscheck", co.width, co.height, co.quiet);
     if (rc) goto done;
     const scene *sc = cs.scene;

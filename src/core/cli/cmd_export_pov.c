@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cli/cli_args.h"
+#include "cli/cli_outputs.h"
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
@@ -121,6 +122,8 @@ int cmd_export_pov(int argc, char **argv)
     err_buf err = {{0}};
     cli_scene cs;
     int rc = cli_scene_open(&cs, "export-pov", scene_path, viewpoint, season, &bo);
+    cli_file output = {out, out == out_default ? "the output" : "-o"};
+    if (!rc) rc = cli_outputs_check("export-pov", cs.sf, NULL, 0, &output, 1);
     if (!rc && !species_name) rc = cli_scene_ground_cover(&cs, "export-pov", po.width, po.height, bo.quiet);
     if (rc) goto done;
     const scene *sc = cs.scene;

@@ -8,6 +8,7 @@
 
 #include "cli/cli_args.h"
 #include "cli/cli_ecology.h"
+#include "cli/cli_outputs.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "io/atomic_file.h"
@@ -54,7 +55,7 @@ static int write_csv(const char *path, const sylva_ecology_factor_map *maps, uin
 int cmd_factors(int argc, char **argv)
 {
     const char *scene_path = NULL, *dir = NULL;
-    build_options bo = {0};
+    build_options bo = {.analysis = 1}; /* the ground as surveyed, whatever the camera */
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
@@ -80,6 +81,7 @@ int cmd_factors(int argc, char **argv)
     }
     cli_ecology e;
     int rc = cli_ecology_open(&e, "factors", scene_path, &bo);
+    if (!rc) rc = cli_outputs_check("factors", e.base.sf, NULL, 0, NULL, 0); /* the folder's files */
     if (rc) {
         cli_ecology_close(&e);
         return rc;

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cli/cli_args.h"
+#include "cli/cli_outputs.h"
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
@@ -89,6 +90,8 @@ int cmd_montage(int argc, char **argv)
     cli_scene cs;
     montage_report rep = {0};
     int rc = cli_scene_open(&cs, "montage", scene_path, NULL, season, &bo);
+    cli_file inputs[] = {{mo.photo, "--photo"}, {mo.points, "--control-points"}};
+    if (!rc) rc = cli_outputs_check("montage", cs.sf, inputs, 2, NULL, 0);
     if (!rc && cli_make_folder(mo.dir, &err)) rc = cli_fail("montage", &err, ERR_OUTPUT);
     if (!rc && montage_run(cs.scene, cs.sf, &mo, &rep, &err)) rc = cli_fail("montage", &err, ERR_INPUT);
     if (!rc) printf("%s\n", mo.dir);

@@ -88,7 +88,7 @@ int cmd_probe(int argc, char **argv)
     const char *scene_path = NULL, *coord[2] = {NULL, NULL};
     int local = 0, n_coord = 0;
     double radius = 10.0, at[2];
-    build_options bo = {0};
+    build_options bo = {.analysis = 1}; /* the ground as surveyed, whatever the camera */
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *val = i + 1 < argc ? argv[i + 1] : NULL;

@@ -6,6 +6,7 @@
 
 #include "cli/cli_args.h"
 #include "cli/cli_mpi.h"
+#include "cli/cli_outputs.h"
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
@@ -143,6 +144,8 @@ static int render_run(cli_mpi *m, int argc, char **argv)
     cli_scene cs;
     film *f = NULL;
     int rc = cli_scene_open(&cs, "render", scene_path, viewpoint, season, &bo);
+    cli_file outputs[] = {{png, out ? "-o" : "the output"}, {exr, out ? "-o" : "the output"}};
+    if (!rc) rc = cli_outputs_check("render", cs.sf, NULL, 0, outputs, 2);
     if (!rc) rc = cli_scene_ground_cover(&cs, "render", ro.width, ro.height, ro.quiet);
     if (rc) goto done;
     if (cli_mpi_same_scene(m, cs.scene, &err)) {

@@ -9,6 +9,7 @@
 
 #include "cli/cli_args.h"
 #include "cli/cli_ecology.h"
+#include "cli/cli_outputs.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "io/atomic_file.h"
@@ -108,7 +109,7 @@ static int write_map(cli_ecology *e, const char *dir, const char *const *names, 
     sylva_ecology_factor_map water = {0}, m;
     for (uint32_t i = 0; i < ecology_session_factor_count(e->session); i++)
         if (!ecology_session_factor(e->session, i, &m, err) && !strcmp(m.name, "water")) water = m;
-    int rc = plant_map_write(path, e->base.scene->terrain, water.values ? &water : NULL, p, n, names, e->base.sf->n_species,
+    int rc = plant_map_write(path, e->base.scene->surveyed, water.values ? &water : NULL, p, n, names, e->base.sf->n_species,
                              year, err);
     free(p);
     if (rc) return err_default(err, ERR_OUTPUT);
@@ -122,7 +123,7 @@ int cmd_simulate(int argc, char **argv)
     uint32_t map_years[MAX_MAP_YEARS] = {0, 20, 60, 80, 180}, n_map_years = 5;
     uint64_t years = 0;
     int years_given = 0;
-    build_options bo = {0};
+    build_options bo = {.analysis = 1}; /* the ground as surveyed, whatever the camera */
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *val = i + 1 < argc ? argv[i + 1] : NULL;
@@ -174,6 +175,15 @@ int cmd_simulate(int argc, char **argv)
     uint32_t *counts = NULL, *row_years = NULL, rows = 0;
     const char **names = NULL;
     if (rc) goto done;
+    char stats_csv[4200] = "", stats_png[4200] = "";
+    if (stats) {
+        snprintf(stats_csv, sizeof stats_csv, "%s/population.csv", stats);
+        snprintf(stats_png, sizeof stats_png, "%s/population.png", stats);
+    }
+    cli_file inputs[] = {{load, "--load"}};
+    cli_file outputs[] = {{out, "-o"}, {save, "--save"}, {stats ? stats_csv : NULL, "--stats"},
+                          {stats ? stats_png : NULL, "--stats"}};
+    if ((rc = cli_outputs_check("simulate", e.base.sf, inputs, 1, outputs, 4))) goto done;
     if (load && ecology_session_load(e.session, load, &err)) {
         rc = cli_fail("simulate", &err, ERR_INPUT);
         goto done;

@@ -10,10 +10,12 @@
 
 #include "cli/cli_args.h"
 #include "cli/cli_mpi.h"
+#include "cli/cli_outputs.h"
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "render/accel.h"
+#include "scene/heightfield.h"
 #include "util/progress.h"
 #include "ztv/ztv_grid.h"
 #include "ztv/ztv_output.h"
@@ -40,6 +42,10 @@ static void ztv_usage(FILE *out)
             "  --observer-height M     eye height above the ground (default 2)\n"
             "  --screening S           none | vegetation | all: what screens besides bare earth\n"
             "                          (default all: the plants and the objects)\n"
+            "  --ground G              surveyed | refined: the ground the sightlines trace: the\n"
+            "                          DTM as surveyed (default; a ZTV is a property of the DTM and\n"
+            "                          the development), or the terrain plugin's refinement, with\n"
+            "                          its levels of detail around the development, not the camera\n"
             "  --flat-earth            straight sightlines, whatever the earth: section says\n"
             "  --season S              the plants on season S (spring, summer, autumn, winter)\n"
             "                          or date YYYY-MM-DD, instead of the scene's season: key\n"
@@ -135,7 +141,7 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
     double radius = NAN, cell = NAN, eye = NAN;
     int screening = -1, flat = 0;
     unsigned threads = 0;
-    build_options bo = {0};
+    build_options bo = {.analysis = 1}; /* the ground as surveyed, whatever the camera */
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *val = i + 1 < argc ? argv[i + 1] : NULL;
@@ -164,6 +170,12 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
                 return EXIT_USAGE;
             }
             i++;
+        } else if (!strcmp(a, "--ground")) {
+            if (!val || (strcmp(val, "surveyed") && strcmp(val, "refined"))) {
+                fprintf(stderr, "sylva ztv: --ground expects surveyed or refined, got '%s'\n", val ? val : "");
+                return EXIT_USAGE;
+            }
+            bo.analysis = !strcmp(val, "surveyed"), bo.detail_at_development = !bo.analysis, i++;
         } else if (!strcmp(a, "--flat-earth")) {
             flat = 1;
         } else if (!strcmp(a, "--season")) {
@@ -197,6 +209,7 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
     accel acc = {0};
     ztv_output *out = NULL;
     int rc = cli_scene_open(&cs, "ztv", scene_path, NULL, season, &bo);
+    if (!rc) rc = cli_outputs_check("ztv", cs.sf, NULL, 0, NULL, 0); /* the folder's files */
     if (rc) goto done;
     if (cli_mpi_same_scene(m, cs.scene, &err)) {
         rc = cli_fail("ztv", &err, ERR_INPUT);
@@ -224,6 +237,9 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
         rc = cli_fail("ztv", &err, ERR_INPUT);
         goto done;
     }
+    char past_edge[256]; /* said even with -q: the map is not what the radius asked for */
+    if (!m->rank && !ztv_grid_past_edge_text(&job.grid, radius, past_edge, sizeof past_edge))
+        fprintf(stderr, "sylva ztv: %s; its cells there are mapped as no terrain\n", past_edge);
     if (!bo.quiet)
         fprintf(stderr, "ztv: %u targets of %u development%s, %u x %u cells of %g m, observer %g m, %s%s\n",
                 targets.n, targets.n_developments, targets.n_developments == 1 ? "" : "s", job.grid.nx,
@@ -235,8 +251,13 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
         goto done;
     }
     t_phase = phase_stop(&cs.times, PHASE_BVH, t_phase);
+    char ground[256], described[192];
+    heightfield_describe(sc->terrain, described, sizeof described);
+    snprintf(ground, sizeof ground, "%s: %s", sc->terrain == sc->surveyed ? "the DTM as surveyed"
+             : "the terrain refined around the development", described);
+    if (!bo.quiet) fprintf(stderr, "ztv: ground: %s\n", ground);
     ztv_info info = {.grid = job.grid, .crs_wkt = sf->site.crs_wkt, .crs_name = sf->site.crs_name,
-                     .observer_height = eye, .radius = radius, .curvature = job.earth && job.earth->curvature,
+                     .observer_height = eye, .ground = ground, .radius = radius, .curvature = job.earth && job.earth->curvature,
                      .refraction = sc->earth.refraction, .n_targets = targets.n,
                      .n_developments = targets.n_developments, .development_names = targets.names,
                      .development_xy = (const double(*)[2])targets.centre,

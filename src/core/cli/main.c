@@ -5,7 +5,9 @@
 
 #include "cli/cli_status.h"
 #include "cli/commands.h"
+#include "scene/proj_network.h"
 #include "sylva/plugin.h"
+#include "util/memory_budget.h"
 
 static void usage(FILE *out)
 {
@@ -41,7 +43,13 @@ int main(int argc, char **argv)
         return EXIT_OK;
     }
     const sylva_command *c = sylva_command_find(name);
-    if (c) return c->run(argc - 1, argv + 1);
+    if (c) {
+        /* no network through PROJ (grids for a transformation) unless a command allows it */
+        proj_network_start();
+        err_buf err = {{0}};
+        if (memory_limit_check(&err)) return cli_fail(c->name, &err, ERR_USAGE);
+        return c->run(argc - 1, argv + 1);
+    }
     fprintf(stderr, "sylva: unknown command '%s' (commands:", name);
     for (c = sylva_commands; c->name; c++) fprintf(stderr, "%s %s", c == sylva_commands ? "" : ",", c->name);
     fprintf(stderr, "; see sylva --help)\n");

@@ -15,6 +15,8 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "io/output_guard.h"
+
 /* --- the registry of live temporaries -------------------------------------------------------- */
 
 #define REGISTRY_SLOTS 64
@@ -128,6 +130,7 @@ int atomic_file_open(atomic_file *af, const char *path, err_buf *err)
     if (len >= sizeof af->path || len + 32 >= sizeof af->tmp)
         return err_set(err, "%s: output path is too long", path);
     if (path[len - 1] == '/') return err_set(err, "%s: names a folder, not an output file", path);
+    if (output_guard_check(path, err)) return -1;
     memcpy(af->path, path, len + 1);
     for (int attempt = 0; attempt < 100; attempt++) {
         if (temp_name(path, af->tmp, sizeof af->tmp))

@@ -39,7 +39,12 @@ int image_read_memory(const void *bytes, size_t size, const char *format, const 
                       image_f32 *out, err_buf *err);
 void image_free(image_f32 *img); /* accepts a zeroed image */
 
-/* Writes 8-bit pixels (channels 1..4) to path; the format follows the extension. */
+/* The Software tag of every 8-bit image sylva writes: a montage tells a plate sylva rendered
+ * (whose light is the render's own) from a photograph by it (io/photo.h). */
+#define SYLVA_SOFTWARE_TAG "sylva"
+
+/* Writes 8-bit pixels (channels 1..4) to path; the format follows the extension, tagged with
+ * Software = SYLVA_SOFTWARE_TAG. */
 int image_write_u8(const char *path, uint32_t width, uint32_t height, uint32_t channels,
                    const uint8_t *pixels, err_buf *err);
 /* The same into a temporary the caller opened (atomic_file_open_stream) and commits or aborts

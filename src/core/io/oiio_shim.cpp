@@ -152,6 +152,7 @@ int write_u8(const char *path, atomic_file *tmp, uint32_t width, uint32_t height
     OIIO::ImageSpec spec(static_cast<int>(width), static_cast<int>(height),
                          static_cast<int>(channels), OIIO::TypeDesc::UINT8);
     spec.attribute("oiio:UnassociatedAlpha", 1);
+    spec.attribute("Software", SYLVA_SOFTWARE_TAG); /* tells a render from a photograph (io/photo.h) */
     if (!out->open(tmp->tmp, spec)) {
         std::string why = out->geterror();
         return err_set(err, "%s: cannot create the image file: %s", path, why.c_str());
@@ -338,6 +339,9 @@ int photo_read_into(const char *path, image_f32 *img, photo *meta, err_buf *err)
     meta->is_float = spec.format.is_floating_point();
     std::string cs = spec.get_string_attribute("oiio:ColorSpace");
     std::snprintf(meta->colour_space, sizeof meta->colour_space, "%s", cs.c_str());
+    const std::string software = spec.get_string_attribute("Software");
+    meta->sylva_render = software.compare(0, std::strlen(SYLVA_SOFTWARE_TAG), SYLVA_SOFTWARE_TAG) == 0 ||
+                         photo_attr(spec, "exposureStops") != nullptr;
 
     const size_t count = static_cast<size_t>(n_px) * static_cast<size_t>(spec.nchannels);
     img->width = meta->stored_width, img->height = meta->stored_height;

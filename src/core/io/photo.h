@@ -53,6 +53,8 @@ typedef struct photo {
     int bits;                 /* bits per sample in the file (8, 16, 32) */
     int is_float;             /* samples were floating point (taken as linear) */
     char colour_space[32];    /* OpenImageIO's oiio:ColorSpace, "" when not given */
+    int sylva_render;         /* 1: sylva wrote the image (its Software tag, or the EXR's
+                                 exposureStops): a render, not a photograph */
     photo_exif exif;
 } photo;
 

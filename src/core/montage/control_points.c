@@ -237,7 +237,7 @@ static int read_lines(reader *R, char *text, size_t len)
     uint32_t expected = 0, line = 0;
     char *field[CSV_MAX_FIELDS];
     uint32_t column[CSV_MAX_FIELDS];
-    for (char *p = text; p && *p;) {
+    for (char *p = text + csv_bom_length(text); p && *p;) {
         char *cur = p, *nl = strchr(p, '\n');
         if (nl) *nl = 0;
         p = nl ? nl + 1 : NULL;
@@ -255,7 +255,11 @@ static int read_lines(reader *R, char *text, size_t len)
             if (read_imgraft_line(R, cur, line)) return -1;
             continue;
         }
-        uint32_t nf = csv_split(cur, field, column, CSV_MAX_FIELDS);
+        uint32_t open_quote;
+        uint32_t nf = csv_split(cur, field, column, CSV_MAX_FIELDS, &open_quote);
+        if (open_quote)
+            return located(R, line, open_quote, "this field opens a double quote that is not closed; close it "
+                           "before the next comma or the end of the line (a field cannot hold a comma)");
         if (nf > CSV_MAX_FIELDS) return located(R, line, 1, "%u fields; a line has at most %u", nf, CSV_MAX_FIELDS);
         if (!expected) {
             if (read_csv_header(R, line, field, column, nf, where)) return -1;

@@ -186,6 +186,20 @@ static int write_files(const scene *s, const scene_file *sf, const photo *ph, co
     return rc ? err_default(err, ERR_OUTPUT) : 0;
 }
 
+/* The development's gain against the plate, known before anything is rendered: the photo:
+ * section's exposure; without the section, 1 for a plate sylva rendered (its light is the
+ * render's own), and for a photograph a refusal, as nothing says how its exposure matches. */
+static int plate_gain(const scene_file *sf, const char *photo_path, const photo *ph, float *gain, err_buf *err)
+{
+    *gain = sf->photo.file ? (float)sf->photo.exposure : 1.0f;
+    if (sf->photo.file || ph->sylva_render) return 0;
+    return err_fail(err, ERR_USAGE,
+                    "%s is a photograph and the scene has no photo: section, which gives the development's gain "
+                    "against it; add photo: {file: %s, exposure: K} (K takes the render's linear radiance to the "
+                    "photograph's linear values; 1 for a plate sylva rendered), with its control_points to match "
+                    "the camera (docs/photomontage.md)", photo_path, photo_path);
+}
+
 int montage_run(scene *s, const scene_file *sf, const montage_options *o, montage_report *rep, err_buf *err)
 {
     memset(rep, 0, sizeof *rep);
@@ -203,7 +217,9 @@ int montage_run(scene *s, const scene_file *sf, const montage_options *o, montag
     control_points *cp = NULL;
     composite_renders r = {0};
     float *montage = NULL;
+    float gain = 0;
     int rc = photo_read(photo_path, &ph, err);
+    if (!rc) rc = plate_gain(sf, photo_path, &ph, &gain, err);
     camera_model cam;
     if (!rc && panorama) camera_model_from_settings(&cam, &s->camera, ph.width, ph.height); /* for the sheet */
     if (!rc && !panorama) rc = montage_start_camera(s, sf, &ph, &cam, &rep->sensor_width_mm, err);
@@ -227,7 +243,7 @@ int montage_run(scene *s, const scene_file *sf, const montage_options *o, montag
     if (!rc) {
         composite_layers l = composite_layers_of(&r);
         image_f32 plate = {.width = ph.width, .height = ph.height, .channels = 3, .pixels = ph.rgb};
-        rc = composite_apply(&l, &plate, (float)sf->photo.exposure, 1, montage, NULL, err);
+        rc = composite_apply(&l, &plate, gain, 1, montage, NULL, err);
     }
     if (!rc) rc = write_files(s, sf, &ph, photo_path, cp, rep, &r, montage, o->dir, err);
     free(montage);

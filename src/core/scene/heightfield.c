@@ -3,6 +3,7 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 void heightfield_free(sylva_heightfield *h)
@@ -118,4 +119,17 @@ int heightfield_normal(const sylva_heightfield *h, double x, double y, double n[
     double l = sqrt(dzdx * dzdx + dzdy * dzdy + 1.0);
     n[0] = -dzdx / l, n[1] = -dzdy / l, n[2] = 1.0 / l;
     return 0;
+}
+
+const char *heightfield_describe(const sylva_heightfield *h, char *buf, size_t n)
+{
+    int k = snprintf(buf, n, "%u x %u nodes %.3g x %.3g m apart", h->nx, h->ny, h->dx, h->dy);
+    uint32_t levels = SYLVA_HAS_FIELD(h, sylva_heightfield, levels) ? h->n_levels : 0;
+    if (levels && k >= 0 && (size_t)k < n) {
+        const sylva_terrain_level *f = &h->levels[levels - 1];
+        snprintf(buf + k, n - (size_t)k, ", refined in %u level%s of detail down to %.3g m over %.3g x %.3g km",
+                 levels, levels == 1 ? "" : "s", h->dx / f->refine, f->cells_x * h->dx / 1000,
+                 f->cells_y * h->dy / 1000);
+    }
+    return buf;
 }

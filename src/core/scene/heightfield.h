@@ -18,6 +18,10 @@
 #define HEIGHTFIELD_NODE_BYTES 8u
 #define HEIGHTFIELD_RENDER_NODE_BYTES 32u
 
+/* A phrase for messages and summaries: "N x M nodes D m apart", and its finer levels of
+ * detail when it has any. Writes at most n bytes into buf and returns buf. */
+const char *heightfield_describe(const sylva_heightfield *h, char *buf, size_t n);
+
 /* Frees a heightfield the host made, its arrays and its levels; accepts NULL. */
 void heightfield_free(sylva_heightfield *h);
 

@@ -211,8 +211,9 @@ static sylva_heightfield *host_heightfield_new(sylva_host *h, uint32_t nx, uint3
     *hf = (sylva_heightfield){.size = sizeof *hf, .nx = nx, .ny = ny, .dx = 1, .dy = 1, .z = z,
                               .material = mat, .water_material = -1};
     /* The scene takes it now, so a failing plugin leaks nothing. */
-    heightfield_free(h->scene->terrain);
-    h->scene->terrain = hf;
+    sylva_heightfield **slot = h->surveyed ? &h->scene->surveyed : &h->scene->terrain;
+    if (*slot != (h->surveyed ? h->scene->terrain : h->scene->surveyed)) heightfield_free(*slot);
+    *slot = hf;
     return hf;
 }
 
@@ -247,8 +248,13 @@ static sylva_terrain_level *host_heightfield_level_new(sylva_host *h, sylva_heig
                                                        uint32_t j0, uint32_t cells_x, uint32_t cells_y,
                                                        uint32_t refine, int with_material)
 {
-    if (!hf || hf != h->scene->terrain) {
+    if (!hf || hf != (h->surveyed ? h->scene->surveyed : h->scene->terrain)) {
         host_error(h, "heightfield_level_new: the heightfield is not the one heightfield_new made");
+        return NULL;
+    }
+    if (h->surveyed) {
+        host_error(h, "heightfield_level_new: the ground as surveyed has no levels of detail (the "
+                   "request's 'surveyed' is 1: give the DTM's own nodes)");
         return NULL;
     }
     if (level_window_ok(h, hf, i0, j0, cells_x, cells_y, refine)) return NULL;
@@ -280,12 +286,12 @@ static sylva_terrain_level *host_heightfield_level_new(sylva_host *h, sylva_heig
 
 static int host_terrain_height(sylva_host *h, double x, double y, double *z)
 {
-    return scene_terrain_height(h->scene, x, y, z) ? SYLVA_ERR_PARAM : SYLVA_OK;
+    return scene_surveyed_height(h->scene, x, y, z) ? SYLVA_ERR_PARAM : SYLVA_OK;
 }
 
 static int host_terrain_normal(sylva_host *h, double x, double y, double n[3])
 {
-    return scene_terrain_normal(h->scene, x, y, n) ? SYLVA_ERR_PARAM : SYLVA_OK;
+    return scene_surveyed_normal(h->scene, x, y, n) ? SYLVA_ERR_PARAM : SYLVA_OK;
 }
 
 static int host_plant_add(sylva_host *h, const sylva_plant *p)

@@ -32,6 +32,8 @@ struct sylva_host {
     unsigned threads;      /* the plugin's worker threads (api->threads); 0: one per processor */
     int concurrent;        /* 1: one of several hosts calling generate() at once on one plugin
                               state; material_new and texture_new refuse (create() makes them) */
+    int surveyed;          /* terrain: 1 while the plugin answers for the ground as surveyed;
+                              heightfield_new then makes scene->surveyed, not scene->terrain */
 };
 
 void host_init(sylva_host *h, scene *sc, const char *scene_dir, uint64_t seed, const char *context,

@@ -351,7 +351,7 @@ static const sylva_param_spec ztv_params[] = {
      .help = "Targets sampled on each development object's surface (when neither targets nor "
              "target_heights are given)."},
     {.name = "target_heights", .type = SYLVA_P_LIST, .max_len = 64, .unit = "m",
-     .help = "Targets at these heights above each development object's footprint (e.g. a "
+     .help = "Targets at these heights above each development object's base as placed (e.g. a "
              "turbine's hub and blade tip: [150, 270])."},
     {.name = "targets", .type = SYLVA_P_LIST, .help = "Targets given by hand: a list of "
      "{position, height_above_ground, development}."},

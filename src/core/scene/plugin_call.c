@@ -164,10 +164,10 @@ int plugin_call_open_ecology(plugin_call *c, const scene_file *sf, scene *s, con
 {
     const ecology_spec *es = &sf->ecology;
     call_begin(c, sf, es->line, es->column, "ecology plugin '%s'", es->plugin);
-    if (!s->terrain) return err_at(err, ERR_INPUT, sf->path, es->line, es->column, "the ecology needs a terrain");
+    if (!s->surveyed) return err_at(err, ERR_INPUT, sf->path, es->line, es->column, "the ecology needs a terrain");
     if (!(c->species_info = ecology_species(s, sf, err))) return -1;
     uint64_t seed = part_seed(sf, "ecology");
-    c->ecology = (sylva_ecology_request){.size = sizeof c->ecology, .seed = seed, .terrain = s->terrain,
+    c->ecology = (sylva_ecology_request){.size = sizeof c->ecology, .seed = seed, .terrain = s->surveyed,
                                          .species = c->species_info, .n_species = sf->n_species};
     if (call_open(c, s, reg, es->plugin, SYLVA_KIND_ECOLOGY, es->params, seed, out, err)) {
         plugin_call_close(c);
@@ -176,19 +176,42 @@ int plugin_call_open_ecology(plugin_call *c, const scene_file *sf, scene *s, con
     return 0;
 }
 
-int plugin_call_terrain(plugin_call *c, err_buf *err)
+int plugin_call_knows_surveyed(const plugin_call *c)
+{
+    return c->plugin->desc->abi_minor >= 5;
+}
+
+/* Where the development stands: the mean position of its objects, else of the ztv: section's
+ * targets; NaN when the scene names neither. */
+static void development_centre(const scene_file *sf, double at[3])
+{
+    double sum[2] = {0, 0};
+    uint32_t n = 0;
+    for (uint32_t k = 0; k < sf->n_objects; k++)
+        if (sf->objects[k].development) sum[0] += sf->objects[k].position[0], sum[1] += sf->objects[k].position[1], n++;
+    if (!n)
+        for (; n < sf->ztv.n_targets; n++) sum[0] += sf->ztv.targets[n].position[0], sum[1] += sf->ztv.targets[n].position[1];
+    at[0] = n ? sum[0] / n : NAN, at[1] = n ? sum[1] / n : NAN, at[2] = NAN;
+}
+
+int plugin_call_terrain(plugin_call *c, int surveyed, int at_development, err_buf *err)
 {
     scene *s = c->host.scene;
     const scene_file *sf = c->sf;
     sylva_terrain_request req = {.size = sizeof req, .seed = c->host.seed, .site_crs = sf->site.crs_wkt,
                                  .site_origin = {sf->site.origin[0], sf->site.origin[1], sf->site.origin[2]},
-                                 .eye = {sf->camera.position[0], sf->camera.position[1], sf->camera.position[2]}};
+                                 .eye = {sf->camera.position[0], sf->camera.position[1], sf->camera.position[2]},
+                                 .surveyed = surveyed};
+    if (at_development) development_centre(sf, req.eye);
     sylva_terrain_out out = {.size = sizeof out};
+    c->host.surveyed = surveyed;
     phase_mark t0 = phase_start();
     int rc = c->plugin->desc->generate(c->state, host_api_table(), &c->host, &req, &out);
     phase_stop(c->times, PHASE_TERRAIN, t0);
+    c->host.surveyed = 0;
     if (rc) return plugin_call_failed(c, "generate", rc, err);
-    const sylva_heightfield *hf = s->terrain;
+    c->renders_as_is = surveyed && out.renders_as_is;
+    const sylva_heightfield *hf = surveyed ? s->surveyed : s->terrain;
     if (!out.terrain || out.terrain != hf)
         return plugin_call_refuse(c, "generate", ERR_PLUGIN, err, "gave no heightfield made with heightfield_new");
     if (!(hf->dx > 0 && hf->dy > 0 && isfinite(hf->x0) && isfinite(hf->y0)))

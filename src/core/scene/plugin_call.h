@@ -29,6 +29,8 @@ typedef struct plugin_call {
     const loaded_plugin *plugin;   /* the registry's */
     void *state;                   /* from create(); owned */
     sylva_host host;               /* the plugin's side of the calls */
+    int renders_as_is;             /* terrain: the surveyed ground the last call gave is also the
+                                      ground to render (sylva_terrain_out.renders_as_is) */
     err_buf plugin_err;            /* where the plugin's sentences land */
     char context[200];             /* "tree plugin 'x' for species 'y'", for messages */
     const scene_file *sf;          /* borrowed */
@@ -63,8 +65,15 @@ int plugin_call_open_ecology(plugin_call *c, const scene_file *sf, scene *s, con
 void plugin_call_close(plugin_call *c);
 
 /* The terrain: generate() into the scene's heightfield, checked (made with heightfield_new,
- * positive spacing, finite heights). Returns 0, or -1 with err set. */
-int plugin_call_terrain(plugin_call *c, err_buf *err);
+ * positive spacing, finite heights). surveyed: the ground as surveyed into scene.surveyed (the
+ * request's `surveyed`; only for a plugin that plugin_call_knows_surveyed), else the ground to
+ * render into scene.terrain, refined around the camera, or around the development when
+ * at_development (build_options.detail_at_development). Returns 0, or -1 with err set. */
+int plugin_call_terrain(plugin_call *c, int surveyed, int at_development, err_buf *err);
+
+/* 1 when the open terrain plugin was built for ABI 1.5 or later, so that it tells the ground
+ * as surveyed from the ground to render. */
+int plugin_call_knows_surveyed(const plugin_call *c);
 
 /* One age variant of a tree species. */
 typedef struct tree_variant {

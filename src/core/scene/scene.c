@@ -43,6 +43,7 @@ scene *scene_new(void)
 void scene_free(scene *s)
 {
     if (!s) return;
+    if (s->surveyed != s->terrain) heightfield_free(s->surveyed);
     heightfield_free(s->terrain);
     for (uint32_t i = 0; i < s->n_materials; i++) free(s->materials[i].name);
     for (uint32_t i = 0; i < s->n_textures; i++) free(s->textures[i].name), free(s->textures[i].rgba);
@@ -228,4 +229,14 @@ int scene_terrain_height(const scene *s, double x, double y, double *z)
 int scene_terrain_normal(const scene *s, double x, double y, double n[3])
 {
     return s->terrain ? heightfield_normal(s->terrain, x, y, n) : -1;
+}
+
+int scene_surveyed_height(const scene *s, double x, double y, double *z)
+{
+    return s->surveyed ? heightfield_height(s->surveyed, x, y, z) : -1;
+}
+
+int scene_surveyed_normal(const scene *s, double x, double y, double n[3])
+{
+    return s->surveyed ? heightfield_normal(s->surveyed, x, y, n) : -1;
 }

@@ -63,14 +63,18 @@ typedef struct object_model {
     mesh *mesh;               /* owned; in the model's own frame (metres, Z up) */
 } object_model;
 
-/* An object is either its own mesh in world space (a built-in shape of the objects section)
- * or an instance of a model: mesh NULL, model >= 0, xf its placement. */
+/* An object is either its own mesh in world space (scene_add_object) or an instance of a model:
+ * mesh NULL, model >= 0, xf its placement. The objects section places every object, a built-in
+ * shape too, as an instance of a shared model. */
 typedef struct object {
     char *name;               /* owned */
     mesh *mesh;               /* owned; world space (the object's transform applied), or NULL */
     int32_t model;            /* index into scene.models when mesh is NULL, else -1 */
     xform3x4 xf;              /* model frame → world (model instances only) */
     int development;          /* 1: part of the development's coverage mask */
+    uint32_t entry;           /* the objects: entry that placed it (scene_file.objects index) */
+    double base;              /* z of that entry's lowest point as placed (on the ground it was
+                                 snapped to, for an object standing on the terrain) */
 } object;
 
 typedef struct scene {
@@ -83,7 +87,14 @@ typedef struct scene {
     snow_settings snow;         /* snow on the procedural ground (geometry/ground_cover.h) */
     uint32_t season_day;        /* the day of the year shown (scene/phenology.h); 0: not given */
 
-    sylva_heightfield *terrain; /* owned (with its z and material arrays), or NULL */
+    sylva_heightfield *terrain; /* owned (with its z and material arrays), or NULL: the ground
+                                   as rendered, refined around the camera */
+    sylva_heightfield *surveyed; /* the ground as surveyed, which the analyses read (ZTV, probe,
+                                   objects' heights, the ecology): the DTM's own nodes, the same
+                                   whatever the camera. Owned when it is not terrain itself; it is
+                                   terrain for an inline grid, a scene built for an analysis
+                                   (build_options.analysis), and a terrain plugin older than
+                                   ABI 1.5, which cannot tell it apart (docs/models/terrain_ifs.md) */
     int32_t terrain_material;   /* default material of terrain nodes without one */
     int32_t water_material;
 
@@ -144,8 +155,12 @@ static inline int scene_instance_is_ground_cover(const scene *s, uint32_t i)
 uint32_t scene_variant_for_age(const scene *s, uint32_t species, double t);
 
 /* Terrain height and unit normal at (x, y) (heightfield.h); -1 outside it or when there is no
- * terrain. */
+ * terrain. The rendered ground: what plants and the camera stand on. */
 int scene_terrain_height(const scene *s, double x, double y, double *z);
 int scene_terrain_normal(const scene *s, double x, double y, double n[3]);
+
+/* The same on the ground as surveyed (scene.surveyed): what every analysis reads. */
+int scene_surveyed_height(const scene *s, double x, double y, double *z);
+int scene_surveyed_normal(const scene *s, double x, double y, double n[3]);
 
 #endif

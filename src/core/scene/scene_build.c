@@ -8,6 +8,7 @@
 
 #include "io/image_io.h"
 #include "scene/ecology_session.h"
+#include "scene/ground_departure.h"
 #include "scene/host.h"
 #include "scene/plugin_call.h"
 #include "scene/scene_ground.h"
@@ -15,6 +16,7 @@
 #include "scene/scene_spring.h"
 #include "scene/scene_tree_variants.h"
 #include "scene/shapes.h"
+#include "scene/terrain_extent.h"
 
 xform3x4 plant_transform(const double p[3], double rot_deg, double scale)
 {
@@ -82,7 +84,9 @@ static int add_materials(scene *s, const scene_file *sf, err_buf *err)
     return 0;
 }
 
-static int build_terrain(scene *s, const scene_file *sf, const plugin_registry *reg,
+/* The terrain: an inline grid is both grounds; a plugin gives the ground as surveyed, then
+ * (unless the scene is for an analysis) the ground to render, refined for the camera. */
+static int build_terrain(scene *s, const scene_file *sf, const plugin_registry *reg, const build_options *opt,
                          const plugin_call_output *out, err_buf *err)
 {
     const terrain_spec *t = &sf->terrain;
@@ -99,11 +103,26 @@ static int build_terrain(scene *s, const scene_file *sf, const plugin_registry *
         }
         hf->x0 = t->origin[0], hf->y0 = t->origin[1], hf->dx = t->spacing[0], hf->dy = t->spacing[1];
         for (size_t i = 0; i < (size_t)t->nx * t->ny; i++) hf->z[i] = (float)t->grid[i];
+        s->surveyed = hf;
         return 0;
     }
     plugin_call c;
     if (plugin_call_open_terrain(&c, sf, s, reg, out, err)) return -1;
-    int rc = plugin_call_terrain(&c, err);
+    int rc;
+    if (plugin_call_knows_surveyed(&c)) {
+        rc = plugin_call_terrain(&c, 1, 0, err);
+        if (!rc && !opt->analysis && !c.renders_as_is) rc = plugin_call_terrain(&c, 0, opt->detail_at_development, err);
+        if (!rc && (opt->analysis || c.renders_as_is)) s->terrain = s->surveyed;
+    } else {
+        rc = plugin_call_terrain(&c, 0, opt->detail_at_development, err);
+        if (!rc) {
+            s->surveyed = s->terrain;
+            if (!opt->quiet)
+                fprintf(stderr, "sylva: %s:%u:%u: terrain plugin '%s' was built for plugin ABI %u.%u and cannot "
+                        "give the ground as surveyed; the analyses read the ground it renders\n", sf->path,
+                        t->line, t->column, t->plugin, c.plugin->desc->abi_major, c.plugin->desc->abi_minor);
+        }
+    }
     plugin_call_close(&c);
     return rc;
 }
@@ -180,7 +199,11 @@ static int place_plant(scene *s, uint32_t sp, double pos[3], int snap, double ab
     if (snap) {
         double z = 0;
         if (!scene_terrain_height(s, pos[0], pos[1], &z)) pos[2] = z + above;
-        else if (s->terrain) return err_set(err, "position (%g, %g) lies outside the terrain", pos[0], pos[1]);
+        else if (s->terrain) {
+            char where[512];
+            terrain_extent_text(s, pos[0], pos[1], where, sizeof where);
+            return err_set(err, "position (%g, %g) lies outside the terrain%s", pos[0], pos[1], where);
+        }
         else pos[2] = above;
     }
     uint32_t proto = s->species[sp].first_prototype + scene_variant_for_age(s, sp, age);
@@ -280,7 +303,8 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
     plugin_call_output out = {.verbose = opt->verbose, .quiet = opt->quiet, .warnings_only = opt->quiet,
                               .threads = opt->threads, .times = opt->times};
     if (scene_set_site(s, &sf->site, err) || add_materials(s, sf, err) ||
-        build_terrain(s, sf, plugins, &out, err) || scene_ground_camera(s, sf, err) ||
+        build_terrain(s, sf, plugins, opt, &out, err) || terrain_near_site(s, sf, err) ||
+        scene_ground_camera(s, sf, err) ||
         build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) ||
         build_ecology(s, sf, plugins, opt, &out, err) || scene_build_objects(s, sf, err) ||
         scene_apply_blossom(s, sf, NULL, err) || scene_apply_season(s, sf, err) ||
@@ -288,5 +312,6 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
         scene_free(s);
         return NULL;
     }
+    ground_departure_report(s, stderr);
     return s;
 }

@@ -14,6 +14,12 @@ typedef struct build_options {
     int verbose;     /* plugin DEBUG logs */
     int quiet;       /* no progress output, and no plugin INFO logs (warnings still print) */
     int no_ecology;  /* 1: leave the ecology plugin out (a caller that drives it itself) */
+    int analysis;    /* 1: a scene for an analysis (ZTV, probe): the ground as surveyed is the
+                        terrain too, nothing refined for a camera */
+    int detail_at_development; /* 1: the rendered terrain refined around the development (the
+                        development objects' mean position, else the ztv targets', else the
+                        terrain's centre) instead of the camera: a refined ground that is the same
+                        whatever the camera (`ztv --ground refined`) */
     unsigned threads; /* threads for the tree variants and the plugins' workers; 0: one per processor */
     phase_times *times; /* may be NULL: where the terrain, tree variant and ecology times add up */
 } build_options;

@@ -1,9 +1,11 @@
-/* scene_build_objects.c — the objects section into the scene graph. A built-in shape becomes
- * its own mesh in world space. A model file is imported once per (file, scale, up axis) into a
- * shared model, and a group's parts become shared models on first use; objects place them as
- * instances, so twenty turbines hold one copy of each mesh. Heights are resolved here, against
- * the terrain already built: a given z, the origin a height above the ground at (x, y), or the
- * lowest point on the lowest ground under the object's footprint. */
+/* scene_build_objects.c — the objects section into the scene graph. A built-in shape is built
+ * once per (shape, material) into a shared model, a model file is imported once per (file,
+ * scale, up axis), and a group's parts become shared models on first use; objects place them as
+ * instances, so twenty turbines hold one copy of each mesh and a layout of a million boxes one
+ * box. Heights are resolved here, against the terrain already built: a given z, the origin a
+ * height above the ground at (x, y), or the lowest point on the lowest ground under the
+ * object's footprint; each object keeps the z of its entry's lowest point as placed (its
+ * base, from which targets above it are measured). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -11,6 +13,8 @@
 
 #include "scene/model_import.h"
 #include "scene/scene_build.h"
+#include "scene/shape_index.h"
+#include "scene/terrain_extent.h"
 
 /* Footprint samples at most per object; beyond it the spacing grows past the terrain's. */
 #define FOOTPRINT_MAX_SAMPLES 1000000.0
@@ -27,6 +31,9 @@ typedef struct object_builder {
     scene *s;
     const scene_file *sf;
     imported_file *files; uint32_t n_files; /* owned (malloc) */
+    shape_index shapes;        /* the distinct (shape, material) pairs; owned */
+    uint32_t *shape_model;     /* the model of shape number k; owned (malloc) */
+    uint32_t shape_model_cap;
     int32_t *part_model;       /* per part of every group, -1 until built; owned (malloc) */
     uint32_t *first_part;      /* group g's parts at first_part[g] + i; owned (malloc) */
 } object_builder;
@@ -55,6 +62,44 @@ static int32_t model_for_file(object_builder *b, const object_spec *o, err_buf *
     int32_t id = scene_add_model(b->s, base_name(o->model_path), m, err);
     if (id < 0) return -1;
     b->files[b->n_files++] = (imported_file){o->model_path, o->model_scale, o->model_up, o->model_root, (uint32_t)id};
+    return id;
+}
+
+/* A name for the model of a shape: its kind and size, after the first object that placed it. */
+static void shape_model_name(const object_spec *o, char *name, size_t n)
+{
+    const shape_spec *sh = &o->shape;
+    switch (sh->kind) {
+    case SHAPE_BOX: snprintf(name, n, "box %g x %g x %g", sh->size[0], sh->size[1], sh->size[2]); break;
+    case SHAPE_QUAD: snprintf(name, n, "quad %g x %g", sh->size[0], sh->size[1]); break;
+    case SHAPE_DISK: snprintf(name, n, "disk of radius %g", sh->radius); break;
+    case SHAPE_SPHERE: snprintf(name, n, "sphere of radius %g", sh->radius); break;
+    default: snprintf(name, n, "mesh of %u triangles", sh->n_triangles); break;
+    }
+    size_t used = strlen(name);
+    snprintf(name + used, n - used, " (%s, as '%s')", o->material ? o->material : "default material",
+             o->name ? o->name : "object");
+}
+
+/* The model of a shape object's shape and material, built on first use. */
+static int32_t model_for_shape(object_builder *b, const object_spec *o, err_buf *err)
+{
+    uint32_t known = b->shapes.count;
+    int64_t k = shape_index_add(&b->shapes, &o->shape, o->material);
+    if (k < 0) return err_nomem(err, "out of memory");
+    if (k < known) return (int32_t)b->shape_model[k];
+    if (k >= b->shape_model_cap) {
+        uint32_t cap = b->shape_model_cap ? 2 * b->shape_model_cap : 16;
+        uint32_t *grown = realloc(b->shape_model, (size_t)cap * sizeof *grown);
+        if (!grown) return err_nomem(err, "out of memory");
+        b->shape_model = grown, b->shape_model_cap = cap;
+    }
+    mesh *m = scene_shape_mesh(b->s, &o->shape, o->material, o->file, o->line, o->column, "object", o->name, err);
+    if (!m) return -1;
+    char name[256];
+    shape_model_name(o, name, sizeof name);
+    int32_t id = scene_add_model(b->s, name, m, err);
+    if (id >= 0) b->shape_model[k] = (uint32_t)id;
     return id;
 }
 
@@ -109,22 +154,22 @@ static void bounds_add(const mesh *m, const xform3x4 *xf, double lo[3], double h
     }
 }
 
-/* The lowest ground under the rectangle [x0, x1] x [y0, y1], sampled at the terrain's spacing
- * with its edges included; 0 without a terrain. -1 when no point of it lies on the terrain. */
+/* The lowest ground as surveyed under the rectangle [x0, x1] x [y0, y1], sampled at its spacing
+ * with its edges included (objects stand on the same ground whatever the camera); 0 without a terrain. -1 when no point of it lies on the terrain. */
 static int lowest_ground(const scene *s, double x0, double y0, double x1, double y1, double *z)
 {
-    if (!s->terrain) {
+    if (!s->surveyed) {
         *z = 0;
         return 0;
     }
-    double step = fmin(s->terrain->dx, s->terrain->dy);
+    double step = fmin(s->surveyed->dx, s->surveyed->dy);
     double nx = ceil((x1 - x0) / step), ny = ceil((y1 - y0) / step);
     while ((nx + 1) * (ny + 1) > FOOTPRINT_MAX_SAMPLES) step *= 2, nx = ceil((x1 - x0) / step), ny = ceil((y1 - y0) / step);
     double best = INFINITY;
     for (double j = 0; j <= ny; j++)
         for (double i = 0; i <= nx; i++) {
             double h, x = nx > 0 ? x0 + (x1 - x0) * i / nx : x0, y = ny > 0 ? y0 + (y1 - y0) * j / ny : y0;
-            if (!scene_terrain_height(s, x, y, &h)) best = fmin(best, h);
+            if (!scene_surveyed_height(s, x, y, &h)) best = fmin(best, h);
         }
     if (!isfinite(best)) return -1;
     *z = best;
@@ -132,16 +177,18 @@ static int lowest_ground(const scene *s, double x0, double y0, double x1, double
 }
 
 /* The z of the object's origin. lo/hi: its bounds after its turn, before its translation. */
-static int resolve_height(const scene *s, const object_spec *o, const double lo[3], const double hi[3], double *z,
-                          err_buf *err)
+static int origin_height(const scene *s, const object_spec *o, const double lo[3], const double hi[3], double *z,
+                         err_buf *err)
 {
     double x = o->position[0], y = o->position[1], ground = 0;
+    char where[512];
+    terrain_extent_text(s, x, y, where, sizeof where);
     switch (o->base) {
     case OBJECT_AT_Z: *z = o->position[2]; return 0;
     case OBJECT_ABOVE_GROUND:
-        if (s->terrain && scene_terrain_height(s, x, y, &ground))
-            return err_set(err, "position (%g, %g) lies outside the terrain; height_above_ground needs the "
-                           "ground there", x, y);
+        if (s->surveyed && scene_surveyed_height(s, x, y, &ground))
+            return err_set(err, "position (%g, %g) lies outside the terrain%s; height_above_ground needs the "
+                           "ground there", x, y, where);
         *z = ground + o->height_above_ground;
         return 0;
     case OBJECT_ON_GROUND:
@@ -150,11 +197,21 @@ static int resolve_height(const scene *s, const object_spec *o, const double lo[
             return 0;
         }
         if (lowest_ground(s, x + lo[0], y + lo[1], x + hi[0], y + hi[1], &ground))
-            return err_set(err, "the footprint [%g, %g] x [%g, %g] lies outside the terrain", x + lo[0], x + hi[0],
-                           y + lo[1], y + hi[1]);
+            return err_set(err, "the footprint [%g, %g] x [%g, %g] around (%g, %g) lies outside the terrain%s",
+                           x + lo[0], x + hi[0], y + lo[1], y + hi[1], x, y, where);
         *z = ground - lo[2];
         return 0;
     }
+    return 0;
+}
+
+/* The z of the object's origin, and its base: the z of its lowest point as placed. lo/hi: its
+ * bounds after its turn, before its translation. */
+static int resolve_height(const scene *s, const object_spec *o, const double lo[3], const double hi[3], double *z,
+                          double *base, err_buf *err)
+{
+    if (origin_height(s, o, lo, hi, z, err)) return -1;
+    *base = lo[2] <= hi[2] ? *z + lo[2] : *z;
     return 0;
 }
 
@@ -165,42 +222,21 @@ static xform3x4 translated(const xform3x4 *turn, double x, double y, double z)
     return t;
 }
 
-static int place_shape(object_builder *b, const object_spec *o, err_buf *err)
+/* A shape or model object: an instance of its shared model. */
+static int place_model(object_builder *b, const object_spec *o, double *base, err_buf *err)
 {
-    scene *s = b->s;
-    mesh *m = scene_shape_mesh(s, &o->shape, o->material, o->file, o->line, o->column, "object", o->name, err);
-    if (!m) return -1;
-    xform3x4 turn = object_turn(o);
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, z;
-    bounds_add(m, &turn, lo, hi);
-    if (resolve_height(s, o, lo, hi, &z, err)) {
-        mesh_free(m);
-        return -1;
-    }
-    xform3x4 xf = translated(&turn, o->position[0], o->position[1], z);
-    for (uint32_t v = 0; v < m->nv; v++) {
-        vec3 p = xf_point(&xf, v3(m->pos[v * 3], m->pos[v * 3 + 1], m->pos[v * 3 + 2]));
-        vec3 n = v3_norm(xf_normal(&xf, v3(m->nrm[v * 3], m->nrm[v * 3 + 1], m->nrm[v * 3 + 2])));
-        m->pos[v * 3] = p.x, m->pos[v * 3 + 1] = p.y, m->pos[v * 3 + 2] = p.z;
-        m->nrm[v * 3] = n.x, m->nrm[v * 3 + 1] = n.y, m->nrm[v * 3 + 2] = n.z;
-    }
-    return scene_add_object(s, o->name, m, err) < 0 ? -1 : 0;
-}
-
-static int place_model(object_builder *b, const object_spec *o, err_buf *err)
-{
-    int32_t id = model_for_file(b, o, err);
+    int32_t id = o->kind == OBJECT_SHAPE ? model_for_shape(b, o, err) : model_for_file(b, o, err);
     if (id < 0) return -1;
     xform3x4 turn = object_turn(o);
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, z;
     bounds_add(b->s->models[id].mesh, &turn, lo, hi);
-    if (resolve_height(b->s, o, lo, hi, &z, err)) return -1;
+    if (resolve_height(b->s, o, lo, hi, &z, base, err)) return -1;
     xform3x4 xf = translated(&turn, o->position[0], o->position[1], z);
     return scene_add_model_object(b->s, o->name, (uint32_t)id, &xf, err) < 0 ? -1 : 0;
 }
 
 /* Every part of the group, as one object each named "<object>/<part>". */
-static int place_group(object_builder *b, const object_spec *o, err_buf *err)
+static int place_group(object_builder *b, const object_spec *o, double *base, err_buf *err)
 {
     const group_spec *gs = &b->sf->groups[o->group];
     xform3x4 turn = object_turn(o);
@@ -211,7 +247,7 @@ static int place_group(object_builder *b, const object_spec *o, err_buf *err)
         xform3x4 local = part_transform(&gs->parts[i]), in_turn = xf_compose(&turn, &local);
         bounds_add(b->s->models[id].mesh, &in_turn, lo, hi);
     }
-    if (resolve_height(b->s, o, lo, hi, &z, err)) return -1;
+    if (resolve_height(b->s, o, lo, hi, &z, base, err)) return -1;
     xform3x4 place = translated(&turn, o->position[0], o->position[1], z);
     for (uint32_t i = 0; i < gs->n_parts; i++) {
         xform3x4 local = part_transform(&gs->parts[i]), xf = xf_compose(&place, &local);
@@ -236,16 +272,18 @@ int scene_build_objects(scene *s, const scene_file *sf, err_buf *err)
     for (uint32_t i = 0; !rc && i < sf->n_objects; i++) {
         const object_spec *o = &sf->objects[i];
         uint32_t first = s->n_objects;
-        rc = o->kind == OBJECT_SHAPE ? place_shape(&b, o, err)
-           : o->kind == OBJECT_MODEL ? place_model(&b, o, err)
-                                     : place_group(&b, o, err);
+        double base = 0;
+        rc = o->kind == OBJECT_GROUP ? place_group(&b, o, &base, err) : place_model(&b, o, &base, err);
         if (rc && !err_has_place(err)) {
             err_prefix(err, "object '%s': ", o->name);
             err_locate(err, o->file, o->line, o->column);
         }
-        for (uint32_t k = first; !rc && k < s->n_objects; k++) s->objects[k].development = o->development;
+        for (uint32_t k = first; !rc && k < s->n_objects; k++)
+            s->objects[k].development = o->development, s->objects[k].entry = i, s->objects[k].base = base;
     }
     free(b.files);
+    shape_index_free(&b.shapes);
+    free(b.shape_model);
     free(b.part_model);
     free(b.first_part);
     return rc;

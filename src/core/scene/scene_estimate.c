@@ -3,6 +3,7 @@
 
 #include <stdio.h>
 
+#include "scene/shape_index.h"
 #include "util/memory_budget.h"
 
 void shape_counts(const shape_spec *s, uint64_t *vertices, uint64_t *triangles)
@@ -34,32 +35,57 @@ static uint64_t shape_bytes(const shape_spec *s)
     return v * SHAPE_VERTEX_BYTES + t * SHAPE_TRIANGLE_BYTES;
 }
 
+/* The bytes of a shape that is built once, kept as the largest one's place when it is. */
+typedef struct shape_tally {
+    uint64_t bytes, triangles, largest;
+    const char *file;
+    uint32_t line, column;
+} shape_tally;
+
+static void tally_shape(shape_tally *t, const shape_spec *sh, const char *file, uint32_t line, uint32_t column)
+{
+    uint64_t b = shape_bytes(sh), v, tri;
+    shape_counts(sh, &v, &tri);
+    t->bytes += b, t->triangles += tri;
+    if (b > t->largest) t->largest = b, t->file = file, t->line = line, t->column = column;
+}
+
 int scene_estimate_check(const scene_file *sf, err_buf *err)
 {
-    uint64_t total = 0, largest = 0, triangles = 0;
-    const char *where = sf->path;
-    uint32_t line = 1, column = 1;
+    shape_tally t = {.file = sf->path, .line = 1, .column = 1};
+    shape_index distinct = {0};
+    uint64_t placements = 0;
     for (uint32_t i = 0; i < sf->n_objects; i++) {
         const object_spec *o = &sf->objects[i];
+        placements += o->kind == OBJECT_GROUP ? sf->groups[o->group].n_parts : 1;
         if (o->kind != OBJECT_SHAPE) continue; /* models are counted as they are read */
-        uint64_t b = shape_bytes(&o->shape), v, t;
-        shape_counts(&o->shape, &v, &t);
-        total += b, triangles += t;
-        if (b > largest) largest = b, line = o->line, column = o->column;
+        uint32_t known = distinct.count;
+        int64_t k = shape_index_add(&distinct, &o->shape, o->material);
+        if (k >= 0 && k < known) continue; /* built once: placed again as an instance */
+        tally_shape(&t, &o->shape, o->file ? o->file : sf->path, o->line, o->column);
     }
+    shape_index_free(&distinct);
+    for (uint32_t g = 0; g < sf->n_groups; g++)
+        for (uint32_t i = 0; i < sf->groups[g].n_parts; i++) {
+            const object_spec *part = &sf->groups[g].parts[i];
+            if (part->kind == OBJECT_SHAPE) tally_shape(&t, &part->shape, part->file ? part->file : sf->path,
+                                                        part->line, part->column);
+        }
     for (uint32_t i = 0; i < sf->n_species; i++) {
         const species_spec *sp = &sf->species[i];
-        if (sp->plugin) continue;
-        uint64_t b = shape_bytes(&sp->shape), v, t;
-        shape_counts(&sp->shape, &v, &t);
-        total += b, triangles += t;
-        if (b > largest) largest = b, line = sp->line, column = sp->column;
+        if (!sp->plugin) tally_shape(&t, &sp->shape, sf->path, sp->line, sp->column);
     }
-    char what[160];
-    snprintf(what, sizeof what, "building the scene's shapes (%llu triangles)",
-             (unsigned long long)triangles);
-    if (!memory_check(total, what, err)) return 0;
+    uint64_t placed = placements * OBJECT_PLACEMENT_BYTES;
+    char what[200];
+    snprintf(what, sizeof what, "building the scene's shapes (%llu triangles) and %llu placements of objects",
+             (unsigned long long)t.triangles, (unsigned long long)placements);
+    if (!memory_check(t.bytes + placed, what, err)) return 0;
     err_buf why = *err;
+    if (placed > t.bytes && sf->n_objects) {
+        const object_spec *o = &sf->objects[0];
+        return err_set(err, "%s:%u:%u: %s; use fewer objects (about %u bytes a placement; the first is here)",
+                       o->file ? o->file : sf->path, o->line, o->column, why.msg, OBJECT_PLACEMENT_BYTES);
+    }
     return err_set(err, "%s:%u:%u: %s; use fewer objects or fewer sphere subdivisions (the "
-                   "largest shape is here)", where, line, column, why.msg);
+                   "largest shape is here)", t.file, t.line, t.column, why.msg);
 }

@@ -106,6 +106,12 @@ static int load(loader *L, const char *path)
 
 scene_file *scene_file_load(const char *path, const struct plugin_registry *plugins, err_buf *err)
 {
+    return scene_file_load_with(path, plugins, 0, err);
+}
+
+scene_file *scene_file_load_with(const char *path, const struct plugin_registry *plugins, unsigned flags,
+                                 err_buf *err)
+{
     err_clear(err);
     if (!path || !path[0]) {
         err_set(err, "no scene file was named");
@@ -119,9 +125,12 @@ scene_file *scene_file_load(const char *path, const struct plugin_registry *plug
         return NULL;
     }
     sf->arena = a;
-    loader L = {.a = a, .reg = plugins, .err = err, .sf = sf, .file = path};
+    loader L = {.a = a, .reg = plugins, .err = err, .sf = sf, .file = path, .flags = flags};
     int rc = load(&L, path);
     site_frame_free(L.site);
+    if (!rc && L.n_seen && !(sf->includes = arena_alloc(a, (size_t)L.n_seen * sizeof *sf->includes)))
+        rc = sf_out_of_memory(&L);
+    for (uint32_t i = 0; !rc && i < L.n_seen; i++) sf->includes[sf->n_includes++] = L.seen[i].real;
     if (rc) {
         scene_file_free(sf);
         return NULL;

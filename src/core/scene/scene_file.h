@@ -282,9 +282,13 @@ typedef struct photo_settings {
 typedef struct scene_file {
     const char *path;           /* as given */
     const char *dir;            /* absolute folder of the file */
+    const char **includes; uint32_t n_includes; /* the species files `include:` read, as
+                                                   canonical paths, in the order read */
     site_settings site;
     image_settings image;
     camera_settings camera;
+    int has_camera;             /* 0: the file has no camera: section (SCENE_FILE_NO_CAMERA); camera
+                                   then looks north from the origin and renders nothing useful */
     scene_viewpoint *viewpoints; uint32_t n_viewpoints; /* the named views, in file order */
     sun_settings sun;
     sky_settings sky;
@@ -312,6 +316,13 @@ typedef struct scene_file {
 /* Reads and validates `path`. plugins may be NULL only for scenes that name no plugin.
  * Returns a new scene_file (caller frees with scene_file_free) or NULL with err set. */
 scene_file *scene_file_load(const char *path, const struct plugin_registry *plugins, err_buf *err);
+
+/* Flags of scene_file_load_with. */
+#define SCENE_FILE_NO_CAMERA 1u /* the camera: section may be left out: for a command that draws no
+                                   picture (ztv, probe) */
+/* scene_file_load with flags (0: as scene_file_load). */
+scene_file *scene_file_load_with(const char *path, const struct plugin_registry *plugins, unsigned flags,
+                                 err_buf *err);
 void scene_file_free(scene_file *sf); /* accepts NULL */
 
 /* Makes the viewpoint named `name` the scene's camera (before the scene is built). Returns 0, or

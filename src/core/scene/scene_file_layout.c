@@ -108,7 +108,7 @@ int sf_read_layout(loader *L, const char *path, const char *shown, layout_row **
     uint32_t n = 0, line = 0;
     char *field[LAYOUT_MAX_FIELDS];
     uint32_t column[LAYOUT_MAX_FIELDS];
-    for (char *p = text; p && *p;) {
+    for (char *p = text + csv_bom_length(text); p && *p;) {
         char *nl = strchr(p, '\n');
         if (nl) *nl = 0;
         char *cur = p;
@@ -117,7 +117,12 @@ int sf_read_layout(loader *L, const char *path, const char *shown, layout_row **
         const char *q = cur;
         while (*q == ' ' || *q == '\t' || *q == '\r') q++;
         if (!*q || *q == '#') continue;
-        uint32_t nf = csv_split(cur, field, column, LAYOUT_MAX_FIELDS);
+        uint32_t open_quote;
+        uint32_t nf = csv_split(cur, field, column, LAYOUT_MAX_FIELDS, &open_quote);
+        if (open_quote)
+            return sf_located(L->err, shown, line, open_quote, "this field opens a double quote that is not "
+                              "closed; close it before the next comma or the end of the line (a field cannot "
+                              "hold a comma)");
         if (nf > LAYOUT_MAX_FIELDS)
             return sf_located(L->err, shown, line, 1, "%u fields; a layout line has at most %u", nf,
                               LAYOUT_MAX_FIELDS);

@@ -69,6 +69,7 @@ typedef struct loader {
                                     when loading ends) */
     const sylva_plugin *ecology; /* NULL: the scene has no ecology block */
     const char *species_section; /* the ecology plugin's species_section, or "ecology" */
+    unsigned flags;              /* SCENE_FILE_* of scene_file_load_with */
 } loader;
 
 /* --- messages (scene_file_messages.c) --- */

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "scene/heightfield.h"
+#include "scene/terrain_extent.h"
 
 static int by_distance(const void *a, const void *b)
 {
@@ -92,11 +93,11 @@ int scene_probe(const scene *s, double x, double y, double radius, probe_result 
     const sylva_heightfield *hf = s->terrain;
     if (!hf) return err_fail(err, ERR_INPUT, "the scene has no terrain to probe; add a 'terrain:' section");
     double n[3];
-    if (heightfield_height(hf, x, y, &r->ground) || heightfield_normal(hf, x, y, n))
-        return err_fail(err, ERR_INPUT,
-                        "(%.3f, %.3f) lies outside the terrain, which spans x from %.3f to %.3f and y from "
-                        "%.3f to %.3f (local metres)",
-                        x, y, hf->x0, hf->x0 + (hf->nx - 1) * hf->dx, hf->y0, hf->y0 + (hf->ny - 1) * hf->dy);
+    if (heightfield_height(hf, x, y, &r->ground) || heightfield_normal(hf, x, y, n)) {
+        char where[512];
+        terrain_extent_text(s, x, y, where, sizeof where);
+        return err_fail(err, ERR_INPUT, "(%.3f, %.3f) lies outside the terrain%s", x, y, where);
+    }
     double level = sqrt(n[0] * n[0] + n[1] * n[1]);
     r->slope_deg = atan2(level, n[2]) * 180.0 / M_PI;
     /* The normal leans toward where the ground falls. */

@@ -12,6 +12,11 @@
 
 #include "util/err.h"
 
+/* 0 when SYLVA_MEMORY_LIMIT is unset or a valid size; otherwise -1 with err (ERR_USAGE) quoting
+ * it and naming the valid forms. Run once before any work, so a mistyped limit is never
+ * silently ignored. */
+int memory_limit_check(err_buf *err);
+
 /* The budget in bytes (never 0). */
 uint64_t memory_budget(void);
 

@@ -18,7 +18,7 @@ struct ztv_map {
     float *fraction[ZTV_MODES];         /* w * h per computed mode; owned */
     uint8_t *cls[ZTV_MODES];            /* w * h ztv_class per computed mode; owned */
     uint32_t *developments[ZTV_MODES];  /* w * h development bits per computed mode; owned */
-    uint64_t class_pixels[ZTV_MODES][4]; /* map pixels by class */
+    uint64_t class_pixels[ZTV_MODES][ZTV_CLASSES]; /* map pixels by class */
 };
 
 /* --- the reduced grid ------------------------------------------------------------------------ */
@@ -82,7 +82,7 @@ void ztv_map_block(ztv_map *m, const ztv_block *b)
             for (int mode = 0; mode < ZTV_MODES; mode++) {
                 const ztv_layer *l = b->layer[mode];
                 if (!m->cls[mode] || !l) continue;
-                uint8_t cls = l->cls[from] <= ZTV_OUTSIDE ? l->cls[from] : ZTV_OUTSIDE;
+                uint8_t cls = l->cls[from] < ZTV_CLASSES ? l->cls[from] : ZTV_OUTSIDE;
                 m->cls[mode][to] = cls;
                 m->fraction[mode][to] = l->fraction[from];
                 m->developments[mode][to] = l->developments[from];
@@ -100,6 +100,7 @@ static const uint8_t band_rgb[ZTV_BANDS][3] = {
 static const uint8_t crown_rgb[3] = {30, 100, 45};
 static const uint8_t object_rgb[3] = {115, 85, 160};
 static const uint8_t outside_rgb[3] = {242, 242, 242}, hatch_rgb[3] = {185, 185, 185};
+static const uint8_t no_terrain_rgb[3] = {60, 70, 90};
 static const uint8_t hidden_rgb[3] = {25, 80, 200};
 static const uint8_t partly_hidden_rgb[3] = {110, 190, 240};
 static const uint8_t still_visible_rgb[3] = {255, 215, 90};
@@ -185,18 +186,20 @@ static void add_item(map_style *st, const uint8_t rgb[3], int overlay, const cha
     snprintf(it->label, sizeof it->label, "%s", label);
 }
 
-/* Under a crown, inside an object, not computed: the same on every map. */
+/* Under a crown, inside an object, not computed, no terrain: the same on every map. */
 static void add_class_items(const ztv_map *m, map_style *st, ztv_mode mode)
 {
     if (m->class_pixels[mode][ZTV_UNDER_CROWN]) add_item(st, crown_rgb, 0, "under a tree crown");
     if (m->class_pixels[mode][ZTV_IN_OBJECT]) add_item(st, object_rgb, 0, "inside an object");
     if (m->class_pixels[mode][ZTV_OUTSIDE]) add_item(st, outside_rgb, 2, "not computed");
+    if (m->class_pixels[mode][ZTV_NO_TERRAIN]) add_item(st, no_terrain_rgb, 0, "no terrain (past the DTM's edge)");
 }
 
 static int class_colour(uint8_t cls, uint8_t rgb[3])
 {
     if (cls == ZTV_UNDER_CROWN) memcpy(rgb, crown_rgb, 3);
     else if (cls == ZTV_IN_OBJECT) memcpy(rgb, object_rgb, 3);
+    else if (cls == ZTV_NO_TERRAIN) memcpy(rgb, no_terrain_rgb, 3);
     else if (cls == ZTV_OUTSIDE) return 3;
     else return 0;
     return 2;
@@ -214,7 +217,7 @@ static int fraction_colour(const ztv_map *m, const map_style *st, size_t k, uint
 
 static int hidden_colour(const ztv_map *m, const map_style *st, size_t k, uint8_t rgb[3])
 {
-    if (m->cls[ZTV_BARE][k] == ZTV_OUTSIDE) return class_colour(ZTV_OUTSIDE, rgb);
+    if (!ztv_class_on_ground(m->cls[ZTV_BARE][k])) return class_colour(m->cls[ZTV_BARE][k], rgb);
     int cls = class_colour(m->cls[st->mode][k], rgb);
     if (cls) return cls;
     float bare = m->fraction[ZTV_BARE][k], screened = m->fraction[st->mode][k];
@@ -440,12 +443,16 @@ static void map_colours(const ztv_map *m, const map_style *st, uint8_t *rgb, uin
         for (uint32_t u = 0; u < m->w; u++) {
             size_t k = (size_t)v * m->w + u;
             uint8_t *out = rgb + 3 * k, over[3];
-            int how = isfinite(m->ground[k]) ? st->colour(m, st, k, over) : 3;
+            int drawn = isfinite(m->ground[k]) || m->cls[st->mode][k] == ZTV_NO_TERRAIN;
+            int how = drawn ? st->colour(m, st, k, over) : 3;
             hatched[k] = how == 3;
             if (how == 3) continue;
+            if (how == 2) { /* opaque: no hillshade under it (none past the terrain's edge) */
+                memcpy(out, over, 3);
+                continue;
+            }
             memset(out, hillshade(m, u, v), 3);
             if (how == 1) blend(out, over, ZTV_MAP_OPACITY, out);
-            else if (how == 2) memcpy(out, over, 3);
         }
 }
 

@@ -145,7 +145,7 @@ static int check_block(const ztv_output *o, const ztv_block *b, err_buf *err)
                             ztv_mode_name((ztv_mode)m));
         size_t n = (size_t)b->rows * info->grid.nx;
         for (size_t k = 0; l && k < n; k++)
-            if (l->cls[k] > ZTV_OUTSIDE || !(l->fraction[k] >= 0 && l->fraction[k] <= 1) ||
+            if (l->cls[k] >= ZTV_CLASSES || !(l->fraction[k] >= 0 && l->fraction[k] <= 1) ||
                 l->visible[k] > info->n_targets)
                 return err_fail(err, ERR_INTERNAL, "cell (%zu, %zu) of the %s results is not valid: class "
                                 "%u, %u targets visible of %u, fraction %g",
@@ -159,7 +159,7 @@ static int check_block(const ztv_output *o, const ztv_block *b, err_buf *err)
 static void mode_planes(const ztv_layer *l, size_t n, float *out)
 {
     for (size_t k = 0; k < n; k++) {
-        int outside = l->cls[k] == ZTV_OUTSIDE;
+        int outside = !ztv_class_on_ground(l->cls[k]);
         out[k] = outside ? ZTV_GEOTIFF_NODATA : (float)l->visible[k];
         out[n + k] = outside ? ZTV_GEOTIFF_NODATA : l->fraction[k];
         out[2 * n + k] = outside ? ZTV_GEOTIFF_NODATA : (float)l->cls[k];
@@ -173,7 +173,7 @@ static void mode_planes(const ztv_layer *l, size_t n, float *out)
 static void hidden_planes(const ztv_layer *bare, const ztv_layer *l, size_t n, float *out)
 {
     for (size_t k = 0; k < n; k++) {
-        int outside = bare->cls[k] == ZTV_OUTSIDE || l->cls[k] == ZTV_OUTSIDE;
+        int outside = !ztv_class_on_ground(bare->cls[k]) || !ztv_class_on_ground(l->cls[k]);
         int viewpoint = bare->cls[k] == ZTV_OPEN && l->cls[k] == ZTV_OPEN;
         int targets = (int)bare->visible[k] - (int)l->visible[k];
         float fraction = bare->fraction[k] - l->fraction[k];

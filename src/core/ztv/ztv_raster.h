@@ -28,15 +28,27 @@ typedef enum ztv_class {
     ZTV_OPEN = 0,         /* a viewpoint */
     ZTV_UNDER_CROWN = 1,  /* the observer stands under a tree crown (vegetation and all modes) */
     ZTV_IN_OBJECT = 2,    /* the observer stands inside an object (all mode) */
-    ZTV_OUTSIDE = 3       /* beyond the radius, or off the terrain: not computed */
+    ZTV_OUTSIDE = 3,      /* beyond the radius (or off the terrain of a map without one): not computed */
+    ZTV_NO_TERRAIN = 4,   /* within the radius but past the terrain's edge: no ground to stand on */
+    ZTV_CLASSES = 5
 } ztv_class;
 
+/* 1 when a cell of class cls has ground and is within the radius (open, under a crown or
+ * inside an object); 0 when nothing was computed there (GeoTIFF nodata). */
+static inline int ztv_class_on_ground(uint8_t cls) { return cls < ZTV_OUTSIDE; }
+
 #define ZTV_MAX_DEVELOPMENTS 24u /* developments in one map: bits of a float-exact mask */
+
+/* The terrain's edges, in the order of ztv_grid.past_edge. */
+enum { ZTV_WEST, ZTV_EAST, ZTV_SOUTH, ZTV_NORTH, ZTV_EDGES };
 
 typedef struct ztv_grid {
     uint32_t nx, ny;         /* cells west to east, north to south */
     double x0, y0;           /* local centre of cell (0, 0), the north-west one */
     double cell;             /* metres */
+    double past_edge[ZTV_EDGES]; /* metres the radius reaches past the terrain's west, east, south
+                                  * and north edge (0: it stays within); the grid covers the whole
+                                  * radius, its cells past the edge ZTV_NO_TERRAIN */
 } ztv_grid;
 
 /* One mode's results over a block's cells (rows * nx, row by row). */
@@ -51,7 +63,8 @@ typedef struct ztv_layer {
 typedef struct ztv_block {
     uint32_t j0, rows;
     const float *ground;                /* rows * nx terrain heights at cell centres, local metres
-                                        * (map = local + origin[2]); NAN where ZTV_OUTSIDE */
+                                        * (map = local + origin[2]); NAN where ZTV_OUTSIDE
+                                        * or ZTV_NO_TERRAIN */
     const ztv_layer *layer[ZTV_MODES];  /* NULL for a mode not computed */
 } ztv_block;
 
@@ -63,6 +76,8 @@ typedef struct ztv_info {
     double origin[3];            /* map coordinates of the local origin (0 without a site) */
     int computed[ZTV_MODES];     /* 1: the blocks carry this mode's layer */
     double observer_height;      /* metres above the ground */
+    const char *ground;          /* the ground the sightlines traced, a phrase for the summary
+                                    ("the DTM as surveyed: ..."), or NULL */
     double radius;               /* metres from the nearest target; INFINITY: the whole grid */
     int curvature;               /* 1: Earth curvature and refraction applied */
     double refraction;           /* k */

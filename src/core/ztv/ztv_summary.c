@@ -9,7 +9,7 @@
 
 typedef struct mode_counts {
     uint64_t band[ZTV_BANDS];                     /* open cells by band of visible fraction */
-    uint64_t cls[4];                              /* cells by ztv_class */
+    uint64_t cls[ZTV_CLASSES];                    /* cells by ztv_class */
     uint64_t development[ZTV_MAX_DEVELOPMENTS];   /* open cells from which development d is seen */
 } mode_counts;
 
@@ -43,6 +43,9 @@ const char *ztv_band_label(ztv_band band)
     return band < ZTV_BANDS ? labels[band] : "?";
 }
 
+/* the terrain's edges in the order of ztv_grid.past_edge, as CSV quantities and JSON keys name them */
+static const char *const edge_key[ZTV_EDGES] = {"west", "east", "south", "north"};
+
 /* the same bands as names inside identifiers (CSV quantities, JSON keys) */
 static const char *const band_key[ZTV_BANDS] = {"0", "1_25", "25_50", "50_75", "75_100", "100"};
 
@@ -74,7 +77,7 @@ void ztv_summary_block(ztv_summary *s, const ztv_block *b)
         if (!info->computed[m] || !l) continue;
         mode_counts *c = &s->mode[m];
         for (size_t k = 0; k < n; k++) {
-            uint8_t cls = l->cls[k] <= ZTV_OUTSIDE ? l->cls[k] : ZTV_OUTSIDE;
+            uint8_t cls = l->cls[k] < ZTV_CLASSES ? l->cls[k] : ZTV_OUTSIDE;
             c->cls[cls]++;
             if (cls != ZTV_OPEN) continue;
             c->band[ztv_band_of(l->fraction[k])]++;
@@ -161,8 +164,15 @@ int ztv_summary_write_csv(const ztv_summary *s, FILE *f, err_buf *err)
     csv_text(f, info->crs_name ? info->crs_name : "local metres");
     fputs(",\n", f);
     fprintf(f, "observer_height,,,%.12g,m above ground\n", info->observer_height);
+    if (info->ground) {
+        fputs("ground,,,", f);
+        csv_text(f, info->ground);
+        fputs(",\n", f);
+    }
     if (isfinite(info->radius)) fprintf(f, "radius,,,%.12g,m\n", info->radius);
     else fputs("radius,,,none,whole grid\n", f);
+    for (int e = 0; e < ZTV_EDGES; e++)
+        fprintf(f, "radius_past_%s_edge,,,%.12g,m past the terrain\n", edge_key[e], info->grid.past_edge[e]);
     fprintf(f, "earth_curvature,,,%d,1 applied / 0 not\n", info->curvature ? 1 : 0);
     fprintf(f, "refraction_k,,,%.12g,\n", info->refraction);
     fprintf(f, "targets,,,%u,\n", info->n_targets);
@@ -178,6 +188,7 @@ int ztv_summary_write_csv(const ztv_summary *s, FILE *f, err_buf *err)
         csv_area(f, s, "area_under_crown", m, NULL, c->cls[ZTV_UNDER_CROWN]);
         csv_area(f, s, "area_in_object", m, NULL, c->cls[ZTV_IN_OBJECT]);
         csv_area(f, s, "area_not_computed", m, NULL, c->cls[ZTV_OUTSIDE]);
+        csv_area(f, s, "area_no_terrain", m, NULL, c->cls[ZTV_NO_TERRAIN]);
         for (uint32_t d = 0; d < info->n_developments && d < ZTV_MAX_DEVELOPMENTS; d++)
             csv_area(f, s, "area_development_visible", m, development_name(info, d), c->development[d]);
     }
@@ -216,8 +227,17 @@ int ztv_summary_write_json(const ztv_summary *s, FILE *f, err_buf *err)
     if (info->crs_name) json_write_string(f, info->crs_name);
     else fputs("null", f);
     fprintf(f, ",\n  \"observer_height_m\": %.12g,\n", info->observer_height);
+    if (info->ground) {
+        fputs("  \"ground\": ", f);
+        json_write_string(f, info->ground);
+        fputs(",\n", f);
+    }
     if (isfinite(info->radius)) fprintf(f, "  \"radius_m\": %.12g,\n", info->radius);
     else fputs("  \"radius_m\": null,\n", f);
+    fputs("  \"radius_past_terrain_m\": {", f);
+    for (int e = 0; e < ZTV_EDGES; e++)
+        fprintf(f, "%s\"%s\": %.12g", e ? ", " : "", edge_key[e], info->grid.past_edge[e]);
+    fputs("},\n", f);
     fprintf(f, "  \"earth_curvature\": %s,\n  \"refraction_k\": %.12g,\n",
             info->curvature ? "true" : "false", info->refraction);
     fprintf(f, "  \"targets\": %u,\n  \"cell_km2\": %.12g,\n", info->n_targets, km2(s, 1));
@@ -242,6 +262,7 @@ int ztv_summary_write_json(const ztv_summary *s, FILE *f, err_buf *err)
         json_area(f, s, "      ", "under_crown", c->cls[ZTV_UNDER_CROWN], 0);
         json_area(f, s, "      ", "in_object", c->cls[ZTV_IN_OBJECT], 0);
         json_area(f, s, "      ", "not_computed", c->cls[ZTV_OUTSIDE], 0);
+        json_area(f, s, "      ", "no_terrain", c->cls[ZTV_NO_TERRAIN], 0);
         fputs("      \"development_visible\": {", f);
         for (uint32_t d = 0; d < info->n_developments && d < ZTV_MAX_DEVELOPMENTS; d++) {
             fputs(d ? ",\n" : "\n", f);

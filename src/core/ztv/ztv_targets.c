@@ -51,23 +51,21 @@ static int from_given(ztv_targets *t, const scene_file *sf, const scene *s, err_
     return 0;
 }
 
+/* One target per height above the base of each development entry as placed (the z of its lowest
+ * point: on a slope, the lowest ground under its footprint it was snapped to), at its position:
+ * the targets stand on the object whatever the ground does under it. */
 static int from_heights(ztv_targets *t, const scene_file *sf, const scene *s, err_buf *err)
 {
     const ztv_settings *z = &sf->ztv;
     uint64_t placements = 0;
     for (uint32_t o = 0; o < sf->n_objects; o++) placements += sf->objects[o].development != 0;
     if (reserve(t, placements * z->n_target_heights, err)) return -1;
-    for (uint32_t o = 0; o < sf->n_objects; o++) {
-        const object_spec *ob = &sf->objects[o];
-        if (!ob->development) continue;
-        double ground;
-        if (ztv_ground(s, ob->position[0], ob->position[1], &ground)) {
-            err_set(err, "object '%s' stands at local (%.1f, %.1f), off the terrain; target_heights are "
-                         "heights above its ground", ob->name, ob->position[0], ob->position[1]);
-            return err_locate(err, ob->file, ob->line, ob->column);
-        }
+    for (uint32_t o = 0; o < s->n_objects; o++) {
+        const object *ob = &s->objects[o];
+        if (!ob->development || (o > 0 && s->objects[o - 1].entry == ob->entry)) continue; /* a group's parts */
+        const object_spec *entry = &sf->objects[ob->entry];
         for (uint32_t h = 0; h < z->n_target_heights; h++)
-            add(t, ob->position[0], ob->position[1], ground + z->target_heights[h], (uint32_t)ob->development - 1);
+            add(t, entry->position[0], entry->position[1], ob->base + z->target_heights[h], (uint32_t)ob->development - 1);
     }
     return 0;
 }

@@ -1,10 +1,11 @@
 /* ztv_targets.h — the points of the development a visibility map looks for, and the
  * developments they belong to. From the scene file's ztv: section (docs/ztv.md), in this order
- * of preference: the targets given by hand; points at target_heights above the footprint of
- * each object marked development (a layout row, or an object placed alone); points sampled by
- * area on every development object's surface (a development's visible fraction is then the
- * share of its surface in sight). Heights above ground are taken from the scene's terrain (the
- * water surface where it covers the ground).
+ * of preference: the targets given by hand; points at target_heights above the base of each
+ * object marked development (a layout row, or an object placed alone) as placed: its lowest
+ * point, on the ground it was snapped to, so that the targets stand on the object on any slope;
+ * points sampled by area on every development object's surface (a development's visible fraction
+ * is then the share of its surface in sight). Heights of given targets above ground are taken
+ * from the scene's terrain (the water surface where it covers the ground).
  *
  * Ownership: ztv_targets_build allocates the arrays; ztv_targets_free releases them. Names are
  * borrowed from the scene file, which must outlive the targets.

@@ -51,6 +51,7 @@ typedef struct trace_ctx {
 typedef struct row_scratch {
     float *eye;
     uint8_t *under, *inside;
+    uint8_t *where;    /* ZTV_OPEN on the terrain within the radius, else ZTV_OUTSIDE or ZTV_NO_TERRAIN */
     uint64_t bare_clear, screened_blocked;
 } row_scratch;
 
@@ -75,7 +76,9 @@ static void trace_row(trace_ctx *c, uint32_t row, row_scratch *w, uint64_t *cell
     for (uint32_t i = 0; i < g->nx; i++) {
         double x, y, ground;
         ztv_cell_centre(g, i, j, &x, &y);
-        int on = !ztv_ground(job->scene, x, y, &ground) && within_radius(job, x, y);
+        int near = within_radius(job, x, y), ground_there = !ztv_ground(job->scene, x, y, &ground);
+        int on = near && ground_there;
+        w->where[i] = on ? ZTV_OPEN : near ? ZTV_NO_TERRAIN : ZTV_OUTSIDE;
         c->ground[base + i] = on ? (float)ground : NAN;
         w->eye[i] = on ? (float)(ground + job->observer_height) : NAN;
     }
@@ -86,7 +89,7 @@ static void trace_row(trace_ctx *c, uint32_t row, row_scratch *w, uint64_t *cell
     for (uint32_t i = 0; i < g->nx; i++) {
         size_t k = base + i;
         int on = !isnan(w->eye[i]);
-        uint8_t cls_s = !on ? ZTV_OUTSIDE : w->inside[i] ? ZTV_IN_OBJECT : w->under[i] ? ZTV_UNDER_CROWN : ZTV_OPEN;
+        uint8_t cls_s = !on ? w->where[i] : w->inside[i] ? ZTV_IN_OBJECT : w->under[i] ? ZTV_UNDER_CROWN : ZTV_OPEN;
         uint32_t vis[2] = {0, 0}, devs[2] = {0, 0};
         if (on) {
             double x, y;
@@ -115,7 +118,7 @@ static void trace_row(trace_ctx *c, uint32_t row, row_scratch *w, uint64_t *cell
         }
         for (int m = 0; m < 1 + c->screened; m++) {
             layer_buf *l = &c->layer[m];
-            l->cls[k] = m == 0 ? (on ? ZTV_OPEN : ZTV_OUTSIDE) : cls_s;
+            l->cls[k] = m == 0 ? w->where[i] : cls_s;
             l->visible[k] = (uint16_t)vis[m];
             l->fraction[k] = (float)((double)vis[m] / t->n);
             l->developments[k] = devs[m];
@@ -127,13 +130,13 @@ static void *trace_worker(void *arg)
 {
     trace_ctx *c = arg;
     uint32_t nx = c->job->grid.nx;
-    row_scratch w = {malloc((size_t)nx * sizeof(float)), malloc(nx), malloc(nx), 0, 0}; /* freed below */
+    row_scratch w = {malloc((size_t)nx * sizeof(float)), malloc(nx), malloc(nx), malloc(nx), 0, 0}; /* freed below */
     uint64_t cells = 0, pairs = 0, rays = 0;
-    for (uint32_t k; w.eye && w.under && w.inside && (k = atomic_fetch_add(&c->next_row, 1)) < c->own;) {
+    for (uint32_t k; w.eye && w.under && w.inside && w.where && (k = atomic_fetch_add(&c->next_row, 1)) < c->own;) {
         trace_row(c, c->first + k * c->step, &w, &cells, &pairs, &rays);
         progress_advance(c->prog, 1);
     }
-    free(w.eye), free(w.under), free(w.inside);
+    free(w.eye), free(w.under), free(w.inside), free(w.where);
     pthread_mutex_lock(&c->lock);
     c->cells += cells, c->pairs += pairs, c->rays += rays;
     pthread_mutex_unlock(&c->lock);

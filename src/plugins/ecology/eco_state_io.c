@@ -13,10 +13,12 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "eco_sim.h"
@@ -27,8 +29,11 @@
 
 typedef struct state_file {
     FILE *f;
-    uint64_t sum;   /* FNV-1a of the body so far */
+    uint64_t sum;      /* FNV-1a of the body so far */
     int failed;
+    uint64_t offset;   /* reading: bytes read so far */
+    uint64_t need;     /* reading: the size of the part the file ended in, once failed */
+    char part[128];    /* reading: what is being read, for messages */
 } state_file;
 
 static void put(state_file *w, const void *data, size_t n)
@@ -38,15 +43,40 @@ static void put(state_file *w, const void *data, size_t n)
     if (!w->failed && fwrite(data, 1, n, w->f) != n) w->failed = 1;
 }
 
+/* Reads n bytes, or marks r failed where the file ends (r->offset, r->need and r->part then say
+ * where and in what). */
 static void get(state_file *r, void *data, size_t n)
 {
     if (r->failed || fread(data, 1, n, r->f) != n) {
+        if (!r->failed) r->need = n;
         r->failed = 1;
         memset(data, 0, n);
         return;
     }
+    r->offset += n;
     const unsigned char *b = data;
     for (size_t i = 0; i < n; i++) r->sum = (r->sum ^ b[i]) * 0x100000001b3ull;
+}
+
+/* Names the part read next, printf-style, for the message should the file end inside it. */
+static void reading(state_file *r, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void reading(state_file *r, const char *fmt, ...)
+{
+    if (r->failed) return; /* the part the file ended in stays named */
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(r->part, sizeof r->part, fmt, ap);
+    va_end(ap);
+}
+
+/* The file ended inside the part r was reading: what it holds, and what was expected there. */
+static int cut_short(const char *path, const state_file *r, uint64_t size, plugin_err *err)
+{
+    return plugin_fail(err, SYLVA_ERR_PARAM,
+                       "%s: the ecology state is cut short: the file holds %llu bytes and ends inside %s (bytes %llu "
+                       "to %llu); it was not saved whole (save the run again)",
+                       path, (unsigned long long)size, r->part, (unsigned long long)r->offset + 1,
+                       (unsigned long long)(r->offset + r->need));
 }
 
 static void put_plant(state_file *w, const eco_plant *p)
@@ -58,8 +88,9 @@ static void put_plant(state_file *w, const eco_plant *p)
     put(w, &p->dominated, sizeof p->dominated);
 }
 
-static void get_plant(state_file *r, eco_plant *p)
+static void get_plant(state_file *r, eco_plant *p, uint32_t q, const char *species)
 {
+    reading(r, "plant %u of '%s'", q, species);
     get(r, &p->x, sizeof p->x), get(r, &p->y, sizeof p->y), get(r, &p->z, sizeof p->z);
     get(r, &p->h, sizeof p->h), get(r, &p->r, sizeof p->r), get(r, &p->power, sizeof p->power);
     get(r, &p->v, sizeof p->v), get(r, &p->t_max, sizeof p->t_max), get(r, &p->rotation, sizeof p->rotation);
@@ -158,6 +189,8 @@ int eco_sim_load(eco_sim *s, const char *path, plugin_err *err)
 {
     FILE *f = fopen(path, "rb");
     if (!f) return plugin_fail(err, SYLVA_ERR_IO, "%s: cannot read the ecology state: %s", path, strerror(errno));
+    struct stat st;
+    uint64_t size = fstat(fileno(f), &st) ? 0 : (uint64_t)st.st_size;
     char magic[8];
     uint32_t version = 0, order = 0;
     uint64_t fingerprint = 0;
@@ -165,13 +198,26 @@ int eco_sim_load(eco_sim *s, const char *path, plugin_err *err)
     eco_population *pop = NULL;
     double *seeds = NULL, *carry = NULL;
     sylva_rng *rng = NULL;
-    if (fread(magic, 1, 8, f) != 8 || memcmp(magic, ECO_STATE_MAGIC, 8)) {
+    /* the header, outside the checksum */
+    state_file r = {f, 0, 0, 0, 0, ""};
+    reading(&r, "the mark %s", ECO_STATE_MAGIC);
+    size_t got = fread(magic, 1, 8, f);
+    if (got == 8) r.offset = 8;
+    else r.failed = 1, r.need = 8;
+    if (memcmp(magic, ECO_STATE_MAGIC, got)) {
         rc = plugin_fail(err, SYLVA_ERR_PARAM, "%s: not a sylva ecology state (it does not start with %s)", path,
                          ECO_STATE_MAGIC);
         goto done;
     }
-    if (fread(&version, 4, 1, f) != 1 || fread(&order, 4, 1, f) != 1 || fread(&fingerprint, 8, 1, f) != 1 ||
-        version != ECO_STATE_VERSION || order != ECO_BYTE_ORDER) {
+    reading(&r, "the format version and byte-order mark");
+    get(&r, &version, 4), get(&r, &order, 4);
+    reading(&r, "the fingerprint of the scene that saved it");
+    get(&r, &fingerprint, 8);
+    if (r.failed) {
+        rc = cut_short(path, &r, size, err);
+        goto done;
+    }
+    if (version != ECO_STATE_VERSION || order != ECO_BYTE_ORDER) {
         rc = plugin_fail(err, SYLVA_ERR_PARAM,
                          "%s: an ecology state of format %u%s; this sylva reads format %u in its own byte order", path,
                          version, order == ECO_BYTE_ORDER ? "" : " in another byte order", ECO_STATE_VERSION);
@@ -184,11 +230,16 @@ int eco_sim_load(eco_sim *s, const char *path, plugin_err *err)
                          path);
         goto done;
     }
-    state_file r = {f, 0xcbf29ce484222325ull, 0};
+    r.sum = 0xcbf29ce484222325ull; /* the body */
     uint32_t n_species = 0, year = 0;
+    reading(&r, "the species count and year");
     get(&r, &n_species, sizeof n_species);
     get(&r, &year, sizeof year);
-    if (r.failed || n_species != s->n_species) {
+    if (r.failed) {
+        rc = cut_short(path, &r, size, err);
+        goto done;
+    }
+    if (n_species != s->n_species) {
         rc = plugin_fail(err, SYLVA_ERR_PARAM,
                          "%s: the state holds %u species, the scene %u; continue it with the scene that saved it", path,
                          n_species, s->n_species);
@@ -206,8 +257,9 @@ int eco_sim_load(eco_sim *s, const char *path, plugin_err *err)
     uint64_t living = 0;
     for (uint32_t j = 0; j < n_species && !r.failed; j++) {
         uint32_t len = 0;
-        get(&r, &len, sizeof len);
         const char *name = s->names[j];
+        reading(&r, "the name of species %u ('%s' in the scene)", j, name);
+        get(&r, &len, sizeof len);
         char *stored = !r.failed && len == strlen(name) ? malloc(len + 1) : NULL;
         if (stored) {
             get(&r, stored, len);
@@ -223,6 +275,7 @@ int eco_sim_load(eco_sim *s, const char *path, plugin_err *err)
                              path, j, name);
             goto done;
         }
+        reading(&r, "the seeds of '%s'", name);
         get(&r, &seeds[j], sizeof seeds[j]);
         get(&r, &carry[j], sizeof carry[j]);
         if (!r.failed && !(isfinite(seeds[j]) && seeds[j] >= 0 && carry[j] >= 0 && carry[j] < 1)) {
@@ -232,10 +285,12 @@ int eco_sim_load(eco_sim *s, const char *path, plugin_err *err)
         }
         for (int q = 0; q < ECO_N_STREAMS; q++) {
             sylva_rng *g = &rng[(size_t)j * ECO_N_STREAMS + q];
+            reading(&r, "random stream %d of '%s'", q, name);
             get(&r, &g->key, sizeof g->key);
             get(&r, &g->counter, sizeof g->counter);
         }
         uint32_t n = 0;
+        reading(&r, "the plant count of '%s'", name);
         get(&r, &n, sizeof n);
         living += n;
         if (r.failed || living > s->config.max_plants) {
@@ -251,7 +306,7 @@ int eco_sim_load(eco_sim *s, const char *path, plugin_err *err)
         }
         pop[j].cap = n ? n : 1;
         for (uint32_t q = 0; q < n && !r.failed; q++) {
-            get_plant(&r, &pop[j].plants[q]);
+            get_plant(&r, &pop[j].plants[q], q, name);
             if (!r.failed && !plant_is_valid(s, &pop[j].plants[q])) {
                 rc = plugin_fail(err, SYLVA_ERR_PARAM, "%s: plant %u of '%s' is damaged (a value out of range)", path,
                                  q, name);
@@ -261,11 +316,24 @@ int eco_sim_load(eco_sim *s, const char *path, plugin_err *err)
         }
     }
     if (rc) goto done;
-    uint64_t sum = 0;
-    if (r.failed || fread(&sum, 8, 1, f) != 1 || sum != r.sum ||
-        fgetc(f) != EOF) {
+    uint64_t body = r.sum, sum = 0;
+    reading(&r, "the checksum");
+    get(&r, &sum, sizeof sum);
+    if (r.failed) {
+        rc = cut_short(path, &r, size, err);
+        goto done;
+    }
+    if (fgetc(f) != EOF) {
         rc = plugin_fail(err, SYLVA_ERR_PARAM,
-                         "%s: the ecology state is truncated or damaged (its checksum does not match)", path);
+                         "%s: the ecology state ends with its checksum at byte %llu, but the file holds %llu bytes; "
+                         "something was added after it (save the run again)",
+                         path, (unsigned long long)r.offset, (unsigned long long)size);
+        goto done;
+    }
+    if (sum != body) {
+        rc = plugin_fail(err, SYLVA_ERR_PARAM,
+                         "%s: the ecology state is damaged: it is whole (%llu bytes), but its checksum does not "
+                         "match what it holds (save the run again)", path, (unsigned long long)size);
         goto done;
     }
     /* Everything read and checked: the run takes it over. */

@@ -2,9 +2,10 @@
  *
  * GDAL's AAIGrid reader takes a word where a number belongs as 0 and a short last row as
  * complete, and works for minutes on a grid cut off early when rows are asked for out of order.
- * One pass over the text finds all three: the header's ncols and nrows, then exactly
- * ncols x nrows values, each a number. Messages say where the grid goes wrong, never what the
- * file holds there. */
+ * One pass over the text finds all three: the header's ncols and nrows (and a positive cell
+ * size), then exactly ncols x nrows values, each a finite number or the header's NODATA_value
+ * (which may be nan). Messages say where the grid goes wrong (path:line:column for a bad cell
+ * size or a value that is not finite), never what the file holds there. */
 #ifndef TERRAIN_IFS_ASCII_GRID_H
 #define TERRAIN_IFS_ASCII_GRID_H
 

@@ -23,11 +23,17 @@
 #include "plugin_threads.h"
 #include "lod_levels.h"
 #include "ifs_chaos.h"
+#include "ifs_detail.h"
 #include "ifs_eval.h"
 #include "ifs_maps.h"
 #include "surface_classes.h"
 #include "sylva/plugin.h"
 #include "terrain_ifs_schema.h"
+
+/* The refinement's detail is called out when its RMS passes this factor times what the DTM's
+ * own roughness continues to, plus this many metres. */
+#define TERRAIN_IFS_DETAIL_WARN_FACTOR 2.0
+#define TERRAIN_IFS_DETAIL_WARN_METRES 0.25
 
 /* What create() keeps for generate(). Owned by the plugin until terrain_ifs_destroy, which frees
  * it with the host's mem_free it keeps (destroy receives no table). */
@@ -37,7 +43,9 @@ typedef struct terrain_ifs_state {
     const double *alpha_field;   /* the parameter's values, (N-1)(M-1), or NULL */
     const double *probability_field; /* likewise, or NULL */
     ifs_mode mode;
-    double alpha;
+    double alpha;                /* the global alpha: given, or chosen by choose_alpha */
+    int alpha_chosen;            /* 1 once alpha is known (choose_alpha runs once) */
+    ifs_roughness roughness;     /* the DTM's own, measured by choose_alpha */
     int random;                  /* 1: random iteration, 0: deterministic evaluation */
     uint64_t iterations;
     int has_start;
@@ -290,6 +298,9 @@ static int check_relations(const sylva_host_api *api, sylva_host *host, const sy
                                     "terrain has none", file_only[k]);
     if (is_set(params, "alpha") && is_set(params, "alpha_field"))
         return api->param_error(host, params, "alpha_field", "give alpha or alpha_field, not both");
+    if (is_set(params, "detail") && (is_set(params, "alpha") || is_set(params, "alpha_field")))
+        return api->param_error(host, params, "detail", "give detail (metres) or alpha, not both: "
+                                "detail chooses alpha");
     if (is_set(params, "refine") && is_set(params, "output_nodes"))
         return api->param_error(host, params, "output_nodes", "give refine or output_nodes, not "
                                 "both");
@@ -726,6 +737,83 @@ static void site_place(terrain_ifs_state *s, const sylva_host_api *api, sylva_ho
     }
 }
 
+/* Where the heightfield's node (0, 0) stands for a DTM of the given width and depth: at
+ * `centre`, or (placed on a site) by the DTM's own georeferencing. */
+static void place_footprint(const terrain_ifs_state *s, const sylva_terrain_request *req, int placed,
+                            sylva_heightfield *hf)
+{
+    double width = (s->dtm->nx - 1) * s->dtm->dx, depth_m = (s->dtm->ny - 1) * s->dtm->dy;
+    hf->x0 = s->centre[0] - 0.5 * width, hf->y0 = s->centre[1] - 0.5 * depth_m;
+    if (placed) /* node (E, N) at local (E - origin E, N - origin N) */
+        hf->x0 = s->node0[0] - req->site_origin[0], hf->y0 = s->node0[1] - req->site_origin[1];
+}
+
+/* The water surface and what lies past the footprint's edge, the same on both grounds. */
+static void set_water_and_edge(const terrain_ifs_state *s, sylva_heightfield *hf)
+{
+    if (s->has_water) {
+        hf->has_water = 1;
+        hf->water_level = s->water_z - s->z_shift;
+    }
+    if (SYLVA_HAS_FIELD(hf, sylva_heightfield, beyond_edge))
+        hf->beyond_edge = sylva_param_int(s->params, "beyond_edge") == 0 ? SYLVA_EDGE_FLAT : SYLVA_EDGE_VOID;
+}
+
+/* 1 when the ground to render is the DTM's own nodes (refine 1, no levels, the deterministic
+ * evaluation in bilinear mode, which passes through every node): the surveyed request is then
+ * answered with it, materials and all, and the host renders it as it is. */
+static int renders_dtm_nodes(const terrain_ifs_state *s)
+{
+    return !s->lod && !s->random && s->mode == IFS_MODE_BILINEAR && s->nx_out == s->dtm->nx &&
+           s->ny_out == s->dtm->ny;
+}
+
+/* The ground as surveyed (ABI 1.5 request): the DTM's own nodes and heights, as read, cropped,
+ * stepped and placed, with no detail added: what the analyses read whatever the camera. */
+static int surveyed_ground(const terrain_ifs_state *s, const sylva_host_api *api, sylva_host *host,
+                           const sylva_terrain_request *req, int placed, sylva_terrain_out *o)
+{
+    const ifs_dtm *d = s->dtm;
+    sylva_heightfield *hf = api->heightfield_new(host, d->nx, d->ny, 0);
+    if (!hf) return SYLVA_ERR_NOMEM; /* the host has said why */
+    place_footprint(s, req, placed, hf);
+    hf->dx = d->dx, hf->dy = d->dy;
+    for (size_t k = 0; k < (size_t)d->nx * d->ny; k++) hf->z[k] = (float)d->z[k];
+    set_water_and_edge(s, hf);
+    o->terrain = hf;
+    return SYLVA_OK;
+}
+
+/* The global alpha, once: as given, or the one whose detail has the RMS the `detail` key gives
+ * or, by default, the DTM's own roughness continued one scale below its cells (ifs_detail.h). */
+static int choose_alpha(terrain_ifs_state *s, const sylva_host_api *api, sylva_host *host)
+{
+    if (s->alpha_chosen) return SYLVA_OK;
+    s->alpha_chosen = 1;
+    int measured = !ifs_roughness_measure(s->dtm, &s->roughness);
+    if (s->alpha_field || is_set(s->params, "alpha")) return SYLVA_OK;
+    const ifs_roughness *r = &s->roughness;
+    int given = is_set(s->params, "detail");
+    double target = given ? sylva_param_real(s->params, "detail") : r->target;
+    ifs_err err = {{0}};
+    int rc = ifs_alpha_for_detail(s->dtm, s->mode, s->depth, target, &s->alpha, &err);
+    if (rc) {
+        api->error(host, "%s", err.msg);
+        return rc;
+    }
+    if (given)
+        api->log(host, SYLVA_LOG_INFO, "detail %.3g m RMS (given): alpha %.4g", target, s->alpha);
+    else if (measured)
+        api->log(host, SYLVA_LOG_INFO, "detail from the DTM's own roughness: %.3g m RMS from the surface "
+                 "through every 2nd node, %.3g m through every 4th (Hurst exponent %.2f), continued below "
+                 "half its %.3g m cells, which its nodes do not resolve, to %.3g m RMS: alpha %.4g", r->half2,
+                 r->half4, r->hurst, fmin(s->dtm->dx, s->dtm->dy), target, s->alpha);
+    else
+        api->log(host, SYLVA_LOG_INFO, "the DTM has fewer than 5 x 5 nodes, too few to measure its "
+                 "roughness: no detail added (alpha 0; give detail or alpha for some)");
+    return SYLVA_OK;
+}
+
 static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_host *host,
                                 const void *request, void *out)
 {
@@ -740,6 +828,10 @@ static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_ho
     const int site = req && SYLVA_HAS_FIELD(req, sylva_terrain_request, eye) && req->site_crs;
     if (!s->dtm && (rc = terrain_setup(api, host, s->params, s, site ? req->site_crs : NULL))) return rc;
     if (site) site_place(s, api, host, req, &placed);
+    int surveyed = req && SYLVA_HAS_FIELD(req, sylva_terrain_request, surveyed) && req->surveyed;
+    if (surveyed && !renders_dtm_nodes(s)) return surveyed_ground(s, api, host, req, placed, o);
+    if (surveyed && SYLVA_HAS_FIELD(o, sylva_terrain_out, renders_as_is)) o->renders_as_is = 1;
+    if ((rc = choose_alpha(s, api, host))) return rc;
     ifs_err err = {{0}};
     ifs_maps *maps = NULL;
     ifs_maps_params mp = {.mode = s->mode, .alpha = s->alpha, .alpha_field = s->alpha_field,
@@ -754,23 +846,28 @@ static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_ho
         ifs_maps_free(maps);
         return SYLVA_ERR_NOMEM;
     }
-    double width = (s->dtm->nx - 1) * s->dtm->dx, depth_m = (s->dtm->ny - 1) * s->dtm->dy;
-    hf->x0 = s->centre[0] - 0.5 * width, hf->y0 = s->centre[1] - 0.5 * depth_m;
-    if (placed) /* node (E, N) at local (E - origin E, N - origin N) */
-        hf->x0 = s->node0[0] - req->site_origin[0], hf->y0 = s->node0[1] - req->site_origin[1];
-    hf->dx = width / (s->nx_out - 1), hf->dy = depth_m / (s->ny_out - 1);
+    place_footprint(s, req, placed, hf);
+    hf->dx = (s->dtm->nx - 1) * s->dtm->dx / (s->nx_out - 1), hf->dy = (s->dtm->ny - 1) * s->dtm->dy / (s->ny_out - 1);
     /* with levels of detail: the depth of the uniform refinement the finest level stands for */
     uint32_t depth = s->depth ? s->depth
                      : s->lod ? ifs_eval_auto_depth(maps, (s->dtm->nx - 1) * s->refine + 1,
                                                     (s->dtm->ny - 1) * s->refine + 1)
                               : ifs_eval_auto_depth(maps, s->nx_out, s->ny_out);
+    double rms, top;
+    ifs_detail_measure(maps, depth, &rms, &top);
     api->log(host, SYLVA_LOG_INFO, "%s: %u x %u nodes %.3g x %.3g m apart, heights %.1f to %.1f m; "
-             "%s maps, alpha %s (largest |alpha| %g: detail up to about %.3g m per cell, alpha "
-             "times the DTM's %.3g m departure from the surface of its corners)", s->source,
-             s->dtm->nx, s->dtm->ny, s->dtm->dx, s->dtm->dy, s->zmin, s->zmax,
-             s->mode == IFS_MODE_AFFINE ? "affine" : "bilinear",
-             s->alpha_field ? "per cell" : "global", maps->alpha_max,
-             maps->alpha_max * maps->corner_departure, maps->corner_departure);
+             "%s maps, alpha %s %.4g: the refinement adds %.3g m RMS of detail to the DTM's surface, "
+             "at most %.3g m", s->source, s->dtm->nx, s->dtm->ny, s->dtm->dx, s->dtm->dy, s->zmin, s->zmax,
+             s->mode == IFS_MODE_AFFINE ? "affine" : "bilinear", s->alpha_field ? "per cell, largest |alpha|"
+             : "global", maps->alpha_max, rms, top);
+    double own = s->roughness.target;
+    if (rms > TERRAIN_IFS_DETAIL_WARN_FACTOR * own + TERRAIN_IFS_DETAIL_WARN_METRES)
+        api->log(host, SYLVA_LOG_WARN, "%s adds %.3g m RMS of relief (at most %.3g m) within the DTM's "
+                 "%.3g m cells, %.1f times the %.3g m its own roughness continues to: the render shows "
+                 "relief the DTM does not have (the analyses read the DTM as surveyed); leave alpha out "
+                 "to continue the DTM's roughness, or give detail in metres",
+                 s->alpha_field ? "alpha_field" : is_set(s->params, "detail") ? "detail" : "alpha", rms, top,
+                 fmin(s->dtm->dx, s->dtm->dy), own > 0 ? rms / own : INFINITY, own);
     if (s->lod) {
         double eye[2] = {NAN, NAN};
         if (req && SYLVA_HAS_FIELD(req, sylva_terrain_request, eye))
@@ -782,13 +879,8 @@ static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_ho
     }
     ifs_maps_free(maps);
     if (rc) return rc;
-    if (s->has_water) {
-        hf->has_water = 1;
-        hf->water_level = s->water_z - s->z_shift;
-    }
+    set_water_and_edge(s, hf);
     if (s->classes && (rc = apply_surface(s, api, host, hf))) return rc;
-    if (SYLVA_HAS_FIELD(hf, sylva_heightfield, beyond_edge))
-        hf->beyond_edge = sylva_param_int(s->params, "beyond_edge") == 0 ? SYLVA_EDGE_FLAT : SYLVA_EDGE_VOID;
     o->terrain = hf;
     return SYLVA_OK;
 }

@@ -81,9 +81,15 @@ const sylva_param_spec terrain_ifs_params[] = {
     {.name = "mode", .type = SYLVA_P_ENUM, .def_str = "bilinear", .choices = mode_choices,
      .help = "bilinear: four corner conditions, the surface passes through every DTM node; "
              "affine: the paper's three-corner map (9)-(11)."},
-    {.name = "alpha", .type = SYLVA_P_REAL, .flags = OPEN_RANGE, .def = 0.1, .min = -1, .max = 1,
-     .help = "Vertical scaling alpha of every map (9): 0 gives the bilinear surface, a larger "
-             "|alpha| a rougher one."},
+    {.name = "alpha", .type = SYLVA_P_REAL, .flags = OPEN_RANGE, .def = 0, .min = -1, .max = 1,
+     .help = "Vertical scaling alpha of every map (9), an override: 0 gives the bilinear surface, "
+             "a larger |alpha| a rougher one (alpha times the whole DTM's departure from its "
+             "corners' surface per cell). Leave out: chosen from the DTM's own roughness (detail)."},
+    {.name = "detail", .type = SYLVA_P_REAL, .flags = RANGE, .def = 0, .min = 0, .max = 1000,
+     .unit = "m",
+     .help = "RMS height of the relief the refinement adds within the DTM's cells; alpha is chosen "
+             "to give it. Leave out (and alpha too): the DTM's own roughness at its two finest "
+             "scales, continued one scale down."},
     {.name = "alpha_field", .type = SYLVA_P_GRID, .flags = OPEN_RANGE, .min = -1, .max = 1,
      .help = "Per-cell alpha instead of alpha: one row per row of DTM cells from south to north, "
              "one value per cell from west to east."},

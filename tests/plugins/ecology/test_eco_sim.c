@@ -222,6 +222,72 @@ TEST(save_load_continue_equals_uninterrupted)
     fixture_host_release(&f);
 }
 
+/* A state cut short anywhere says one true thing: how many bytes the file holds and which part
+ * of the state, at which bytes, it ends inside; bytes added after the checksum and a damaged body
+ * are told apart from it. */
+TEST(cut_short_state_says_where)
+{
+    fixture_host f;
+    fixture_host_init(&f, 9);
+    sylva_heightfield hf = fixture_heightfield(41, 41, 0, 0, 2, hills);
+    char path[256], cut[300];
+    snprintf(path, sizeof path, "/tmp/sylva_eco_state_%ld.bin", (long)getpid());
+    snprintf(cut, sizeof cut, "%s.cut", path);
+    eco_sim *run = grown(&f, &hf, 2, 20), *back = grown(&f, &hf, 1, 0);
+    CHECK_INT(eco_sim_save(run, path, &f.fail), 0);
+    FILE *fp = fopen(path, "rb");
+    CHECK(fp != NULL);
+    if (!fp) return;
+    static unsigned char bytes[1 << 22];
+    size_t size = fread(bytes, 1, sizeof bytes, fp);
+    fclose(fp);
+    CHECK(size > 200 && size < sizeof bytes);
+    /* where the file is cut, and what it must then say it ends inside */
+    struct { size_t at; const char *part; } cuts[] = {
+        {5, "the mark SYLVAECO (bytes 1 to 8)"},
+        {10, "the format version and byte-order mark (bytes 9 to 12)"},
+        {20, "the fingerprint of the scene that saved it (bytes 17 to 24)"},
+        {26, "the species count and year (bytes 25 to 28)"},
+        {36, "the name of species 0"},
+        {size / 2, "plant "},
+        {size - 3, "the checksum (bytes"},
+    };
+    for (size_t k = 0; k < sizeof cuts / sizeof cuts[0]; k++) {
+        fp = fopen(cut, "wb");
+        fwrite(bytes, 1, cuts[k].at, fp);
+        fclose(fp);
+        CHECK(eco_sim_load(back, cut, &f.fail) != 0);
+        char holds[64];
+        snprintf(holds, sizeof holds, "the file holds %zu bytes and ends inside ", cuts[k].at);
+        CHECK_STR_CONTAINS(f.fail.msg, "the ecology state is cut short");
+        CHECK_STR_CONTAINS(f.fail.msg, holds);
+        CHECK_STR_CONTAINS(f.fail.msg, cuts[k].part);
+        CHECK(!strstr(f.fail.msg, "checksum does not match") && !strstr(f.fail.msg, "format 0") &&
+              !strstr(f.fail.msg, "holds 0 species"));
+    }
+    /* bytes after the checksum */
+    fp = fopen(cut, "wb");
+    fwrite(bytes, 1, size, fp);
+    fputs("xyz", fp);
+    fclose(fp);
+    CHECK(eco_sim_load(back, cut, &f.fail) != 0);
+    char msg[160];
+    snprintf(msg, sizeof msg, "ends with its checksum at byte %zu, but the file holds %zu bytes", size, size + 3);
+    CHECK_STR_CONTAINS(f.fail.msg, msg);
+    /* a whole file whose checksum does not match: damaged, not cut short */
+    bytes[size - 1] ^= 0x40;
+    fp = fopen(cut, "wb");
+    fwrite(bytes, 1, size, fp);
+    fclose(fp);
+    CHECK(eco_sim_load(back, cut, &f.fail) != 0);
+    CHECK_STR_CONTAINS(f.fail.msg, "is damaged: it is whole");
+    CHECK_INT(back->year, 0); /* nothing taken over */
+    remove(cut), remove(path);
+    eco_sim_free(run), eco_sim_free(back);
+    free(hf.z);
+    fixture_host_release(&f);
+}
+
 /* 1 when the file at path holds exactly `text`. */
 static int file_holds(const char *path, const char *text)
 {
@@ -422,5 +488,5 @@ TEST(bad_growth_area_and_species)
 TEST_LIST(TEST_CASE(dominance_grid_equals_all_pairs), TEST_CASE(single_species_self_thins),
           TEST_CASE(species_outside_its_optimum_dies_out), TEST_CASE(same_seeds_same_plants_any_threads),
           TEST_CASE(stream_seeds_change_only_their_purpose), TEST_CASE(save_load_continue_equals_uninterrupted),
-          TEST_CASE(save_never_writes_through_a_planted_link),
+          TEST_CASE(save_never_writes_through_a_planted_link), TEST_CASE(cut_short_state_says_where),
           TEST_CASE(growth_area_keeps_plants_inside), TEST_CASE(growth_area_edge_fades), TEST_CASE(never_in_water), TEST_CASE(bad_growth_area_and_species))

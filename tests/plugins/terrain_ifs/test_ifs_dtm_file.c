@@ -466,6 +466,45 @@ TEST(ascii_grid_with_junk_is_refused)
     CHECK(d == NULL);
 }
 
+/* A grid of nan values is not "truncated": the first value that is not a finite number is named
+ * at its line and column, unless NODATA_value says nan (then those cells are nodata); a negative
+ * cell size is refused at its place in the header. */
+TEST(ascii_grid_nan_values_and_negative_cellsize)
+{
+    const char *nan_grid = out_path("nan_values.asc");
+    write_text(nan_grid, "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 10\n"
+                         "1 2 3\n4  nan 6\n");
+    ifs_dtm *d = NULL;
+    ifs_err err = {{0}};
+    CHECK(ifs_dtm_read_file(nan_grid, &defaults, &d, NULL, &err) == SYLVA_ERR_IO);
+    CHECK_STR_CONTAINS(err.msg, "nan_values.asc:7:4: the DTM is an ESRI ASCII grid whose value 5 (row 2, column 2) "
+                                "is not a finite number (NaN or infinity)");
+    CHECK(!strstr(err.msg, "truncated"));
+    CHECK(d == NULL);
+    const char *all_nan = out_path("all_nan.asc");
+    write_text(all_nan, "ncols 2\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 10\nNODATA_value -9999\n"
+                        "nan nan\nnan nan\n");
+    CHECK(ifs_dtm_read_file(all_nan, &defaults, &d, NULL, &err) == SYLVA_ERR_IO);
+    CHECK_STR_CONTAINS(err.msg, "all_nan.asc:7:1: the DTM is an ESRI ASCII grid whose value 1 (row 1, column 1) is "
+                                "not a finite number");
+    CHECK(!strstr(err.msg, "truncated"));
+    /* NODATA_value nan: the nan cells are holes, filled from their neighbours */
+    const char *nodata_nan = out_path("nodata_nan.asc");
+    write_text(nodata_nan, "ncols 3\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 10\nNODATA_value nan\n"
+                           "1 2 3\n4 nan 6\n7 8 9\n");
+    int rc = ifs_dtm_read_file(nodata_nan, &defaults, &d, NULL, &err);
+    if (rc) fprintf(stderr, "%s\n", err.msg);
+    CHECK_INT(rc, SYLVA_OK);
+    ifs_dtm_free(d);
+    d = NULL;
+    const char *negative = out_path("negative_cell.asc");
+    write_text(negative, "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize   -10\n1 2 3\n4 5 6\n");
+    CHECK(ifs_dtm_read_file(negative, &defaults, &d, NULL, &err) == SYLVA_ERR_IO);
+    CHECK_STR_CONTAINS(err.msg, "negative_cell.asc:5:12: the DTM is an ESRI ASCII grid whose cellsize is -10; the "
+                                "size of a cell must be a positive number");
+    CHECK(d == NULL);
+}
+
 /* A FIFO or a device named as the DTM is refused before GDAL opens it (the FIFO used to block
  * the open for ever). */
 TEST(special_files_are_refused)
@@ -565,7 +604,7 @@ TEST_LIST(TEST_CASE(geotiff_projected),
           TEST_CASE(humidity_from_a_colour_ramp_png),
           TEST_CASE(shared_dem_corpus),
           TEST_CASE(truncated_ascii_grid_fails_fast),
-          TEST_CASE(ascii_grid_with_junk_is_refused),
+          TEST_CASE(ascii_grid_with_junk_is_refused), TEST_CASE(ascii_grid_nan_values_and_negative_cellsize),
           TEST_CASE(special_files_are_refused),
           TEST_CASE(local_vrt_stays_offline),
           TEST_CASE(corrupted_heights_are_refused))

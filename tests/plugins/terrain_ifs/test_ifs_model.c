@@ -12,6 +12,7 @@
 #include "dtm.h"
 #include "dtm_generate.h"
 #include "harness.h"
+#include "seeded_dtm.h"
 #include "ifs_chaos.h"
 #include "ifs_eval.h"
 #include "ifs_maps.h"
@@ -31,16 +32,7 @@ static ifs_dtm *dtm_of(uint32_t nx, uint32_t ny, double dx, double dy, const dou
 }
 
 /* A rough test DTM: a seeded generated grid. */
-static ifs_dtm *generated_dtm(uint32_t n, double relief, uint64_t seed)
-{
-    ifs_dtm_generator g = {.nx = n, .ny = n, .dx = 20, .dy = 20, .relief = relief, .smoothness = 0.8};
-    sylva_rng rng;
-    rng_stream(&rng, seed, "terrain_ifs.dtm", 0);
-    ifs_dtm *d = NULL;
-    ifs_err err = {{0}};
-    CHECK(ifs_dtm_generate(&g, next_u64, &rng, &d, &err) == 0);
-    return d;
-}
+static ifs_dtm *generated_dtm(uint32_t n, double relief, uint64_t seed) { return seeded_dtm(n, 20, relief, 0.8, seed); }
 
 static ifs_maps *maps_of(const ifs_dtm *d, ifs_mode mode, double alpha, const double *alpha_field,
                          const double *probability)

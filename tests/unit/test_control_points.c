@@ -193,6 +193,24 @@ TEST(random_text_read_or_refused)
     fprintf(stderr, "%d of 2000 random texts read\n", read);
 }
 
+/* A point off the photograph is refused at its line and column, its pixel as the file writes it:
+ * ImGRAFT's pixels count from 1 at the centre of the first pixel. */
+TEST(points_outside_the_photograph)
+{
+    const char *path = write_file("off.txt", "445562 7395662 596.4 1 1\n"
+                                             "445563 7395663 597 3.5 0.5\n");
+    err_buf err = {{0}};
+    control_points *cp = control_points_read(path, "off.txt", &err);
+    CHECK(cp != NULL);
+    if (!cp) return;
+    CHECK_INT(control_points_check_image(cp, "off.txt", "tiny.png", 3, 3, &err), 0);
+    CHECK_INT(control_points_check_image(cp, "off.txt", "tiny.png", 2, 3, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "off.txt:2:20: control point '2' is at pixel (3.5, 0.5), outside the photograph "
+                                "tiny.png of 2 x 3 pixels (u from 0.5 to 2.5, v from 0.5 to 3.5)");
+    CHECK_INT(err.status, ERR_INPUT);
+    control_points_free(cp);
+}
+
 TEST(engabreen_survey)
 {
     struct stat st;
@@ -214,9 +232,14 @@ TEST(engabreen_survey)
     CHECK_NEAR(cp->points[27].world[1], 7395378.5, 0);
     CHECK_NEAR(cp->points[27].pixel[0], 1010.5, 0);
     CHECK_NEAR(cp->points[27].pixel[1], 763.5, 0);
+    /* every point lies on ImGRAFT's 4290 x 2856 photograph, and none on a quarter of it */
+    CHECK_INT(control_points_check_image(cp, "gcp8902.txt", "IMG_8902.jpg", 4290, 2856, &err), 0);
+    CHECK_INT(control_points_check_image(cp, "gcp8902.txt", "IMG_8902.jpg", 1072, 714, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "gcp8902.txt:6:");
     control_points_free(cp);
 }
 
-TEST_LIST(TEST_CASE(csv_map_columns), TEST_CASE(csv_with_byte_order_mark), TEST_CASE(csv_local_columns_any_order_without_id), TEST_CASE(imgraft_text),
+TEST_LIST(TEST_CASE(points_outside_the_photograph), TEST_CASE(csv_map_columns), TEST_CASE(csv_with_byte_order_mark),
+          TEST_CASE(csv_local_columns_any_order_without_id), TEST_CASE(imgraft_text),
           TEST_CASE(malformed_files_refused_where_they_are_wrong), TEST_CASE(nul_byte_refused), TEST_CASE(random_text_read_or_refused),
           TEST_CASE(engabreen_survey))

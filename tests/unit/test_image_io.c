@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "cut_image.h"
 #include "harness.h"
 #include "work_dir.h"
 #include "io/image_io.h"
@@ -208,7 +209,58 @@ TEST(foreign_files_are_not_quoted)
     }
 }
 
-TEST_LIST(TEST_CASE(png_rgb_round_trip), TEST_CASE(png_rgba_round_trip),
+/* A texture cut short is refused with its name and what is wrong, not read with grey for the
+ * missing part. */
+TEST(cut_images_are_refused)
+{
+    const char *names[] = {"cut.jpg", "cut.tif", "cut.png"};
+    for (int i = 0; i < 3; i++) {
+        const char *path = cut_image_write(names[i], 0.6);
+        err_buf err = {{0}};
+        image_f32 img = {0};
+        CHECK_INT(image_read(path, &img, &err), -1);
+        fprintf(stderr, "%s\n", err.msg);
+        CHECK_STR_CONTAINS(err.msg, path);
+        CHECK(img.pixels == NULL);
+        if (i < 2) CHECK_STR_CONTAINS(err.msg, "damaged or cut short");
+        remove(path);
+    }
+}
+
+/* An image whose header claims more pixels than the memory budget holds is refused before they
+ * are allocated (ERR_LIMIT, as a photograph or a DTM): a PPM header of 60000 x 60000 pixels
+ * followed by three bytes, and a real 64 x 64 PNG under a 16 KiB budget. */
+TEST(images_beyond_the_memory_budget)
+{
+    char huge[1200];
+    snprintf(huge, sizeof huge, "%s", work_path("huge.ppm"));
+    FILE *f = fopen(huge, "wb");
+    CHECK(f != NULL);
+    if (f) fputs("P6\n60000 60000\n255\n\x01\x02\x03", f), fclose(f);
+    err_buf err = {{0}};
+    image_f32 img = {0};
+    setenv("SYLVA_MEMORY_LIMIT", "1G", 1);
+    CHECK_INT(image_read(huge, &img, &err), -1);
+    CHECK_INT(err.status, ERR_LIMIT);
+    CHECK_STR_CONTAINS(err.msg, "(60000x60000, 3 channels) needs about 67.1 GiB of memory, more than the 1.0 GiB "
+                                "SYLVA_MEMORY_LIMIT allows");
+    CHECK(img.pixels == NULL);
+    const uint8_t rgb[64 * 64 * 3] = {0};
+    const char *small = work_path("small.png");
+    CHECK_INT(image_write_u8(small, 64, 64, 3, rgb, &err), 0);
+    setenv("SYLVA_MEMORY_LIMIT", "16K", 1);
+    err_clear(&err);
+    CHECK_INT(image_read(small, &img, &err), -1);
+    CHECK_INT(err.status, ERR_LIMIT);
+    CHECK_STR_CONTAINS(err.msg, small);
+    unsetenv("SYLVA_MEMORY_LIMIT");
+    CHECK_INT(image_read(small, &img, &err), 0);
+    image_free(&img);
+    remove(huge);
+    remove(small);
+}
+
+TEST_LIST(TEST_CASE(images_beyond_the_memory_budget), TEST_CASE(cut_images_are_refused), TEST_CASE(png_rgb_round_trip), TEST_CASE(png_rgba_round_trip),
           TEST_CASE(png_grey_round_trip), TEST_CASE(overwrite_replaces_the_file),
           TEST_CASE(unreadable_files), TEST_CASE(failed_writes_leave_nothing),
           TEST_CASE(devices_and_fifos_are_refused), TEST_CASE(foreign_files_are_not_quoted))

@@ -22,13 +22,16 @@ typedef struct loaded {
     float lo[3], hi[3];
 } loaded;
 
-/* Imports MODELS/rel with the given scale (0: none); the test fails when it does not load. */
-static int load(const char *rel, double scale, loaded *l)
+/* Imports MODELS/rel with the given scale (0: none) and the files it refers to in MODELS/root
+ * (NULL: its own folder); the test fails when it does not load. */
+static int load_within(const char *rel, const char *root, double scale, loaded *l)
 {
     *l = (loaded){0};
     l->s = scene_new();
     err_buf err = {{0}};
-    model_import_options o = {.scale = scale};
+    char root_path[1024];
+    if (root) snprintf(root_path, sizeof root_path, "%s%s", MODELS, root);
+    model_import_options o = {.scale = scale, .root = root ? root_path : NULL};
     char path[1024];
     snprintf(path, sizeof path, "%s%s", MODELS, rel);
     int rc = model_import(l->s, path, &o, &l->m, &l->info, &err);
@@ -40,6 +43,8 @@ static int load(const char *rel, double scale, loaded *l)
     mesh_bounds(l->m, l->lo, l->hi);
     return 0;
 }
+
+static int load(const char *rel, double scale, loaded *l) { return load_within(rel, NULL, scale, l); }
 
 static void unload(loaded *l)
 {
@@ -157,11 +162,14 @@ TEST(gltf_building_no_indices)
     unload(&l);
 }
 
-/* Inches by the caller's scale; CRLF lines, "../materials/textures" paths in the MTL. */
+/* Inches by the caller's scale; CRLF lines, "../materials/textures" paths in the MTL, read with
+ * the Gazebo model's folder (meshes/ and materials/) as the model's root. */
 TEST(obj_cloverleaf)
 {
     loaded l;
-    if (load("structure/gazebo-cloverleaf-interchange/meshes/cloverleaf.obj", 0.0254, &l)) return;
+    if (load_within("structure/gazebo-cloverleaf-interchange/meshes/cloverleaf.obj", "structure/gazebo-cloverleaf-interchange",
+                    0.0254, &l))
+        return;
     CHECK_INT(l.m->nt, 1564);
     check_extent(&l, 355.6, 355.9, 6.7, 0.1);
     CHECK_INT(l.info.textures, 4);
@@ -333,18 +341,25 @@ static const char *copy_prefix(const char *src, const char *name, long keep)
     return dst;
 }
 
-static void expect_error(const char *path, err_status status, const char *want1, const char *want2)
+static void expect_error_within(const char *path, const char *root, err_status status, const char *want1,
+                                const char *want2)
 {
     scene *s = scene_new();
     mesh *m = NULL;
     err_buf err = {{0}};
-    CHECK_INT(model_import(s, path, NULL, &m, NULL, &err), -1);
+    model_import_options o = {.root = root};
+    CHECK_INT(model_import(s, path, &o, &m, NULL, &err), -1);
     CHECK(m == NULL);
     CHECK_INT(err.status, status);
     CHECK_STR_CONTAINS(err.msg, path);
     CHECK_STR_CONTAINS(err.msg, want1);
     if (want2) CHECK_STR_CONTAINS(err.msg, want2);
     scene_free(s);
+}
+
+static void expect_error(const char *path, err_status status, const char *want1, const char *want2)
+{
+    expect_error_within(path, NULL, status, want1, want2);
 }
 
 /* Half of the GLB, the first 40 % of the COLLADA and half of the binary... ASCII STL: each is
@@ -377,7 +392,11 @@ TEST(missing_texture)
     copy_prefix(src, "meshes/cloverleaf.mtl", 0);
     snprintf(src, sizeof src, "%scloverleaf.obj", d);
     const char *obj = copy_prefix(src, "meshes/cloverleaf.obj", 0);
-    expect_error(obj, ERR_INPUT, "names the texture '../materials/textures/", "No such file or directory");
+    expect_error_within(obj, work_dir(), ERR_INPUT, "names the texture '../materials/textures/",
+                        "No such file or directory");
+    /* without a root that holds materials/, the MTL's "../" leaves the model's folder */
+    expect_error(obj, ERR_INPUT, "refers to the file '../materials/textures/road.png', which climbs out of the model's folder",
+                 "/meshes and below");
 }
 
 TEST(unsupported_format_and_missing_file)

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <sys/stat.h>
 
+#include "cut_image.h"
 #include "harness.h"
 #include "work_dir.h"
 #include "io/image_io.h"
@@ -376,7 +377,31 @@ TEST(errors_name_the_file)
     CHECK_STR_CONTAINS(err.msg, work_dir());
 }
 
-TEST_LIST(TEST_CASE(exif_matches_exiftool), TEST_CASE(exif_known_values), TEST_CASE(sensor_width),
+/* A photograph cut short is refused, not read with its missing part filled in grey (libjpeg and
+ * libtiff go on past the end and only note it): the file named, and what is wrong. */
+TEST(cut_photographs_are_refused)
+{
+    const char *names[] = {"cut.jpg", "cut.tif", "cut.png"};
+    for (int i = 0; i < 3; i++) {
+        const char *path = cut_image_write(names[i], 0.6);
+        err_buf err = {{0}};
+        photo p = {0};
+        CHECK_INT(photo_read(path, &p, &err), -1);
+        fprintf(stderr, "%s\n", err.msg);
+        CHECK_STR_CONTAINS(err.msg, path);
+        CHECK_INT(err.status, ERR_INPUT);
+        CHECK(p.rgb == NULL);
+        if (i < 2) CHECK_STR_CONTAINS(err.msg, "damaged or cut short");
+    }
+    /* the whole file reads */
+    const char *whole = cut_image_write("whole.jpg", 1.0);
+    err_buf err = {{0}};
+    photo p = {0};
+    CHECK_INT(photo_read(whole, &p, &err), 0);
+    photo_free(&p);
+}
+
+TEST_LIST(TEST_CASE(cut_photographs_are_refused), TEST_CASE(exif_matches_exiftool), TEST_CASE(exif_known_values), TEST_CASE(sensor_width),
           TEST_CASE(png_round_trip_linear), TEST_CASE(exif_instant), TEST_CASE(orientations),
           TEST_CASE(orientation_tag_honoured), TEST_CASE(sixteen_bit_png), TEST_CASE(memory_budget),
           TEST_CASE(errors_name_the_file))

@@ -39,7 +39,8 @@ static void render_usage(FILE *out)
             "                      section) instead of its camera\n"
             "  --season S          the plants on season S (spring, summer, autumn, winter) or\n"
             "                      date YYYY-MM-DD, instead of the scene's season: key\n"
-            "  -q, --quiet         no progress output\n"
+            "  -q, --quiet         no progress or information lines (warnings\n"
+            "                      and errors still print)\n"
             "  --allow-gdal-virtual let the scene name GDAL virtual paths, URLs and connection\n"
             "                      strings (these may reach the network; refused otherwise)\n"
             "  -v, --verbose       plugin debug messages\n"
@@ -184,7 +185,7 @@ static int render_run(cli_mpi *m, int argc, char **argv)
     if (m->rank) goto done;
     double ev = sc->image.exposure_set ? sc->image.exposure : auto_exposure_stops(f);
     if (!ro.quiet) fprintf(stderr, "exposure: %+.2f EV (%s)\n", ev, sc->image.exposure_set ? "image.exposure" : "metered");
-    if (film_write_exr(f, &sc->site, ev, exr, &err) || film_write_png(f, png, sc->image.tone, ev, &err)) {
+    if (film_write_pair(f, &sc->site, sc->image.tone, ev, png, exr, &err)) {
         rc = cli_fail("render", &err, ERR_OUTPUT);
         goto done;
     }

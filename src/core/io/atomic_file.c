@@ -9,7 +9,9 @@
 #include <stdatomic.h>
 #include <stdint.h>
 #include <string.h>
+#include <sys/file.h>
 #include <sys/random.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -203,6 +205,74 @@ int atomic_file_commit(atomic_file *af, err_buf *err)
     }
     forget_temporary(af);
     return 0;
+}
+
+/* --- files committed together ------------------------------------------------------------------ */
+
+/* "<dir>/.<stem>.lock" for "<dir>/<stem><ext>". */
+static int lock_name(const char *path, char *out, size_t n)
+{
+    const char *slash = strrchr(path, '/');
+    const char *base = slash ? slash + 1 : path;
+    const char *dot = strrchr(base, '.');
+    if (!dot || dot == base) dot = base + strlen(base);
+    int k = snprintf(out, n, "%.*s.%.*s.lock", (int)(base - path), path, (int)(dot - base), base);
+    return k < 0 || (size_t)k >= n ? -1 : 0;
+}
+
+/* An exclusive flock on the lock file `name`, waiting for another holder. A holder removes the
+ * file when it is done, so a lock taken on a file that is no longer at `name` is let go and
+ * taken again on the new one. Returns the descriptor, or -1 with errno set. */
+static int lock_take(const char *name)
+{
+    for (;;) {
+        int fd = open(name, O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0666);
+        if (fd < 0) return -1;
+        int rc;
+        while ((rc = flock(fd, LOCK_EX)) != 0 && errno == EINTR) {}
+        struct stat held, named;
+        if (rc == 0 && fstat(fd, &held) == 0 && lstat(name, &named) == 0 && held.st_dev == named.st_dev &&
+            held.st_ino == named.st_ino)
+            return fd;
+        int e = errno;
+        close(fd);
+        if (rc != 0) return errno = e, -1;
+    }
+}
+
+int atomic_file_commit_together(atomic_file *af, int n, err_buf *err)
+{
+    int e = 0, failed = 0;
+    for (int i = 0; i < n && !e; i++) {
+        e = af[i].tmp[0] ? close_all(&af[i]) : EBADF;
+        failed = i;
+    }
+    if (e) {
+        for (int i = 0; i < n; i++) atomic_file_abort(&af[i]);
+        return err_set(err, "%s: writing failed: %s", af[failed].path, strerror(e));
+    }
+    char lock[ATOMIC_PATH_MAX + 16];
+    int lock_fd = lock_name(af[0].path, lock, sizeof lock) ? (errno = ENAMETOOLONG, -1) : lock_take(lock);
+    if (lock_fd < 0) {
+        e = errno;
+        for (int i = 0; i < n; i++) atomic_file_abort(&af[i]);
+        return err_set(err, "%s: cannot take the lock file beside it that keeps runs writing the same outputs "
+                       "apart: %s", af[0].path, strerror(e));
+    }
+    int slot = registry_add(lock); /* an interrupted run removes it with its temporaries */
+    int rc = 0;
+    for (int i = 0; i < n; i++) {
+        if (!rc && rename(af[i].tmp, af[i].path) != 0) {
+            e = errno;
+            rc = err_set(err, "%s: cannot move the finished file into place: %s", af[i].path, strerror(e));
+        }
+        if (rc) unlink(af[i].tmp);
+        forget_temporary(&af[i]);
+    }
+    registry_remove(slot);
+    unlink(lock);
+    close(lock_fd);
+    return rc;
 }
 
 void atomic_file_abort(atomic_file *af)

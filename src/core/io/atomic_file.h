@@ -6,7 +6,12 @@
  * O_CREAT|O_EXCL|O_NOFOLLOW, so a file or symbolic link planted under any name is never opened
  * or followed; only the final rename replaces what stands at the target path. While it is
  * open, the temporary is listed in a registry that a SIGINT/SIGTERM handler empties (unlink,
- * then the default action) so an interrupted run leaves no temporary behind. */
+ * then the default action) so an interrupted run leaves no temporary behind.
+ *
+ * Files that belong together (a render's PNG and EXR) are committed together: written and
+ * flushed first, then renamed one after the other while the run holds a lock file beside them
+ * (".<stem>.lock", removed when done), so two runs writing the same outputs at once leave the
+ * whole set of one of them, never a PNG of one and an EXR of the other. */
 #ifndef SYLVA_ATOMIC_FILE_H
 #define SYLVA_ATOMIC_FILE_H
 
@@ -33,6 +38,12 @@ FILE *atomic_file_open_stream(atomic_file *af, const char *path, err_buf *err);
 /* Flushes the stream, fsyncs, closes and renames the temporary onto the target. On any failure
  * the temporary is removed and err says why. af is closed afterwards either way. */
 int atomic_file_commit(atomic_file *af, err_buf *err);
+/* Commits the n files af[0..n-1] (open, with targets in one folder and one stem, as out.png and
+ * out.exr) as one set: each is flushed, fsynced and closed, then, holding the lock
+ * "<folder>/.<stem of af[0]>.lock" (waiting while another run holds it), all are renamed into
+ * place. On a failure before the renames every temporary is removed and nothing is replaced.
+ * Every af is closed afterwards either way. Returns 0 or -1 with err set. */
+int atomic_file_commit_together(atomic_file *af, int n, err_buf *err);
 /* Closes and removes the temporary; accepts an af that is already closed or never opened
  * (zeroed). */
 void atomic_file_abort(atomic_file *af);

@@ -39,12 +39,16 @@ typedef struct exr_channel_src {
     int rgb_index;        /* 0..2 for a half R, G, B channel, else -1 */
 } exr_channel_src;
 
+/* The stream exr_write is writing on this thread, for the error handler: OpenEXRCore calls the
+ * handler while it holds the context's lock (a failed write inside exr_encoding_run, say), and
+ * exr_get_user_data takes that lock again, which would wait for ever. */
+static _Thread_local exr_stream *exr_stream_now;
+
 static void exr_on_error(exr_const_context_t ctxt, exr_result_t code, const char *msg)
 {
-    void *user = NULL;
-    if (!ctxt || exr_get_user_data(ctxt, &user) != EXR_ERR_SUCCESS || !user) return;
-    exr_stream *s = user;
-    if (s->reported) return;
+    (void)ctxt;
+    exr_stream *s = exr_stream_now;
+    if (!s || s->reported) return;
     s->reported = 1;
     err_set(s->err, "%s: OpenEXR could not write the file: %s (%s)", s->path, msg,
             exr_get_error_code_as_string(code));
@@ -227,9 +231,10 @@ static int exr_write_part(exr_context_t ctx, exr_stream *s, const exr_frame *f,
     return status;
 }
 
-int exr_write(const char *path, const exr_frame *f, err_buf *err)
+int exr_write_into(atomic_file *out, const exr_frame *f, err_buf *err)
 {
-    if (!path || !f) return err_set(err, "exr_write needs an output path and a frame");
+    if (!out || out->fd < 0 || !f) return err_set(err, "exr_write_into needs an open temporary and a frame");
+    const char *path = out->path;
     if (f->width == 0 || f->height == 0 || f->width > EXR_MAX_SIDE || f->height > EXR_MAX_SIDE)
         return err_set(err, "%s: a frame of %ux%u pixels cannot be written; width and height "
                        "must be between 1 and %d", path, (unsigned)f->width, (unsigned)f->height,
@@ -240,9 +245,7 @@ int exr_write(const char *path, const exr_frame *f, err_buf *err)
         return err_set(err, "%s: the frame has no layers; give at least one of rgb, depth, "
                        "normal, albedo, instance_id, species_id, object_id, development, development_rgb", path);
 
-    atomic_file out;
-    if (atomic_file_open(&out, path, err)) return -1;
-    exr_stream s = {.fd = out.fd, .path = path, .err = err};
+    exr_stream s = {.fd = out->fd, .path = path, .err = err};
 
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     init.error_handler_fn = exr_on_error;
@@ -251,6 +254,7 @@ int exr_write(const char *path, const exr_frame *f, err_buf *err)
 
     exr_context_t ctx = NULL;
     int status = 0;
+    exr_stream_now = &s;
     exr_result_t rc = exr_start_write(&ctx, path, EXR_WRITE_FILE_DIRECTLY, &init);
     if (rc) status = exr_fail(&s, rc, "starting the file");
     if (!status) status = exr_write_part(ctx, &s, f, ch, n_ch);
@@ -258,7 +262,16 @@ int exr_write(const char *path, const exr_frame *f, err_buf *err)
         rc = exr_finish(&ctx); /* writes the chunk offset table */
         if (rc && !status) status = exr_fail(&s, rc, "writing the chunk offset table");
     }
-    if (status) {
+    exr_stream_now = NULL;
+    return status ? -1 : 0;
+}
+
+int exr_write(const char *path, const exr_frame *f, err_buf *err)
+{
+    if (!path || !f) return err_set(err, "exr_write needs an output path and a frame");
+    atomic_file out;
+    if (atomic_file_open(&out, path, err)) return -1;
+    if (exr_write_into(&out, f, err)) {
         atomic_file_abort(&out);
         return -1;
     }

@@ -11,6 +11,7 @@
 
 #include <stdint.h>
 
+#include "io/atomic_file.h"
 #include "util/err.h"
 
 typedef struct exr_frame {
@@ -39,5 +40,8 @@ typedef struct exr_frame {
 
 /* Writes f to path (ZIP compression, scanline). Returns 0 or -1 with err set. */
 int exr_write(const char *path, const exr_frame *f, err_buf *err);
+/* The same into a temporary the caller opened (atomic_file_open) and commits or aborts itself,
+ * for outputs that appear together; messages name out->path. */
+int exr_write_into(atomic_file *out, const exr_frame *f, err_buf *err);
 
 #endif

@@ -20,9 +20,17 @@ typedef struct image_f32 {
     char **channel_names;      /* channels strings; owned */
 } image_f32;
 
+/* Bytes per pixel that a reader of image_read keeps besides the float samples: a texture's
+ * 8-bit RGBA and the scene's copy of it. */
+#define IMAGE_READ_COPY_BYTES_PER_PIXEL 8u
+
 /* Reads path (PNG, EXR, JPEG, TIFF, ... whatever OpenImageIO reads), every channel as float
  * (8- and 16-bit values scaled to [0, 1], 32-bit integers such as EXR id channels kept by
- * value, alpha unassociated, no colour conversion). Returns 0 or -1 with err set. */
+ * value, alpha unassociated, no colour conversion). Before the pixels are allocated, the float
+ * samples and IMAGE_READ_COPY_BYTES_PER_PIXEL a pixel are checked against the memory budget
+ * (util/memory_budget.h); an image that does not fit is refused with ERR_LIMIT. A file cut short
+ * or damaged is refused even where the decoder would fill the rest in. Returns 0 or -1 with err
+ * set. */
 int image_read(const char *path, image_f32 *out, err_buf *err);
 /* The same for an image held in memory (a texture embedded in a model file): `format` is the
  * file extension that names its encoding ("png", "jpg"), `name` names it in messages. The

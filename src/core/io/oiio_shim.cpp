@@ -49,6 +49,16 @@ int read_integer_channel(OIIO::ImageInput *in, int c, image_f32 *img, err_buf *e
     return 0;
 }
 
+// What OpenImageIO noted while it read pixels it still handed over: libjpeg and libtiff let a
+// reader go on past the end of a file cut short (the rest of the image filled with grey) and
+// only record the complaint. The first line of it (a TIFF gives one per missing strip), or "".
+std::string damage_noted(OIIO::ImageInput *in)
+{
+    std::string why = in->geterror();
+    size_t eol = why.find('\n');
+    return eol == std::string::npos ? why : why.substr(0, eol);
+}
+
 // Reads the file `path`, or the bytes behind `proxy` when it is not NULL (OpenImageIO then
 // takes the format from the extension of `open_name`); `path` names the image in messages.
 int read_into(const char *path, const char *open_name, OIIO::Filesystem::IOProxy *proxy,
@@ -83,8 +93,17 @@ int read_into(const char *path, const char *open_name, OIIO::Filesystem::IOProxy
     const size_t count = static_cast<size_t>(spec.width) * static_cast<size_t>(spec.height) *
                          static_cast<size_t>(spec.nchannels);
     if (count > SIZE_MAX / sizeof(float) / 2)
-        return err_set(err, "%s: cannot read the image: %dx%d pixels with %d channels is too "
-                       "large", path, spec.width, spec.height, spec.nchannels);
+        return err_fail(err, ERR_LIMIT, "%s: cannot read the image: %dx%d pixels with %d channels "
+                        "is too large", path, spec.width, spec.height, spec.nchannels);
+    // The size comes from the file's header alone (any file can claim 60000 x 60000): checked
+    // against the memory budget before anything is allocated, as photographs and DTMs are.
+    const uint64_t n_px = static_cast<uint64_t>(spec.width) * static_cast<uint64_t>(spec.height);
+    const uint64_t need = n_px * (static_cast<uint64_t>(spec.nchannels) * sizeof(float) +
+                                  IMAGE_READ_COPY_BYTES_PER_PIXEL);
+    const std::string what = std::string("reading the image '") + path + "' (" +
+                             std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                             ", " + std::to_string(spec.nchannels) + " channels)";
+    if (memory_check(need, what.c_str(), err)) return err_default(err, ERR_LIMIT);
 
     img->width = static_cast<uint32_t>(spec.width);
     img->height = static_cast<uint32_t>(spec.height);
@@ -101,10 +120,15 @@ int read_into(const char *path, const char *open_name, OIIO::Filesystem::IOProxy
         if (!img->channel_names[c])
             return err_nomem(err, "%s: out of memory for the channel names", path);
     }
+    (void)in->geterror(); // anything noted while opening is not about the pixels
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img->pixels)) {
         std::string why = in->geterror();
         return err_set(err, "%s: cannot read the pixels: %s", path, why.c_str());
     }
+    const std::string damage = damage_noted(in.get());
+    if (!damage.empty())
+        return err_set(err, "%s: cannot read the image: it is damaged or cut short (OpenImageIO "
+                       "says: %s)", path, damage.c_str());
     for (int c = 0; c < spec.nchannels; c++)
         if (read_integer_channel(in.get(), c, img, err)) return err_prefix(err, "%s: ", path);
     in->close();
@@ -325,11 +349,16 @@ int photo_read_into(const char *path, image_f32 *img, photo *meta, err_buf *err)
     if (!img->pixels)
         return err_nomem(err, "%s: out of memory for %zu float samples", path, count);
     img->channels = static_cast<uint32_t>(spec.nchannels);
+    (void)in->geterror(); // anything noted while opening is not about the pixels
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img->pixels)) {
         std::string why = in->geterror();
         return err_fail(err, ERR_INPUT, "%s: cannot read the photograph's pixels: OpenImageIO "
                         "says: %s", path, why.c_str());
     }
+    const std::string damage = damage_noted(in.get());
+    if (!damage.empty())
+        return err_fail(err, ERR_INPUT, "%s: cannot read the photograph: it is damaged or cut "
+                        "short (OpenImageIO says: %s)", path, damage.c_str());
     in->close();
     return 0;
 }

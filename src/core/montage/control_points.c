@@ -160,6 +160,7 @@ static int read_imgraft_line(reader *R, char *text, uint32_t line)
         if (read_number(R, line, column[3 + c], names[3 + c], field[3 + c], 1, &p->pixel[c])) return -1;
         p->pixel[c] -= 0.5; /* ImGRAFT's first pixel is centred at 1 */
     }
+    p->column = column[3];
     return 0;
 }
 
@@ -212,6 +213,7 @@ static int read_csv_row(reader *R, uint32_t line, char **field, const uint32_t *
         int k = where[COL_U + c];
         if (read_number(R, line, column[k], column_names[COL_U + c], field[k], 0, &p->pixel[c])) return -1;
     }
+    p->column = column[where[COL_U]];
     return 0;
 }
 
@@ -271,6 +273,7 @@ static int read_lines(reader *R, char *text, size_t len)
                        "no control points; give a CSV (header u,v,easting,northing,height or u,v,x,y,z, "
                        "then one point per line) or ImGRAFT's lines X Y Z U V");
     R->cp->map = format == 2 ? 1 : R->cp->map;
+    R->cp->pixel_shift = format == 2 ? 0.5 : 0.0;
     return 0;
 }
 
@@ -290,6 +293,21 @@ control_points *control_points_read(const char *path, const char *shown, err_buf
         return NULL;
     }
     return cp;
+}
+
+int control_points_check_image(const control_points *cp, const char *shown, const char *photo, uint32_t width,
+                               uint32_t height, err_buf *err)
+{
+    for (uint32_t i = 0; i < cp->n; i++) {
+        const control_point *p = &cp->points[i];
+        if (p->pixel[0] >= 0 && p->pixel[0] <= width && p->pixel[1] >= 0 && p->pixel[1] <= height) continue;
+        const double s = cp->pixel_shift;
+        return err_at(err, ERR_INPUT, shown, p->line, p->column,
+                      "control point '%s' is at pixel (%g, %g), outside the photograph %s of %u x %u pixels "
+                      "(u from %g to %g, v from %g to %g); give the points picked on this photograph",
+                      p->id, p->pixel[0] + s, p->pixel[1] + s, photo, width, height, s, width + s, s, height + s);
+    }
+    return 0;
 }
 
 void control_points_free(control_points *cp)

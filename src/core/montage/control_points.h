@@ -26,12 +26,14 @@ typedef struct control_point {
     double pixel[2];     /* continuous pixel: x right, y down from the top-left corner */
     double world[3];     /* map (easting, northing, height) or local (x, y, z) metres, as read */
     uint32_t line;       /* where it was read, for messages */
+    uint32_t column;     /* where its u (ImGRAFT: U) starts on that line */
 } control_point;
 
 typedef struct control_points {
     control_point *points;
     uint32_t n;
     int map;             /* 1: world is in map coordinates (local = map - site origin); 0: local */
+    double pixel_shift;  /* the file's pixel minus sylva's: 0.5 for ImGRAFT's, 0 for CSV */
     struct arena *arena; /* owns points and their ids */
 } control_points;
 
@@ -40,5 +42,12 @@ typedef struct control_points {
  * error. */
 control_points *control_points_read(const char *path, const char *shown, err_buf *err);
 void control_points_free(control_points *cp); /* accepts NULL */
+
+/* Every point's pixel must lie on the photograph `photo` of width x height pixels (upright):
+ * 0 when they do, else -1 with err at the first point outside (file:line:column, ERR_INPUT)
+ * naming the point, its pixel as the file writes it and the photograph's size. `shown` names
+ * the control-point file. */
+int control_points_check_image(const control_points *cp, const char *shown, const char *photo, uint32_t width,
+                               uint32_t height, err_buf *err);
 
 #endif

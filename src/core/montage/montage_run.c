@@ -182,7 +182,8 @@ static int write_files(const scene *s, const scene_file *sf, const photo *ph, co
     wireline_free(&wl);
     free(plate8);
     free(mont8);
-    return rc;
+    /* a file that could not be written (a full disk) is an output failure, not a bad input */
+    return rc ? err_default(err, ERR_OUTPUT) : 0;
 }
 
 /* The development's gain against the plate, known before anything is rendered: the photo:
@@ -223,6 +224,7 @@ int montage_run(scene *s, const scene_file *sf, const montage_options *o, montag
     if (!rc && panorama) camera_model_from_settings(&cam, &s->camera, ph.width, ph.height); /* for the sheet */
     if (!rc && !panorama) rc = montage_start_camera(s, sf, &ph, &cam, &rep->sensor_width_mm, err);
     if (!rc && points_path && !(cp = control_points_read(points_path, NULL, err))) rc = -1;
+    if (!rc && cp) rc = control_points_check_image(cp, points_path, photo_path, ph.width, ph.height, err);
     if (!rc && cp) rc = match_camera(sf, cp, points_path, &cam, rep, o->quiet, err);
     if (!rc) {
         rep->camera = cam;

@@ -96,8 +96,8 @@ uint8_t *film_tonemap(const film *f, tone_curve tone, double exposure_stops)
     return out;
 }
 
-int film_write_exr(const film *f, const site_settings *site, double exposure_stops, const char *path,
-                   err_buf *err)
+/* The frame's EXR layers, with the site and the exposure as header attributes. */
+static exr_frame film_exr_frame(const film *f, const site_settings *site, double exposure_stops)
 {
     exr_frame fr = {.width = f->width, .height = f->height, .rgb = f->rgb, .depth = f->depth, .normal = f->normal,
                     .albedo = f->albedo, .instance_id = f->instance_id, .species_id = f->species_id,
@@ -108,7 +108,32 @@ int film_write_exr(const film *f, const site_settings *site, double exposure_sto
         fr.crs_wkt = site->crs_wkt, fr.crs_name = site->crs_name;
         for (int k = 0; k < 3; k++) fr.origin[k] = site->origin[k];
     }
+    return fr;
+}
+
+int film_write_exr(const film *f, const site_settings *site, double exposure_stops, const char *path,
+                   err_buf *err)
+{
+    exr_frame fr = film_exr_frame(f, site, exposure_stops);
     return exr_write(path, &fr, err);
+}
+
+int film_write_pair(const film *f, const site_settings *site, tone_curve tone, double exposure_stops,
+                    const char *png_path, const char *exr_path, err_buf *err)
+{
+    uint8_t *px = film_tonemap(f, tone, exposure_stops); /* owned here */
+    if (!px) return err_nomem(err, "out of memory tone-mapping the image");
+    exr_frame fr = film_exr_frame(f, site, exposure_stops);
+    atomic_file out[2]; /* the EXR, then the PNG */
+    memset(out, 0, sizeof out);
+    out[0].fd = out[1].fd = -1;
+    int rc = atomic_file_open(&out[0], exr_path, err) || exr_write_into(&out[0], &fr, err) ||
+             !atomic_file_open_stream(&out[1], png_path, err) ||
+             image_write_u8_into(&out[1], f->width, f->height, 3, px, err)
+                 ? -1 : atomic_file_commit_together(out, 2, err);
+    if (rc) atomic_file_abort(&out[0]), atomic_file_abort(&out[1]);
+    free(px);
+    return rc;
 }
 
 int film_write_png(const film *f, const char *path, tone_curve tone, double exposure_stops, err_buf *err)

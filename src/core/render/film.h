@@ -78,5 +78,10 @@ uint8_t *film_tonemap(const film *f, tone_curve tone, double exposure_stops);
 int film_write_exr(const film *f, const site_settings *site, double exposure_stops, const char *path,
                    err_buf *err);
 int film_write_png(const film *f, const char *path, tone_curve tone, double exposure_stops, err_buf *err);
+/* film_write_png and film_write_exr as one set (atomic_file_commit_together): both files are
+ * written under temporary names and renamed into place together under the lock beside them, so
+ * that runs writing the same pair at once leave the PNG and the EXR of one run. */
+int film_write_pair(const film *f, const site_settings *site, tone_curve tone, double exposure_stops,
+                    const char *png_path, const char *exr_path, err_buf *err);
 
 #endif

@@ -22,7 +22,8 @@ ecology_session *ecology_session_open(const scene_file *sf, scene *s, const plug
     }
     e->sf = sf;
     /* The command reports progress per year itself. */
-    plugin_call_output out = {.verbose = opt ? opt->verbose : 0, .quiet = 1, .threads = opt ? opt->threads : 0,
+    plugin_call_output out = {.verbose = opt ? opt->verbose : 0, .quiet = 1,
+                              .warnings_only = opt ? opt->quiet : 0, .threads = opt ? opt->threads : 0,
                               .times = opt ? opt->times : NULL};
     if (plugin_call_open_ecology(&e->call, sf, s, reg, &out, err)) {
         free(e);

@@ -33,6 +33,7 @@ void host_release(sylva_host *h)
 static void host_log(sylva_host *h, sylva_log_level level, const char *fmt, ...)
 {
     if (level == SYLVA_LOG_DEBUG && !h->verbose) return;
+    if (level == SYLVA_LOG_INFO && h->warnings_only && !h->verbose) return;
     va_list ap;
     va_start(ap, fmt);
     flockfile(stderr); /* one line, whole, when tree variants log from several threads */

@@ -20,6 +20,7 @@ struct sylva_host {
     int out_of_memory;     /* 1 once a host function ran out of memory for the plugin */
     int verbose;           /* 1: print DEBUG logs */
     int quiet;             /* 1: no progress */
+    int warnings_only;     /* 1 (-q): INFO logs are not printed; warnings always are */
     int progress_open;
     progress prog;
     char **paths; uint32_t n_paths; /* owned: strings returned by resolve_path */

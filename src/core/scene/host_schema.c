@@ -601,6 +601,10 @@ static const sylva_param_spec object_model_params[] = {
      .help = "Metres per model unit, after the file's own unit (0.0254 for a model in inches)."},
     {.name = "up_axis", .type = SYLVA_P_ENUM, .def_str = "file", .choices = host_model_up_axes,
      .help = "Up axis of an OBJ, STL or PLY file (y or z); other formats state their own."},
+    {.name = "model_root", .type = SYLVA_P_STRING, /* a folder: PATH names files */
+     .help = "Folder that holds the model and every file it refers to (buffers, material "
+             "libraries, textures), relative to the scene file; default: the model file's own "
+             "folder. References outside it are refused."},
 };
 const host_schema host_schema_object_model = {
     "objects item with a model", "A man-made object read from a 3-D model file.",

@@ -21,6 +21,7 @@
 #include <strings.h>
 #include <unistd.h>
 
+#include "scene/model_folder.h"
 #include "scene/model_material.h"
 #include "scene/ply_check.h"
 
@@ -288,8 +289,8 @@ static const char *assimp_reason(char *buf, size_t cap)
 }
 
 /* Reads the file with Assimp: triangulated, points and lines dropped, the data structure
- * checked. */
-static const struct aiScene *read_with_assimp(const char *path, err_buf *err)
+ * checked, every file it refers to opened through the model's folder. */
+static const struct aiScene *read_with_assimp(const char *path, model_folder *folder, err_buf *err)
 {
     struct aiPropertyStore *props = aiCreatePropertyStore();
     if (!props) {
@@ -298,9 +299,13 @@ static const struct aiScene *read_with_assimp(const char *path, err_buf *err)
     }
     aiSetImportPropertyInteger(props, AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     unsigned flags = aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure;
-    const struct aiScene *ai = aiImportFileExWithProperties(path, flags, NULL, props);
+    struct aiFileIO io = model_folder_io(folder);
+    const struct aiScene *ai = aiImportFileExWithProperties(path, flags, &io, props);
     aiReleasePropertyStore(props);
-    if (!ai) {
+    if (model_folder_refusal(folder, err)) { /* Assimp may have gone on without the file */
+        if (ai) aiReleaseImport(ai);
+        ai = NULL;
+    } else if (!ai) {
         char why[512];
         err_fail(err, ERR_INPUT, "%s: cannot read the model: %s", path, assimp_reason(why, sizeof why));
     } else if ((ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode) {
@@ -327,7 +332,9 @@ int model_import(scene *s, const char *path, const model_import_options *opt, me
         return err_fail(err, ERR_INPUT, "%s: cannot read the model: %s", path, strerror(errno));
     if (!strcmp(f->ext, "ply") && ply_check(path, err)) return -1; /* Assimp hangs on a cut PLY */
 
-    const struct aiScene *ai = read_with_assimp(path, err);
+    model_folder folder;
+    if (model_folder_init(&folder, path, o.root, err)) return -1;
+    const struct aiScene *ai = read_with_assimp(path, &folder, err);
     if (!ai) return -1;
     int rc = -1;
     copy_state cs = {.ai = ai, .path = path, .s = s};
@@ -367,6 +374,7 @@ int model_import(scene *s, const char *path, const model_import_options *opt, me
     cs.m->cap_v = (uint32_t)nv, cs.m->cap_t = (uint32_t)nt;
     memset(cs.m->pos + (size_t)nv * 3, 0, 4 * sizeof(float));
     if (model_materials_init(&cs.mats, ai, path, f->gltf, err)) goto done;
+    cs.mats.folder = &folder;
     if (copy_node(&cs, ai->mRootNode, &frame, err)) goto done;
     if (info)
         *info = (model_import_info){.triangles = cs.m->nt, .meshes = (uint32_t)uses,

@@ -32,6 +32,8 @@ typedef struct model_import_options {
                                UnitScaleFactor); 0 means 1; must be finite and > 0 otherwise */
     model_up up;
     uint32_t max_triangles; /* 0 means MODEL_MAX_TRIANGLES */
+    const char *root;       /* the folder the model and every file it refers to must lie in
+                               (model_folder.h); NULL: the model file's own folder */
 } model_import_options;
 
 /* What an import found, for messages and tests. */
@@ -44,9 +46,9 @@ typedef struct model_import_info {
 
 /* Imports the model at path. opt may be NULL (defaults); info may be NULL. Materials are named
  * "<file name>:<material name>". Returns 0 with *out set, or -1 with err set (ERR_INPUT for a
- * missing, unreadable, truncated or unsupported file or a missing texture, ERR_LIMIT above the
- * triangle limit, ERR_NOMEM); on failure nothing is handed back, but materials and textures
- * added before the failure stay in the scene. */
+ * missing, unreadable, truncated or unsupported file, a missing texture or a file referred to
+ * outside the model's folder, ERR_LIMIT above the triangle limit, ERR_NOMEM); on failure nothing
+ * is handed back, but materials and textures added before the failure stay in the scene. */
 int model_import(scene *s, const char *path, const model_import_options *opt, mesh **out,
                  model_import_info *info, err_buf *err);
 

@@ -22,6 +22,7 @@
 #include <unistd.h>
 
 #include "io/image_io.h"
+#include "scene/model_folder.h"
 
 /* How a texture's alpha is treated when it is copied into the scene. */
 typedef enum alpha_use { ALPHA_AS_IS, ALPHA_CUT } alpha_use;
@@ -165,6 +166,7 @@ static int32_t texture_id(model_materials *mm, scene *s, const char *ref, const 
     if (!emb && resolve_texture_path(mm->path, ref, file, sizeof file))
         return err_fail(err, ERR_INPUT, "%s: material '%s' names a texture path longer than %zu "
                         "bytes", mm->path, mat_name, sizeof file - 1);
+    if (!emb && mm->folder && model_folder_check(mm->folder, ref, file, err)) return -1;
     const char *source = emb ? ref : file;
     for (uint32_t i = 0; i < mm->n_uses; i++) {
         const model_texture_use *u = &mm->uses[i];

@@ -13,12 +13,14 @@
 #include "util/err.h"
 
 struct aiScene;
+struct model_folder;
 
 typedef struct model_texture_use model_texture_use;
 
 typedef struct model_materials {
     const struct aiScene *ai;  /* borrowed */
     const char *path;          /* the model file, borrowed */
+    const struct model_folder *folder; /* where its texture files must lie; NULL: anywhere; borrowed */
     int gltf;                  /* glTF alpha modes apply */
     int32_t *ids;              /* per Assimp material: the scene material, or -1 before use; owned */
     model_texture_use *uses;   /* textures already added, by source and alpha treatment; owned */

@@ -80,6 +80,7 @@ static int call_open(plugin_call *c, scene *s, const plugin_registry *reg, const
     }
     host_init(&c->host, s, c->sf->dir, seed, c->context, &c->plugin_err);
     c->host.verbose = out ? out->verbose : 0, c->host.quiet = out ? out->quiet : 0, c->host.kind = kind;
+    c->host.warnings_only = out ? out->warnings_only : 0;
     c->host.threads = out ? out->threads : 0;
     c->times = out ? out->times : NULL;
     c->host.n_species = kind == SYLVA_KIND_ECOLOGY ? c->sf->n_species : 0;
@@ -106,6 +107,7 @@ void plugin_call_share(const plugin_call *c, plugin_call *w)
     const sylva_host *h = &c->host;
     host_init(&w->host, h->scene, h->scene_dir, h->seed, w->context, &w->plugin_err);
     w->host.verbose = h->verbose, w->host.quiet = h->quiet, w->host.kind = h->kind, w->host.threads = h->threads;
+    w->host.warnings_only = h->warnings_only;
     w->host.concurrent = 1;
 }
 

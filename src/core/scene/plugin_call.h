@@ -41,11 +41,12 @@ typedef struct plugin_call {
     phase_times *times;            /* borrowed, may be NULL: where the calls' wall times add up */
 } plugin_call;
 
-/* How the plugin runs: verbose prints its DEBUG logs, quiet hides progress, threads bounds its
- * worker threads (api->threads; 0: one per processor), and times (may be NULL) collects the wall
- * time of the terrain's and the ecology's generate(). */
+/* How the plugin runs: verbose prints its DEBUG logs, quiet hides progress, warnings_only (the
+ * commands' -q) hides its INFO logs (not its warnings), threads bounds its worker threads
+ * (api->threads; 0: one per processor), and times (may be NULL) collects the wall time of the
+ * terrain's and the ecology's generate(). */
 typedef struct plugin_call_output {
-    int verbose, quiet;
+    int verbose, quiet, warnings_only;
     unsigned threads;
     phase_times *times;
 } plugin_call_output;

@@ -300,7 +300,8 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
     }
     s->image = sf->image, s->camera = sf->camera, s->sun = sf->sun, s->sky = sf->sky;
     s->earth = sf->earth, s->snow = sf->snow, s->season_day = sf->season.day;
-    plugin_call_output out = {.verbose = opt->verbose, .quiet = opt->quiet, .threads = opt->threads, .times = opt->times};
+    plugin_call_output out = {.verbose = opt->verbose, .quiet = opt->quiet, .warnings_only = opt->quiet,
+                              .threads = opt->threads, .times = opt->times};
     if (scene_set_site(s, &sf->site, err) || add_materials(s, sf, err) ||
         build_terrain(s, sf, plugins, opt, &out, err) || terrain_near_site(s, sf, err) ||
         scene_ground_camera(s, sf, err) ||

@@ -12,7 +12,7 @@
 
 typedef struct build_options {
     int verbose;     /* plugin DEBUG logs */
-    int quiet;       /* no progress output */
+    int quiet;       /* no progress output, and no plugin INFO logs (warnings still print) */
     int no_ecology;  /* 1: leave the ecology plugin out (a caller that drives it itself) */
     int analysis;    /* 1: a scene for an analysis (ZTV, probe): the ground as surveyed is the
                         terrain too, nothing refined for a camera */

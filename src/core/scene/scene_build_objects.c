@@ -23,6 +23,7 @@ typedef struct imported_file {
     const char *path;          /* borrowed from the scene file */
     double scale;
     int up;
+    const char *root;          /* borrowed from the scene file; NULL: the model's folder */
     uint32_t model;
 } imported_file;
 
@@ -48,18 +49,19 @@ static int32_t model_for_file(object_builder *b, const object_spec *o, err_buf *
 {
     for (uint32_t i = 0; i < b->n_files; i++) {
         const imported_file *f = &b->files[i];
-        if (!strcmp(f->path, o->model_path) && f->scale == o->model_scale && f->up == o->model_up)
+        if (!strcmp(f->path, o->model_path) && f->scale == o->model_scale && f->up == o->model_up &&
+            !strcmp(f->root ? f->root : "", o->model_root ? o->model_root : ""))
             return (int32_t)f->model;
     }
     imported_file *grown = realloc(b->files, (b->n_files + 1) * sizeof *grown);
     if (!grown) return err_nomem(err, "out of memory");
     b->files = grown;
-    model_import_options opt = {.scale = o->model_scale, .up = (model_up)o->model_up};
+    model_import_options opt = {.scale = o->model_scale, .up = (model_up)o->model_up, .root = o->model_root};
     mesh *m = NULL;
     if (model_import(b->s, o->model_path, &opt, &m, NULL, err)) return -1;
     int32_t id = scene_add_model(b->s, base_name(o->model_path), m, err);
     if (id < 0) return -1;
-    b->files[b->n_files++] = (imported_file){o->model_path, o->model_scale, o->model_up, (uint32_t)id};
+    b->files[b->n_files++] = (imported_file){o->model_path, o->model_scale, o->model_up, o->model_root, (uint32_t)id};
     return id;
 }
 

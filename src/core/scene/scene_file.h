@@ -175,6 +175,7 @@ typedef struct object_spec {
     const char *model_path;   /* OBJECT_MODEL: resolved path */
     double model_scale;       /* OBJECT_MODEL: metres per file unit (after the file's own unit) */
     int model_up;             /* OBJECT_MODEL: a model_up (model_import.h) */
+    const char *model_root;   /* OBJECT_MODEL: resolved folder its files must lie in; NULL: the model's */
     uint32_t group;           /* OBJECT_GROUP: index into scene_file.groups */
     double position[3], rotation_deg[3], scale[3];
     double heading_deg;       /* clockwise from north (+Y) about +Z, after rotation */

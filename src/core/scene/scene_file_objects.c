@@ -119,6 +119,9 @@ int sf_read_object(loader *L, const ynode *item, const char *where, int part, ob
             o->model_path = sylva_param(p, "model")->s;
             o->model_scale = sylva_param_real(p, "scale");
             o->model_up = (int)sylva_param(p, "up_axis")->i;
+            const sylva_value *root = sylva_param(p, "model_root");
+            if (root->is_set && !(o->model_root = param_resolve_path(L->a, L->dir, root->s)))
+                return sf_out_of_memory(L);
         } else {
             o->kind = OBJECT_GROUP;
             if (find_group(L, item, sylva_param(p, "group")->s, where, &o->group)) return -1;

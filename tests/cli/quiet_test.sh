@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# quiet_test.sh SYLVA DIR SCENE — with -q a command prints only warnings and errors: every
+# command that takes -q, run on SCENE (whose terrain plugin logs information lines while it
+# builds), must leave stderr empty; without -q, render shows the plugin's information lines.
+set -uo pipefail
+sylva=$1 dir=$2 scene=$3
+rm -rf "$dir" && mkdir -p "$dir" && cd "$dir" || exit 1
+cp "$scene" scene.yaml && echo "photo: {file: plate.png}" >> scene.yaml || exit 1
+fail() { echo "$*" >&2; exit 1; }
+
+err=$("$sylva" render scene.yaml -o plate.png 2>&1 >/dev/null) || fail "render without -q failed: $err"
+grep -q "^sylva: terrain plugin 'terrain_ifs': " <<<"$err" ||
+  fail "render without -q shows no information line of the terrain plugin: $err"
+
+quiet() { # NAME COMMAND...: the command succeeds with nothing on stderr
+  local name=$1 out
+  shift
+  out=$("$sylva" "$@" 2>&1 >/dev/null) || fail "$name -q failed: $out"
+  [ -z "$out" ] || fail "$name -q printed on stderr: $out"
+  echo "$name -q: stderr empty"
+}
+quiet render render scene.yaml -q -o r.png
+quiet simulate simulate scene.yaml --years 2 -q -o plants.csv
+quiet factors factors scene.yaml -q -o factors
+quiet export-pov export-pov scene.yaml -q -o x.pov
+quiet probe probe scene.yaml 0 0 -q
+quiet ztv ztv scene.yaml -q -o ztv --cell 20
+quiet montage montage scene.yaml -q -o montage
+if command -v povray >/dev/null; then
+  quiet crosscheck crosscheck scene.yaml -q -o crosscheck --size 16x12 --spp 1
+fi
+exit 0

@@ -12,7 +12,7 @@ fail() { echo "FAIL: $*" >&2; fails=$((fails + 1)); }
 
 "$sylva" ztv "$scene" -o "$out/map" -q 2>"$out/stderr" >/dev/null || fail "ztv without a camera exited with $?"
 cat "$out/stderr"
-grep -qF "the radius of 40 m reaches 20 m past the terrain's east edge" "$out/stderr" ||
+grep -qF "the radius of 40 m reaches 20.0 m past the terrain's east edge" "$out/stderr" ||
   fail "stderr does not say how far the radius runs past the east edge"
 "$sylva" probe "$scene" 0 0 >"$out/probe" 2>&1 || fail "probe without a camera exited with $?"
 grep -q "ground" "$out/probe" || fail "probe printed no ground: $(cat "$out/probe")"

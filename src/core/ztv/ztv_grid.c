@@ -84,7 +84,7 @@ int ztv_grid_past_edge_text(const ztv_grid *g, double radius, char *buf, size_t 
     for (int e = 0; e < ZTV_EDGES; e++) {
         if (!(g->past_edge[e] > 0)) continue;
         int w = n ? snprintf(buf + used, size - used, " and %.12g m past its %s edge", g->past_edge[e], edge_names[e])
-                  : snprintf(buf + used, size - used, "the radius of %.12g m reaches %.12g m past the terrain's %s edge",
+                  : snprintf(buf + used, size - used, "the radius of %.12g m reaches %.1f m past the terrain's %s edge",
                              radius, g->past_edge[e], edge_names[e]);
         if (w < 0 || (size_t)w >= size - used) break;
         used += (size_t)w, n++;

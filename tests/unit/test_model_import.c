@@ -355,6 +355,38 @@ TEST(cut_ply_files)
     }
 }
 
-TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TEST_CASE(y_up_files_are_turned),
+/* A face that lists no vertices (Assimp aborts the process on one) is refused with a sentence,
+ * in an ASCII and in a binary PLY; one or two vertices (a point, a line) are dropped as before. */
+TEST(empty_ply_face)
+{
+    const char *header = "ply\nformat %s 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                         "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n";
+    char text[512];
+    snprintf(text, sizeof text, header, "ascii");
+    snprintf(text + strlen(text), sizeof text - strlen(text), "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0\n");
+    expect_error(write_text("empty_face.ply", text), NULL, ERR_INPUT, "empty_face.ply:14:1: face 2 lists no vertices");
+    const char *path = work_path("empty_face_binary.ply");
+    FILE *f = fopen(path, "wb");
+    CHECK(f != NULL);
+    if (f) {
+        snprintf(text, sizeof text, header, "binary_little_endian");
+        put(f, text, strlen(text));
+        put(f, tet_pos, 3 * sizeof tet_pos[0]);
+        uint8_t three = 3, none = 0;
+        int32_t k[3] = {0, 1, 2};
+        put(f, &three, 1), put(f, k, sizeof k), put(f, &none, 1);
+        fclose(f);
+        expect_error(path, NULL, ERR_INPUT, "face 2 lists no vertices");
+    }
+    snprintf(text, sizeof text, header, "ascii");
+    snprintf(text + strlen(text), sizeof text - strlen(text), "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n2 0 1\n");
+    scene *s = scene_new();
+    mesh *m = load(s, write_text("line_face.ply", text), 0, MODEL_UP_FILE, NULL);
+    if (m) CHECK_INT(m->nt, 1);
+    mesh_free(m);
+    scene_free(s);
+}
+
+TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TEST_CASE(empty_ply_face), TEST_CASE(y_up_files_are_turned),
           TEST_CASE(obj_with_mtl_texture_points_lines), TEST_CASE(gltf_mirrored_node_keeps_winding),
           TEST_CASE(clear_errors))

@@ -387,6 +387,18 @@ TEST(empty_ply_face)
     scene_free(s);
 }
 
-TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TEST_CASE(empty_ply_face), TEST_CASE(y_up_files_are_turned),
+/* A PLY named as another format: Assimp reads it as PLY when the extension's reader refuses it,
+ * so it is checked as a .ply file is (here a face of no vertices, on which Assimp aborts). */
+TEST(ply_named_otherwise)
+{
+    const char *text = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                       "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
+                       "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0\n";
+    expect_error(write_text("empty_face.glb", text), NULL, ERR_INPUT, "empty_face.glb:14:1: face 2 lists no vertices");
+    expect_error(write_text("empty_face.obj", text), NULL, ERR_INPUT, "face 2 lists no vertices");
+}
+
+TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TEST_CASE(empty_ply_face),
+          TEST_CASE(ply_named_otherwise), TEST_CASE(y_up_files_are_turned),
           TEST_CASE(obj_with_mtl_texture_points_lines), TEST_CASE(gltf_mirrored_node_keeps_winding),
           TEST_CASE(clear_errors))

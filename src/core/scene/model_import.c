@@ -287,6 +287,18 @@ static const char *assimp_reason(char *buf, size_t cap)
     return buf[0] ? buf : "no reason given";
 }
 
+/* 1 when the file starts with "ply" (in any case): when the reader of a file's extension refuses
+ * it, Assimp tries its other readers on the contents, and its PLY reader takes such a file
+ * whatever it is named, so it is walked (ply_check) as a .ply file is. */
+static int starts_as_ply(const char *path)
+{
+    char head[3] = {0};
+    FILE *f = fopen(path, "rb");
+    size_t n = f ? fread(head, 1, sizeof head, f) : 0;
+    if (f) fclose(f);
+    return n == 3 && !strncasecmp(head, "ply", 3);
+}
+
 /* Reads the file with Assimp: triangulated, points and lines dropped, the data structure
  * checked. */
 static const struct aiScene *read_with_assimp(const char *path, err_buf *err)
@@ -325,7 +337,8 @@ int model_import(scene *s, const char *path, const model_import_options *opt, me
                         ".obj, .gltf, .glb, .ply, .stl, .fbx, .dae and .3ds", path);
     if (access(path, R_OK) != 0)
         return err_fail(err, ERR_INPUT, "%s: cannot read the model: %s", path, strerror(errno));
-    if (!strcmp(f->ext, "ply") && ply_check(path, err)) return -1; /* Assimp hangs on a cut PLY */
+    /* Assimp hangs on a cut PLY, and aborts on a face of no vertices */
+    if ((!strcmp(f->ext, "ply") || starts_as_ply(path)) && ply_check(path, err)) return -1;
 
     const struct aiScene *ai = read_with_assimp(path, err);
     if (!ai) return -1;

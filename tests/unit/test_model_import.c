@@ -398,7 +398,25 @@ TEST(ply_named_otherwise)
     expect_error(write_text("empty_face.obj", text), NULL, ERR_INPUT, "face 2 lists no vertices");
 }
 
+/* A texture coordinate that is not a finite number (a NaN in a glTF buffer) is refused as a
+ * position is, with a sentence naming the mesh and the vertex, not handed to the renderer's
+ * texture lookup. */
+TEST(texture_coordinate_not_finite)
+{
+    const char *gltf =
+        "{\"asset\":{\"version\":\"2.0\"},\"scenes\":[{\"nodes\":[0]}],\"scene\":0,\"nodes\":[{\"mesh\":0}],"
+        "\"meshes\":[{\"name\":\"tri\",\"primitives\":[{\"attributes\":{\"POSITION\":0,\"TEXCOORD_0\":1}}]}],"
+        "\"buffers\":[{\"byteLength\":60,\"uri\":\"data:application/octet-stream;base64,"
+        "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAAAAAAAAAAAAMB/AAAAAAAAAAAAAIA/\"}],"
+        "\"bufferViews\":[{\"buffer\":0,\"byteOffset\":0,\"byteLength\":36},"
+        "{\"buffer\":0,\"byteOffset\":36,\"byteLength\":24}],"
+        "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\","
+        "\"min\":[0,0,0],\"max\":[1,1,0]},{\"bufferView\":1,\"componentType\":5126,\"count\":3,\"type\":\"VEC2\"}]}";
+    expect_error(write_text("nan_uv.gltf", gltf), NULL, ERR_INPUT,
+                 "mesh 'tri' vertex 1 has a texture coordinate that is not a finite number");
+}
+
 TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TEST_CASE(empty_ply_face),
-          TEST_CASE(ply_named_otherwise), TEST_CASE(y_up_files_are_turned),
+          TEST_CASE(ply_named_otherwise), TEST_CASE(texture_coordinate_not_finite), TEST_CASE(y_up_files_are_turned),
           TEST_CASE(obj_with_mtl_texture_points_lines), TEST_CASE(gltf_mirrored_node_keeps_winding),
           TEST_CASE(clear_errors))

@@ -235,6 +235,9 @@ static int copy_mesh(copy_state *cs, const struct aiMesh *am, const affine *xf, 
         float *uv = m->uv + (size_t)(v0 + v) * 2;
         uv[0] = am->mTextureCoords[0] ? am->mTextureCoords[0][v].x : 0.0f;
         uv[1] = am->mTextureCoords[0] ? am->mTextureCoords[0][v].y : 0.0f;
+        if (!isfinite(uv[0]) || !isfinite(uv[1]))
+            return err_fail(err, ERR_INPUT, "%s: mesh '%s' vertex %u has a texture coordinate that is not a "
+                            "finite number", cs->path, am->mName.data, v);
     }
     uint32_t t0 = m->nt;
     for (unsigned f = 0; f < am->mNumFaces; f++) {

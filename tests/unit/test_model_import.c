@@ -416,7 +416,23 @@ TEST(texture_coordinate_not_finite)
                  "mesh 'tri' vertex 1 has a texture coordinate that is not a finite number");
 }
 
+/* A GLB whose JSON chunk states more bytes than the file holds (Assimp allocated all of them,
+ * up to 4 GiB, before reading) is refused first, with a sentence. */
+TEST(damaged_glb_chunk)
+{
+    const char *path = work_path("damaged.glb");
+    FILE *f = fopen(path, "wb");
+    CHECK(f != NULL);
+    if (!f) return;
+    static const unsigned char glb[] = {'g', 'l', 'T', 'F', 2, 0, 0, 0, 22, 0, 0, 0,
+                                        0xff, 0xff, 0x02, 0xa8, 'J', 'S', 'O', 'N', '{', '}'};
+    put(f, glb, sizeof glb);
+    fclose(f);
+    expect_error(path, NULL, ERR_INPUT, "the GLB is damaged or cut short: chunk 'JSON' at byte 12 states 2818768895 "
+                                        "bytes of data, and 2 bytes follow it");
+}
+
 TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TEST_CASE(empty_ply_face),
-          TEST_CASE(ply_named_otherwise), TEST_CASE(texture_coordinate_not_finite), TEST_CASE(y_up_files_are_turned),
+          TEST_CASE(ply_named_otherwise), TEST_CASE(texture_coordinate_not_finite), TEST_CASE(damaged_glb_chunk), TEST_CASE(y_up_files_are_turned),
           TEST_CASE(obj_with_mtl_texture_points_lines), TEST_CASE(gltf_mirrored_node_keeps_winding),
           TEST_CASE(clear_errors))

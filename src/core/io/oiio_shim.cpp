@@ -5,7 +5,7 @@
 extern "C" {
 #include "io/atomic_file.h"
 #include "io/photo.h"
-#include "io/png_check.h"
+#include "util/chunk_check.h"
 #include "util/err.h"
 #include "util/file_check.h"
 #include "util/memory_budget.h"

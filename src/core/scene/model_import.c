@@ -23,6 +23,7 @@
 
 #include "scene/model_material.h"
 #include "scene/ply_check.h"
+#include "util/chunk_check.h"
 
 /* The formats read, by extension, and the up axis each states as Assimp hands it over:
  * Assimp turns COLLADA (whatever its <up_axis>) and 3DS to +Y; glTF is +Y by specification;
@@ -342,6 +343,7 @@ int model_import(scene *s, const char *path, const model_import_options *opt, me
         return err_fail(err, ERR_INPUT, "%s: cannot read the model: %s", path, strerror(errno));
     /* Assimp hangs on a cut PLY, and aborts on a face of no vertices */
     if ((!strcmp(f->ext, "ply") || starts_as_ply(path)) && ply_check(path, err)) return -1;
+    if (glb_check(path, err)) return -1; /* Assimp allocates what a GLB chunk states */
 
     const struct aiScene *ai = read_with_assimp(path, err);
     if (!ai) return -1;

@@ -432,7 +432,15 @@ TEST(damaged_glb_chunk)
                                         "bytes of data, and 2 bytes follow it");
 }
 
+/* An image whose mimeType holds no '/' (Assimp crashed on one) is refused with a sentence. */
+TEST(image_mime_type_without_slash)
+{
+    const char *gltf = "{\"asset\":{\"version\":\"2.0\"},\"images\":[{\"bufferView\":0,\"mimeType\" : \"png\"}]}";
+    expect_error(write_text("mime.gltf", gltf), NULL, ERR_INPUT, "mime.gltf: an image's mimeType is 'png'");
+}
+
 TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TEST_CASE(empty_ply_face),
+          TEST_CASE(image_mime_type_without_slash),
           TEST_CASE(ply_named_otherwise), TEST_CASE(texture_coordinate_not_finite), TEST_CASE(damaged_glb_chunk), TEST_CASE(y_up_files_are_turned),
           TEST_CASE(obj_with_mtl_texture_points_lines), TEST_CASE(gltf_mirrored_node_keeps_winding),
           TEST_CASE(clear_errors))

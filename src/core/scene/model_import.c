@@ -22,6 +22,7 @@
 #include <unistd.h>
 
 #include "scene/model_material.h"
+#include "scene/gltf_check.h"
 #include "scene/ply_check.h"
 #include "util/chunk_check.h"
 
@@ -291,16 +292,17 @@ static const char *assimp_reason(char *buf, size_t cap)
     return buf[0] ? buf : "no reason given";
 }
 
-/* 1 when the file starts with "ply" (in any case): when the reader of a file's extension refuses
- * it, Assimp tries its other readers on the contents, and its PLY reader takes such a file
- * whatever it is named, so it is walked (ply_check) as a .ply file is. */
-static int starts_as_ply(const char *path)
+/* 1 when the file starts with `magic` (in any case): when the reader of a file's extension
+ * refuses it, Assimp tries its other readers on the contents, and its PLY and GLB readers take
+ * such a file whatever it is named, so it is checked as a .ply or .glb file is. */
+static int starts_with(const char *path, const char *magic)
 {
-    char head[3] = {0};
+    char head[8] = {0};
+    size_t len = strlen(magic);
     FILE *f = fopen(path, "rb");
-    size_t n = f ? fread(head, 1, sizeof head, f) : 0;
+    size_t n = f ? fread(head, 1, len, f) : 0;
     if (f) fclose(f);
-    return n == 3 && !strncasecmp(head, "ply", 3);
+    return n == len && !strncasecmp(head, magic, len);
 }
 
 /* Reads the file with Assimp: triangulated, points and lines dropped, the data structure
@@ -342,8 +344,9 @@ int model_import(scene *s, const char *path, const model_import_options *opt, me
     if (access(path, R_OK) != 0)
         return err_fail(err, ERR_INPUT, "%s: cannot read the model: %s", path, strerror(errno));
     /* Assimp hangs on a cut PLY, and aborts on a face of no vertices */
-    if ((!strcmp(f->ext, "ply") || starts_as_ply(path)) && ply_check(path, err)) return -1;
+    if ((!strcmp(f->ext, "ply") || starts_with(path, "ply")) && ply_check(path, err)) return -1;
     if (glb_check(path, err)) return -1; /* Assimp allocates what a GLB chunk states */
+    if ((f->gltf || starts_with(path, "gltf")) && gltf_check(path, err)) return -1; /* Assimp crashes on a mimeType without '/' */
 
     const struct aiScene *ai = read_with_assimp(path, err);
     if (!ai) return -1;

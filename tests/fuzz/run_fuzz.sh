@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
-# run_fuzz.sh TARGET WORK_DIR [libFuzzer options...] — runs the fuzz target TARGET
-# (fuzz_scene_load or fuzz_lsystem, built with -DSYLVA_FUZZ=ON) from its seeds with its
-# dictionary and input size limit. New inputs go to WORK_DIR/corpus, a crashing input to
-# WORK_DIR/crash-* (libFuzzer's artifacts). Seeds:
-#   scene_load  scenes/, tests/scenes/ (with the bad-scene corpus), tests/fuzz/regressions/scene_load/
-#   lsystem     tests/fuzz/seeds/lsystem/, the .ls files of $SYLVA_SHARED_DATA_DIR/lparser
-#               (default ../shared/data beside the clone) when present,
-#               tests/fuzz/regressions/lsystem/
+# run_fuzz.sh TARGET WORK_DIR [libFuzzer options...] — runs the fuzz target TARGET (one of
+# tests/fuzz/fuzz_*.c, built with -DSYLVA_FUZZ=ON) from its seeds with its dictionary and input
+# size limit. New inputs go to WORK_DIR/corpus, a crashing input to WORK_DIR/crash-* (libFuzzer's
+# artifacts). Seeds:
+#   scene_load      scenes/, tests/scenes/ (with the bad-scene corpus)
+#   lsystem         tests/fuzz/seeds/lsystem/, the .ls files of $SYLVA_SHARED_DATA_DIR/lparser
+#                   (default ../shared/data beside the clone) when present
+#   model_import    tests/fuzz/seeds/model_import/, the OBJ, STL, PLY, glTF and GLB files of
+#                   $SYLVA_SHARED_DATA_DIR/models under 64 KiB when present (each copied with the
+#                   first byte that chooses its format)
+#   the others      tests/fuzz/seeds/<target>/
+# and every target its regression inputs, tests/fuzz/regressions/<target>/.
 # Exits 0 when nothing was found, 1 when an input crashed, leaked, hung or tripped a sanitizer
 # (libFuzzer's own status for that is 77, which ctest reads as "skipped").
 set -euo pipefail
@@ -17,35 +21,71 @@ shift 2
 name=$(basename "$target")
 name=${name#fuzz_}
 mkdir -p "$work/corpus"
-# The scene target writes each input to a scratch file: keep it in memory where there is a tmpfs.
+# The targets write each input to a scratch file: keep it in memory where there is a tmpfs.
 if [ -z "${TMPDIR:-}" ] && [ -d /dev/shm ] && [ -w /dev/shm ]; then export TMPDIR=/dev/shm; fi
 
+shared_data=${SYLVA_SHARED_DATA_DIR:-$root/../shared/data}
 seeds=()
+# shared_seeds SUBFOLDER FIND_TESTS...: the files of the shared data's SUBFOLDER that the find
+# tests select, each put into $work/seeds-SUBFOLDER by the target's copy_seed FILE FOLDER, added
+# to the seeds; nothing (a note) when the folder is absent.
+shared_seeds() {
+  local from=$shared_data/$1 to=$work/seeds-$1
+  shift
+  if [ ! -d "$from" ]; then
+    echo "run_fuzz.sh: $from is absent; seeding from tests/fuzz/seeds/$name alone" >&2
+    return 0
+  fi
+  rm -rf "$to"
+  mkdir -p "$to"
+  find "$from" -type f "$@" | while read -r f; do copy_seed "$f" "$to"; done
+  seeds+=("$to")
+}
 case $name in
   scene_load)
     seeds+=("$root/scenes" "$root/tests/scenes")
     max_len=16384 ;;
   lsystem)
     seeds+=("$here/seeds/lsystem")
-    shared=${SYLVA_SHARED_DATA_DIR:-$root/../shared/data}/lparser
-    if [ -d "$shared" ]; then
-      # Only the L-parser files: the folder also holds reference renders and papers.
-      rm -rf "$work/seeds-lparser"
-      mkdir -p "$work/seeds-lparser"
-      find "$shared" -name '*.ls' -type f | while read -r f; do
-        cp "$f" "$work/seeds-lparser/$(basename "$(dirname "$f")")-$(basename "$f")"
-      done
-      seeds+=("$work/seeds-lparser")
-    else
-      echo "run_fuzz.sh: $shared is absent; seeding from tests/fuzz/seeds/lsystem alone" >&2
-    fi
+    # Only the L-parser files: the folder also holds reference renders and papers.
+    copy_seed() { cp "$1" "$2/$(basename "$(dirname "$1")")-$(basename "$1")"; }
+    shared_seeds lparser -name '*.ls'
     max_len=4096 ;;
+  layout_csv|control_points)
+    seeds+=("$here/seeds/$name")
+    max_len=4096 ;;
+  photo)
+    seeds+=("$here/seeds/photo")
+    max_len=16384 ;;
+  ecology_state)
+    seeds+=("$here/seeds/ecology_state")
+    max_len=16384 ;;
+  model_import)
+    seeds+=("$here/seeds/model_import")
+    # The input's first byte chooses the format (fuzz_model_import.c): 0 OBJ, 1 STL, 2 PLY,
+    # 3 glTF, 4 GLB.
+    copy_seed() {
+      local k
+      case ${1##*.} in obj|OBJ) k=0 ;; stl|STL) k=1 ;; ply|PLY) k=2 ;; gltf|GLTF) k=3 ;; *) k=4 ;; esac
+      { printf "\\$k"; cat "$1"; } > "$2/$(basename "$1")"
+    }
+    shared_seeds models -size -64k \( -iname '*.obj' -o -iname '*.stl' -o -iname '*.ply' -o -iname '*.gltf' \
+                 -o -iname '*.glb' \)
+    max_len=65536 ;;
   *)
-    echo "run_fuzz.sh: unknown target $target (fuzz_scene_load or fuzz_lsystem)" >&2
+    echo "run_fuzz.sh: unknown target $target (see tests/fuzz/fuzz_*.c)" >&2
     exit 2 ;;
 esac
 [ -d "$here/regressions/$name" ] && seeds+=("$here/regressions/$name")
 
-exec "$target" -dict="$here/$name.dict" -max_len="$max_len" -timeout=10 -error_exitcode=1 -timeout_exitcode=1 \
+# Leaks inside the third-party libraries (tests/lsan.supp) are theirs: OpenImageIO's PNG reader
+# leaks an error string when libpng gives up on a damaged file. Such a leak is matched by the
+# library's name in its call stack, which only the slow unwinder finds (the libraries keep no
+# frame pointers), so the photograph's target unwinds that way at every allocation.
+export LSAN_OPTIONS="suppressions=$root/tests/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+[ "$name" = photo ] && export ASAN_OPTIONS="fast_unwind_on_malloc=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
+dict=()
+[ -f "$here/$name.dict" ] && dict=(-dict="$here/$name.dict")
+exec "$target" "${dict[@]}" -max_len="$max_len" -timeout=10 -error_exitcode=1 -timeout_exitcode=1 \
      -print_final_stats=1 \
      -artifact_prefix="$work/" "$@" "$work/corpus" "${seeds[@]}"

@@ -355,6 +355,92 @@ TEST(cut_ply_files)
     }
 }
 
-TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TEST_CASE(y_up_files_are_turned),
+/* A face that lists no vertices (Assimp aborts the process on one) is refused with a sentence,
+ * in an ASCII and in a binary PLY; one or two vertices (a point, a line) are dropped as before. */
+TEST(empty_ply_face)
+{
+    const char *header = "ply\nformat %s 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                         "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n";
+    char text[512];
+    snprintf(text, sizeof text, header, "ascii");
+    snprintf(text + strlen(text), sizeof text - strlen(text), "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0\n");
+    expect_error(write_text("empty_face.ply", text), NULL, ERR_INPUT, "empty_face.ply:14:1: face 2 lists no vertices");
+    const char *path = work_path("empty_face_binary.ply");
+    FILE *f = fopen(path, "wb");
+    CHECK(f != NULL);
+    if (f) {
+        snprintf(text, sizeof text, header, "binary_little_endian");
+        put(f, text, strlen(text));
+        put(f, tet_pos, 3 * sizeof tet_pos[0]);
+        uint8_t three = 3, none = 0;
+        int32_t k[3] = {0, 1, 2};
+        put(f, &three, 1), put(f, k, sizeof k), put(f, &none, 1);
+        fclose(f);
+        expect_error(path, NULL, ERR_INPUT, "face 2 lists no vertices");
+    }
+    snprintf(text, sizeof text, header, "ascii");
+    snprintf(text + strlen(text), sizeof text - strlen(text), "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n2 0 1\n");
+    scene *s = scene_new();
+    mesh *m = load(s, write_text("line_face.ply", text), 0, MODEL_UP_FILE, NULL);
+    if (m) CHECK_INT(m->nt, 1);
+    mesh_free(m);
+    scene_free(s);
+}
+
+/* A PLY named as another format: Assimp reads it as PLY when the extension's reader refuses it,
+ * so it is checked as a .ply file is (here a face of no vertices, on which Assimp aborts). */
+TEST(ply_named_otherwise)
+{
+    const char *text = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                       "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
+                       "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0\n";
+    expect_error(write_text("empty_face.glb", text), NULL, ERR_INPUT, "empty_face.glb:14:1: face 2 lists no vertices");
+    expect_error(write_text("empty_face.obj", text), NULL, ERR_INPUT, "face 2 lists no vertices");
+}
+
+/* A texture coordinate that is not a finite number (a NaN in a glTF buffer) is refused as a
+ * position is, with a sentence naming the mesh and the vertex, not handed to the renderer's
+ * texture lookup. */
+TEST(texture_coordinate_not_finite)
+{
+    const char *gltf =
+        "{\"asset\":{\"version\":\"2.0\"},\"scenes\":[{\"nodes\":[0]}],\"scene\":0,\"nodes\":[{\"mesh\":0}],"
+        "\"meshes\":[{\"name\":\"tri\",\"primitives\":[{\"attributes\":{\"POSITION\":0,\"TEXCOORD_0\":1}}]}],"
+        "\"buffers\":[{\"byteLength\":60,\"uri\":\"data:application/octet-stream;base64,"
+        "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAAAAAAAAAAAAMB/AAAAAAAAAAAAAIA/\"}],"
+        "\"bufferViews\":[{\"buffer\":0,\"byteOffset\":0,\"byteLength\":36},"
+        "{\"buffer\":0,\"byteOffset\":36,\"byteLength\":24}],"
+        "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\","
+        "\"min\":[0,0,0],\"max\":[1,1,0]},{\"bufferView\":1,\"componentType\":5126,\"count\":3,\"type\":\"VEC2\"}]}";
+    expect_error(write_text("nan_uv.gltf", gltf), NULL, ERR_INPUT,
+                 "mesh 'tri' vertex 1 has a texture coordinate that is not a finite number");
+}
+
+/* A GLB whose JSON chunk states more bytes than the file holds (Assimp allocated all of them,
+ * up to 4 GiB, before reading) is refused first, with a sentence. */
+TEST(damaged_glb_chunk)
+{
+    const char *path = work_path("damaged.glb");
+    FILE *f = fopen(path, "wb");
+    CHECK(f != NULL);
+    if (!f) return;
+    static const unsigned char glb[] = {'g', 'l', 'T', 'F', 2, 0, 0, 0, 22, 0, 0, 0,
+                                        0xff, 0xff, 0x02, 0xa8, 'J', 'S', 'O', 'N', '{', '}'};
+    put(f, glb, sizeof glb);
+    fclose(f);
+    expect_error(path, NULL, ERR_INPUT, "the GLB is damaged or cut short: chunk 'JSON' at byte 12 states 2818768895 "
+                                        "bytes of data, and 2 bytes follow it");
+}
+
+/* An image whose mimeType holds no '/' (Assimp crashed on one) is refused with a sentence. */
+TEST(image_mime_type_without_slash)
+{
+    const char *gltf = "{\"asset\":{\"version\":\"2.0\"},\"images\":[{\"bufferView\":0,\"mimeType\" : \"png\"}]}";
+    expect_error(write_text("mime.gltf", gltf), NULL, ERR_INPUT, "mime.gltf: an image's mimeType is 'png'");
+}
+
+TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TEST_CASE(empty_ply_face),
+          TEST_CASE(image_mime_type_without_slash),
+          TEST_CASE(ply_named_otherwise), TEST_CASE(texture_coordinate_not_finite), TEST_CASE(damaged_glb_chunk), TEST_CASE(y_up_files_are_turned),
           TEST_CASE(obj_with_mtl_texture_points_lines), TEST_CASE(gltf_mirrored_node_keeps_winding),
           TEST_CASE(clear_errors))

@@ -401,7 +401,37 @@ TEST(cut_photographs_are_refused)
     photo_free(&p);
 }
 
+/* A PNG chunk that states more data than the file holds (libpng allocated all of it, up to
+ * 2 GiB, before finding the file's end) is refused before the file is decoded. */
+TEST(damaged_png_chunk)
+{
+    const uint8_t rgb[3 * 2 * 3] = {0};
+    char path[1200];
+    snprintf(path, sizeof path, "%s/damaged.png", work_dir());
+    err_buf err = {{0}};
+    CHECK_INT(image_write_u8(path, 3, 2, 3, rgb, &err), 0);
+    unsigned char bytes[4096];
+    FILE *f = fopen(path, "rb");
+    size_t n = f ? fread(bytes, 1, sizeof bytes, f) : 0;
+    if (f) fclose(f);
+    CHECK(n > 33 && n < sizeof bytes - 32);
+    /* after the signature (8) and IHDR (25): a tEXt chunk stating 0x70000000 bytes */
+    static const unsigned char text[] = {0x70, 0, 0, 0, 't', 'E', 'X', 't', 'S', 'o', 'f', 't', 0, 'x'};
+    f = fopen(path, "wb");
+    CHECK(f != NULL);
+    if (!f) return;
+    fwrite(bytes, 1, 33, f), fwrite(text, 1, sizeof text, f), fwrite(bytes + 33, 1, n - 33, f);
+    fclose(f);
+    photo p = {0};
+    err_clear(&err);
+    CHECK_INT(photo_read(path, &p, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, path);
+    CHECK_STR_CONTAINS(err.msg, "chunk 'tEXt' at byte 33 states 1879048192 bytes of data");
+    CHECK_INT(err.status, ERR_INPUT);
+    CHECK(p.rgb == NULL);
+}
+
 TEST_LIST(TEST_CASE(cut_photographs_are_refused), TEST_CASE(exif_matches_exiftool), TEST_CASE(exif_known_values), TEST_CASE(sensor_width),
           TEST_CASE(png_round_trip_linear), TEST_CASE(exif_instant), TEST_CASE(orientations),
           TEST_CASE(orientation_tag_honoured), TEST_CASE(sixteen_bit_png), TEST_CASE(memory_budget),
-          TEST_CASE(errors_name_the_file))
+          TEST_CASE(errors_name_the_file), TEST_CASE(damaged_png_chunk))

@@ -5,6 +5,7 @@
 extern "C" {
 #include "io/atomic_file.h"
 #include "io/photo.h"
+#include "util/chunk_check.h"
 #include "util/err.h"
 #include "util/file_check.h"
 #include "util/memory_budget.h"
@@ -309,6 +310,7 @@ int photo_read_into(const char *path, image_f32 *img, photo *meta, err_buf *err)
     if (access(path, R_OK) != 0)
         return err_fail(err, ERR_INPUT, "%s: cannot read the photograph: %s", path,
                         std::strerror(errno));
+    if (png_check(path, err)) return -1; /* libpng allocates what a damaged chunk states */
     auto in = OIIO::ImageInput::open(path);
     if (!in) {
         std::string why = OIIO::geterror();

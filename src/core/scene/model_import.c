@@ -23,7 +23,9 @@
 
 #include "scene/model_folder.h"
 #include "scene/model_material.h"
+#include "scene/gltf_check.h"
 #include "scene/ply_check.h"
+#include "util/chunk_check.h"
 
 /* The formats read, by extension, and the up axis each states as Assimp hands it over:
  * Assimp turns COLLADA (whatever its <up_axis>) and 3DS to +Y; glTF is +Y by specification;
@@ -236,6 +238,9 @@ static int copy_mesh(copy_state *cs, const struct aiMesh *am, const affine *xf, 
         float *uv = m->uv + (size_t)(v0 + v) * 2;
         uv[0] = am->mTextureCoords[0] ? am->mTextureCoords[0][v].x : 0.0f;
         uv[1] = am->mTextureCoords[0] ? am->mTextureCoords[0][v].y : 0.0f;
+        if (!isfinite(uv[0]) || !isfinite(uv[1]))
+            return err_fail(err, ERR_INPUT, "%s: mesh '%s' vertex %u has a texture coordinate that is not a "
+                            "finite number", cs->path, am->mName.data, v);
     }
     uint32_t t0 = m->nt;
     for (unsigned f = 0; f < am->mNumFaces; f++) {
@@ -288,6 +293,19 @@ static const char *assimp_reason(char *buf, size_t cap)
     return buf[0] ? buf : "no reason given";
 }
 
+/* 1 when the file starts with `magic` (in any case): when the reader of a file's extension
+ * refuses it, Assimp tries its other readers on the contents, and its PLY and GLB readers take
+ * such a file whatever it is named, so it is checked as a .ply or .glb file is. */
+static int starts_with(const char *path, const char *magic)
+{
+    char head[8] = {0};
+    size_t len = strlen(magic);
+    FILE *f = fopen(path, "rb");
+    size_t n = f ? fread(head, 1, len, f) : 0;
+    if (f) fclose(f);
+    return n == len && !strncasecmp(head, magic, len);
+}
+
 /* Reads the file with Assimp: triangulated, points and lines dropped, the data structure
  * checked, every file it refers to opened through the model's folder. */
 static const struct aiScene *read_with_assimp(const char *path, model_folder *folder, err_buf *err)
@@ -330,7 +348,10 @@ int model_import(scene *s, const char *path, const model_import_options *opt, me
                         ".obj, .gltf, .glb, .ply, .stl, .fbx, .dae and .3ds", path);
     if (access(path, R_OK) != 0)
         return err_fail(err, ERR_INPUT, "%s: cannot read the model: %s", path, strerror(errno));
-    if (!strcmp(f->ext, "ply") && ply_check(path, err)) return -1; /* Assimp hangs on a cut PLY */
+    /* Assimp hangs on a cut PLY, and aborts on a face of no vertices */
+    if ((!strcmp(f->ext, "ply") || starts_with(path, "ply")) && ply_check(path, err)) return -1;
+    if (glb_check(path, err)) return -1; /* Assimp allocates what a GLB chunk states */
+    if ((f->gltf || starts_with(path, "gltf")) && gltf_check(path, err)) return -1; /* Assimp crashes on a mimeType without '/' */
 
     model_folder folder;
     if (model_folder_init(&folder, path, o.root, err)) return -1;

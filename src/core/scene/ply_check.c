@@ -20,6 +20,7 @@ typedef struct ply_property {
     int list;                 /* 1: a list */
     int size, count_size;     /* bytes of a value; of the list's count */
     int count_signed;
+    int face_indices;         /* 1: the face element's vertex_indices (or vertex_index) list */
 } ply_property;
 
 typedef struct ply_element {
@@ -124,6 +125,8 @@ static int parse_header(const char *path, const char *data, size_t size, ply_hea
                 if (!p->count_size || !p->size || !strncmp(w[2], "float", 5) || !strcmp(w[2], "double"))
                     return bad(err, path, line, "a list property reads 'property list INTEGER_TYPE TYPE "
                                "NAME' with PLY type names (uchar, int, float, ...)");
+                p->face_indices = !strcmp(e->name, "face") &&
+                                  (!strcmp(w[4], "vertex_indices") || !strcmp(w[4], "vertex_index"));
             } else {
                 p->size = n == 3 ? type_size(w[1], NULL) : 0;
                 if (!p->size)
@@ -168,6 +171,9 @@ static int walk_binary(const char *path, const ply_header *h, const unsigned cha
                     if (n < 0)
                         return err_fail(err, ERR_INPUT, "%s: element '%s' item %llu has a negative list "
                                         "length", path, el->name, (unsigned long long)i);
+                    if (n == 0 && p->face_indices) /* Assimp aborts on a face of no vertices */
+                        return err_fail(err, ERR_INPUT, "%s: face %llu lists no vertices; a face lists "
+                                        "at least one (three for a triangle)", path, (unsigned long long)i + 1);
                     if ((uint64_t)n > (size - at) / (uint64_t)p->size) goto short_body;
                     at += (size_t)n * (size_t)p->size;
                 } else {
@@ -216,6 +222,9 @@ static int walk_ascii(const char *path, const ply_header *h, const char *d, size
                 int rc = ascii_number(d, size, &at, &line, &v);
                 double n = p->list ? v : 0;
                 if (!rc && p->list && (n < 0 || n != (double)(uint64_t)n || n > 1e9)) rc = -2;
+                if (!rc && p->face_indices && n == 0) /* Assimp aborts on a face of no vertices */
+                    return err_at(err, ERR_INPUT, path, line, 1, "face %llu lists no vertices; a face lists "
+                                  "at least one (three for a triangle)", (unsigned long long)i + 1);
                 for (uint64_t j = 0; !rc && j < (uint64_t)n; j++) rc = ascii_number(d, size, &at, &line, &v);
                 if (rc == -1)
                     return err_at(err, ERR_INPUT, path, line, 1, "the file ends inside element '%s' (item "

@@ -15,6 +15,7 @@
 #include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "render/accel.h"
+#include "scene/ground_departure.h"
 #include "scene/heightfield.h"
 #include "util/progress.h"
 #include "ztv/ztv_grid.h"
@@ -256,6 +257,15 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
     snprintf(ground, sizeof ground, "%s: %s", sc->terrain == sc->surveyed ? "the DTM as surveyed"
              : "the terrain refined around the development", described);
     if (!bo.quiet) fprintf(stderr, "ztv: ground: %s\n", ground);
+    if (sc->terrain != sc->surveyed) { /* a warning when the refinement moves the mapped ground */
+        double rms, top;
+        ground_departure_over(sc, job.grid.x0, job.grid.y0 - (job.grid.ny - 1) * job.grid.cell,
+                              job.grid.x0 + (job.grid.nx - 1) * job.grid.cell, job.grid.y0, &rms, &top);
+        if (top > GROUND_DEPARTURE_TOLERANCE && !m->rank)
+            fprintf(stderr, "sylva: warning: over the map the refined ground departs from the DTM as surveyed by "
+                    "%.2f m RMS, at most %.2f m (tolerance %.1f m); the surveyed ground is the default\n", rms, top,
+                    GROUND_DEPARTURE_TOLERANCE);
+    }
     ztv_info info = {.grid = job.grid, .crs_wkt = sf->site.crs_wkt, .crs_name = sf->site.crs_name,
                      .observer_height = eye, .ground = ground, .radius = radius, .curvature = job.earth && job.earth->curvature,
                      .refraction = sc->earth.refraction, .n_targets = targets.n,

@@ -36,3 +36,17 @@ double ground_departure_report(const scene *s, FILE *out)
     }
     return worst;
 }
+
+void ground_departure_over(const scene *s, double x0, double y0, double x1, double y1, double *rms, double *max)
+{
+    double sum = 0, top = 0;
+    uint64_t n = 0;
+    if (s->terrain && s->surveyed && s->terrain != s->surveyed)
+        for (uint32_t j = 0; j < GROUND_DEPARTURE_SAMPLES; j++)
+            for (uint32_t i = 0; i < GROUND_DEPARTURE_SAMPLES; i++) {
+                double x = x0 + (x1 - x0) * (i + 0.5) / GROUND_DEPARTURE_SAMPLES;
+                double y = y0 + (y1 - y0) * (j + 0.5) / GROUND_DEPARTURE_SAMPLES, d = departure(s, x, y);
+                sum += d * d, top = fmax(top, fabs(d)), n++;
+            }
+    *rms = n ? sqrt(sum / (double)n) : 0, *max = top;
+}

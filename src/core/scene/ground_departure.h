@@ -17,4 +17,10 @@
  * the scene renders the surveyed ground itself). */
 double ground_departure_report(const scene *s, FILE *out);
 
+/* How far the rendered ground departs from the surveyed over the rectangle [x0, x1] x [y0, y1],
+ * sampled on a GROUND_DEPARTURE_SAMPLES x GROUND_DEPARTURE_SAMPLES lattice: its RMS and largest
+ * magnitude, metres (0 and 0 when the scene renders the surveyed ground itself). */
+#define GROUND_DEPARTURE_SAMPLES 512u
+void ground_departure_over(const scene *s, double x0, double y0, double x1, double y1, double *rms, double *max);
+
 #endif

@@ -312,6 +312,6 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
         scene_free(s);
         return NULL;
     }
-    ground_departure_report(s, stderr);
+    if (!opt->detail_at_development) ground_departure_report(s, stderr); /* a render's camera and development */
     return s;
 }

@@ -785,7 +785,7 @@ static int surveyed_ground(const terrain_ifs_state *s, const sylva_host_api *api
 }
 
 /* The global alpha, once: as given, or the one whose detail has the RMS the `detail` key gives
- * or, by default, the DTM's own roughness continued one scale below its cells (ifs_detail.h). */
+ * or, by default, the DTM's own roughness continued below what its nodes resolve (ifs_detail.h). */
 static int choose_alpha(terrain_ifs_state *s, const sylva_host_api *api, sylva_host *host)
 {
     if (s->alpha_chosen) return SYLVA_OK;

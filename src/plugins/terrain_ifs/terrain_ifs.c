@@ -847,7 +847,8 @@ static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_ho
         return SYLVA_ERR_NOMEM;
     }
     place_footprint(s, req, placed, hf);
-    hf->dx = (s->dtm->nx - 1) * s->dtm->dx / (s->nx_out - 1), hf->dy = (s->dtm->ny - 1) * s->dtm->dy / (s->ny_out - 1);
+    hf->dx = (s->dtm->nx - 1) * s->dtm->dx / (s->nx_out - 1);
+    hf->dy = (s->dtm->ny - 1) * s->dtm->dy / (s->ny_out - 1);
     /* with levels of detail: the depth of the uniform refinement the finest level stands for */
     uint32_t depth = s->depth ? s->depth
                      : s->lod ? ifs_eval_auto_depth(maps, (s->dtm->nx - 1) * s->refine + 1,

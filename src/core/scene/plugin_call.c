@@ -203,6 +203,7 @@ int plugin_call_terrain(plugin_call *c, int surveyed, int at_development, err_bu
                                  .eye = {sf->camera.position[0], sf->camera.position[1], sf->camera.position[2]},
                                  .surveyed = surveyed};
     if (at_development) development_centre(sf, req.eye);
+    else if (!sf->has_camera) req.eye[0] = req.eye[1] = req.eye[2] = NAN; /* no eye: the footprint's centre */
     sylva_terrain_out out = {.size = sizeof out};
     c->host.surveyed = surveyed;
     phase_mark t0 = phase_start();

@@ -287,8 +287,9 @@ typedef struct scene_file {
     site_settings site;
     image_settings image;
     camera_settings camera;
-    int has_camera;             /* 0: the file has no camera: section (SCENE_FILE_NO_CAMERA); camera
-                                   then looks north from the origin and renders nothing useful */
+    int has_camera;             /* 0: the file has no camera: section (SCENE_FILE_NO_CAMERA, for a
+                                   command that draws nothing); camera is then all zeros and the
+                                   terrain is refined around no eye (its footprint's centre) */
     scene_viewpoint *viewpoints; uint32_t n_viewpoints; /* the named views, in file order */
     sun_settings sun;
     sky_settings sky;

@@ -278,11 +278,7 @@ static int read_viewpoints(loader *L)
 int sf_read_camera(loader *L)
 {
     const ynode_pair *pr = ynode_get_pair(L->root, "camera");
-    if (!pr && (L->flags & SCENE_FILE_NO_CAMERA)) {
-        /* no picture is drawn: a camera at the origin looking north, as a placeholder */
-        L->sf->camera = (camera_settings){.direction = {0, 1, 0}, .up = {0, 0, 1}, .fov_deg = 60};
-        return read_viewpoints(L);
-    }
+    if (!pr && (L->flags & SCENE_FILE_NO_CAMERA)) return read_viewpoints(L); /* camera unset, has_camera 0 */
     if (!pr)
         return sf_located(L->err, L->file, L->root->line, L->root->column,
                        "missing required section 'camera' (at least camera: {position: [x, y, z], "

@@ -27,9 +27,9 @@ for scene in "$@"; do
   [ -f "$dtm" ] || { echo "skipped: $dtm is not there (the shared data beside the clone)"; exit 77; }
   # the scene twice, with the DTM's path made absolute: as given, and its camera 6 km east
   sed "s#^\([[:space:]]*dtm:[[:space:]]*\)[^#[:space:]]*#\1$dtm#" "$scene" > "$w/a.yaml"
-  sed 's/^camera: {position: \[\([-0-9.]*\),/camera: {position: [6000 + \1,/' "$w/a.yaml" |
-    awk '/^camera:/ { match($0, /6000 \+ [-0-9.]*/); x = 6000 + substr($0, RSTART + 7, RLENGTH - 7);
-                      sub(/6000 \+ [-0-9.]*/, x) } { print }' > "$w/b.yaml"
+  awk '/^camera: \{position: \[/ { match($0, /\[[-0-9.]+,/)
+                                    $0 = substr($0, 1, RSTART) (substr($0, RSTART + 1, RLENGTH - 2) + 6000) \
+                                         substr($0, RSTART + RLENGTH - 1) } { print }' "$w/a.yaml" > "$w/b.yaml"
   cmp -s "$w/a.yaml" "$w/b.yaml" && { echo "$name: the camera line was not moved" >&2; exit 1; }
   for v in a b; do
     "$sylva" ztv "$w/$v.yaml" -o "$w/surveyed_$v" -q >/dev/null 2>"$w/surveyed_$v.err" &&

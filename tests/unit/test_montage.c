@@ -362,7 +362,7 @@ TEST(plate_without_photo_section)
     char plate[4096], snapshot[4096], dir[4096];
     snprintf(plate, sizeof plate, "%s", work_path("own_plate.png"));
     CHECK_INT(shot ? composite_write_srgb(plate, shot->width, shot->height, shot->rgb, &err) : -1, 0);
-    snprintf(snapshot, sizeof snapshot, "%s", work_file("photo.ppm", "P3\n2 1\n255\n90 120 160 60 90 40\n"));
+    snprintf(snapshot, sizeof snapshot, "%s", SYLVA_TEST_DATA_DIR "/image/plain_photo.png"); /* no sylva tag */
     snprintf(dir, sizeof dir, "%s", work_path("no_photo_out"));
     mkdir(dir, 0700);
     montage_options mo = {.dir = dir, .threads = 2, .quiet = 1, .photo = plate};
@@ -376,7 +376,7 @@ TEST(plate_without_photo_section)
     CHECK_INT(montage_run(s, sf, &mo, &rep, &err), -1);
     CHECK(harness_seconds() - t0 < 0.5); /* refused before any render */
     CHECK_INT(err.status, ERR_USAGE);
-    CHECK_STR_CONTAINS(err.msg, "photo.ppm is a photograph and the scene has no photo: section");
+    CHECK_STR_CONTAINS(err.msg, "plain_photo.png is a photograph and the scene has no photo: section");
     CHECK_STR_CONTAINS(err.msg, "add photo: {file: ");
     film_free(shot);
     scene_free(s);

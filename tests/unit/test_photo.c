@@ -359,19 +359,18 @@ TEST(errors_name_the_file)
     snprintf(path, sizeof path, "%s/missing.jpg", work_dir());
     CHECK_INT(photo_read(path, &p, &err), -1);
     CHECK_STR_CONTAINS(err.msg, path);
-    snprintf(path, sizeof path, "%s/notes.jpg", work_dir());
-    FILE *f = fopen(path, "w");
-    CHECK(f != NULL);
-    if (f) {
-        fputs("these are notes, not a photograph\n", f);
-        fclose(f);
+    /* notes, then a JPEG's signature and nothing of one after it (the JPEG reader's own reason) */
+    const char *texts[2] = {"these are notes, not a photograph\n", "\xff\xd8\xff and then notes"};
+    const char *reasons[2] = {"a JPEG, PNG or TIFF file is expected", "OpenImageIO says"};
+    for (int i = 0; i < 2; i++) {
+        const char *notes = work_file("notes.jpg", texts[i]);
+        err_clear(&err);
+        CHECK_INT(photo_read(notes, &p, &err), -1);
+        CHECK_STR_CONTAINS(err.msg, notes);
+        CHECK_STR_CONTAINS(err.msg, reasons[i]);
+        fprintf(stderr, "%s\n", err.msg);
+        CHECK_INT(err.status, ERR_INPUT);
     }
-    err_clear(&err);
-    CHECK_INT(photo_read(path, &p, &err), -1);
-    CHECK_STR_CONTAINS(err.msg, path);
-    CHECK_STR_CONTAINS(err.msg, "OpenImageIO says");
-    fprintf(stderr, "%s\n", err.msg);
-    CHECK_INT(err.status, ERR_INPUT);
     err_clear(&err);
     CHECK_INT(photo_read(work_dir(), &p, &err), -1); /* a folder */
     CHECK_STR_CONTAINS(err.msg, work_dir());
@@ -431,7 +430,33 @@ TEST(damaged_png_chunk)
     CHECK(p.rgb == NULL);
 }
 
+/* A PNG that ends before its IEND chunk, whether in a chunk's header or just after a whole
+ * chunk, is refused as cut short before it is decoded. */
+TEST(png_without_its_end)
+{
+    const uint8_t rgb[3 * 2 * 3] = {0};
+    char path[1200];
+    snprintf(path, sizeof path, "%s/ended.png", work_dir());
+    err_buf err = {{0}};
+    CHECK_INT(image_write_u8(path, 3, 2, 3, rgb, &err), 0);
+    const long keep[] = {10, 33}; /* two bytes of IHDR's header; the signature and all of IHDR */
+    for (int i = 0; i < 2; i++) {
+        CHECK_INT(truncate(path, keep[i]), 0);
+        photo p = {0};
+        err_clear(&err);
+        CHECK_INT(photo_read(path, &p, &err), -1);
+        fprintf(stderr, "%s\n", err.msg);
+        CHECK_STR_CONTAINS(err.msg, path);
+        char want[80];
+        snprintf(want, sizeof want, "cut short: it ends at byte %ld without its 'IEND' chunk", keep[i]);
+        CHECK_STR_CONTAINS(err.msg, want);
+        CHECK_INT(err.status, ERR_INPUT);
+        CHECK(p.rgb == NULL);
+    }
+}
+
 TEST_LIST(TEST_CASE(cut_photographs_are_refused), TEST_CASE(exif_matches_exiftool), TEST_CASE(exif_known_values), TEST_CASE(sensor_width),
           TEST_CASE(png_round_trip_linear), TEST_CASE(exif_instant), TEST_CASE(orientations),
           TEST_CASE(orientation_tag_honoured), TEST_CASE(sixteen_bit_png), TEST_CASE(memory_budget),
-          TEST_CASE(errors_name_the_file), TEST_CASE(damaged_png_chunk))
+          TEST_CASE(errors_name_the_file), TEST_CASE(damaged_png_chunk),
+          TEST_CASE(png_without_its_end))

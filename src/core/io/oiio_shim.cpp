@@ -50,13 +50,33 @@ int read_integer_channel(OIIO::ImageInput *in, int c, image_f32 *img, err_buf *e
     return 0;
 }
 
-// What OpenImageIO noted while it read pixels it still handed over: libjpeg and libtiff let a
-// reader go on past the end of a file cut short (the rest of the image filled with grey) and
-// only record the complaint. The first line of it (a TIFF gives one per missing strip), or "".
-std::string damage_noted(OIIO::ImageInput *in)
+// The whole image as float samples, channels interleaved, into dst. A scanline file is read a
+// row at a time: OpenImageIO 2.4's read_image stages a scanline file through a 64 MiB buffer
+// however small the image, memory the budget does not see. A tiled file goes through read_image.
+bool read_float_pixels(OIIO::ImageInput *in, float *dst)
 {
+    const OIIO::ImageSpec &spec = in->spec();
+    if (spec.tile_width > 0)
+        return in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, dst);
+    const size_t row = static_cast<size_t>(spec.width) * static_cast<size_t>(spec.nchannels);
+    for (int y = 0; y < spec.height; y++)
+        if (!in->read_scanline(spec.y + y, spec.z, OIIO::TypeDesc::FLOAT, dst + static_cast<size_t>(y) * row))
+            return false;
+    return true;
+}
+
+// Reads the pixels into dst and says what was wrong with them: "" when they all read cleanly,
+// else the first line of OpenImageIO's complaint (a TIFF gives one per missing strip). A read
+// that fails is damage, and so is one that succeeded with a note: libjpeg lets a reader go on
+// past the end of a file cut short, fills the rest of the image with grey and only records it.
+std::string pixels_damage(OIIO::ImageInput *in, float *dst)
+{
+    (void)in->geterror(); // anything noted while opening is not about the pixels
+    const bool read = read_float_pixels(in, dst);
     std::string why = in->geterror();
-    size_t eol = why.find('\n');
+    if (read && why.empty()) return why;
+    if (why.empty()) why = "the pixels could not be read";
+    const size_t eol = why.find('\n');
     return eol == std::string::npos ? why : why.substr(0, eol);
 }
 
@@ -121,12 +141,7 @@ int read_into(const char *path, const char *open_name, OIIO::Filesystem::IOProxy
         if (!img->channel_names[c])
             return err_nomem(err, "%s: out of memory for the channel names", path);
     }
-    (void)in->geterror(); // anything noted while opening is not about the pixels
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img->pixels)) {
-        std::string why = in->geterror();
-        return err_set(err, "%s: cannot read the pixels: %s", path, why.c_str());
-    }
-    const std::string damage = damage_noted(in.get());
+    const std::string damage = pixels_damage(in.get(), img->pixels);
     if (!damage.empty())
         return err_set(err, "%s: cannot read the image: it is damaged or cut short (OpenImageIO "
                        "says: %s)", path, damage.c_str());
@@ -303,6 +318,20 @@ void photo_read_exif(const OIIO::ImageSpec &spec, photo_exif *x)
     photo_attr_text(spec, "ICCProfile:profile_description", x->icc_profile, sizeof x->icc_profile);
 }
 
+// The OpenImageIO reader for a photograph, named from the file's first bytes: a JPEG, PNG or
+// TIFF (classic or BigTIFF, either byte order); NULL for anything else. Only that reader sees
+// the file: OpenImageIO on its own tries each of its dozens of readers in turn on a file its
+// extension's reader refuses.
+const char *photo_format(const unsigned char *b, size_t n)
+{
+    if (n >= 3 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff) return "jpeg";
+    if (n >= 4 && b[0] == 0x89 && b[1] == 'P' && b[2] == 'N' && b[3] == 'G') return "png";
+    if (n >= 4 && ((b[0] == 'I' && b[1] == 'I' && (b[2] == 42 || b[2] == 43) && b[3] == 0) ||
+                   (b[0] == 'M' && b[1] == 'M' && b[2] == 0 && (b[3] == 42 || b[3] == 43))))
+        return "tiff";
+    return nullptr;
+}
+
 int photo_read_into(const char *path, image_f32 *img, photo *meta, err_buf *err)
 {
     const std::string label = std::string(path) + ": cannot read the photograph";
@@ -310,10 +339,19 @@ int photo_read_into(const char *path, image_f32 *img, photo *meta, err_buf *err)
     if (access(path, R_OK) != 0)
         return err_fail(err, ERR_INPUT, "%s: cannot read the photograph: %s", path,
                         std::strerror(errno));
+    unsigned char head[4] = {0};
+    FILE *f = std::fopen(path, "rb");
+    const size_t n_head = f ? std::fread(head, 1, sizeof head, f) : 0;
+    if (f) std::fclose(f);
+    const char *format = photo_format(head, n_head);
+    if (!format)
+        return err_fail(err, ERR_INPUT, "%s: cannot read the photograph (a JPEG, PNG or TIFF "
+                        "file is expected): its first bytes are none of theirs", path);
     if (png_check(path, err)) return -1; /* libpng allocates what a damaged chunk states */
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) {
-        std::string why = OIIO::geterror();
+    auto in = OIIO::ImageInput::create(format);
+    OIIO::ImageSpec opened;
+    if (!in || !in->open(path, opened)) {
+        std::string why = in ? in->geterror() : OIIO::geterror();
         return err_fail(err, ERR_INPUT, "%s: cannot read the photograph (a JPEG, PNG or TIFF "
                         "file is expected): OpenImageIO says: %s", path,
                         why.empty() ? "it cannot open the file" : why.c_str());
@@ -351,13 +389,7 @@ int photo_read_into(const char *path, image_f32 *img, photo *meta, err_buf *err)
     if (!img->pixels)
         return err_nomem(err, "%s: out of memory for %zu float samples", path, count);
     img->channels = static_cast<uint32_t>(spec.nchannels);
-    (void)in->geterror(); // anything noted while opening is not about the pixels
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img->pixels)) {
-        std::string why = in->geterror();
-        return err_fail(err, ERR_INPUT, "%s: cannot read the photograph's pixels: OpenImageIO "
-                        "says: %s", path, why.c_str());
-    }
-    const std::string damage = damage_noted(in.get());
+    const std::string damage = pixels_damage(in.get(), img->pixels);
     if (!damage.empty())
         return err_fail(err, ERR_INPUT, "%s: cannot read the photograph: it is damaged or cut "
                         "short (OpenImageIO says: %s)", path, damage.c_str());

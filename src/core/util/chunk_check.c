@@ -23,7 +23,7 @@ static int walk(const char *path, const chunked_format *fm, err_buf *err)
     FILE *f = fopen(path, "rb");
     if (!f) return err_fail(err, ERR_INPUT, "%s: cannot read the file: %s", path, strerror(errno));
     unsigned char head[16];
-    int rc = 0;
+    int rc = 0, ended = 0; /* ended: the chunk that ends the file was reached */
     long size = fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
     if (size < 0 || fseek(f, 0, SEEK_SET) != 0) {
         rc = err_fail(err, ERR_INPUT, "%s: cannot read the file: %s", path, strerror(errno));
@@ -44,9 +44,15 @@ static int walk(const char *path, const chunked_format *fm, err_buf *err)
                               (unsigned long long)(left >= fm->trailer ? left - fm->trailer : 0));
                 break;
             }
-            if (fm->last_type && !memcmp(b + 4, fm->last_type, 4)) break;
+            if (fm->last_type && !memcmp(b + 4, fm->last_type, 4)) {
+                ended = 1;
+                break;
+            }
             at += 8 + length + fm->trailer;
         }
+        if (!rc && fm->last_type && !ended)
+            rc = err_fail(err, ERR_INPUT, "%s: the %s is damaged or cut short: it ends at byte %ld "
+                          "without its '%s' chunk", path, fm->name, size, fm->last_type);
     }
     fclose(f);
     return rc;

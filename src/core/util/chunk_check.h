@@ -14,7 +14,8 @@ extern "C" {
 
 /* 0 when the file does not start with the PNG signature, or when every chunk up to IEND fits in
  * the file; -1 with err set ("path: ...", ERR_INPUT) naming the first chunk that states more
- * bytes than the file holds. */
+ * bytes than the file holds, or saying where the file ends when it ends before its IEND chunk
+ * (the reader would otherwise ask for bytes past the end in the middle of decoding). */
 int png_check(const char *path, err_buf *err);
 
 /* The same for a file that starts with the GLB magic "glTF" (whatever its extension): its

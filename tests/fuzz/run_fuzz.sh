@@ -78,12 +78,9 @@ case $name in
 esac
 [ -d "$here/regressions/$name" ] && seeds+=("$here/regressions/$name")
 
-# Leaks inside the third-party libraries (tests/lsan.supp) are theirs: OpenImageIO's PNG reader
-# leaks an error string when libpng gives up on a damaged file. Such a leak is matched by the
-# library's name in its call stack, which only the slow unwinder finds (the libraries keep no
-# frame pointers), so the photograph's target unwinds that way at every allocation.
+# Leaks inside the third-party libraries (tests/lsan.supp) are theirs, matched by the library's
+# name in the leak's call stack.
 export LSAN_OPTIONS="suppressions=$root/tests/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
-[ "$name" = photo ] && export ASAN_OPTIONS="fast_unwind_on_malloc=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
 dict=()
 [ -f "$here/$name.dict" ] && dict=(-dict="$here/$name.dict")
 exec "$target" "${dict[@]}" -max_len="$max_len" -timeout=10 -error_exitcode=1 -timeout_exitcode=1 \

@@ -8,7 +8,7 @@
 #ifndef SYLVA_CAMERA_FRAME_H
 #define SYLVA_CAMERA_FRAME_H
 
-#include "scene/scene_file.h"
+#include "scene/scene_settings.h"
 
 /* Unit forward, right and up vectors of s's camera (the loader has refused a view parallel to
  * up or of zero length). */

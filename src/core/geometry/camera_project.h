@@ -15,7 +15,7 @@
 
 #include <stdint.h>
 
-#include "scene/scene_file.h"
+#include "scene/scene_settings.h"
 
 typedef struct camera_model {
     double position[3];   /* the eye, local metres */

@@ -7,7 +7,7 @@
 #include "geometry/camera_frame.h"
 #include "geometry/ground_cover_models.h"
 #include "scene/heightfield.h"
-#include "scene/scene_build.h"
+#include "scene/scene.h"
 #include "util/rng.h"
 
 #define CELLS_PER_BLOCK 32     /* candidates are visited in blocks this many cells a side */

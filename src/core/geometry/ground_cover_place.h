@@ -23,7 +23,7 @@
 
 #include "geometry/ground_cover.h"
 #include "scene/scene.h"
-#include "scene/scene_file.h"
+#include "scene/scene_settings.h"
 
 typedef struct ground_cover_report {
     uint32_t instances;     /* tufts placed */

@@ -14,7 +14,7 @@
 
 #include "geometry/atmosphere.h"
 #include "geometry/sky_preetham.h"
-#include "scene/scene_file.h"
+#include "scene/scene_settings.h"
 #include "util/err.h"
 #include "util/vec3.h"
 

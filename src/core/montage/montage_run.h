@@ -19,8 +19,9 @@
 #include "io/photo.h"
 #include "montage/camera_match.h"
 #include "scene/scene.h"
-#include "scene/scene_file.h"
 #include "util/err.h"
+
+struct scene_file; /* scene_file/scene_file.h: the sections of the study read here */
 
 typedef struct montage_options {
     const char *dir;           /* the output folder (must exist) */
@@ -43,11 +44,11 @@ typedef struct montage_report {
  * direction on the site's map; at the photograph's size, with the focal length of photo: or
  * the EXIF when the sensor width (photo: or the EXIF's, into *sensor_mm, 0 when unknown) is
  * known. Returns 0, or -1 with err set (no GPS in the EXIF, a position PROJ cannot convert). */
-int montage_start_camera(const scene *s, const scene_file *sf, const photo *ph, camera_model *m, double *sensor_mm,
+int montage_start_camera(const scene *s, const struct scene_file *sf, const photo *ph, camera_model *m, double *sensor_mm,
                          err_buf *err);
 
 /* Makes the photomontage of s (built from sf). Returns 0, or -1 with err set. */
-int montage_run(scene *s, const scene_file *sf, const montage_options *o, montage_report *rep, err_buf *err);
+int montage_run(scene *s, const struct scene_file *sf, const montage_options *o, montage_report *rep, err_buf *err);
 void montage_report_free(montage_report *r); /* accepts a zeroed one */
 
 #endif

@@ -15,7 +15,7 @@
 #include <stdint.h>
 
 #include "geometry/camera_project.h"
-#include "scene/scene_file.h"
+#include "scene/scene_settings.h"
 #include "util/vec3.h"
 
 typedef struct camera {

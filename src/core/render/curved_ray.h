@@ -21,7 +21,7 @@
 #include <stdint.h>
 
 #include "render/camera.h"
-#include "scene/scene_file.h"
+#include "scene/scene_settings.h"
 #include "util/vec3.h"
 
 typedef struct curved_rays {

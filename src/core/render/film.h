@@ -20,7 +20,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "scene/scene_file.h"
+#include "scene/scene_settings.h"
 #include "util/err.h"
 
 /* What a pixel's centre ray sees first. Plant surfaces are leaves when their material is a leaf

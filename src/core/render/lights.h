@@ -8,7 +8,7 @@
 
 #include "geometry/light_summary.h"
 #include "render/sky_table.h"
-#include "scene/scene_file.h"
+#include "scene/scene_settings.h"
 #include "util/err.h"
 #include "util/vec3.h"
 

@@ -27,7 +27,7 @@
 #ifndef SYLVA_TONE_CURVE_H
 #define SYLVA_TONE_CURVE_H
 
-#include "scene/scene_file.h"
+#include "scene/scene_settings.h"
 
 /* The AgX sigmoid alone: log-encoded t in [0, 1] to display-encoded y in [0, 1]. */
 float tone_agx_sigmoid(float t);

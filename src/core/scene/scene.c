@@ -240,3 +240,9 @@ int scene_surveyed_normal(const scene *s, double x, double y, double n[3])
 {
     return s->surveyed ? heightfield_normal(s->surveyed, x, y, n) : -1;
 }
+
+xform3x4 plant_transform(const double p[3], double rot_deg, double scale)
+{
+    return xf_trs(v3((float)p[0], (float)p[1], (float)p[2]), v3(0, 0, (float)rot_deg),
+                  v3((float)scale, (float)scale, (float)scale));
+}

@@ -13,7 +13,7 @@
 #include <stdint.h>
 
 #include "scene/mesh.h"
-#include "scene/scene_file.h"
+#include "scene/scene_settings.h"
 #include "util/err.h"
 #include "util/name_index.h"
 #include "util/vec3.h"
@@ -150,6 +150,9 @@ static inline int scene_instance_is_ground_cover(const scene *s, uint32_t i)
     uint32_t sp = s->prototypes[s->instances[i].prototype].species;
     return sp < s->n_species && s->species[sp].ground_cover;
 }
+
+/* The transform of a plant: translate to p, rotate by rot_deg about +Z, scale uniformly. */
+xform3x4 plant_transform(const double p[3], double rot_deg, double scale);
 
 /* The variant of `species` for normalised age t: the youngest variant at least as old as t. */
 uint32_t scene_variant_for_age(const scene *s, uint32_t species, double t);

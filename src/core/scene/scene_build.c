@@ -17,12 +17,7 @@
 #include "scene/scene_tree_variants.h"
 #include "scene/shapes.h"
 #include "scene/terrain_extent.h"
-
-xform3x4 plant_transform(const double p[3], double rot_deg, double scale)
-{
-    return xf_trs(v3((float)p[0], (float)p[1], (float)p[2]), v3(0, 0, (float)rot_deg),
-                  v3((float)scale, (float)scale, (float)scale));
-}
+#include "scene/terrain_site.h"
 
 /* Loads an image file as an RGBA8 texture. */
 static int32_t load_texture(scene *s, const char *path, err_buf *err)
@@ -289,6 +284,22 @@ static int build_ecology(scene *s, const scene_file *sf, const plugin_registry *
     return rc;
 }
 
+/* The season on the scene file's day, species by species (scene species i is scene-file species i;
+ * ground cover and the flowers come after them): blossom first, while the leaves it grows from are
+ * all there, then leaf fall and autumn colour, then spring's fresh leaves. */
+static int apply_season(scene *s, const scene_file *sf, err_buf *err)
+{
+    const uint32_t day = sf->season.day;
+    const uint32_t n = sf->n_species < s->n_species ? sf->n_species : s->n_species; /* before the petals */
+    for (uint32_t i = 0; i < n; i++)
+        if (scene_apply_blossom(s, i, &sf->species[i].phenology, day, sf->species[i].name, err)) return -1;
+    for (uint32_t i = 0; i < sf->n_species && i < s->n_species; i++)
+        if (scene_apply_season(s, i, &sf->species[i].phenology, day, err)) return -1;
+    for (uint32_t i = 0; i < sf->n_species && i < s->n_species; i++)
+        if (scene_apply_fresh_leaves(s, i, &sf->species[i].phenology, day, err)) return -1;
+    return 0;
+}
+
 scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const build_options *opt, err_buf *err)
 {
     build_options defaults = {0};
@@ -307,8 +318,7 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
         scene_ground_camera(s, sf, err) ||
         build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) ||
         build_ecology(s, sf, plugins, opt, &out, err) || scene_build_objects(s, sf, err) ||
-        scene_apply_blossom(s, sf, NULL, err) || scene_apply_season(s, sf, err) ||
-        scene_apply_fresh_leaves(s, sf, err)) {
+        apply_season(s, sf, err)) {
         scene_free(s);
         return NULL;
     }

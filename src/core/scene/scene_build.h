@@ -6,23 +6,9 @@
 #define SYLVA_SCENE_BUILD_H
 
 #include "plugin/plugin_host.h"
+#include "scene/build_options.h"
 #include "scene/scene.h"
 #include "scene/scene_file.h"
-#include "util/phase_times.h"
-
-typedef struct build_options {
-    int verbose;     /* plugin DEBUG logs */
-    int quiet;       /* no progress output, and no plugin INFO logs (warnings still print) */
-    int no_ecology;  /* 1: leave the ecology plugin out (a caller that drives it itself) */
-    int analysis;    /* 1: a scene for an analysis (ZTV, probe): the ground as surveyed is the
-                        terrain too, nothing refined for a camera */
-    int detail_at_development; /* 1: the rendered terrain refined around the development (the
-                        development objects' mean position, else the ztv targets', else the
-                        terrain's centre) instead of the camera: a refined ground that is the same
-                        whatever the camera (`ztv --ground refined`) */
-    unsigned threads; /* threads for the tree variants and the plugins' workers; 0: one per processor */
-    phase_times *times; /* may be NULL: where the terrain, tree variant and ecology times add up */
-} build_options;
 
 /* Returns a new scene (free with scene_free) or NULL with err set. plugins may be NULL when the
  * scene names none. */
@@ -45,8 +31,5 @@ int scene_build_objects(scene *s, const scene_file *sf, err_buf *err);
  * default), or NULL with err placed at file:line:column and naming the kind and name. */
 mesh *scene_shape_mesh(const scene *s, const shape_spec *shape, const char *material_name, const char *file,
                        uint32_t line, uint32_t column, const char *kind, const char *name, err_buf *err);
-
-/* The transform of a plant: translate to p, rotate by rot_deg about +Z, scale uniformly. */
-xform3x4 plant_transform(const double p[3], double rot_deg, double scale);
 
 #endif

@@ -15,7 +15,7 @@
 
 #include <stdint.h>
 
-#include "scene/scene_file.h"
+#include "scene/scene_file_spec.h"
 
 #define SHAPE_VERTEX_BYTES 32u
 #define SHAPE_TRIANGLE_BYTES 128u

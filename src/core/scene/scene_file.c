@@ -20,6 +20,7 @@
 #include <string.h>
 
 #include "scene/scene_estimate.h"
+#include "scene/scene_file.h"
 
 int scene_file_material_index(const scene_file *sf, const char *name)
 {

@@ -29,7 +29,7 @@
 #include "params/yaml_doc.h"
 #include "plugin/plugin_host.h"
 #include "scene/host_schema.h"
-#include "scene/scene_file.h"
+#include "scene/scene_file_spec.h"
 #include "scene/site_frame.h"
 #include "util/arena.h"
 

@@ -133,20 +133,15 @@ static int fall_species(scene *s, uint32_t sp, double share, err_buf *err)
     return 0;
 }
 
-int scene_apply_season(scene *s, const scene_file *sf, err_buf *err)
+int scene_apply_season(scene *s, uint32_t i, const phenology *p, uint32_t day, err_buf *err)
 {
-    /* scene_build makes scene species i from scene-file species i; ground cover comes after */
-    for (uint32_t i = 0; i < sf->n_species && i < s->n_species; i++) {
-        const phenology *p = &sf->species[i].phenology;
-        const species *sp = &s->species[i];
-        if (!phenology_in_leaf(p, sf->season.day)) {
-            for (uint32_t v = 0; v < sp->n_variants; v++)
-                scene_drop_leaves(s, s->prototypes[sp->first_prototype + v].mesh);
-            continue;
-        }
-        double f = phenology_autumn_share(p, sf->season.day);
-        if (f > 0 && scene_turn_leaves(s, i, "autumn", p->autumn_color, f, err)) return -1;
-        if (f > 0 && fall_species(s, i, phenology_fallen_share(p, sf->season.day), err)) return -1;
+    const species *sp = &s->species[i];
+    if (!phenology_in_leaf(p, day)) {
+        for (uint32_t v = 0; v < sp->n_variants; v++) scene_drop_leaves(s, s->prototypes[sp->first_prototype + v].mesh);
+        return 0;
     }
+    double f = phenology_autumn_share(p, day);
+    if (f > 0 && scene_turn_leaves(s, i, "autumn", p->autumn_color, f, err)) return -1;
+    if (f > 0 && fall_species(s, i, phenology_fallen_share(p, day), err)) return -1;
     return 0;
 }

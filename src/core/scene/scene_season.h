@@ -12,13 +12,17 @@
 #ifndef SYLVA_SCENE_SEASON_H
 #define SYLVA_SCENE_SEASON_H
 
+#include <stdint.h>
+
+#include "scene/phenology.h"
 #include "scene/scene.h"
 
-/* Applies sf's season to s (built from sf by scene_build): a species out of leaf loses its leaf
- * triangles; a species whose leaves are turning (phenology_autumn_share > 0) gets its own copy
- * of each leaf material of its prototypes, albedo and transmittance moved that share of the way
- * toward its autumn colour, and loses the leaves already down (phenology_fallen_share). Returns 0, or -1 with err set (out of memory). */
-int scene_apply_season(scene *s, const scene_file *sf, err_buf *err);
+/* Applies the season on `day` (a day of the year) to species i of s, whose leaves follow p: out
+ * of leaf, it loses its leaf triangles; with its leaves turning (phenology_autumn_share > 0), it
+ * gets its own copy of each leaf material of its prototypes, albedo and transmittance moved that
+ * share of the way toward its autumn colour, and loses the leaves already down
+ * (phenology_fallen_share). Returns 0, or -1 with err set (out of memory). */
+int scene_apply_season(scene *s, uint32_t i, const phenology *p, uint32_t day, err_buf *err);
 
 /* Drops the triangles of m whose material is a leaf (SYLVA_BSDF_LEAF); returns how many. The
  * vertices stay, so vertex indices and the mesh's bounds are unchanged. */

@@ -23,34 +23,21 @@ int scene_blossom_params(const phenology *ph, uint32_t day, blossom_params *p, d
     return 1;
 }
 
-int scene_apply_blossom(scene *s, const scene_file *sf, uint64_t *petals, err_buf *err)
+int scene_apply_blossom(scene *s, uint32_t i, const phenology *ph, uint32_t day, const char *name,
+                        err_buf *err)
 {
-    uint64_t added = 0;
-    if (petals) *petals = 0;
-    const uint32_t n = sf->n_species < s->n_species ? sf->n_species : s->n_species; /* before the petals */
-    for (uint32_t i = 0; i < n; i++) {
-        const species_spec *sp = &sf->species[i];
-        blossom_params p;
-        double day;
-        if (!scene_blossom_params(&sp->phenology, sf->season.day, &p, &day)) continue;
-        blossom_report rep;
-        err_buf why = {{0}};
-        if (blossom_add(s, i, &p, day, s->image.seed, &rep, &why)) {
-            const struct flowering *b = &sp->phenology.blossom;
-            return err_at(err, why.status, b->file, b->line, b->column, "species '%s': %s", sp->name, why.msg);
-        }
-        added += rep.petals;
-    }
-    if (petals) *petals = added;
-    return 0;
+    blossom_params p;
+    double clock;
+    if (!scene_blossom_params(ph, day, &p, &clock)) return 0;
+    blossom_report rep;
+    err_buf why = {{0}};
+    if (!blossom_add(s, i, &p, clock, s->image.seed, &rep, &why)) return 0;
+    const struct flowering *b = &ph->blossom;
+    return err_at(err, why.status, b->file, b->line, b->column, "species '%s': %s", name, why.msg);
 }
 
-int scene_apply_fresh_leaves(scene *s, const scene_file *sf, err_buf *err)
+int scene_apply_fresh_leaves(scene *s, uint32_t i, const phenology *p, uint32_t day, err_buf *err)
 {
-    for (uint32_t i = 0; i < sf->n_species && i < s->n_species; i++) {
-        const phenology *p = &sf->species[i].phenology;
-        double f = phenology_fresh_share(p, sf->season.day);
-        if (f > 0 && scene_turn_leaves(s, i, "fresh", p->fresh_color, f, err)) return -1;
-    }
-    return 0;
+    double f = phenology_fresh_share(p, day);
+    return f > 0 ? scene_turn_leaves(s, i, "fresh", p->fresh_color, f, err) : 0;
 }

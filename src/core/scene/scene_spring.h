@@ -14,7 +14,7 @@
 
 #include "scene/blossom.h"
 #include "scene/scene.h"
-#include "scene/scene_file.h"
+#include "scene/phenology.h"
 
 /* The particle-system parameters of flowering block b (blossom.h): flowers open from b's first
  * day to its last; births fall in the first half or so of that span and each flower lives a
@@ -23,17 +23,18 @@
  * on `day`, else 0 (p and *day untouched). */
 int scene_blossom_params(const phenology *ph, uint32_t day, blossom_params *p, double *clock_day);
 
-/* Adds the flowers of every scene-file species in blossom on sf's day to s (built from sf; scene
- * species i is scene-file species i). Their crown points are the plants' leaves, so call it before
- * the season drops them (the same flowers before and after leaf_out). *petals (may be NULL)
- * gets the number of flowers added. Returns 0, or -1 with err set ("file:line:column: species
- * ...": too many petals, out of memory). */
-int scene_apply_blossom(scene *s, const scene_file *sf, uint64_t *petals, err_buf *err);
+/* Adds the flowers of species i of s, whose leaves follow ph, when it is in blossom on `day` (a
+ * day of the year); name is the species as the scene file names it, for messages. Their crown
+ * points are the plants' leaves, so call it before the season drops them (the same flowers
+ * before and after leaf_out). Returns 0, or -1 with err set ("file:line:column: species ...":
+ * too many petals, out of memory). */
+int scene_apply_blossom(scene *s, uint32_t i, const phenology *ph, uint32_t day, const char *name,
+                        err_buf *err);
 
-/* Gives each deciduous species whose leaves are still fresh on sf's day
- * (phenology_fresh_share > 0) its own copy of each leaf material of its prototypes, albedo moved
- * that share of the way from its summer value toward fresh_color (transmittance keeping its
- * ratio to the albedo). Returns 0, or -1 with err set (out of memory). */
-int scene_apply_fresh_leaves(scene *s, const scene_file *sf, err_buf *err);
+/* Gives species i, when its leaves are still fresh on `day` (phenology_fresh_share > 0), its own
+ * copy of each leaf material of its prototypes, albedo moved that share of the way from its
+ * summer value toward fresh_color (transmittance keeping its ratio to the albedo). Returns 0, or
+ * -1 with err set (out of memory). */
+int scene_apply_fresh_leaves(scene *s, uint32_t i, const phenology *p, uint32_t day, err_buf *err);
 
 #endif

@@ -19,7 +19,7 @@
 #include <embree3/rtcore.h>
 #include <stdint.h>
 
-#include "scene/scene_file.h"
+#include "scene/scene_settings.h"
 
 #define ZTV_SIGHT_SAG 0.05  /* metres a chord may stray from the curved sightline */
 #define ZTV_SIGHT_GAP 0.05  /* metres short of each end a sightline stops (a target or an eye on

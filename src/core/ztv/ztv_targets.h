@@ -16,8 +16,9 @@
 #include <stdint.h>
 
 #include "scene/scene.h"
-#include "scene/scene_file.h"
 #include "util/err.h"
+
+struct scene_file; /* scene_file/scene_file.h: the sections of the study read here */
 
 #define ZTV_MAX_TARGETS 65535u /* a cell's count of visible targets is a 16-bit number */
 
@@ -36,7 +37,7 @@ typedef struct ztv_targets {
 
 /* The targets of sf's ztv: section on the built scene s; seed keys the samples. Returns 0, or -1
  * with err set (no development and no target, a target off the terrain, too many targets). */
-int ztv_targets_build(ztv_targets *t, const scene_file *sf, const scene *s, uint64_t seed, err_buf *err);
+int ztv_targets_build(ztv_targets *t, const struct scene_file *sf, const scene *s, uint64_t seed, err_buf *err);
 void ztv_targets_free(ztv_targets *t); /* accepts a zeroed one */
 
 /* The height a point at (x, y) stands on: the terrain's drawn surface, or the water surface

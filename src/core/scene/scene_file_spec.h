@@ -1,0 +1,211 @@
+/* scene_file_spec.h — what a scene file says, once read and validated: its sections as specs
+ * (shapes, materials, objects, groups, species, plants, terrain, ecology, ztv, photo) and the
+ * settings the scene copies (scene/scene_settings.h), gathered in the scene_file record that
+ * scene_file_load() returns (scene_file.h).
+ *
+ * Ownership: a scene_file owns everything reachable from it (one arena); scene_file_free()
+ * releases it all. The sylva_params it holds point into that arena and stay valid until then.
+ */
+#ifndef SYLVA_SCENE_FILE_SPEC_H
+#define SYLVA_SCENE_FILE_SPEC_H
+
+#include <stdint.h>
+
+#include "sylva/plugin.h"
+#include "scene/phenology.h"
+#include "scene/scene_settings.h"
+#include "util/err.h"
+#include "util/name_index.h"
+
+/* A named camera beside the scene's own (the viewpoints: section). */
+typedef struct viewpoint {
+    const char *name;
+    camera_settings camera;
+    uint32_t line, column;  /* of its name */
+} scene_viewpoint;
+
+typedef enum shape_kind {
+    SHAPE_MESH = 0,   /* inline vertices + triangles (+ optional uvs) */
+    SHAPE_BOX = 1,    /* size[3], centred on the origin */
+    SHAPE_SPHERE = 2, /* radius, subdivisions (icosphere) */
+    SHAPE_QUAD = 3,   /* size[2] in the XY plane, normal +Z, uvs 0..1 */
+    SHAPE_DISK = 4    /* radius, segments, XY plane */
+} shape_kind;
+
+typedef struct shape_spec {
+    shape_kind kind;
+    double size[3];
+    double radius;
+    uint32_t subdivisions;
+    const double *vertices; uint32_t n_vertices; /* xyz triples */
+    const double *uvs;      uint32_t n_uvs;      /* uv pairs, n_uvs == n_vertices or 0 */
+    const double *triangles; uint32_t n_triangles; /* index triples (validated integers) */
+} shape_spec;
+
+typedef struct material_spec {
+    const char *name;
+    sylva_bsdf bsdf;
+    double albedo[3];
+    double transmittance[3];
+    const char *texture_path; /* absolute, or NULL */
+    int alpha_mask;
+    uint32_t line, column;
+} material_spec;
+
+/* What an object is: a built-in shape, a model file, or a group of parts placed as one. */
+typedef enum object_kind { OBJECT_SHAPE = 0, OBJECT_MODEL = 1, OBJECT_GROUP = 2 } object_kind;
+
+/* How an object's height is found (docs/scene-file.md, objects). */
+typedef enum object_base {
+    OBJECT_AT_Z = 0,          /* position gave z */
+    OBJECT_ABOVE_GROUND = 1,  /* origin height_above_ground above the terrain at (x, y) */
+    OBJECT_ON_GROUND = 2      /* lowest point on the lowest terrain under the footprint */
+} object_base;
+
+typedef struct object_spec {
+    const char *name;
+    object_kind kind;
+    shape_spec shape;         /* OBJECT_SHAPE */
+    const char *model_path;   /* OBJECT_MODEL: resolved path */
+    double model_scale;       /* OBJECT_MODEL: metres per file unit (after the file's own unit) */
+    int model_up;             /* OBJECT_MODEL: a model_up (model_import.h) */
+    const char *model_root;   /* OBJECT_MODEL: resolved folder its files must lie in; NULL: the model's */
+    uint32_t group;           /* OBJECT_GROUP: index into scene_file.groups */
+    double position[3], rotation_deg[3], scale[3];
+    double heading_deg;       /* clockwise from north (+Y) about +Z, after rotation */
+    object_base base;
+    double height_above_ground; /* OBJECT_ABOVE_GROUND */
+    int development;          /* 0, or the development it is part of + 1 (scene_file.developments) */
+    const char *material;     /* a material name (checked to exist), or NULL for the default */
+    const char *file;         /* where it is written: the scene file, or a layout CSV */
+    uint32_t line, column;
+} object_spec;
+
+/* A group: parts (shapes or models, positioned in the group's frame) placed as one object. */
+typedef struct group_spec {
+    const char *name;
+    object_spec *parts; uint32_t n_parts;
+    uint32_t line, column;
+} group_spec;
+
+typedef struct species_spec {
+    const char *name;
+    const char *plugin;       /* tree plugin name, or NULL when `shape` gives the prototype */
+    const sylva_params *params; /* the plugin's block (NULL for shapes) */
+    shape_spec shape;
+    const char *material;     /* shapes: material name or NULL */
+    uint32_t variants;        /* age variants to build */
+    const sylva_params *ecology; /* the block under the ecology plugin's species_section, or NULL */
+    phenology phenology;      /* its leaf habit and days (evergreen when not given) */
+    uint32_t line, column;
+} species_spec;
+
+typedef struct plant_spec {
+    uint32_t species;         /* index into scene_file.species */
+    double position[3];
+    int snap_to_terrain;      /* 1 when the position gave no z (two numbers) or a height above ground */
+    double above_ground;      /* with snap_to_terrain: metres above the terrain (0 for [x, y]) */
+    double rotation_deg;      /* about +Z */
+    double scale;
+    double age;               /* (0, 1] */
+    int development;          /* 1: new planting, part of the development */
+    uint32_t line, column;
+} plant_spec;
+
+typedef enum terrain_source { TERRAIN_NONE = 0, TERRAIN_GRID = 1, TERRAIN_PLUGIN = 2 } terrain_source;
+
+typedef struct terrain_spec {
+    terrain_source source;
+    const char *plugin;         /* TERRAIN_PLUGIN */
+    const sylva_params *params; /* TERRAIN_PLUGIN */
+    const double *grid; uint32_t nx, ny; /* TERRAIN_GRID: ny rows of nx heights, row 0 = south */
+    double origin[2], spacing[2];
+    const char *material;       /* material name or NULL for the default ground */
+    uint32_t line, column;
+} terrain_spec;
+
+typedef struct ecology_spec {
+    const char *plugin;         /* NULL: no ecology */
+    const sylva_params *params;
+    uint32_t line, column;
+} ecology_spec;
+
+/* The most developments one scene may name: a visibility map's bit mask of the developments
+ * seen from a cell is exact in a 32-bit float band. */
+#define SCENE_MAX_DEVELOPMENTS 24u
+
+/* One target of a visibility map given by hand (ztv: targets:). */
+typedef struct ztv_target_spec {
+    double position[3];       /* local metres; position[2] is the height when has_height */
+    int has_height;           /* 0: the target stands above_ground metres above the terrain */
+    double above_ground;
+    uint32_t development;     /* index into scene_file.developments */
+    uint32_t line, column;
+} ztv_target_spec;
+
+/* The ztv: section: how `sylva ztv` maps where the development can be seen from (docs/ztv.md).
+ * The targets are the explicit ones when given, else points target_heights above each
+ * development object's footprint when given, else `samples` points on each development
+ * object's surface. */
+typedef struct ztv_settings {
+    double observer_height;   /* metres above the terrain */
+    double radius;            /* metres from the nearest target; INFINITY: the whole terrain */
+    double cell;              /* metres; 0: the terrain's own grid */
+    int screening;            /* 0 none (bare earth), 1 vegetation, 2 all (a ztv_mode) */
+    uint32_t samples;
+    const double *target_heights; uint32_t n_target_heights;
+    ztv_target_spec *targets; uint32_t n_targets;
+    uint32_t line, column;    /* of the section (of the file's start when absent) */
+} ztv_settings;
+
+/* The photo: section: the photograph a photomontage puts the development into, and how its
+ * camera is matched (`sylva montage`, docs/photomontage.md). */
+typedef struct photo_settings {
+    const char *file;           /* resolved path, or NULL: no photo: section */
+    const char *control_points; /* resolved path, or NULL: the scene's camera as it is */
+    double sensor_width_mm;     /* 0: from the photograph's EXIF */
+    double focal_length_mm;     /* 0: from the photograph's EXIF, else the camera's field of view */
+    int fit_position;           /* 1: the match may move the camera */
+    int fit_focal_length;       /* 1: the match may change the focal length */
+    int fit_distortion;         /* 1: the match fits the radial distortion k1 */
+    int camera_from_exif;       /* 1: start the match at the photograph's GPS position and direction */
+    double exposure;            /* the rendered development's gain against the photograph */
+    uint32_t line, column;
+} photo_settings;
+
+typedef struct scene_file {
+    const char *path;           /* as given */
+    const char *dir;            /* absolute folder of the file */
+    const char **includes; uint32_t n_includes; /* the species files `include:` read, as
+                                                   canonical paths, in the order read */
+    site_settings site;
+    image_settings image;
+    camera_settings camera;
+    int has_camera;             /* 0: the file has no camera: section (SCENE_FILE_NO_CAMERA, for a
+                                   command that draws nothing); camera is then all zeros and the
+                                   terrain is refined around no eye (its footprint's centre) */
+    scene_viewpoint *viewpoints; uint32_t n_viewpoints; /* the named views, in file order */
+    sun_settings sun;
+    sky_settings sky;
+    earth_settings earth;
+    ground_cover_settings ground_cover;
+    snow_settings snow;         /* snow on the ground (off by default) */
+    season_settings season;     /* the day of the year the plants are shown on */
+    terrain_spec terrain;
+    species_spec *species; uint32_t n_species;
+    plant_spec *plants; uint32_t n_plants;
+    const char *plants_file;    /* plants: {file: F}: a saved ecology run (resolved), or NULL */
+    uint32_t plants_file_line, plants_file_column;
+    ecology_spec ecology;
+    group_spec *groups; uint32_t n_groups;
+    object_spec *objects; uint32_t n_objects; /* layouts expanded: one per CSV row */
+    const char **developments; uint32_t n_developments; /* names, in order of first mention */
+    ztv_settings ztv;
+    photo_settings photo;
+    material_spec *materials; uint32_t n_materials;
+    name_index material_names;  /* name → index into materials; owned (its table) */
+    name_index species_names;   /* name → index into species; owned (its table) */
+    struct arena *arena;        /* owns all of the above but the two indexes' tables */
+} scene_file;
+
+#endif

@@ -22,7 +22,7 @@
 
 #include "bench_machine.h"
 #include "render/render.h"
-#include "scene/model_import.h"
+#include "model/model_import.h"
 #include "scene/scene.h"
 #include "util/progress.h"
 

@@ -1,5 +1,5 @@
 /* fuzz_model_import.c — libFuzzer target for model import through Assimp
- * (scene/model_import.h): the input's first byte chooses the format (its value modulo 5: OBJ,
+ * (model/model_import.h): the input's first byte chooses the format (its value modulo 5: OBJ,
  * STL, PLY, glTF, GLB), the rest is written to model.<ext> in a scratch folder of its own and
  * imported into a new scene, with a triangle limit of 2^20 so that a small file instancing a
  * mesh many times is refused rather than built. Importing must end in a mesh that indexes only
@@ -9,7 +9,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "scene/model_import.h"
+#include "model/model_import.h"
 #include "scene/scene.h"
 #include "fuzz_file.h"
 

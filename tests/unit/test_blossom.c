@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "harness.h"
-#include "scene/blossom.h"
+#include "season/blossom.h"
 
 /* A cherry prototype: a bark trunk (two triangles, 0-4 m) and 40 leaf triangles around the
  * crown at 4-6 m; two cherries (one at the origin, one moved, turned 90 degrees and scaled by 2)

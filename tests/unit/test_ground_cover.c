@@ -5,7 +5,7 @@
  * rests out of its growing season (dull in winter, lush in summer, greening up in spring). */
 #include "geometry/ground_cover.h"
 #include "ground_fixture.h"
-#include "scene/phenology.h"
+#include "season/phenology.h"
 #include "harness.h"
 
 static double flat10(double x, double y) { (void)x, (void)y; return 10; }

@@ -1,4 +1,4 @@
-/* test_model_folder.c — a model reads only files in its own folder (scene/model_folder.h): a glTF
+/* test_model_folder.c — a model reads only files in its own folder (model/model_folder.h): a glTF
  * buffer or image, an OBJ material library or map given as "../" climbing out, as an absolute
  * path, or through a symbolic link that leads out are refused with the model and the reference
  * named; files below the folder are read, and model_root widens the folder. The files outside
@@ -11,7 +11,7 @@
 #include "harness.h"
 #include "work_dir.h"
 #include "io/image_io.h"
-#include "scene/model_import.h"
+#include "model/model_import.h"
 #include "scene/scene.h"
 
 /* path of name in the work folder, in one of four rotating buffers */

@@ -11,7 +11,7 @@
 #include "work_dir.h"
 #include "io/image_io.h"
 #include "geometry/cutout.h"
-#include "scene/model_import.h"
+#include "model/model_import.h"
 #include "scene/scene.h"
 
 static const float tet_pos[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 2, 0}, {0, 0, 3}};

@@ -10,7 +10,7 @@
 #include "harness.h"
 #include "work_dir.h"
 #include "render/render.h"
-#include "scene/model_import.h"
+#include "model/model_import.h"
 #include "scene/scene.h"
 
 #define MODELS SYLVA_SHARED_DATA_DIR "/models/"

@@ -1,12 +1,12 @@
 /* test_proj_network.c — PROJ's network access stays off whatever the environment asks
- * (scene/proj_network.h): PROJ_NETWORK=ON, or network = on in a proj.ini found through
+ * (site/proj_network.h): PROJ_NETWORK=ON, or network = on in a proj.ini found through
  * PROJ_DATA, enables it for every PROJ context, GDAL's own (the warper's) among them, until
  * sylva's start-up shuts it; --allow-gdal-virtual gives the environment's choice back. */
 #include <proj.h>
 #include <ogr_srs_api.h>
 
 #include "harness.h"
-#include "scene/proj_network.h"
+#include "site/proj_network.h"
 #include "work_dir.h"
 
 static int fresh_context_enabled(void)

@@ -7,7 +7,7 @@
 
 #include "scene_text.h"
 #include "pov/pov_write.h"
-#include "scene/scene_probe.h"
+#include "site/scene_probe.h"
 
 /* A tetrahedron 1 x 2 x 3 m (x, y, z) with a corner at the origin, as ASCII STL. */
 static const char *tet_stl =

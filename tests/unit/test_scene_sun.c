@@ -5,8 +5,8 @@
 #include "harness.h"
 #include "work_dir.h"
 #include "scene/scene_file.h"
-#include "scene/site_frame.h"
-#include "scene/sun_position.h"
+#include "site/site_frame.h"
+#include "season/sun_position.h"
 
 static void check_parse(const char *text, int y, int mo, int d, int h, int mi, double s)
 {

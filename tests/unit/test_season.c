@@ -12,10 +12,10 @@
 #include "harness.h"
 #include "work_dir.h"
 #include "render/accel.h"
-#include "scene/phenology.h"
+#include "season/phenology.h"
 #include "scene/scene_build.h"
 #include "scene/scene_file.h"
-#include "scene/scene_season.h"
+#include "season/scene_season.h"
 #include "scene/mesh.h"
 
 /* A deciduous "oak" (a leaf quad 3 m up), an evergreen "pine" (the same), a deciduous "post" of

@@ -11,7 +11,7 @@
 #include "scene/heightfield.h"
 #include "scene/scene_build.h"
 #include "scene/scene_file.h"
-#include "scene/site_frame.h"
+#include "site/site_frame.h"
 #include "work_dir.h"
 
 /* PROJ's documentation (quick start) converts 12 E, 55 N to UTM zone 32 on GRS80 as

@@ -11,10 +11,10 @@
 #include "harness.h"
 #include "scene_fixture.h"
 #include "work_dir.h"
-#include "scene/phenology.h"
+#include "season/phenology.h"
 #include "scene/scene_build.h"
 #include "scene/scene_file.h"
-#include "scene/scene_spring.h"
+#include "season/scene_spring.h"
 
 /* A deciduous "cherry" in flower from day 100 to 120 (a leaf quad 3 m up, in leaf from day 110),
  * a deciduous "oak" that does not flower, an evergreen "pine" flowering in June: two cherries,

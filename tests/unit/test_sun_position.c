@@ -4,7 +4,7 @@
  * dates and places that are not valid. */
 #include "harness.h"
 
-#include "scene/sun_position.h"
+#include "season/sun_position.h"
 
 static sun_position at(int y, int mo, int d, int h, int mi, double s, sun_observer o)
 {

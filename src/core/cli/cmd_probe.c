@@ -11,7 +11,7 @@
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
-#include "scene/scene_probe.h"
+#include "site/scene_probe.h"
 
 #define PROBE_LIST_MAX 20 /* plants listed one by one; the rest are counted */
 

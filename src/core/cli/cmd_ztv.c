@@ -15,7 +15,7 @@
 #include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "render/accel.h"
-#include "scene/ground_departure.h"
+#include "site/ground_departure.h"
 #include "scene/heightfield.h"
 #include "util/progress.h"
 #include "ztv/ztv_grid.h"

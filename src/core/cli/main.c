@@ -5,7 +5,7 @@
 
 #include "cli/cli_status.h"
 #include "cli/commands.h"
-#include "scene/proj_network.h"
+#include "site/proj_network.h"
 #include "sylva/plugin.h"
 #include "util/memory_budget.h"
 

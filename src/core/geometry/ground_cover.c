@@ -6,7 +6,7 @@
 #include <stdlib.h>
 
 #include "scene/heightfield.h"
-#include "scene/phenology.h"
+#include "season/phenology.h"
 #include "util/gradient_noise.h"
 #include "util/rng.h"
 

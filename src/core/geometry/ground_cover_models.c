@@ -6,7 +6,7 @@
 #include <math.h>
 
 #include "geometry/ground_cover.h"
-#include "scene/phenology.h"
+#include "season/phenology.h"
 #include "util/rng.h"
 
 #define STRIP_SEGMENTS 5

@@ -13,7 +13,7 @@
 #include "montage/verification_sheet.h"
 #include "montage/wireline.h"
 #include "render/camera.h"
-#include "scene/site_frame.h"
+#include "site/site_frame.h"
 #include "scene/scene_file.h"
 #include "util/progress.h"
 

@@ -85,7 +85,7 @@ typedef struct scene {
     sky_settings sky;
     earth_settings earth;
     snow_settings snow;         /* snow on the procedural ground (geometry/ground_cover.h) */
-    uint32_t season_day;        /* the day of the year shown (scene/phenology.h); 0: not given */
+    uint32_t season_day;        /* the day of the year shown (season/phenology.h); 0: not given */
 
     sylva_heightfield *terrain; /* owned (with its z and material arrays), or NULL: the ground
                                    as rendered, refined around the camera */

@@ -8,15 +8,15 @@
 
 #include "io/image_io.h"
 #include "scene/ecology_session.h"
-#include "scene/ground_departure.h"
+#include "site/ground_departure.h"
 #include "scene/host.h"
 #include "scene/plugin_call.h"
 #include "scene/scene_ground.h"
-#include "scene/scene_season.h"
-#include "scene/scene_spring.h"
+#include "season/scene_season.h"
+#include "season/scene_spring.h"
 #include "scene/scene_tree_variants.h"
 #include "scene/shapes.h"
-#include "scene/terrain_extent.h"
+#include "site/terrain_extent.h"
 #include "scene/terrain_site.h"
 
 /* Loads an image file as an RGBA8 texture. */

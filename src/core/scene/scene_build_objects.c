@@ -11,10 +11,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "scene/model_import.h"
+#include "model/model_import.h"
 #include "scene/scene_build.h"
 #include "scene/shape_index.h"
-#include "scene/terrain_extent.h"
+#include "site/terrain_extent.h"
 
 /* Footprint samples at most per object; beyond it the spacing grows past the terrain's. */
 #define FOOTPRINT_MAX_SAMPLES 1000000.0

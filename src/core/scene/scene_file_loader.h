@@ -30,7 +30,7 @@
 #include "plugin/plugin_host.h"
 #include "scene/host_schema.h"
 #include "scene/scene_file_spec.h"
-#include "scene/site_frame.h"
+#include "site/site_frame.h"
 #include "util/arena.h"
 
 #define INCLUDE_MAX_DEPTH 16

@@ -12,7 +12,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "scene/sun_position.h"
+#include "season/sun_position.h"
 
 #define DEG (M_PI / 180.0)
 

@@ -8,7 +8,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "scene/site_dtm.h"
+#include "site/site_dtm.h"
 
 /* The DTM the terrain's plugin block names with `dtm:`, as an absolute path, or NULL. */
 static const ynode *dtm_node(const loader *L)

@@ -12,7 +12,7 @@
 #include <stdint.h>
 
 #include "sylva/plugin.h"
-#include "scene/phenology.h"
+#include "season/phenology.h"
 #include "scene/scene_settings.h"
 #include "util/err.h"
 #include "util/name_index.h"

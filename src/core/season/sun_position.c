@@ -1,7 +1,7 @@
 /* sun_position.c — the sun's azimuth and elevation by Meeus's low-accuracy solar theory (the
  * NOAA solar calculator's algorithm). Equation numbers are those of "Astronomical Algorithms"
  * (2nd ed.); docs/models/sun_position.md gives the whole derivation and its deviations. */
-#include "scene/sun_position.h"
+#include "season/sun_position.h"
 
 #include <math.h>
 

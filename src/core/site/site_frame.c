@@ -2,7 +2,7 @@
  * conversions into the site CRS. Every transformation is normalised for visualisation, so its
  * axes are in GIS order (longitude then latitude, easting then northing) whatever the CRS's
  * authority says. */
-#include "scene/site_frame.h"
+#include "site/site_frame.h"
 
 #include <ctype.h>
 #include <math.h>

@@ -1,5 +1,5 @@
 /* ground_departure.c — the rendered ground against the surveyed (ground_departure.h). */
-#include "scene/ground_departure.h"
+#include "site/ground_departure.h"
 
 #include <math.h>
 

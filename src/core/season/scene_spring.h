@@ -12,9 +12,9 @@
 
 #include <stdint.h>
 
-#include "scene/blossom.h"
+#include "season/blossom.h"
 #include "scene/scene.h"
-#include "scene/phenology.h"
+#include "season/phenology.h"
 
 /* The particle-system parameters of flowering block b (blossom.h): flowers open from b's first
  * day to its last; births fall in the first half or so of that span and each flower lives a

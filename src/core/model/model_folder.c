@@ -2,7 +2,7 @@
  * system that opens only what the check allows (model_folder.h). Paths are compared after
  * they are made absolute and free of "." and "..", and once more as the kernel resolves them
  * (realpath), so neither ".." nor a symbolic link leads out. */
-#include "scene/model_folder.h"
+#include "model/model_folder.h"
 
 #include <errno.h>
 #include <limits.h>

@@ -1,7 +1,7 @@
 /* site_dtm.c — a DTM's CRS and footprint centre through GDAL's C API, quietly and offline: the
  * thread's /vsicurl/ sees one impossible file name and every HTTP fetch is refused while the
  * file is open. */
-#include "scene/site_dtm.h"
+#include "site/site_dtm.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -14,7 +14,7 @@
 
 #include <stdint.h>
 
-#include "scene/phenology.h"
+#include "season/phenology.h"
 #include "scene/scene.h"
 
 /* Applies the season on `day` (a day of the year) to species i of s, whose leaves follow p: out

@@ -1,12 +1,12 @@
 /* scene_probe.c — the terrain, water, plants and objects at one point (scene_probe.h). */
-#include "scene/scene_probe.h"
+#include "site/scene_probe.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "scene/heightfield.h"
-#include "scene/terrain_extent.h"
+#include "site/terrain_extent.h"
 
 static int by_distance(const void *a, const void *b)
 {

@@ -1,11 +1,11 @@
 /* scene_spring.c — fresh leaves and blossom on the scene's day (scene_spring.h). */
-#include "scene/scene_spring.h"
+#include "season/scene_spring.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "scene/scene_season.h"
+#include "season/scene_season.h"
 
 int scene_blossom_params(const phenology *ph, uint32_t day, blossom_params *p, double *clock_day)
 {

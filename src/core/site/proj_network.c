@@ -1,6 +1,6 @@
 /* proj_network.c — the process-wide switch of PROJ's network access, through GDAL's setting
  * for its contexts and the environment variable PROJ reads for its own. */
-#include "scene/proj_network.h"
+#include "site/proj_network.h"
 
 #include <stdlib.h>
 #include <string.h>

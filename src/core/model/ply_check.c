@@ -4,7 +4,7 @@
  * COUNT", "property TYPE NAME" or "property list COUNT_TYPE ITEM_TYPE NAME", "comment ...",
  * "obj_info ...", ending with "end_header"; then each element's COUNT items, each holding its
  * properties in order. */
-#include "scene/ply_check.h"
+#include "model/ply_check.h"
 
 #include <errno.h>
 #include <stdint.h>

@@ -1,6 +1,6 @@
 /* blossom.c — flowers on a species' plants as a particle system sampled at a day (see blossom.h;
  * the model in docs/models/leaves_bark_blossom.md). */
-#include "scene/blossom.h"
+#include "season/blossom.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -1,6 +1,6 @@
 /* phenology.c — season names and dates as days of the year, and whether a species is in leaf
  * (phenology.h). */
-#include "scene/phenology.h"
+#include "season/phenology.h"
 
 #include <stdio.h>
 #include <string.h>

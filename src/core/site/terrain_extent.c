@@ -1,5 +1,5 @@
 /* terrain_extent.c — the terrain's extent and a point, in local metres and on the site's map. */
-#include "scene/terrain_extent.h"
+#include "site/terrain_extent.h"
 
 #include <stdio.h>
 

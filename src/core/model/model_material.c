@@ -7,7 +7,7 @@
  * with another cutoff gets a texture whose alpha is already cut at that cutoff (0 or 255), with
  * the base colour factor's alpha folded in; OPAQUE ignores alpha; BLEND is cut at one half.
  * Other formats cut at one half where their texture has alpha. */
-#include "scene/model_material.h"
+#include "model/model_material.h"
 
 #include <assimp/GltfMaterial.h>
 #include <assimp/material.h>
@@ -22,7 +22,7 @@
 #include <unistd.h>
 
 #include "io/image_io.h"
-#include "scene/model_folder.h"
+#include "model/model_folder.h"
 
 /* How a texture's alpha is treated when it is copied into the scene. */
 typedef enum alpha_use { ALPHA_AS_IS, ALPHA_CUT } alpha_use;

@@ -1,7 +1,7 @@
 /* scene_season.c — leaf-off prototypes for the species out of leaf on the scene's day, and
  * autumn leaf materials and the leaves already down for the species whose leaves are turning
  * (scene_season.h). */
-#include "scene/scene_season.h"
+#include "season/scene_season.h"
 
 #include <stdio.h>
 #include <stdlib.h>

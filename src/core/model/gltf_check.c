@@ -1,6 +1,6 @@
 /* gltf_check.c — every "mimeType" value of a glTF (JSON) or GLB (its JSON chunk is text in the
  * file) must hold a '/' (gltf_check.h). */
-#include "scene/gltf_check.h"
+#include "model/gltf_check.h"
 
 #include <errno.h>
 #include <stdio.h>

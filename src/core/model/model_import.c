@@ -5,7 +5,7 @@
  * with the node's accumulated transform, the file's frame turned to sylva's (metres, +Z up)
  * and the caller's scale applied; missing normals are made from the triangles. Materials are
  * made on first use (model_material.c). */
-#include "scene/model_import.h"
+#include "model/model_import.h"
 
 #include <assimp/cimport.h>
 #include <assimp/config.h>
@@ -21,10 +21,10 @@
 #include <strings.h>
 #include <unistd.h>
 
-#include "scene/model_folder.h"
-#include "scene/model_material.h"
-#include "scene/gltf_check.h"
-#include "scene/ply_check.h"
+#include "model/model_folder.h"
+#include "model/model_material.h"
+#include "model/gltf_check.h"
+#include "model/ply_check.h"
 #include "util/chunk_check.h"
 
 /* The formats read, by extension, and the up axis each states as Assimp hands it over:

@@ -25,7 +25,7 @@
 #include "scene/heightfield.h"
 #include "scene/host.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "util/phase_times.h"
 #include "util/progress.h"
 #include "util/rng.h"

@@ -15,7 +15,7 @@
 #include "plugin/plugin_host.h"
 #include "scene/heightfield.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "util/rng.h"
 
 /* The process's peak resident memory so far, MiB. */

@@ -25,7 +25,7 @@
 #include "render/auto_exposure.h"
 #include "render/render.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "util/phase_times.h"
 #include "util/progress.h"
 

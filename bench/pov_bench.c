@@ -27,7 +27,7 @@
 #include "plugin/plugin_host.h"
 #include "render/render.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "scene/shapes.h"
 #include "util/progress.h"
 #include "util/rng.h"

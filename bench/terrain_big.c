@@ -26,7 +26,7 @@
 #include "render/render.h"
 #include "scene/scene.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 
 static double now(void)
 {

@@ -24,7 +24,7 @@
 #include "scene/host.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 
 static const char fig9[] = "13\n30\n20\nCCA\n"
                            "A=$t(.2)C[&BL[|zL]][>(120)&BL[|zL]]<(120)&BL[|zL]\n"

@@ -5,7 +5,7 @@
 #define SYLVA_TEST_SCENE_FIXTURE_H
 
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 
 /* A new scene (caller frees with scene_free), or NULL after a failed CHECK. */
 static inline scene *fixture_scene(const char *path)

@@ -11,7 +11,7 @@
 #include "render/film.h"
 #include "render/render.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 
 /* Writes text as scene.yaml in the work folder and builds it; NULL with err on failure. The
  * caller frees the scene with scene_free. */

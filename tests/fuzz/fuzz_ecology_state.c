@@ -14,7 +14,7 @@
 #include "plugin/plugin_host.h"
 #include "scene/ecology_session.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "fuzz_file.h"
 
 #define TARGET "fuzz_ecology_state"

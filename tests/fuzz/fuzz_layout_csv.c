@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "fuzz_file.h"
 
 #define TARGET "fuzz_layout_csv"

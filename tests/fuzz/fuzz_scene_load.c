@@ -8,7 +8,7 @@
 #include <stdlib.h>
 
 #include "plugin/plugin_host.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "fuzz_file.h"
 
 static plugin_registry *registry;  /* opened once, freed at exit */

@@ -15,7 +15,7 @@
 #include "render/accel.h"
 #include "render/camera.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "work_dir.h"
 
 static plugin_registry *registry; /* opened once, freed at exit */

@@ -12,7 +12,7 @@
 #include "geometry/cutout.h"
 #include "plugin/plugin_host.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "util/rng.h"
 
 /* The tree plugins' species of tests/scenes/tree_variants.yaml (caller frees), or NULL. */

@@ -7,7 +7,7 @@
 #include "harness.h"
 #include "plugin/plugin_host.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 
 static scene *build_with(plugin_registry *reg, unsigned threads, phase_times *times)
 {

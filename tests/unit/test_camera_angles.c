@@ -1,5 +1,5 @@
 /* test_camera_angles.c — the camera aimed by heading and pitch and turned by roll
- * (scene/scene_file_settings.c, geometry/camera_frame.h): heading 90 is the view of a look_at due
+ * (scene_file/scene_file_settings.c, geometry/camera_frame.h): heading 90 is the view of a look_at due
  * east, a view straight down keeps its heading at the top of the image, and a roll turns the
  * rendered image about its centre the documented way. The POV-Ray side is checked by the
  * cross-check scene tests/scenes/crosscheck/rolled_camera.yaml. */
@@ -12,7 +12,7 @@
 #include "render/film.h"
 #include "render/render.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 
 /* The scene file `text` written to the work folder and loaded; NULL (after a failed CHECK) when
  * it does not load. */

@@ -7,7 +7,7 @@
 
 #include "harness.h"
 #include "render/camera.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "work_dir.h"
 
 static camera panorama(double fov, uint32_t w, uint32_t h)

@@ -9,7 +9,7 @@
 #include "render/curved_ray.h"
 #include "render/film.h"
 #include "render/render.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 
 #define SCENES SYLVA_TEST_DATA_DIR "/scenes"
 #define MAST_SCENE SCENES "/earth/mast_20km.yaml"

@@ -12,7 +12,7 @@
 #include "work_dir.h"
 #include "render/accel.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 
 #define BOXES 100000
 

@@ -14,8 +14,8 @@
 #include "harness.h"
 #include "work_dir.h"
 #include "plugin/plugin_host.h"
-#include "scene/host_schema.h"
-#include "scene/scene_file.h"
+#include "scene_file/host_schema.h"
+#include "scene_file/scene_file.h"
 #include "params/yaml_doc.h"
 #include "util/file_check.h"
 

@@ -11,7 +11,7 @@
 #include "harness.h"
 #include "work_dir.h"
 #include "scene/scene.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 
 #define MANY_SPECIES 100000u
 #define MANY_MATERIALS 20000u

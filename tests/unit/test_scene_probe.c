@@ -6,7 +6,7 @@
 
 #include "harness.h"
 #include "scene_fixture.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "site/scene_probe.h"
 
 TEST(ground_plants_and_objects)

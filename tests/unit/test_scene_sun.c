@@ -4,7 +4,7 @@
  * SPA paper's example instant and place), and the refusals with file:line:column. */
 #include "harness.h"
 #include "work_dir.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "site/site_frame.h"
 #include "season/sun_position.h"
 

@@ -14,7 +14,7 @@
 #include "render/accel.h"
 #include "season/phenology.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "season/scene_season.h"
 #include "scene/mesh.h"
 

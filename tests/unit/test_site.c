@@ -10,7 +10,7 @@
 #include "plugin/plugin_host.h"
 #include "scene/heightfield.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "site/site_frame.h"
 #include "work_dir.h"
 

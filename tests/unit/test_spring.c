@@ -13,7 +13,7 @@
 #include "work_dir.h"
 #include "season/phenology.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "season/scene_spring.h"
 
 /* A deciduous "cherry" in flower from day 100 to 120 (a leaf quad 3 m up, in leaf from day 110),

@@ -11,7 +11,7 @@
 #include "plugin/plugin_host.h"
 #include "scene/heightfield.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "work_dir.h"
 
 /* A 33 x 33 generated DTM 20 m apart (640 m across, 300 m of relief), refined 8 times within

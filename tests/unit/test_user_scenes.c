@@ -5,7 +5,7 @@
 
 #include "harness.h"
 #include "plugin/plugin_host.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 
 #define SCENES SYLVA_TEST_DATA_DIR "/../scenes"
 

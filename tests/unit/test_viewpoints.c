@@ -8,7 +8,7 @@
 #include "harness.h"
 #include "work_dir.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 
 static const char *scene_text =
     "image: {width: 32, height: 24, spp: 1}\n"

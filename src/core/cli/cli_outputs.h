@@ -8,7 +8,7 @@
 
 #include <stdint.h>
 
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 
 /* A file the command line names: its path (NULL: not given) and the option that gave it. */
 typedef struct cli_file {

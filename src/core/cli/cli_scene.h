@@ -7,7 +7,7 @@
 #include "plugin/plugin_host.h"
 #include "scene/scene.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "util/phase_times.h"
 
 typedef struct cli_scene {

@@ -16,7 +16,7 @@
 #include "scene/mesh.h"
 #include "scene/scene.h"
 #include "scene/plugin_call.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 
 static void tree_stats_usage(FILE *out)
 {

@@ -14,7 +14,7 @@
 #include "montage/wireline.h"
 #include "render/camera.h"
 #include "site/site_frame.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "util/progress.h"
 
 #define DEG (M_PI / 180.0)

@@ -22,7 +22,7 @@
 #include "scene/host.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "util/phase_times.h"
 
 typedef struct plugin_call {

@@ -8,7 +8,7 @@
 #include "plugin/plugin_host.h"
 #include "scene/build_options.h"
 #include "scene/scene.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 
 /* Returns a new scene (free with scene_free) or NULL with err set. plugins may be NULL when the
  * scene names none. */

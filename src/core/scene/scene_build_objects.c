@@ -13,7 +13,7 @@
 
 #include "model/model_import.h"
 #include "scene/scene_build.h"
-#include "scene/shape_index.h"
+#include "scene_file/shape_index.h"
 #include "site/terrain_extent.h"
 
 /* Footprint samples at most per object; beyond it the spacing grows past the terrain's. */

@@ -6,7 +6,7 @@
 #define SYLVA_SCENE_GROUND_H
 
 #include "scene/scene.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 
 /* Sets p[2] to the terrain height at (p[0], p[1]) plus g->above; nothing unless g->given.
  * `what` names the point in messages ("the camera 'position'"). Returns 0, or -1 with err set

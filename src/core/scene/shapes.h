@@ -4,7 +4,7 @@
 #define SYLVA_SHAPES_H
 
 #include "scene/mesh.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 
 #define SHAPE_MAX_SUBDIVISIONS 8 /* icosphere: 20 * 4^8 = 1.3M triangles */
 

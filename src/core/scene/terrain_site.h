@@ -5,7 +5,7 @@
 #define SYLVA_TERRAIN_SITE_H
 
 #include "scene/scene.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "util/err.h"
 
 /* How far the terrain of a site may lie from the site origin, beyond its own size: a site is

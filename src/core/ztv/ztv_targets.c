@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "scene/heightfield.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "util/rng.h"
 
 int ztv_ground(const scene *s, double x, double y, double *z)

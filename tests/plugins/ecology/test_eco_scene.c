@@ -10,7 +10,7 @@
 #include "plugin/plugin_host.h"
 #include "scene/ecology_session.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 
 #define SCENES SYLVA_TEST_DATA_DIR "/plugins/ecology/scenes"
 

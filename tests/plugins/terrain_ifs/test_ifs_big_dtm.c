@@ -20,7 +20,7 @@
 #include "render/accel.h"
 #include "scene/scene.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 
 #define BIG_SIDE 10000u
 /* What the plugin and the host hold per node of a DTM refined once (refine: 1): the DTM's

@@ -18,7 +18,7 @@
 #include "scene/scene.h"
 #include "scene/scene_build.h"
 #include "scene/heightfield.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "render/accel.h"
 
 #define OUT_DIR SYLVA_TEST_OUT_DIR

@@ -23,7 +23,7 @@
 #include "plugin/plugin_host.h"
 #include "scene/scene.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 
 #if defined(__SANITIZE_ADDRESS__)
 #define UNDER_ASAN 1

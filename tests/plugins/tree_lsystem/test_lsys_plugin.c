@@ -16,7 +16,7 @@
 #include "scene/mesh.h"
 #include "scene/scene.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 
 static plugin_registry *registry(void)
 {

@@ -9,7 +9,7 @@
 #include "work_dir.h"
 #include "plugin/plugin_host.h"
 #include "scene/scene_build.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_file.h"
 #include "vessel_mesh.h"
 #include "vessel_test_util.h"
 

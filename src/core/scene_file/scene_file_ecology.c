@@ -1,6 +1,6 @@
 /* scene_file_ecology.c — the ecology section: its plugin and that plugin's parameters; the
  * plugin also names the section of each species that holds the species' ecology block. */
-#include "scene/scene_file_loader.h"
+#include "scene_file/scene_file_loader.h"
 
 int sf_read_ecology(loader *L, const ynode *node, uint32_t line, uint32_t column)
 {

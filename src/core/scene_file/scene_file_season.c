@@ -1,7 +1,7 @@
 /* scene_file_season.c — the scene's season: key (a season's name or a date) and each species'
  * phenology: block with its blossom: block, read into days of the year (phenology.h). */
-#include "scene/scene_file.h"
-#include "scene/scene_file_loader.h"
+#include "scene_file/scene_file.h"
+#include "scene_file/scene_file_loader.h"
 
 int sf_read_season(loader *L)
 {

@@ -28,8 +28,8 @@
 #include "params/validate.h"
 #include "params/yaml_doc.h"
 #include "plugin/plugin_host.h"
-#include "scene/host_schema.h"
-#include "scene/scene_file_spec.h"
+#include "scene_file/host_schema.h"
+#include "scene_file/scene_file_spec.h"
 #include "site/site_frame.h"
 #include "util/arena.h"
 

@@ -1,7 +1,7 @@
 /* scene_file_shapes.c — the built-in shapes a species or an object can be (mesh, box, sphere,
  * quad, disk): their validated keys into a shape_spec, with a mesh's indices and row lengths
  * checked where the file gives them. */
-#include "scene/scene_file_loader.h"
+#include "scene_file/scene_file_loader.h"
 
 #include <math.h>
 #include <string.h>

@@ -4,8 +4,8 @@
  * azimuth and elevation, or a date and time at a place), sky (keys that apply to its model
  * only), earth (curvature on by default only for a scene with a site, so read after the
  * site) and ground_cover (the grass and herbs placed near the camera). */
-#include "scene/scene_file.h"
-#include "scene/scene_file_loader.h"
+#include "scene_file/scene_file.h"
+#include "scene_file/scene_file_loader.h"
 
 #include <float.h>
 #include <math.h>

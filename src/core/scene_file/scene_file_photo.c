@@ -1,6 +1,6 @@
 /* scene_file_photo.c — the photo: section: the photograph of a photomontage, its control points
  * and what the camera match may change. */
-#include "scene/scene_file_loader.h"
+#include "scene_file/scene_file_loader.h"
 
 int sf_read_photo(loader *L)
 {

@@ -1,5 +1,5 @@
 /* shape_index.c — equal shapes found by hashing their keys. */
-#include "scene/shape_index.h"
+#include "scene_file/shape_index.h"
 
 #include <stdlib.h>
 #include <string.h>

@@ -11,7 +11,7 @@
 
 #include <stdint.h>
 
-#include "scene/scene_file_spec.h"
+#include "scene_file/scene_file_spec.h"
 
 typedef struct shape_index {
     const shape_spec **shapes;  /* count of them, in the order added; owned array */

@@ -1,8 +1,8 @@
 /* scene_file_materials.c — the materials section (each material's type, albedo,
  * transmittance for leaves, texture and alpha mask) and references to materials by name from
  * the terrain, species and objects. */
-#include "scene/scene_file.h"
-#include "scene/scene_file_loader.h"
+#include "scene_file/scene_file.h"
+#include "scene_file/scene_file_loader.h"
 
 /* Checks that a material key names a defined material; *out is the name or NULL when unset. */
 int sf_material_ref(loader *L, const char *file, const sylva_value *v, const char *where,

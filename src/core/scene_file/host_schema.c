@@ -4,7 +4,7 @@
  * absence matters (camera look_at, sun direction, ...) carry a default that the loader ignores
  * unless the key is set; their help says so.
  */
-#include "scene/host_schema.h"
+#include "scene_file/host_schema.h"
 
 #include <stddef.h>
 #include <string.h>

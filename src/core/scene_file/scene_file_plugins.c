@@ -1,7 +1,7 @@
 /* scene_file_plugins.c — finding the plugin a block names (`plugin:` in the terrain, ecology
  * and species blocks) in the registry, by name and kind, and refusing one whose parameter names
  * clash with the host's own keys. Only the plugin's descriptor is read; none of its code runs. */
-#include "scene/scene_file_loader.h"
+#include "scene_file/scene_file_loader.h"
 
 /* Looks up the plugin named in map's `plugin:` key (spec: the host table's `plugin` entry). */
 int sf_find_plugin(loader *L, const param_scope *scope, const ynode_pair *pair,

@@ -4,7 +4,7 @@
  * height or a height above ground. Map coordinates become local ones at once, in double
  * precision: local = map - site origin. Heights above ground stay as such until the terrain
  * exists (scene_build.c). */
-#include "scene/scene_file_loader.h"
+#include "scene_file/scene_file_loader.h"
 
 #include <math.h>
 #include <string.h>

@@ -2,7 +2,7 @@
  * the scene file alone, so that a scene which cannot fit (thousands of finely subdivided
  * spheres, tens of millions of placements) is refused with a sentence before any mesh is built.
  *
- * Per distinct shape (the same kind, keys and material: scene/shape_index.h, as the scene builds
+ * Per distinct shape (the same kind, keys and material: scene_file/shape_index.h, as the scene builds
  * it once and places it as instances): its vertex and triangle counts as shapes.c builds them,
  * at SHAPE_VERTEX_BYTES per vertex (position, normal, uv) and SHAPE_TRIANGLE_BYTES per triangle
  * (indices, material id, and the renderer's acceleration structure with its build buffers, as
@@ -15,7 +15,7 @@
 
 #include <stdint.h>
 
-#include "scene/scene_file_spec.h"
+#include "scene_file/scene_file_spec.h"
 
 #define SHAPE_VERTEX_BYTES 32u
 #define SHAPE_TRIANGLE_BYTES 128u

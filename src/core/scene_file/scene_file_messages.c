@@ -1,7 +1,7 @@
 /* scene_file_messages.c — how the scene loader says what is wrong: a message at
  * file:line:column, running out of memory, a section that is not a list, and an unknown name
  * with the nearest defined one or the list of defined ones. */
-#include "scene/scene_file_loader.h"
+#include "scene_file/scene_file_loader.h"
 
 #include <stdarg.h>
 #include <stdio.h>

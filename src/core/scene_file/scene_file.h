@@ -11,7 +11,7 @@
 #ifndef SYLVA_SCENE_FILE_H
 #define SYLVA_SCENE_FILE_H
 
-#include "scene/scene_file_spec.h"
+#include "scene_file/scene_file_spec.h"
 #include "util/err.h"
 
 struct plugin_registry;

@@ -1,7 +1,7 @@
 /* scene_file_includes.c — gathering the species of the scene file and of the files it
  * includes (`include:` inside `species:`), in file order: each name defined once, each file
  * included once, no include cycles, nesting at most INCLUDE_MAX_DEPTH files. */
-#include "scene/scene_file_loader.h"
+#include "scene_file/scene_file_loader.h"
 
 #include <errno.h>
 #include <stdio.h>

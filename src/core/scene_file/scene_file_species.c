@@ -1,7 +1,7 @@
 /* scene_file_species.c — each gathered species: a tree plugin and its parameters, or a
  * built-in shape and its material; the number of age variants; and its block under the ecology
  * plugin's species section (the plugin's defaults when the block is left out). */
-#include "scene/scene_file_loader.h"
+#include "scene_file/scene_file_loader.h"
 
 static int read_species_entry(loader *L, const species_entry *e, species_spec *sp)
 {

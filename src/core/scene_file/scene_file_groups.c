@@ -2,7 +2,7 @@
  * positions of the group's own frame) that an objects entry places as one object. */
 #include <string.h>
 
-#include "scene/scene_file_loader.h"
+#include "scene_file/scene_file_loader.h"
 
 int sf_read_groups(loader *L, const ynode *node)
 {

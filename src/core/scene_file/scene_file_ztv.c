@@ -1,6 +1,6 @@
 /* scene_file_ztv.c — the ztv: section (what `sylva ztv` maps: observer height, radius, cell,
  * screening and the targets) and the developments' names, which objects and targets share. */
-#include "scene/scene_file_loader.h"
+#include "scene_file/scene_file_loader.h"
 
 #include <math.h>
 #include <string.h>

@@ -12,7 +12,7 @@
 #include <strings.h>
 #include <unistd.h>
 
-#include "scene/scene_file_loader.h"
+#include "scene_file/scene_file_loader.h"
 #include "util/csv_fields.h"
 #include "util/file_check.h"
 

@@ -13,14 +13,14 @@
  * position, materials before their users, the ecology before the species blocks it defines,
  * species before plants, the earth (whose default follows the site) last.
  */
-#include "scene/scene_file_loader.h"
+#include "scene_file/scene_file_loader.h"
 
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "scene/scene_estimate.h"
-#include "scene/scene_file.h"
+#include "scene_file/scene_estimate.h"
+#include "scene_file/scene_file.h"
 
 int scene_file_material_index(const scene_file *sf, const char *name)
 {

@@ -1,9 +1,9 @@
 /* scene_estimate.c — shape sizes and the scene's mesh memory against the budget. */
-#include "scene/scene_estimate.h"
+#include "scene_file/scene_estimate.h"
 
 #include <stdio.h>
 
-#include "scene/shape_index.h"
+#include "scene_file/shape_index.h"
 #include "util/memory_budget.h"
 
 void shape_counts(const shape_spec *s, uint64_t *vertices, uint64_t *triangles)

@@ -3,7 +3,7 @@
  * the DTM footprint's centre rounded to whole metres). It is read before every section that
  * gives positions, and opens the site frame they convert map coordinates with. Without a site
  * section the scene is in local metres only and nothing here runs. */
-#include "scene/scene_file_loader.h"
+#include "scene_file/scene_file_loader.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -14,7 +14,7 @@
 #include <stdint.h>
 
 #include "plugin/plugin_host.h"
-#include "scene/scene_file_spec.h"
+#include "scene_file/scene_file_spec.h"
 #include "sylva/plugin.h"
 
 typedef struct host_schema {

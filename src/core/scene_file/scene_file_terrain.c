@@ -1,6 +1,6 @@
 /* scene_file_terrain.c — the terrain section: inline heights (grid, origin, spacing) or a
  * terrain plugin and its parameters, never both, and the ground material. */
-#include "scene/scene_file_loader.h"
+#include "scene_file/scene_file_loader.h"
 
 int sf_read_terrain(loader *L, const ynode *node, uint32_t line, uint32_t column)
 {

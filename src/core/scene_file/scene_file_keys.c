@@ -2,7 +2,7 @@
  * keys and its tree plugin's, an object's keys and its shape's) validated in two passes that
  * each skip the other's keys, a host key's spec by name, vectors copied out of values, and
  * strings formatted into the loader's arena. */
-#include "scene/scene_file_loader.h"
+#include "scene_file/scene_file_loader.h"
 
 #include <math.h>
 #include <stdarg.h>

@@ -4,7 +4,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "scene/scene_file_loader.h"
+#include "scene_file/scene_file_loader.h"
 
 /* The object's position (pos, read by sf_read_position: local metres or map coordinates) and its
  * height_above_ground key: at a height, above the ground, or on it at the footprint. */

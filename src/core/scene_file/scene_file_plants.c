@@ -1,7 +1,7 @@
 /* scene_file_plants.c — the plants section: each plant's species (by name), position (on the
  * terrain when no height is given, or a height above it), rotation, scale and age. */
-#include "scene/scene_file.h"
-#include "scene/scene_file_loader.h"
+#include "scene_file/scene_file.h"
+#include "scene_file/scene_file_loader.h"
 
 #include <math.h>
 

@@ -11,7 +11,7 @@
 
 #include "patch_noise.h"
 #include "plugin/plugin_host.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 
 int main(int argc, char **argv)
 {

@@ -14,7 +14,7 @@
 
 #include "plugin/plugin_host.h"
 #include "scene/heightfield.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 #include "util/rng.h"
 

@@ -32,7 +32,7 @@
 #include "render/accel.h"
 #include "render/render.h"
 #include "render/integrator.h"
-#include "scene/shapes.h"
+#include "scene_build/shapes.h"
 #include "util/progress.h"
 #include "util/rng.h"
 #include "util/task_pool.h"

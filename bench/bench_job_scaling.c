@@ -24,7 +24,7 @@
 #include "plugin/plugin_host.h"
 #include "render/auto_exposure.h"
 #include "render/render.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 #include "util/phase_times.h"
 #include "util/progress.h"

@@ -23,7 +23,7 @@
 #include "render/camera.h"
 #include "render/crown_proxy.h"
 #include "render/render.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "util/phase_times.h"
 #include "util/progress.h"
 

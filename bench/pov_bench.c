@@ -26,9 +26,9 @@
 #include "pov/pov_write.h"
 #include "plugin/plugin_host.h"
 #include "render/render.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
-#include "scene/shapes.h"
+#include "scene_build/shapes.h"
 #include "util/progress.h"
 #include "util/rng.h"
 

@@ -25,7 +25,7 @@
 #include "plugin/plugin_host.h"
 #include "render/render.h"
 #include "scene/scene.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 
 static double now(void)

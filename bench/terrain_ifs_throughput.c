@@ -14,7 +14,7 @@
 #include "ifs_chaos.h"
 #include "ifs_eval.h"
 #include "ifs_maps.h"
-#include "scene/host.h"
+#include "scene_build/host.h"
 #include "util/rng.h"
 
 static double now(void)

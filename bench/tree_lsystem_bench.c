@@ -21,7 +21,7 @@
 #include "lsys_system.h"
 #include "lsys_turtle.h"
 #include "plugin/plugin_host.h"
-#include "scene/host.h"
+#include "scene_build/host.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"
 #include "scene_file/scene_file.h"

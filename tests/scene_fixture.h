@@ -4,7 +4,7 @@
 #ifndef SYLVA_TEST_SCENE_FIXTURE_H
 #define SYLVA_TEST_SCENE_FIXTURE_H
 
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 
 /* A new scene (caller frees with scene_free), or NULL after a failed CHECK. */

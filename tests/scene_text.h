@@ -10,7 +10,7 @@
 #include "work_dir.h"
 #include "render/film.h"
 #include "render/render.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 
 /* Writes text as scene.yaml in the work folder and builds it; NULL with err on failure. The

@@ -4,7 +4,7 @@
 #include "harness.h"
 
 #include "cli/cli_status.h"
-#include "scene/host.h"
+#include "scene_build/host.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"
 

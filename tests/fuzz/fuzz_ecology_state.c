@@ -1,6 +1,6 @@
 /* fuzz_ecology_state.c — libFuzzer target for a saved ecology run read back: each input is the
  * forest.state that a fixed scene's `plants: {file: forest.state}` names, and the scene is built
- * with scene_build(), so the ecology plugin's run is opened (scene/ecology_session.h), loads the
+ * with scene_build(), so the ecology plugin's run is opened (scene_build/ecology_session.h), loads the
  * state (the plugin's eco_sim_load) and places its plants in the scene. The state's
  * fingerprint (bytes 16 to 23) and checksum (its last 8 bytes, FNV-1a of what lies between) are
  * written into every input of at least 32 bytes before it is read, so that mutated states get
@@ -12,8 +12,8 @@
 #include <string.h>
 
 #include "plugin/plugin_host.h"
-#include "scene/ecology_session.h"
-#include "scene/scene_build.h"
+#include "scene_build/ecology_session.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 #include "fuzz_file.h"
 

@@ -9,7 +9,7 @@
 #include "harness.h"
 #include "patch_noise.h"
 #include "plugin/plugin_host.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 
 #define FOREST SYLVA_TEST_DATA_DIR "/scenes/distance/forest_2km.yaml"
 

@@ -14,7 +14,7 @@
 #include "plugin/plugin_host.h"
 #include "render/accel.h"
 #include "render/camera.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 #include "work_dir.h"
 

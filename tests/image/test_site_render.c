@@ -10,7 +10,7 @@
 #include "harness.h"
 #include "render/film.h"
 #include "render/render.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "work_dir.h"
 
 #define SCENES SYLVA_TEST_DATA_DIR "/scenes/site"

@@ -11,7 +11,7 @@
 #include "harness.h"
 #include "geometry/cutout.h"
 #include "plugin/plugin_host.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 #include "util/rng.h"
 

@@ -1,12 +1,12 @@
 /* test_tree_variants.c — a species' age variants made on several threads
- * (scene/scene_tree_variants.h): the same prototypes, materials and textures, byte for byte, for
+ * (scene_build/scene_tree_variants.h): the same prototypes, materials and textures, byte for byte, for
  * 1, 2 and 5 threads, with the plugins that allow concurrent generate() (tree_vessel,
  * tree_aono_kunii) and with one that does not (tree_lsystem). */
 #include <stdio.h>
 
 #include "harness.h"
 #include "plugin/plugin_host.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 
 static scene *build_with(plugin_registry *reg, unsigned threads, phase_times *times)

@@ -4,7 +4,7 @@
 #include <math.h>
 
 #include "harness.h"
-#include "scene/shapes.h"
+#include "scene_build/shapes.h"
 #include "scene_text.h"
 
 #define SIZE 16

@@ -8,7 +8,7 @@
 #include "harness.h"
 #include "render/film.h"
 #include "render/render.h"
-#include "scene/shapes.h"
+#include "scene_build/shapes.h"
 
 #define CAMERA_Z 100.0 /* metres above sea level (no site: z is the altitude) */
 #define VISIBILITY 30.0 /* km: the scenes' temperate summer day */

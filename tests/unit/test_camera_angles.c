@@ -11,7 +11,7 @@
 #include "render/camera.h"
 #include "render/film.h"
 #include "render/render.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 
 /* The scene file `text` written to the work folder and loaded; NULL (after a failed CHECK) when

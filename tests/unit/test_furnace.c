@@ -6,7 +6,7 @@
 
 #include "geometry/light_summary.h"
 #include "harness.h"
-#include "scene/shapes.h"
+#include "scene_build/shapes.h"
 #include "scene_text.h"
 
 #define SIZE 16

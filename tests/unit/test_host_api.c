@@ -5,7 +5,7 @@
 #include "harness.h"
 #include "work_dir.h"
 
-#include "scene/host.h"
+#include "scene_build/host.h"
 #include "scene/scene.h"
 #include "util/file_check.h"
 

@@ -14,8 +14,8 @@
 #include "pov/pov_names.h"
 #include "pov/pov_write.h"
 #include "geometry/texture_lookup.h"
-#include "scene/scene_build.h"
-#include "scene/shapes.h"
+#include "scene_build/scene_build.h"
+#include "scene_build/shapes.h"
 
 static int count_files(const char *dir)
 {

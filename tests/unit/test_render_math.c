@@ -7,7 +7,7 @@
 #include "render/leaf_coat.h"
 #include "render/lights.h"
 #include "scene/mesh.h"
-#include "scene/shapes.h"
+#include "scene_build/shapes.h"
 #include "util/vec3.h"
 
 TEST(normal_transform_rotation)

@@ -11,7 +11,7 @@
 #include "harness.h"
 #include "work_dir.h"
 #include "render/accel.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 
 #define BOXES 100000

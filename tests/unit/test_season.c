@@ -13,7 +13,7 @@
 #include "work_dir.h"
 #include "render/accel.h"
 #include "season/phenology.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 #include "season/scene_season.h"
 #include "scene/mesh.h"

@@ -9,7 +9,7 @@
 #include "harness.h"
 #include "plugin/plugin_host.h"
 #include "scene/heightfield.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 #include "site/site_frame.h"
 #include "work_dir.h"

@@ -12,7 +12,7 @@
 #include "scene_fixture.h"
 #include "work_dir.h"
 #include "season/phenology.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 #include "season/scene_spring.h"
 

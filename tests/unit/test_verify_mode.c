@@ -7,7 +7,7 @@
 #include "harness.h"
 #include "render/film.h"
 #include "render/render.h"
-#include "scene/shapes.h"
+#include "scene_build/shapes.h"
 
 #define HALF_WIDTH 0.2 /* of the pixel's footprint on the ground, metres */
 #define EDGE 0.6       /* share of the pixel's width the quad covers, from the left */

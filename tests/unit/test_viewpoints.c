@@ -7,7 +7,7 @@
 
 #include "harness.h"
 #include "work_dir.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 
 static const char *scene_text =

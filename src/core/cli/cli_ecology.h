@@ -4,7 +4,7 @@
 #define SYLVA_CLI_ECOLOGY_H
 
 #include "cli/cli_scene.h"
-#include "scene/ecology_session.h"
+#include "scene_build/ecology_session.h"
 
 typedef struct cli_ecology {
     cli_scene base;           /* owned: registry, scene file, scene built without the ecology */

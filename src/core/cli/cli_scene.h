@@ -6,7 +6,7 @@
 
 #include "plugin/plugin_host.h"
 #include "scene/scene.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 #include "util/phase_times.h"
 

@@ -12,7 +12,7 @@
 #include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "io/atomic_file.h"
-#include "scene/ecology_maps.h"
+#include "scene_build/ecology_maps.h"
 
 static void factors_usage(FILE *out)
 {

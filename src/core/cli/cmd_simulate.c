@@ -13,7 +13,7 @@
 #include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "io/atomic_file.h"
-#include "scene/ecology_maps.h"
+#include "scene_build/ecology_maps.h"
 #include "io/population_plot.h"
 #include "util/progress.h"
 

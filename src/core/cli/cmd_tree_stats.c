@@ -15,7 +15,7 @@
 #include "plugin/plugin_host.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"
-#include "scene/plugin_call.h"
+#include "scene_build/plugin_call.h"
 #include "scene_file/scene_file.h"
 
 static void tree_stats_usage(FILE *out)

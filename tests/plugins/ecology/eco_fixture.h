@@ -12,7 +12,7 @@
 #include "eco_sim.h"
 #include "eco_species.h"
 #include "harness.h"
-#include "scene/host.h"
+#include "scene_build/host.h"
 
 /* A heightfield of nx x ny nodes `spacing` apart starting at (x0, y0), heights from z(x, y). */
 typedef double (*eco_height_fn)(double x, double y);

@@ -8,8 +8,8 @@
 
 #include "harness.h"
 #include "plugin/plugin_host.h"
-#include "scene/ecology_session.h"
-#include "scene/scene_build.h"
+#include "scene_build/ecology_session.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 
 #define SCENES SYLVA_TEST_DATA_DIR "/plugins/ecology/scenes"

@@ -19,7 +19,7 @@
 #include "plugin/plugin_host.h"
 #include "render/accel.h"
 #include "scene/scene.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 
 #define BIG_SIDE 10000u

@@ -16,7 +16,7 @@
 #include "harness.h"
 #include "plugin/plugin_host.h"
 #include "scene/scene.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene/heightfield.h"
 #include "scene_file/scene_file.h"
 #include "render/accel.h"

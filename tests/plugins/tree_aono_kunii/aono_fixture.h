@@ -12,7 +12,7 @@
 
 #include "aono_config.h"
 #include "aono_grow.h"
-#include "scene/host.h"
+#include "scene_build/host.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"
 #include "util/arena.h"

@@ -22,7 +22,7 @@
 #include "lsys_turtle.h"
 #include "plugin/plugin_host.h"
 #include "scene/scene.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 
 #if defined(__SANITIZE_ADDRESS__)

@@ -12,10 +12,10 @@
 #include "branch_law.h"
 #include "lsys_derive.h"
 #include "plugin/plugin_host.h"
-#include "scene/host.h"
+#include "scene_build/host.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 
 static plugin_registry *registry(void)

@@ -8,7 +8,7 @@
 #include "harness.h"
 #include "work_dir.h"
 #include "plugin/plugin_host.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 #include "vessel_mesh.h"
 #include "vessel_test_util.h"

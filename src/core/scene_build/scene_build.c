@@ -1,5 +1,5 @@
 /* scene_build.c — running the scene file through the plugins into a scene graph. */
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -7,17 +7,17 @@
 #include <string.h>
 
 #include "io/image_io.h"
-#include "scene/ecology_session.h"
+#include "scene_build/ecology_session.h"
 #include "site/ground_departure.h"
-#include "scene/host.h"
-#include "scene/plugin_call.h"
-#include "scene/scene_ground.h"
+#include "scene_build/host.h"
+#include "scene_build/plugin_call.h"
+#include "scene_build/scene_ground.h"
 #include "season/scene_season.h"
 #include "season/scene_spring.h"
-#include "scene/scene_tree_variants.h"
-#include "scene/shapes.h"
+#include "scene_build/scene_tree_variants.h"
+#include "scene_build/shapes.h"
 #include "site/terrain_extent.h"
-#include "scene/terrain_site.h"
+#include "scene_build/terrain_site.h"
 
 /* Loads an image file as an RGBA8 texture. */
 static int32_t load_texture(scene *s, const char *path, err_buf *err)

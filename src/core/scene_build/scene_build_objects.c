@@ -12,7 +12,7 @@
 #include <string.h>
 
 #include "model/model_import.h"
-#include "scene/scene_build.h"
+#include "scene_build/scene_build.h"
 #include "scene_file/shape_index.h"
 #include "site/terrain_extent.h"
 

@@ -1,6 +1,6 @@
 /* plugin_call.c — opening a plugin for one part of a scene, its requests, and its failures in
  * one format (plugin_call.h). */
-#include "scene/plugin_call.h"
+#include "scene_build/plugin_call.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -1,6 +1,6 @@
 /* scene_tree_variants.c — a species' variants made in parallel, kept in index order
  * (scene_tree_variants.h). */
-#include "scene/scene_tree_variants.h"
+#include "scene_build/scene_tree_variants.h"
 
 #include <stdlib.h>
 

@@ -1,5 +1,5 @@
 /* ecology_maps.c — factor maps and plant maps on a raster canvas. */
-#include "scene/ecology_maps.h"
+#include "scene_build/ecology_maps.h"
 
 #include <math.h>
 #include <stdio.h>

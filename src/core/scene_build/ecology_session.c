@@ -1,6 +1,6 @@
 /* ecology_session.c — the scene's ecology plugin opened through plugin_call, its
  * "sylva.ecology.v1" run, and the run's calls. */
-#include "scene/ecology_session.h"
+#include "scene_build/ecology_session.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -6,7 +6,7 @@
 #define SYLVA_SCENE_BUILD_H
 
 #include "plugin/plugin_host.h"
-#include "scene/build_options.h"
+#include "scene_build/build_options.h"
 #include "scene/scene.h"
 #include "scene_file/scene_file.h"
 

@@ -1,6 +1,6 @@
 /* host.c — the host API table given to plugins. Every function checks its arguments: a plugin's
  * mistake becomes an error sentence, never a crash in the host. */
-#include "scene/host.h"
+#include "scene_build/host.h"
 
 #include <limits.h>
 #include <stdio.h>

@@ -12,8 +12,8 @@
 #define SYLVA_ECOLOGY_SESSION_H
 
 #include "plugin/plugin_host.h"
-#include "scene/build_options.h"
-#include "scene/plugin_call.h"
+#include "scene_build/build_options.h"
+#include "scene_build/plugin_call.h"
 
 typedef struct ecology_session {
     const scene_file *sf;               /* borrowed */

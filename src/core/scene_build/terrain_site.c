@@ -1,5 +1,5 @@
 /* terrain_site.c — a site's terrain refused when it lies far from the site origin (terrain_site.h). */
-#include "scene/terrain_site.h"
+#include "scene_build/terrain_site.h"
 
 #include <math.h>
 #include <stdio.h>

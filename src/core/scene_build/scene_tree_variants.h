@@ -5,7 +5,7 @@
 #ifndef SYLVA_SCENE_TREE_VARIANTS_H
 #define SYLVA_SCENE_TREE_VARIANTS_H
 
-#include "scene/plugin_call.h"
+#include "scene_build/plugin_call.h"
 
 /* Makes variants 0..count-1 of species sp through c (opened with
  * plugin_call_open_tree) and adds them to s as prototypes in index order, counting them in

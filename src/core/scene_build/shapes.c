@@ -1,6 +1,6 @@
 /* shapes.c — tessellating the built-in shapes. Every shape is closed or single-sided with its
  * normal toward +Z (quad, disk) and carries uvs in [0, 1]. */
-#include "scene/shapes.h"
+#include "scene_build/shapes.h"
 
 #include <math.h>
 #include <stdlib.h>

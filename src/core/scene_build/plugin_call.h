@@ -19,7 +19,7 @@
 #define SYLVA_PLUGIN_CALL_H
 
 #include "plugin/plugin_host.h"
-#include "scene/host.h"
+#include "scene_build/host.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"
 #include "scene_file/scene_file.h"

@@ -1,7 +1,7 @@
 /* scene_ground.c — heights above ground against the built terrain (scene_ground.h), measured
  * from the surface as it is drawn (the triangulated heightfield), so a camera 1.6 m above
  * ground stands 1.6 m above the rendered ground. */
-#include "scene/scene_ground.h"
+#include "scene_build/scene_ground.h"
 
 #include <math.h>
 

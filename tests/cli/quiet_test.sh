@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# quiet_test.sh SYLVA DIR SCENE — with -q a command prints only warnings and errors: every
-# command that takes -q, run on SCENE (whose terrain plugin logs information lines while it
-# builds), must leave stderr empty; without -q, render shows the plugin's information lines.
+# quiet_test.sh SYLVA DIR SCENE GEO_SCENE — with -q a command prints only warnings and errors:
+# every command that takes -q, run on SCENE (whose terrain plugin logs information lines while
+# it builds), must leave stderr empty; without -q, render shows the plugin's information lines.
+# GEO_SCENE's DTM is in degrees and its site left to the DTM: the loader's line saying which UTM
+# zone it chose is shown by probe, and left out by probe -q.
 set -uo pipefail
-sylva=$1 dir=$2 scene=$3
+sylva=$1 dir=$2 scene=$3 geo_scene=$4
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir" || exit 1
 cp "$scene" scene.yaml && echo "photo: {file: plate.png}" >> scene.yaml || exit 1
 fail() { echo "$*" >&2; exit 1; }
@@ -26,6 +28,10 @@ quiet export-pov export-pov scene.yaml -q -o x.pov
 quiet probe probe scene.yaml 0 0 -q
 quiet ztv ztv scene.yaml -q -o ztv --cell 20
 quiet montage montage scene.yaml -q -o montage
+err=$("$sylva" probe "$geo_scene" 499660 3762300 2>&1 >/dev/null) || fail "probe on a geographic DTM failed: $err"
+grep -q "the site CRS is the UTM zone of its centre" <<<"$err" ||
+  fail "probe without -q does not say which UTM zone the site took: $err"
+quiet probe-geographic probe "$geo_scene" 499660 3762300 -q
 if command -v povray >/dev/null; then
   quiet crosscheck crosscheck scene.yaml -q -o crosscheck --size 16x12 --spp 1
 fi

@@ -9,10 +9,12 @@
 #include "geometry/ground_cover_place.h"
 #include "util/progress.h"
 
-/* The commands that draw no picture, for which a scene needs no camera: section. */
-static unsigned load_flags(const char *cmd)
+/* The commands that draw no picture, for which a scene needs no camera: section; a quiet run's
+ * loader prints no info lines. */
+static unsigned load_flags(const char *cmd, const build_options *opt)
 {
-    return cmd && (!strcmp(cmd, "ztv") || !strcmp(cmd, "probe")) ? SCENE_FILE_NO_CAMERA : 0;
+    unsigned flags = cmd && (!strcmp(cmd, "ztv") || !strcmp(cmd, "probe")) ? SCENE_FILE_NO_CAMERA : 0;
+    return flags | (opt && opt->quiet ? SCENE_FILE_QUIET : 0);
 }
 
 int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const char *viewpoint,
@@ -23,7 +25,7 @@ int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const 
     double t0 = progress_now();
     if (!(c->reg = plugin_registry_open(&err))) return cli_fail(cmd, &err, ERR_INTERNAL);
     /* Problems of the scene file speak of it themselves. */
-    if (!(c->sf = scene_file_load_with(scene_path, c->reg, load_flags(cmd), &err))) return cli_fail(NULL, &err, ERR_INPUT);
+    if (!(c->sf = scene_file_load_with(scene_path, c->reg, load_flags(cmd, opt), &err))) return cli_fail(NULL, &err, ERR_INPUT);
     if (viewpoint && scene_file_use_viewpoint(c->sf, viewpoint, &err)) return cli_fail(cmd, &err, ERR_USAGE);
     if (season && scene_file_use_season(c->sf, season, &err)) return cli_fail(cmd, &err, ERR_USAGE);
     build_options bo = opt ? *opt : (build_options){0};

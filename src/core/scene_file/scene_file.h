@@ -23,6 +23,8 @@ scene_file *scene_file_load(const char *path, const struct plugin_registry *plug
 /* Flags of scene_file_load_with. */
 #define SCENE_FILE_NO_CAMERA 1u /* the camera: section may be left out: for a command that draws no
                                    picture (ztv, probe) */
+#define SCENE_FILE_QUIET 2u     /* no info lines on stderr (what the loader chose for a left-out
+                                   key, e.g. the site's UTM zone): a command's -q */
 /* scene_file_load with flags (0: as scene_file_load). */
 scene_file *scene_file_load_with(const char *path, const struct plugin_registry *plugins, unsigned flags,
                                  err_buf *err);

@@ -3,6 +3,7 @@
  * the DTM footprint's centre rounded to whole metres). It is read before every section that
  * gives positions, and opens the site frame they convert map coordinates with. Without a site
  * section the scene is in local metres only and nothing here runs. */
+#include "scene_file/scene_file.h"
 #include "scene_file/scene_file_loader.h"
 
 #include <math.h>
@@ -30,10 +31,11 @@ static const char *crs_from_dtm(loader *L, const ynode *dtm, const char *path, c
     }
     if (!d->geographic) return d->crs_wkt;
     int epsg = site_utm_epsg(d->centre[0], d->centre[1]);
-    fprintf(stderr,
-            "sylva: site: the DTM '%s' is in degrees (%s); the site CRS is the UTM zone of its "
-            "centre (%.4f, %.4f): EPSG:%d (give site: crs: to choose another)\n",
-            path, d->crs_name, d->centre[0], d->centre[1], epsg);
+    if (!(L->flags & SCENE_FILE_QUIET))
+        fprintf(stderr,
+                "sylva: site: the DTM '%s' is in degrees (%s); the site CRS is the UTM zone of its "
+                "centre (%.4f, %.4f): EPSG:%d (give site: crs: to choose another)\n",
+                path, d->crs_name, d->centre[0], d->centre[1], epsg);
     const char *text = sf_arena_printf(L->a, "EPSG:%d", epsg);
     if (!text) sf_out_of_memory(L);
     return text;

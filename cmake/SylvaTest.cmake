@@ -1,6 +1,7 @@
 # SylvaTest.cmake — how a test joins the suite: every ctest test is registered by
 # sylva_add_test() as <area>.<case> with labels from one list, so `ctest -L unit` stays fast and
-# any one test can run alone (`ctest -R '^unit\.sky$'`).
+# any one test can run alone (`ctest -R '^unit\.sky\.'`: each TEST_CASE of a harness executable
+# is a test of its own, sylva_add_test_cases).
 #
 # Labels:
 #   unit        the core's own tests and the command line's contract; seconds in all

@@ -1,6 +1,7 @@
 # SylvaTest.cmake — how a test joins the suite: every ctest test is registered by
 # sylva_add_test() as <area>.<case> with labels from one list, so `ctest -L unit` stays fast and
-# any one test can run alone (`ctest -R '^unit\.sky$'`).
+# any one test can run alone (`ctest -R '^unit\.sky\.'`: each TEST_CASE of a harness executable
+# is a test of its own, sylva_add_test_cases).
 #
 # Labels:
 #   unit        the core's own tests and the command line's contract; seconds in all
@@ -115,4 +116,25 @@ function(sylva_add_test_cases)
   if(C_SHARED_DATA_CASES)
     message(FATAL_ERROR "sylva_add_test_cases: ${C_SOURCE} has no TEST_CASE ${C_SHARED_DATA_CASES}")
   endif()
+endfunction()
+
+# sylva_check_headers(TARGET name FOLDERS folder...) builds, as the object library TARGET (part
+# of the default build), one generated .c per header of each src/core/<folder>/ that includes
+# that header alone, twice (the second time through its include guard): a header that needs
+# another included before it, or lacks its guard, fails the build naming it.
+function(sylva_check_headers)
+  cmake_parse_arguments(PARSE_ARGV 0 H "" "TARGET" "FOLDERS")
+  set(sources "")
+  foreach(folder ${H_FOLDERS})
+    file(GLOB headers CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/src/core/${folder}/*.h)
+    foreach(header ${headers})
+      get_filename_component(name ${header} NAME_WE)
+      set(source ${CMAKE_CURRENT_BINARY_DIR}/${H_TARGET}/${folder}_${name}.c)
+      file(CONFIGURE OUTPUT ${source} CONTENT
+           "/* generated: ${folder}/${name}.h compiles alone */\n#include \"${folder}/${name}.h\"\n#include \"${folder}/${name}.h\"\n")
+      list(APPEND sources ${source})
+    endforeach()
+  endforeach()
+  add_library(${H_TARGET} OBJECT ${sources})
+  target_link_libraries(${H_TARGET} PRIVATE sylva_core)
 endfunction()

@@ -20,23 +20,6 @@
 
 #define HEATMAP_SCALE_OVER 5.0 /* the heatmap turns white at this many times the over threshold */
 
-static const char *const class_names[PIXEL_CLASS_COUNT] = {"sky", "terrain", "bark", "leaves", "objects"};
-
-const char *crosscheck_class_name(int k)
-{
-    return k >= 0 && k < PIXEL_CLASS_COUNT ? class_names[k] : "unknown";
-}
-
-void crosscheck_default_thresholds(crosscheck_thresholds *t)
-{
-    t->min_coverage_agreement = 0.995;
-    t->max_mae = 0.002;
-    t->over_error = 0.02;
-    t->max_over_fraction = 0.005;
-    t->max_class_mae = 0.005;
-    t->min_class_share = 0.01;
-}
-
 /* folder and file name of path ("." when it has no folder). */
 static void split_folder(const char *path, char *folder, size_t nf, const char **name)
 {
@@ -132,7 +115,7 @@ static void judge(crosscheck_result *r, const crosscheck_thresholds *t)
         append(v, vn, " %.3f %% of pixels differ by more than %.3g (> %.3g %%);", 100 * r->overall.over_fraction,
                t->over_error, 100 * t->max_over_fraction);
     for (int k = 0; k < PIXEL_CLASS_COUNT; k++)
-        if (!r->class_pass[k]) append(v, vn, " %s MAE %.3g > %.3g;", class_names[k], r->classes[k].mae, t->max_class_mae);
+        if (!r->class_pass[k]) append(v, vn, " %s MAE %.3g > %.3g;", crosscheck_class_name(k), r->classes[k].mae, t->max_class_mae);
     size_t len = strlen(v);
     if (len && v[len - 1] == ';') v[len - 1] = '\0';
 }

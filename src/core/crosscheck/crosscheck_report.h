@@ -6,7 +6,8 @@
 #ifndef SYLVA_CROSSCHECK_REPORT_H
 #define SYLVA_CROSSCHECK_REPORT_H
 
-#include "crosscheck/crosscheck.h"
+#include "crosscheck/crosscheck_result.h"
+#include "util/err.h"
 
 /* Writes out_dir/report.html and out_dir/metrics.json for r; heatmap_scale is the error at
  * which difference.png turns white. Returns 0 or -1 with err set. */

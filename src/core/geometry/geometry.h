@@ -10,7 +10,12 @@
  *   texture_lookup.h  the nearest texel of a texture, sRGB decoding
  *   light_summary.h   the sun and the sky, with the ambient term and the sky's mean radiance
  *   sky_preetham.h    the Preetham daylight sky model the light summary evaluates
+ *   atmosphere.h      the physical sky and aerial perspective (single scattering over a
+ *                     spherical Earth) the light summary uses with the physical sky
  *   camera_frame.h    the camera's forward, right and up vectors, turned by its roll
+ *   camera_project.h  the camera as a photograph sees it: a world point to a pixel and back,
+ *                     with radial lens distortion
+ *   crown_hull.h      the envelope of a plant's crown, for plants a few pixels across
  *   ground_cover.h    what covers the ground at any point: continuous weights of seven kinds
  *   ground_texture.h  the ground's albedo and micro-relief from those weights, filtered
  *   ground_cover_place.h  grass and herbs near the camera (with ground_cover_models.h, the
@@ -23,9 +28,14 @@
 #ifndef SYLVA_GEOMETRY_H
 #define SYLVA_GEOMETRY_H
 
+#include "geometry/atmosphere.h"
 #include "geometry/camera_frame.h"
+#include "geometry/camera_project.h"
+#include "geometry/crown_hull.h"
 #include "geometry/cutout.h"
 #include "geometry/ground_cover.h"
+#include "geometry/ground_cover_models.h"
+#include "geometry/ground_cover_place.h"
 #include "geometry/ground_texture.h"
 #include "geometry/light_summary.h"
 #include "geometry/sky_preetham.h"

@@ -637,16 +637,6 @@ const char *plugin_registry_folder_at(const plugin_registry *reg, uint32_t i)
     return reg && i < reg->n_folders ? reg->folders[i].given : NULL;
 }
 
-const char *plugin_kind_name(sylva_kind kind)
-{
-    switch (kind) {
-    case SYLVA_KIND_TERRAIN: return "terrain";
-    case SYLVA_KIND_TREE: return "tree";
-    case SYLVA_KIND_ECOLOGY: return "ecology";
-    }
-    return "unknown";
-}
-
 /* Appends to err->msg, keeping it terminated; once full, later text is dropped. */
 static void SYLVA_PRINTF(2, 3) err_append(err_buf *err, const char *fmt, ...)
 {

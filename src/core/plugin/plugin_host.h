@@ -21,6 +21,7 @@
 
 #include <stdio.h>
 
+#include "plugin/plugin_names.h" /* names and kinds, with the descriptors of sylva/plugin.h */
 #include "sylva/plugin.h"
 #include "util/err.h"
 
@@ -96,17 +97,10 @@ int plugin_presets_check(const sylva_plugin *d, err_buf *err);
  * it sets (name, value, unit). Prints nothing when the descriptor has no presets. */
 void plugin_presets_print(FILE *out, const sylva_plugin *d, int indent);
 
-const char *plugin_kind_name(sylva_kind kind); /* "terrain", "tree", "ecology", "unknown" */
-
 /* The folders the registry searched, most important first, as they were given (a folder named
  * twice is listed once). Strings owned by the registry. */
 uint32_t plugin_registry_folder_count(const plugin_registry *reg);
 const char *plugin_registry_folder_at(const plugin_registry *reg, uint32_t i);
-
-/* 1 when `name` is a well-formed plugin, parameter or section name: [a-z][a-z0-9_]*, at most
- * PLUGIN_NAME_MAX bytes; 0 otherwise (NULL included). */
-#define PLUGIN_NAME_MAX 63
-int plugin_name_is_valid(const char *name);
 
 const char *plugin_param_type_name(sylva_ptype type); /* "int", "real", ..., "unknown" */
 

@@ -8,8 +8,8 @@
 #include <sys/stat.h>
 
 #include "io/atomic_file.h"
-#include "plugin/plugin_host.h"
 #include "plugin/plugin_manifest.h"
+#include "plugin/plugin_names.h"
 
 #define MANIFEST_HEADER "sylva-plugin-manifest 1"
 

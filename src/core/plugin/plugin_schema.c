@@ -57,17 +57,6 @@ const char *plugin_param_type_name(sylva_ptype type)
     return tr ? tr->name : "unknown";
 }
 
-int plugin_name_is_valid(const char *name)
-{
-    if (!name || !(name[0] >= 'a' && name[0] <= 'z')) return 0;
-    size_t n = 1;
-    for (; name[n] && n <= PLUGIN_NAME_MAX; n++) {
-        char c = name[n];
-        if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_')) return 0;
-    }
-    return n <= PLUGIN_NAME_MAX;
-}
-
 /* --------------------------------------------------------------------------------------------
  * Ranges
  */

@@ -1,8 +1,7 @@
-/* accel.c — building Embree scenes from the scene graph and the scene geometry, the cut-out
- * filters, Embree's error record, hit shading. */
+/* accel.c — building Embree scenes from the scene graph and the scene geometry (each mesh by
+ * accel_mesh.h), hit shading. */
 #include "render/accel.h"
 
-#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,71 +13,6 @@
 #include "render/bark_bump.h"
 #include "geometry/ground_texture.h"
 #include "render/crown_proxy.h"
-
-/* --- Embree's errors --------------------------------------------------------------------- */
-
-/* The first error Embree reported on the device. Embree calls the callback from any thread,
- * so the record is taken under a lock and read under it. */
-struct accel_errors {
-    pthread_mutex_t lock;
-    enum RTCError code;        /* RTC_ERROR_NONE until the first error */
-    char message[256];
-};
-
-static void embree_error(void *user, enum RTCError code, const char *str)
-{
-    struct accel_errors *e = user;
-    pthread_mutex_lock(&e->lock);
-    if (e->code == RTC_ERROR_NONE && code != RTC_ERROR_NONE) {
-        e->code = code;
-        snprintf(e->message, sizeof e->message, "%s", str ? str : "");
-    }
-    pthread_mutex_unlock(&e->lock);
-}
-
-int accel_device_error(const accel *a, err_buf *err)
-{
-    struct accel_errors *e = a->errors;
-    if (!e) return 0;
-    pthread_mutex_lock(&e->lock);
-    enum RTCError code = e->code;
-    char message[sizeof e->message];
-    memcpy(message, e->message, sizeof message);
-    pthread_mutex_unlock(&e->lock);
-    if (code == RTC_ERROR_NONE) return 0;
-    if (code == RTC_ERROR_OUT_OF_MEMORY) return err_nomem(err, "out of memory in Embree: %s", message);
-    return err_set(err, "Embree error %d: %s", (int)code, message);
-}
-
-/* --- the cut-out filter ------------------------------------------------------------------- */
-
-/* Embree's RTCHitN is a structure of arrays, each N long, in this order (rtcore_ray.h); its
- * accessors are C++ only. */
-typedef enum hitn_field { HITN_NG_X, HITN_NG_Y, HITN_NG_Z, HITN_U, HITN_V, HITN_PRIM_ID, HITN_GEOM_ID } hitn_field;
-
-static float hitn_float(const struct RTCHitN *hit, unsigned n, unsigned i, hitn_field f)
-{
-    return ((const float *)hit)[(size_t)f * n + i];
-}
-
-static unsigned hitn_uint(const struct RTCHitN *hit, unsigned n, unsigned i, hitn_field f)
-{
-    return ((const unsigned *)hit)[(size_t)f * n + i];
-}
-
-/* Rejects the hits that fall where the cut-out's texture is transparent, by the part's own test
- * (one record per triangle and the textures' coverage masks: cutout.h). */
-static void cutout_filter(const struct RTCFilterFunctionNArguments *args)
-{
-    const geom_info *g = args->geometryUserPtr;
-    const unsigned n = args->N;
-    for (unsigned i = 0; i < n; i++) {
-        if (args->valid[i] != -1) continue;
-        if (!cutout_part_point_kept(&g->part, hitn_uint(args->hit, n, i, HITN_PRIM_ID),
-                                    hitn_float(args->hit, n, i, HITN_U), hitn_float(args->hit, n, i, HITN_V)))
-            args->valid[i] = 0;
-    }
-}
 
 /* --- what a hit is ---------------------------------------------------------------------- */
 
@@ -92,55 +26,6 @@ uint32_t accel_hit_object(const accel *a, const struct RTCRayHit *rh)
 
 /* --- building ----------------------------------------------------------------------------- */
 
-/* Adds one part of m (its opaque or its cut-out triangles) to rs as geometry `id`. Attaches
- * nothing when the part has no triangles. */
-static int add_part(accel *a, RTCScene rs, const mesh *m, accel_part part, geom_kind kind, unsigned id,
-                    unsigned mask, geom_info *g, err_buf *err)
-{
-    int cutouts = part == ACCEL_PART_CUTOUT;
-    *g = (geom_info){.kind = kind, .mesh = m, .scene = a->scene, .alpha = cutouts};
-    if (cutout_part_build(a->scene, m, cutouts, &g->part, err)) return -1;
-    if (!g->part.n) return 0;
-    RTCGeometry geom = rtcNewGeometry(a->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    if (!geom) return accel_device_error(a, err) ? -1 : err_set(err, "Embree could not create a triangle geometry");
-    rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, m->pos, 0,
-                               3 * sizeof(float), m->nv);
-    rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, g->part.tri, 0,
-                               3 * sizeof(uint32_t), g->part.n);
-    rtcSetGeometryUserData(geom, g);
-    rtcSetGeometryMask(geom, mask);
-    if (cutouts) {
-        rtcSetGeometryIntersectFilterFunction(geom, cutout_filter);
-        rtcSetGeometryOccludedFilterFunction(geom, cutout_filter);
-    }
-    rtcCommitGeometry(geom);
-    rtcAttachGeometryByID(rs, geom, id);
-    rtcReleaseGeometry(geom);
-    return accel_device_error(a, err);
-}
-
-/* Both parts of m at ids first (opaque) and first + 1 (cut-out), into g[0] and g[1]. */
-static int add_mesh(accel *a, RTCScene rs, const mesh *m, geom_kind kind, unsigned first, unsigned mask,
-                    geom_info g[ACCEL_PARTS], err_buf *err)
-{
-    if (add_part(a, rs, m, ACCEL_PART_OPAQUE, kind, first + ACCEL_PART_OPAQUE, mask, &g[ACCEL_PART_OPAQUE], err))
-        return -1;
-    return add_part(a, rs, m, ACCEL_PART_CUTOUT, kind, first + ACCEL_PART_CUTOUT, mask, &g[ACCEL_PART_CUTOUT], err);
-}
-
-/* One BVH holding mesh m (its two parts in g[0] and g[1]), for instances to share. */
-int accel_build_shared(accel *a, const mesh *m, geom_kind kind, RTCScene *out, geom_info g[ACCEL_PARTS],
-                       err_buf *err)
-{
-    RTCScene ps = rtcNewScene(a->device);
-    if (!ps) return accel_device_error(a, err) ? -1 : err_set(err, "Embree could not create a scene");
-    *out = ps;
-    rtcSetSceneBuildQuality(ps, RTC_BUILD_QUALITY_MEDIUM);
-    if (add_mesh(a, ps, m, kind, 0, ~0u, g, err)) return -1; /* the instance's mask decides */
-    rtcCommitScene(ps);
-    return accel_device_error(a, err);
-}
-
 static int build_prototypes(accel *a, const scene *s, err_buf *err)
 {
     for (uint32_t p = 0; p < s->n_prototypes; p++)
@@ -151,19 +36,6 @@ static int build_prototypes(accel *a, const scene *s, err_buf *err)
         if (accel_build_shared(a, s->models[m].mesh, GEOM_OBJECT, &a->model_scenes[m], &a->model_geoms[m * ACCEL_PARTS],
                          err))
             return -1;
-    return 0;
-}
-
-int accel_add_instance(accel *a, RTCScene sc, const xform3x4 *xf, unsigned id, unsigned mask, err_buf *err)
-{
-    RTCGeometry g = rtcNewGeometry(a->device, RTC_GEOMETRY_TYPE_INSTANCE);
-    if (!g) return accel_device_error(a, err) ? -1 : err_nomem(err, "out of memory building the BVH");
-    rtcSetGeometryInstancedScene(g, sc);
-    rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, &xf->m[0][0]);
-    rtcSetGeometryMask(g, mask);
-    rtcCommitGeometry(g);
-    rtcAttachGeometryByID(a->top, g, id);
-    rtcReleaseGeometry(g);
     return 0;
 }
 
@@ -182,18 +54,18 @@ static int build_top(accel *a, const scene *s, err_buf *err)
             terrain_apron_build(s->terrain, s->terrain_material, terrain_apron_reach(s->terrain, eye),
                                 &a->apron_mesh, err))
             return -1;
-        if (a->apron_mesh && add_part(a, a->top, a->apron_mesh, ACCEL_PART_OPAQUE, GEOM_TERRAIN, ACCEL_TOP_APRON,
-                                      ACCEL_MASK_GROUND, &a->top_geoms[ACCEL_TOP_APRON], err))
+        if (a->apron_mesh && accel_add_part(a, a->top, a->apron_mesh, ACCEL_PART_OPAQUE, GEOM_TERRAIN, ACCEL_TOP_APRON,
+                                            ACCEL_MASK_GROUND, &a->top_geoms[ACCEL_TOP_APRON], err))
             return -1;
-        if (a->water_mesh && add_part(a, a->top, a->water_mesh, ACCEL_PART_OPAQUE, GEOM_WATER, ACCEL_TOP_WATER,
-                                      ACCEL_MASK_GROUND, &a->top_geoms[ACCEL_TOP_WATER], err))
+        if (a->water_mesh && accel_add_part(a, a->top, a->water_mesh, ACCEL_PART_OPAQUE, GEOM_WATER, ACCEL_TOP_WATER,
+                                            ACCEL_MASK_GROUND, &a->top_geoms[ACCEL_TOP_WATER], err))
             return -1;
     }
     for (uint32_t o = 0; o < s->n_objects; o++) {
         const object *ob = &s->objects[o];
         unsigned id = accel_top_object_id(o, ACCEL_PART_OPAQUE);
         unsigned mask = ob->development ? ACCEL_MASK_DEVELOPMENT : ACCEL_MASK_OBJECT;
-        if (ob->mesh ? add_mesh(a, a->top, ob->mesh, GEOM_OBJECT, id, mask, &a->top_geoms[id], err)
+        if (ob->mesh ? accel_add_mesh(a, a->top, ob->mesh, GEOM_OBJECT, id, mask, &a->top_geoms[id], err)
                      : accel_add_instance(a, a->model_scenes[ob->model], &ob->xf, id, mask, err))
             return -1;
     }
@@ -208,9 +80,8 @@ int accel_build_open(accel *a, const scene *s, unsigned threads, err_buf *err)
 {
     memset(a, 0, sizeof *a);
     a->scene = s;
-    a->errors = calloc(1, sizeof *a->errors);
+    a->errors = accel_errors_new();
     if (!a->errors) return err_nomem(err, "out of memory building the BVH");
-    pthread_mutex_init(&a->errors->lock, NULL);
     char config[64];
     snprintf(config, sizeof config, "threads=%u", threads);
     a->device = rtcNewDevice(config);
@@ -219,7 +90,7 @@ int accel_build_open(accel *a, const scene *s, unsigned threads, err_buf *err)
         accel_free(a);
         return err_set(err, "Embree could not create a device (error %d)", code);
     }
-    rtcSetDeviceErrorFunction(a->device, embree_error, a->errors);
+    accel_errors_watch(a->errors, a->device);
 
     a->proto_scenes = calloc(s->n_prototypes ? s->n_prototypes : 1, sizeof(RTCScene));
     a->proto_geoms = calloc(s->n_prototypes ? (size_t)s->n_prototypes * ACCEL_PARTS : 1, sizeof(geom_info));
@@ -282,8 +153,7 @@ void accel_free(accel *a)
     mesh_free(a->water_mesh);
     mesh_free(a->apron_mesh);
     if (a->device) rtcReleaseDevice(a->device);
-    if (a->errors) pthread_mutex_destroy(&a->errors->lock);
-    free(a->errors);
+    accel_errors_free(a->errors);
     memset(a, 0, sizeof *a);
 }
 

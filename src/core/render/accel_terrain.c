@@ -7,6 +7,7 @@
 #include "geometry/cutout.h"
 #include "geometry/terrain_mesh.h"
 #include "geometry/texture_lookup.h"
+#include "render/accel_errors.h"
 #include "render/ground_shade.h"
 
 /* Where a grid hit lies: the grid, the tessellation's triangle in it, and the point's position

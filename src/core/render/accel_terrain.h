@@ -22,7 +22,8 @@
 
 #include <embree3/rtcore.h>
 
-#include "render/accel.h"
+#include "render/accel_types.h"
+#include "util/err.h"
 
 #define ACCEL_TERRAIN_TILE 32766u /* cells along a tile's side: Embree's largest grid */
 

@@ -17,7 +17,7 @@
 #ifndef SYLVA_BARK_BUMP_H
 #define SYLVA_BARK_BUMP_H
 
-#include "render/accel.h"
+#include "render/accel_types.h"
 
 #define BARK_BUMP_SLOPE 3.0f
 #define BARK_BUMP_MIN_COSINE 0.1f

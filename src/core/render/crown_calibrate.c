@@ -1,5 +1,7 @@
 /* crown_calibrate.c — the crown proxies' reflectances, calibrated so the pixels they cover keep
- * the full plants' mean radiance (crown_proxy.h). */
+ * the full plants' mean radiance (crown_calibrate.h, crown_proxy.h). */
+#include "render/crown_calibrate.h"
+
 #include <math.h>
 #include <pthread.h>
 #include <stdlib.h>

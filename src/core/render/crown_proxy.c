@@ -7,6 +7,8 @@
 #include <string.h>
 
 #include "geometry/crown_hull.h"
+#include "render/accel_errors.h"
+#include "render/accel_mesh.h"
 #include "scene/mesh.h"
 #include "util/rng.h"
 #include "util/task_pool.h"

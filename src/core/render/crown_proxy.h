@@ -35,14 +35,17 @@
  * ACCEL_MASK_PROXY (render_ctx.camera_mask, ray_mask).
  *
  * crown_proxy.c chooses the plants and builds the envelopes and their shadows; crown_calibrate.c
- * calibrates the reflectances.
+ * calibrates the reflectances (crown_calibrate.h).
  *
  * Ownership: a crown_proxies is owned by its accel (accel_free frees it); it owns the envelopes'
  * meshes, their Embree scenes and their materials. */
 #ifndef SYLVA_CROWN_PROXY_H
 #define SYLVA_CROWN_PROXY_H
 
-#include "render/integrator.h"
+#include "render/accel_types.h"
+#include "render/camera.h"
+#include "util/err.h"
+#include "util/vec3.h"
 
 typedef struct crown_proxies {
     uint32_t n_prototypes;
@@ -65,10 +68,6 @@ typedef struct crown_proxies {
  * count. Nothing when max_pixels is 0. Returns 0, or -1 with err set. */
 int crown_proxies_attach(accel *a, const camera *c, vec3 sun, double max_pixels, unsigned threads, err_buf *err);
 void crown_proxies_free(crown_proxies *p); /* accepts NULL */
-
-/* Calibrates the proxies' reflectances for ctx (its camera, lights and masks; its seed keys the
- * probe samples), as above. threads: workers. Returns 0, or -1 with err set. */
-int crown_proxies_calibrate(accel *a, const render_ctx *ctx, unsigned threads, err_buf *err);
 
 /* The context of a shadow ray that may cross envelopes: Embree's, then the transmittance so far
  * (start at 1) and the envelope triangles already counted (a triangle may be reported twice). */

@@ -33,51 +33,17 @@
  *
  * Camera rays follow the Earth's curvature when ctx->curved is on (curved_ray.h), in both modes;
  * the rays after the first hit (shadows, bounces) are straight, and a camera ray that misses
- * sees the sky in the direction it left the camera. */
+ * sees the sky in the direction it left the camera.
+ *
+ * Files: integrator_path.c the path tracer, integrator_verify.c the verification mode,
+ * integrator_aux.c the auxiliary layers, integrator_rays.h the rays all three cast;
+ * integrator.c chooses by the mode. */
 #ifndef SYLVA_INTEGRATOR_H
 #define SYLVA_INTEGRATOR_H
 
-#include "render/accel.h"
-#include "render/camera.h"
-#include "render/curved_ray.h"
-#include "render/lights.h"
-
-/* Receives every ray the integrator casts (benchmarks replay them on bare Embree). */
-typedef struct ray_recorder {
-    void (*record)(void *user, vec3 org, vec3 dir, float tfar, int shadow);
-    void *user;
-} ray_recorder;
-
-typedef struct render_ctx {
-    const accel *accel;
-    const lights *lights;
-    camera camera;
-    curved_rays curved;  /* camera rays over the curved Earth, or straight (curved.on 0) */
-    uint32_t spp, max_depth;
-    float noise_target;   /* adaptive sampling (integrate_pixel); 0: every pixel takes spp */
-    uint64_t seed;
-    int verify;
-    unsigned ray_mask;  /* the geometry rays meet (ACCEL_MASK_* bits); ~0u: all */
-    unsigned camera_mask; /* the geometry camera rays meet */
-    const ray_recorder *recorder; /* NULL, or called for each ray (single-threaded renders only) */
-} render_ctx;
-
-typedef struct pixel_result {
-    vec3 rgb;
-    float depth;
-    vec3 normal;
-    vec3 albedo;
-    uint32_t instance_id, species_id, object_id;
-    uint8_t pixel_class;  /* a pixel_class (render/film.h) */
-    uint32_t samples;     /* camera samples taken */
-    float coverage;
-    float development;
-    vec3 development_rgb;
-} pixel_result;
+#include "render/integrator_ctx.h"  /* render_ctx, pixel_result */
+#include "render/integrator_path.h" /* integrate_sample */
 
 void integrate_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, pixel_result *out);
-/* The radiance of camera sample s of pixel (x, y), as integrate_pixel sums it; *proxy (when not
- * NULL) the crown proxy its camera ray met first (index + 1), or 0. */
-vec3 integrate_sample(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t s, uint32_t *proxy);
 
 #endif

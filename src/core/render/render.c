@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "render/accel.h"
+#include "render/crown_calibrate.h"
 #include "render/crown_proxy.h"
 #include "render/integrator.h"
 #include "util/interleave.h"

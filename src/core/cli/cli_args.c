@@ -1,6 +1,5 @@
-/* cli_args.c — number and size parsing for the command line, the scene argument (and the
- * --allow-gdal-virtual choice every scene command takes), a scene file's stem and the output
- * folder. */
+/* cli_args.c — number and size parsing for the command line, the scene argument, a scene
+ * file's stem and the output folder. */
 #include "cli/cli_args.h"
 
 #include <errno.h>
@@ -10,8 +9,6 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "scene/proj_network.h"
-#include "util/file_check.h"
 
 int cli_parse_u64(const char *cmd, const char *opt, const char *s, uint64_t lo, uint64_t hi, uint64_t *out)
 {
@@ -54,11 +51,6 @@ int cli_parse_size(const char *cmd, const char *opt, const char *s, uint32_t *w,
 
 int cli_scene_argument(const char *cmd, const char *arg, const char **scene_path)
 {
-    if (!strcmp(arg, "--allow-gdal-virtual")) {
-        file_allow_gdal_virtual(1);
-        proj_network_allow(1);
-        return 0;
-    }
     if (arg[0] == '-') {
         fprintf(stderr, "sylva %s: unknown option '%s' (see sylva %s --help)\n", cmd, arg, cmd);
         return -1;

@@ -12,9 +12,7 @@
 /* Parses an unsigned integer in [lo, hi]; prints "sylva OPTION: ..." and returns -1 when bad. */
 int cli_parse_u64(const char *cmd, const char *opt, const char *s, uint64_t lo, uint64_t hi, uint64_t *out);
 /* An argument of a command that takes one scene file: an unknown option or a second file is
- * reported ("sylva CMD: ...") and gives -1; otherwise *scene_path is set and 0 returned.
- * --allow-gdal-virtual, taken here by every such command, lets the scene name GDAL virtual
- * paths, URLs and connection strings (util/file_check.h) and gives 0. */
+ * reported ("sylva CMD: ...") and gives -1; otherwise *scene_path is set and 0 returned. */
 int cli_scene_argument(const char *cmd, const char *arg, const char **scene_path);
 /* The scene file's name without its folder and extension ("scenes/a.yaml" gives "a"), written
  * into out between prefix and suffix. Returns -1 when that does not fit in n bytes. */

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cli/cli_args.h"
+#include "cli/cli_options.h"
 #include "cli/cli_outputs.h"
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
@@ -12,41 +13,19 @@
 #include "pov/pov_write.h"
 #include "util/progress.h"
 
-static void export_pov_usage(FILE *out)
-{
-    fprintf(out,
-            "usage: sylva export-pov SCENE [options]\n"
-            "Writes SCENE (a YAML scene file) as POV-Ray 3.7 scene files: OUT.pov with the camera,\n"
-            "sun, sky and includes beside it for the materials, terrain, objects, species (each\n"
-            "variant declared once as a mesh2) and plants (one `object { Species_k matrix <..> }`\n"
-            "each), plus the images of textured materials. Rendered by POV-Ray from the output\n"
-            "folder, it gives the picture of `sylva render --verify` (see docs/crosscheck.md); a scene\n"
-            "with earth.curvature on is written as seen on a flat Earth (render --flat-earth), as\n"
-            "POV-Ray cannot bend rays.\n\n"
-            "options:\n"
-            "  -o, --output FILE   OUT.pov (default: the scene's name with .pov in the current folder);\n"
-            "                      with --species also OUT.inc alone\n"
-            "  --size WxH          image size the camera's aspect ratio is written for (default: the\n"
-            "                      scene's image.width/height)\n"
-            "  --spp N             samples per pixel the render command in OUT.pov matches\n"
-            "  --species NAME      one species only: OUT.inc declares its variants (base at the\n"
-            "                      origin, growing along +Z) with their materials; OUT.pov adds a\n"
-            "                      small scene showing them side by side\n"
-            "  --variant K         with --species: variant K only (0 is the youngest)\n"
-            "  --viewpoint NAME    the view from the scene's viewpoint NAME (its viewpoints:\n"
-            "                      section) instead of its camera\n"
-            "  --season S          the plants on season S (spring, summer, autumn, winter) or\n"
-            "                      date YYYY-MM-DD, instead of the scene's season: key\n"
-            "  -q, --quiet         no progress or information lines (warnings\n"
-            "                      and errors still print)\n"
-            "  --allow-gdal-virtual let the scene name GDAL virtual paths, URLs and connection\n"
-            "                      strings (these may reach the network; refused otherwise)\n"
-            "  -v, --verbose       plugin debug messages\n"
-            "  -h, --help          this text\n\n"
-            "Prints the path of the main file written.\n"
-            "exit status: 0 done, 1 usage, 2 bad scene, plugin failure or unknown species,\n"
-            "3 output not written, 4 out of memory or internal error\n");
-}
+static const char export_pov_about[] =
+    "Writes SCENE (a YAML scene file) as POV-Ray 3.7 scene files: OUT.pov with the camera,\n"
+    "sun, sky and includes beside it for the materials, terrain, objects, species (each\n"
+    "variant declared once as a mesh2) and plants (one `object { Species_k matrix <..> }`\n"
+    "each), plus the images of textured materials. Rendered by POV-Ray from the output\n"
+    "folder, it gives the picture of `sylva render --verify` (see docs/crosscheck.md); a scene\n"
+    "with earth.curvature on is written as seen on a flat Earth (render --flat-earth), as\n"
+    "POV-Ray cannot bend rays.\n";
+
+static const char export_pov_epilogue[] =
+    "Prints the path of the main file written.\n"
+    "exit status: 0 done, 1 usage, 2 bad scene, plugin failure or unknown species,\n"
+    "3 output not written, 4 out of memory or internal error\n";
 
 int cmd_export_pov(int argc, char **argv)
 {
@@ -54,52 +33,29 @@ int cmd_export_pov(int argc, char **argv)
     const char *scene_path = NULL, *out = NULL, *species_name = NULL;
     pov_export_options po = {0};
     build_options bo = {0};
-    int64_t variant = -1;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        const char *val = i + 1 < argc ? argv[i + 1] : NULL;
-        uint64_t v;
-        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-            export_pov_usage(stdout);
-            return EXIT_OK;
-        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
-            if (!val) goto missing;
-            out = val, i++;
-        } else if (!strcmp(a, "--size")) {
-            if (!val || cli_parse_size("export-pov", a, val, &po.width, &po.height)) return EXIT_USAGE;
-            i++;
-        } else if (!strcmp(a, "--spp")) {
-            if (!val || cli_parse_u64("export-pov", a, val, 1, 1u << 20, &v)) return EXIT_USAGE;
-            po.spp = (uint32_t)v, i++;
-        } else if (!strcmp(a, "--species")) {
-            if (!val) goto missing;
-            species_name = val, i++;
-        } else if (!strcmp(a, "--variant")) {
-            if (!val || cli_parse_u64("export-pov", a, val, 0, 1u << 20, &v)) return EXIT_USAGE;
-            variant = (int64_t)v, i++;
-        } else if (!strcmp(a, "--viewpoint")) {
-            if (!val) goto missing;
-            viewpoint = val, i++;
-        } else if (!strcmp(a, "--season")) {
-            if (!val) goto missing;
-            season = val, i++;
-        } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
-            bo.quiet = 1;
-        } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
-            bo.verbose = 1;
-        } else if (cli_scene_argument("export-pov", a, &scene_path)) {
-            return EXIT_USAGE;
-        }
-        continue;
-    missing:
-        fprintf(stderr, "sylva export-pov: %s needs a value\n", a);
-        return EXIT_USAGE;
-    }
-    if (!scene_path) {
-        export_pov_usage(stderr);
-        return EXIT_USAGE;
-    }
-    if (variant >= 0 && !species_name) {
+    uint64_t variant = 0;
+    int variant_given = 0;
+    const cli_option options[] = {
+        CLI_OPT_PATH("-o, --output", "FILE", out, "OUT.pov (default: the scene's name with .pov in the current "
+                     "folder); with --species also OUT.inc alone"),
+        CLI_OPT_SIZE("--size", po.width, po.height, "image size the camera's aspect ratio is written for (default: "
+                     "the scene's image.width/height)"),
+        CLI_OPT_WHOLE("--spp", "N", po.spp, 1, 1u << 20, "samples per pixel the render command in OUT.pov matches"),
+        CLI_OPT_TEXT("--species", "NAME", species_name, "one species only: OUT.inc declares its variants (base at "
+                     "the origin, growing along +Z) with their materials; OUT.pov adds a small scene showing them "
+                     "side by side"),
+        {.names = "--variant", .type = CLI_WHOLE, .value = "K", .target = &variant, .target_size = sizeof variant,
+         .max = 1u << 20, .given = &variant_given, .help = "with --species: variant K only (0 is the youngest)"},
+        CLI_OPT_TEXT("--viewpoint", "NAME", viewpoint, CLI_HELP_VIEWPOINT),
+        CLI_OPT_TEXT("--season", "S", season, CLI_HELP_SEASON),
+        CLI_OPTS_SCENE_COMMON(bo),
+    };
+    const cli_command_spec spec = {"export-pov", "SCENE", export_pov_about, NULL, options,
+                                   sizeof options / sizeof *options, export_pov_epilogue, cli_operand_scene,
+                                   &scene_path};
+    int parsed = cli_options_parse(&spec, argc, argv);
+    if (parsed) return cli_options_status(parsed);
+    if (variant_given && !species_name) {
         fprintf(stderr, "sylva export-pov: --variant needs --species NAME\n");
         return EXIT_USAGE;
     }
@@ -140,13 +96,13 @@ int cmd_export_pov(int argc, char **argv)
                            sc->n_species ? names : " none");
             goto done;
         }
-        if (variant >= 0 && (uint64_t)variant >= sc->species[k].n_variants) {
+        if (variant_given && variant >= sc->species[k].n_variants) {
             rc = cli_failf("export-pov", ERR_INPUT, "species '%s' has variants 0 to %u; --variant %lld does not exist",
                            species_name, sc->species[k].n_variants ? sc->species[k].n_variants - 1 : 0,
                            (long long)variant);
             goto done;
         }
-        if (pov_export_species(sc, k, (int32_t)variant, out, scene_path, &st, &err)) {
+        if (pov_export_species(sc, k, variant_given ? (int32_t)variant : -1, out, scene_path, &st, &err)) {
             rc = cli_fail("export-pov", &err, ERR_OUTPUT);
             goto done;
         }

@@ -9,6 +9,7 @@
 
 #include "cli/cli_args.h"
 #include "cli/cli_ecology.h"
+#include "cli/cli_options.h"
 #include "cli/cli_outputs.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
@@ -19,38 +20,26 @@
 
 #define MAX_MAP_YEARS 64
 
-static void simulate_usage(FILE *out)
-{
-    fprintf(out,
-            "usage: sylva simulate SCENE [options]\n"
-            "Runs the scene's ecology (the plants it grows on the terrain) year by year without\n"
-            "rendering.\n\n"
-            "options:\n"
-            "  --years N           years to simulate (from the loaded state's year with --load);\n"
-            "                      default: up to the scene's `years`\n"
-            "  -o, --output FILE   the living plants as CSV: species,x,y,z,age,height,radius,vigour\n"
-            "                      (metres, years; vigour 0 to 1)\n"
-            "  --save STATE        the whole run at the end (plants, year, random streams)\n"
-            "  --load STATE        continue a run saved with --save from the same scene\n"
-            "  --stats DIR         DIR/population.csv and DIR/population.png (plants per species per\n"
-            "                      year) and DIR/map_YEAR.png (the plants seen from above)\n"
-            "  --maps Y,Y,...      the years to map with --stats (default 0,20,60,80,180 and the\n"
-            "                      last year)\n"
-            "  --threads N         threads for the tree models and the ecology's workers (default:\n"
-            "                      one per core); the plants do not depend on it\n"
-            "  -q, --quiet         no progress or information lines (warnings\n"
-            "                      and errors still print)\n"
-            "  --allow-gdal-virtual let the scene name GDAL virtual paths, URLs and connection\n"
-            "                      strings (these may reach the network; refused otherwise)\n"
-            "  -v, --verbose       plugin debug messages\n"
-            "  -h, --help          this text\n\n"
-            "A run continued from a state gives the same plants as one run without stopping.\n\n"
-            "exit status: 0 done, 1 usage, 2 bad scene or plugin failure, 3 output not written,\n"
-            "4 out of memory or internal error\n");
-}
+static const char simulate_about[] =
+    "Runs the scene's ecology (the plants it grows on the terrain) year by year without\n"
+    "rendering.\n";
 
-static int parse_years_list(const char *s, uint32_t *years, uint32_t *n)
+static const char simulate_epilogue[] =
+    "A run continued from a state gives the same plants as one run without stopping.\n\n"
+    "exit status: 0 done, 1 usage, 2 bad scene or plugin failure, 3 output not written,\n"
+    "4 out of memory or internal error\n";
+
+/* The years --maps names. */
+typedef struct year_list {
+    uint32_t year[MAX_MAP_YEARS];
+    uint32_t n;
+} year_list;
+
+/* --maps Y,Y,...: a CLI_CUSTOM option's parser into a year_list. */
+static int parse_years_list(const char *cmd, const char *opt, const char *s, void *target)
 {
+    year_list *m = target;
+    uint32_t *years = m->year, *n = &m->n;
     *n = 0;
     const char *c = s;
     while (*c) {
@@ -58,8 +47,8 @@ static int parse_years_list(const char *s, uint32_t *years, uint32_t *n)
         errno = 0;
         unsigned long v = *c >= '0' && *c <= '9' ? strtoul(c, &end, 10) : 0;
         if (!(*c >= '0' && *c <= '9') || errno || v > 1000000 || (*end && *end != ',') || *n == MAX_MAP_YEARS) {
-            fprintf(stderr, "sylva simulate: --maps expects up to %d years separated by commas (e.g. 0,20,60), got "
-                    "'%s'\n", MAX_MAP_YEARS, s);
+            fprintf(stderr, "sylva %s: %s expects up to %d years separated by commas (e.g. 0,20,60), got '%s'\n",
+                    cmd, opt, MAX_MAP_YEARS, s);
             return -1;
         }
         years[(*n)++] = (uint32_t)v;
@@ -120,53 +109,32 @@ static int write_map(cli_ecology *e, const char *dir, const char *const *names, 
 int cmd_simulate(int argc, char **argv)
 {
     const char *scene_path = NULL, *out = NULL, *save = NULL, *load = NULL, *stats = NULL;
-    uint32_t map_years[MAX_MAP_YEARS] = {0, 20, 60, 80, 180}, n_map_years = 5;
+    year_list maps = {{0, 20, 60, 80, 180}, 5};
     uint64_t years = 0;
     int years_given = 0;
     build_options bo = {.analysis = 1}; /* the ground as surveyed, whatever the camera */
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        const char *val = i + 1 < argc ? argv[i + 1] : NULL;
-        int takes_value = !strcmp(a, "--years") || !strcmp(a, "-o") || !strcmp(a, "--output") ||
-                          !strcmp(a, "--save") || !strcmp(a, "--load") || !strcmp(a, "--stats") || !strcmp(a, "--maps") ||
-                          !strcmp(a, "--threads");
-        if (takes_value && !val) {
-            fprintf(stderr, "sylva simulate: %s needs a value\n", a);
-            return EXIT_USAGE;
-        }
-        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-            simulate_usage(stdout);
-            return EXIT_OK;
-        } else if (!strcmp(a, "--years")) {
-            if (cli_parse_u64("simulate", a, val, 0, 1000000, &years)) return EXIT_USAGE;
-            years_given = 1;
-        } else if (!strcmp(a, "--threads")) {
-            uint64_t v;
-            if (cli_parse_u64("simulate", a, val, 1, 1024, &v)) return EXIT_USAGE;
-            bo.threads = (unsigned)v;
-        } else if (!strcmp(a, "--maps")) {
-            if (parse_years_list(val, map_years, &n_map_years)) return EXIT_USAGE;
-        } else if (!strcmp(a, "--save")) {
-            save = val;
-        } else if (!strcmp(a, "--load")) {
-            load = val;
-        } else if (!strcmp(a, "--stats")) {
-            stats = val;
-        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
-            out = val;
-        } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
-            bo.quiet = 1;
-        } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
-            bo.verbose = 1;
-        } else if (cli_scene_argument("simulate", a, &scene_path)) {
-            return EXIT_USAGE;
-        }
-        i += takes_value;
-    }
-    if (!scene_path) {
-        simulate_usage(stderr);
-        return EXIT_USAGE;
-    }
+    const cli_option options[] = {
+        {.names = "--years", .type = CLI_WHOLE, .value = "N", .target = &years, .target_size = sizeof years,
+         .max = 1000000, .given = &years_given, .help = "years to simulate (from the loaded state's year with "
+         "--load); default: up to the scene's `years`"},
+        CLI_OPT_PATH("-o, --output", "FILE", out, "the living plants as CSV: species,x,y,z,age,height,radius,vigour "
+                     "(metres, years; vigour 0 to 1)"),
+        CLI_OPT_PATH("--save", "STATE", save, "the whole run at the end (plants, year, random streams)"),
+        CLI_OPT_PATH("--load", "STATE", load, "continue a run saved with --save from the same scene"),
+        CLI_OPT_PATH("--stats", "DIR", stats, "DIR/population.csv and DIR/population.png (plants per species per "
+                     "year) and DIR/map_YEAR.png (the plants seen from above)"),
+        {.names = "--maps", .type = CLI_CUSTOM, .value = "Y,Y,...", .target = &maps, .parse = parse_years_list,
+         .help = "the years to map with --stats (default 0,20,60,80,180 and the last year)"},
+        CLI_OPT_WHOLE("--threads", "N", bo.threads, 1, 1024, "threads for the tree models and the ecology's "
+                      "workers (default: one per core); the plants do not depend on it"),
+        CLI_OPTS_SCENE_COMMON(bo),
+    };
+    const cli_command_spec spec = {"simulate", "SCENE", simulate_about, NULL, options,
+                                   sizeof options / sizeof *options, simulate_epilogue, cli_operand_scene,
+                                   &scene_path};
+    int parsed = cli_options_parse(&spec, argc, argv);
+    if (parsed) return cli_options_status(parsed);
+    const uint32_t *map_years = maps.year, n_map_years = maps.n;
 
     double t0 = progress_now();
     cli_ecology e;

@@ -10,6 +10,7 @@
 
 #include "cli/cli_args.h"
 #include "cli/cli_mpi.h"
+#include "cli/cli_options.h"
 #include "cli/cli_outputs.h"
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
@@ -22,66 +23,30 @@
 #include "ztv/ztv_output.h"
 #include "ztv/ztv_trace.h"
 
-static void ztv_usage(FILE *out)
-{
-    fprintf(out,
-            "usage: sylva ztv SCENE -o DIR [options]\n"
-            "Maps where SCENE's development can be seen from (a zone of theoretical visibility):\n"
-            "for every cell of a grid over the terrain, an observer at eye height above the ground\n"
-            "looks for each target of the development (the scene's ztv: section: targets given by\n"
-            "hand, heights above each development object, or points sampled on them) along a\n"
-            "sightline over the curved Earth (earth: section), on bare earth and screened by what\n"
-            "the scene holds. Writes into DIR (created when missing): ztv_bare.tif and ztv_MODE.tif\n"
-            "(GeoTIFF on the site's CRS: targets visible, fraction visible, cell class, developments\n"
-            "seen), ztv_hidden_MODE.tif (what the screening hides), PNG maps of each, and\n"
-            "ztv_summary.csv / .json (areas in km2). See docs/ztv.md.\n\n"
-            "options (each overrides the scene's ztv: key of the same name):\n"
-            "  -o, --output DIR        folder for the maps (required)\n"
-            "  --radius M              map cells within M metres of the nearest target (0: the\n"
-            "                          whole terrain)\n"
-            "  --cell M                cell size in metres (0: one cell per terrain node)\n"
-            "  --observer-height M     eye height above the ground (default 2)\n"
-            "  --screening S           none | vegetation | all: what screens besides bare earth\n"
-            "                          (default all: the plants and the objects)\n"
-            "  --ground G              surveyed | refined: the ground the sightlines trace: the\n"
-            "                          DTM as surveyed (default; a ZTV is a property of the DTM and\n"
-            "                          the development), or the terrain plugin's refinement, with\n"
-            "                          its levels of detail around the development, not the camera\n"
-            "  --flat-earth            straight sightlines, whatever the earth: section says\n"
-            "  --season S              the plants on season S (spring, summer, autumn, winter)\n"
-            "                          or date YYYY-MM-DD, instead of the scene's season: key\n"
-            "  --threads N             threads for every phase (default: one per core, shared\n"
-            "                          out between the ranks of an MPI job on one machine); the\n"
-            "                          maps do not depend on it\n"
-            "  -q, --quiet             no progress or information lines (warnings\n"
-            "                          and errors still print)\n"
-            "  --allow-gdal-virtual    let the scene name GDAL virtual paths, URLs and connection\n"
-            "                          strings (these may reach the network; refused otherwise)\n"
-            "  -v, --verbose           plugin debug messages\n"
-            "  -h, --help              this text\n\n"
-            "Under MPI (`mpirun -np N sylva ztv ...`, in a build with SYLVA_MPI), every rank builds\n"
-            "the scene itself (on separate machines as soon as rank 0 could build and broadcast\n"
-            "it, with no scene format to keep in step) and traces every N-th row of the map; rank 0\n"
-            "gathers the rows and writes the files, byte for byte those of a single process. Only\n"
-            "rank 0 prints. See docs/mpi.md.\n\n"
-            "exit status: 0 done, 1 usage, 2 bad scene, plugin failure or nothing to map, 3 output\n"
-            "not written, 4 out of memory or internal error\n");
-}
+static const char ztv_about[] =
+    "Maps where SCENE's development can be seen from (a zone of theoretical visibility):\n"
+    "for every cell of a grid over the terrain, an observer at eye height above the ground\n"
+    "looks for each target of the development (the scene's ztv: section: targets given by\n"
+    "hand, heights above each development object, or points sampled on them) along a\n"
+    "sightline over the curved Earth (earth: section), on bare earth and screened by what\n"
+    "the scene holds. Writes into DIR (created when missing): ztv_bare.tif and ztv_MODE.tif\n"
+    "(GeoTIFF on the site's CRS: targets visible, fraction visible, cell class, developments\n"
+    "seen), ztv_hidden_MODE.tif (what the screening hides), PNG maps of each, and\n"
+    "ztv_summary.csv / .json (areas in km2). See docs/ztv.md.\n";
+
+static const char ztv_epilogue[] =
+    "Under MPI (`mpirun -np N sylva ztv ...`, in a build with SYLVA_MPI), every rank builds\n"
+    "the scene itself (on separate machines as soon as rank 0 could build and broadcast\n"
+    "it, with no scene format to keep in step) and traces every N-th row of the map; rank 0\n"
+    "gathers the rows and writes the files, byte for byte those of a single process. Only\n"
+    "rank 0 prints. See docs/mpi.md.\n\n"
+    "exit status: 0 done, 1 usage, 2 bad scene, plugin failure or nothing to map, 3 output\n"
+    "not written, 4 out of memory or internal error\n";
+
+static const char *const screening_names[] = {"none", "vegetation", "all", NULL}; /* ztv_mode's order */
+static const char *const ground_names[] = {"surveyed", "refined", NULL};
 
 static const char *const mode_names[ZTV_MODES] = {"bare earth", "vegetation", "all"};
-
-/* A number in [lo, hi], the whole of s. */
-static int parse_metres(const char *opt, const char *s, double lo, double hi, double *out)
-{
-    char *end;
-    double v = s ? strtod(s, &end) : NAN;
-    if (!s || end == s || *end || !(v >= lo && v <= hi)) {
-        fprintf(stderr, "sylva ztv: %s expects metres from %g to %g, got '%s'\n", opt, lo, hi, s ? s : "");
-        return -1;
-    }
-    *out = v;
-    return 0;
-}
 
 /* Where the blocks of rows go: straight to the output in one process; in an MPI job, into a
  * copy of the block on every rank, in which rank 0 gathers the other ranks' rows before
@@ -143,64 +108,32 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
     int screening = -1, flat = 0;
     unsigned threads = 0;
     build_options bo = {.analysis = 1}; /* the ground as surveyed, whatever the camera */
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        const char *val = i + 1 < argc ? argv[i + 1] : NULL;
-        uint64_t v;
-        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-            ztv_usage(stdout);
-            return EXIT_OK;
-        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
-            if (!val) goto missing;
-            dir = val, i++;
-        } else if (!strcmp(a, "--radius")) {
-            if (parse_metres(a, val, 0, 1e7, &radius)) return EXIT_USAGE;
-            i++;
-        } else if (!strcmp(a, "--cell")) {
-            if (parse_metres(a, val, 0, 1e6, &cell)) return EXIT_USAGE;
-            i++;
-        } else if (!strcmp(a, "--observer-height")) {
-            if (parse_metres(a, val, 0, 1e4, &eye)) return EXIT_USAGE;
-            i++;
-        } else if (!strcmp(a, "--screening")) {
-            if (!val) goto missing;
-            screening = !strcmp(val, "none") ? ZTV_BARE : !strcmp(val, "vegetation") ? ZTV_VEGETATION
-                      : !strcmp(val, "all") ? ZTV_ALL : -1;
-            if (screening < 0) {
-                fprintf(stderr, "sylva ztv: --screening expects none, vegetation or all, got '%s'\n", val);
-                return EXIT_USAGE;
-            }
-            i++;
-        } else if (!strcmp(a, "--ground")) {
-            if (!val || (strcmp(val, "surveyed") && strcmp(val, "refined"))) {
-                fprintf(stderr, "sylva ztv: --ground expects surveyed or refined, got '%s'\n", val ? val : "");
-                return EXIT_USAGE;
-            }
-            bo.analysis = !strcmp(val, "surveyed"), bo.detail_at_development = !bo.analysis, i++;
-        } else if (!strcmp(a, "--flat-earth")) {
-            flat = 1;
-        } else if (!strcmp(a, "--season")) {
-            if (!val) goto missing;
-            season = val, i++;
-        } else if (!strcmp(a, "--threads")) {
-            if (!val || cli_parse_u64("ztv", a, val, 1, 1024, &v)) return EXIT_USAGE;
-            threads = bo.threads = (unsigned)v, i++;
-        } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
-            bo.quiet = 1;
-        } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
-            bo.verbose = 1;
-        } else if (cli_scene_argument("ztv", a, &scene_path)) {
-            return EXIT_USAGE;
-        }
-        continue;
-    missing:
-        fprintf(stderr, "sylva ztv: %s needs a value\n", a);
-        return EXIT_USAGE;
-    }
-    if (!scene_path || !dir) {
-        ztv_usage(stderr);
-        return EXIT_USAGE;
-    }
+    int refined = 0;
+    const cli_option options[] = {
+        {.names = "-o, --output", .type = CLI_PATH, .value = "DIR", .target = &dir, .flags = CLI_REQUIRED,
+         .help = "folder for the maps (required)"},
+        CLI_OPT_NUMBER("--radius", "M", "metres", radius, 0, 1e7, 0, "map cells within M metres of the nearest "
+                       "target (0: the whole terrain)"),
+        CLI_OPT_NUMBER("--cell", "M", "metres", cell, 0, 1e6, 0, "cell size in metres (0: one cell per terrain node)"),
+        CLI_OPT_NUMBER("--observer-height", "M", "metres", eye, 0, 1e4, 0, "eye height above the ground (default 2)"),
+        CLI_OPT_CHOICE("--screening", screening, screening_names, "what screens besides bare earth (default all: "
+                       "the plants and the objects)"),
+        CLI_OPT_CHOICE("--ground", refined, ground_names, "the ground the sightlines trace: the DTM as surveyed "
+                       "(default; a ZTV is a property of the DTM and the development), or the terrain plugin's "
+                       "refinement, with its levels of detail around the development, not the camera"),
+        CLI_OPT_FLAG("--flat-earth", flat, "straight sightlines, whatever the earth: section says"),
+        CLI_OPT_TEXT("--season", "S", season, CLI_HELP_SEASON),
+        CLI_OPT_WHOLE("--threads", "N", bo.threads, 1, 1024, "threads for every phase (default: one per core, "
+                      "shared out between the ranks of an MPI job on one machine); the maps do not depend on it"),
+        CLI_OPTS_SCENE_COMMON(bo),
+    };
+    const cli_command_spec spec = {"ztv", "SCENE", ztv_about, "options (each overrides the scene's ztv: key of the "
+                                   "same name):", options, sizeof options / sizeof *options, ztv_epilogue,
+                                   cli_operand_scene, &scene_path};
+    int parsed = cli_options_parse(&spec, argc, argv);
+    if (parsed) return cli_options_status(parsed);
+    threads = bo.threads;
+    bo.analysis = !refined, bo.detail_at_development = refined;
     if (!threads) threads = bo.threads = m->threads;
     if (m->rank) bo.quiet = 1;
 

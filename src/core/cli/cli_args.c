@@ -1,5 +1,5 @@
-/* cli_args.c — number and size parsing for the command line, the scene argument, a scene
- * file's stem and the output folder. */
+/* cli_args.c — number and size parsing for the command line, the scene argument and a scene
+ * file's stem. */
 #include "cli/cli_args.h"
 
 #include <errno.h>
@@ -7,7 +7,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 
 int cli_parse_u64(const char *cmd, const char *opt, const char *s, uint64_t lo, uint64_t hi, uint64_t *out)
@@ -70,15 +69,4 @@ int cli_scene_stem(const char *scene_path, const char *prefix, const char *suffi
     const char *dot = strrchr(name, '.');
     size_t l = dot && dot != name ? (size_t)(dot - name) : strlen(name);
     return (size_t)snprintf(out, n, "%s%.*s%s", prefix, (int)l, name, suffix) >= n ? -1 : 0;
-}
-
-int cli_make_folder(const char *dir, err_buf *err)
-{
-    struct stat st;
-    if (!stat(dir, &st)) {
-        if (S_ISDIR(st.st_mode)) return 0;
-        return err_fail(err, ERR_OUTPUT, "%s: exists and is not a folder", dir);
-    }
-    if (mkdir(dir, 0777)) return err_fail(err, ERR_OUTPUT, "%s: cannot create the folder: %s", dir, strerror(errno));
-    return 0;
 }

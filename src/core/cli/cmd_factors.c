@@ -12,6 +12,7 @@
 #include "cli/cli_outputs.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
+#include "io/output_folder.h"
 #include "io/atomic_file.h"
 #include "scene/ecology_maps.h"
 
@@ -72,7 +73,7 @@ int cmd_factors(int argc, char **argv)
     }
     for (uint32_t m = 0; m < n && !rc; m++)
         if (ecology_session_factor(e.session, m, &maps[m], &err)) rc = cli_fail("factors", &err, ERR_PLUGIN);
-    if (!rc && n && cli_make_folder(dir, &err)) rc = cli_fail("factors", &err, ERR_OUTPUT);
+    if (!rc && n && output_folder_make(dir, &err)) rc = cli_fail("factors", &err, ERR_OUTPUT);
     char path[4200];
     for (uint32_t m = 0; m < n && !rc; m++) {
         snprintf(path, sizeof path, "%s/%s.png", dir, maps[m].name);

@@ -10,6 +10,7 @@
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
+#include "io/output_folder.h"
 #include "montage/montage_run.h"
 
 static const char montage_about[] =
@@ -51,7 +52,7 @@ int cmd_montage(int argc, char **argv)
     int rc = cli_scene_open(&cs, "montage", scene_path, NULL, season, &bo);
     cli_file inputs[] = {{mo.photo, "--photo"}, {mo.points, "--control-points"}};
     if (!rc) rc = cli_outputs_check("montage", cs.sf, inputs, 2, NULL, 0);
-    if (!rc && cli_make_folder(mo.dir, &err)) rc = cli_fail("montage", &err, ERR_OUTPUT);
+    if (!rc && output_folder_make(mo.dir, &err)) rc = cli_fail("montage", &err, ERR_OUTPUT);
     if (!rc && montage_run(cs.scene, cs.sf, &mo, &rep, &err)) rc = cli_fail("montage", &err, ERR_INPUT);
     if (!rc) printf("%s\n", mo.dir);
     montage_report_free(&rep);

@@ -8,12 +8,11 @@
 #include "cli/cli_mpi.h"
 #include "cli/cli_options.h"
 #include "cli/cli_outputs.h"
+#include "cli/cli_parts.h"
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
-#include "render/auto_exposure.h"
-#include "render/render.h"
-#include "scene/heightfield.h"
+#include "render/render_still.h"
 #include "util/progress.h"
 
 static const char render_about[] =
@@ -87,69 +86,20 @@ static int render_run(cli_mpi *m, int argc, char **argv)
     char png[4200], exr[4200];
     if (output_paths(scene_path, viewpoint, season, out, png, exr, sizeof png)) return EXIT_USAGE;
     if (!ro.threads) ro.threads = bo.threads = m->threads;
-    ro.part = (uint32_t)m->rank, ro.parts = (uint32_t)m->ranks;
     if (m->rank) ro.quiet = bo.quiet = 1;
 
     err_buf err = {{0}};
-    double t0 = progress_now();
+    render_still_options rs = {.render = ro, .png = png, .exr = exr, .started = progress_now()};
     cli_scene cs;
-    film *f = NULL;
+    cli_parts parts;
+    cli_parts_of(&parts, m);
     int rc = cli_scene_open(&cs, "render", scene_path, viewpoint, season, &bo);
     cli_file outputs[] = {{png, out ? "-o" : "the output"}, {exr, out ? "-o" : "the output"}};
     if (!rc) rc = cli_outputs_check("render", cs.sf, NULL, 0, outputs, 2);
     if (!rc) rc = cli_scene_ground_cover(&cs, "render", ro.width, ro.height, ro.quiet);
-    if (rc) goto done;
-    if (cli_mpi_same_scene(m, cs.scene, &err)) {
-        rc = cli_fail("render", &err, ERR_INPUT);
-        goto done;
-    }
-    const scene *sc = cs.scene;
-    if (!ro.quiet)
-        fprintf(stderr, "scene: %u species, %u prototypes, %u instances, %u objects (%u shared models)%s (built in "
-                "%.2fs)\n", sc->n_species, sc->n_prototypes, sc->n_instances, sc->n_objects, sc->n_models,
-                sc->terrain ? ", terrain" : "", cs.seconds);
-    if (!ro.quiet && sc->terrain) {
-        char shown[192], surveyed[192];
-        heightfield_describe(sc->terrain, shown, sizeof shown);
-        heightfield_describe(sc->surveyed, surveyed, sizeof surveyed);
-        if (sc->terrain == sc->surveyed) fprintf(stderr, "ground: %s, as the analyses read it\n", shown);
-        else fprintf(stderr, "ground: rendered %s; the analyses read the DTM as surveyed, %s\n", shown, surveyed);
-    }
-    render_stats st;
-    f = render_scene(sc, &ro, &st, &err);
-    if (!f) {
-        rc = cli_fail("render", &err, ERR_INTERNAL);
-        goto done;
-    }
-    phase_add(&cs.times, PHASE_BVH, st.bvh_seconds);
-    phase_add(&cs.times, PHASE_RENDER_SETUP, st.build_seconds - st.bvh_seconds);
-    phase_add(&cs.times, PHASE_RENDER, st.render_seconds);
-    phase_mark t_out = phase_start();
-    /* the whole frame on rank 0; the exposure is metered on it there */
-    if (cli_mpi_gather_film(m, f, &err)) {
-        rc = cli_fail("render", &err, ERR_INTERNAL);
-        goto done;
-    }
-    uint64_t samples = st.samples;
-    cli_mpi_sum(m, &samples, 1);
-    if (m->rank) goto done;
-    double ev = sc->image.exposure_set ? sc->image.exposure : auto_exposure_stops(f);
-    if (!ro.quiet) fprintf(stderr, "exposure: %+.2f EV (%s)\n", ev, sc->image.exposure_set ? "image.exposure" : "metered");
-    if (film_write_pair(f, &sc->site, sc->image.tone, ev, png, exr, &err)) {
-        rc = cli_fail("render", &err, ERR_OUTPUT);
-        goto done;
-    }
-    phase_stop(&cs.times, PHASE_OUTPUT, t_out);
-    if (!ro.quiet) {
-        char ranks[32] = "";
-        if (m->ranks > 1) snprintf(ranks, sizeof ranks, " on %d ranks", m->ranks);
-        fprintf(stderr, "rendered %ux%u%s, %llu samples in %.2fs (BVH %.2fs); total %.2fs\n", f->width, f->height,
-                ranks, (unsigned long long)samples, st.render_seconds, st.build_seconds, progress_now() - t0);
-        phase_times_print(&cs.times, stderr);
-    }
-    printf("%s\n%s\n", png, exr);
-done:
-    film_free(f);
+    rs.scene_seconds = cs.seconds;
+    if (!rc && render_still_run(cs.scene, &rs, &parts.parts, &cs.times, &err)) rc = cli_parts_fail(&parts, &err);
+    if (!rc && !m->rank) printf("%s\n%s\n", png, exr);
     cli_scene_close(&cs);
     return rc;
 }

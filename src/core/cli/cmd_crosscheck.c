@@ -11,7 +11,7 @@
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
-#include "crosscheck/crosscheck.h"
+#include "crosscheck/crosscheck_scene.h"
 
 enum { EXIT_DISAGREE = 5 }; /* both renders compared; a threshold does not hold */
 
@@ -86,28 +86,17 @@ int cmd_crosscheck(int argc, char **argv)
 
     err_buf err = {{0}};
     cli_scene cs;
-    int rc = cli_scene_open(&cs, "crosscheck", scene_path, viewpoint, season, &bo);
-    if (!rc) rc = cli_outputs_check("crosscheck", cs.sf, NULL, 0, NULL, 0); /* the folder's files */
-    if (!rc) rc = cli_scene_ground_cover(&cs, "crosscheck", co.width, co.height, co.quiet);
-    if (rc) goto done;
-    const scene *sc = cs.scene;
-    crosscheck_result *r = malloc(sizeof *r);
-    if (!r) {
-        rc = cli_failf("crosscheck", ERR_NOMEM, "out of memory");
-        goto done;
-    }
-    if (sc->earth.curvature && !co.quiet)
-        fprintf(stderr, "sylva crosscheck: note: POV-Ray cannot bend rays for the Earth's curvature "
-                        "(earth.curvature is on); both renderers draw this scene on a flat Earth here\n");
-    int status = crosscheck_run(sc, out, &co, r, &err);
-    if (status) {
-        rc = cli_fail("crosscheck", &err, status == CROSSCHECK_NOT_WRITTEN ? ERR_OUTPUT : ERR_INTERNAL);
-    } else {
+    cli_scene_use use = {.viewpoint = viewpoint, .season = season, .check_outputs = 1, /* the folder's files */
+                         .view = {.picture = 1, .width = co.width, .height = co.height, .quiet = co.quiet}};
+    int rc = cli_scene_open(&cs, "crosscheck", scene_path, &use, &bo);
+    crosscheck_result *r = rc ? NULL : crosscheck_scene(cs.scene, out, &co, &err);
+    if (r) {
         printf("%s\n%s/report.html\n", r->verdict, out);
         rc = r->pass ? EXIT_OK : EXIT_DISAGREE;
+    } else if (!rc) {
+        rc = cli_fail("crosscheck", &err, ERR_INTERNAL);
     }
     free(r);
-done:
     cli_scene_close(&cs);
     return rc;
 }

@@ -10,8 +10,7 @@
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
-#include "pov/pov_write.h"
-#include "util/progress.h"
+#include "pov/pov_export_run.h"
 
 static const char export_pov_about[] =
     "Writes SCENE (a YAML scene file) as POV-Ray 3.7 scene files: OUT.pov with the camera,\n"
@@ -77,52 +76,16 @@ int cmd_export_pov(int argc, char **argv)
 
     err_buf err = {{0}};
     cli_scene cs;
-    int rc = cli_scene_open(&cs, "export-pov", scene_path, viewpoint, season, &bo);
     cli_file output = {out, out == out_default ? "the output" : "-o"};
-    if (!rc) rc = cli_outputs_check("export-pov", cs.sf, NULL, 0, &output, 1);
-    if (!rc && !species_name) rc = cli_scene_ground_cover(&cs, "export-pov", po.width, po.height, bo.quiet);
-    if (rc) goto done;
-    const scene *sc = cs.scene;
-    double t1 = progress_now();
-    pov_export_stats st;
-    if (species_name) {
-        uint32_t k = 0;
-        while (k < sc->n_species && strcmp(sc->species[k].name, species_name)) k++;
-        if (k == sc->n_species) {
-            char names[ERR_MSG_MAX / 2] = "";
-            for (uint32_t j = 0, used = 0; j < sc->n_species && used < sizeof names; j++)
-                used += (uint32_t)snprintf(names + used, sizeof names - used, "%s '%s'", j ? "," : "", sc->species[j].name);
-            rc = cli_failf("export-pov", ERR_INPUT, "the scene has no species '%s'; it has:%s", species_name,
-                           sc->n_species ? names : " none");
-            goto done;
-        }
-        if (variant_given && variant >= sc->species[k].n_variants) {
-            rc = cli_failf("export-pov", ERR_INPUT, "species '%s' has variants 0 to %u; --variant %lld does not exist",
-                           species_name, sc->species[k].n_variants ? sc->species[k].n_variants - 1 : 0,
-                           (long long)variant);
-            goto done;
-        }
-        if (pov_export_species(sc, k, variant_given ? (int32_t)variant : -1, out, scene_path, &st, &err)) {
-            rc = cli_fail("export-pov", &err, ERR_OUTPUT);
-            goto done;
-        }
-    } else {
-        po.source = scene_path;
-        if (sc->earth.curvature && !bo.quiet)
-            fprintf(stderr, "sylva export-pov: note: POV-Ray cannot bend rays for the Earth's curvature "
-                            "(earth.curvature is on); the exported scene shows it on a flat Earth, as "
-                            "sylva render --flat-earth would\n");
-        if (pov_export_scene(sc, out, &po, &st, &err)) {
-            rc = cli_fail("export-pov", &err, ERR_OUTPUT);
-            goto done;
-        }
-    }
-    if (!bo.quiet)
-        fprintf(stderr, "exported %u files, %.1f MB (%llu plants, %llu left out) in %.2fs; scene built in %.2fs\n", st.files,
-                st.bytes / 1e6, (unsigned long long)st.instances, (unsigned long long)st.skipped, progress_now() - t1,
-                cs.seconds);
-    printf("%s\n", out);
-done:
+    cli_scene_use use = {.viewpoint = viewpoint, .season = season, .check_outputs = 1, .outputs = &output,
+                         .n_outputs = 1, .view = {.picture = !species_name, .width = po.width, .height = po.height,
+                                                  .quiet = bo.quiet}};
+    int rc = cli_scene_open(&cs, "export-pov", scene_path, &use, &bo);
+    pov_export_request req = {.scene = po, .out = out, .source = scene_path, .species = species_name,
+                              .variant = variant_given ? (int32_t)variant : -1, .quiet = bo.quiet,
+                              .scene_seconds = cs.seconds};
+    if (!rc && pov_export_run(cs.scene, &req, &err)) rc = cli_fail("export-pov", &err, ERR_INTERNAL);
+    if (!rc) printf("%s\n", out);
     cli_scene_close(&cs);
     return rc;
 }

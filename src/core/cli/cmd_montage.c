@@ -49,9 +49,9 @@ int cmd_montage(int argc, char **argv)
     err_buf err = {{0}};
     cli_scene cs;
     montage_report rep = {0};
-    int rc = cli_scene_open(&cs, "montage", scene_path, NULL, season, &bo);
     cli_file inputs[] = {{mo.photo, "--photo"}, {mo.points, "--control-points"}};
-    if (!rc) rc = cli_outputs_check("montage", cs.sf, inputs, 2, NULL, 0);
+    cli_scene_use use = {.season = season, .check_outputs = 1, .inputs = inputs, .n_inputs = 2};
+    int rc = cli_scene_open(&cs, "montage", scene_path, &use, &bo);
     if (!rc && output_folder_make(mo.dir, &err)) rc = cli_fail("montage", &err, ERR_OUTPUT);
     if (!rc && montage_run(cs.scene, cs.sf, &mo, &rep, &err)) rc = cli_fail("montage", &err, ERR_INPUT);
     if (!rc) printf("%s\n", mo.dir);

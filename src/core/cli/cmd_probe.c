@@ -119,7 +119,7 @@ int cmd_probe(int argc, char **argv)
 
     cli_scene cs;
     probe_result r = {0};
-    int rc = cli_scene_open(&cs, "probe", scene_path, NULL, NULL, &bo);
+    int rc = cli_scene_open(&cs, "probe", scene_path, &(cli_scene_use){.no_camera = 1}, &bo);
     if (rc) goto done;
     const site_settings *site = &cs.sf->site;
     int mapped = site->crs_wkt != NULL;

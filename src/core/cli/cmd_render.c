@@ -93,10 +93,10 @@ static int render_run(cli_mpi *m, int argc, char **argv)
     cli_scene cs;
     cli_parts parts;
     cli_parts_of(&parts, m);
-    int rc = cli_scene_open(&cs, "render", scene_path, viewpoint, season, &bo);
     cli_file outputs[] = {{png, out ? "-o" : "the output"}, {exr, out ? "-o" : "the output"}};
-    if (!rc) rc = cli_outputs_check("render", cs.sf, NULL, 0, outputs, 2);
-    if (!rc) rc = cli_scene_ground_cover(&cs, "render", ro.width, ro.height, ro.quiet);
+    cli_scene_use use = {.viewpoint = viewpoint, .season = season, .check_outputs = 1, .outputs = outputs,
+                         .n_outputs = 2, .view = {.picture = 1, .width = ro.width, .height = ro.height, .quiet = ro.quiet}};
+    int rc = cli_scene_open(&cs, "render", scene_path, &use, &bo);
     rs.scene_seconds = cs.seconds;
     if (!rc && render_still_run(cs.scene, &rs, &parts.parts, &cs.times, &err)) rc = cli_parts_fail(&parts, &err);
     if (!rc && !m->rank) printf("%s\n%s\n", png, exr);

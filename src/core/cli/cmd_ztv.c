@@ -80,8 +80,8 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
     cli_scene cs;
     cli_parts parts;
     cli_parts_of(&parts, m);
-    int rc = cli_scene_open(&cs, "ztv", scene_path, NULL, season, &bo);
-    if (!rc) rc = cli_outputs_check("ztv", cs.sf, NULL, 0, NULL, 0); /* the folder's files */
+    cli_scene_use use = {.season = season, .no_camera = 1, .check_outputs = 1}; /* the folder's files */
+    int rc = cli_scene_open(&cs, "ztv", scene_path, &use, &bo);
     if (!rc && ztv_study_run(cs.sf, cs.scene, &o, &parts.parts, &cs.times, &err)) rc = cli_parts_fail(&parts, &err);
     if (!rc && !m->rank) printf("%s\n", o.dir);
     cli_scene_close(&cs);

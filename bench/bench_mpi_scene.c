@@ -53,7 +53,7 @@ int main(int argc, char **argv)
     cli_scene cs;
     MPI_Barrier(MPI_COMM_WORLD);
     double t0 = progress_now();
-    int rc = cli_scene_open(&cs, "bench_mpi_scene", path, NULL, NULL, &bo);
+    int rc = cli_scene_open(&cs, "bench_mpi_scene", path, NULL, &bo);
     double build = progress_now() - t0, slowest = 0;
     int failed = 0;
     MPI_Allreduce(&rc, &failed, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);

@@ -283,11 +283,9 @@ int main(int argc, char **argv)
     }
     cli_scene c;
     build_options bo = {.quiet = 1};
-    int rc = cli_scene_open(&c, "blender-export", argv[1], NULL, NULL, &bo);
-    if (!rc) {
-        if (!w) w = c.scene->image.width, h = c.scene->image.height;
-        rc = cli_scene_ground_cover(&c, "blender-export", w, h, 0);
-    }
+    cli_scene_use use = {.view = {.picture = 1, .width = w, .height = h}}; /* 0: the scene's size */
+    int rc = cli_scene_open(&c, "blender-export", argv[1], &use, &bo);
+    if (!rc && !w) w = c.scene->image.width, h = c.scene->image.height;
     if (!rc) {
         err_buf err = {{0}};
         if (export_scene(outdir, c.scene, w, h, &err)) {

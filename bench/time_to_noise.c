@@ -58,8 +58,8 @@ int main(int argc, char **argv)
     }
     cli_scene c;
     build_options bo = {.quiet = 1, .threads = threads};
-    int rc = cli_scene_open(&c, "time-to-noise", pos[0], NULL, NULL, &bo);
-    if (!rc) rc = cli_scene_ground_cover(&c, "time-to-noise", w, h, 1);
+    cli_scene_use use = {.view = {.picture = 1, .width = w, .height = h, .quiet = 1}};
+    int rc = cli_scene_open(&c, "time-to-noise", pos[0], &use, &bo);
     if (rc) {
         cli_scene_close(&c);
         return rc;

@@ -11,10 +11,11 @@ rank() { case $1 in util) echo 0;; io) echo 1;; params) echo 2;; plugin) echo 3;
   site|season|model) echo 5;; scene_file) echo 6;; scene_build) echo 7;; geometry) echo 8;;
   render|pov) echo 9;; crosscheck|ztv|montage) echo 10;; cli) echo 11;; *) echo -1;; esac; }
 # The back ends read the scene and its settings (scene/scene_settings.h), never the file format
-# (scene_file/, nor scene_build/, whose headers bring it). The two files that read a study's own
-# sections of the file (ztv: targets and developments, photo:) are the exceptions, named here.
+# (scene_file/, nor scene_build/, whose headers bring it). The three files that read a study's own
+# sections of the file (ztv: its settings, targets and developments; photo:) are the exceptions,
+# named here.
 backend() { case $1 in geometry|render|pov|ztv|montage) return 0;; *) return 1;; esac; }
-reads_file() { case $1 in ztv/ztv_targets.c|montage/montage_run.c) return 0;; *) return 1;; esac; }
+reads_file() { case $1 in ztv/ztv_study.c|ztv/ztv_targets.c|montage/montage_run.c) return 0;; *) return 1;; esac; }
 bad=0
 for f in $(find . -name '*.[ch]' -o -name '*.cpp' | sed 's|^\./||'); do
   d=${f%%/*}; rd=$(rank $d)

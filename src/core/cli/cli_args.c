@@ -1,6 +1,5 @@
-/* cli_args.c — number and size parsing for the command line, the scene argument (and the
- * --allow-gdal-virtual choice every scene command takes), a scene file's stem and the output
- * folder. */
+/* cli_args.c — number and size parsing for the command line, the scene argument and a scene
+ * file's stem. */
 #include "cli/cli_args.h"
 
 #include <errno.h>
@@ -8,10 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
-#include "site/proj_network.h"
-#include "util/file_check.h"
 
 int cli_parse_u64(const char *cmd, const char *opt, const char *s, uint64_t lo, uint64_t hi, uint64_t *out)
 {
@@ -54,11 +50,6 @@ int cli_parse_size(const char *cmd, const char *opt, const char *s, uint32_t *w,
 
 int cli_scene_argument(const char *cmd, const char *arg, const char **scene_path)
 {
-    if (!strcmp(arg, "--allow-gdal-virtual")) {
-        file_allow_gdal_virtual(1);
-        proj_network_allow(1);
-        return 0;
-    }
     if (arg[0] == '-') {
         fprintf(stderr, "sylva %s: unknown option '%s' (see sylva %s --help)\n", cmd, arg, cmd);
         return -1;
@@ -78,15 +69,4 @@ int cli_scene_stem(const char *scene_path, const char *prefix, const char *suffi
     const char *dot = strrchr(name, '.');
     size_t l = dot && dot != name ? (size_t)(dot - name) : strlen(name);
     return (size_t)snprintf(out, n, "%s%.*s%s", prefix, (int)l, name, suffix) >= n ? -1 : 0;
-}
-
-int cli_make_folder(const char *dir, err_buf *err)
-{
-    struct stat st;
-    if (!stat(dir, &st)) {
-        if (S_ISDIR(st.st_mode)) return 0;
-        return err_fail(err, ERR_OUTPUT, "%s: exists and is not a folder", dir);
-    }
-    if (mkdir(dir, 0777)) return err_fail(err, ERR_OUTPUT, "%s: cannot create the folder: %s", dir, strerror(errno));
-    return 0;
 }

@@ -1,6 +1,6 @@
 /* cli_args.h — strict parsing of command-line numbers, sizes and the scene argument, with
  * messages that name the option and what would be valid; the scene file's stem for default
- * output names; the output folder. */
+ * output names. */
 #ifndef SYLVA_CLI_ARGS_H
 #define SYLVA_CLI_ARGS_H
 
@@ -12,16 +12,11 @@
 /* Parses an unsigned integer in [lo, hi]; prints "sylva OPTION: ..." and returns -1 when bad. */
 int cli_parse_u64(const char *cmd, const char *opt, const char *s, uint64_t lo, uint64_t hi, uint64_t *out);
 /* An argument of a command that takes one scene file: an unknown option or a second file is
- * reported ("sylva CMD: ...") and gives -1; otherwise *scene_path is set and 0 returned.
- * --allow-gdal-virtual, taken here by every such command, lets the scene name GDAL virtual
- * paths, URLs and connection strings (util/file_check.h) and gives 0. */
+ * reported ("sylva CMD: ...") and gives -1; otherwise *scene_path is set and 0 returned. */
 int cli_scene_argument(const char *cmd, const char *arg, const char **scene_path);
 /* The scene file's name without its folder and extension ("scenes/a.yaml" gives "a"), written
  * into out between prefix and suffix. Returns -1 when that does not fit in n bytes. */
 int cli_scene_stem(const char *scene_path, const char *prefix, const char *suffix, char *out, size_t n);
-/* Creates the output folder `dir` when it does not exist (its parent must). Returns 0, or -1
- * with err (ERR_OUTPUT). */
-int cli_make_folder(const char *dir, err_buf *err);
 /* The largest side of an image --size takes. */
 #define CLI_SIZE_MAX 16384u
 /* Parses "WxH" with each side in [1, CLI_SIZE_MAX]; a side too long for any integer type is

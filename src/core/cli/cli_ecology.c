@@ -10,7 +10,7 @@ int cli_ecology_open(cli_ecology *e, const char *cmd, const char *scene_path, co
     memset(e, 0, sizeof *e);
     build_options bo = *opt;
     bo.no_ecology = 1;
-    int rc = cli_scene_open(&e->base, cmd, scene_path, NULL, NULL, &bo);
+    int rc = cli_scene_open(&e->base, cmd, scene_path, NULL, &bo);
     if (rc) return rc;
     err_buf err = {{0}};
     if (!(e->session = ecology_session_open(e->base.sf, e->base.scene, e->base.reg, opt, &err)))

@@ -359,12 +359,3 @@ void cli_mpi_sum(cli_mpi *m, uint64_t *v, unsigned n)
 }
 
 #endif
-
-int cli_mpi_gather_film(cli_mpi *m, film *f, err_buf *err)
-{
-    film_layer l[FILM_LAYERS];
-    cli_rows a[FILM_LAYERS];
-    film_layers(f, l);
-    for (int k = 0; k < FILM_LAYERS; k++) a[k] = (cli_rows){l[k].data, l[k].pixel_bytes * f->width};
-    return cli_mpi_gather_rows(m, a, FILM_LAYERS, 0, f->height, RENDER_BAND_ROWS, err);
-}

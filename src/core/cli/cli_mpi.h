@@ -20,9 +20,9 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "render/film.h"
 #include "scene/scene.h"
 #include "util/err.h"
+#include "util/run_parts.h"
 
 typedef struct cli_mpi {
     const char *cmd;     /* the command's name, for messages */
@@ -55,12 +55,8 @@ int cli_mpi_agree(cli_mpi *m, int status);
  * finalises MPI, and returns the exit status this process ends with (the job's). */
 int cli_mpi_end(cli_mpi *m, int status);
 
-/* Row r of an array covering rows [first_row, first_row + rows) starts at data + (r - first_row)
- * * row_bytes. */
-typedef struct cli_rows {
-    void *data;
-    size_t row_bytes;
-} cli_rows;
+/* Rows of an array to gather (util/run_parts.h). */
+typedef run_rows cli_rows;
 
 /* The rank that computes row y of a split whose bands are `band` rows tall (interleaved: band k
  * belongs to rank k modulo ranks). */
@@ -78,10 +74,6 @@ static inline int cli_mpi_row_rank(const cli_mpi *m, uint32_t y, uint32_t band)
  * returns 0. */
 int cli_mpi_gather_rows(cli_mpi *m, const cli_rows *arrays, unsigned n_arrays, uint32_t first_row, uint32_t rows,
                         uint32_t band, err_buf *err);
-
-/* The same for every layer of a frame whose bands of RENDER_BAND_ROWS rows the ranks rendered
- * as render_options' part and parts split them (part: the rank, parts: the ranks). */
-int cli_mpi_gather_film(cli_mpi *m, film *f, err_buf *err);
 
 /* Collective, for the ranks whose steps all went well so far (as cli_mpi_gather_rows): agrees
  * that every rank is ready, then checks that every rank built the same scene s, from a digest of

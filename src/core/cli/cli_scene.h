@@ -4,11 +4,24 @@
 #ifndef SYLVA_CLI_SCENE_H
 #define SYLVA_CLI_SCENE_H
 
+#include "cli/cli_outputs.h"
+#include "geometry/scene_view.h"
 #include "plugin/plugin_host.h"
 #include "scene/scene.h"
 #include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 #include "util/phase_times.h"
+
+/* What a command makes of the scene, which decides the steps cli_scene_open takes. */
+typedef struct cli_scene_use {
+    const char *viewpoint; /* NULL: the scene's camera; else one of its viewpoints (--viewpoint) */
+    const char *season;    /* NULL: the scene's season: key; else a season's name or a date (--season) */
+    int no_camera;         /* 1: an analysis (ztv, probe): the scene needs no camera: section */
+    int check_outputs;     /* 1: check the outputs against what the run reads (cli_outputs.h) */
+    const cli_file *inputs, *outputs; /* with check_outputs: the files the command line names */
+    uint32_t n_inputs, n_outputs;
+    scene_view view;       /* the steps of a scene drawn from its camera (geometry/scene_view.h) */
+} cli_scene_use;
 
 typedef struct cli_scene {
     plugin_registry *reg;  /* owned */
@@ -18,17 +31,12 @@ typedef struct cli_scene {
     phase_times times;     /* the scene build's phases and the ground cover; a command adds its own */
 } cli_scene;
 
-/* Fills c and returns EXIT_OK, or the exit status of the problem after printing it
- * (cli_fail); in every case cli_scene_close releases what was made. viewpoint: NULL for the
- * scene's camera, or the name of one of its viewpoints (--viewpoint) to build the scene with.
- * season: NULL for the scene's season: key, or a season's name or date (--season). */
-int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const char *viewpoint,
-                   const char *season, const build_options *opt);
+/* Loads and builds the scene for `use` (NULL: as it is, nothing checked), checks the outputs and
+ * takes the steps of its view when use asks. Fills c and returns EXIT_OK, or the exit status of
+ * the problem after printing it (cli_fail); in every case cli_scene_close releases what was
+ * made. */
+int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const cli_scene_use *use,
+                   const build_options *opt);
 void cli_scene_close(cli_scene *c);
-
-/* Adds the scene file's ground cover (geometry/ground_cover_place.h) for c's camera and an image
- * width x height pixels (0: the scene's size), and says on stderr how many tufts stand within
- * what radius unless quiet. Returns EXIT_OK or the exit status after printing the problem. */
-int cli_scene_ground_cover(cli_scene *c, const char *cmd, uint32_t width, uint32_t height, int quiet);
 
 #endif

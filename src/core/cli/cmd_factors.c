@@ -7,31 +7,23 @@
 #include <string.h>
 
 #include "cli/cli_args.h"
+#include "cli/cli_options.h"
 #include "cli/cli_ecology.h"
 #include "cli/cli_outputs.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
+#include "io/output_folder.h"
 #include "io/atomic_file.h"
 #include "scene_build/ecology_maps.h"
 
-static void factors_usage(FILE *out)
-{
-    fprintf(out,
-            "usage: sylva factors SCENE -o DIR [options]\n"
-            "Computes the terrain factors the scene's ecology grows plants by, on its patch grid, and\n"
-            "writes each as DIR/NAME.png (dark 0 to bright 1; north up) and all of them, one row a\n"
-            "patch, as DIR/factors.csv. The folder is created when missing.\n\n"
-            "options:\n"
-            "  -o, --output DIR    folder for the maps (required)\n"
-            "  -q, --quiet         no progress or information lines (warnings\n"
-            "                      and errors still print)\n"
-            "  --allow-gdal-virtual let the scene name GDAL virtual paths, URLs and connection\n"
-            "                      strings (these may reach the network; refused otherwise)\n"
-            "  -v, --verbose       plugin debug messages\n"
-            "  -h, --help          this text\n\n"
-            "exit status: 0 done, 1 usage, 2 bad scene or plugin failure, 3 output not written,\n"
-            "4 out of memory or internal error\n");
-}
+static const char factors_about[] =
+    "Computes the terrain factors the scene's ecology grows plants by, on its patch grid, and\n"
+    "writes each as DIR/NAME.png (dark 0 to bright 1; north up) and all of them, one row a\n"
+    "patch, as DIR/factors.csv. The folder is created when missing.\n";
+
+static const char factors_epilogue[] =
+    "exit status: 0 done, 1 usage, 2 bad scene or plugin failure, 3 output not written,\n"
+    "4 out of memory or internal error\n";
 
 /* factors.csv: i, k, the patch centre, then each map's value. */
 static int write_csv(const char *path, const sylva_ecology_factor_map *maps, uint32_t n, err_buf *err)
@@ -56,29 +48,15 @@ int cmd_factors(int argc, char **argv)
 {
     const char *scene_path = NULL, *dir = NULL;
     build_options bo = {.analysis = 1}; /* the ground as surveyed, whatever the camera */
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-            factors_usage(stdout);
-            return EXIT_OK;
-        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
-            if (i + 1 >= argc) {
-                fprintf(stderr, "sylva factors: %s needs a value\n", a);
-                return EXIT_USAGE;
-            }
-            dir = argv[++i];
-        } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
-            bo.quiet = 1;
-        } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
-            bo.verbose = 1;
-        } else if (cli_scene_argument("factors", a, &scene_path)) {
-            return EXIT_USAGE;
-        }
-    }
-    if (!scene_path || !dir) {
-        factors_usage(stderr);
-        return EXIT_USAGE;
-    }
+    const cli_option options[] = {
+        {.names = "-o, --output", .type = CLI_PATH, .value = "DIR", .target = &dir, .flags = CLI_REQUIRED,
+         .help = "folder for the maps (required)"},
+        CLI_OPTS_SCENE_COMMON(bo),
+    };
+    const cli_command_spec spec = {"factors", "SCENE", factors_about, NULL, options, sizeof options / sizeof *options,
+                                   factors_epilogue, cli_operand_scene, &scene_path};
+    int parsed = cli_options_parse(&spec, argc, argv);
+    if (parsed) return cli_options_status(parsed);
     cli_ecology e;
     int rc = cli_ecology_open(&e, "factors", scene_path, &bo);
     if (!rc) rc = cli_outputs_check("factors", e.base.sf, NULL, 0, NULL, 0); /* the folder's files */
@@ -95,7 +73,7 @@ int cmd_factors(int argc, char **argv)
     }
     for (uint32_t m = 0; m < n && !rc; m++)
         if (ecology_session_factor(e.session, m, &maps[m], &err)) rc = cli_fail("factors", &err, ERR_PLUGIN);
-    if (!rc && n && cli_make_folder(dir, &err)) rc = cli_fail("factors", &err, ERR_OUTPUT);
+    if (!rc && n && output_folder_make(dir, &err)) rc = cli_fail("factors", &err, ERR_OUTPUT);
     char path[4200];
     for (uint32_t m = 0; m < n && !rc; m++) {
         snprintf(path, sizeof path, "%s/%s.png", dir, maps[m].name);

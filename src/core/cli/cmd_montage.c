@@ -5,94 +5,54 @@
 #include <string.h>
 
 #include "cli/cli_args.h"
+#include "cli/cli_options.h"
 #include "cli/cli_outputs.h"
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
+#include "io/output_folder.h"
 #include "montage/montage_run.h"
 
-static void montage_usage(FILE *out)
-{
-    fprintf(out,
-            "usage: sylva montage SCENE -o DIR [options]\n"
-            "Renders SCENE's development (the objects marked development: true) into the photograph\n"
-            "of its photo: section: the camera matched to the control points, the terrain and the\n"
-            "trees in front of the development hiding it, its shadows darkening the photograph.\n"
-            "Writes into DIR (created when missing): montage.png and montage.exr, mask.png (the\n"
-            "development's coverage), existing.png (the photograph as it is), wireline.png (the\n"
-            "development's outline and edges over the photograph) and the verification sheet\n"
-            "(sheet.html, sheet.png). See docs/photomontage.md.\n\n"
-            "options:\n"
-            "  -o, --output DIR        folder for the files (required)\n"
-            "  --photo IMG             the photograph (default: photo: file)\n"
-            "  --control-points FILE   the control points (default: photo: control_points)\n"
-            "  --spp N                 samples per pixel (default: the scene's)\n"
-            "  --threads N             threads for every phase (default: one per core)\n"
-            "  --season S              the plants on season S (spring, summer, autumn, winter)\n"
-            "                          or date YYYY-MM-DD, instead of the scene's season: key\n"
-            "  -q, --quiet             no progress or information lines (warnings\n"
-            "                          and errors still print)\n"
-            "  --allow-gdal-virtual    let the scene name GDAL virtual paths, URLs and connection\n"
-            "                          strings (these may reach the network; refused otherwise)\n"
-            "  -v, --verbose           plugin debug messages\n"
-            "  -h, --help              this text\n\n"
-            "exit status: 0 done, 1 usage, 2 bad scene, photograph or control points (or points\n"
-            "that cannot fix the camera), 3 output not written, 4 out of memory or internal error\n");
-}
+static const char montage_about[] =
+    "Renders SCENE's development (the objects marked development: true) into the photograph\n"
+    "of its photo: section: the camera matched to the control points, the terrain and the\n"
+    "trees in front of the development hiding it, its shadows darkening the photograph.\n"
+    "Writes into DIR (created when missing): montage.png and montage.exr, mask.png (the\n"
+    "development's coverage), existing.png (the photograph as it is), wireline.png (the\n"
+    "development's outline and edges over the photograph) and the verification sheet\n"
+    "(sheet.html, sheet.png). See docs/photomontage.md.\n";
+
+static const char montage_epilogue[] =
+    "exit status: 0 done, 1 usage, 2 bad scene, photograph or control points (or points\n"
+    "that cannot fix the camera), 3 output not written, 4 out of memory or internal error\n";
 
 int cmd_montage(int argc, char **argv)
 {
     const char *scene_path = NULL, *season = NULL;
     montage_options mo = {0};
     build_options bo = {0};
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        const char *val = i + 1 < argc ? argv[i + 1] : NULL;
-        uint64_t v;
-        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-            montage_usage(stdout);
-            return EXIT_OK;
-        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
-            if (!val) goto missing;
-            mo.dir = val, i++;
-        } else if (!strcmp(a, "--photo")) {
-            if (!val) goto missing;
-            mo.photo = val, i++;
-        } else if (!strcmp(a, "--control-points")) {
-            if (!val) goto missing;
-            mo.points = val, i++;
-        } else if (!strcmp(a, "--spp")) {
-            if (!val || cli_parse_u64("montage", a, val, 1, 1u << 20, &v)) return EXIT_USAGE;
-            mo.spp = (uint32_t)v, i++;
-        } else if (!strcmp(a, "--threads")) {
-            if (!val || cli_parse_u64("montage", a, val, 1, 1024, &v)) return EXIT_USAGE;
-            mo.threads = bo.threads = (unsigned)v, i++;
-        } else if (!strcmp(a, "--season")) {
-            if (!val) goto missing;
-            season = val, i++;
-        } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
-            mo.quiet = bo.quiet = 1;
-        } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
-            bo.verbose = 1;
-        } else if (cli_scene_argument("montage", a, &scene_path)) {
-            return EXIT_USAGE;
-        }
-        continue;
-    missing:
-        fprintf(stderr, "sylva montage: %s needs a value\n", a);
-        return EXIT_USAGE;
-    }
-    if (!scene_path || !mo.dir) {
-        montage_usage(stderr);
-        return EXIT_USAGE;
-    }
+    const cli_option options[] = {
+        {.names = "-o, --output", .type = CLI_PATH, .value = "DIR", .target = &mo.dir, .flags = CLI_REQUIRED,
+         .help = "folder for the files (required)"},
+        CLI_OPT_PATH("--photo", "IMG", mo.photo, "the photograph (default: photo: file)"),
+        CLI_OPT_PATH("--control-points", "FILE", mo.points, "the control points (default: photo: control_points)"),
+        CLI_OPT_WHOLE("--spp", "N", mo.spp, 1, 1u << 20, "samples per pixel (default: the scene's)"),
+        CLI_OPT_WHOLE("--threads", "N", bo.threads, 1, 1024, "threads for every phase (default: one per core)"),
+        CLI_OPT_TEXT("--season", "S", season, CLI_HELP_SEASON),
+        CLI_OPTS_SCENE_COMMON(bo),
+    };
+    const cli_command_spec spec = {"montage", "SCENE", montage_about, NULL, options, sizeof options / sizeof *options,
+                                   montage_epilogue, cli_operand_scene, &scene_path};
+    int parsed = cli_options_parse(&spec, argc, argv);
+    if (parsed) return cli_options_status(parsed);
+    mo.threads = bo.threads, mo.quiet = bo.quiet;
     err_buf err = {{0}};
     cli_scene cs;
     montage_report rep = {0};
-    int rc = cli_scene_open(&cs, "montage", scene_path, NULL, season, &bo);
     cli_file inputs[] = {{mo.photo, "--photo"}, {mo.points, "--control-points"}};
-    if (!rc) rc = cli_outputs_check("montage", cs.sf, inputs, 2, NULL, 0);
-    if (!rc && cli_make_folder(mo.dir, &err)) rc = cli_fail("montage", &err, ERR_OUTPUT);
+    cli_scene_use use = {.season = season, .check_outputs = 1, .inputs = inputs, .n_inputs = 2};
+    int rc = cli_scene_open(&cs, "montage", scene_path, &use, &bo);
+    if (!rc && output_folder_make(mo.dir, &err)) rc = cli_fail("montage", &err, ERR_OUTPUT);
     if (!rc && montage_run(cs.scene, cs.sf, &mo, &rep, &err)) rc = cli_fail("montage", &err, ERR_INPUT);
     if (!rc) printf("%s\n", mo.dir);
     montage_report_free(&rep);

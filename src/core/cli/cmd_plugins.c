@@ -10,34 +10,37 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli/cli_args.h"
+#include "cli/cli_options.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "plugin/plugin_host.h"
 #include "plugin/plugin_manifest.h"
 
-static void plugins_usage(FILE *out, const char *cmd)
+static const char plugins_about[] =
+    "\n"
+    "Lists the plugins found in the search path (name, kind, version, summary, file);\n"
+    "modules that could not be used are reported on stderr with the reason.\n";
+
+/* The search path and the exit statuses, after the options. */
+static void plugins_epilogue(char *out, size_t n)
 {
-    fprintf(out,
-            "usage: sylva %s [--describe NAME | --manifest MODULE.so]\n"
-            "\n"
-            "Lists the plugins found in the search path (name, kind, version, summary, file);\n"
-            "modules that could not be used are reported on stderr with the reason.\n"
-            "\n"
-            "  --describe NAME      print one plugin's summary, kind, file, parameter schema and\n"
-            "                       presets with their values\n"
-            "  --manifest MODULE.so write MODULE.sylva-plugin beside the module (runs the module's\n"
-            "                       code once: a build step)\n"
-            "  --help               print this help\n"
-            "\n"
-            "Search path, first match wins: the folders of SYLVA_PLUGIN_PATH (colon-separated),\n"
-            "%s%s%sthen %s.\n"
-            "Exit status: 0 done, 1 usage error, 2 no plugin called NAME or no manifest written,\n"
-            "4 out of memory.\n",
-            cmd, plugin_running_from_build_tree() ? "then " : "",
-            plugin_running_from_build_tree() ? SYLVA_PLUGIN_BUILD_DIR : "",
-            plugin_running_from_build_tree() ? " (this build tree), " : "",
-            SYLVA_PLUGIN_INSTALL_DIR);
+    int tree = plugin_running_from_build_tree();
+    snprintf(out, n,
+             "Search path, first match wins: the folders of SYLVA_PLUGIN_PATH (colon-separated),\n"
+             "%s%s%sthen %s.\n"
+             "Exit status: 0 done, 1 usage error, 2 no plugin called NAME or no manifest written,\n"
+             "4 out of memory.\n",
+             tree ? "then " : "", tree ? SYLVA_PLUGIN_BUILD_DIR : "", tree ? " (this build tree), " : "",
+             SYLVA_PLUGIN_INSTALL_DIR);
+}
+
+/* Any operand is unknown; the help follows the message. */
+static int plugins_operand(void *ctx, const char *cmd, const char *a)
+{
+    if (!a) return 0;
+    fprintf(stderr, "sylva %s: unknown %s '%s'\n", cmd, a[0] == '-' ? "option" : "argument", a);
+    cli_options_help(ctx, stderr);
+    return -1;
 }
 
 static void plugins_list(const plugin_registry *reg)
@@ -102,48 +105,30 @@ int cmd_plugins(int argc, char **argv)
 {
     const char *cmd = argc > 0 && argv[0] ? argv[0] : "plugins";
     const char *describe = NULL, *manifest = NULL;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            plugins_usage(stdout, cmd);
-            return EXIT_OK;
-        }
-        const char *value = NULL;
-        if (!strcmp(a, "--manifest")) {
-            if (i + 1 >= argc || manifest || describe) {
-                fprintf(stderr, "sylva %s: %s\n", cmd, i + 1 >= argc ? "--manifest needs a module "
-                        "file" : "give one of --describe NAME and --manifest MODULE");
-                plugins_usage(stderr, cmd);
-                return EXIT_USAGE;
-            }
-            manifest = argv[++i];
-            continue;
-        }
-        if (!strcmp(a, "--describe")) {
-            if (i + 1 >= argc) {
-                fprintf(stderr, "sylva %s: --describe needs a plugin name\n", cmd);
-                plugins_usage(stderr, cmd);
-                return EXIT_USAGE;
-            }
-            value = argv[++i];
-        } else if (!strncmp(a, "--describe=", 11)) {
-            value = a + 11;
-        } else {
-            fprintf(stderr, "sylva %s: unknown %s '%s'\n", cmd,
-                    a[0] == '-' ? "option" : "argument", a);
-            plugins_usage(stderr, cmd);
-            return EXIT_USAGE;
-        }
-        if (describe || manifest) {
-            fprintf(stderr, "sylva %s: %s; give one of --describe NAME and --manifest MODULE\n",
-                    cmd, describe ? "--describe is given twice" : "--manifest is given");
-            return EXIT_USAGE;
-        }
-        if (!value[0]) {
-            fprintf(stderr, "sylva %s: --describe needs a plugin name\n", cmd);
-            return EXIT_USAGE;
-        }
-        describe = value;
+    int n_describe = 0, n_manifest = 0;
+    char epilogue[1024];
+    plugins_epilogue(epilogue, sizeof epilogue);
+    const cli_option options[] = {
+        {.names = "--describe", .type = CLI_TEXT, .value = "NAME", .target = &describe, .given = &n_describe,
+         .help = "print one plugin's summary, kind, file, parameter schema and presets with their values"},
+        {.names = "--manifest", .type = CLI_PATH, .value = "MODULE.so", .target = &manifest, .given = &n_manifest,
+         .help = "write MODULE.sylva-plugin beside the module (runs the module's code once: a build step)"},
+        CLI_OPT_HELP,
+    };
+    cli_command_spec spec = {cmd, "", plugins_about, NULL, options, sizeof options / sizeof *options, epilogue,
+                             plugins_operand, NULL};
+    spec.ctx = &spec;
+    int parsed = cli_options_parse(&spec, argc, argv);
+    if (parsed) return cli_options_status(parsed);
+    if (n_describe + n_manifest > 1) {
+        fprintf(stderr, "sylva %s: %s; give one of --describe NAME and --manifest MODULE\n", cmd,
+                n_describe > 1 ? "--describe is given twice" : n_manifest > 1 ? "--manifest is given twice"
+                                                             : "--describe and --manifest are both given");
+        return EXIT_USAGE;
+    }
+    if (describe && !describe[0]) {
+        fprintf(stderr, "sylva %s: --describe needs a plugin name\n", cmd);
+        return EXIT_USAGE;
     }
 
     err_buf err;

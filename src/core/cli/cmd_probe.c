@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "cli/cli_args.h"
+#include "cli/cli_options.h"
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
@@ -15,27 +16,38 @@
 
 #define PROBE_LIST_MAX 20 /* plants listed one by one; the rest are counted */
 
-static void probe_usage(FILE *out)
+static const char probe_about[] =
+    "Prints what is at one point of SCENE's ground: the terrain's height, slope and aspect\n"
+    "there, whether water covers it, the plants standing within a radius (species, height,\n"
+    "distance, position; nearest first) and the objects whose footprint covers it (with\n"
+    "their top above the point). The scene is built as for rendering (plugins run).\n\n"
+    "E N are map coordinates in the site's CRS when the scene has a site (local = map -\n"
+    "site origin), local metres otherwise; positions and heights are printed the same way.\n";
+
+static const char probe_epilogue[] =
+    "exit status: 0 done, 1 usage, 2 bad scene, plugin failure, no terrain or a point off\n"
+    "the terrain, 4 out of memory or internal error\n";
+
+/* The operands: the scene, then E and N (negative ones too). */
+typedef struct probe_operands {
+    const char *scene_path, *coord[2];
+    int n_coord;
+} probe_operands;
+
+static int parse_number(const char *s, double *out);
+
+static int probe_operand(void *ctx, const char *cmd, const char *a)
 {
-    fprintf(out,
-            "usage: sylva probe SCENE E N [options]\n"
-            "Prints what is at one point of SCENE's ground: the terrain's height, slope and aspect\n"
-            "there, whether water covers it, the plants standing within a radius (species, height,\n"
-            "distance, position; nearest first) and the objects whose footprint covers it (with\n"
-            "their top above the point). The scene is built as for rendering (plugins run).\n\n"
-            "E N are map coordinates in the site's CRS when the scene has a site (local = map -\n"
-            "site origin), local metres otherwise; positions and heights are printed the same way.\n\n"
-            "options:\n"
-            "  --local             E N are local metres even when the scene has a site\n"
-            "  --radius R          plants within R metres of the point (default 10)\n"
-            "  -q, --quiet         no progress or information lines (warnings\n"
-            "                      and errors still print)\n"
-            "  --allow-gdal-virtual let the scene name GDAL virtual paths, URLs and connection\n"
-            "                      strings (these may reach the network; refused otherwise)\n"
-            "  -v, --verbose       plugin debug messages\n"
-            "  -h, --help          this text\n\n"
-            "exit status: 0 done, 1 usage, 2 bad scene, plugin failure, no terrain or a point off\n"
-            "the terrain, 4 out of memory or internal error\n");
+    probe_operands *p = ctx;
+    double v;
+    if (!a) return p->scene_path && p->n_coord == 2 ? 0 : -1;
+    if (!p->scene_path || (a[0] == '-' && parse_number(a, &v))) return cli_scene_argument(cmd, a, &p->scene_path);
+    if (p->n_coord == 2) {
+        fprintf(stderr, "sylva %s: one point only (E N); '%s' is extra\n", cmd, a);
+        return -1;
+    }
+    p->coord[p->n_coord++] = a;
+    return 0;
 }
 
 /* A finite number, the whole of s. */
@@ -85,44 +97,20 @@ static void print_result(const scene *sc, const probe_result *r, const double sh
 
 int cmd_probe(int argc, char **argv)
 {
-    const char *scene_path = NULL, *coord[2] = {NULL, NULL};
-    int local = 0, n_coord = 0;
+    int local = 0;
     double radius = 10.0, at[2];
     build_options bo = {.analysis = 1}; /* the ground as surveyed, whatever the camera */
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        const char *val = i + 1 < argc ? argv[i + 1] : NULL;
-        double v;
-        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-            probe_usage(stdout);
-            return EXIT_OK;
-        } else if (!strcmp(a, "--local")) {
-            local = 1;
-        } else if (!strcmp(a, "--radius")) {
-            if (!val || parse_number(val, &radius) || radius < 0 || radius > 1e6) {
-                fprintf(stderr, "sylva probe: --radius expects metres from 0 to 1e6, got '%s'\n", val ? val : "");
-                return EXIT_USAGE;
-            }
-            i++;
-        } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
-            bo.quiet = 1;
-        } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
-            bo.verbose = 1;
-        } else if (scene_path && (a[0] != '-' || !parse_number(a, &v))) {
-            /* after the scene: the coordinates (negative ones too) */
-            if (n_coord == 2) {
-                fprintf(stderr, "sylva probe: one point only (E N); '%s' is extra\n", a);
-                return EXIT_USAGE;
-            }
-            coord[n_coord++] = a;
-        } else if (cli_scene_argument("probe", a, &scene_path)) {
-            return EXIT_USAGE;
-        }
-    }
-    if (!scene_path || n_coord < 2) {
-        probe_usage(stderr);
-        return EXIT_USAGE;
-    }
+    const cli_option options[] = {
+        CLI_OPT_FLAG("--local", local, "E N are local metres even when the scene has a site"),
+        CLI_OPT_NUMBER("--radius", "R", "metres", radius, 0, 1e6, 0, "plants within R metres of the point (default 10)"),
+        CLI_OPTS_SCENE_COMMON(bo),
+    };
+    probe_operands ops = {0};
+    const cli_command_spec spec = {"probe", "SCENE E N", probe_about, NULL, options, sizeof options / sizeof *options,
+                                   probe_epilogue, probe_operand, &ops};
+    int parsed = cli_options_parse(&spec, argc, argv);
+    if (parsed) return cli_options_status(parsed);
+    const char *scene_path = ops.scene_path, *const *coord = ops.coord;
     for (int k = 0; k < 2; k++)
         if (parse_number(coord[k], &at[k])) {
             fprintf(stderr, "sylva probe: %s expects a number (metres), got '%s'\n", k ? "N" : "E", coord[k]);
@@ -131,7 +119,7 @@ int cmd_probe(int argc, char **argv)
 
     cli_scene cs;
     probe_result r = {0};
-    int rc = cli_scene_open(&cs, "probe", scene_path, NULL, NULL, &bo);
+    int rc = cli_scene_open(&cs, "probe", scene_path, &(cli_scene_use){.no_camera = 1}, &bo);
     if (rc) goto done;
     const site_settings *site = &cs.sf->site;
     int mapped = site->crs_wkt != NULL;

@@ -6,53 +6,27 @@
 
 #include "cli/cli_args.h"
 #include "cli/cli_mpi.h"
+#include "cli/cli_options.h"
 #include "cli/cli_outputs.h"
+#include "cli/cli_parts.h"
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
-#include "render/auto_exposure.h"
-#include "render/render.h"
-#include "scene/heightfield.h"
+#include "render/render_still.h"
 #include "util/progress.h"
 
-static void render_usage(FILE *out)
-{
-    fprintf(out,
-            "usage: sylva render SCENE [options]\n"
-            "Renders SCENE (a YAML scene file) with the path tracer and writes a linear EXR with\n"
-            "depth, normal, albedo and id layers plus a tone-mapped PNG.\n\n"
-            "options:\n"
-            "  -o, --output FILE   FILE.png or FILE.exr; the other format is written beside it\n"
-            "                      (default: the scene's name, _VIEWPOINT with --viewpoint and\n"
-            "                      _SEASON with --season, with .png in the current folder)\n"
-            "  --spp N             samples per pixel (overrides image.spp)\n"
-            "  --size WxH          image size in pixels (overrides image.width/height)\n"
-            "  --threads N         threads for every phase: tree variants, ecology, BVH and\n"
-            "                      pixels (default: one per core); the image does not depend\n"
-            "                      on it\n"
-            "  --seed N            random seed (overrides image.seed)\n"
-            "  --verify            verification mode: direct sun with hard shadows plus the\n"
-            "                      constant ambient term, no indirect light (as POV-Ray)\n"
-            "  --flat-earth        straight camera rays even when the scene's earth.curvature\n"
-            "                      is on (the view POV-Ray's export gives)\n"
-            "  --viewpoint NAME    the view from the scene's viewpoint NAME (its viewpoints:\n"
-            "                      section) instead of its camera\n"
-            "  --season S          the plants on season S (spring, summer, autumn, winter) or\n"
-            "                      date YYYY-MM-DD, instead of the scene's season: key\n"
-            "  -q, --quiet         no progress or information lines (warnings\n"
-            "                      and errors still print)\n"
-            "  --allow-gdal-virtual let the scene name GDAL virtual paths, URLs and connection\n"
-            "                      strings (these may reach the network; refused otherwise)\n"
-            "  -v, --verbose       plugin debug messages\n"
-            "  -h, --help          this text\n\n"
-            "Under MPI (`mpirun -np N sylva render ...`, in a build with SYLVA_MPI), every rank\n"
-            "builds the scene itself (on separate machines as soon as rank 0 could build and\n"
-            "broadcast it, with no scene format to keep in step) and renders every N-th band of\n"
-            "16 rows; rank 0 gathers the bands, meters the exposure and writes the one PNG and\n"
-            "EXR, byte for byte those of a single process. Only rank 0 prints. See docs/mpi.md.\n\n"
-            "exit status: 0 done, 1 usage, 2 bad scene or plugin failure, 3 output not written,\n"
-            "4 out of memory or internal error\n");
-}
+static const char render_about[] =
+    "Renders SCENE (a YAML scene file) with the path tracer and writes a linear EXR with\n"
+    "depth, normal, albedo and id layers plus a tone-mapped PNG.\n";
+
+static const char render_epilogue[] =
+    "Under MPI (`mpirun -np N sylva render ...`, in a build with SYLVA_MPI), every rank\n"
+    "builds the scene itself (on separate machines as soon as rank 0 could build and\n"
+    "broadcast it, with no scene format to keep in step) and renders every N-th band of\n"
+    "16 rows; rank 0 gathers the bands, meters the exposure and writes the one PNG and\n"
+    "EXR, byte for byte those of a single process. Only rank 0 prints. See docs/mpi.md.\n\n"
+    "exit status: 0 done, 1 usage, 2 bad scene or plugin failure, 3 output not written,\n"
+    "4 out of memory or internal error\n";
 
 /* Fills png and exr paths from -o (or the scene's stem, and the viewpoint's name and the season
  * after it). */
@@ -86,120 +60,46 @@ static int render_run(cli_mpi *m, int argc, char **argv)
     const char *scene_path = NULL, *out = NULL;
     render_options ro = {0};
     build_options bo = {0};
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        const char *val = i + 1 < argc ? argv[i + 1] : NULL;
-        uint64_t v;
-        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-            render_usage(stdout);
-            return EXIT_OK;
-        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
-            if (!val) goto missing;
-            out = val, i++;
-        } else if (!strcmp(a, "--spp")) {
-            if (!val || cli_parse_u64("render", a, val, 1, 1u << 20, &v)) return EXIT_USAGE;
-            ro.spp = (uint32_t)v, i++;
-        } else if (!strcmp(a, "--threads")) {
-            if (!val || cli_parse_u64("render", a, val, 1, 1024, &v)) return EXIT_USAGE;
-            ro.threads = bo.threads = (unsigned)v, i++;
-        } else if (!strcmp(a, "--seed")) {
-            if (!val || cli_parse_u64("render", a, val, 0, UINT64_MAX, &v)) return EXIT_USAGE;
-            ro.seed = v, ro.seed_set = 1, i++;
-        } else if (!strcmp(a, "--size")) {
-            if (!val || cli_parse_size("render", a, val, &ro.width, &ro.height)) return EXIT_USAGE;
-            i++;
-        } else if (!strcmp(a, "--verify")) {
-            ro.verify = 1;
-        } else if (!strcmp(a, "--flat-earth")) {
-            ro.flat_earth = 1;
-        } else if (!strcmp(a, "--viewpoint")) {
-            if (!val) goto missing;
-            viewpoint = val, i++;
-        } else if (!strcmp(a, "--season")) {
-            if (!val) goto missing;
-            season = val, i++;
-        } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
-            ro.quiet = bo.quiet = 1;
-        } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
-            bo.verbose = 1;
-        } else if (cli_scene_argument("render", a, &scene_path)) {
-            return EXIT_USAGE;
-        }
-        continue;
-    missing:
-        fprintf(stderr, "sylva render: %s needs a value\n", a);
-        return EXIT_USAGE;
-    }
-    if (!scene_path) {
-        render_usage(stderr);
-        return EXIT_USAGE;
-    }
+    const cli_option options[] = {
+        CLI_OPT_PATH("-o, --output", "FILE", out, "FILE.png or FILE.exr; the other format is written beside it "
+                     "(default: the scene's name, _VIEWPOINT with --viewpoint and _SEASON with --season, with "
+                     ".png in the current folder)"),
+        CLI_OPT_WHOLE("--spp", "N", ro.spp, 1, 1u << 20, "samples per pixel (overrides image.spp)"),
+        CLI_OPT_SIZE("--size", ro.width, ro.height, "image size in pixels (overrides image.width/height)"),
+        CLI_OPT_WHOLE("--threads", "N", bo.threads, 1, 1024, "threads for every phase: tree variants, ecology, "
+                      "BVH and pixels (default: one per core); the image does not depend on it"),
+        {.names = "--seed", .type = CLI_WHOLE, .value = "N", .target = &ro.seed, .target_size = sizeof ro.seed,
+         .max = UINT64_MAX, .given = &ro.seed_set, .help = "random seed (overrides image.seed)"},
+        CLI_OPT_FLAG("--verify", ro.verify, "verification mode: direct sun with hard shadows plus the constant "
+                     "ambient term, no indirect light (as POV-Ray)"),
+        CLI_OPT_FLAG("--flat-earth", ro.flat_earth, "straight camera rays even when the scene's earth.curvature "
+                     "is on (the view POV-Ray's export gives)"),
+        CLI_OPT_TEXT("--viewpoint", "NAME", viewpoint, CLI_HELP_VIEWPOINT),
+        CLI_OPT_TEXT("--season", "S", season, CLI_HELP_SEASON),
+        CLI_OPTS_SCENE_COMMON(bo),
+    };
+    const cli_command_spec spec = {"render", "SCENE", render_about, NULL, options, sizeof options / sizeof *options,
+                                   render_epilogue, cli_operand_scene, &scene_path};
+    int parsed = cli_options_parse(&spec, argc, argv);
+    if (parsed) return cli_options_status(parsed);
+    ro.threads = bo.threads, ro.quiet = bo.quiet;
     char png[4200], exr[4200];
     if (output_paths(scene_path, viewpoint, season, out, png, exr, sizeof png)) return EXIT_USAGE;
     if (!ro.threads) ro.threads = bo.threads = m->threads;
-    ro.part = (uint32_t)m->rank, ro.parts = (uint32_t)m->ranks;
     if (m->rank) ro.quiet = bo.quiet = 1;
 
     err_buf err = {{0}};
-    double t0 = progress_now();
+    render_still_options rs = {.render = ro, .png = png, .exr = exr, .started = progress_now()};
     cli_scene cs;
-    film *f = NULL;
-    int rc = cli_scene_open(&cs, "render", scene_path, viewpoint, season, &bo);
+    cli_parts parts;
+    cli_parts_of(&parts, m);
     cli_file outputs[] = {{png, out ? "-o" : "the output"}, {exr, out ? "-o" : "the output"}};
-    if (!rc) rc = cli_outputs_check("render", cs.sf, NULL, 0, outputs, 2);
-    if (!rc) rc = cli_scene_ground_cover(&cs, "render", ro.width, ro.height, ro.quiet);
-    if (rc) goto done;
-    if (cli_mpi_same_scene(m, cs.scene, &err)) {
-        rc = cli_fail("render", &err, ERR_INPUT);
-        goto done;
-    }
-    const scene *sc = cs.scene;
-    if (!ro.quiet)
-        fprintf(stderr, "scene: %u species, %u prototypes, %u instances, %u objects (%u shared models)%s (built in "
-                "%.2fs)\n", sc->n_species, sc->n_prototypes, sc->n_instances, sc->n_objects, sc->n_models,
-                sc->terrain ? ", terrain" : "", cs.seconds);
-    if (!ro.quiet && sc->terrain) {
-        char shown[192], surveyed[192];
-        heightfield_describe(sc->terrain, shown, sizeof shown);
-        heightfield_describe(sc->surveyed, surveyed, sizeof surveyed);
-        if (sc->terrain == sc->surveyed) fprintf(stderr, "ground: %s, as the analyses read it\n", shown);
-        else fprintf(stderr, "ground: rendered %s; the analyses read the DTM as surveyed, %s\n", shown, surveyed);
-    }
-    render_stats st;
-    f = render_scene(sc, &ro, &st, &err);
-    if (!f) {
-        rc = cli_fail("render", &err, ERR_INTERNAL);
-        goto done;
-    }
-    phase_add(&cs.times, PHASE_BVH, st.bvh_seconds);
-    phase_add(&cs.times, PHASE_RENDER_SETUP, st.build_seconds - st.bvh_seconds);
-    phase_add(&cs.times, PHASE_RENDER, st.render_seconds);
-    phase_mark t_out = phase_start();
-    /* the whole frame on rank 0; the exposure is metered on it there */
-    if (cli_mpi_gather_film(m, f, &err)) {
-        rc = cli_fail("render", &err, ERR_INTERNAL);
-        goto done;
-    }
-    uint64_t samples = st.samples;
-    cli_mpi_sum(m, &samples, 1);
-    if (m->rank) goto done;
-    double ev = sc->image.exposure_set ? sc->image.exposure : auto_exposure_stops(f);
-    if (!ro.quiet) fprintf(stderr, "exposure: %+.2f EV (%s)\n", ev, sc->image.exposure_set ? "image.exposure" : "metered");
-    if (film_write_pair(f, &sc->site, sc->image.tone, ev, png, exr, &err)) {
-        rc = cli_fail("render", &err, ERR_OUTPUT);
-        goto done;
-    }
-    phase_stop(&cs.times, PHASE_OUTPUT, t_out);
-    if (!ro.quiet) {
-        char ranks[32] = "";
-        if (m->ranks > 1) snprintf(ranks, sizeof ranks, " on %d ranks", m->ranks);
-        fprintf(stderr, "rendered %ux%u%s, %llu samples in %.2fs (BVH %.2fs); total %.2fs\n", f->width, f->height,
-                ranks, (unsigned long long)samples, st.render_seconds, st.build_seconds, progress_now() - t0);
-        phase_times_print(&cs.times, stderr);
-    }
-    printf("%s\n%s\n", png, exr);
-done:
-    film_free(f);
+    cli_scene_use use = {.viewpoint = viewpoint, .season = season, .check_outputs = 1, .outputs = outputs,
+                         .n_outputs = 2, .view = {.picture = 1, .width = ro.width, .height = ro.height, .quiet = ro.quiet}};
+    int rc = cli_scene_open(&cs, "render", scene_path, &use, &bo);
+    rs.scene_seconds = cs.seconds;
+    if (!rc && render_still_run(cs.scene, &rs, &parts.parts, &cs.times, &err)) rc = cli_parts_fail(&parts, &err);
+    if (!rc && !m->rank) printf("%s\n%s\n", png, exr);
     cli_scene_close(&cs);
     return rc;
 }

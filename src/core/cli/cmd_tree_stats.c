@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "cli/cli_args.h"
+#include "cli/cli_options.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
 #include "plugin/plugin_host.h"
@@ -18,22 +19,33 @@
 #include "scene_build/plugin_call.h"
 #include "scene_file/scene_file.h"
 
-static void tree_stats_usage(FILE *out)
+static const char tree_stats_about[] =
+    "Builds the age variants of SPECIES (a tree-plugin species of SCENE) as `sylva render`\n"
+    "would and prints, for each: age, recursion level, symbols, segments, leaves, branches,\n"
+    "triangles, height and bounding box in metres, the box-counting dimension D_B of its\n"
+    "silhouette, and the branch-number law's D and target branch count N2 where the law chose\n"
+    "the level.\n";
+
+static const char tree_stats_epilogue[] =
+    "exit status: 0 done, 1 usage, 2 bad scene, unknown species or plugin failure,\n"
+    "4 out of memory or internal error\n";
+
+/* The operands: the scene, then the species. */
+typedef struct tree_stats_operands {
+    const char *scene_path, *species_name;
+} tree_stats_operands;
+
+static int tree_stats_operand(void *ctx, const char *cmd, const char *a)
 {
-    fprintf(out,
-            "usage: sylva tree-stats SCENE SPECIES [options]\n"
-            "Builds the age variants of SPECIES (a tree-plugin species of SCENE) as `sylva render`\n"
-            "would and prints, for each: age, recursion level, symbols, segments, leaves, branches,\n"
-            "triangles, height and bounding box in metres, the box-counting dimension D_B of its\n"
-            "silhouette, and the branch-number law's D and target branch count N2 where the law chose\n"
-            "the level.\n\n"
-            "options:\n"
-            "  --variants N   build N age variants (ages 1/N, 2/N, ..., 1) instead of the species'\n"
-            "  --age A        build one model at normalised age A in (0, 1]\n"
-            "  -v, --verbose  plugin debug messages\n"
-            "  -h, --help     this text\n\n"
-            "exit status: 0 done, 1 usage, 2 bad scene, unknown species or plugin failure,\n"
-            "4 out of memory or internal error\n");
+    tree_stats_operands *t = ctx;
+    if (!a) return t->scene_path && t->species_name ? 0 : -1;
+    if (a[0] == '-' || !t->scene_path) return cli_scene_argument(cmd, a, &t->scene_path);
+    if (t->species_name) {
+        fprintf(stderr, "sylva %s: one scene and one species; '%s' is extra\n", cmd, a);
+        return -1;
+    }
+    t->species_name = a;
+    return 0;
 }
 
 static void print_row(uint32_t variant, const sylva_tree_stats *st)
@@ -97,50 +109,24 @@ done:
 
 int cmd_tree_stats(int argc, char **argv)
 {
-    const char *scene_path = NULL, *species_name = NULL;
     uint64_t variants = 0;
     double age = 0;
     int verbose = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *val = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-            tree_stats_usage(stdout);
-            return EXIT_OK;
-        } else if (!strcmp(a, "--variants")) {
-            if (!val) goto missing;
-            if (cli_parse_u64("tree-stats", a, val, 1, 64, &variants)) return EXIT_USAGE;
-            i++;
-        } else if (!strcmp(a, "--age")) {
-            if (!val) goto missing;
-            char *end = NULL;
-            age = strtod(val, &end);
-            if (!end || *end || !(age > 0 && age <= 1)) {
-                fprintf(stderr, "sylva tree-stats: --age must be a number in (0, 1], got '%s'\n", val);
-                return EXIT_USAGE;
-            }
-            i++;
-        } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
-            verbose = 1;
-        } else if (a[0] == '-') {
-            fprintf(stderr, "sylva tree-stats: unknown option '%s' (see sylva tree-stats --help)\n", a);
-            return EXIT_USAGE;
-        } else if (!scene_path) {
-            scene_path = a;
-        } else if (!species_name) {
-            species_name = a;
-        } else {
-            fprintf(stderr, "sylva tree-stats: one scene and one species; '%s' is extra\n", a);
-            return EXIT_USAGE;
-        }
-        continue;
-    missing:
-        fprintf(stderr, "sylva tree-stats: %s needs a value\n", a);
-        return EXIT_USAGE;
-    }
-    if (!scene_path || !species_name) {
-        tree_stats_usage(stderr);
-        return EXIT_USAGE;
-    }
+    const cli_option options[] = {
+        CLI_OPT_WHOLE("--variants", "N", variants, 1, 64, "build N age variants (ages 1/N, 2/N, ..., 1) instead of "
+                      "the species'"),
+        CLI_OPT_NUMBER("--age", "A", "a number", age, 0, 1, CLI_OPEN_LOW, "build one model at normalised age A in "
+                       "(0, 1]"),
+        {.names = "-v, --verbose", .type = CLI_FLAG, .target = &verbose, .target_size = sizeof verbose,
+         .flags = CLI_COMMON, .help = "plugin debug messages"},
+        CLI_OPT_HELP,
+    };
+    tree_stats_operands ops = {0};
+    const cli_command_spec spec = {"tree-stats", "SCENE SPECIES", tree_stats_about, NULL, options,
+                                   sizeof options / sizeof *options, tree_stats_epilogue, tree_stats_operand, &ops};
+    int parsed = cli_options_parse(&spec, argc, argv);
+    if (parsed) return cli_options_status(parsed);
+    const char *scene_path = ops.scene_path, *species_name = ops.species_name;
     err_buf err = {{0}};
     plugin_registry *reg = plugin_registry_open(&err);
     if (!reg) return cli_fail("tree-stats", &err, ERR_INTERNAL);

@@ -20,6 +20,8 @@
  *   ground_texture.h  the ground's albedo and micro-relief from those weights, filtered
  *   ground_cover_place.h  grass and herbs near the camera (with ground_cover_models.h, the
  *                     tufts' meshes)
+ *   scene_view.h      the steps a built scene takes before it is drawn from its camera (the
+ *                     ground cover for the picture's size)
  *
  * The height and normal of the terrain at any point are the scene's (scene/heightfield.h), since
  * the plugin host answers those queries below this layer. Including this header includes them
@@ -38,6 +40,7 @@
 #include "geometry/ground_cover_place.h"
 #include "geometry/ground_texture.h"
 #include "geometry/light_summary.h"
+#include "geometry/scene_view.h"
 #include "geometry/sky_preetham.h"
 #include "geometry/terrain_apron.h"
 #include "geometry/terrain_mesh.h"

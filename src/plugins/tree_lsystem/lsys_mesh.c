@@ -286,12 +286,12 @@ static int on_polygon(void *ctx, const double *xyz, uint32_t n, int32_t colour)
     return 0;
 }
 
-lsys_mesh *lsys_mesh_new(const lsys_mesh_config *cfg, lsys_error *err)
+lsys_mesh *lsys_mesh_new(const lsys_mesh_config *cfg, plugin_err *err)
 {
     if (cfg->sides < LSYS_MESH_MIN_SIDES || cfg->sides > LSYS_MESH_MAX_SIDES || !cfg->flush ||
         !(cfg->scale > 0) || !(cfg->bark_tile > 0) || cfg->max_polygon_vertices < 3 ||
         cfg->max_polygon_vertices > CHUNK_VERTICES) {
-        lsys_fail(err, LSYS_ERR_SYNTAX,
+        plugin_fail(err, LSYS_ERR_SYNTAX,
                   "mesh builder: sides must be %d to %d, scale and bark tile positive, a flush callback given "
                   "and the polygon limit 3 to %u",
                   LSYS_MESH_MIN_SIDES, LSYS_MESH_MAX_SIDES, CHUNK_VERTICES);
@@ -299,7 +299,7 @@ lsys_mesh *lsys_mesh_new(const lsys_mesh_config *cfg, lsys_error *err)
     }
     lsys_mesh *m = calloc(1, sizeof *m); /* owned by the caller */
     if (!m) {
-        lsys_fail(err, LSYS_ERR_NOMEM, "out of memory for the mesh builder");
+        plugin_fail(err, LSYS_ERR_NOMEM, "out of memory for the mesh builder");
         return NULL;
     }
     m->cfg = *cfg;
@@ -316,7 +316,7 @@ lsys_mesh *lsys_mesh_new(const lsys_mesh_config *cfg, lsys_error *err)
     m->poly_uv = malloc(2 * (size_t)pv * sizeof *m->poly_uv);
     if (!m->pos || !m->nrm || !m->uv || !m->poly_uv || !m->tri || !m->key || !m->poly_xy || !m->poly_idx || !m->poly_tri) {
         lsys_mesh_free(m);
-        lsys_fail(err, LSYS_ERR_NOMEM, "out of memory for the mesh builder's buffers");
+        plugin_fail(err, LSYS_ERR_NOMEM, "out of memory for the mesh builder's buffers");
         return NULL;
     }
     double phase = cfg->flat ? M_PI / cfg->sides : 0.0;

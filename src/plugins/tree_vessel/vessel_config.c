@@ -126,7 +126,7 @@ static void read_colour(const sylva_params *params, const char *key, float *dst)
 }
 
 static int read_polyline(const sylva_params *params, const vessel_polyline_rule *rule,
-                         double x_max, vessel_polyline *dst, vessel_err *err)
+                         double x_max, vessel_polyline *dst, plugin_err *err)
 {
     const sylva_value *v = given(params, rule->key);
     if (!v) return 0;
@@ -135,12 +135,12 @@ static int read_polyline(const sylva_params *params, const vessel_polyline_rule 
 }
 
 /* Copies the keys `params` gives onto *out. Returns 0, or -1 with err set. */
-static int read_given(const sylva_params *params, vessel_params *out, vessel_err *err)
+static int read_given(const sylva_params *params, vessel_params *out, plugin_err *err)
 {
     const sylva_value *v;
     if ((v = given(params, "vessels"))) {
         if (v->i < 1 || v->i > VESSEL_MAX_VESSELS)
-            return vessel_fail(err, VESSEL_FAULT_PARAM, "vessels", "'vessels' (S) is %lld; a tree needs 1 to %u "
+            return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, "vessels", "'vessels' (S) is %lld; a tree needs 1 to %u "
                                "vessels in its trunk", (long long)v->i, VESSEL_MAX_VESSELS);
         out->vessels = (uint32_t)v->i;
     }
@@ -151,16 +151,16 @@ static int read_given(const sylva_params *params, vessel_params *out, vessel_err
     read_real(params, "leaf_size", &out->leaf_size);
     if ((v = given(params, "leaf_density"))) {
         if (v->i < 0 || v->i > VESSEL_MAX_LEAF_DENSITY)
-            return vessel_fail(err, VESSEL_FAULT_PARAM, "leaf_density", "'leaf_density' is %lld; valid values are 0 "
+            return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, "leaf_density", "'leaf_density' is %lld; valid values are 0 "
                                "to %u leaves per branch", (long long)v->i, VESSEL_MAX_LEAF_DENSITY);
         out->leaf_density = (uint32_t)v->i;
     }
     if ((v = given(params, "leaf_type"))) out->leaf_type = (vessel_leaf_type)v->i;
     if ((v = given(params, "leaf_spray"))) out->leaf_spray = (uint32_t)v->i;
-    char why[VESSEL_ERR_MSG_MAX - 64];
+    char why[PLUGIN_ERR_MAX - 64];
     if ((v = given(params, "leaf"))) {
         int named = tree_look_leaf(v->s, VESSEL_LEAF_TEXTURE_SIZE, &out->leaf, why, sizeof why);
-        if (named < 0) return vessel_fail(err, VESSEL_FAULT_PARAM, "leaf", "'leaf': %s", why);
+        if (named < 0) return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, "leaf", "'leaf': %s", why);
         out->leaf_preset = named == TREE_LOOK_USER_MAPS ? -1 : named;
     }
     /* a bark preset brings its own angle unless bark_angle is given too */
@@ -168,14 +168,14 @@ static int read_given(const sylva_params *params, vessel_params *out, vessel_err
     if (bark) out->bark_preset = (bark_fractal_preset)bark->i;
     if ((bark || angle) &&
         tree_look_bark((int)out->bark_preset, angle ? angle->r : NAN, &out->bark, why, sizeof why))
-        return vessel_fail(err, VESSEL_FAULT_PARAM, angle ? "bark_angle" : "bark", "'%s': %s",
+        return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, angle ? "bark_angle" : "bark", "'%s': %s",
                            angle ? "bark_angle" : "bark", why);
     read_colour(params, "bark_color", out->bark_albedo);
     read_colour(params, "leaf_color", out->leaf_albedo);
     read_colour(params, "leaf_transmittance", out->leaf_transmittance);
     if ((v = given(params, "sides"))) {
         if (v->i < VESSEL_MIN_SIDES || v->i > VESSEL_MAX_SIDES)
-            return vessel_fail(err, VESSEL_FAULT_PARAM, "sides", "'sides' is %lld; branch cones have %u to %u sides",
+            return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, "sides", "'sides' is %lld; branch cones have %u to %u sides",
                                (long long)v->i, VESSEL_MIN_SIDES, VESSEL_MAX_SIDES);
         out->sides = (uint32_t)v->i;
     }
@@ -220,16 +220,16 @@ int vessel_preset_get(vessel_preset which, vessel_params *out)
     }
     values[0].i = which; /* the preset key itself */
     sylva_params block = {.spec = vessel_schema, .n = VESSEL_SCHEMA_COUNT, .values = values};
-    vessel_err err = {0};
+    plugin_err err = {0};
     memset(out, 0, sizeof *out);
     return read_given(&block, out, &err) ? -1 : 0;
 }
 
-int vessel_config_read(const sylva_params *params, vessel_params *out, vessel_err *err)
+int vessel_config_read(const sylva_params *params, vessel_params *out, plugin_err *err)
 {
     const sylva_value *preset = sylva_param(params, "preset");
     if (!preset || vessel_preset_get((vessel_preset)preset->i, out))
-        return vessel_fail(err, VESSEL_FAULT_PARAM, "preset", "unknown preset; the presets are beech, spruce, "
+        return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, "preset", "unknown preset; the presets are beech, spruce, "
                            "weeping_willow and maple");
     if (read_given(params, out, err)) return -1;
     return vessel_params_check(out, err);

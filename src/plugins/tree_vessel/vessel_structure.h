@@ -16,7 +16,7 @@
 
 #include <stdint.h>
 
-#include "vessel_error.h"
+#include "plugin_err.h"
 #include "vessel_math.h"
 #include "vessel_params.h"
 
@@ -70,10 +70,10 @@ static inline double vessel_bark_v_tip(const vessel_branch *b)
 uint32_t vessel_grown_vessels(uint32_t vessels, double age);
 
 /* Runs Algorithm 2 for p and the request g into *t (any previous content is released first).
- * Returns 0, or a vessel_fault with err set: parameters that fail vessel_params_check, an age
+ * Returns 0, or a sylva_status with err set: parameters that fail vessel_params_check, an age
  * outside (0, 1], or no memory. On failure *t is empty. */
 int vessel_tree_grow(const vessel_params *p, const vessel_growth *g, vessel_tree *t,
-                     vessel_err *err);
+                     plugin_err *err);
 
 /* Frees the branch list and empties *t; accepts an empty tree. */
 void vessel_tree_release(vessel_tree *t);

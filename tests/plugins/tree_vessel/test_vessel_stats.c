@@ -13,7 +13,7 @@ static int measure(const vessel_params *p, double age, sylva_tree_stats *st, ves
 {
     vessel_tree t = {0};
     vessel_growth g = {.age = age};
-    vessel_err err = {0};
+    plugin_err err = {0};
     int rc = vessel_tree_grow(p, &g, &t, &err);
     if (!rc) rc = vessel_mesh_build(&t, p, 1, 2, m, &err);
     if (rc) fprintf(stderr, "%s\n", err.msg);

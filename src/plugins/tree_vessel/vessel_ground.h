@@ -19,7 +19,7 @@
 
 #include "plugin_err.h"
 #include "vessel_params.h"
-#include "vessel_structure.h"
+#include "vessel_tree.h"
 
 #define VESSEL_GROUND_GAP 0.1  /* metres between the ground and the lowest leaf or bark */
 #define VESSEL_GROUND_SOFT 2.0 /* metres from the clearance up to the knee of the soft floor */

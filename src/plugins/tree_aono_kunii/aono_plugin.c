@@ -16,6 +16,7 @@
 #include "aono_mesh.h"
 #include "aono_stats.h"
 #include "plugin_host.h"
+#include "sylva/tree_stats.h"
 
 /* What create() keeps for generate(). Owned by the plugin until aono_destroy. */
 typedef struct aono_state {

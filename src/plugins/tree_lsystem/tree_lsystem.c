@@ -32,6 +32,7 @@
 #include "lsys_turtle.h"
 #include "plugin_host.h"
 #include "sylva/plugin.h"
+#include "sylva/tree_stats.h"
 
 #define MAX_NESTING 65536       /* [ ] and { } nesting */
 #define START_COLOUR 2          /* Lparser's starting colour index */

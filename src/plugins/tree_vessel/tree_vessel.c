@@ -13,6 +13,7 @@
 
 #include "plugin_host.h"
 #include "sylva/plugin.h"
+#include "sylva/tree_stats.h"
 #include "tree_look.h"
 #include "vessel_config.h"
 #include "vessel_mesh.h"

@@ -11,6 +11,7 @@
 #include "scene/ecology_session.h"
 #include "scene/scene_build.h"
 #include "scene/scene_file.h"
+#include "sylva/ecology_ext.h"
 
 #define SCENES SYLVA_TEST_DATA_DIR "/plugins/ecology/scenes"
 

@@ -14,6 +14,7 @@
 #include "aono_ratio.h"
 #include "harness.h"
 #include "tree_look.h"
+#include "sylva/tree_stats.h"
 
 #define DEG (3.14159265358979323846 / 180.0)
 

@@ -17,6 +17,7 @@
 #include "scene/scene.h"
 #include "scene/scene_build.h"
 #include "scene/scene_file.h"
+#include "sylva/tree_stats.h"
 
 static plugin_registry *registry(void)
 {

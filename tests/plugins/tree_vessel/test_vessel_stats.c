@@ -8,6 +8,7 @@
 #include "vessel_mesh.h"
 #include "vessel_stats.h"
 #include "vessel_test_util.h"
+#include "sylva/tree_stats.h"
 
 static int measure(const vessel_params *p, double age, sylva_tree_stats *st, vessel_mesh *m)
 {

@@ -28,7 +28,7 @@
 #include "ifs_maps.h"
 #include "surface_classes.h"
 #include "sylva/plugin.h"
-#include "terrain_ifs_schema.h"
+#include "ifs_schema.h"
 
 /* The refinement's detail is called out when its RMS passes this factor times what the DTM's
  * own roughness continues to, plus this many metres. */

@@ -10,7 +10,7 @@
 #include "aono_fixture.h"
 #include "aono_frame.h"
 #include "aono_mesh.h"
-#include "aono_plugin.h"
+#include "tree_aono_kunii.h"
 #include "aono_ratio.h"
 #include "harness.h"
 #include "tree_look.h"

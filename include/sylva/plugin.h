@@ -541,9 +541,18 @@ typedef struct sylva_plugin {
 typedef const sylva_plugin *(*sylva_plugin_get_fn)(uint32_t index);
 
 /* ---------------------------------------------------------------------------------------------
- * Convenience readers (inline; no linkage to the host). They cannot report a name the schema
- * does not have (sylva_param returns NULL, the typed readers 0); a plugin that has the table at
- * hand reads through api->param (ABI 1.1), which does.
+ * Parameter readers (inline: compiled into the plugin, so they change no byte of the ABI).
+ *
+ * The host has refused every scene-file key its block's schema does not have before any plugin
+ * code runs, so a name the schema lacks can only be the plugin's own misspelling. The checked
+ * readers (sylva_param_get and the *_checked ones below) report it: the host's error is set to
+ * a sentence naming the parameter and the parameters the schema has, which the host prints at
+ * the plugin's block (file:line:column), and the plugin returns the status they return. They go
+ * through api->param on a host of ABI 1.1 or later and through api->error on a 1.0 host.
+ *
+ * The unchecked readers (sylva_param_index, sylva_param, sylva_param_real, ...) keep their
+ * signatures and results for plugins written against ABI 1.0 to 1.5: NULL or 0 for a name the
+ * schema does not have, which nothing reports. New code reads through the checked ones.
  */
 static inline int sylva_param_index(const sylva_params *p, const char *name)
 {
@@ -578,6 +587,45 @@ static inline const char *sylva_param_str(const sylva_params *p, const char *nam
 {
     const sylva_value *v = sylva_param(p, name);
     return v ? v->s : (const char *)0;
+}
+
+/* The value of `name`, or NULL with the host's error set (return SYLVA_ERR_INTERNAL then). */
+static inline const sylva_value *sylva_param_get(const sylva_host_api *api, sylva_host *host,
+                                                 const sylva_params *p, const char *name)
+{
+    if (SYLVA_API_HAS(api, param)) return api->param(host, p, name);
+    const sylva_value *v = sylva_param(p, name);
+    if (!v) api->error(host, "the plugin read parameter '%s', which its schema does not have", name);
+    return v;
+}
+
+/* The typed checked readers: SYLVA_OK with *out set, or SYLVA_ERR_INTERNAL with the host's error
+ * set and *out untouched. */
+static inline int sylva_param_real_checked(const sylva_host_api *api, sylva_host *host,
+                                           const sylva_params *p, const char *name, double *out)
+{
+    const sylva_value *v = sylva_param_get(api, host, p, name);
+    if (!v) return SYLVA_ERR_INTERNAL;
+    *out = v->r;
+    return SYLVA_OK;
+}
+
+static inline int sylva_param_int_checked(const sylva_host_api *api, sylva_host *host,
+                                          const sylva_params *p, const char *name, int64_t *out)
+{
+    const sylva_value *v = sylva_param_get(api, host, p, name);
+    if (!v) return SYLVA_ERR_INTERNAL;
+    *out = v->i;
+    return SYLVA_OK;
+}
+
+static inline int sylva_param_str_checked(const sylva_host_api *api, sylva_host *host,
+                                          const sylva_params *p, const char *name, const char **out)
+{
+    const sylva_value *v = sylva_param_get(api, host, p, name);
+    if (!v) return SYLVA_ERR_INTERNAL;
+    *out = v->s;
+    return SYLVA_OK;
 }
 
 #ifdef __cplusplus

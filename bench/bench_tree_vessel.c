@@ -45,7 +45,7 @@ static int measure(const vessel_params *p, uint32_t lod, int runs, figures *f)
     for (int r = 0; r < runs; r++) {
         vessel_tree t = {0};
         vessel_mesh m = {0};
-        vessel_err err = {0};
+        plugin_err err = {0};
         vessel_growth g = {.age = 1.0, .lod = lod};
         double t0 = now();
         if (vessel_tree_grow(p, &g, &t, &err)) goto fail;

@@ -44,7 +44,7 @@ static ifs_maps *bench_maps(uint32_t n, double alpha, ifs_dtm **dtm_out)
     ifs_dtm_generator g = {.nx = n, .ny = n, .dx = 25, .dy = 25, .relief = 150, .smoothness = 0.8};
     sylva_rng rng;
     rng_stream(&rng, 1, "terrain_ifs.dtm", 0);
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     ifs_dtm *d = NULL;
     ifs_maps *m = NULL;
     ifs_maps_params p = {.mode = IFS_MODE_BILINEAR, .alpha = alpha};
@@ -71,7 +71,7 @@ static double random_rate(const ifs_maps *m, const ifs_dtm *d, uint64_t points, 
                          .rng_u64 = host_api_table()->rng_u64, .nx = side, .ny = side, .depth = 1,
                          .threads = threads};
     for (int run = 0; streams && z && run < 3; run++) {
-        ifs_err err = {{0}};
+        plugin_err err = {0};
         double t0 = now();
         if (ifs_chaos_grid(m, &job, z, NULL, &err)) {
             fprintf(stderr, "terrain_ifs_throughput: %s\n", err.msg);
@@ -90,7 +90,7 @@ static double eval_seconds(const ifs_maps *m, uint32_t side, uint32_t threads, u
     *depth = ifs_eval_auto_depth(m, side, side);
     double best = 1e30;
     for (int run = 0; z && run < 3; run++) {
-        ifs_err err = {{0}};
+        plugin_err err = {0};
         double t0 = now();
         ifs_eval_grid(m, side, side, *depth, threads, z, NULL, NULL, &err);
         double t = now() - t0;

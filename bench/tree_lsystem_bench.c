@@ -74,7 +74,7 @@ int main(int argc, char **argv)
     }
     machine();
     lsys_system *sys = NULL;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     if (lsys_read(fig9, sizeof fig9 - 1, "fig9", NULL, &sys, &e)) {
         fprintf(stderr, "%s\n", e.msg);
         return 1;

@@ -1,4 +1,7 @@
-/* sylva/plugin.h — the one header a sylva plugin includes.
+/* sylva/plugin.h — the core of the plugin ABI: the descriptor, the parameter schema and values,
+ * the host API table, and the requests and outputs of each kind. The optional interfaces a
+ * plugin may offer through extension(id) have a header each (sylva/ecology_ext.h,
+ * sylva/tree_stats.h); this header includes them, so one #include still gives the whole ABI.
  *
  * A plugin is a shared module that exports one function, `sylva_plugin_get`, returning const
  * descriptors (one per index, NULL past the end). A descriptor names the plugin, its kind, its
@@ -538,9 +541,18 @@ typedef struct sylva_plugin {
 typedef const sylva_plugin *(*sylva_plugin_get_fn)(uint32_t index);
 
 /* ---------------------------------------------------------------------------------------------
- * Convenience readers (inline; no linkage to the host). They cannot report a name the schema
- * does not have (sylva_param returns NULL, the typed readers 0); a plugin that has the table at
- * hand reads through api->param (ABI 1.1), which does.
+ * Parameter readers (inline: compiled into the plugin, so they change no byte of the ABI).
+ *
+ * The host has refused every scene-file key its block's schema does not have before any plugin
+ * code runs, so a name the schema lacks can only be the plugin's own misspelling. The checked
+ * readers (sylva_param_get and the *_checked ones below) report it: the host's error is set to
+ * a sentence naming the parameter and the parameters the schema has, which the host prints at
+ * the plugin's block (file:line:column), and the plugin returns the status they return. They go
+ * through api->param on a host of ABI 1.1 or later and through api->error on a 1.0 host.
+ *
+ * The unchecked readers (sylva_param_index, sylva_param, sylva_param_real, ...) keep their
+ * signatures and results for plugins written against ABI 1.0 to 1.5: NULL or 0 for a name the
+ * schema does not have, which nothing reports. New code reads through the checked ones.
  */
 static inline int sylva_param_index(const sylva_params *p, const char *name)
 {
@@ -577,122 +589,53 @@ static inline const char *sylva_param_str(const sylva_params *p, const char *nam
     return v ? v->s : (const char *)0;
 }
 
-/* =============================================================================================
- * Optional interface "sylva.ecology.v1": an ecology simulation the host runs year by year.
- *
- * An ecology plugin whose descriptor's extension(SYLVA_ECOLOGY_EXT_V1) returns a
- * sylva_ecology_ext_v1 table lets the host drive the simulation itself (`sylva simulate`,
- * `sylva factors`): start a run from create()'s state and an ecology request, step it a year at
- * a time, read the living plants and the terrain factor maps, save the whole run to a file and
- * load it to continue. A run started from the same state and request and stepped to the scene's
- * year holds the plants generate() places. The layouts below are fixed under this id: a change
- * is a new id.
- *
- * Ownership: a run is the plugin's and is freed by run_free (accepts NULL); it borrows the state
- * create() made, which must outlive it, and copies what it needs from the request. Factor values
- * belong to the run. Functions that can fail return SYLVA_OK or a negative sylva_status and
- * leave a sentence through api->error().
- */
-#define SYLVA_ECOLOGY_EXT_V1 "sylva.ecology.v1"
+/* The value of `name`, or NULL with the host's error set (return SYLVA_ERR_INTERNAL then). */
+static inline const sylva_value *sylva_param_get(const sylva_host_api *api, sylva_host *host,
+                                                 const sylva_params *p, const char *name)
+{
+    if (SYLVA_API_HAS(api, param)) return api->param(host, p, name);
+    const sylva_value *v = sylva_param(p, name);
+    if (!v) api->error(host, "the plugin read parameter '%s', which its schema does not have", name);
+    return v;
+}
 
-typedef struct sylva_ecology_run sylva_ecology_run; /* opaque: the plugin's */
+/* The typed checked readers: SYLVA_OK with *out set, or SYLVA_ERR_INTERNAL with the host's error
+ * set and *out untouched. */
+static inline int sylva_param_real_checked(const sylva_host_api *api, sylva_host *host,
+                                           const sylva_params *p, const char *name, double *out)
+{
+    const sylva_value *v = sylva_param_get(api, host, p, name);
+    if (!v) return SYLVA_ERR_INTERNAL;
+    *out = v->r;
+    return SYLVA_OK;
+}
 
-/* One living plant. */
-typedef struct sylva_ecology_plant_record {
-    uint32_t species;     /* index into the request's species array */
-    double position[3];   /* metres; z on the terrain surface */
-    double age;           /* years */
-    double height;        /* metres: the normalised height times the species' model_height */
-    double radius;        /* ecological radius, metres */
-    double vigour;        /* [0, 1] */
-} sylva_ecology_plant_record;
+static inline int sylva_param_int_checked(const sylva_host_api *api, sylva_host *host,
+                                          const sylva_params *p, const char *name, int64_t *out)
+{
+    const sylva_value *v = sylva_param_get(api, host, p, name);
+    if (!v) return SYLVA_ERR_INTERNAL;
+    *out = v->i;
+    return SYLVA_OK;
+}
 
-/* One terrain factor on the run's patch grid. */
-typedef struct sylva_ecology_factor_map {
-    const char *name;     /* "altitude", "slope", ...: static in the plugin */
-    uint32_t nx, ny;      /* patches along x (west to east) and y (south to north) */
-    double x0, y0;        /* south-west corner of patch (0, 0), metres */
-    double dx, dy;        /* patch size, metres */
-    const float *values;  /* nx * ny values in [0, 1], row 0 the southern row; owned by the run */
-} sylva_ecology_factor_map;
-
-#define SYLVA_ECOLOGY_ALL_SPECIES 0xffffffffu
-
-typedef struct sylva_ecology_ext_v1 {
-    uint32_t size; /* sizeof(sylva_ecology_ext_v1) as the plugin compiled it */
-    /* Starts a run at year 0 on the request's terrain and species. */
-    int (*run_new)(void *state, const sylva_host_api *, sylva_host *,
-                   const sylva_ecology_request *, sylva_ecology_run **run);
-    void (*run_free)(sylva_ecology_run *run);
-    uint32_t (*years_wanted)(const sylva_ecology_run *); /* the years the scene asks for */
-    uint32_t (*year)(const sylva_ecology_run *);         /* years simulated so far */
-    /* Simulates `years` more years. */
-    int (*step)(sylva_ecology_run *, const sylva_host_api *, sylva_host *, uint32_t years);
-    /* Living plants of one species, or of all with SYLVA_ECOLOGY_ALL_SPECIES. */
-    uint32_t (*plant_count)(const sylva_ecology_run *, uint32_t species);
-    /* Copies living plants [first, first + count) in the run's order (by species, then in
-     * order of birth) into out. */
-    int (*plants)(const sylva_ecology_run *, const sylva_host_api *, sylva_host *, uint32_t first,
-                  uint32_t count, sylva_ecology_plant_record *out);
-    uint32_t (*factor_count)(const sylva_ecology_run *);
-    int (*factor)(const sylva_ecology_run *, uint32_t index, sylva_ecology_factor_map *out);
-    /* The whole run (plants, year, random streams) to a file (written whole or not at all), and
-     * back: load replaces the run's state with the file's, refusing a file from another
-     * terrain, species list or parameters. */
-    int (*save)(const sylva_ecology_run *, const sylva_host_api *, sylva_host *, const char *path);
-    int (*load)(sylva_ecology_run *, const sylva_host_api *, sylva_host *, const char *path);
-} sylva_ecology_ext_v1;
-
-/* "sylva.ecology.v2": v1's table, then place(). A plugin offering v2 may answer a request for v1
- * with the same table's v1 part (its size is then v2's). */
-#define SYLVA_ECOLOGY_EXT_V2 "sylva.ecology.v2"
-
-typedef struct sylva_ecology_ext_v2 {
-    sylva_ecology_ext_v1 v1; /* v1.size = sizeof(sylva_ecology_ext_v2) as the plugin compiled it */
-    /* Adds the run's plants with api->plant_add exactly as generate() adds those of a run it
-     * simulated to the same year (the same plants, turns, heights and normalised ages, seedlings
-     * left out alike), so a run saved and loaded renders as the run itself; *placed gets how
-     * many. */
-    int (*place)(const sylva_ecology_run *, const sylva_host_api *, sylva_host *, uint32_t *placed);
-} sylva_ecology_ext_v2;
-
-/* =============================================================================================
- * Optional interface "sylva.tree_stats.v1": the figures of the model a tree plugin built.
- *
- * A tree plugin whose descriptor's extension(SYLVA_TREE_STATS_V1) returns a sylva_tree_stats_v1
- * table tells the host (`sylva tree-stats`) what its last successful generate() on a state
- * built: counts, bounds, the box-counting dimension of the side silhouette (002 eq. 3) and the
- * branch-number law's figures (002 eq. 6). A figure the plugin does not have is 0. The layouts
- * below are fixed under this id: a change is a new id.
- *
- * Ownership: the caller owns *out; the plugin writes no field at or past out->size bytes.
- */
-#define SYLVA_TREE_STATS_V1 "sylva.tree_stats.v1"
-
-typedef struct sylva_tree_stats {
-    uint32_t size;            /* sizeof(sylva_tree_stats) as the caller compiled it */
-    double age;               /* the request's normalised age */
-    uint32_t recursion;       /* derivation (growth) steps the model used */
-    uint64_t symbols;         /* symbols interpreted */
-    uint64_t segments;        /* wood segments drawn */
-    uint64_t leaves;          /* leaves (polygons) drawn */
-    uint64_t branches;        /* branch count N of the branch-number law */
-    uint64_t triangles;       /* triangles appended to the mesh */
-    double bbox_min[3], bbox_max[3]; /* metres, in the model's frame (Z up, base at the origin) */
-    double height;            /* metres */
-    double box_dimension;     /* D_B of this model's side silhouette without leaves */
-    double law_dimension;     /* D used in eq. 6 for this model; 0 when the law was not used */
-    double target_branches;   /* N2 of eq. 6 for this age; 0 when the law was not used */
-} sylva_tree_stats;
-
-typedef struct sylva_tree_stats_v1 {
-    uint32_t size; /* sizeof(sylva_tree_stats_v1) as the plugin compiled it */
-    /* Fills *out with the figures of the model the last successful generate() on `state`
-     * built. Returns SYLVA_OK, or SYLVA_ERR_PARAM when none has succeeded yet. */
-    int (*last_stats)(void *state, sylva_tree_stats *out);
-} sylva_tree_stats_v1;
+static inline int sylva_param_str_checked(const sylva_host_api *api, sylva_host *host,
+                                          const sylva_params *p, const char *name, const char **out)
+{
+    const sylva_value *v = sylva_param_get(api, host, p, name);
+    if (!v) return SYLVA_ERR_INTERNAL;
+    *out = v->s;
+    return SYLVA_OK;
+}
 
 #ifdef __cplusplus
 }
 #endif
+
+/* The optional interfaces (extension(id)), each in its own header; included here so that a
+ * plugin written against an older plugin.h compiles unchanged. A plugin may include only the
+ * one it offers. */
+#include "sylva/ecology_ext.h"
+#include "sylva/tree_stats.h"
+
 #endif

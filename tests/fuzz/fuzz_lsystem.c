@@ -24,14 +24,14 @@
 #define MAX_DEPTH 512
 #define RASTER_LEVEL 7              /* 128 x 128 silhouette */
 
-static void fail(const char *what, const lsys_error *e)
+static void fail(const char *what, const plugin_err *e)
 {
     fprintf(stderr, "fuzz_lsystem: %s%s%s\n", what, e ? ": " : "", e ? e->msg : "");
     abort();
 }
 
 /* A status other than LSYS_OK must come with a sentence. */
-static void check_status(int rc, const lsys_error *e, const char *step)
+static void check_status(int rc, const plugin_err *e, const char *step)
 {
     if (rc != LSYS_OK && !e->msg[0]) fail(step, e);
 }
@@ -66,7 +66,7 @@ static void draw(const lsys_system *sys, const unsigned char *s, size_t n)
                               .tube_corners = sys->shape == 0 ? 4 : 8,
                               .random = next_uniform, .random_ctx = &seed};
     if (sys->poly_limit && sys->poly_limit < cfg.max_polygons) cfg.max_polygons = sys->poly_limit;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     lsys_turtle_stats st;
     int rc = lsys_interpret(s, n, &cfg, NULL, 0, &st, &e);
     check_status(rc, &e, "turtle (bounds)");
@@ -103,7 +103,7 @@ static void draw(const lsys_system *sys, const unsigned char *s, size_t n)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     lsys_system *sys = NULL; /* owned here */
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     int rc = lsys_read((const char *)data, size, "fuzz.ls", NULL, &sys, &e);
     if (rc == LSYS_ERR_SYNTAX) {
         lsys_read_options lenient = {.lenient = 1};

@@ -36,8 +36,15 @@ static int example_create(const sylva_host_api *api, sylva_host *host, const syl
                           void **state)
 {
     *state = NULL;
-    uint32_t nx = (uint32_t)sylva_param_int(params, "nx");
-    uint32_t ny = (uint32_t)sylva_param_int(params, "ny");
+    /* The checked readers: a name the schema does not have is reported, never read as 0. */
+    int64_t nx_given = 0, ny_given = 0;
+    double spacing = 0, amplitude = 0;
+    int rc = sylva_param_int_checked(api, host, params, "nx", &nx_given);
+    if (!rc) rc = sylva_param_int_checked(api, host, params, "ny", &ny_given);
+    if (!rc) rc = sylva_param_real_checked(api, host, params, "node_spacing", &spacing);
+    if (!rc) rc = sylva_param_real_checked(api, host, params, "amplitude", &amplitude);
+    if (rc) return rc;
+    uint32_t nx = (uint32_t)nx_given, ny = (uint32_t)ny_given;
     /* The schema bounds each side; only the product needs a check of its own. */
     if ((uint64_t)nx * ny > EXAMPLE_MAX_NODES)
         return api->param_error(host, params, "ny", "nx * ny = %u * %u nodes is more than this "
@@ -49,8 +56,8 @@ static int example_create(const sylva_host_api *api, sylva_host *host, const syl
     }
     s->nx = nx;
     s->ny = ny;
-    s->spacing = sylva_param_real(params, "node_spacing");
-    s->amplitude = sylva_param_real(params, "amplitude");
+    s->spacing = spacing;
+    s->amplitude = amplitude;
     *state = s;
     return SYLVA_OK;
 }

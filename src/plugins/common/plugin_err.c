@@ -4,27 +4,40 @@
 #include <stdarg.h>
 #include <stdio.h>
 
-int plugin_fail(plugin_err *e, int status, const char *fmt, ...)
+static int vfail(plugin_err *e, int status, const sylva_params *where, const char *param, const char *fmt,
+                 va_list ap)
 {
     if (e) {
-        e->status = status, e->where = NULL, e->param[0] = '\0';
-        va_list ap;
-        va_start(ap, fmt);
+        e->status = status, e->where = where;
+        snprintf(e->param, sizeof e->param, "%s", param ? param : "");
         vsnprintf(e->msg, sizeof e->msg, fmt, ap);
-        va_end(ap);
     }
+    return status;
+}
+
+int plugin_fail(plugin_err *e, int status, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vfail(e, status, NULL, NULL, fmt, ap);
+    va_end(ap);
     return status;
 }
 
 int plugin_fail_param(plugin_err *e, const sylva_params *where, const char *param, const char *fmt, ...)
 {
-    if (e) {
-        e->status = SYLVA_ERR_PARAM, e->where = where;
-        snprintf(e->param, sizeof e->param, "%s", param);
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(e->msg, sizeof e->msg, fmt, ap);
-        va_end(ap);
-    }
+    va_list ap;
+    va_start(ap, fmt);
+    vfail(e, SYLVA_ERR_PARAM, where, param, fmt, ap);
+    va_end(ap);
     return SYLVA_ERR_PARAM;
+}
+
+int plugin_fail_key(plugin_err *e, int status, const sylva_params *where, const char *param, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vfail(e, status, where, param, fmt, ap);
+    va_end(ap);
+    return status;
 }

@@ -8,7 +8,7 @@
 
 #include "sylva/plugin.h"
 
-#define PLUGIN_ERR_MAX 768
+#define PLUGIN_ERR_MAX 1024
 
 typedef struct plugin_err {
     int status;                /* a negative sylva_status; 0 until a failure is reported */
@@ -25,5 +25,10 @@ int plugin_fail(plugin_err *e, int status, const char *fmt, ...) SYLVA_PRINTF(3,
  * SYLVA_ERR_PARAM. */
 int plugin_fail_param(plugin_err *e, const sylva_params *where, const char *param, const char *fmt, ...)
     SYLVA_PRINTF(4, 5);
+
+/* The same with any status (e.g. SYLVA_ERR_LIMIT at the key whose value passes a limit); param
+ * may be NULL or "" (no key at fault). */
+int plugin_fail_key(plugin_err *e, int status, const sylva_params *where, const char *param, const char *fmt, ...)
+    SYLVA_PRINTF(5, 6);
 
 #endif

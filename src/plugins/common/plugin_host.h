@@ -8,6 +8,7 @@
 
 #include "plugin_err.h"
 #include "sylva/plugin.h"
+#include "sylva/tree_stats.h"
 
 /* The host of one call, as the ctx of a model's callbacks. Lives on the caller's stack. */
 typedef struct plugin_host_ref {

@@ -18,6 +18,7 @@
 #include "eco_sim.h"
 #include "plugin_host.h"
 #include "sylva/plugin.h"
+#include "sylva/ecology_ext.h"
 
 /* The plugin's state between create() and destroy(): the run configuration read from the
  * scene's `ecology:` block, and where each of its keys stands in the scene file, so that a

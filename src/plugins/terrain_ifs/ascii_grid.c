@@ -71,14 +71,14 @@ static int is_nodata(double v, int has_nodata, double nodata)
     return has_nodata && ((isnan(v) && isnan(nodata)) || v == nodata);
 }
 
-int ifs_ascii_grid_check(const char *path, const char *what, ifs_err *err)
+int ifs_ascii_grid_check(const char *path, const char *what, plugin_err *err)
 {
     FILE *f = fopen(path, "rb");
     if (!f) return SYLVA_OK; /* the reader reports it */
     word_reader *r = malloc(sizeof *r); /* owned here: the read buffer */
     if (!r) {
         fclose(f);
-        return ifs_fail(err, SYLVA_ERR_NOMEM, "out of memory checking the %s '%s'", what, path);
+        return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory checking the %s '%s'", what, path);
     }
     r->f = f, r->len = r->pos = 0, r->line = 1, r->column = 1, r->at_column = 1;
     char w[WORD_MAX];
@@ -94,7 +94,7 @@ int ifs_ascii_grid_check(const char *path, const char *what, ifs_err *err)
             char key[WORD_MAX];
             memcpy(key, w, sizeof key);
             if (!next_word(r, w, &long_word) || !is_number(w)) {
-                rc = ifs_fail(err, SYLVA_ERR_IO, "the %s '%s' is an ESRI ASCII grid whose header "
+                rc = plugin_fail(err, SYLVA_ERR_IO, "the %s '%s' is an ESRI ASCII grid whose header "
                               "line %llu has no number after its keyword", what, path,
                               (unsigned long long)r->line);
                 goto done;
@@ -105,7 +105,7 @@ int ifs_ascii_grid_check(const char *path, const char *what, ifs_err *err)
             if (!strcasecmp(key, "nodata_value")) has_nodata = 1, nodata = v;
             if ((!strcasecmp(key, "cellsize") || !strcasecmp(key, "dx") || !strcasecmp(key, "dy")) &&
                 !(v > 0 && isfinite(v))) {
-                rc = ifs_fail(err, SYLVA_ERR_IO, "%s:%llu:%llu: the %s is an ESRI ASCII grid whose %s is %g; "
+                rc = plugin_fail(err, SYLVA_ERR_IO, "%s:%llu:%llu: the %s is an ESRI ASCII grid whose %s is %g; "
                               "the size of a cell must be a positive number of the grid's units",
                               path, (unsigned long long)r->line, (unsigned long long)r->column, what, key, v);
                 goto done;
@@ -117,7 +117,7 @@ int ifs_ascii_grid_check(const char *path, const char *what, ifs_err *err)
         break;
     }
     if (!cols || !rows) {
-        rc = ifs_fail(err, SYLVA_ERR_IO, "the %s '%s' is an ESRI ASCII grid without a valid ncols "
+        rc = plugin_fail(err, SYLVA_ERR_IO, "the %s '%s' is an ESRI ASCII grid without a valid ncols "
                       "and nrows (whole numbers from 1) in its header", what, path);
         goto done;
     }
@@ -125,7 +125,7 @@ int ifs_ascii_grid_check(const char *path, const char *what, ifs_err *err)
     int more = w[0] != '\0' && !have_key;
     while (more) {
         if (long_word || !is_number(w)) {
-            rc = ifs_fail(err, SYLVA_ERR_IO, "the %s '%s' is an ESRI ASCII grid whose value %llu "
+            rc = plugin_fail(err, SYLVA_ERR_IO, "the %s '%s' is an ESRI ASCII grid whose value %llu "
                           "(row %llu, column %llu, on line %llu) is not a number", what, path,
                           (unsigned long long)got + 1, (unsigned long long)(got / cols) + 1,
                           (unsigned long long)(got % cols) + 1, (unsigned long long)r->line);
@@ -133,7 +133,7 @@ int ifs_ascii_grid_check(const char *path, const char *what, ifs_err *err)
         }
         double v = strtod(w, NULL);
         if (!isfinite(v) && !is_nodata(v, has_nodata, nodata)) {
-            rc = ifs_fail(err, SYLVA_ERR_IO, "%s:%llu:%llu: the %s is an ESRI ASCII grid whose value %llu (row "
+            rc = plugin_fail(err, SYLVA_ERR_IO, "%s:%llu:%llu: the %s is an ESRI ASCII grid whose value %llu (row "
                           "%llu, column %llu) is not a finite number (NaN or infinity); give every height as "
                           "a number, or mark cells without one by the grid's NODATA_value%s",
                           path, (unsigned long long)r->line, (unsigned long long)r->column, what,
@@ -146,7 +146,7 @@ int ifs_ascii_grid_check(const char *path, const char *what, ifs_err *err)
         more = next_word(r, w, &long_word);
     }
     if (got != want)
-        rc = ifs_fail(err, SYLVA_ERR_IO, "the %s '%s' is an ESRI ASCII grid of %llu x %llu values "
+        rc = plugin_fail(err, SYLVA_ERR_IO, "the %s '%s' is an ESRI ASCII grid of %llu x %llu values "
                       "but holds %s%llu: it is %s; give the whole grid", what, path,
                       (unsigned long long)cols, (unsigned long long)rows,
                       got > want ? "more than " : "", (unsigned long long)(got > want ? want : got),

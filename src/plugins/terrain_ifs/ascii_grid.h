@@ -9,10 +9,10 @@
 #ifndef TERRAIN_IFS_ASCII_GRID_H
 #define TERRAIN_IFS_ASCII_GRID_H
 
-#include "ifs_err.h"
+#include "plugin_err.h"
 
 /* SYLVA_OK when path is not an ESRI ASCII grid (its first word is not "ncols") or is a complete
  * one; SYLVA_ERR_IO with a sentence naming `what` and path otherwise. */
-int ifs_ascii_grid_check(const char *path, const char *what, ifs_err *err);
+int ifs_ascii_grid_check(const char *path, const char *what, plugin_err *err);
 
 #endif

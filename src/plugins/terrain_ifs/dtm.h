@@ -9,7 +9,7 @@
 
 #include <stdint.h>
 
-#include "ifs_err.h"
+#include "plugin_err.h"
 
 /* Size limits of a DTM after cropping and resampling. Each axis needs two cells at least: with
  * one cell the map L_n (8) is the identity and the IFS does not contract along that axis. The
@@ -29,15 +29,15 @@ typedef struct ifs_dtm {
 /* A new DTM with zeroed heights. Fails (status and sentence) when a side is outside
  * [IFS_DTM_MIN_SIDE, IFS_DTM_MAX_SIDE], a spacing is not a positive finite number, or memory
  * runs out. */
-int ifs_dtm_new(uint32_t nx, uint32_t ny, double dx, double dy, ifs_dtm **out, ifs_err *err);
+int ifs_dtm_new(uint32_t nx, uint32_t ny, double dx, double dy, ifs_dtm **out, plugin_err *err);
 void ifs_dtm_free(ifs_dtm *d);
 
 /* The size rule of ifs_dtm_new alone, so callers can refuse a grid before reading it. */
-int ifs_dtm_check_size(uint32_t nx, uint32_t ny, ifs_err *err);
+int ifs_dtm_check_size(uint32_t nx, uint32_t ny, plugin_err *err);
 
 /* A DTM from rows of heights, row 0 the southern edge (the scene file's grid order). */
 int ifs_dtm_from_rows(const double *rows, uint32_t cols, uint32_t nrows, double dx, double dy,
-                      ifs_dtm **out, ifs_err *err);
+                      ifs_dtm **out, plugin_err *err);
 
 /* Lowest and highest finite height (0 and 0 when there is none). */
 void ifs_dtm_range(const ifs_dtm *d, double *zmin, double *zmax);
@@ -46,6 +46,6 @@ void ifs_dtm_range(const ifs_dtm *d, double *zmin, double *zmax);
  * a node takes the weighted mean of the 8 neighbours already known before its ring (weight 1
  * for the four side neighbours, 1/sqrt(2) for the diagonals). *filled receives the number of
  * nodes filled. Fails when every node is nodata. Deterministic; O(nodes). */
-int ifs_dtm_fill_nodata(ifs_dtm *d, uint64_t *filled, ifs_err *err);
+int ifs_dtm_fill_nodata(ifs_dtm *d, uint64_t *filled, plugin_err *err);
 
 #endif

@@ -26,13 +26,13 @@ void ifs_metres_per_degree(double phi_deg, double *per_lon, double *per_lat)
 /* The window to read: the crop (checked against the raster) trimmed so that the step lands on
  * its last node. */
 static int dtm_window(const ifs_raster *r, const ifs_dtm_file_options *opt, const char *path,
-                      uint32_t win[4], uint32_t *nx, uint32_t *ny, ifs_err *err)
+                      uint32_t win[4], uint32_t *nx, uint32_t *ny, plugin_err *err)
 {
     uint64_t c0 = 0, r0 = 0, cw = r->cols, rh = r->rows;
     if (opt->has_crop) {
         c0 = opt->crop[0], r0 = opt->crop[1], cw = opt->crop[2], rh = opt->crop[3];
         if (!cw || !rh || c0 + cw > r->cols || r0 + rh > r->rows)
-            return ifs_fail(err, SYLVA_ERR_PARAM,
+            return plugin_fail(err, SYLVA_ERR_PARAM,
                             "the crop window [%llu, %llu, %llu, %llu] (first column, first row, "
                             "columns, rows) does not lie inside '%s', which has %u columns and %u "
                             "rows", (unsigned long long)c0, (unsigned long long)r0,
@@ -40,14 +40,14 @@ static int dtm_window(const ifs_raster *r, const ifs_dtm_file_options *opt, cons
     }
     uint32_t step = opt->step ? opt->step : 1;
     if (cw == 0 || rh == 0)
-        return ifs_fail(err, SYLVA_ERR_PARAM, "the DTM '%s' has no pixels (%u x %u)", path,
+        return plugin_fail(err, SYLVA_ERR_PARAM, "the DTM '%s' has no pixels (%u x %u)", path,
                         r->cols, r->rows);
     *nx = (uint32_t)((cw - 1) / step + 1);
     *ny = (uint32_t)((rh - 1) / step + 1);
     int rc = ifs_dtm_check_size(*nx, *ny, err);
     if (rc) {
-        ifs_err inner = *err;
-        return ifs_fail(err, rc, "'%s' read from a %llu x %llu pixel window with step %u: %s", path,
+        plugin_err inner = *err;
+        return plugin_fail(err, rc, "'%s' read from a %llu x %llu pixel window with step %u: %s", path,
                         (unsigned long long)cw, (unsigned long long)rh, step, inner.msg);
     }
     win[0] = (uint32_t)c0, win[1] = (uint32_t)r0;
@@ -58,7 +58,7 @@ static int dtm_window(const ifs_raster *r, const ifs_dtm_file_options *opt, cons
 /* Node spacing in metres and whether the grid was in degrees. */
 static int dtm_spacing(const ifs_raster *r, const ifs_dtm_file_options *opt, const char *path,
                        const uint32_t win[4], double *dx, double *dy, ifs_dtm_file_info *info,
-                       ifs_err *err)
+                       plugin_err *err)
 {
     const double *t = r->transform;
     uint32_t step = opt->step ? opt->step : 1;
@@ -74,16 +74,16 @@ static int dtm_spacing(const ifs_raster *r, const ifs_dtm_file_options *opt, con
         return SYLVA_OK;
     }
     if (!r->has_transform)
-        return ifs_fail(err, SYLVA_ERR_PARAM,
+        return plugin_fail(err, SYLVA_ERR_PARAM,
                         "'%s' has no georeferencing, so its node spacing is unknown; give cell_size "
                         "in metres", path);
     if (t[2] != 0.0 || t[4] != 0.0)
-        return ifs_fail(err, SYLVA_ERR_PARAM,
+        return plugin_fail(err, SYLVA_ERR_PARAM,
                         "'%s' is a rotated grid (geotransform terms %g and %g); only north-up or "
                         "south-up grids are read: warp it to a north-up grid first", path, t[2], t[4]);
     double sx = fabs(t[1]) * step, sy = fabs(t[5]) * step;
     if (!(sx > 0 && sy > 0 && isfinite(sx) && isfinite(sy)))
-        return ifs_fail(err, SYLVA_ERR_PARAM, "'%s' has pixel size %g x %g; it must be non-zero",
+        return plugin_fail(err, SYLVA_ERR_PARAM, "'%s' has pixel size %g x %g; it must be non-zero",
                         path, t[1], t[5]);
     int degrees = 0;
     if (opt->units == IFS_UNITS_DEGREES) degrees = 1;
@@ -104,7 +104,7 @@ static int dtm_spacing(const ifs_raster *r, const ifs_dtm_file_options *opt, con
     }
     double lat = info->centre_y;
     if (!(fabs(lat) < IFS_MAX_ABS_LATITUDE))
-        return ifs_fail(err, SYLVA_ERR_PARAM,
+        return plugin_fail(err, SYLVA_ERR_PARAM,
                         "'%s' read as degrees has its centre at latitude %g; the conversion to "
                         "metres needs a latitude inside (-%g, %g): crop away from the pole, or set "
                         "units: metres if the grid is not in degrees", path, lat,
@@ -119,7 +119,7 @@ static int dtm_spacing(const ifs_raster *r, const ifs_dtm_file_options *opt, con
 /* Every height read lies in the plausible range: a corrupted file (heights of +-1e34, or a
  * nodata value the file does not declare) is refused instead of becoming a wall of terrain. */
 static int dtm_check_heights(const ifs_dtm *d, const ifs_dtm_file_options *opt, const char *path,
-                             ifs_err *err)
+                             plugin_err *err)
 {
     double lo = opt->height_range[0], hi = opt->height_range[1];
     if (lo == 0.0 && hi == 0.0) lo = IFS_DTM_HEIGHT_MIN, hi = IFS_DTM_HEIGHT_MAX;
@@ -127,7 +127,7 @@ static int dtm_check_heights(const ifs_dtm *d, const ifs_dtm_file_options *opt, 
         for (uint32_t i = 0; i < d->nx; i++) {
             double z = d->z[(size_t)j * d->nx + i];
             if (isnan(z) || (z >= lo && z <= hi)) continue; /* NaN: nodata, filled later */
-            return ifs_fail(err, SYLVA_ERR_PARAM,
+            return plugin_fail(err, SYLVA_ERR_PARAM,
                             "'%s' holds the height %g m at DTM node (%u, %u) (column from the "
                             "west, row from the south), outside the plausible range [%g, %g] m: "
                             "the file is damaged or has an undeclared nodata value; if the "
@@ -137,7 +137,7 @@ static int dtm_check_heights(const ifs_dtm *d, const ifs_dtm_file_options *opt, 
 }
 
 int ifs_dtm_read_file(const char *path, const ifs_dtm_file_options *opt, ifs_dtm **out,
-                      ifs_dtm_file_info *info_out, ifs_err *err)
+                      ifs_dtm_file_info *info_out, plugin_err *err)
 {
     *out = NULL;
     ifs_dtm_file_info info;
@@ -157,7 +157,7 @@ int ifs_dtm_read_file(const char *path, const ifs_dtm_file_options *opt, ifs_dtm
     if ((rc = ifs_dtm_new(nx, ny, dx, dy, &d, err))) goto done;
     row = malloc((size_t)win[2] * sizeof *row); /* owned here: one file row of the window */
     if (!row) {
-        rc = ifs_fail(err, SYLVA_ERR_NOMEM, "out of memory reading a row of '%s'", path);
+        rc = plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory reading a row of '%s'", path);
         goto done;
     }
     /* DTM row 0 is the south edge: the file's last row of the window when the raster is
@@ -169,16 +169,16 @@ int ifs_dtm_read_file(const char *path, const ifs_dtm_file_options *opt, ifs_dtm
     for (uint32_t k = 0; k < ny; k++) {
         uint32_t j = south_up ? k : ny - 1 - k, file_row = win[1] + k * step;
         if ((rc = ifs_raster_read_row(&r, file_row, win[0], win[2], row, "DTM", err))) {
-            ifs_err inner = *err;
-            rc = ifs_fail(err, rc, "'%s': %s", path, inner.msg);
+            plugin_err inner = *err;
+            rc = plugin_fail(err, rc, "'%s': %s", path, inner.msg);
             goto done;
         }
         for (uint32_t i = 0; i < nx; i++) d->z[(size_t)j * nx + i] = row[(size_t)i * step];
     }
     if ((rc = dtm_check_heights(d, opt, path, err))) goto done;
     if ((rc = ifs_dtm_fill_nodata(d, &info.nodata_filled, err))) {
-        ifs_err inner = *err;
-        rc = ifs_fail(err, rc, "'%s': %s", path, inner.msg);
+        plugin_err inner = *err;
+        rc = plugin_fail(err, rc, "'%s': %s", path, inner.msg);
         goto done;
     }
     memcpy(info.window, win, sizeof win);

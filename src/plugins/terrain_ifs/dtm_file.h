@@ -19,7 +19,7 @@
 #include <stdint.h>
 
 #include "dtm.h"
-#include "ifs_err.h"
+#include "plugin_err.h"
 
 typedef enum ifs_units {
     IFS_UNITS_AUTO = 0,   /* from the file's coordinate system, else the rule above */
@@ -38,7 +38,7 @@ typedef struct ifs_dtm_file_options {
                                is refused as damage. {0, 0}: the default range below */
     /* NULL, or called with the DTM's size once it is known and before anything is read or
      * allocated for it; a non-zero return (with err set) stops the read with that status. */
-    int (*check_size)(void *ctx, uint32_t nx, uint32_t ny, ifs_err *err);
+    int (*check_size)(void *ctx, uint32_t nx, uint32_t ny, plugin_err *err);
     void *check_ctx;
     const char *target_wkt; /* NULL, or read the file in this coordinate system (warped through a
                                GDAL VRT, bilinear, when the file's differs; crop and step then
@@ -70,7 +70,7 @@ typedef struct ifs_dtm_file_info {
  * or more than IFS_DTM_MAX_NODES after crop and step, no usable spacing, a latitude outside
  * (-89.9, 89.9) degrees, every node nodata. info may be NULL. */
 int ifs_dtm_read_file(const char *path, const ifs_dtm_file_options *opt, ifs_dtm **out,
-                      ifs_dtm_file_info *info, ifs_err *err);
+                      ifs_dtm_file_info *info, plugin_err *err);
 
 /* Metres per degree of longitude and of latitude at latitude phi_deg (WGS 84). */
 void ifs_metres_per_degree(double phi_deg, double *per_lon, double *per_lat);

@@ -14,14 +14,14 @@ static const int ring_di[8] = {-1, 1, 0, 0, -1, 1, -1, 1};
 static const int ring_dj[8] = {0, 0, -1, 1, -1, -1, 1, 1};
 static const double ring_w[8] = {1, 1, 1, 1, M_SQRT1_2, M_SQRT1_2, M_SQRT1_2, M_SQRT1_2};
 
-int ifs_dtm_fill_nodata(ifs_dtm *d, uint64_t *filled, ifs_err *err)
+int ifs_dtm_fill_nodata(ifs_dtm *d, uint64_t *filled, plugin_err *err)
 {
     size_t n = (size_t)d->nx * d->ny, missing = 0;
     *filled = 0;
     for (size_t k = 0; k < n; k++) missing += !isfinite(d->z[k]);
     if (!missing) return SYLVA_OK;
     if (missing == n)
-        return ifs_fail(err, SYLVA_ERR_PARAM,
+        return plugin_fail(err, SYLVA_ERR_PARAM,
                         "every one of the DTM's %u x %u nodes is nodata; there is no height to "
                         "interpolate from (check the crop window and the file's nodata value)",
                         d->nx, d->ny);
@@ -32,7 +32,7 @@ int ifs_dtm_fill_nodata(ifs_dtm *d, uint64_t *filled, ifs_err *err)
     double *value = malloc(missing * sizeof *value);
     int rc = SYLVA_OK;
     if (!state || !ring || !next || !value) {
-        rc = ifs_fail(err, SYLVA_ERR_NOMEM, "out of memory filling %zu nodata nodes", missing);
+        rc = plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory filling %zu nodata nodes", missing);
         goto done;
     }
     size_t n_ring = 0;

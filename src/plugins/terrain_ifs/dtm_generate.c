@@ -11,15 +11,15 @@ static double signed_unit(uint64_t (*rng_u64)(sylva_rng *), sylva_rng *rng)
 }
 
 int ifs_dtm_generate(const ifs_dtm_generator *g, uint64_t (*rng_u64)(sylva_rng *), sylva_rng *rng,
-                     ifs_dtm **out, ifs_err *err)
+                     ifs_dtm **out, plugin_err *err)
 {
     *out = NULL;
     if (g->nx > IFS_GENERATED_MAX_SIDE || g->ny > IFS_GENERATED_MAX_SIDE)
-        return ifs_fail(err, SYLVA_ERR_LIMIT,
+        return plugin_fail(err, SYLVA_ERR_LIMIT,
                         "a generated DTM of %u x %u nodes is larger than %u along a side", g->nx,
                         g->ny, IFS_GENERATED_MAX_SIDE);
     if (!(g->smoothness > 0 && g->smoothness <= 1) || !(g->relief >= 0 && isfinite(g->relief)))
-        return ifs_fail(err, SYLVA_ERR_PARAM,
+        return plugin_fail(err, SYLVA_ERR_PARAM,
                         "generated DTM: smoothness %g must be in (0, 1] and relief %g m at least 0",
                         g->smoothness, g->relief);
     int rc = ifs_dtm_new(g->nx, g->ny, g->dx, g->dy, out, err);
@@ -30,7 +30,7 @@ int ifs_dtm_generate(const ifs_dtm_generator *g, uint64_t (*rng_u64)(sylva_rng *
     double *h = malloc((size_t)n * n * sizeof *h); /* owned here: the full 2^k + 1 square */
     if (!h) {
         ifs_dtm_free(*out), *out = NULL;
-        return ifs_fail(err, SYLVA_ERR_NOMEM, "out of memory generating a %u x %u DTM", n, n);
+        return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory generating a %u x %u DTM", n, n);
     }
 #define H(i, j) h[(size_t)(j) * n + (i)]
     H(0, 0) = signed_unit(rng_u64, rng), H(side, 0) = signed_unit(rng_u64, rng);

@@ -11,7 +11,7 @@
 #include <stdint.h>
 
 #include "dtm.h"
-#include "ifs_err.h"
+#include "plugin_err.h"
 #include "sylva/plugin.h"
 
 #define IFS_GENERATED_MAX_SIDE 1025u
@@ -25,6 +25,6 @@ typedef struct ifs_dtm_generator {
 
 /* rng_u64 draws from *rng (e.g. api->rng_u64). */
 int ifs_dtm_generate(const ifs_dtm_generator *g, uint64_t (*rng_u64)(sylva_rng *), sylva_rng *rng,
-                     ifs_dtm **out, ifs_err *err);
+                     ifs_dtm **out, plugin_err *err);
 
 #endif

@@ -19,10 +19,10 @@ static double pixel_of(double t, uint32_t pixels, uint32_t *p0, uint32_t *p1)
 }
 
 int ifs_humidity_read(const ifs_humidity_source *src, uint32_t nx, uint32_t ny, float *out,
-                      ifs_err *err)
+                      plugin_err *err)
 {
     if (src->has_range && !(src->range[0] != src->range[1]))
-        return ifs_fail(err, SYLVA_ERR_PARAM,
+        return plugin_fail(err, SYLVA_ERR_PARAM,
                         "the humidity range [%g, %g] is empty; give the raw values of humidity 0 "
                         "and of humidity 1", src->range[0], src->range[1]);
     ifs_raster r;
@@ -31,7 +31,7 @@ int ifs_humidity_read(const ifs_humidity_source *src, uint32_t nx, uint32_t ny, 
     float *map = NULL;
     double *row = NULL;
     if ((uint64_t)r.cols * r.rows > IFS_HUMIDITY_MAX_PIXELS || r.cols < 1 || r.rows < 1) {
-        rc = ifs_fail(err, SYLVA_ERR_LIMIT,
+        rc = plugin_fail(err, SYLVA_ERR_LIMIT,
                       "the humidity map '%s' has %u x %u pixels; 1 to %u pixels are read",
                       src->path, r.cols, r.rows, IFS_HUMIDITY_MAX_PIXELS);
         goto done;
@@ -39,7 +39,7 @@ int ifs_humidity_read(const ifs_humidity_source *src, uint32_t nx, uint32_t ny, 
     map = malloc((size_t)r.cols * r.rows * sizeof *map); /* owned here; row 0 north */
     row = malloc((size_t)r.cols * sizeof *row);
     if (!map || !row) {
-        rc = ifs_fail(err, SYLVA_ERR_NOMEM, "out of memory reading the humidity map '%s'",
+        rc = plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory reading the humidity map '%s'",
                       src->path);
         goto done;
     }
@@ -47,8 +47,8 @@ int ifs_humidity_read(const ifs_humidity_source *src, uint32_t nx, uint32_t ny, 
     if (src->has_range) lo = src->range[0], hi = src->range[1];
     for (uint32_t y = 0; y < r.rows; y++) {
         if ((rc = ifs_raster_read_row(&r, y, 0, r.cols, row, "humidity map", err))) {
-            ifs_err inner = *err;
-            rc = ifs_fail(err, rc, "'%s': %s", src->path, inner.msg);
+            plugin_err inner = *err;
+            rc = plugin_fail(err, rc, "'%s': %s", src->path, inner.msg);
             goto done;
         }
         for (uint32_t x = 0; x < r.cols; x++) {

@@ -11,7 +11,7 @@
 
 #include <stdint.h>
 
-#include "ifs_err.h"
+#include "plugin_err.h"
 
 #define IFS_HUMIDITY_MAX_PIXELS (1u << 26) /* 67 M pixels: the largest map read */
 
@@ -25,6 +25,6 @@ typedef struct ifs_humidity_source {
 /* Fills out (nx * ny, row 0 south) with the map's humidity at each node of an nx x ny grid
  * spanning the footprint. */
 int ifs_humidity_read(const ifs_humidity_source *src, uint32_t nx, uint32_t ny, float *out,
-                      ifs_err *err);
+                      plugin_err *err);
 
 #endif

@@ -140,31 +140,31 @@ static void merge_row(void *ctx, uint32_t worker, uint64_t row)
 }
 
 int ifs_chaos_grid(const ifs_maps *m, const ifs_chaos_job *job, float *z, ifs_chaos_stats *stats,
-                   ifs_err *err)
+                   plugin_err *err)
 {
     if (job->points < 1 || job->points > IFS_MAX_POINTS)
-        return ifs_fail(err, SYLVA_ERR_LIMIT,
+        return plugin_fail(err, SYLVA_ERR_LIMIT,
                         "%llu iterations (NK) asked for; the random iteration runs 1 to %llu",
                         (unsigned long long)job->points, IFS_MAX_POINTS);
     if (job->nx < 2 || job->ny < 2)
-        return ifs_fail(err, SYLVA_ERR_PARAM,
+        return plugin_fail(err, SYLVA_ERR_PARAM,
                         "an output grid of %u x %u nodes is too small; it needs 2 x 2 at least",
                         job->nx, job->ny);
     if (!(job->start_u >= 0 && job->start_u <= 1 && job->start_v >= 0 && job->start_v <= 1) ||
         !isfinite(job->start_z))
-        return ifs_fail(err, SYLVA_ERR_PARAM,
+        return plugin_fail(err, SYLVA_ERR_PARAM,
                         "the starting point (%g, %g) of the DTM's unit square, height %g, is "
                         "outside the DTM; it must lie on its footprint", job->start_u,
                         job->start_v, job->start_z);
     if (fabs(job->start_z) > m->z_bound)
-        return ifs_fail(err, SYLVA_ERR_PARAM,
+        return plugin_fail(err, SYLVA_ERR_PARAM,
                         "the starting height %g m lies outside the heights the maps can reach "
                         "(-%g to %g m); start near the DTM's surface", job->start_z, m->z_bound,
                         m->z_bound);
     ifs_window win = job->window;
     if (!win.nx && !win.ny) win = (ifs_window){0, 0, job->nx, job->ny};
     if (!win.nx || !win.ny || win.i0 + (uint64_t)win.nx > job->nx || win.j0 + (uint64_t)win.ny > job->ny)
-        return ifs_fail(err, SYLVA_ERR_PARAM, "the window of %u x %u nodes from node (%u, %u) does "
+        return plugin_fail(err, SYLVA_ERR_PARAM, "the window of %u x %u nodes from node (%u, %u) does "
                         "not lie inside the %u x %u output grid", win.nx, win.ny, win.i0, win.j0,
                         job->nx, job->ny);
     uint64_t chains = ifs_chaos_chain_count(job->points);
@@ -176,14 +176,14 @@ int ifs_chaos_grid(const ifs_maps *m, const ifs_chaos_job *job, float *z, ifs_ch
     uint64_t *empty_per_row = malloc((size_t)win.ny * sizeof *empty_per_row);
     int rc = SYLVA_OK;
     if (!empty_per_row) {
-        rc = ifs_fail(err, SYLVA_ERR_NOMEM, "out of memory for a %u-row output grid", job->ny);
+        rc = plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for a %u-row output grid", job->ny);
         goto done;
     }
     for (uint32_t w = 0; w < workers; w++) {
         acc[w] = calloc(nodes, sizeof(node_sum));
         if (!acc[w]) {
             if (w == 0) {
-                rc = ifs_fail(err, SYLVA_ERR_NOMEM,
+                rc = plugin_fail(err, SYLVA_ERR_NOMEM,
                               "out of memory for the point sums of a %u x %u output grid",
                               job->nx, job->ny);
                 goto done;

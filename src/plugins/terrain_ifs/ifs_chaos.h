@@ -13,7 +13,7 @@
 
 #include <stdint.h>
 
-#include "ifs_err.h"
+#include "plugin_err.h"
 #include "ifs_eval.h"
 #include "ifs_maps.h"
 #include "plugin_threads.h"
@@ -50,7 +50,7 @@ uint64_t ifs_chaos_chain_count(uint64_t points);
  * reach (|z| > z_bound), or memory runs out (every worker needs 16 bytes per output node).
  * stats may be NULL. */
 int ifs_chaos_grid(const ifs_maps *m, const ifs_chaos_job *job, float *z, ifs_chaos_stats *stats,
-                   ifs_err *err);
+                   plugin_err *err);
 
 /* The first n points of one chain from (u, v, z), as (U, V, z) triples in uvz (3n doubles):
  * the points ifs_chaos_grid accumulates, for tests and plots. */

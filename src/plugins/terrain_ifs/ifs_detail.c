@@ -75,7 +75,7 @@ void ifs_detail_measure(const ifs_maps *m, uint32_t depth, double *rms, double *
 }
 
 int ifs_alpha_for_detail(const ifs_dtm *d, ifs_mode mode, uint32_t depth, double target, double *alpha,
-                         ifs_err *err)
+                         plugin_err *err)
 {
     *alpha = 0;
     if (!(target > 0)) return 0;

@@ -47,6 +47,6 @@ void ifs_detail_measure(const ifs_maps *m, uint32_t depth, double *rms, double *
  * almost in proportion. 0 for a target of 0. Returns 0, or a negative sylva_status with err set
  * (out of memory). */
 int ifs_alpha_for_detail(const ifs_dtm *d, ifs_mode mode, uint32_t depth, double target, double *alpha,
-                         ifs_err *err);
+                         plugin_err *err);
 
 #endif

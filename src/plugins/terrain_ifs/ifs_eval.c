@@ -77,7 +77,7 @@ static void eval_row(void *ctx, uint32_t worker, uint64_t row)
 }
 
 int ifs_eval_grid(const ifs_maps *m, uint32_t nx_out, uint32_t ny_out, uint32_t depth,
-                  uint32_t threads, float *z, plugin_progress_fn progress, void *pctx, ifs_err *err)
+                  uint32_t threads, float *z, plugin_progress_fn progress, void *pctx, plugin_err *err)
 {
     ifs_window whole = {0, 0, nx_out, ny_out};
     return ifs_eval_window(m, nx_out, ny_out, &whole, depth, threads, z, progress, pctx, err);
@@ -85,17 +85,17 @@ int ifs_eval_grid(const ifs_maps *m, uint32_t nx_out, uint32_t ny_out, uint32_t 
 
 int ifs_eval_window(const ifs_maps *m, uint32_t nx_out, uint32_t ny_out, const ifs_window *w,
                     uint32_t depth, uint32_t threads, float *z, plugin_progress_fn progress,
-                    void *pctx, ifs_err *err)
+                    void *pctx, plugin_err *err)
 {
     if (nx_out < 2 || ny_out < 2)
-        return ifs_fail(err, SYLVA_ERR_PARAM,
+        return plugin_fail(err, SYLVA_ERR_PARAM,
                         "an output grid of %u x %u nodes is too small; it needs 2 x 2 at least",
                         nx_out, ny_out);
     if (depth > IFS_MAX_DEPTH)
-        return ifs_fail(err, SYLVA_ERR_PARAM, "depth %u is deeper than %u levels", depth,
+        return plugin_fail(err, SYLVA_ERR_PARAM, "depth %u is deeper than %u levels", depth,
                         IFS_MAX_DEPTH);
     if (!w->nx || !w->ny || w->i0 + (uint64_t)w->nx > nx_out || w->j0 + (uint64_t)w->ny > ny_out)
-        return ifs_fail(err, SYLVA_ERR_PARAM, "the window of %u x %u nodes from node (%u, %u) does "
+        return plugin_fail(err, SYLVA_ERR_PARAM, "the window of %u x %u nodes from node (%u, %u) does "
                         "not lie inside the %u x %u output grid", w->nx, w->ny, w->i0, w->j0,
                         nx_out, ny_out);
     eval_job job = {.m = m, .nx = nx_out, .ny = ny_out, .depth = depth, .w = *w, .z = z};

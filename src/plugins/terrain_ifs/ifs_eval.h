@@ -14,7 +14,7 @@
 
 #include <stdint.h>
 
-#include "ifs_err.h"
+#include "plugin_err.h"
 #include "ifs_maps.h"
 #include "plugin_threads.h"
 
@@ -36,7 +36,7 @@ uint32_t ifs_eval_auto_depth(const ifs_maps *m, uint32_t nx_out, uint32_t ny_out
  * sx = i (N - 1) / (nx_out - 1), sy likewise), row 0 south, into z (nx_out * ny_out floats).
  * Rows are shared among `threads` workers; the result does not depend on their number. */
 int ifs_eval_grid(const ifs_maps *m, uint32_t nx_out, uint32_t ny_out, uint32_t depth,
-                  uint32_t threads, float *z, plugin_progress_fn progress, void *pctx, ifs_err *err);
+                  uint32_t threads, float *z, plugin_progress_fn progress, void *pctx, plugin_err *err);
 
 /* A window of an output grid: its nodes [i0, i0 + nx) x [j0, j0 + ny). */
 typedef struct ifs_window {
@@ -48,6 +48,6 @@ typedef struct ifs_window {
  * whole grid. */
 int ifs_eval_window(const ifs_maps *m, uint32_t nx_out, uint32_t ny_out, const ifs_window *w,
                     uint32_t depth, uint32_t threads, float *z, plugin_progress_fn progress,
-                    void *pctx, ifs_err *err);
+                    void *pctx, plugin_err *err);
 
 #endif

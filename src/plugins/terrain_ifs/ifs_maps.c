@@ -16,7 +16,7 @@ void ifs_maps_free(ifs_maps *m)
 }
 
 /* Vose's alias method over the normalised probabilities. */
-static int build_alias(ifs_maps *m, ifs_err *err)
+static int build_alias(ifs_maps *m, plugin_err *err)
 {
     uint32_t n = m->n_maps;
     double *scaled = malloc((size_t)n * sizeof *scaled); /* owned here */
@@ -25,7 +25,7 @@ static int build_alias(ifs_maps *m, ifs_err *err)
     m->alias_threshold = malloc((size_t)n * sizeof *m->alias_threshold);
     int rc = SYLVA_OK;
     if (!scaled || !small || !large || !m->alias_cell || !m->alias_threshold) {
-        rc = ifs_fail(err, SYLVA_ERR_NOMEM, "out of memory for the probability table of %u maps", n);
+        rc = plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for the probability table of %u maps", n);
         goto done;
     }
     uint32_t ns = 0, nl = 0;
@@ -56,43 +56,43 @@ done:
     return rc;
 }
 
-int ifs_maps_build(const ifs_dtm *dtm, const ifs_maps_params *p, ifs_maps **out, ifs_err *err)
+int ifs_maps_build(const ifs_dtm *dtm, const ifs_maps_params *p, ifs_maps **out, plugin_err *err)
 {
     *out = NULL;
     int rc = ifs_dtm_check_size(dtm->nx, dtm->ny, err);
     if (rc) return rc;
     uint32_t nx = dtm->nx, ny = dtm->ny, ncx = nx - 1, ncy = ny - 1, n = ncx * ncy;
     if (!p->alpha_field && !(p->alpha > -1.0 && p->alpha < 1.0))
-        return ifs_fail(err, SYLVA_ERR_PARAM,
+        return plugin_fail(err, SYLVA_ERR_PARAM,
                         "alpha %g is outside (-1, 1); the maps must contract in z", p->alpha);
     for (uint32_t c = 0; p->alpha_field && c < n; c++)
         if (!(p->alpha_field[c] > -1.0 && p->alpha_field[c] < 1.0))
-            return ifs_fail(err, SYLVA_ERR_PARAM,
+            return plugin_fail(err, SYLVA_ERR_PARAM,
                             "alpha of cell (%u, %u) is %g; every alpha must be inside (-1, 1)",
                             c % ncx, c / ncx, p->alpha_field[c]);
     double wsum = 0.0;
     for (uint32_t c = 0; p->probability && c < n; c++) {
         double w = p->probability[c];
         if (!(w >= 0.0 && isfinite(w)))
-            return ifs_fail(err, SYLVA_ERR_PARAM,
+            return plugin_fail(err, SYLVA_ERR_PARAM,
                             "probability of cell (%u, %u) is %g; weights must be finite and >= 0",
                             c % ncx, c / ncx, w);
         wsum += w;
     }
     if (p->probability && !(wsum > 0.0))
-        return ifs_fail(err, SYLVA_ERR_PARAM,
+        return plugin_fail(err, SYLVA_ERR_PARAM,
                         "every probability weight is 0; at least one cell must have a positive "
                         "weight");
 
     ifs_maps *m = calloc(1, sizeof *m); /* owned by the caller */
-    if (!m) return ifs_fail(err, SYLVA_ERR_NOMEM, "out of memory for the IFS maps");
+    if (!m) return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for the IFS maps");
     *m = (ifs_maps){.mode = p->mode, .nx = nx, .ny = ny, .ncx = ncx, .ncy = ncy, .n_maps = n,
                     .su = 1.0 / ncx, .sv = 1.0 / ncy, .width = ncx * dtm->dx,
                     .depth = ncy * dtm->dy, .uniform = !p->probability,
                     .node_z = dtm->z, .alpha_field = p->alpha_field, .alpha = p->alpha};
     if (p->probability && !(m->probability = malloc((size_t)n * sizeof *m->probability))) {
         ifs_maps_free(m);
-        return ifs_fail(err, SYLVA_ERR_NOMEM, "out of memory for the probabilities of %u IFS maps",
+        return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for the probabilities of %u IFS maps",
                         n);
     }
     const double *z = dtm->z;

@@ -32,7 +32,7 @@
 #include <stdint.h>
 
 #include "dtm.h"
-#include "ifs_err.h"
+#include "plugin_err.h"
 
 typedef enum ifs_mode {
     IFS_MODE_BILINEAR = 0, /* four corner conditions: the surface passes through every node */
@@ -81,7 +81,7 @@ typedef struct ifs_maps_params {
 
 /* Builds the maps for a DTM, which must outlive them (so must p->alpha_field). Fails when an alpha lies outside (-1, 1), a weight is negative or
  * not finite, every weight is 0, or memory runs out. */
-int ifs_maps_build(const ifs_dtm *dtm, const ifs_maps_params *p, ifs_maps **out, ifs_err *err);
+int ifs_maps_build(const ifs_dtm *dtm, const ifs_maps_params *p, ifs_maps **out, plugin_err *err);
 void ifs_maps_free(ifs_maps *m);
 
 /* The map of cell (n, m), 0-based, as (9)/(12) write it in metres with the footprint's first

@@ -111,18 +111,18 @@ static double no_data_fallback(GDALDataType t)
 /* The warped VRT of ds into target_wkt (bilinear), or ds itself when the systems agree; NULL
  * with err set when ds has no system or GDAL cannot warp it. */
 static GDALDatasetH warp_to(GDALDatasetH ds, const char *target_wkt, const char *what,
-                            const char *path, int *warped, ifs_err *err)
+                            const char *path, int *warped, plugin_err *err)
 {
     *warped = 0;
     OGRSpatialReferenceH src = GDALGetSpatialRef(ds), dst = OSRNewSpatialReference(NULL);
     if (!dst || OSRImportFromWkt(dst, (char **)&(const char *){target_wkt}) != OGRERR_NONE) {
         OSRDestroySpatialReference(dst);
-        ifs_fail(err, SYLVA_ERR_PARAM, "the site's coordinate system is not WKT that GDAL reads");
+        plugin_fail(err, SYLVA_ERR_PARAM, "the site's coordinate system is not WKT that GDAL reads");
         return NULL;
     }
     if (!src) {
         OSRDestroySpatialReference(dst);
-        ifs_fail(err, SYLVA_ERR_PARAM, "the %s '%s' has no coordinate system, so it cannot be "
+        plugin_fail(err, SYLVA_ERR_PARAM, "the %s '%s' has no coordinate system, so it cannot be "
                  "placed in the site's; give the file one (gdal_edit.py -a_srs) or leave the "
                  "site out", what, path);
         return NULL;
@@ -144,7 +144,7 @@ static GDALDatasetH warp_to(GDALDatasetH ds, const char *target_wkt, const char 
     GDALDatasetH vrt = GDALAutoCreateWarpedVRTEx(ds, NULL, target_wkt, GRA_Bilinear, 0.0, wo, NULL);
     GDALDestroyWarpOptions(wo);
     if (!vrt) {
-        ifs_fail(err, SYLVA_ERR_PARAM, "cannot warp the %s '%s' into the site's coordinate system: "
+        plugin_fail(err, SYLVA_ERR_PARAM, "cannot warp the %s '%s' into the site's coordinate system: "
                  "%s", what, path, gdal_reason("GDAL gave no reason"));
         return NULL;
     }
@@ -158,27 +158,27 @@ static GDALDatasetH warp_to(GDALDatasetH ds, const char *target_wkt, const char 
     return vrt;
 }
 
-int ifs_raster_open(const char *path, uint32_t band, const char *what, ifs_raster *r, ifs_err *err)
+int ifs_raster_open(const char *path, uint32_t band, const char *what, ifs_raster *r, plugin_err *err)
 {
     return ifs_raster_open_in(path, band, what, NULL, r, err);
 }
 
 int ifs_raster_open_in(const char *path, uint32_t band, const char *what, const char *target_wkt,
-                       ifs_raster *r, ifs_err *err)
+                       ifs_raster *r, plugin_err *err)
 {
     memset(r, 0, sizeof *r);
     r->metres_per_unit = 1.0, r->scale = 1.0;
-    if (!path || !path[0]) return ifs_fail(err, SYLVA_ERR_PARAM, "no %s file was named", what);
+    if (!path || !path[0]) return plugin_fail(err, SYLVA_ERR_PARAM, "no %s file was named", what);
     /* GDAL's virtual file systems (/vsizip/, /vsicurl/, ...) and connection strings are not
      * files to check here; the host lets them through only when the user allowed them */
     r->network = names_virtual_source(path);
     if (!r->network) {
         struct stat st;
         if (stat(path, &st) || access(path, R_OK))
-            return ifs_fail(err, SYLVA_ERR_IO, "cannot read the %s '%s': %s", what, path,
+            return plugin_fail(err, SYLVA_ERR_IO, "cannot read the %s '%s': %s", what, path,
                             strerror(errno));
         if (!S_ISREG(st.st_mode)) /* a FIFO would block the open, a device never end */
-            return ifs_fail(err, SYLVA_ERR_IO, "cannot read the %s '%s': it is %s, not a regular "
+            return plugin_fail(err, SYLVA_ERR_IO, "cannot read the %s '%s': it is %s, not a regular "
                             "file", what, path, S_ISDIR(st.st_mode)    ? "a folder"
                                                 : S_ISFIFO(st.st_mode) ? "a FIFO (named pipe)"
                                                 : S_ISCHR(st.st_mode)  ? "a character device"
@@ -196,7 +196,7 @@ int ifs_raster_open_in(const char *path, uint32_t band, const char *what, const 
     if (!ds) {
         /* GDAL's reasons for refusing a file can quote its first bytes, which may belong to any
          * file a scene names; the sentence says what is wrong without them */
-        rc = ifs_fail(err, SYLVA_ERR_IO,
+        rc = plugin_fail(err, SYLVA_ERR_IO,
                       "cannot read the %s '%s': GDAL does not recognise it as a raster, or it is "
                       "damaged; give a raster GDAL reads (GeoTIFF, ESRI ASCII grid, PNG, ...)",
                       what, path);
@@ -215,13 +215,13 @@ int ifs_raster_open_in(const char *path, uint32_t band, const char *what, const 
     r->rows = (uint32_t)GDALGetRasterYSize(ds);
     r->bands = (uint32_t)GDALGetRasterCount(ds);
     if (band < 1 || band > r->bands) {
-        rc = ifs_fail(err, SYLVA_ERR_PARAM, "the %s '%s' has %u band%s; band %u does not exist",
+        rc = plugin_fail(err, SYLVA_ERR_PARAM, "the %s '%s' has %u band%s; band %u does not exist",
                       what, path, r->bands, r->bands == 1 ? "" : "s", band);
         goto done;
     }
     GDALRasterBandH b = GDALGetRasterBand(ds, (int)band);
     if (!b) {
-        rc = ifs_fail(err, SYLVA_ERR_IO, "cannot read band %u of the %s '%s': %s", band, what, path,
+        rc = plugin_fail(err, SYLVA_ERR_IO, "cannot read band %u of the %s '%s': %s", band, what, path,
                       gdal_reason("GDAL gave no band"));
         goto done;
     }
@@ -280,7 +280,7 @@ void ifs_raster_close(ifs_raster *r)
 }
 
 int ifs_raster_read_row(ifs_raster *r, uint32_t row, uint32_t col, uint32_t count, double *out,
-                        const char *what, ifs_err *err)
+                        const char *what, plugin_err *err)
 {
     char *saved;
     offline_begin(r, &saved);
@@ -295,7 +295,7 @@ int ifs_raster_read_row(ifs_raster *r, uint32_t row, uint32_t col, uint32_t coun
                             out, (int)count, 1, GDT_Float64, 0, 0);
     int rc = SYLVA_OK;
     if (e != CE_None)
-        rc = ifs_fail(err, SYLVA_ERR_IO, "cannot read row %u of the %s: %s", row, what,
+        rc = plugin_fail(err, SYLVA_ERR_IO, "cannot read row %u of the %s: %s", row, what,
                       gdal_reason("GDAL reported a read failure"));
     CPLPopErrorHandler();
     offline_end(r, &saved);

@@ -11,7 +11,7 @@
 
 #include <stdint.h>
 
-#include "ifs_err.h"
+#include "plugin_err.h"
 
 typedef enum ifs_crs_kind {
     IFS_CRS_NONE = 0,      /* no coordinate system in the file */
@@ -47,14 +47,14 @@ typedef struct ifs_raster {
 /* Opens band `band` (1-based) of `path`. `what` names the file's role in messages ("DTM",
  * "humidity map"). Fails with SYLVA_ERR_IO when the file cannot be read or is not a raster,
  * SYLVA_ERR_PARAM when the band does not exist. */
-int ifs_raster_open(const char *path, uint32_t band, const char *what, ifs_raster *r, ifs_err *err);
+int ifs_raster_open(const char *path, uint32_t band, const char *what, ifs_raster *r, plugin_err *err);
 
 /* As ifs_raster_open, and when target_wkt is not NULL and names another coordinate system than
  * the file's, the raster is read through a GDAL warped VRT into target_wkt (bilinear
  * resampling, GDAL's choice of pixel size and extent; pixels the file does not cover are
  * nodata). A file without a coordinate system cannot be warped and is refused. */
 int ifs_raster_open_in(const char *path, uint32_t band, const char *what, const char *target_wkt,
-                       ifs_raster *r, ifs_err *err);
+                       ifs_raster *r, plugin_err *err);
 void ifs_raster_close(ifs_raster *r);
 
 /* Reads `count` pixels of file row `row` from column `col` as doubles, converted with scale and
@@ -62,6 +62,6 @@ void ifs_raster_close(ifs_raster *r);
  * read moves on to another row of blocks, so reading a raster row by row holds one row of
  * blocks, not as many as GDAL's cache (5 % of the machine's memory) can take. */
 int ifs_raster_read_row(ifs_raster *r, uint32_t row, uint32_t col, uint32_t count, double *out,
-                        const char *what, ifs_err *err);
+                        const char *what, plugin_err *err);
 
 #endif

@@ -28,7 +28,7 @@
 #include "ifs_maps.h"
 #include "surface_classes.h"
 #include "sylva/plugin.h"
-#include "terrain_ifs_schema.h"
+#include "ifs_schema.h"
 
 /* The refinement's detail is called out when its RMS passes this factor times what the DTM's
  * own roughness continues to, plus this many metres. */
@@ -146,7 +146,7 @@ typedef struct memory_ask {
  * plugin holds the DTM (IFS_DTM_BYTES_PER_NODE a node; the maps are computed from it, not
  * stored), one class byte per output node while classifying, 4 bytes of humidity per output node
  * with a humidity map, and for the random iteration 16 bytes per output node and worker. */
-static int memory_fits(void *ctx, uint32_t nx, uint32_t ny, ifs_err *err)
+static int memory_fits(void *ctx, uint32_t nx, uint32_t ny, plugin_err *err)
 {
     const memory_ask *m = ctx;
     if (!SYLVA_API_HAS(m->api, memory_check)) return SYLVA_OK;
@@ -187,7 +187,7 @@ static int load_dtm(const sylva_host_api *api, sylva_host *host, const sylva_par
     const sylva_value *cell = sylva_param(params, "cell_size");
     double cs[2] = {0, 0};
     if (cell->len) cs[0] = cell->list[0], cs[1] = cell->list[cell->len > 1 ? 1 : 0];
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     int rc;
     if (dtm->s) {
         const sylva_value *crop = sylva_param(params, "crop");
@@ -402,7 +402,7 @@ static int terrain_setup(const sylva_host_api *api, sylva_host *host, const sylv
         goto fail;
     }
     if (!sylva_param_str(params, "dtm")) {
-        ifs_err err = {{0}};
+        plugin_err err = {0};
         memory_ask ask = {api, host, params, s->source};
         if ((rc = memory_fits(&ask, d->nx, d->ny, &err))) goto fail;
     }
@@ -468,7 +468,7 @@ static int terrain_setup(const sylva_host_api *api, sylva_host *host, const sylv
         goto fail;
     }
     if (hum) {
-        ifs_err err = {{0}};
+        plugin_err err = {0};
         ifs_humidity_source src = {.path = hum,
                                    .band = (uint32_t)sylva_param_int(params, "humidity_band"),
                                    .has_range = hrange->is_set};
@@ -529,7 +529,7 @@ static int compute_heights(const terrain_ifs_state *s, const ifs_maps *maps, uin
                            uint32_t nx, uint32_t ny, const ifs_window *win,
                            const sylva_host_api *api, sylva_host *host, float *z)
 {
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     int rc;
     if (!s->random) {
         progress_sink p = {api, host, "terrain_ifs evaluation"};
@@ -795,7 +795,7 @@ static int choose_alpha(terrain_ifs_state *s, const sylva_host_api *api, sylva_h
     const ifs_roughness *r = &s->roughness;
     int given = is_set(s->params, "detail");
     double target = given ? sylva_param_real(s->params, "detail") : r->target;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     int rc = ifs_alpha_for_detail(s->dtm, s->mode, s->depth, target, &s->alpha, &err);
     if (rc) {
         api->error(host, "%s", err.msg);
@@ -832,7 +832,7 @@ static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_ho
     if (surveyed && !renders_dtm_nodes(s)) return surveyed_ground(s, api, host, req, placed, o);
     if (surveyed && SYLVA_HAS_FIELD(o, sylva_terrain_out, renders_as_is)) o->renders_as_is = 1;
     if ((rc = choose_alpha(s, api, host))) return rc;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     ifs_maps *maps = NULL;
     ifs_maps_params mp = {.mode = s->mode, .alpha = s->alpha, .alpha_field = s->alpha_field,
                           .probability = s->probability_field};

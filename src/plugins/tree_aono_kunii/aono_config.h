@@ -15,6 +15,7 @@
 #include <stdint.h>
 
 #include "aono_angle_law.h"
+#include "aono_pattern.h"
 #include "bark_fractal.h"
 #include "leaf_affine.h"
 #include "plugin_err.h"
@@ -22,19 +23,11 @@
 
 #define AONO_MAX_LEVELS 30          /* schema bound on `levels` */
 #define AONO_MAX_SEGMENTS (1u << 20) /* trunk + every branch of the full-grown tree, worst case */
-#define AONO_MAX_CHILDREN 3
 #define AONO_MAX_CONTROLLERS 1024
 #define AONO_MAX_LEAVES (1u << 22)  /* leaves of one model */
 #define AONO_LEAF_TEXTURE_SIZE 128u /* square, the leaf's unit square */
 #define AONO_LEAF_TEXTURE_SEED 1u   /* the chaos game's seed: every scene, the same leaves */
 #define AONO_BARK_TEXTURE_SIZE 128u /* square, one circumference wide and long */
-
-typedef enum aono_pattern {
-    AONO_DICHOTOMOUS = 0, /* two children, both at their angle FI */
-    AONO_MONOPODIAL = 1,  /* two children; child LVT continues the mother's direction */
-    AONO_TERNARY = 2,     /* three children; the third is the middle one */
-    AONO_STOCHASTIC = 3   /* two or three children, three with a given probability */
-} aono_pattern;
 
 typedef enum aono_ri_method {
     AONO_RI_CONSTANT = 0,   /* method (1): RI given */

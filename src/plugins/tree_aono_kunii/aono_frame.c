@@ -4,13 +4,9 @@
 
 #include <math.h>
 
-#define AONO_DEG (3.14159265358979323846 / 180.0)
+#include "vec3.h"
 
-static void cross(const double a[3], const double b[3], double out[3])
-{
-    double x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
-    out[0] = x, out[1] = y, out[2] = z;
-}
+#define AONO_DEG (3.14159265358979323846 / 180.0)
 
 int aono_frame_build(const double pa[3], const double pb[3], aono_frame *f)
 {
@@ -34,7 +30,7 @@ int aono_frame_build(const double pa[3], const double pb[3], aono_frame *f)
         /* exactly vertical: z' is ±ẑ */
         f->z[0] = 0.0, f->z[1] = 0.0, f->z[2] = d[2] > 0.0 ? 1.0 : -1.0;
     }
-    cross(f->z, f->y, f->x);
+    vec3_cross(f->z, f->y, f->x);
     return 0;
 }
 

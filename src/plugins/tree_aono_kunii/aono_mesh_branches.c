@@ -4,6 +4,7 @@
 #include <stdlib.h>
 
 #include "aono_mesh.h"
+#include "vec3.h"
 
 #define AONO_TWO_PI 6.28318530717958647692
 
@@ -15,42 +16,26 @@ typedef struct ring_memo {
     uint32_t tip_ring; /* first vertex of its tip ring */
 } ring_memo;
 
-static double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-static void cross(const double a[3], const double b[3], double out[3])
-{
-    double x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
-    out[0] = x, out[1] = y, out[2] = z;
-}
-
-static int normalise(double v[3])
-{
-    double l = sqrt(dot(v, v));
-    if (!(l > 1e-12)) return -1;
-    v[0] /= l, v[1] /= l, v[2] /= l;
-    return 0;
-}
-
 /* The rotation taking unit a to unit b by the smallest angle, applied to v (a·b > −1). */
 static void rotate_between(const double a[3], const double b[3], const double v[3], double out[3])
 {
     double k[3], kv[3];
-    cross(a, b, k);
-    cross(k, v, kv);
-    double c = dot(a, b), f = dot(k, v) / (1.0 + c);
+    vec3_cross(a, b, k);
+    vec3_cross(k, v, kv);
+    double c = vec3_dot(a, b), f = vec3_dot(k, v) / (1.0 + c);
     for (int i = 0; i < 3; i++) out[i] = v[i] * c + kv[i] + k[i] * f;
 }
 
 /* A unit vector perpendicular to d, as close to `hint` as possible. */
 static void perpendicular(const double d[3], const double hint[3], double out[3])
 {
-    double h = dot(hint, d);
+    double h = vec3_dot(hint, d);
     for (int i = 0; i < 3; i++) out[i] = hint[i] - h * d[i];
-    if (!normalise(out)) return;
+    if (!vec3_normalize(out, 1e-12)) return;
     double axis[3] = {fabs(d[0]) < 0.9 ? 1.0 : 0.0, fabs(d[0]) < 0.9 ? 0.0 : 1.0, 0.0};
-    h = dot(axis, d);
+    h = vec3_dot(axis, d);
     for (int i = 0; i < 3; i++) out[i] = axis[i] - h * d[i];
-    normalise(out);
+    vec3_normalize(out, 1e-12);
 }
 
 uint32_t aono_ring_sides(const aono_config *cfg, double radius)
@@ -65,7 +50,7 @@ uint32_t aono_ring_sides(const aono_config *cfg, double radius)
 static void ring_dir(const double d[3], const double ref[3], uint32_t j, uint32_t sides, double e[3])
 {
     double side[3], th = AONO_TWO_PI * j / sides;
-    cross(d, ref, side);
+    vec3_cross(d, ref, side);
     for (int i = 0; i < 3; i++) e[i] = cos(th) * ref[i] + sin(th) * side[i];
 }
 
@@ -89,16 +74,16 @@ static uint32_t emit_mitre_ring(aono_mesh_buffer *b, const double c[3], const do
                                 const double ref[3], double r, uint32_t sides, double v)
 {
     double n[3] = {a[0] + bd[0], a[1] + bd[1], a[2] + bd[2]};
-    normalise(n);
-    double an = dot(a, n);
+    vec3_normalize(n, 1e-12);
+    double an = vec3_dot(a, n);
     uint32_t first = b->nv;
     for (uint32_t j = 0; j <= sides; j++) {
         double e[3], e2[3], p[3], nrm[3];
         ring_dir(a, ref, j % sides, sides, e);
-        double t = -r * dot(e, n) / an;
+        double t = -r * vec3_dot(e, n) / an;
         rotate_between(a, bd, e, e2);
         for (int i = 0; i < 3; i++) p[i] = c[i] + r * e[i] + t * a[i], nrm[i] = e[i] + e2[i];
-        normalise(nrm);
+        vec3_normalize(nrm, 1e-12);
         aono_mesh_vertex(b, p, nrm, (double)j / sides, v);
     }
     return first;
@@ -152,8 +137,8 @@ int aono_mesh_branches(const aono_config *cfg, const aono_skeleton *s, int32_t b
         ring_memo *me = &memo[k];
         double len = 0.0;
         for (int i = 0; i < 3; i++) me->dir[i] = sg->tip[i] - sg->base[i];
-        len = sqrt(dot(me->dir, me->dir));
-        normalise(me->dir);
+        len = vec3_length(me->dir);
+        vec3_normalize(me->dir, 1e-12);
         uint32_t nb = aono_ring_sides(cfg, sg->radius_base), nt = aono_ring_sides(cfg, sg->radius_tip);
         if ((rc = aono_mesh_reserve(b, nb + nt + 4, nb + 2 * nt + nb))) break;
         uint32_t base_ring;
@@ -179,7 +164,7 @@ int aono_mesh_branches(const aono_config *cfg, const aono_skeleton *s, int32_t b
             const aono_segment *ch = &s->seg[sg->continuation];
             double cd[3];
             for (int i = 0; i < 3; i++) cd[i] = ch->tip[i] - ch->base[i];
-            normalise(cd);
+            vec3_normalize(cd, 1e-12);
             me->tip_ring = emit_mitre_ring(b, sg->tip, me->dir, cd, me->ref, sg->radius_tip, nt, me->v_tip);
             stitch(b, base_ring, nb, me->tip_ring, nt, bark);
         } else {

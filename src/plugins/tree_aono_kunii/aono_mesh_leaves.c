@@ -3,33 +3,18 @@
 #include <math.h>
 
 #include "aono_mesh.h"
+#include "vec3.h"
 
 #define AONO_DEG (3.14159265358979323846 / 180.0)
 #define AONO_GOLDEN_ANGLE 137.50776405003785 /* degrees between successive leaves round a branch */
-
-static double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-static void cross(const double a[3], const double b[3], double out[3])
-{
-    double x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
-    out[0] = x, out[1] = y, out[2] = z;
-}
-
-static int normalise(double v[3])
-{
-    double l = sqrt(dot(v, v));
-    if (!(l > 1e-12)) return -1;
-    v[0] /= l, v[1] /= l, v[2] /= l;
-    return 0;
-}
 
 /* Two unit vectors p, q completing unit d to an orthonormal frame. */
 static void basis(const double d[3], double p[3], double q[3])
 {
     double a[3] = {fabs(d[0]) < 0.9 ? 1.0 : 0.0, fabs(d[0]) < 0.9 ? 0.0 : 1.0, 0.0};
-    cross(d, a, p);
-    normalise(p);
-    cross(d, p, q);
+    vec3_cross(d, a, p);
+    vec3_normalize(p, 1e-12);
+    vec3_cross(d, p, q);
 }
 
 /* One leaf: stalk at `at`, pointing along unit L, blade across unit W. */
@@ -37,7 +22,7 @@ static void emit_leaf(aono_mesh_buffer *b, const aono_config *cfg, const double 
                       const double W[3], int32_t mat)
 {
     double N[3], len = cfg->leaf_length, half = 0.5 * cfg->leaf_length;
-    cross(W, L, N);
+    vec3_cross(W, L, N);
     double c[4][3];
     for (int i = 0; i < 3; i++) {
         c[0][i] = at[i] - half * W[i];
@@ -55,8 +40,8 @@ static void emit_leaf(aono_mesh_buffer *b, const aono_config *cfg, const double 
 /* Turns v about unit axis k by angle a (radians), in place (Rodrigues). */
 static void turn(double v[3], const double k[3], double a)
 {
-    double kv[3], c = cos(a), s = sin(a), kd = dot(k, v);
-    cross(k, v, kv);
+    double kv[3], c = cos(a), s = sin(a), kd = vec3_dot(k, v);
+    vec3_cross(k, v, kv);
     for (int i = 0; i < 3; i++) v[i] = v[i] * c + kv[i] * s + k[i] * kd * (1.0 - c);
 }
 
@@ -95,8 +80,8 @@ int aono_mesh_leaves(const aono_config *cfg, const aono_skeleton *s, int32_t lea
                                AONO_MESH_MAX_VERTICES, AONO_MESH_MAX_TRIANGLES);
         if (rc) return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory building the tree's leaves");
         double d[3] = {sg->tip[0] - sg->base[0], sg->tip[1] - sg->base[1], sg->tip[2] - sg->base[2]};
-        double len = sqrt(dot(d, d)), p[3], q[3];
-        if (normalise(d)) continue;
+        double len = vec3_length(d), p[3], q[3];
+        if (vec3_normalize(d, 1e-12)) continue;
         basis(d, p, q);
         double turn0 = 360.0 * env->uniform(&rng);
         for (uint32_t n = 0; n < count; n++) {
@@ -112,8 +97,8 @@ int aono_mesh_leaves(const aono_config *cfg, const aono_skeleton *s, int32_t lea
                 L[i] = cos(a) * d[i] + sin(a) * out[i];
                 at[i] = sg->base[i] + t * len * d[i] + r * out[i];
             }
-            cross(L, up, W);
-            if (normalise(W)) cross(L, out, W), normalise(W);
+            vec3_cross(L, up, W);
+            if (vec3_normalize(W, 1e-12)) vec3_cross(L, out, W), vec3_normalize(W, 1e-12);
             turn(W, L, roll);
             emit_leaf(b, cfg, at, L, W, leaf);
         }

@@ -9,7 +9,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "aono_config.h"
+#include "aono_pattern.h"
 
 /* Fills r[0..2] for `pattern` (lvt: the continuing child of a monopodial branching, 0 or 1).
  * Returns 0, or -1 with a sentence in why[] when a ratio is not in (0, 1) — which it must be

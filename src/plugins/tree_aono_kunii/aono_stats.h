@@ -9,6 +9,7 @@
 #include "aono_grow.h"
 #include "aono_mesh_buffer.h"
 #include "sylva/plugin.h"
+#include "sylva/tree_stats.h"
 
 /* Fills *st (its size and age left as the caller set them) from the skeleton s and the mesh b
  * built from it, whose leaf triangles have material `leaf`. Returns 0, or -1 when memory for the

@@ -8,14 +8,14 @@
 
 double branch_law_count(double n1, double h1, double h2, double d) { return n1 * pow(h1 / h2, -d / 2.0); }
 
-int branch_count(const unsigned char *s, size_t n, uint64_t *count, lsys_error *err)
+int branch_count(const unsigned char *s, size_t n, uint64_t *count, plugin_err *err)
 {
     *count = 0;
     /* A stack of one flag per open bracket: "this block drew wood itself"; drew[0] is the main
      * axis. Wood inside a nested block belongs to that block, not to its parent. */
     size_t cap = 256, depth = 0;
     uint8_t *drew = calloc(cap, 1); /* owned here */
-    if (!drew) return lsys_fail(err, LSYS_ERR_NOMEM, "out of memory counting the branches");
+    if (!drew) return plugin_fail(err, LSYS_ERR_NOMEM, "out of memory counting the branches");
     uint64_t found = 0;
     for (size_t i = 0; i < n; i++) {
         unsigned char c = s[i];
@@ -29,7 +29,7 @@ int branch_count(const unsigned char *s, size_t n, uint64_t *count, lsys_error *
                 uint8_t *g = realloc(drew, cap * 2);
                 if (!g) {
                     free(drew);
-                    return lsys_fail(err, LSYS_ERR_NOMEM, "out of memory counting the branches of %zu nested "
+                    return plugin_fail(err, LSYS_ERR_NOMEM, "out of memory counting the branches of %zu nested "
                                      "'[' blocks", depth + 1);
                 }
                 drew = g, cap *= 2;

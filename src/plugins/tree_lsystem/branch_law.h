@@ -13,14 +13,14 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "lsys_error.h"
+#include "lsys_status.h"
 
 /* 002 eq. 6. h1, h2 > 0. */
 double branch_law_count(double n1, double h1, double h2, double d);
 
 /* Branches of a derived string (see above) in *count. Argument groups are skipped. Returns
  * LSYS_OK, or LSYS_ERR_NOMEM (sentence in err, *count 0) when the bracket stack cannot grow. */
-int branch_count(const unsigned char *s, size_t n, uint64_t *count, lsys_error *err);
+int branch_count(const unsigned char *s, size_t n, uint64_t *count, plugin_err *err);
 
 /* The level in [0, levels) whose branch count is nearest to `target` on a logarithmic scale;
  * of equally near levels the highest wins. Levels with no branches are never nearer than one

@@ -51,23 +51,23 @@ static void rewrite(const lsys_system *sys, const unsigned char *s, size_t n, un
 }
 
 int lsys_derive(const lsys_system *sys, uint32_t steps, uint64_t max_bytes, lsys_level_fn on_level,
-                void *level_ctx, unsigned char **out, size_t *out_len, lsys_error *err)
+                void *level_ctx, unsigned char **out, size_t *out_len, plugin_err *err)
 {
     *out = NULL, *out_len = 0;
     if (sys->axiom_length > max_bytes)
-        return lsys_fail(err, LSYS_ERR_LIMIT, "%s: the axiom has %u bytes, more than the limit max_string = %llu",
+        return plugin_fail(err, LSYS_ERR_LIMIT, "%s: the axiom has %u bytes, more than the limit max_string = %llu",
                          sys->name, sys->axiom_length, (unsigned long long)max_bytes);
     size_t cap_cur = sys->axiom_length ? sys->axiom_length : 1;
     unsigned char *cur = malloc(cap_cur), *next = NULL; /* both owned here */
     size_t n = sys->axiom_length, cap_next = 0;
-    if (!cur) return lsys_fail(err, LSYS_ERR_NOMEM, "%s: out of memory for the axiom", sys->name);
+    if (!cur) return plugin_fail(err, LSYS_ERR_NOMEM, "%s: out of memory for the axiom", sys->name);
     if (n) memcpy(cur, sys->axiom, n);
     uint64_t work = 0, work_limit = max_bytes * LSYS_WORK_FACTOR;
     int rc = on_level ? on_level(level_ctx, 0, cur, n) : LSYS_OK;
     for (uint32_t step = 1; step <= steps && !rc; step++) {
         uint64_t m = next_size(sys, cur, n, max_bytes);
         if (m == UINT64_MAX) {
-            rc = lsys_fail(err, LSYS_ERR_LIMIT,
+            rc = plugin_fail(err, LSYS_ERR_LIMIT,
                            "%s: derivation step %u of %u would make the string longer than the limit "
                            "max_string = %llu bytes (step %u has %zu); lower the recursion level or raise max_string",
                            sys->name, step, steps, (unsigned long long)max_bytes, step - 1, n);
@@ -75,7 +75,7 @@ int lsys_derive(const lsys_system *sys, uint32_t steps, uint64_t max_bytes, lsys
         }
         work += m;
         if (work > work_limit) {
-            rc = lsys_fail(err, LSYS_ERR_LIMIT,
+            rc = plugin_fail(err, LSYS_ERR_LIMIT,
                            "%s: derivation step %u of %u: the steps together would write more than %d times "
                            "max_string = %llu bytes; lower the recursion level or raise max_string",
                            sys->name, step, steps, LSYS_WORK_FACTOR, (unsigned long long)max_bytes);
@@ -85,7 +85,7 @@ int lsys_derive(const lsys_system *sys, uint32_t steps, uint64_t max_bytes, lsys
             size_t cap = m ? (size_t)m : 1;
             unsigned char *grown = realloc(next, cap);
             if (!grown) {
-                rc = lsys_fail(err, LSYS_ERR_NOMEM, "%s: out of memory for derivation step %u (%llu bytes)",
+                rc = plugin_fail(err, LSYS_ERR_NOMEM, "%s: out of memory for derivation step %u (%llu bytes)",
                                sys->name, step, (unsigned long long)m);
                 break;
             }

@@ -15,7 +15,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "lsys_error.h"
+#include "lsys_status.h"
 #include "lsys_system.h"
 
 #define LSYS_WORK_FACTOR 16
@@ -27,6 +27,6 @@ typedef int (*lsys_level_fn)(void *ctx, uint32_t level, const unsigned char *s, 
 /* Derives `steps` levels of `sys`. Returns LSYS_OK with *out / *out_len, or LSYS_ERR_LIMIT
  * naming the step and the limit, or LSYS_ERR_NOMEM. on_level may be NULL. */
 int lsys_derive(const lsys_system *sys, uint32_t steps, uint64_t max_bytes, lsys_level_fn on_level,
-                void *level_ctx, unsigned char **out, size_t *out_len, lsys_error *err);
+                void *level_ctx, unsigned char **out, size_t *out_len, plugin_err *err);
 
 #endif

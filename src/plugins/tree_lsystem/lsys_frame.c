@@ -4,26 +4,14 @@
 #include <math.h>
 
 #include "lsys_turtle.h"
-
-static void cross(const double a[3], const double b[3], double out[3])
-{
-    double x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
-    out[0] = x, out[1] = y, out[2] = z;
-}
-
-static void unit(double v[3])
-{
-    double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (n > 0.0)
-        for (int k = 0; k < 3; k++) v[k] /= n;
-}
+#include "vec3.h"
 
 /* v <- (cos a I + sin a [n]x + (1 - cos a) n n^T) v: a right-handed rotation by a about n when n
  * is a unit vector; about a shorter n the turn is smaller (the matrix Lparser builds). */
 static void rotate(double v[3], const double n[3], double c, double s)
 {
     double nv[3];
-    cross(n, v, nv);
+    vec3_cross(n, v, nv);
     double d = n[0] * v[0] + n[1] * v[1] + n[2] * v[2];
     for (int k = 0; k < 3; k++) v[k] = c * v[k] + s * nv[k] + (1.0 - c) * n[k] * d;
 }
@@ -35,8 +23,8 @@ static void rotate_pair(double a[3], double b[3], const double axis[3], double a
     double c = cos(angle), s = sin(angle);
     rotate(a, n, c, s);
     rotate(b, n, c, s);
-    unit(a);
-    unit(b);
+    vec3_normalize(a, 0.0);
+    vec3_normalize(b, 0.0);
 }
 
 void lsys_frame_turn(lsys_frame *f, double a) { rotate_pair(f->h, f->l, f->u, -a); }
@@ -50,8 +38,8 @@ void lsys_frame_roll_horizontal(lsys_frame *f)
     static const double sky[3] = {0.0, 0.0, 1.0};
     if (f->h[0] == 0.0 && f->h[1] == 0.0) return;
     /* L = Z x H and U = H x L: U's z is |H_xy|^2, so U points up for any heading not vertical */
-    cross(sky, f->h, f->l);
-    cross(f->h, f->l, f->u);
+    vec3_cross(sky, f->h, f->l);
+    vec3_cross(f->h, f->l, f->u);
 }
 
 void lsys_frame_tropism(lsys_frame *f, double e)

@@ -4,19 +4,7 @@
 
 #include <math.h>
 
-static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-/* v / |v| for a vector of any finite size (scaled by its largest component first, so that the
- * squared length cannot overflow); 0 when v has no direction. */
-static int unit(double v[3])
-{
-    double big = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
-    if (!(big > 0) || !isfinite(big)) return 0;
-    for (int i = 0; i < 3; i++) v[i] /= big;
-    double len = sqrt(dot3(v, v));
-    for (int i = 0; i < 3; i++) v[i] /= len;
-    return 1;
-}
+#include "vec3.h"
 
 static void fill(uint32_t n, float *uv)
 {
@@ -40,30 +28,30 @@ void lsys_leaf_uv(const double *xyz, uint32_t n, const double normal[3], float *
     double far = -1;
     for (uint32_t i = 1; i < n; i++) {
         double d[3] = {(xyz[3 * i] - p0[0]) / big, (xyz[3 * i + 1] - p0[1]) / big, (xyz[3 * i + 2] - p0[2]) / big};
-        double d2 = dot3(d, d);
+        double d2 = vec3_dot(d, d);
         if (d2 > far) far = d2, tip = i;
     }
     double y[3] = {xyz[3 * tip] - p0[0], xyz[3 * tip + 1] - p0[1], xyz[3 * tip + 2] - p0[2]};
-    if (!unit(y)) {
+    if (vec3_normalize_scaled(y)) {
         fill(n, uv);
         return;
     }
-    double along = dot3(y, normal);
+    double along = vec3_dot(y, normal);
     for (int k = 0; k < 3; k++) y[k] -= along * normal[k];
-    if (!unit(y)) {
+    if (vec3_normalize_scaled(y)) {
         fill(n, uv);
         return;
     }
-    double x[3] = {y[1] * normal[2] - y[2] * normal[1], y[2] * normal[0] - y[0] * normal[2],
-                   y[0] * normal[1] - y[1] * normal[0]};
-    if (!unit(x)) {
+    double x[3];
+    vec3_cross(y, normal, x);
+    if (vec3_normalize_scaled(x)) {
         fill(n, uv);
         return;
     }
     double bmin = 0, bmax = 0, amax = 0;
     for (uint32_t i = 0; i < n; i++) {
         double d[3] = {(xyz[3 * i] - p0[0]) / big, (xyz[3 * i + 1] - p0[1]) / big, (xyz[3 * i + 2] - p0[2]) / big};
-        double a = dot3(d, x), b = dot3(d, y);
+        double a = vec3_dot(d, x), b = vec3_dot(d, y);
         bmin = fmin(bmin, b), bmax = fmax(bmax, b), amax = fmax(amax, fabs(a));
     }
     if (!(bmax > bmin) || !isfinite(bmax - bmin) || !isfinite(amax)) {
@@ -72,7 +60,7 @@ void lsys_leaf_uv(const double *xyz, uint32_t n, const double normal[3], float *
     }
     for (uint32_t i = 0; i < n; i++) {
         double d[3] = {(xyz[3 * i] - p0[0]) / big, (xyz[3 * i + 1] - p0[1]) / big, (xyz[3 * i + 2] - p0[2]) / big};
-        double a = dot3(d, x), b = dot3(d, y);
+        double a = vec3_dot(d, x), b = vec3_dot(d, y);
         uv[2 * i] = (float)(amax > 0 ? 0.5 + 0.5 * a / amax : 0.5);
         uv[2 * i + 1] = (float)((b - bmin) / (bmax - bmin));
     }

@@ -11,6 +11,7 @@
 
 #include "lsys_leaf_uv.h"
 #include "polygon_fill.h"
+#include "vec3.h"
 
 #define CHUNK_VERTICES LSYS_MESH_CHUNK_VERTICES
 #define CHUNK_TRIANGLES LSYS_MESH_CHUNK_TRIANGLES
@@ -31,31 +32,14 @@ struct lsys_mesh {
     int failed;                 /* the flush callback refused */
 };
 
-static void cross(const double a[3], const double b[3], double o[3])
-{
-    o[0] = a[1] * b[2] - a[2] * b[1];
-    o[1] = a[2] * b[0] - a[0] * b[2];
-    o[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-static double largest_component(const double v[3]) { return fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2]))); }
-
 /* Scales v to unit length; 0 when it has no usable direction (zero, or not finite). A vector
  * whose squared length over- or underflows (a model drawn far out) is scaled by its largest
  * component first. */
 static int normalize(double v[3])
 {
-    double n = sqrt(dot(v, v));
-    if (!(n > 1e-300) || !isfinite(n)) {
-        double big = largest_component(v);
-        if (!(big > 0) || !isfinite(v[0] + v[1] + v[2])) return 0;
-        v[0] /= big, v[1] /= big, v[2] /= big;
-        n = sqrt(dot(v, v));
-    }
-    v[0] /= n, v[1] /= n, v[2] /= n;
-    return 1;
+    double n = vec3_length(v);
+    if (n > 1e-300 && isfinite(n)) return vec3_div(v, n), 1;
+    return isfinite(v[0] + v[1] + v[2]) && !vec3_normalize_scaled(v);
 }
 
 /* The unit normal e x f of a face from its diagonals. A model drawn far out (coordinates of
@@ -63,12 +47,12 @@ static int normalize(double v[3])
  * from the diagonals scaled to unit size. Returns 0 when the face has no direction. */
 static int face_normal(const double e[3], const double f[3], double n[3])
 {
-    cross(e, f, n);
+    vec3_cross(e, f, n);
     if (normalize(n)) return 1;
-    double se = largest_component(e), sf = largest_component(f);
+    double se = vec3_largest(e), sf = vec3_largest(f);
     if (!(se > 0 && sf > 0) || !isfinite(e[0] + e[1] + e[2] + f[0] + f[1] + f[2])) return 0;
     double a[3] = {e[0] / se, e[1] / se, e[2] / se}, b[3] = {f[0] / sf, f[1] / sf, f[2] / sf};
-    cross(a, b, n);
+    vec3_cross(a, b, n);
     return normalize(n);
 }
 
@@ -146,7 +130,7 @@ static int cap_ring(lsys_mesh *m, const lsys_joint *j, double side, int32_t key)
     uint32_t n = m->cfg.sides;
     if (reserve(m, n, n - 2)) return -1;
     double axis[3], p[3], d[3];
-    cross(j->e1, j->e2, axis);
+    vec3_cross(j->e1, j->e2, axis);
     for (int i = 0; i < 3; i++) axis[i] *= side;
     uint32_t first = m->nv;
     double to_v = m->cfg.scale / m->cfg.bark_tile;
@@ -238,23 +222,23 @@ static int on_segment(void *ctx, const lsys_segment *s)
     }
     /* The new ring's e1: the previous e1 (or the turtle's U) made square to the new axis, so
      * that the tube does not twist at the joint. */
-    double d = dot(e1, axis);
+    double d = vec3_dot(e1, axis);
     for (int i = 0; i < 3; i++) e1[i] -= d * axis[i];
     if (!normalize(e1)) {
         memcpy(e1, s->frame->l, sizeof e1);
-        d = dot(e1, axis);
+        d = vec3_dot(e1, axis);
         for (int i = 0; i < 3; i++) e1[i] -= d * axis[i];
         if (!normalize(e1)) return 0;
     }
     /* v runs on from the joint: along the branch from its parent's ring, in metres over the
      * tile length. */
     double step[3] = {s->p1[0] - s->p0[0], s->p1[1] - s->p0[1], s->p1[2] - s->p0[2]};
-    double length = dot(step, axis); /* axis is step's direction */
+    double length = vec3_dot(step, axis); /* axis is step's direction */
     double v0 = j->bark_v, v1 = v0 + length * m->cfg.scale / m->cfg.bark_tile;
     top = (lsys_joint){.center = {s->p1[0], s->p1[1], s->p1[2]}, .radius = s->radius, .bark_v = v1,
                        .colour = s->colour, .open = 1};
     memcpy(top.e1, e1, sizeof e1);
-    cross(axis, e1, top.e2);
+    vec3_cross(axis, e1, top.e2);
     if (!connected) {
         bottom = top;
         memcpy(bottom.center, s->p0, sizeof bottom.center);
@@ -286,12 +270,12 @@ static int on_polygon(void *ctx, const double *xyz, uint32_t n, int32_t colour)
     return 0;
 }
 
-lsys_mesh *lsys_mesh_new(const lsys_mesh_config *cfg, lsys_error *err)
+lsys_mesh *lsys_mesh_new(const lsys_mesh_config *cfg, plugin_err *err)
 {
     if (cfg->sides < LSYS_MESH_MIN_SIDES || cfg->sides > LSYS_MESH_MAX_SIDES || !cfg->flush ||
         !(cfg->scale > 0) || !(cfg->bark_tile > 0) || cfg->max_polygon_vertices < 3 ||
         cfg->max_polygon_vertices > CHUNK_VERTICES) {
-        lsys_fail(err, LSYS_ERR_SYNTAX,
+        plugin_fail(err, LSYS_ERR_SYNTAX,
                   "mesh builder: sides must be %d to %d, scale and bark tile positive, a flush callback given "
                   "and the polygon limit 3 to %u",
                   LSYS_MESH_MIN_SIDES, LSYS_MESH_MAX_SIDES, CHUNK_VERTICES);
@@ -299,7 +283,7 @@ lsys_mesh *lsys_mesh_new(const lsys_mesh_config *cfg, lsys_error *err)
     }
     lsys_mesh *m = calloc(1, sizeof *m); /* owned by the caller */
     if (!m) {
-        lsys_fail(err, LSYS_ERR_NOMEM, "out of memory for the mesh builder");
+        plugin_fail(err, LSYS_ERR_NOMEM, "out of memory for the mesh builder");
         return NULL;
     }
     m->cfg = *cfg;
@@ -316,7 +300,7 @@ lsys_mesh *lsys_mesh_new(const lsys_mesh_config *cfg, lsys_error *err)
     m->poly_uv = malloc(2 * (size_t)pv * sizeof *m->poly_uv);
     if (!m->pos || !m->nrm || !m->uv || !m->poly_uv || !m->tri || !m->key || !m->poly_xy || !m->poly_idx || !m->poly_tri) {
         lsys_mesh_free(m);
-        lsys_fail(err, LSYS_ERR_NOMEM, "out of memory for the mesh builder's buffers");
+        plugin_fail(err, LSYS_ERR_NOMEM, "out of memory for the mesh builder's buffers");
         return NULL;
     }
     double phase = cfg->flat ? M_PI / cfg->sides : 0.0;

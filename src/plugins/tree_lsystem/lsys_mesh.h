@@ -27,7 +27,7 @@
 
 #include <stdint.h>
 
-#include "lsys_error.h"
+#include "lsys_status.h"
 #include "lsys_turtle.h"
 
 #define LSYS_MESH_MIN_SIDES 3
@@ -54,7 +54,7 @@ typedef struct lsys_mesh_config {
 typedef struct lsys_mesh lsys_mesh;
 
 /* NULL when memory runs out or the config is out of range (err set). */
-lsys_mesh *lsys_mesh_new(const lsys_mesh_config *cfg, lsys_error *err);
+lsys_mesh *lsys_mesh_new(const lsys_mesh_config *cfg, plugin_err *err);
 void lsys_mesh_free(lsys_mesh *m); /* accepts NULL */
 
 /* The sink to hand to lsys_interpret. */

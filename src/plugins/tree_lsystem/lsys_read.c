@@ -14,7 +14,7 @@
 typedef struct reader {
     const char *name;
     const lsys_read_options *opt;
-    lsys_error *err;
+    plugin_err *err;
     lsys_system *sys;
     uint32_t line;                /* 1-based number of the line being read */
     uint32_t axiom_line;          /* 0 until an axiom was read */
@@ -30,7 +30,7 @@ static void reader_warn(reader *r, const char *fmt, ...) __attribute__((format(p
 static void reader_warn(reader *r, const char *fmt, ...)
 {
     if (!r->opt || !r->opt->warn) return;
-    char msg[LSYS_ERROR_MAX];
+    char msg[PLUGIN_ERR_MAX];
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
@@ -63,7 +63,7 @@ static int read_symbols(reader *r, const unsigned char *s, const uint32_t *cols,
     if (n == 1 && s[0] == '_') return LSYS_OK;
     if (n == 0) return LSYS_OK;
     unsigned char *buf = malloc(n); /* owned here until handed to *out */
-    if (!buf) return lsys_fail(r->err, LSYS_ERR_NOMEM, "%s: out of memory reading %s", r->name, what);
+    if (!buf) return plugin_fail(r->err, LSYS_ERR_NOMEM, "%s: out of memory reading %s", r->name, what);
     size_t k = 0;
     for (size_t i = 0; i < n;) {
         if (s[i] == '(') {
@@ -80,7 +80,7 @@ static int read_symbols(reader *r, const unsigned char *s, const uint32_t *cols,
         size_t huge = s[i] == '(' ? lsys_arg_out_of_range(s + i, n - i) : 0;
         if (huge) {
             free(buf);
-            return lsys_fail(r->err, LSYS_ERR_SYNTAX,
+            return plugin_fail(r->err, LSYS_ERR_SYNTAX,
                              "%s:%u:%u: the argument %.*s in %s is beyond the range of numbers; an "
                              "argument is a finite number of magnitude below 1.8e308, such as (30) or (1e-3)",
                              r->name, r->line, cols[i], (int)huge, (const char *)s + i, what);
@@ -89,11 +89,11 @@ static int read_symbols(reader *r, const unsigned char *s, const uint32_t *cols,
         if (!r->opt || !r->opt->lenient) {
             free(buf);
             if (s[i] == '(')
-                return lsys_fail(r->err, LSYS_ERR_SYNTAX,
+                return plugin_fail(r->err, LSYS_ERR_SYNTAX,
                                  "%s:%u:%u: '(' in %s does not start an argument: an argument is one "
                                  "number in parentheses, such as (30), (.95), (-2.5) or (+38)",
                                  r->name, r->line, cols[i], what);
-            return lsys_fail(r->err, LSYS_ERR_SYNTAX, "%s:%u:%u: unknown symbol %s in %s; %s",
+            return plugin_fail(r->err, LSYS_ERR_SYNTAX, "%s:%u:%u: unknown symbol %s in %s; %s",
                              r->name, r->line, cols[i], byte_name(s[i], b), what, symbol_help);
         }
         reader_warn(r, "%s:%u:%u: unknown symbol %s in %s is ignored (lenient mode)", r->name, r->line,
@@ -143,7 +143,7 @@ static int set_rule(reader *r, unsigned char name, const unsigned char *body, co
     char b[16], what[48];
     if (!lsys_is_command(name) && !lsys_is_variable(name)) {
         if (!r->opt || !r->opt->lenient)
-            return lsys_fail(r->err, LSYS_ERR_SYNTAX,
+            return plugin_fail(r->err, LSYS_ERR_SYNTAX,
                              "%s:%u:%u: %s cannot name a rule; a rule is named by a command or a "
                              "variable (letter, digit or Latin-1 byte)",
                              r->name, r->line, name_col, byte_name(name, b));
@@ -154,7 +154,7 @@ static int set_rule(reader *r, unsigned char name, const unsigned char *body, co
     lsys_rule *rule = &r->sys->rules[name];
     if (rule->defined) {
         if (!r->opt || !r->opt->lenient)
-            return lsys_fail(r->err, LSYS_ERR_SYNTAX,
+            return plugin_fail(r->err, LSYS_ERR_SYNTAX,
                              "%s:%u:%u: rule %s is given twice (first at line %u); give each rule once",
                              r->name, r->line, name_col, byte_name(name, b), rule->line);
         reader_warn(r, "%s:%u:%u: second rule %s is ignored; the first, at line %u, applies (lenient mode)",
@@ -173,7 +173,7 @@ static int set_axiom(reader *r, const unsigned char *s, const uint32_t *cols, si
 {
     if (r->axiom_line) {
         if (!r->opt || !r->opt->lenient)
-            return lsys_fail(r->err, LSYS_ERR_SYNTAX,
+            return plugin_fail(r->err, LSYS_ERR_SYNTAX,
                              "%s:%u:%u: a second axiom (the first is at line %u); give one axiom",
                              r->name, r->line, col, r->axiom_line);
         reader_warn(r, "%s:%u:%u: second axiom ignored; the first, at line %u, applies (lenient mode)",
@@ -189,7 +189,7 @@ static int set_axiom(reader *r, const unsigned char *s, const uint32_t *cols, si
 static int check_recursion(reader *r, double v, uint32_t col)
 {
     if (!(v >= 0 && v <= LSYS_MAX_RECURSION && v == floor(v)))
-        return lsys_fail(r->err, LSYS_ERR_SYNTAX,
+        return plugin_fail(r->err, LSYS_ERR_SYNTAX,
                          "%s:%u:%u: recursion level %g is refused: it must be a whole number from 0 to %d "
                          "(fractional growth levels are not supported)",
                          r->name, r->line, col, v, LSYS_MAX_RECURSION);
@@ -200,7 +200,7 @@ static int check_recursion(reader *r, double v, uint32_t col)
 static int check_thickness(reader *r, const char *what, double v, uint32_t col, double *dst)
 {
     if (!(v >= 0 && v <= 1e6))
-        return lsys_fail(r->err, LSYS_ERR_SYNTAX,
+        return plugin_fail(r->err, LSYS_ERR_SYNTAX,
                          "%s:%u:%u: %s %g is refused: it is a percentage of the segment length from 0 "
                          "to 1000000",
                          r->name, r->line, col, what, v);
@@ -234,14 +234,14 @@ static int read_numeric_line(reader *r, text_line ln, int *stage)
     switch (*stage) {
     case 0:
         if (!token_number(tok, n, &v))
-            return lsys_fail(r->err, LSYS_ERR_SYNTAX,
+            return plugin_fail(r->err, LSYS_ERR_SYNTAX,
                              "%s:%u:%u: expected the recursion level (a whole number) on the first line",
                              r->name, r->line, col);
         (*stage)++;
         return check_recursion(r, v, col);
     case 1:
         if (!token_number(tok, n, &v))
-            return lsys_fail(r->err, LSYS_ERR_SYNTAX,
+            return plugin_fail(r->err, LSYS_ERR_SYNTAX,
                              "%s:%u:%u: expected the standard angle in degrees (a number) on the second line",
                              r->name, r->line, col);
         r->sys->angle_deg = v;
@@ -249,7 +249,7 @@ static int read_numeric_line(reader *r, text_line ln, int *stage)
         return LSYS_OK;
     case 2:
         if (!token_number(tok, n, &v))
-            return lsys_fail(r->err, LSYS_ERR_SYNTAX,
+            return plugin_fail(r->err, LSYS_ERR_SYNTAX,
                              "%s:%u:%u: expected the thickness in percent of the segment length (a "
                              "number) on the third line",
                              r->name, r->line, col);
@@ -259,7 +259,7 @@ static int read_numeric_line(reader *r, text_line ln, int *stage)
         break;
     }
     uint32_t *cols = malloc(n * sizeof *cols); /* owned here */
-    if (!cols) return lsys_fail(r->err, LSYS_ERR_NOMEM, "%s: out of memory", r->name);
+    if (!cols) return plugin_fail(r->err, LSYS_ERR_NOMEM, "%s: out of memory", r->name);
     for (size_t i = 0; i < n; i++) cols[i] = col + (uint32_t)i;
     int rc = LSYS_OK;
     if (*stage == 3) {
@@ -268,7 +268,7 @@ static int read_numeric_line(reader *r, text_line ln, int *stage)
     } else if (tok[0] == '@') {
         *stage = 5;
     } else if (n < 2 || tok[1] != '=') {
-        rc = lsys_fail(r->err, LSYS_ERR_SYNTAX,
+        rc = plugin_fail(r->err, LSYS_ERR_SYNTAX,
                        "%s:%u:%u: expected a rule written X=successor (one symbol, '=', the successor) "
                        "or '@' to end the rules",
                        r->name, r->line, col);
@@ -310,16 +310,16 @@ static int read_keyword_values(reader *r, text_line ln, size_t after, const char
     int got = keyword_numbers(ln, after, v, want, cols, &bad);
     if (got == want) return LSYS_OK;
     if (got < 0)
-        return lsys_fail(r->err, LSYS_ERR_SYNTAX, "%s:%u:%u: '%s' takes %d number%s; what stands here is not one",
+        return plugin_fail(r->err, LSYS_ERR_SYNTAX, "%s:%u:%u: '%s' takes %d number%s; what stands here is not one",
                          r->name, r->line, bad, kw, want, want == 1 ? "" : "s");
-    return lsys_fail(r->err, LSYS_ERR_SYNTAX, "%s:%u:%zu: '%s' takes %d number%s, found %d", r->name,
+    return plugin_fail(r->err, LSYS_ERR_SYNTAX, "%s:%u:%zu: '%s' takes %d number%s, found %d", r->name,
                      r->line, after + 1, kw, want, want == 1 ? "" : "s", got);
 }
 
 static int read_switch(reader *r, const char *kw, double v, uint32_t col)
 {
     if (v != 0 && v != 1)
-        return lsys_fail(r->err, LSYS_ERR_SYNTAX, "%s:%u:%u: '%s' is 0 or 1, got %g", r->name, r->line, col, kw, v);
+        return plugin_fail(r->err, LSYS_ERR_SYNTAX, "%s:%u:%u: '%s' is 0 or 1, got %g", r->name, r->line, col, kw, v);
     return LSYS_OK;
 }
 
@@ -340,12 +340,12 @@ static int read_keyword_line(reader *r, text_line ln)
         /* A lower-case word alone is quoted (a misspelt keyword); anything else may be some
          * other file's content and is not repeated. */
         if (word_ends && kn > 0 && kn <= 24)
-            return lsys_fail(r->err, LSYS_ERR_SYNTAX,
+            return plugin_fail(r->err, LSYS_ERR_SYNTAX,
                              "%s:%u:%u: unknown keyword '%.*s'; a keyword-dialect line starts with "
                              "recursion, angle, thickness, min_thickness, shape, switch_yz, no_wait, "
                              "poly_limit, mutation, color, axiom or rule",
                              r->name, r->line, kcol, (int)kn, (const char *)ln.s + start);
-        return lsys_fail(r->err, LSYS_ERR_SYNTAX,
+        return plugin_fail(r->err, LSYS_ERR_SYNTAX,
                          "%s:%u:%u: this line does not start with a keyword; is this an L-system file? "
                          "A keyword-dialect line starts with recursion, angle, thickness, min_thickness, "
                          "shape, switch_yz, no_wait, poly_limit, mutation, color, axiom or rule",
@@ -359,13 +359,13 @@ static int read_keyword_line(reader *r, text_line ln)
         unsigned char *bytes;
         uint32_t *bcols;
         size_t n = strip_blanks(ln.s + i, ln.n - i, (uint32_t)i + 1, &bytes, &bcols);
-        if (n == (size_t)-1) return lsys_fail(r->err, LSYS_ERR_NOMEM, "%s: out of memory", r->name);
+        if (n == (size_t)-1) return plugin_fail(r->err, LSYS_ERR_NOMEM, "%s: out of memory", r->name);
         if (!strcmp(kw, "axiom")) {
             rc = n ? set_axiom(r, bytes, bcols, n, kcol)
-                   : lsys_fail(r->err, LSYS_ERR_SYNTAX, "%s:%u:%u: 'axiom' needs a string of symbols",
+                   : plugin_fail(r->err, LSYS_ERR_SYNTAX, "%s:%u:%u: 'axiom' needs a string of symbols",
                                r->name, r->line, kcol);
         } else if (n < 2 || bytes[1] != '=') {
-            rc = lsys_fail(r->err, LSYS_ERR_SYNTAX,
+            rc = plugin_fail(r->err, LSYS_ERR_SYNTAX,
                            "%s:%u:%u: a rule is written 'rule X = successor' (one symbol, '=', the successor)",
                            r->name, r->line, kcol);
         } else {
@@ -378,11 +378,11 @@ static int read_keyword_line(reader *r, text_line ln)
     if (!strcmp(kw, "color")) {
         if ((rc = read_keyword_values(r, ln, i, kw, 4, v, cols))) return rc;
         if (!(v[0] >= 0 && v[0] < LSYS_MAX_FILE_COLOURS && v[0] == floor(v[0])))
-            return lsys_fail(r->err, LSYS_ERR_SYNTAX, "%s:%u:%u: colour index %g must be a whole number from 0 to %d",
+            return plugin_fail(r->err, LSYS_ERR_SYNTAX, "%s:%u:%u: colour index %g must be a whole number from 0 to %d",
                              r->name, r->line, cols[0], v[0], LSYS_MAX_FILE_COLOURS - 1);
         for (int c = 1; c < 4; c++)
             if (!(v[c] >= 0 && v[c] <= 255))
-                return lsys_fail(r->err, LSYS_ERR_SYNTAX, "%s:%u:%u: colour component %g must be from 0 to 255",
+                return plugin_fail(r->err, LSYS_ERR_SYNTAX, "%s:%u:%u: colour component %g must be from 0 to 255",
                                  r->name, r->line, cols[c], v[c]);
         int idx = (int)v[0];
         r->sys->colour_given[idx] = 1;
@@ -400,7 +400,7 @@ static int read_keyword_line(reader *r, text_line ln)
     if (!strcmp(kw, "shape")) {
         if (v[0] != 0 && v[0] != 1) {
             if (!r->opt || !r->opt->lenient)
-                return lsys_fail(r->err, LSYS_ERR_SYNTAX,
+                return plugin_fail(r->err, LSYS_ERR_SYNTAX,
                                  "%s:%u:%u: 'shape %g' is not one of Lparser 2.1's shapes: 0 (blocks) or 1 "
                                  "(joined cylinders)",
                                  r->name, r->line, cols[0], v[0]);
@@ -414,7 +414,7 @@ static int read_keyword_line(reader *r, text_line ln)
     if (!strcmp(kw, "switch_yz") || !strcmp(kw, "no_wait")) return read_switch(r, kw, v[0], cols[0]);
     if (!strcmp(kw, "poly_limit")) {
         if (!(v[0] >= 0 && v[0] <= 4e9 && v[0] == floor(v[0])))
-            return lsys_fail(r->err, LSYS_ERR_SYNTAX, "%s:%u:%u: poly_limit %g must be a whole number from 0",
+            return plugin_fail(r->err, LSYS_ERR_SYNTAX, "%s:%u:%u: poly_limit %g must be a whole number from 0",
                              r->name, r->line, cols[0], v[0]);
         r->sys->poly_limit = (uint32_t)v[0];
         return LSYS_OK;
@@ -422,7 +422,7 @@ static int read_keyword_line(reader *r, text_line ln)
     /* mutation: random edits of the rules; 0 is the identity. */
     if (v[0] != 0) {
         if (!r->opt || !r->opt->lenient)
-            return lsys_fail(r->err, LSYS_ERR_SYNTAX,
+            return plugin_fail(r->err, LSYS_ERR_SYNTAX,
                              "%s:%u:%u: 'mutation %g' is not supported: sylva grows the rules as written "
                              "(use mutation 0, or lenient mode to ignore the line)",
                              r->name, r->line, cols[0], v[0]);
@@ -456,27 +456,27 @@ static int detect_dialect(const unsigned char *s, size_t n, lsys_dialect *d)
 }
 
 int lsys_read(const char *text, size_t len, const char *name, const lsys_read_options *opt,
-              lsys_system **out, lsys_error *err)
+              lsys_system **out, plugin_err *err)
 {
     *out = NULL;
     if (!name) name = "L-system";
     if (len > LSYS_FILE_MAX_BYTES)
-        return lsys_fail(err, LSYS_ERR_LIMIT, "%s: %zu bytes is more than the %u bytes an L-system may have",
+        return plugin_fail(err, LSYS_ERR_LIMIT, "%s: %zu bytes is more than the %u bytes an L-system may have",
                          name, len, LSYS_FILE_MAX_BYTES);
     const char *nul = memchr(text, '\0', len);
     if (nul)
-        return lsys_fail(err, LSYS_ERR_SYNTAX, "%s: not a text file (byte %zu is a NUL); an L-system is a text file",
+        return plugin_fail(err, LSYS_ERR_SYNTAX, "%s: not a text file (byte %zu is a NUL); an L-system is a text file",
                          name, (size_t)(nul - text) + 1);
     lsys_system *sys = calloc(1, sizeof *sys); /* owned here until handed to *out */
     if (!sys || !(sys->name = strdup(name))) {
         free(sys);
-        return lsys_fail(err, LSYS_ERR_NOMEM, "%s: out of memory", name);
+        return plugin_fail(err, LSYS_ERR_NOMEM, "%s: out of memory", name);
     }
     sys->shape = -1;
     const unsigned char *s = (const unsigned char *)text;
     if (!detect_dialect(s, len, &sys->dialect)) {
         lsys_system_free(sys);
-        return lsys_fail(err, LSYS_ERR_SYNTAX,
+        return plugin_fail(err, LSYS_ERR_SYNTAX,
                          "%s: no L-system found: the text is empty or only comments; expected three numeric "
                          "lines (recursion, angle, thickness), an axiom and rules, or keyword lines",
                          name);
@@ -501,13 +501,13 @@ int lsys_read(const char *text, size_t len, const char *name, const lsys_read_op
     if (!rc && sys->dialect == LSYS_DIALECT_NUMERIC && stage < 4) {
         static const char *const missing[] = {"the recursion level", "the standard angle", "the thickness",
                                               "the axiom"};
-        rc = lsys_fail(err, LSYS_ERR_SYNTAX,
+        rc = plugin_fail(err, LSYS_ERR_SYNTAX,
                        "%s:%u: the text ends before %s; a numeric L-system gives the recursion level, the "
                        "angle, the thickness and the axiom on its first four lines",
                        name, r.line, missing[stage]);
     }
     if (!rc && sys->dialect == LSYS_DIALECT_KEYWORD && !r.axiom_line)
-        rc = lsys_fail(err, LSYS_ERR_SYNTAX, "%s: no 'axiom' line; the keyword dialect needs 'axiom <symbols>'",
+        rc = plugin_fail(err, LSYS_ERR_SYNTAX, "%s: no 'axiom' line; the keyword dialect needs 'axiom <symbols>'",
                        name);
     if (rc) {
         lsys_system_free(sys);
@@ -517,30 +517,30 @@ int lsys_read(const char *text, size_t len, const char *name, const lsys_read_op
     return LSYS_OK;
 }
 
-int lsys_read_file(const char *path, const lsys_read_options *opt, lsys_system **out, lsys_error *err)
+int lsys_read_file(const char *path, const lsys_read_options *opt, lsys_system **out, plugin_err *err)
 {
     *out = NULL;
     FILE *f = fopen(path, "rb");
-    if (!f) return lsys_fail(err, LSYS_ERR_IO, "%s: cannot open the L-system file: %s", path, strerror(errno));
+    if (!f) return plugin_fail(err, LSYS_ERR_IO, "%s: cannot open the L-system file: %s", path, strerror(errno));
     long size = fseek(f, 0, SEEK_END) ? -1 : ftell(f);
     if (size < 0 || fseek(f, 0, SEEK_SET)) {
         fclose(f);
-        return lsys_fail(err, LSYS_ERR_IO, "%s: cannot read the L-system file (not a regular file?)", path);
+        return plugin_fail(err, LSYS_ERR_IO, "%s: cannot read the L-system file (not a regular file?)", path);
     }
     if ((unsigned long)size > LSYS_FILE_MAX_BYTES) {
         fclose(f);
-        return lsys_fail(err, LSYS_ERR_LIMIT, "%s: %ld bytes is more than the %u bytes an L-system file may have",
+        return plugin_fail(err, LSYS_ERR_LIMIT, "%s: %ld bytes is more than the %u bytes an L-system file may have",
                          path, size, LSYS_FILE_MAX_BYTES);
     }
     char *buf = malloc((size_t)size + 1u); /* owned here */
     if (!buf) {
         fclose(f);
-        return lsys_fail(err, LSYS_ERR_NOMEM, "%s: out of memory reading the file", path);
+        return plugin_fail(err, LSYS_ERR_NOMEM, "%s: out of memory reading the file", path);
     }
     size_t n = fread(buf, 1, (size_t)size, f);
     int bad = ferror(f) || n != (size_t)size;
     fclose(f);
-    int rc = bad ? lsys_fail(err, LSYS_ERR_IO, "%s: read error", path) : lsys_read(buf, n, path, opt, out, err);
+    int rc = bad ? plugin_fail(err, LSYS_ERR_IO, "%s: read error", path) : lsys_read(buf, n, path, opt, out, err);
     free(buf);
     return rc;
 }

@@ -22,7 +22,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "lsys_error.h"
+#include "lsys_status.h"
 
 #define LSYS_FILE_MAX_BYTES (16u << 20) /* largest L-system text read */
 #define LSYS_MAX_RECURSION 1000         /* largest recursion level accepted */
@@ -67,12 +67,12 @@ typedef struct lsys_read_options {
 /* Parses `len` bytes of L-system text; `name` labels messages (name:line:column). Returns
  * LSYS_OK with *out set, or a negative status with the sentence in err and *out NULL. */
 int lsys_read(const char *text, size_t len, const char *name, const lsys_read_options *opt,
-              lsys_system **out, lsys_error *err);
+              lsys_system **out, plugin_err *err);
 
 /* Reads the file at `path` (at most LSYS_FILE_MAX_BYTES) and parses it as lsys_read() does,
  * with the path as the name. */
 int lsys_read_file(const char *path, const lsys_read_options *opt, lsys_system **out,
-                   lsys_error *err);
+                   plugin_err *err);
 
 void lsys_system_free(lsys_system *sys); /* accepts NULL */
 

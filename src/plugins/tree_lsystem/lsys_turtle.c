@@ -28,7 +28,7 @@ typedef struct turtle {
     const lsys_sink *sinks;
     int n_sinks;
     lsys_turtle_stats st;
-    lsys_error *err;
+    plugin_err *err;
     turtle_state cur;
     turtle_state *stack;        /* owned */
     uint32_t depth, cap;
@@ -89,7 +89,7 @@ static int record_vertex(turtle *t)
 {
     if (!t->npoly) return LSYS_OK;
     if (t->npv >= t->cfg->max_polygon_vertices)
-        return lsys_fail(t->err, LSYS_ERR_LIMIT,
+        return plugin_fail(t->err, LSYS_ERR_LIMIT,
                          "open polygons hold more than max_polygon_vertices = %u vertices; close polygons "
                          "with '}' sooner or raise max_polygon_vertices",
                          t->cfg->max_polygon_vertices);
@@ -97,7 +97,7 @@ static int record_vertex(turtle *t)
         uint32_t cap = t->cap_pv ? t->cap_pv * 2 : 64;
         if (cap > t->cfg->max_polygon_vertices) cap = t->cfg->max_polygon_vertices;
         double *g = realloc(t->pv, (size_t)cap * 3 * sizeof *g);
-        if (!g) return lsys_fail(t->err, LSYS_ERR_NOMEM, "out of memory for polygon vertices");
+        if (!g) return plugin_fail(t->err, LSYS_ERR_NOMEM, "out of memory for polygon vertices");
         t->pv = g, t->cap_pv = cap;
     }
     memcpy(t->pv + 3 * (size_t)t->npv, t->cur.pos, sizeof t->cur.pos);
@@ -111,12 +111,12 @@ static int move(turtle *t, double d, int draw, int record)
     double p0[3] = {c->pos[0], c->pos[1], c->pos[2]};
     for (int k = 0; k < 3; k++) c->pos[k] += d * c->frame.h[k];
     if (!isfinite(c->pos[0] + c->pos[1] + c->pos[2]))
-        return lsys_fail(t->err, LSYS_ERR_LIMIT,
+        return plugin_fail(t->err, LSYS_ERR_LIMIT,
                          "the turtle moved beyond finite coordinates (a length grew without bound); check "
                          "the length modifiers ' \" and the arguments of F, Z, f, z, g");
     if (draw && d != 0.0) {
         if (t->st.segments >= t->cfg->max_segments)
-            return lsys_fail(t->err, LSYS_ERR_LIMIT,
+            return plugin_fail(t->err, LSYS_ERR_LIMIT,
                              "the L-system draws more than max_segments = %llu segments; lower the recursion "
                              "level or raise max_segments",
                              (unsigned long long)t->cfg->max_segments);
@@ -145,7 +145,7 @@ static int joint_end(turtle *t, lsys_joint *j)
 static int push(turtle *t)
 {
     if (t->depth >= t->cfg->max_depth)
-        return lsys_fail(t->err, LSYS_ERR_LIMIT,
+        return plugin_fail(t->err, LSYS_ERR_LIMIT,
                          "brackets [ ] nest deeper than %u levels (the nesting limit); the string has "
                          "unbalanced '[' or an extreme recursion level",
                          t->cfg->max_depth);
@@ -153,7 +153,7 @@ static int push(turtle *t)
         uint32_t cap = t->cap ? t->cap * 2 : 64;
         if (cap > t->cfg->max_depth) cap = t->cfg->max_depth;
         turtle_state *g = realloc(t->stack, (size_t)cap * sizeof *g);
-        if (!g) return lsys_fail(t->err, LSYS_ERR_NOMEM, "out of memory for the bracket stack");
+        if (!g) return plugin_fail(t->err, LSYS_ERR_NOMEM, "out of memory for the bracket stack");
         t->stack = g, t->cap = cap;
     }
     t->stack[t->depth++] = t->cur;
@@ -180,10 +180,10 @@ static int polygon_begin(turtle *t)
         uint32_t cap = t->cap_poly ? t->cap_poly * 2 : 16;
         if (cap > t->cfg->max_depth) cap = t->cfg->max_depth;
         if (t->npoly >= cap)
-            return lsys_fail(t->err, LSYS_ERR_LIMIT, "polygons { } nest deeper than %u levels (the nesting limit)",
+            return plugin_fail(t->err, LSYS_ERR_LIMIT, "polygons { } nest deeper than %u levels (the nesting limit)",
                              t->cfg->max_depth);
         uint32_t *g = realloc(t->pstart, (size_t)cap * sizeof *g);
-        if (!g) return lsys_fail(t->err, LSYS_ERR_NOMEM, "out of memory for the polygon stack");
+        if (!g) return plugin_fail(t->err, LSYS_ERR_NOMEM, "out of memory for the polygon stack");
         t->pstart = g, t->cap_poly = cap;
     }
     t->pstart[t->npoly++] = t->npv;
@@ -230,7 +230,7 @@ static int polygon_end(turtle *t)
     uint32_t n = recorded ? drop_repeats(t->pv + 3 * (size_t)start, recorded) : 0;
     if (recorded >= 3) {
         if (t->st.polygons >= t->cfg->max_polygons)
-            return lsys_fail(t->err, LSYS_ERR_LIMIT,
+            return plugin_fail(t->err, LSYS_ERR_LIMIT,
                              "the L-system draws more than max_polygons = %llu polygons; lower the recursion "
                              "level or raise max_polygons",
                              (unsigned long long)t->cfg->max_polygons);
@@ -297,7 +297,7 @@ static int run(turtle *t, const unsigned char *s, size_t n)
         case 't': lsys_frame_tropism(&c->frame, has_arg ? arg : DEFAULT_TROPISM); break;
         case '~':
             if (!t->cfg->random) {
-                rc = lsys_fail(t->err, LSYS_ERR_SYNTAX, "'~' needs a random stream and none was given");
+                rc = plugin_fail(t->err, LSYS_ERR_SYNTAX, "'~' needs a random stream and none was given");
                 break;
             }
             random_turn(t, has_arg ? arg * DEG : BARE_RANDOM_TURN);
@@ -333,7 +333,7 @@ static int run(turtle *t, const unsigned char *s, size_t n)
 }
 
 int lsys_interpret(const unsigned char *s, size_t n, const lsys_turtle_config *cfg, const lsys_sink *sinks,
-                   int n_sinks, lsys_turtle_stats *stats, lsys_error *err)
+                   int n_sinks, lsys_turtle_stats *stats, plugin_err *err)
 {
     turtle t = {.cfg = cfg, .sinks = sinks, .n_sinks = n_sinks, .err = err};
     t.cur.frame = (lsys_frame){.h = {0, 0, 1}, .l = {0, 1, 0}, .u = {1, 0, 0}};

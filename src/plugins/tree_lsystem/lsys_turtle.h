@@ -19,7 +19,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "lsys_error.h"
+#include "lsys_status.h"
 
 /* The turtle's orientation. H is a unit vector; L and U are unit and square to H except after
  * `$`, which leaves them |H_xy| long (as Lparser does); U = L x H until `$` makes it H x L. */
@@ -111,6 +111,6 @@ typedef struct lsys_turtle_stats {
 /* Interprets s[0..n) and feeds the n_sinks sinks. Returns LSYS_OK, LSYS_ERR_LIMIT (the
  * sentence names the limit), LSYS_ERR_NOMEM or LSYS_ERR_SINK. stats may be NULL. */
 int lsys_interpret(const unsigned char *s, size_t n, const lsys_turtle_config *cfg,
-                   const lsys_sink *sinks, int n_sinks, lsys_turtle_stats *stats, lsys_error *err);
+                   const lsys_sink *sinks, int n_sinks, lsys_turtle_stats *stats, plugin_err *err);
 
 #endif

@@ -3,7 +3,7 @@
  * MODELS.md §4). This is the plugin file, the only one that calls the host: it owns the
  * descriptor, the plugin state and the order of work; the schema (lsys_schema.c), reading,
  * derivation, the turtle, the mesh, box counting and the law are the model, which reports
- * failures in an lsys_error and takes warnings and random numbers as callbacks.
+ * failures in an plugin_err and takes warnings and random numbers as callbacks.
  *
  * generate() for one variant:
  *   1. the variant's height H(age) from height and height_by_age;
@@ -32,6 +32,7 @@
 #include "lsys_turtle.h"
 #include "plugin_host.h"
 #include "sylva/plugin.h"
+#include "sylva/tree_stats.h"
 
 #define MAX_NESTING 65536       /* [ ] and { } nesting */
 #define START_COLOUR 2          /* Lparser's starting colour index */
@@ -79,7 +80,7 @@ static void warn_to_host(void *ctx, const char *sentence)
     h->api->log(h->host, SYLVA_LOG_WARN, "%s", sentence);
 }
 
-static int fail(const sylva_host_api *api, sylva_host *host, int lsys_status, const lsys_error *e)
+static int fail(const sylva_host_api *api, sylva_host *host, int lsys_status, const plugin_err *e)
 {
     api->error(host, "%s", e->msg);
     switch (lsys_status) {
@@ -231,7 +232,7 @@ static int tree_create(const sylva_host_api *api, sylva_host *host, const sylva_
     }
     plugin_host_ref ref = {api, host};
     lsys_read_options ro = {.lenient = (int)sylva_param_int(params, "lenient"), .warn = warn_to_host, .warn_ctx = &ref};
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     int rc = has_file ? lsys_read_file(file, &ro, &s->sys, &e)
                       : lsys_read(source, strlen(source), "source", &ro, &s->sys, &e);
     if (rc) {
@@ -304,7 +305,7 @@ static lsys_turtle_config turtle_config(const tree_state *s, jitter *j)
 }
 
 static int interpret(const tree_state *s, const sylva_host_api *api, sylva_host *host, const unsigned char *str,
-                     size_t n, const lsys_sink *sinks, int n_sinks, lsys_turtle_stats *st, lsys_error *e)
+                     size_t n, const lsys_sink *sinks, int n_sinks, lsys_turtle_stats *st, plugin_err *e)
 {
     jitter j = {.api = api};
     api->rng_init(host, &j.rng, "tree_lsystem.jitter", 0);
@@ -322,7 +323,7 @@ static int silhouette_init(box_raster *r, const lsys_turtle_stats *st)
 
 typedef struct level_counts {
     uint64_t *branches; /* recursion + 1 counts */
-    lsys_error *err;
+    plugin_err *err;
 } level_counts;
 
 static int count_level(void *ctx, uint32_t level, const unsigned char *s, size_t n)
@@ -339,7 +340,7 @@ static int prepare_law(tree_state *s, const sylva_host_api *api, sylva_host *hos
         api->error(host, "tree_lsystem: out of memory");
         return SYLVA_ERR_NOMEM;
     }
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     unsigned char *str = NULL; /* owned here */
     size_t n = 0;
     level_counts counts = {s->level_branches, &e};
@@ -486,7 +487,7 @@ static int tree_generate(void *state, const sylva_host_api *api, sylva_host *hos
             level = branch_law_level(s->level_branches, s->recursion + 1, stats.target_branches);
         }
     }
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     unsigned char *str = NULL; /* owned here */
     size_t n = 0;
     if ((rc = lsys_derive(s->sys, level, s->max_string, NULL, NULL, &str, &n, &e))) return fail(api, host, rc, &e);

@@ -13,6 +13,7 @@
 
 #include "plugin_host.h"
 #include "sylva/plugin.h"
+#include "sylva/tree_stats.h"
 #include "tree_look.h"
 #include "vessel_config.h"
 #include "vessel_mesh.h"
@@ -89,12 +90,12 @@ static int tree_vessel_create(const sylva_host_api *api, sylva_host *host,
         return SYLVA_ERR_NOMEM;
     }
     s->mem_free = api->mem_free;
-    vessel_err err = {0};
+    plugin_err err = {0};
     if (vessel_config_read(params, &s->params, &err)) {
         api->mem_free(s);
         if (err.param[0]) api->param_error(host, params, err.param, "%s", err.msg);
         else api->error(host, "tree_vessel: %s", err.msg);
-        return (int)err.fault;
+        return (int)err.status;
     }
     int rc = make_materials(api, host, s);
     if (rc) {
@@ -134,14 +135,14 @@ static int tree_vessel_generate(void *state, const sylva_host_api *api, sylva_ho
     api->rng_init(host, &wind.rng, "tree_vessel.wind", req->variant);
     vessel_growth growth = {.age = req->age, .lod = req->lod, .uniform = wind_uniform, .ctx = &wind};
 
-    vessel_err err = {0};
+    plugin_err err = {0};
     vessel_tree tree = {0};  /* owned here */
     vessel_mesh mesh = {0};  /* owned here */
     int rc = SYLVA_OK;
     if (vessel_tree_grow(&s->params, &growth, &tree, &err) ||
         vessel_mesh_build(&tree, &s->params, s->bark_material, s->leaf_material, &mesh, &err)) {
         api->error(host, "tree_vessel: %s", err.msg);
-        rc = (int)err.fault;
+        rc = (int)err.status;
         goto done;
     }
     api->log(host, SYLVA_LOG_DEBUG,

@@ -1,5 +1,5 @@
 /* vessel_config.h — the scene-file face of the vessel model: the parameter schema of the
- * tree_vessel plugin and the reading of a validated block into a vessel_params.
+ * tree_vessel plugin (vessel_schema.h) and the reading of a validated block into a vessel_params.
  *
  * A block starts from its `preset` (beech when not given) and every key the scene gives
  * (sylva_value.is_set) replaces that preset's value; keys not given keep the preset's. The
@@ -11,15 +11,14 @@
 #include <stdint.h>
 
 #include "sylva/plugin.h"
-#include "vessel_error.h"
+#include "plugin_err.h"
 #include "vessel_params.h"
 
-#define VESSEL_SCHEMA_COUNT 34u
-extern const sylva_param_spec vessel_schema[VESSEL_SCHEMA_COUNT];
+#include "vessel_schema.h"
 
 /* Reads a block validated against vessel_schema into *out and checks it (vessel_params_check
- * plus the orders of the polylines). Returns 0, or a vessel_fault with err set; err->param names
+ * plus the orders of the polylines). Returns 0, or a sylva_status with err set; err->param names
  * the key whose place in the scene file the message belongs to. */
-int vessel_config_read(const sylva_params *params, vessel_params *out, vessel_err *err);
+int vessel_config_read(const sylva_params *params, vessel_params *out, plugin_err *err);
 
 #endif

@@ -48,12 +48,12 @@ static void align_axis(vessel_branch *b, vessel_vec d)
     for (int k = 0; k < 3; k++) b->frame.c[k] = vv_rotate(b->frame.c[k], u, angle);
 }
 
-int vessel_hang_above_ground(vessel_tree *t, const vessel_params *p, vessel_err *err)
+int vessel_hang_above_ground(vessel_tree *t, const vessel_params *p, plugin_err *err)
 {
     double c = vessel_ground_clearance(t, p), knee = c + VESSEL_GROUND_SOFT;
     if (!t->n || vessel_lowest_hanging_tip(t) >= c) return 0;
     vessel_vec *work = malloc(2 * (size_t)t->n * sizeof *work); /* owned here: offsets, new tips */
-    if (!work) return vessel_fail(err, VESSEL_FAULT_NOMEM, NULL, "out of memory laying out %u segments", t->n);
+    if (!work) return plugin_fail_key(err, SYLVA_ERR_NOMEM, NULL, NULL, "out of memory laying out %u segments", t->n);
     vessel_vec *offset = work, *tip = work + t->n;
     for (uint32_t i = 0; i < t->n; i++) {
         const vessel_branch *b = &t->branches[i];

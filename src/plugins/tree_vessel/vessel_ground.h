@@ -17,9 +17,9 @@
 #ifndef VESSEL_GROUND_H
 #define VESSEL_GROUND_H
 
-#include "vessel_error.h"
+#include "plugin_err.h"
 #include "vessel_params.h"
-#include "vessel_structure.h"
+#include "vessel_tree.h"
 
 #define VESSEL_GROUND_GAP 0.1  /* metres between the ground and the lowest leaf or bark */
 #define VESSEL_GROUND_SOFT 2.0 /* metres from the clearance up to the knee of the soft floor */
@@ -32,7 +32,7 @@ double vessel_lowest_hanging_tip(const vessel_tree *t);
 double vessel_ground_clearance(const vessel_tree *t, const vessel_params *p);
 
 /* Lifts t onto the soft floor as above when any axis point falls below the clearance. Returns 0,
- * or VESSEL_FAULT_NOMEM with err set (t is then unchanged). */
-int vessel_hang_above_ground(vessel_tree *t, const vessel_params *p, vessel_err *err);
+ * or SYLVA_ERR_NOMEM with err set (t is then unchanged). */
+int vessel_hang_above_ground(vessel_tree *t, const vessel_params *p, plugin_err *err);
 
 #endif

@@ -15,7 +15,7 @@
 
 #include "vessel_math.h"
 #include "vessel_params.h"
-#include "vessel_structure.h"
+#include "vessel_tree.h"
 
 #define VESSEL_CONIFEROUS_ANGLE 45.0 /* degrees between a coniferous leaf and its branch */
 /* Stacked, staggered and coniferous leaves on one side of a branch would all lie in one plane and

@@ -1,10 +1,12 @@
 /* vessel_math.h — the small 3-D algebra the vessel model needs: vectors and orthonormal frames
  * (3x3 matrices whose columns are a branch's local x, y and z axes in the tree's frame), and
- * rotations about an axis. Header-only; no state. */
+ * rotations about an axis, on the plugins' common vec3.h. Header-only; no state. */
 #ifndef VESSEL_MATH_H
 #define VESSEL_MATH_H
 
 #include <math.h>
+
+#include "vec3.h"
 
 #define VESSEL_DEG (M_PI / 180.0)
 
@@ -26,12 +28,16 @@ static inline vessel_vec vv_madd(vessel_vec a, vessel_vec b, double s)
 {
     return vv(a.x + b.x * s, a.y + b.y * s, a.z + b.z * s);
 }
-static inline double vv_dot(vessel_vec a, vessel_vec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+/* The products and the length are the plugins' common ones (vec3.h) on the components. */
+#define VV_XYZ(a) ((const double[3]){(a).x, (a).y, (a).z})
+static inline double vv_dot(vessel_vec a, vessel_vec b) { return vec3_dot(VV_XYZ(a), VV_XYZ(b)); }
 static inline vessel_vec vv_cross(vessel_vec a, vessel_vec b)
 {
-    return vv(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+    double c[3];
+    vec3_cross(VV_XYZ(a), VV_XYZ(b), c);
+    return vv(c[0], c[1], c[2]);
 }
-static inline double vv_len(vessel_vec a) { return sqrt(vv_dot(a, a)); }
+static inline double vv_len(vessel_vec a) { return vec3_length(VV_XYZ(a)); }
 static inline vessel_vec vv_unit(vessel_vec a)
 {
     double l = vv_len(a);

@@ -112,13 +112,13 @@ static void put_leaf(vessel_mesh *m, const vessel_leaf *l, int32_t mat)
 }
 
 int vessel_mesh_build(const vessel_tree *t, const vessel_params *p, int32_t bark_material,
-                      int32_t leaf_material, vessel_mesh *m, vessel_err *err)
+                      int32_t leaf_material, vessel_mesh *m, plugin_err *err)
 {
     vessel_mesh_release(m);
     vessel_mesh_size c = vessel_mesh_count(t, p);
     uint64_t nt = c.bark_triangles + c.leaf_triangles;
     if (nt > VESSEL_MAX_TRIANGLES || c.vertices > UINT32_MAX)
-        return vessel_fail(err, VESSEL_FAULT_LIMIT, c.leaf_triangles > c.bark_triangles ? "leaf_density" : "vessels",
+        return plugin_fail_key(err, SYLVA_ERR_LIMIT, NULL, c.leaf_triangles > c.bark_triangles ? "leaf_density" : "vessels",
                            "this tree would need %llu triangles (%llu bark, %llu leaves); one "
                            "model may have at most %u: lower vessels (S), leaf_density or sides",
                            (unsigned long long)nt, (unsigned long long)c.bark_triangles,
@@ -131,14 +131,14 @@ int vessel_mesh_build(const vessel_tree *t, const vessel_params *p, int32_t bark
     m->mat = malloc((size_t)nt * sizeof(int32_t) + 1);
     if (!m->pos || !m->nrm || !m->uv || !m->tri || !m->mat) {
         vessel_mesh_release(m);
-        return vessel_fail(err, VESSEL_FAULT_NOMEM, NULL, "out of memory for a mesh of %llu vertices and %llu triangles",
+        return plugin_fail_key(err, SYLVA_ERR_NOMEM, NULL, NULL, "out of memory for a mesh of %llu vertices and %llu triangles",
                            (unsigned long long)c.vertices, (unsigned long long)nt);
     }
     m->top = 0;
     vessel_leaf_slot *slots = malloc((p->leaf_density + 1) * sizeof *slots); /* owned here */
     if (!slots) {
         vessel_mesh_release(m);
-        return vessel_fail(err, VESSEL_FAULT_NOMEM, NULL, "out of memory for %u leaves", p->leaf_density);
+        return plugin_fail_key(err, SYLVA_ERR_NOMEM, NULL, NULL, "out of memory for %u leaves", p->leaf_density);
     }
     uint32_t n_slots = vessel_leaf_layout(p, slots);
     ring_table ring;

@@ -11,7 +11,7 @@
 
 #include <stdint.h>
 
-#include "vessel_error.h"
+#include "plugin_err.h"
 #include "vessel_params.h"
 #include "vessel_structure.h"
 
@@ -37,7 +37,7 @@ vessel_mesh_size vessel_mesh_count(const vessel_tree *t, const vessel_params *p)
  * err set when the mesh would pass VESSEL_MAX_TRIANGLES (naming the counts and what to lower)
  * or memory runs out; on failure *m is empty. */
 int vessel_mesh_build(const vessel_tree *t, const vessel_params *p, int32_t bark_material,
-                      int32_t leaf_material, vessel_mesh *m, vessel_err *err);
+                      int32_t leaf_material, vessel_mesh *m, plugin_err *err);
 
 /* Frees the arrays and empties *m; accepts an empty mesh. */
 void vessel_mesh_release(vessel_mesh *m);

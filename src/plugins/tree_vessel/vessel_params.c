@@ -23,29 +23,29 @@ const vessel_polyline_rule vessel_rules_w[VESSEL_LOCALS] = {
 };
 
 static int check_real(double v, double lo, double hi, int lo_open, const char *key,
-                      const char *unit, vessel_err *err)
+                      const char *unit, plugin_err *err)
 {
     if (isfinite(v) && (lo_open ? v > lo : v >= lo) && v <= hi) return 0;
-    return vessel_fail(err, VESSEL_FAULT_PARAM, key, "'%s' is %g%s; valid values are %s%g to %g%s", key, v, unit,
+    return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, key, "'%s' is %g%s; valid values are %s%g to %g%s", key, v, unit,
                        lo_open ? "above " : "", lo, hi, unit);
 }
 
 static int check_polyline(const vessel_polyline *p, double x_max, const vessel_polyline_rule *r,
-                          vessel_err *err)
+                          plugin_err *err)
 {
     double xy[2 * VESSEL_POLYLINE_MAX_POINTS];
     if (p->n > VESSEL_POLYLINE_MAX_POINTS)
-        return vessel_fail(err, VESSEL_FAULT_PARAM, r->key, "'%s' has %u points; at most %u are allowed", r->key, p->n,
+        return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, r->key, "'%s' has %u points; at most %u are allowed", r->key, p->n,
                            VESSEL_POLYLINE_MAX_POINTS);
     for (uint32_t i = 0; i < p->n; i++) xy[2 * i] = p->x[i], xy[2 * i + 1] = p->y[i];
     vessel_polyline scratch;
     return vessel_polyline_set(&scratch, xy, p->n, x_max, r->y_min, r->y_max, r->key, err);
 }
 
-int vessel_params_check(const vessel_params *p, vessel_err *err)
+int vessel_params_check(const vessel_params *p, plugin_err *err)
 {
     if (p->vessels < 1 || p->vessels > VESSEL_MAX_VESSELS)
-        return vessel_fail(err, VESSEL_FAULT_PARAM, "vessels",
+        return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, "vessels",
                            "'vessels' (S) is %u; a tree needs 1 to %u vessels in its trunk",
                            p->vessels, VESSEL_MAX_VESSELS);
     if (check_real(p->trunk_length, 0.0, VESSEL_MAX_TRUNK_LENGTH, 1, "trunk_length", " m", err) ||
@@ -59,42 +59,42 @@ int vessel_params_check(const vessel_params *p, vessel_err *err)
         check_real(p->wind_time, -VESSEL_MAX_WIND_TIME, VESSEL_MAX_WIND_TIME, 0, "wind_time", " rad", err))
         return -1;
     if (p->leaf_spray < 1 || p->leaf_spray > VESSEL_MAX_LEAF_SPRAY)
-        return vessel_fail(err, VESSEL_FAULT_PARAM, "leaf_spray", "'leaf_spray' is %u; a quad carries 1 to %u leaves",
+        return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, "leaf_spray", "'leaf_spray' is %u; a quad carries 1 to %u leaves",
                            p->leaf_spray, VESSEL_MAX_LEAF_SPRAY);
     if (p->leaf_density > VESSEL_MAX_LEAF_DENSITY)
-        return vessel_fail(err, VESSEL_FAULT_PARAM, "leaf_density",
+        return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, "leaf_density",
                            "'leaf_density' is %u leaves per branch; valid values are 0 to %u",
                            p->leaf_density, VESSEL_MAX_LEAF_DENSITY);
     if ((unsigned)p->leaf_type >= VESSEL_LEAF_TYPES)
-        return vessel_fail(err, VESSEL_FAULT_PARAM, "leaf_type", "'leaf_type' %d is not one of the five distributions",
+        return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, "leaf_type", "'leaf_type' %d is not one of the five distributions",
                            (int)p->leaf_type);
     char why[256];
     if (leaf_affine_check(&p->leaf, why, sizeof why))
-        return vessel_fail(err, VESSEL_FAULT_PARAM, "leaf", "'leaf': %s", why);
+        return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, "leaf", "'leaf': %s", why);
     if ((unsigned)p->bark_preset >= BARK_FRACTAL_PRESETS)
-        return vessel_fail(err, VESSEL_FAULT_PARAM, "bark", "'bark': not a preset");
+        return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, "bark", "'bark': not a preset");
     if (bark_fractal_check(&p->bark, why, sizeof why))
-        return vessel_fail(err, VESSEL_FAULT_PARAM, "bark", "'bark': %s", why);
+        return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, "bark", "'bark': %s", why);
     if (p->sides < VESSEL_MIN_SIDES || p->sides > VESSEL_MAX_SIDES)
-        return vessel_fail(err, VESSEL_FAULT_PARAM, "sides", "'sides' is %u; branch cones have %u to %u sides",
+        return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, "sides", "'sides' is %u; branch cones have %u to %u sides",
                            p->sides, VESSEL_MIN_SIDES, VESSEL_MAX_SIDES);
     double wd = 0;
     for (int k = 0; k < 3; k++) {
         if (!isfinite(p->wind_direction[k]))
-            return vessel_fail(err, VESSEL_FAULT_PARAM, "wind_direction", "'wind_direction' must be finite");
+            return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, "wind_direction", "'wind_direction' must be finite");
         wd += p->wind_direction[k] * p->wind_direction[k];
     }
     if (!(wd > 0))
-        return vessel_fail(err, VESSEL_FAULT_PARAM, "wind_direction",
+        return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, "wind_direction",
                            "'wind_direction' is the zero vector; give the way the wind blows, "
                            "e.g. [1, 0, 0] for toward the east");
     for (int k = 0; k < 3; k++) {
         if (!(p->bark_albedo[k] >= 0 && p->bark_albedo[k] <= 1))
-            return vessel_fail(err, VESSEL_FAULT_PARAM, "bark_color", "'bark_color' channels must be in [0, 1]");
+            return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, "bark_color", "'bark_color' channels must be in [0, 1]");
         if (!(p->leaf_albedo[k] >= 0 && p->leaf_albedo[k] <= 1))
-            return vessel_fail(err, VESSEL_FAULT_PARAM, "leaf_color", "'leaf_color' channels must be in [0, 1]");
+            return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, "leaf_color", "'leaf_color' channels must be in [0, 1]");
         if (!(p->leaf_transmittance[k] >= 0 && p->leaf_albedo[k] + p->leaf_transmittance[k] <= 1))
-            return vessel_fail(err, VESSEL_FAULT_PARAM, "leaf_transmittance",
+            return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, "leaf_transmittance",
                                "'leaf_transmittance' channel %d is %g with leaf_color %g; a leaf "
                                "cannot scatter more than it receives (their sum is at most 1)",
                                k, p->leaf_transmittance[k], p->leaf_albedo[k]);
@@ -108,7 +108,7 @@ int vessel_params_check(const vessel_params *p, vessel_err *err)
     uint64_t S = p->vessels, bark = (S - 1) * 2 * p->sides + S * p->sides;
     uint64_t leaves = S * 2 * p->leaf_density;
     if (bark + leaves > VESSEL_MAX_TRIANGLES)
-        return vessel_fail(err, VESSEL_FAULT_LIMIT, leaves > bark ? "leaf_density" : "vessels",
+        return plugin_fail_key(err, SYLVA_ERR_LIMIT, NULL, leaves > bark ? "leaf_density" : "vessels",
                            "this tree would need %llu triangles (%llu bark, %llu leaves); one "
                            "model may have at most %u: lower vessels (S), leaf_density or sides",
                            (unsigned long long)(bark + leaves), (unsigned long long)bark,

@@ -11,7 +11,7 @@
 
 #include "bark_fractal.h"
 #include "leaf_affine.h"
-#include "vessel_error.h"
+#include "plugin_err.h"
 #include "vessel_polyline.h"
 
 /* Limits (documented in docs/models/tree_vessel.md). */
@@ -97,10 +97,10 @@ extern const vessel_polyline_rule vessel_rules_g[VESSEL_LOCALS];
 extern const vessel_polyline_rule vessel_rules_w[VESSEL_LOCALS];
 
 /* Checks every field against its range and the limits above, including the triangle count of
- * the full-grown tree. Returns 0, or VESSEL_FAULT_PARAM (VESSEL_FAULT_LIMIT for the triangle
+ * the full-grown tree. Returns 0, or SYLVA_ERR_PARAM (SYLVA_ERR_LIMIT for the triangle
  * count) with err set (param = the scene-file key) saying what is wrong and what would be
  * valid. */
-int vessel_params_check(const vessel_params *p, vessel_err *err);
+int vessel_params_check(const vessel_params *p, plugin_err *err);
 
 /* The clamped per-order values at Gravelius order g and Weibull order w (3.17–3.22), each
  * polyline read at min(g, 15) or min(w, 50). */

@@ -4,26 +4,26 @@
 #include <math.h>
 
 int vessel_polyline_set(vessel_polyline *p, const double *xy, uint32_t n, double x_max,
-                        double y_min, double y_max, const char *name, vessel_err *err)
+                        double y_min, double y_max, const char *name, plugin_err *err)
 {
     if (n == 0 || !xy)
-        return vessel_fail(err, VESSEL_FAULT_PARAM, name, "'%s' has no points; give at least one [order, value] point",
+        return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, name, "'%s' has no points; give at least one [order, value] point",
                            name);
     if (n > VESSEL_POLYLINE_MAX_POINTS)
-        return vessel_fail(err, VESSEL_FAULT_PARAM, name, "'%s' has %u points; at most %u are allowed", name, n,
+        return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, name, "'%s' has %u points; at most %u are allowed", name, n,
                            VESSEL_POLYLINE_MAX_POINTS);
     for (uint32_t i = 0; i < n; i++) {
         double x = xy[2 * i], y = xy[2 * i + 1];
         if (!isfinite(x) || x < 0 || x > x_max)
-            return vessel_fail(err, VESSEL_FAULT_PARAM, name, "'%s' point %u has order %g; orders run from 0 to %g",
+            return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, name, "'%s' point %u has order %g; orders run from 0 to %g",
                                name, i, x, x_max);
         if (i > 0 && x < xy[2 * i - 2])
-            return vessel_fail(err, VESSEL_FAULT_PARAM, name,
+            return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, name,
                                "'%s' point %u has order %g after %g; orders must not decrease "
                                "(an equal order makes a step)",
                                name, i, x, xy[2 * i - 2]);
         if (!isfinite(y) || y < y_min || y > y_max)
-            return vessel_fail(err, VESSEL_FAULT_PARAM, name, "'%s' point %u has value %g; values run from %g to %g",
+            return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, name, "'%s' point %u has value %g; values run from %g to %g",
                                name, i, y, y_min, y_max);
         p->x[i] = x;
         p->y[i] = y;

@@ -10,7 +10,7 @@
 
 #include <stdint.h>
 
-#include "vessel_error.h"
+#include "plugin_err.h"
 
 #define VESSEL_POLYLINE_MAX_POINTS 64u
 #define VESSEL_ORDER_G_MAX 15u /* Gravelius orders the g polylines span */
@@ -26,7 +26,7 @@ typedef struct vessel_polyline {
  * there are no points, more than VESSEL_POLYLINE_MAX_POINTS, an order outside [0, x_max], an
  * order below its predecessor, a value outside [y_min, y_max] or a value that is not finite. */
 int vessel_polyline_set(vessel_polyline *p, const double *xy, uint32_t n, double x_max,
-                        double y_min, double y_max, const char *name, vessel_err *err);
+                        double y_min, double y_max, const char *name, plugin_err *err);
 
 /* The value at order x (any real; see the header comment for steps and the ends). */
 double vessel_polyline_at(const vessel_polyline *p, double x);

@@ -7,6 +7,7 @@
 #define VESSEL_STATS_H
 
 #include "sylva/plugin.h"
+#include "sylva/tree_stats.h"
 #include "vessel_mesh.h"
 #include "vessel_structure.h"
 

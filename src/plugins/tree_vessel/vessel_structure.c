@@ -109,17 +109,17 @@ static int push(pending **stack, uint32_t *n, uint32_t *cap, const pending *c)
 }
 
 int vessel_tree_grow(const vessel_params *p, const vessel_growth *req, vessel_tree *t,
-                     vessel_err *err)
+                     plugin_err *err)
 {
     vessel_tree_release(t);
     int checked = vessel_params_check(p, err);
     if (checked) return checked;
     if (!(req->age > 0.0 && req->age <= 1.0))
-        return vessel_fail(err, VESSEL_FAULT_PARAM, NULL, "age %g is outside (0, 1]; 1 is the full-grown tree",
+        return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, NULL, "age %g is outside (0, 1]; 1 is the full-grown tree",
                            req->age);
 
     vessel_order_table *table = malloc(sizeof *table); /* owned here, freed below */
-    if (!table) return vessel_fail(err, VESSEL_FAULT_NOMEM, NULL, "out of memory for the per-order table");
+    if (!table) return plugin_fail_key(err, SYLVA_ERR_NOMEM, NULL, NULL, "out of memory for the per-order table");
     vessel_order_table_fill(p, table);
 
     uint32_t S = vessel_grown_vessels(p->vessels, req->age);
@@ -135,7 +135,7 @@ int vessel_tree_grow(const vessel_params *p, const vessel_growth *req, vessel_tr
     uint32_t depth = 0, stack_cap = 0;
     if (!t->branches) {
         free(table);
-        return vessel_fail(err, VESSEL_FAULT_NOMEM, NULL, "out of memory for %u branch segments", cap);
+        return plugin_fail_key(err, SYLVA_ERR_NOMEM, NULL, NULL, "out of memory for %u branch segments", cap);
     }
 
     vessel_vec wind = vv_unit(vv(p->wind_direction[0], p->wind_direction[1], p->wind_direction[2]));
@@ -147,7 +147,7 @@ int vessel_tree_grow(const vessel_params *p, const vessel_growth *req, vessel_tr
     first.frame.c[0] = vv(1, 0, 0), first.frame.c[1] = vv(0, 0, 1), first.frame.c[2] = vv(0, -1, 0);
     first.gravity = first.frame;
     if (push(&stack, &depth, &stack_cap, &first))
-        rc = vessel_fail(err, VESSEL_FAULT_NOMEM, NULL, "out of memory for the branching stack");
+        rc = plugin_fail_key(err, SYLVA_ERR_NOMEM, NULL, NULL, "out of memory for the branching stack");
 
     while (!rc && depth > 0) {
         pending c = stack[--depth];
@@ -229,7 +229,7 @@ int vessel_tree_grow(const vessel_params *p, const vessel_growth *req, vessel_tr
         }
         /* Lateral first (Algorithm 2 grows it before the main child): push it last. */
         if (push(&stack, &depth, &stack_cap, &kid[0]) || push(&stack, &depth, &stack_cap, &kid[1]))
-            rc = vessel_fail(err, VESSEL_FAULT_NOMEM, NULL, "out of memory for the branching stack (%u pending)", depth);
+            rc = plugin_fail_key(err, SYLVA_ERR_NOMEM, NULL, NULL, "out of memory for the branching stack (%u pending)", depth);
     }
     free(stack);
     free(table);

@@ -16,27 +16,9 @@
 
 #include <stdint.h>
 
-#include "vessel_error.h"
-#include "vessel_math.h"
+#include "plugin_err.h"
 #include "vessel_params.h"
-
-typedef struct vessel_branch {
-    vessel_vec base;       /* where the segment's axis starts, tree frame, metres */
-    vessel_frame frame;    /* local axes in the tree frame; frame.c[1] is the axis */
-    double length;         /* actual length l0 of this segment, metres */
-    double rel_length;     /* relative length L0 */
-    double diameter;       /* d = k_d sqrt(S0) at the base (3.4), metres */
-    double tip_diameter;   /* the main child's d where the segment ends; 0: a cone to a point */
-    double bark_v;         /* bark texture coordinate v at the base */
-    uint32_t vessels;      /* S0 */
-    uint32_t g, w;         /* Gravelius and Weibull orders */
-    int32_t mother;        /* index of the mother segment; -1 for the first trunk segment */
-    int32_t main_child;    /* index of the main child (S1 vessels); -1 when terminal */
-    int32_t lateral_child; /* index of the lateral child (S2 vessels); -1 when terminal */
-    uint8_t is_main;       /* 1: the main child of its mother, or the first trunk segment */
-    uint8_t terminal;      /* 1: bears leaves (S0 = 1, or cut at w_geom by the level of detail) */
-    uint8_t drawn;         /* 1: its cone is part of the mesh (w <= w_branch) */
-} vessel_branch;
+#include "vessel_tree.h"
 
 /* What one build asks for beyond the species' parameters. */
 typedef struct vessel_growth {
@@ -48,32 +30,14 @@ typedef struct vessel_growth {
     void *ctx;
 } vessel_growth;
 
-typedef struct vessel_tree {
-    vessel_branch *branches; /* n segments; owned, released by vessel_tree_release */
-    uint32_t n;
-    uint32_t vessels;        /* S' of this build */
-    double trunk_length;     /* l0' of this build, metres */
-    uint32_t n_terminal;     /* leaf-bearing segments */
-    uint32_t w_geom, w_branch; /* the level of detail's limits (3.28, 3.29); UINT32_MAX: none */
-    double height;           /* highest point of any segment's axis, metres */
-} vessel_tree;
-
-/* The bark texture's v where a segment ends: v grows by one per circumference of length, so
- * bark texels stay about square on thick and thin branches alike. */
-static inline double vessel_bark_v_tip(const vessel_branch *b)
-{
-    double girth = M_PI * 0.5 * (b->diameter + b->tip_diameter);
-    return b->bark_v + b->length / (girth > 1e-3 ? girth : 1e-3);
-}
-
 /* S' = t^2 S (3.33), rounded to the nearest whole vessel and at least 1. */
 uint32_t vessel_grown_vessels(uint32_t vessels, double age);
 
 /* Runs Algorithm 2 for p and the request g into *t (any previous content is released first).
- * Returns 0, or a vessel_fault with err set: parameters that fail vessel_params_check, an age
+ * Returns 0, or a sylva_status with err set: parameters that fail vessel_params_check, an age
  * outside (0, 1], or no memory. On failure *t is empty. */
 int vessel_tree_grow(const vessel_params *p, const vessel_growth *g, vessel_tree *t,
-                     vessel_err *err);
+                     plugin_err *err);
 
 /* Frees the branch list and empties *t; accepts an empty tree. */
 void vessel_tree_release(vessel_tree *t);

@@ -11,6 +11,7 @@
 #include "scene_build/ecology_session.h"
 #include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
+#include "sylva/ecology_ext.h"
 
 #define SCENES SYLVA_TEST_DATA_DIR "/plugins/ecology/scenes"
 

@@ -16,7 +16,7 @@ static inline ifs_dtm *seeded_dtm(uint32_t n, double spacing, double relief, dou
     sylva_rng rng;
     rng_stream(&rng, seed, "terrain_ifs.dtm", 0);
     ifs_dtm *d = NULL;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     CHECK(ifs_dtm_generate(&g, seeded_dtm_next, &rng, &d, &err) == 0);
     return d;
 }

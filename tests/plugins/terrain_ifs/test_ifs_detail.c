@@ -33,7 +33,7 @@ static void detail_at(const ifs_dtm *d, double alpha, double *rms, double *max)
 {
     ifs_maps_params p = {.mode = IFS_MODE_BILINEAR, .alpha = alpha};
     ifs_maps *m = NULL;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     CHECK(ifs_maps_build(d, &p, &m, &err) == 0);
     *rms = *max = NAN;
     if (m) ifs_detail_measure(m, 0, rms, max);
@@ -43,7 +43,7 @@ static void detail_at(const ifs_dtm *d, double alpha, double *rms, double *max)
 TEST(a_plane_gets_no_detail)
 {
     ifs_dtm *d = NULL;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     CHECK(ifs_dtm_new(9, 7, 30, 30, &d, &err) == 0);
     if (!d) return;
     for (uint32_t j = 0; j < d->ny; j++)
@@ -60,7 +60,7 @@ TEST(a_plane_gets_no_detail)
 TEST(too_small_to_measure)
 {
     ifs_dtm *d = NULL;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     CHECK(ifs_dtm_new(4, 9, 30, 30, &d, &err) == 0);
     ifs_roughness r;
     if (d) CHECK_INT(ifs_roughness_measure(d, &r), -1);
@@ -73,7 +73,7 @@ TEST(alpha_gives_the_detail_asked_for)
 {
     ifs_dtm *d = generated(65, 400, 0.7, 11);
     if (!d) return;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     for (double want = 0.2; want < 20; want *= 4) {
         double alpha = 0, rms, max;
         CHECK_INT(ifs_alpha_for_detail(d, IFS_MODE_BILINEAR, 0, want, &alpha, &err), 0);
@@ -97,7 +97,7 @@ TEST(detail_follows_the_dtm)
            ra.half4, ra.hurst, ra.target, rb.target);
     CHECK_NEAR(rb.target / ra.target, 10.0, 1e-6);
     CHECK_NEAR(ra.hurst, 0.7, 0.25);
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     double alpha_a = 0, alpha_b = 0;
     CHECK_INT(ifs_alpha_for_detail(a, IFS_MODE_BILINEAR, 0, ra.target, &alpha_a, &err), 0);
     CHECK_INT(ifs_alpha_for_detail(b, IFS_MODE_BILINEAR, 0, rb.target, &alpha_b, &err), 0);

@@ -82,7 +82,7 @@ TEST(geotiff_projected)
     write_geotiff(path, 32633, 500000, 5000000, 30);
     ifs_dtm *d = NULL;
     ifs_dtm_file_info info;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     CHECK(ifs_dtm_read_file(path, &defaults, &d, &info, &err) == 0);
     if (!d) {
         fprintf(stderr, "%s\n", err.msg);
@@ -113,7 +113,7 @@ TEST(geotiff_geographic_in_degrees)
     write_geotiff(path, 4326, 10.0, 46.0, 1.0 / 1200); /* 3 arc-second pixels near 46 N */
     ifs_dtm *d = NULL;
     ifs_dtm_file_info info;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     CHECK(ifs_dtm_read_file(path, &defaults, &d, &info, &err) == 0);
     if (!d) {
         fprintf(stderr, "%s\n", err.msg);
@@ -149,7 +149,7 @@ TEST(ascii_grid_with_nodata)
     write_text(path, ascii_grid);
     ifs_dtm *d = NULL;
     ifs_dtm_file_info info;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     CHECK(ifs_dtm_read_file(path, &defaults, &d, &info, &err) == 0);
     if (!d) {
         fprintf(stderr, "%s\n", err.msg);
@@ -187,7 +187,7 @@ TEST(ascii_grid_crop_and_step)
     ifs_dtm_file_options o = {.band = 1, .step = 2, .has_crop = 1, .crop = {2, 1, 6, 6}};
     ifs_dtm *d = NULL;
     ifs_dtm_file_info info;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     CHECK(ifs_dtm_read_file(path, &o, &d, &info, &err) == 0);
     if (!d) {
         fprintf(stderr, "%s\n", err.msg);
@@ -228,7 +228,7 @@ TEST(ascii_degree_grid)
     write_text(path, text);
     ifs_dtm *d = NULL;
     ifs_dtm_file_info info;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     CHECK(ifs_dtm_read_file(path, &defaults, &d, &info, &err) == 0);
     if (!d) {
         fprintf(stderr, "%s\n", err.msg);
@@ -262,7 +262,7 @@ TEST(ascii_degree_grid)
 TEST(bad_files_give_clear_errors)
 {
     ifs_dtm *d = NULL;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     const char *missing = out_path("no_such_dtm.tif");
     CHECK(ifs_dtm_read_file(missing, &defaults, &d, NULL, &err) == SYLVA_ERR_IO);
     CHECK_STR_CONTAINS(err.msg, "cannot read the DTM");
@@ -303,7 +303,7 @@ TEST(humidity_map_is_resampled)
     CHECK(GDALRasterIO(GDALGetRasterBand(ds, 1), GF_Write, 0, 0, 3, 2, v, 3, 2, GDT_Byte, 0, 0) == CE_None);
     GDALClose(ds);
     float h[5 * 3];
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     ifs_humidity_source src = {.path = path, .band = 1};
     CHECK(ifs_humidity_read(&src, 5, 3, h, &err) == 0);
     CHECK_NEAR(h[0], 0.2, 1e-6);            /* south-west: the map's last row */
@@ -339,7 +339,7 @@ TEST(humidity_from_a_colour_ramp_png)
     if (png) GDALClose(png);
     GDALClose(mem);
     float h[4 * 4];
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     ifs_humidity_source src = {.path = path, .band = 2, .has_range = 1, .range = {15, 200}};
     /* 4 nodes across 4 pixels: node i at pixel coordinate 4 i / 3 - 0.5, clamped; the green
      * values of humidity 1/3 and 2/3 are 77 and 138 (62/185 and 123/185 after the range) */
@@ -391,7 +391,7 @@ TEST(shared_dem_corpus)
     for (int k = 0; k < n; k++) {
         ifs_dtm *d = NULL;
         ifs_dtm_file_info info;
-        ifs_err err = {{0}};
+        plugin_err err = {0};
         int rc = ifs_dtm_read_file(paths[k], &defaults, &d, &info, &err);
         const char *name = paths[k] + strlen(dir) + 1;
         if (rc == 0) {
@@ -432,7 +432,7 @@ TEST(truncated_ascii_grid_fails_fast)
         for (int c = 0; c < 300; c++) fprintf(f, "%d%c", (r * 7 + c) % 100, c == 299 ? '\n' : ' ');
     fclose(f);
     ifs_dtm *d = NULL;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     alarm(30);
     double t0 = harness_seconds();
     CHECK(ifs_dtm_read_file(path, &defaults, &d, NULL, &err) == SYLVA_ERR_IO);
@@ -453,7 +453,7 @@ TEST(ascii_grid_with_junk_is_refused)
     write_text(junk, "ncols 3\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 10\n"
                      "1 2 3\n4 SECRETWORD 6\n7 8 9\n");
     ifs_dtm *d = NULL;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     CHECK(ifs_dtm_read_file(junk, &defaults, &d, NULL, &err) == SYLVA_ERR_IO);
     CHECK_STR_CONTAINS(err.msg, "junk_value.asc' is an ESRI ASCII grid whose value 5 (row 2, "
                                 "column 2, on line 7) is not a number");
@@ -475,7 +475,7 @@ TEST(ascii_grid_nan_values_and_negative_cellsize)
     write_text(nan_grid, "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 10\n"
                          "1 2 3\n4  nan 6\n");
     ifs_dtm *d = NULL;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     CHECK(ifs_dtm_read_file(nan_grid, &defaults, &d, NULL, &err) == SYLVA_ERR_IO);
     CHECK_STR_CONTAINS(err.msg, "nan_values.asc:7:4: the DTM is an ESRI ASCII grid whose value 5 (row 2, column 2) "
                                 "is not a finite number (NaN or infinity)");
@@ -513,7 +513,7 @@ TEST(special_files_are_refused)
     remove(fifo);
     CHECK(mkfifo(fifo, 0600) == 0);
     ifs_dtm *d = NULL;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     alarm(10);
     CHECK(ifs_dtm_read_file(fifo, &defaults, &d, NULL, &err) == SYLVA_ERR_IO);
     CHECK_STR_CONTAINS(err.msg, "dtm.fifo': it is a FIFO (named pipe), not a regular file");
@@ -550,7 +550,7 @@ TEST(local_vrt_stays_offline)
     const char *path = out_path("remote_source.vrt");
     write_text(path, vrt);
     ifs_dtm *d = NULL;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     /* should GDAL connect, the silent server would keep it waiting: let it give up soon */
     CPLSetConfigOption("GDAL_HTTP_TIMEOUT", "2");
     CPLSetConfigOption("GDAL_HTTP_MAX_RETRY", "0");
@@ -578,7 +578,7 @@ TEST(corrupted_heights_are_refused)
     write_text(path, "ncols 3\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 10\n"
                      "100 101 102\n103 -1e34 105\n106 107 108\n");
     ifs_dtm *d = NULL;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     CHECK(ifs_dtm_read_file(path, &defaults, &d, NULL, &err) == SYLVA_ERR_PARAM);
     CHECK_STR_CONTAINS(err.msg, "corrupt.asc' holds the height -1e+34 m at DTM node (1, 1)");
     CHECK_STR_CONTAINS(err.msg, "outside the plausible range [-500, 9000] m");

@@ -25,7 +25,7 @@ static uint64_t next_u64(sylva_rng *r) { return rng_next_u64(r); }
 static ifs_dtm *dtm_of(uint32_t nx, uint32_t ny, double dx, double dy, const double *rows)
 {
     ifs_dtm *d = NULL;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     CHECK(ifs_dtm_from_rows(rows, nx, ny, dx, dy, &d, &err) == 0);
     if (!d) fprintf(stderr, "dtm_of: %s\n", err.msg);
     return d;
@@ -40,7 +40,7 @@ static ifs_maps *maps_of(const ifs_dtm *d, ifs_mode mode, double alpha, const do
     ifs_maps_params p = {.mode = mode, .alpha = alpha, .alpha_field = alpha_field,
                          .probability = probability};
     ifs_maps *m = NULL;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     CHECK(ifs_maps_build(d, &p, &m, &err) == 0);
     if (!m) fprintf(stderr, "maps_of: %s\n", err.msg);
     return m;
@@ -152,7 +152,7 @@ TEST(bilinear_surface_passes_through_every_node)
         CHECK(worst <= 1e-12 * range);
         /* output grid 8 nodes per cell: node (8 i, 8 j) is DTM node (i, j) */
         float *z = malloc(65 * 65 * sizeof *z);
-        ifs_err err = {{0}};
+        plugin_err err = {0};
         CHECK(ifs_eval_grid(m, 65, 65, ifs_eval_auto_depth(m, 65, 65), 2, z, NULL, NULL, &err) == 0);
         double worst_f = 0;
         for (uint32_t j = 0; j < 9; j++)
@@ -222,7 +222,7 @@ TEST(alpha_zero_is_bilinear_interpolation)
     for (int c = 0; c < 8; c++) rng_stream(&streams[c], 9, "terrain_ifs.chaos", (uint64_t)c);
     ifs_chaos_job job = {.points = 8u * IFS_CHAIN_POINTS, .start_z = d->z[0], .streams = streams,
                          .rng_u64 = next_u64, .nx = 129, .ny = 129, .depth = 4, .threads = 2};
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     CHECK(ifs_chaos_grid(m, &job, z, NULL, &err) == 0);
     CHECK(ifs_eval_grid(m, 129, 129, 4, 2, exact, NULL, NULL, &err) == 0);
     double worst_grid = 0;
@@ -304,7 +304,7 @@ TEST(roughness_rises_with_alpha)
         for (int sign = 0; sign < 2; sign++) {
             ifs_maps *m = maps_of(d, IFS_MODE_BILINEAR, sign ? -alphas[a] : alphas[a], NULL, NULL);
             if (!m) break;
-            ifs_err err = {{0}};
+            plugin_err err = {0};
             uint32_t depth = ifs_eval_auto_depth(m, NO, NO);
             CHECK(ifs_eval_grid(m, NO, NO, depth, 2, z, NULL, NULL, &err) == 0);
             (sign ? det_neg : det_pos)[a] = profile_dimension(z, NO, NO);
@@ -353,7 +353,7 @@ TEST(same_seed_same_heights)
         for (uint64_t c = 0; c < chains; c++) rng_stream(&streams[c], seeds[k], "terrain_ifs.chaos", c);
         ifs_chaos_job job = {.points = points, .start_z = d->z[0], .streams = streams,
                              .rng_u64 = next_u64, .nx = NO, .ny = NO, .depth = 6, .threads = threads[k]};
-        ifs_err err = {{0}};
+        plugin_err err = {0};
         ifs_chaos_stats st;
         CHECK(ifs_chaos_grid(m, &job, z[k], &st, &err) == 0);
         CHECK_INT(st.workers, threads[k]);
@@ -363,7 +363,7 @@ TEST(same_seed_same_heights)
     CHECK(memcmp(z[0], z[2], NO * NO * sizeof(float)) == 0);
     CHECK(memcmp(z[0], z[3], NO * NO * sizeof(float)) != 0);
     /* deterministic evaluation: 1 and 2 threads agree to the bit */
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     CHECK(ifs_eval_grid(m, NO, NO, 9, 1, z[0], NULL, NULL, &err) == 0);
     CHECK(ifs_eval_grid(m, NO, NO, 9, 2, z[1], NULL, NULL, &err) == 0);
     CHECK(memcmp(z[0], z[1], NO * NO * sizeof(float)) == 0);
@@ -405,7 +405,7 @@ TEST(bad_maps_and_iterations_are_refused)
     ifs_dtm *d = generated_dtm(5, 10, 1);
     if (!d) return;
     ifs_maps *m = NULL;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     ifs_maps_params p = {.mode = IFS_MODE_BILINEAR, .alpha = 1.0};
     CHECK(ifs_maps_build(d, &p, &m, &err) == SYLVA_ERR_PARAM);
     CHECK_STR_CONTAINS(err.msg, "outside (-1, 1)");
@@ -494,7 +494,7 @@ TEST(nodata_is_filled_from_neighbours)
     ifs_dtm *d = dtm_of(8, 7, 1, 1, rows);
     if (!d) return;
     uint64_t filled = 0;
-    ifs_err err = {{0}};
+    plugin_err err = {0};
     CHECK(ifs_dtm_fill_nodata(d, &filled, &err) == 0);
     CHECK_INT(filled, 10);
     CHECK_NEAR(d->z[1 * 8 + 1], 2.0 + 3.0, 1e-12); /* all 8 neighbours known: symmetric mean */

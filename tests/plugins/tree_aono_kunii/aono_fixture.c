@@ -4,7 +4,7 @@
 
 #include <string.h>
 
-#include "aono_plugin.h"
+#include "tree_aono_kunii.h"
 #include "params/validate.h"
 #include "params/yaml_doc.h"
 

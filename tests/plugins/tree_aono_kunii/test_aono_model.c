@@ -10,10 +10,11 @@
 #include "aono_fixture.h"
 #include "aono_frame.h"
 #include "aono_mesh.h"
-#include "aono_plugin.h"
+#include "tree_aono_kunii.h"
 #include "aono_ratio.h"
 #include "harness.h"
 #include "tree_look.h"
+#include "sylva/tree_stats.h"
 
 #define DEG (3.14159265358979323846 / 180.0)
 

@@ -14,7 +14,7 @@
 static inline lsys_system *test_read(const char *text)
 {
     lsys_system *s = NULL;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     if (lsys_read(text, strlen(text), "test", NULL, &s, &e)) {
         fprintf(stderr, "read failed: %s\n", e.msg);
         return NULL;
@@ -27,7 +27,7 @@ static inline char *test_derive(const lsys_system *s, uint32_t steps)
 {
     unsigned char *out = NULL;
     size_t n = 0;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     if (lsys_derive(s, steps, 1u << 24, NULL, NULL, &out, &n, &e)) {
         fprintf(stderr, "derive failed: %s\n", e.msg);
         return NULL;
@@ -99,7 +99,7 @@ static inline lsys_turtle_config test_config(double angle, double thickness, uin
 
 /* Interprets `str` into `rec` (zeroed first); returns the status. */
 static inline int test_turtle(const char *str, const lsys_turtle_config *cfg, test_record *rec, lsys_turtle_stats *st,
-                              lsys_error *e)
+                              plugin_err *e)
 {
     memset(rec, 0, sizeof *rec);
     lsys_sink sink = {.ctx = rec, .segment = test_on_segment, .polygon = test_on_polygon};

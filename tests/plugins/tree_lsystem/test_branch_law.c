@@ -13,7 +13,7 @@
 static uint64_t count_of(const char *str)
 {
     uint64_t n = 0;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     return branch_count((const unsigned char *)str, strlen(str), &n, &e) ? UINT64_MAX : n;
 }
 
@@ -153,7 +153,7 @@ TEST(branch_count_reports_a_failed_allocation)
      * that leaves out the blocks past the stack (255 before), and nothing left allocated. */
     for (uint64_t k = 1; k <= 2; k++) {
         uint64_t n = 7;
-        lsys_error e = {{0}};
+        plugin_err e = {0};
         size_t live = fault_alloc_live();
         fault_alloc_arm(k, 0);
         int rc = branch_count((const unsigned char *)str, strlen(str), &n, &e);

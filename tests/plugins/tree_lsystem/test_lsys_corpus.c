@@ -220,7 +220,7 @@ TEST(k3d_reference_counts)
     const char *path = harness_shared_data("lparser/lparser4-k3d/abop-nested-polygon-leaves.ls");
     if (!path) SKIP("the shared L-parser corpus (lparser/ in SYLVA_SHARED_DATA_DIR) is not there");
     lsys_system *s = NULL;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     CHECK_INT(lsys_read_file(path, NULL, &s, &e), LSYS_OK);
     if (!s) return;
     unsigned char *str = NULL;

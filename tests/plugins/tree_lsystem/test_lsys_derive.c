@@ -96,7 +96,7 @@ TEST(string_limit_is_reported_before_allocation)
     if (!s) return;
     unsigned char *out = NULL;
     size_t n = 0;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     int rc = lsys_derive(s, 40, 1000000, NULL, NULL, &out, &n, &e);
     CHECK_INT(rc, LSYS_ERR_LIMIT);
     CHECK(out == NULL);
@@ -116,7 +116,7 @@ TEST(work_limit_stops_long_steady_derivations)
     lsys_system *s = test_read("1000\n30\n10\nABABABABAB\nA=B\nB=A\n@\n");
     unsigned char *out = NULL;
     size_t n = 0;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     int rc = s ? lsys_derive(s, 1000, 100, NULL, NULL, &out, &n, &e) : -99;
     CHECK_INT(rc, LSYS_ERR_LIMIT);
     CHECK_STR_CONTAINS(e.msg, "16 times");
@@ -137,7 +137,7 @@ TEST(each_level_is_reported)
     size_t lengths[5] = {0};
     unsigned char *out = NULL;
     size_t n = 0;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     CHECK(s && lsys_derive(s, 4, 1000, record_level, lengths, &out, &n, &e) == LSYS_OK);
     /* Fibonacci lengths 1 1 2 3 5. */
     CHECK_INT(lengths[0], 1);

@@ -60,7 +60,7 @@ static int read_row(FILE *f, figures *r)
 static int draw_file(const char *path, uint64_t seed, figures *out, char *why, size_t why_len)
 {
     lsys_system *s = NULL;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     if (lsys_read_file(path, &(lsys_read_options){.lenient = 1}, &s, &e)) {
         snprintf(why, why_len, "read: %s", e.msg);
         return -1;

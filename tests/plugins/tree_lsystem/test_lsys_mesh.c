@@ -62,7 +62,7 @@ static int build(const char *str, uint32_t sides, int flat, double scale, collec
     cfg.max_segments = 100000000;
     lsys_mesh_config mc = {.sides = sides, .flat = flat, .scale = scale, .bark_tile = BARK_TILE, .max_polygon_vertices = 4096,
                            .flush = collect, .flush_ctx = out};
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     lsys_mesh *m = lsys_mesh_new(&mc, &e);
     if (!m) return -1;
     lsys_sink sink = lsys_mesh_sink(m);
@@ -355,7 +355,7 @@ static test_record *mesh_and_record(const char *str, collected *c)
     uint64_t rng = 3;
     lsys_turtle_config cfg = test_config(30, 10, &rng);
     test_record *rec = malloc(sizeof *rec); /* owned by the caller */
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     int ok = rec && !test_turtle(str, &cfg, rec, NULL, &e);
     CHECK(ok);
     if (!ok) {

@@ -17,6 +17,7 @@
 #include "scene/scene.h"
 #include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
+#include "sylva/tree_stats.h"
 
 static plugin_registry *registry(void)
 {
@@ -108,7 +109,7 @@ TEST(descriptor_and_schema)
 
 static int count_level(void *ctx, uint32_t level, const unsigned char *s, size_t n)
 {
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     return branch_count(s, n, &((uint64_t *)ctx)[level], &e);
 }
 
@@ -133,7 +134,7 @@ TEST(variants_follow_the_branch_law)
     /* N1: the branches of the full-grown string, counted on their own. */
     const char *text = "7\n30\n10\nA\nA=F[&A][>(120)&A]<(120)&A\n";
     lsys_system *sys = NULL;
-    lsys_error le = {{0}};
+    plugin_err le = {0};
     unsigned char *full = NULL;
     size_t full_n = 0;
     CHECK(!lsys_read(text, strlen(text), "t", NULL, &sys, &le));
@@ -445,7 +446,7 @@ TEST(branch_law_from_a_measured_tree)
     if (!reg) return;
     const char *text = "8\n30\n10\nA\nA=F[&A]^A\n";
     lsys_system *sys = NULL;
-    lsys_error le = {{0}};
+    plugin_err le = {0};
     unsigned char *full = NULL;
     size_t full_n = 0;
     uint64_t level_branches[9] = {0};

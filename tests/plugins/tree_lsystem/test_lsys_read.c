@@ -17,7 +17,7 @@ static void collect(void *ctx, const char *msg)
     snprintf(w->last, sizeof w->last, "%s", msg);
 }
 
-static int read_with(const char *text, int lenient, lsys_system **s, lsys_error *e, warnings *w)
+static int read_with(const char *text, int lenient, lsys_system **s, plugin_err *e, warnings *w)
 {
     lsys_read_options o = {.lenient = lenient, .warn = collect, .warn_ctx = w};
     return lsys_read(text, strlen(text), "t.ls", &o, s, e);
@@ -32,7 +32,7 @@ TEST(numeric_dialect_with_comments)
                        "R=[Ba]\r\n#B=&B (commented out)\r\n"
                        "@\r\nA=never read\r\n";
     lsys_system *s = NULL;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     warnings w = {0};
     CHECK_INT(read_with(text, 0, &s, &e, &w), LSYS_OK);
     if (!s) return;
@@ -59,7 +59,7 @@ TEST(keyword_dialect)
                        "rule H = F^\t\t# duh ...\r\n"
                        "rule 1 = 2\r\n";
     lsys_system *s = NULL;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     warnings w = {0};
     CHECK_INT(read_with(text, 0, &s, &e, &w), LSYS_OK);
     if (!s) {
@@ -87,7 +87,7 @@ TEST(keyword_dialect)
 TEST(keyword_defaults)
 {
     lsys_system *s = NULL;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     warnings w = {0};
     CHECK_INT(read_with("axiom F\n", 0, &s, &e, &w), LSYS_OK);
     if (!s) return;
@@ -129,7 +129,7 @@ TEST(argument_forms)
 TEST(unknown_symbol_is_located)
 {
     lsys_system *s = NULL;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     warnings w = {0};
     /* higgs-butterfly.ls has a stray ')' in a rule. */
     const char *text = "10\n20\n80\nL\n# wings\nB=+(25)[{-(90)&&fff^^f)}]\n@\n";
@@ -153,7 +153,7 @@ TEST(unknown_symbol_is_located)
 TEST(header_and_keyword_errors)
 {
     lsys_system *s = NULL;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     warnings w = {0};
     CHECK_INT(read_with("2.5\n30\n10\nA\n", 0, &s, &e, &w), LSYS_ERR_SYNTAX);
     CHECK_STR_CONTAINS(e.msg, "t.ls:1:1: recursion level 2.5 is refused");
@@ -187,7 +187,7 @@ TEST(header_and_keyword_errors)
 TEST(arguments_beyond_the_range_of_numbers)
 {
     lsys_system *s = NULL;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     warnings w = {0};
     /* 0e400 is zero, as strtod reads it, not 0 times infinity. */
     double v = -1;
@@ -209,7 +209,7 @@ TEST(arguments_beyond_the_range_of_numbers)
 TEST(missing_file_is_an_io_error)
 {
     lsys_system *s = NULL;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     CHECK_INT(lsys_read_file("/nonexistent/dir/x.ls", NULL, &s, &e), LSYS_ERR_IO);
     CHECK_STR_CONTAINS(e.msg, "/nonexistent/dir/x.ls: cannot open the L-system file");
 }
@@ -219,7 +219,7 @@ TEST(missing_file_is_an_io_error)
 TEST(foreign_files_are_not_quoted)
 {
     lsys_system *s = NULL;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     warnings w = {0};
     CHECK_INT(read_with("root:x:0:0:root:/root:/bin/bash\ndaemon:x:1:1::/usr/sbin\n", 0, &s, &e, &w),
               LSYS_ERR_SYNTAX);

@@ -50,7 +50,7 @@ static const double *end_of(const char *str, test_record *rec)
 {
     uint64_t rng = 1;
     lsys_turtle_config cfg = test_config(30, 0, &rng);
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     CHECK_INT(test_turtle(str, &cfg, rec, NULL, &e), LSYS_OK);
     CHECK(rec->n_seg > 0);
     return rec->p1[rec->n_seg ? rec->n_seg - 1 : 0];
@@ -157,7 +157,7 @@ TEST(bare_size_modifiers_divide)
     static test_record rec;
     uint64_t rng = 1;
     lsys_turtle_config cfg = test_config(30, 10, &rng);
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     CHECK_INT(test_turtle("F\"F?F;+F", &cfg, &rec, NULL, &e), LSYS_OK);
     CHECK_INT(rec.n_seg, 4);
     CHECK_NEAR(rec.p1[1][2] - rec.p0[1][2], 1 / 0.9, 1e-12);       /* " : length / 0.9 */
@@ -172,7 +172,7 @@ TEST(only_f_z_and_dot_record_polygon_vertices)
     lsys_turtle_config cfg = test_config(90, 10, &rng);
     static test_record rec;
     lsys_turtle_stats st;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     CHECK_INT(test_turtle("{F+F+F}", &cfg, &rec, &st, &e), LSYS_OK);
     CHECK_INT(rec.n_seg, 3);
     CHECK_INT(st.polygons, 0);
@@ -198,7 +198,7 @@ TEST(fig3_segments_halve)
     uint64_t rng = 1;
     lsys_turtle_config cfg = test_config(30, 10, &rng);
     static test_record rec;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     CHECK_INT(test_turtle(str, &cfg, &rec, NULL, &e), LSYS_OK);
     CHECK_INT(rec.n_seg, 4);
     double want = 8, z = 0;
@@ -219,7 +219,7 @@ TEST(moves_and_modifiers)
     cfg.base_length = 2;
     static test_record rec;
     lsys_turtle_stats st;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     /* F(x) and Z(x) move x; Z is half of F; f, z, g move without drawing; ' and " scale the
      * length, ! and ? the thickness; ; and : the angle. */
     CHECK_INT(test_turtle("FZF(.5)Z(3)fzg'F\"\"F!F?(2)F;+F:(0.5)-F", &cfg, &rec, &st, &e), LSYS_OK);
@@ -254,7 +254,7 @@ TEST(moves_and_modifiers)
 TEST(random_turns_are_bounded_and_repeatable)
 {
     static test_record rec, again;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     double max_dev = 0;
     int wide = 0;
     for (uint64_t seed = 1; seed <= 200; seed++) {
@@ -281,7 +281,7 @@ TEST(polygons_span_brackets_and_rules)
     uint64_t rng = 1;
     lsys_turtle_config cfg = test_config(90, 10, &rng);
     static test_record rec;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     /* `]` inside an open polygon restores the turtle, not the polygon. */
     CHECK_INT(test_turtle("{.[+f.]f.}", &cfg, &rec, NULL, &e), LSYS_OK);
     CHECK_INT(rec.n_poly, 1);
@@ -313,7 +313,7 @@ TEST(colours)
     uint64_t rng = 1;
     lsys_turtle_config cfg = test_config(90, 10, &rng);
     static test_record rec;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     CHECK_INT(test_turtle("FcF[c(7)F]Fc(0)Fc(-3)F", &cfg, &rec, NULL, &e), LSYS_OK);
     CHECK_INT(rec.n_seg, 6);
     int want[6] = {2, 3, 7, 3, 0, 0};
@@ -331,7 +331,7 @@ TEST(limits_are_named)
     uint64_t rng = 1;
     lsys_turtle_config cfg = test_config(90, 10, &rng);
     static test_record rec;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     cfg.max_segments = 3;
     CHECK_INT(test_turtle("FFFF", &cfg, &rec, NULL, &e), LSYS_ERR_LIMIT);
     CHECK_STR_CONTAINS(e.msg, "max_segments = 3");
@@ -358,7 +358,7 @@ TEST(unbalanced_strings_are_survived)
     lsys_turtle_config cfg = test_config(90, 10, &rng);
     static test_record rec;
     lsys_turtle_stats st;
-    lsys_error e = {{0}};
+    plugin_err e = {0};
     CHECK_INT(test_turtle("]]F}[F{f", &cfg, &rec, &st, &e), LSYS_OK);
     CHECK_INT(rec.n_seg, 2);
     CHECK_INT(st.stray_pops, 2);

@@ -94,7 +94,7 @@ TEST(schema_defaults_are_the_beech_preset)
     block b;
     block_from_defaults(&b, "beech");
     vessel_params read, beech = preset(VESSEL_PRESET_BEECH);
-    vessel_err err = {0};
+    plugin_err err = {0};
     CHECK_INT(vessel_config_read(&b.params, &read, &err), 0);
     CHECK(same_params(&read, &beech));
 }
@@ -105,7 +105,7 @@ TEST(a_preset_with_keys_replaced)
     block_from_defaults(&b, "spruce");
     for (uint32_t i = 0; i < VESSEL_SCHEMA_COUNT; i++) b.values[i].is_set = !strcmp(vessel_schema[i].name, "preset");
     vessel_params read, spruce = preset(VESSEL_PRESET_SPRUCE);
-    vessel_err err = {0};
+    plugin_err err = {0};
     CHECK_INT(vessel_config_read(&b.params, &read, &err), 0);
     CHECK(same_params(&read, &spruce)); /* nothing given: the preset itself */
 
@@ -134,7 +134,7 @@ TEST(orders_past_the_span_are_refused_at_their_key)
     static const double far[] = {0, 0.7, 20, 0.9};
     b.values[k].list = far, b.values[k].len = 2;
     vessel_params read;
-    vessel_err err = {0};
+    plugin_err err = {0};
     CHECK_INT(vessel_config_read(&b.params, &read, &err), -1);
     CHECK_STR_CONTAINS(err.param, "split_g");
     CHECK_STR_CONTAINS(err.msg, "order 20; orders run from 0 to 15");
@@ -173,7 +173,7 @@ TEST(leaf_and_bark_keys)
     int leaf = sylva_param_index(&b.params, "leaf"), bark = sylva_param_index(&b.params, "bark");
     int angle = sylva_param_index(&b.params, "bark_angle");
     vessel_params read;
-    vessel_err err = {0};
+    plugin_err err = {0};
     /* a preset's name; a bark preset with its own angle */
     b.values[leaf].is_set = 1, b.values[leaf].s = "shrub";
     b.values[bark].is_set = 1, b.values[bark].i = BARK_FRACTAL_FISSURED;

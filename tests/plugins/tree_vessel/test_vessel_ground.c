@@ -16,7 +16,7 @@ TEST(willow_mesh_stays_above_the_ground)
     for (int a = 0; a < 3; a++) {
         vessel_tree t = {0};
         vessel_mesh m = {0};
-        vessel_err err = {0};
+        plugin_err err = {0};
         CHECK_INT(grow(&p, ages[a], 0, &t), 0);
         CHECK_INT(vessel_mesh_build(&t, &p, 1, 2, &m, &err), 0);
         uint32_t below = 0;

@@ -10,7 +10,7 @@
 #include "vessel_test_util.h"
 #include "vessel_texture.h"
 
-static int build(const vessel_params *p, uint32_t lod, vessel_tree *t, vessel_mesh *m, vessel_err *err)
+static int build(const vessel_params *p, uint32_t lod, vessel_tree *t, vessel_mesh *m, plugin_err *err)
 {
     vessel_growth g = {.age = 1.0, .lod = lod};
     int rc = vessel_tree_grow(p, &g, t, err);
@@ -23,7 +23,7 @@ TEST(counts_indices_and_normals_on_every_preset)
         vessel_params p = preset((vessel_preset)k);
         vessel_tree t = {0};
         vessel_mesh m = {0};
-        vessel_err err = {0};
+        plugin_err err = {0};
         if (build(&p, 0, &t, &m, &err)) {
             fprintf(stderr, "%s\n", err.msg);
             CHECK(0);
@@ -63,7 +63,7 @@ TEST(bark_faces_outward)
     p.leaf_density = 0;
     vessel_tree t = {0};
     vessel_mesh m = {0};
-    vessel_err err = {0};
+    plugin_err err = {0};
     CHECK_INT(build(&p, 0, &t, &m, &err), 0);
     uint32_t inward = 0;
     for (uint32_t i = 0; i < m.nt; i++) {
@@ -104,7 +104,7 @@ TEST(level_of_detail_draws_fewer_triangles)
     for (uint32_t lod = 0; lod <= 10; lod += 2) {
         vessel_tree t = {0};
         vessel_mesh m = {0};
-        vessel_err err = {0};
+        plugin_err err = {0};
         CHECK_INT(build(&p, lod, &t, &m, &err), 0);
         CHECK(m.nt < previous);
         previous = m.nt;
@@ -120,8 +120,8 @@ TEST(triangle_limit_is_checked_before_building)
     p.vessels = VESSEL_MAX_VESSELS, p.leaf_density = 200; /* 40 million leaf triangles */
     vessel_tree t = {0};
     vessel_mesh m = {0};
-    vessel_err err = {0};
-    CHECK_INT(build(&p, 0, &t, &m, &err), VESSEL_FAULT_LIMIT); /* refused by the parameters */
+    plugin_err err = {0};
+    CHECK_INT(build(&p, 0, &t, &m, &err), SYLVA_ERR_LIMIT); /* refused by the parameters */
     CHECK_STR_CONTAINS(err.msg, "would need 41799988 triangles (1799988 bark, 40000000 leaves)");
     CHECK_STR_CONTAINS(err.msg, "at most 20000000");
     CHECK_STR_CONTAINS(err.param, "leaf_density");
@@ -132,7 +132,7 @@ TEST(triangle_limit_is_checked_before_building)
     CHECK_INT(grow(&p, 1.0, 0, &t), 0);
     p.leaf_density = 2000;
     memset(&err, 0, sizeof err);
-    CHECK_INT(vessel_mesh_build(&t, &p, 0, 1, &m, &err), VESSEL_FAULT_LIMIT);
+    CHECK_INT(vessel_mesh_build(&t, &p, 0, 1, &m, &err), SYLVA_ERR_LIMIT);
     CHECK_STR_CONTAINS(err.msg, "would need 24107988 triangles");
     CHECK(m.pos == NULL && m.nt == 0);
     vessel_tree_release(&t);

@@ -90,7 +90,7 @@ TEST(every_preset_passes_its_checks)
 {
     for (int k = 0; k < VESSEL_PRESETS; k++) {
         vessel_params p = preset((vessel_preset)k);
-        vessel_err err = {0};
+        plugin_err err = {0};
         CHECK_INT(vessel_params_check(&p, &err), 0);
         if (err.msg[0]) fprintf(stderr, "%s: %s\n", vessel_preset_names[k], err.msg);
     }
@@ -98,7 +98,7 @@ TEST(every_preset_passes_its_checks)
 
 TEST(parameter_checks_name_the_key)
 {
-    vessel_err err = {0};
+    plugin_err err = {0};
     vessel_params p = preset(VESSEL_PRESET_BEECH);
     p.vessels = 0;
     CHECK_INT(vessel_params_check(&p, &err), -1);

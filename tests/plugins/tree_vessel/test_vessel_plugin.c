@@ -72,7 +72,7 @@ TEST(variants_are_the_model_at_their_ages)
         CHECK_NEAR(pr->age, (v + 1) / 4.0, 1e-12);
         vessel_tree t = {0};
         vessel_mesh m = {0};
-        vessel_err verr = {0};
+        plugin_err verr = {0};
         CHECK_INT(grow(&p, pr->age, 0, &t), 0);
         CHECK_INT(vessel_mesh_build(&t, &p, 0, 1, &m, &verr), 0);
         CHECK_INT(pr->mesh->nt, m.nt); /* the variant is S' = t^2 S */

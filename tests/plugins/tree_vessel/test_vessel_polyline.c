@@ -6,7 +6,7 @@
 static vessel_polyline make(const double *xy, uint32_t n, double x_max)
 {
     vessel_polyline p;
-    vessel_err err = {0};
+    plugin_err err = {0};
     if (vessel_polyline_set(&p, xy, n, x_max, -1000, 1000, "test", &err))
         fprintf(stderr, "unexpected error: %s\n", err.msg);
     return p;
@@ -54,9 +54,9 @@ TEST(step_at_the_first_order)
 TEST(bad_polylines_are_refused_with_a_reason)
 {
     vessel_polyline p;
-    vessel_err err = {0};
+    plugin_err err = {0};
     const double empty[] = {0, 0};
-    CHECK_INT(vessel_polyline_set(&p, empty, 0, 15, 0, 1, "split_g", &err), VESSEL_FAULT_PARAM);
+    CHECK_INT(vessel_polyline_set(&p, empty, 0, 15, 0, 1, "split_g", &err), SYLVA_ERR_PARAM);
     CHECK_STR_CONTAINS(err.msg, "'split_g' has no points");
     CHECK_STR_CONTAINS(err.param, "split_g");
 

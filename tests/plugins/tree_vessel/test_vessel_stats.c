@@ -8,12 +8,13 @@
 #include "vessel_mesh.h"
 #include "vessel_stats.h"
 #include "vessel_test_util.h"
+#include "sylva/tree_stats.h"
 
 static int measure(const vessel_params *p, double age, sylva_tree_stats *st, vessel_mesh *m)
 {
     vessel_tree t = {0};
     vessel_growth g = {.age = age};
-    vessel_err err = {0};
+    plugin_err err = {0};
     int rc = vessel_tree_grow(p, &g, &t, &err);
     if (!rc) rc = vessel_mesh_build(&t, p, 1, 2, m, &err);
     if (rc) fprintf(stderr, "%s\n", err.msg);

@@ -210,7 +210,7 @@ TEST(growth_scales_vessels_and_first_segment)
     CHECK(t.height > young + 3);
     vessel_tree_release(&t);
     vessel_growth g = {.age = 0};
-    vessel_err err = {0};
+    plugin_err err = {0};
     CHECK_INT(vessel_tree_grow(&p, &g, &t, &err), -1);
     CHECK_STR_CONTAINS(err.msg, "age 0 is outside (0, 1]");
     g.age = 1.5;
@@ -272,7 +272,7 @@ static uint64_t mesh_hash_of(const vessel_params *p, double age, uint64_t wind_k
     vessel_growth g = {.age = age, .uniform = test_uniform, .ctx = &s};
     vessel_tree t = {0};
     vessel_mesh m = {0};
-    vessel_err err = {0};
+    plugin_err err = {0};
     uint64_t h = 0;
     if (!vessel_tree_grow(p, &g, &t, &err) && !vessel_mesh_build(&t, p, 3, 4, &m, &err))
         h = vessel_mesh_hash(&m);

@@ -42,7 +42,7 @@ static inline double test_uniform(void *ctx)
 static inline int grow(const vessel_params *p, double age, uint32_t lod, vessel_tree *t)
 {
     vessel_growth g = {.age = age, .lod = lod};
-    vessel_err err = {0};
+    plugin_err err = {0};
     int rc = vessel_tree_grow(p, &g, t, &err);
     if (rc) fprintf(stderr, "vessel_tree_grow: %s\n", err.msg);
     return rc;

@@ -1,10 +1,10 @@
-/* aono_plugin.h — the tree_aono_kunii descriptor: create() reads and checks the parameters and
+/* tree_aono_kunii.h — the tree_aono_kunii descriptor: create() reads and checks the parameters and
  * makes the bark and leaf materials (and the leaf texture); generate() grows one age variant
  * and appends its mesh; destroy() frees the state. The module's entry point returns it, and
  * tests and benchmarks call it directly through a host of their own.
  */
-#ifndef AONO_PLUGIN_H
-#define AONO_PLUGIN_H
+#ifndef TREE_AONO_KUNII_H
+#define TREE_AONO_KUNII_H
 
 #include <stdint.h>
 

@@ -1,5 +1,5 @@
-/* terrain_ifs_schema.c — the terrain_ifs parameter table. */
-#include "terrain_ifs_schema.h"
+/* ifs_schema.c — the terrain_ifs parameter table. */
+#include "ifs_schema.h"
 
 #include "dtm_file.h"
 #include "ifs_chaos.h"

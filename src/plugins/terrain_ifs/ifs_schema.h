@@ -1,8 +1,8 @@
-/* terrain_ifs_schema.h — the parameter schema of the terrain_ifs plugin: the keys a scene's
+/* ifs_schema.h — the parameter schema of the terrain_ifs plugin: the keys a scene's
  * `terrain:` block may hold next to `plugin: terrain_ifs`, with their types, defaults, ranges,
  * units and help (docs/models/terrain_ifs.md lists them). Static const data. */
-#ifndef TERRAIN_IFS_SCHEMA_H
-#define TERRAIN_IFS_SCHEMA_H
+#ifndef IFS_SCHEMA_H
+#define IFS_SCHEMA_H
 
 #include <stdint.h>
 

@@ -1,0 +1,96 @@
+/* sylva/ecology_ext.h — the optional interfaces "sylva.ecology.v1" and "sylva.ecology.v2" of
+ * an ecology plugin: a simulation the host runs year by year.
+ * Part of the plugin ABI (sylva/plugin.h, whose version and rules it follows); plugin.h includes
+ * it, so a plugin written against an older header compiles unchanged. */
+#ifndef SYLVA_ECOLOGY_EXT_H
+#define SYLVA_ECOLOGY_EXT_H
+
+#include "sylva/plugin.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* =============================================================================================
+ * Optional interface "sylva.ecology.v1": an ecology simulation the host runs year by year.
+ *
+ * An ecology plugin whose descriptor's extension(SYLVA_ECOLOGY_EXT_V1) returns a
+ * sylva_ecology_ext_v1 table lets the host drive the simulation itself (`sylva simulate`,
+ * `sylva factors`): start a run from create()'s state and an ecology request, step it a year at
+ * a time, read the living plants and the terrain factor maps, save the whole run to a file and
+ * load it to continue. A run started from the same state and request and stepped to the scene's
+ * year holds the plants generate() places. The layouts below are fixed under this id: a change
+ * is a new id.
+ *
+ * Ownership: a run is the plugin's and is freed by run_free (accepts NULL); it borrows the state
+ * create() made, which must outlive it, and copies what it needs from the request. Factor values
+ * belong to the run. Functions that can fail return SYLVA_OK or a negative sylva_status and
+ * leave a sentence through api->error().
+ */
+#define SYLVA_ECOLOGY_EXT_V1 "sylva.ecology.v1"
+
+typedef struct sylva_ecology_run sylva_ecology_run; /* opaque: the plugin's */
+
+/* One living plant. */
+typedef struct sylva_ecology_plant_record {
+    uint32_t species;     /* index into the request's species array */
+    double position[3];   /* metres; z on the terrain surface */
+    double age;           /* years */
+    double height;        /* metres: the normalised height times the species' model_height */
+    double radius;        /* ecological radius, metres */
+    double vigour;        /* [0, 1] */
+} sylva_ecology_plant_record;
+
+/* One terrain factor on the run's patch grid. */
+typedef struct sylva_ecology_factor_map {
+    const char *name;     /* "altitude", "slope", ...: static in the plugin */
+    uint32_t nx, ny;      /* patches along x (west to east) and y (south to north) */
+    double x0, y0;        /* south-west corner of patch (0, 0), metres */
+    double dx, dy;        /* patch size, metres */
+    const float *values;  /* nx * ny values in [0, 1], row 0 the southern row; owned by the run */
+} sylva_ecology_factor_map;
+
+#define SYLVA_ECOLOGY_ALL_SPECIES 0xffffffffu
+
+typedef struct sylva_ecology_ext_v1 {
+    uint32_t size; /* sizeof(sylva_ecology_ext_v1) as the plugin compiled it */
+    /* Starts a run at year 0 on the request's terrain and species. */
+    int (*run_new)(void *state, const sylva_host_api *, sylva_host *,
+                   const sylva_ecology_request *, sylva_ecology_run **run);
+    void (*run_free)(sylva_ecology_run *run);
+    uint32_t (*years_wanted)(const sylva_ecology_run *); /* the years the scene asks for */
+    uint32_t (*year)(const sylva_ecology_run *);         /* years simulated so far */
+    /* Simulates `years` more years. */
+    int (*step)(sylva_ecology_run *, const sylva_host_api *, sylva_host *, uint32_t years);
+    /* Living plants of one species, or of all with SYLVA_ECOLOGY_ALL_SPECIES. */
+    uint32_t (*plant_count)(const sylva_ecology_run *, uint32_t species);
+    /* Copies living plants [first, first + count) in the run's order (by species, then in
+     * order of birth) into out. */
+    int (*plants)(const sylva_ecology_run *, const sylva_host_api *, sylva_host *, uint32_t first,
+                  uint32_t count, sylva_ecology_plant_record *out);
+    uint32_t (*factor_count)(const sylva_ecology_run *);
+    int (*factor)(const sylva_ecology_run *, uint32_t index, sylva_ecology_factor_map *out);
+    /* The whole run (plants, year, random streams) to a file (written whole or not at all), and
+     * back: load replaces the run's state with the file's, refusing a file from another
+     * terrain, species list or parameters. */
+    int (*save)(const sylva_ecology_run *, const sylva_host_api *, sylva_host *, const char *path);
+    int (*load)(sylva_ecology_run *, const sylva_host_api *, sylva_host *, const char *path);
+} sylva_ecology_ext_v1;
+
+/* "sylva.ecology.v2": v1's table, then place(). A plugin offering v2 may answer a request for v1
+ * with the same table's v1 part (its size is then v2's). */
+#define SYLVA_ECOLOGY_EXT_V2 "sylva.ecology.v2"
+
+typedef struct sylva_ecology_ext_v2 {
+    sylva_ecology_ext_v1 v1; /* v1.size = sizeof(sylva_ecology_ext_v2) as the plugin compiled it */
+    /* Adds the run's plants with api->plant_add exactly as generate() adds those of a run it
+     * simulated to the same year (the same plants, turns, heights and normalised ages, seedlings
+     * left out alike), so a run saved and loaded renders as the run itself; *placed gets how
+     * many. */
+    int (*place)(const sylva_ecology_run *, const sylva_host_api *, sylva_host *, uint32_t *placed);
+} sylva_ecology_ext_v2;
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -108,21 +108,22 @@ static void describe_ground(const scene *sc, const ztv_grid *g, const run_parts 
                 GROUND_DEPARTURE_TOLERANCE);
 }
 
-/* Part 0 opens the output (the folder created when missing) for the job's grid and targets. */
+/* Part 0 opens the output (the folder created when missing) for the job's grid and targets,
+ * described in *info, which the caller keeps until the output is freed (ztv_output.h). */
 static int open_output(const scene_file *sf, const scene *sc, const ztv_job *job, const ztv_study_options *o,
-                       const char *ground, ztv_output **out, err_buf *err)
+                       const char *ground, ztv_info *info, ztv_output **out, err_buf *err)
 {
     const ztv_targets *t = job->targets;
-    ztv_info info = {.grid = job->grid, .crs_wkt = sf->site.crs_wkt, .crs_name = sf->site.crs_name,
+    *info = (ztv_info){.grid = job->grid, .crs_wkt = sf->site.crs_wkt, .crs_name = sf->site.crs_name,
                      .observer_height = o->eye, .ground = ground, .radius = o->radius,
                      .curvature = job->earth && job->earth->curvature, .refraction = sc->earth.refraction,
                      .n_targets = t->n, .n_developments = t->n_developments, .development_names = t->names,
                      .development_xy = (const double(*)[2])t->centre, .target_xy = (const double(*)[2])t->xy,
                      .target_development = t->development};
-    if (sf->site.crs_wkt) memcpy(info.origin, sf->site.origin, sizeof info.origin);
-    info.computed[ZTV_BARE] = 1;
-    info.computed[job->screened] = 1;
-    if (output_folder_make(o->dir, err) || !(*out = ztv_output_open(o->dir, &info, err)))
+    if (sf->site.crs_wkt) memcpy(info->origin, sf->site.origin, sizeof info->origin);
+    info->computed[ZTV_BARE] = 1;
+    info->computed[job->screened] = 1;
+    if (output_folder_make(o->dir, err) || !(*out = ztv_output_open(o->dir, info, err)))
         return err_default(err, ERR_OUTPUT);
     return 0;
 }
@@ -162,6 +163,7 @@ int ztv_study_run(const scene_file *sf, const scene *sc, const ztv_study_options
     ztv_targets targets = {0};
     accel acc = {0};
     ztv_output *out = NULL;
+    ztv_info info; /* what out describes; lives as long as out */
     ztv_job job = {.scene = sc, .accel = &acc, .targets = &targets, .observer_height = o.eye, .radius = o.radius,
                    .screened = (ztv_mode)o.screening, .earth = o.flat_earth ? NULL : &sc->earth,
                    .threads = o.threads, .quiet = o.quiet, .part = (uint32_t)parts->part,
@@ -188,7 +190,7 @@ int ztv_study_run(const scene_file *sf, const scene *sc, const ztv_study_options
     phase_stop(times, PHASE_BVH, t_phase);
     char ground[256];
     describe_ground(sc, &job.grid, parts, o.quiet, ground, sizeof ground);
-    if (!parts->part && open_output(sf, sc, &job, &o, ground, &out, err)) goto done; /* part 0 alone writes */
+    if (!parts->part && open_output(sf, sc, &job, &o, ground, &info, &out, err)) goto done; /* part 0 alone writes */
     rc = trace_and_write(&job, parts, out, times, o.quiet, err);
 done:
     ztv_output_free(out);

@@ -1,6 +1,6 @@
 /* cmd_probe.c — `sylva probe SCENE E N`: the ground at one point of a scene (height, slope,
  * aspect, water) and what stands there (plants within a radius, objects over it), read from the
- * built scene (scene/scene_probe.h). With a site, the point and every position printed are map
+ * built scene (site/scene_probe.h). With a site, the point and every position printed are map
  * coordinates (local = map - site origin); without one, local metres. */
 #include <math.h>
 #include <stdio.h>

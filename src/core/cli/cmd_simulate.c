@@ -1,7 +1,7 @@
 /* cmd_simulate.c — `sylva simulate SCENE`: runs the scene's ecology alone, year by year, and
  * writes what was asked: the living plants as CSV, the whole run's state (to continue later
  * with --load), and statistics — plants per species per year as CSV and as a chart, and a
- * top-down map of the population at chosen years (scene/ecology_steps.h). */
+ * top-down map of the population at chosen years (scene_build/ecology_steps.h). */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -123,6 +123,14 @@ static int move(turtle *t, double d, int draw, int record)
         t->st.segments++;
         /* Width: thickness percent of the length, at least min_thickness / 100 file units. */
         double width = fabs(d) * c->thickness / 100.0, floor = t->cfg->min_thickness / 100.0;
+        /* A segment near the largest double (F(1e308)) overflows the product; the same width
+         * then comes from the percentage first. */
+        if (!isfinite(width)) width = fabs(d) * (c->thickness / 100.0);
+        if (!isfinite(width))
+            return plugin_fail(t->err, LSYS_ERR_LIMIT,
+                               "a segment of %g units at thickness %g %% is wider than finite numbers; "
+                               "check the arguments of F and the thickness modifiers ! and #",
+                               fabs(d), c->thickness);
         double r = 0.5 * (width > floor ? width : floor);
         lsys_segment seg = {.p0 = {p0[0], p0[1], p0[2]}, .p1 = {c->pos[0], c->pos[1], c->pos[2]},
                             .frame = &c->frame, .radius = r, .colour = c->colour, .joint = &c->joint};

@@ -352,6 +352,22 @@ TEST(limits_are_named)
     CHECK_STR_CONTAINS(e.msg, "beyond finite coordinates");
 }
 
+/* A segment near the largest double keeps a finite width (thickness percent of its length);
+ * a width beyond finite numbers is refused with a sentence, not handed to the mesh. */
+TEST(huge_segments_have_finite_width_or_are_refused)
+{
+    uint64_t rng = 1;
+    lsys_turtle_config cfg = test_config(90, 8, &rng);
+    static test_record rec;
+    plugin_err e = {0};
+    CHECK_INT(test_turtle("F(1e308)", &cfg, &rec, NULL, &e), LSYS_OK);
+    CHECK_INT(rec.n_seg, 1);
+    CHECK_NEAR(rec.radius[0] / 4e306, 1, 1e-12);
+    cfg.thickness = 500;
+    CHECK_INT(test_turtle("F(1e308)", &cfg, &rec, NULL, &e), LSYS_ERR_LIMIT);
+    CHECK_STR_CONTAINS(e.msg, "wider than finite numbers");
+}
+
 TEST(unbalanced_strings_are_survived)
 {
     uint64_t rng = 1;
@@ -386,4 +402,5 @@ TEST_LIST(TEST_CASE(turn_pitch_and_roll_turn_as_in_lparser), TEST_CASE(dollar_la
           TEST_CASE(bare_size_modifiers_divide), TEST_CASE(only_f_z_and_dot_record_polygon_vertices),
           TEST_CASE(fig3_segments_halve), TEST_CASE(moves_and_modifiers),
           TEST_CASE(random_turns_are_bounded_and_repeatable), TEST_CASE(polygons_span_brackets_and_rules),
-          TEST_CASE(colours), TEST_CASE(limits_are_named), TEST_CASE(unbalanced_strings_are_survived))
+          TEST_CASE(colours), TEST_CASE(limits_are_named),
+          TEST_CASE(huge_segments_have_finite_width_or_are_refused), TEST_CASE(unbalanced_strings_are_survived))

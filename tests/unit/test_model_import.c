@@ -387,6 +387,28 @@ TEST(empty_ply_face)
     scene_free(s);
 }
 
+/* Assimp reads an ASCII PLY a line per item: a vertex whose numbers run onto the next line would
+ * make it take a face's length from a coordinate (it aborted on one), and extra numbers on a
+ * line are skipped by it, so both are refused with the line and column. */
+TEST(ply_items_hold_their_lines)
+{
+    const char *header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                         "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    char text[512];
+    snprintf(text, sizeof text, "%s0 0 0\n1 0 0\n0 1\n0\n3 0 1 2\n", header);
+    expect_error(write_text("split_item.ply", text), NULL, ERR_INPUT,
+                 "split_item.ply:12:4: item 3 of element 'vertex' ends before all its numbers");
+    snprintf(text, sizeof text, "%s0 0 0\n1 0 0 9\n0 1 0\n3 0 1 2\n", header);
+    expect_error(write_text("extra_number.ply", text), NULL, ERR_INPUT,
+                 "extra_number.ply:11:8: item 2 of element 'vertex' is followed by more numbers");
+    snprintf(text, sizeof text, "%s0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n", header);
+    scene *s = scene_new();
+    mesh *m = load(s, write_text("crlf.ply", text), 0, MODEL_UP_FILE, NULL);
+    if (m) CHECK_INT(m->nt, 1);
+    mesh_free(m);
+    scene_free(s);
+}
+
 /* A PLY named as another format: Assimp reads it as PLY when the extension's reader refuses it,
  * so it is checked as a .ply file is (here a face of no vertices, on which Assimp aborts). */
 TEST(ply_named_otherwise)
@@ -440,6 +462,7 @@ TEST(image_mime_type_without_slash)
 }
 
 TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TEST_CASE(empty_ply_face),
+          TEST_CASE(ply_items_hold_their_lines),
           TEST_CASE(image_mime_type_without_slash),
           TEST_CASE(ply_named_otherwise), TEST_CASE(texture_coordinate_not_finite), TEST_CASE(damaged_glb_chunk), TEST_CASE(y_up_files_are_turned),
           TEST_CASE(obj_with_mtl_texture_points_lines), TEST_CASE(gltf_mirrored_node_keeps_winding),

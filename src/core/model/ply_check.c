@@ -192,11 +192,12 @@ static int walk_binary(const char *path, const ply_header *h, const unsigned cha
 
 /* The next whitespace-separated token at *at as a number; -1 at the end of the data or when it
  * is not a number. *line follows the newlines passed. */
-static int ascii_number(const char *d, size_t size, size_t *at, uint32_t *line, double *v)
+/* The next number on the current line into *v: 0; -1 at the line's end (or the file's); -2
+ * when the word there is not a number. */
+static int ascii_number(const char *d, size_t size, size_t *at, double *v)
 {
-    while (*at < size && (d[*at] == ' ' || d[*at] == '\t' || d[*at] == '\r' || d[*at] == '\n'))
-        *line += d[(*at)++] == '\n';
-    if (*at >= size) return -1;
+    while (*at < size && (d[*at] == ' ' || d[*at] == '\t' || d[*at] == '\r')) (*at)++;
+    if (*at >= size || d[*at] == '\n') return -1;
     char tok[64];
     size_t n = 0;
     while (*at < size && !(d[*at] == ' ' || d[*at] == '\t' || d[*at] == '\r' || d[*at] == '\n')) {
@@ -209,32 +210,59 @@ static int ascii_number(const char *d, size_t size, size_t *at, uint32_t *line, 
     return *end || end == tok ? -2 : 0;
 }
 
+/* The numbers of one item, all on its line; 0, or -1 when the line ends early, -2 on a word that
+ * is not a number (or a list length that is not a whole number), -3 on a face of no vertices. */
+static int ascii_item(const ply_element *el, const char *d, size_t size, size_t *at)
+{
+    for (int k = 0; k < el->n_props; k++) {
+        const ply_property *p = &el->props[k];
+        double v;
+        int rc = ascii_number(d, size, at, &v);
+        if (rc) return rc;
+        if (!p->list) continue;
+        if (v < 0 || v != (double)(uint64_t)v || v > 1e9) return -2;
+        if (p->face_indices && v == 0) return -3;
+        double index;
+        for (uint64_t j = 0, n = (uint64_t)v; j < n; j++)
+            if ((rc = ascii_number(d, size, at, &index))) return rc;
+    }
+    return 0;
+}
+
+/* Assimp reads an ASCII body a line per item, so an item that runs onto the next line, or a line
+ * with more numbers than its item, would be read out of step (a face's length taken from a
+ * vertex's coordinate): each item must hold exactly its own line. */
 static int walk_ascii(const char *path, const ply_header *h, const char *d, size_t size, err_buf *err)
 {
     size_t at = h->body;
     uint32_t line = h->line;
     for (int e = 0; e < h->n_elements; e++) {
         const ply_element *el = &h->elements[e];
-        for (uint64_t i = 0; i < el->count; i++) {
-            for (int k = 0; k < el->n_props; k++) {
-                const ply_property *p = &el->props[k];
-                double v;
-                int rc = ascii_number(d, size, &at, &line, &v);
-                double n = p->list ? v : 0;
-                if (!rc && p->list && (n < 0 || n != (double)(uint64_t)n || n > 1e9)) rc = -2;
-                if (!rc && p->face_indices && n == 0) /* Assimp aborts on a face of no vertices */
-                    return err_at(err, ERR_INPUT, path, line, 1, "face %llu lists no vertices; a face lists "
-                                  "at least one (three for a triangle)", (unsigned long long)i + 1);
-                for (uint64_t j = 0; !rc && j < (uint64_t)n; j++) rc = ascii_number(d, size, &at, &line, &v);
-                if (rc == -1)
-                    return err_at(err, ERR_INPUT, path, line, 1, "the file ends inside element '%s' (item "
-                                  "%llu of %llu); the file is cut short", el->name,
-                                  (unsigned long long)i + 1, (unsigned long long)el->count);
-                if (rc)
-                    return err_at(err, ERR_INPUT, path, line, 1, "element '%s' item %llu holds something "
-                                  "that is not a number%s", el->name, (unsigned long long)i + 1,
-                                  p->list ? " (or a list length that is not a whole number)" : "");
-            }
+        for (uint64_t i = 0; i < el->count; i++, line++) {
+            unsigned long long item = (unsigned long long)i + 1, count = (unsigned long long)el->count;
+            if (at >= size)
+                return err_at(err, ERR_INPUT, path, line, 1, "the file ends before item %llu of %llu of "
+                              "element '%s'; the file is cut short", item, count, el->name);
+            size_t from = at;
+            int rc = ascii_item(el, d, size, &at);
+            double extra;
+            if (!rc && ascii_number(d, size, &at, &extra) != -1) rc = -4;
+            uint32_t col = (uint32_t)(at - from) + 1;
+            if (rc == -1)
+                return err_at(err, ERR_INPUT, path, line, col, "item %llu of element '%s' ends before all its "
+                              "numbers; each item of an ASCII PLY holds one whole line", item, el->name);
+            if (rc == -2)
+                return err_at(err, ERR_INPUT, path, line, col, "item %llu of element '%s' holds something "
+                              "that is not a number (or a list length that is not a whole number)", item,
+                              el->name);
+            if (rc == -3)
+                return err_at(err, ERR_INPUT, path, line, 1, "face %llu lists no vertices; a face lists at "
+                              "least one (three for a triangle)", item);
+            if (rc == -4)
+                return err_at(err, ERR_INPUT, path, line, col, "item %llu of element '%s' is followed by more "
+                              "numbers on its line; each item of an ASCII PLY holds one whole line", item,
+                              el->name);
+            if (at < size) at++; /* past the line's '\n' */
         }
     }
     return 0;

@@ -1,7 +1,8 @@
 /* ply_check.h — checks that a PLY file is whole before Assimp reads it: Assimp 5.2's PLY reader
  * loops forever, aborts or crashes on a header without end_header or a body shorter than the
  * header declares, and aborts on a face that lists no vertices, so model_import asks this first. It reads the header and walks the body
- * (binary: every scalar and list; ASCII: every number) without keeping any of it.
+ * (binary: every scalar and list; ASCII: every number, each item on a line of its own as Assimp
+ * reads it) without keeping any of it.
  *
  * Nothing is allocated past the call; the file is read into memory for the walk and freed. */
 #ifndef SYLVA_PLY_CHECK_H

@@ -175,9 +175,10 @@ static uint64_t sim_fingerprint(const eco_sim *s)
     return h;
 }
 
-int eco_sim_new(const eco_random *rnd, const sylva_params *params, const eco_config *cfg, const char *only,
+int eco_sim_new(const eco_random *rnd, plugin_params *reader, const eco_config *cfg, const char *only,
                 const sylva_ecology_request *req, eco_sim **out, plugin_err *err)
 {
+    const sylva_params *params = reader->block;
     *out = NULL;
     if (!req->terrain) return plugin_fail(err, SYLVA_ERR_PARAM, "the ecology request carries no terrain");
     eco_sim *s = calloc(1, sizeof *s);
@@ -216,7 +217,8 @@ int eco_sim_new(const eco_random *rnd, const sylva_params *params, const eco_con
             rc = plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for the species' names");
             goto fail;
         }
-        rc = eco_species_read(info->ecology, name, &s->species[j], err);
+        plugin_params block = plugin_params_in(reader, info->ecology);
+        rc = eco_species_read(&block, name, &s->species[j], err);
         if (rc) goto fail;
         s->model_height[j] = info->model_height > 0 && isfinite(info->model_height) ? info->model_height : 1.0;
         if (s->species[j].t_f > max_t_f) max_t_f = s->species[j].t_f;

@@ -23,6 +23,7 @@
 #include <stdint.h>
 
 #include "plugin_err.h"
+#include "plugin_params.h"
 #include "eco_species.h"
 #include "eco_terrain.h"
 #include "sylva/plugin.h"
@@ -131,9 +132,11 @@ typedef struct eco_sim {
 
 /* Starts a run at year 0: copies the terrain, computes the factors, reads each species block
  * and the growth area. `only` is a list of species names separated by commas or spaces (NULL or
- * empty: every species of the request); `params` is the plugin's block (for locating
- * messages; may be NULL). Returns SYLVA_OK or a negative status with err set. */
-int eco_sim_new(const eco_random *rnd, const sylva_params *params, const eco_config *cfg, const char *only,
+ * empty: every species of the request); `reader` reads the plugin's block (its block locates
+ * messages and may be NULL), and each species block through a reader nested in it. Returns
+ * SYLVA_OK; reader->status when the code read a name a schema lacks (the host has the
+ * sentence); or another negative status with err set. */
+int eco_sim_new(const eco_random *rnd, plugin_params *reader, const eco_config *cfg, const char *only,
                 const sylva_ecology_request *req, eco_sim **out, plugin_err *err);
 void eco_sim_free(eco_sim *s);
 

@@ -69,33 +69,33 @@ static const struct {
     {"env_death", offsetof(eco_species, env_death)},
 };
 
-/* 1 when the scene gave `key` in the block. */
-static int given(const sylva_params *block, const char *key)
+/* 1 when the scene gave `key` in the block (none: no block). */
+static int given(plugin_params *reader, const char *key)
 {
-    const sylva_value *v = block ? sylva_param(block, key) : NULL;
-    return v && v->is_set;
+    return reader->block && plugin_param_given(reader, key);
 }
 
-int eco_species_read(const sylva_params *block, const char *name, eco_species *out, plugin_err *err)
+int eco_species_read(plugin_params *reader, const char *name, eco_species *out, plugin_err *err)
 {
     eco_profile prof = ECO_PROFILE_GENERIC;
-    if (given(block, "profile")) {
-        prof = (eco_profile)sylva_param(block, "profile")->i;
+    if (given(reader, "profile")) {
+        prof = (eco_profile)plugin_param_int(reader, "profile");
     } else {
         for (int k = 0; k < ECO_N_PROFILES; k++)
             if (name && !strcmp(name, eco_profile_names[k])) prof = (eco_profile)k;
     }
     *out = eco_profiles[prof];
-    for (size_t f = 0; block && f < sizeof eco_species_fields / sizeof eco_species_fields[0]; f++) {
-        if (given(block, eco_species_fields[f].key))
-            *(double *)((char *)out + eco_species_fields[f].offset) = sylva_param(block, eco_species_fields[f].key)->r;
+    for (size_t f = 0; reader->block && f < sizeof eco_species_fields / sizeof eco_species_fields[0]; f++) {
+        if (given(reader, eco_species_fields[f].key))
+            *(double *)((char *)out + eco_species_fields[f].offset) = plugin_param_real(reader, eco_species_fields[f].key);
     }
+    if (reader->status) return reader->status;
     if (!(out->t_m < out->t_a))
-        return plugin_fail_param(err, block, given(block, "t_m") ? "t_m" : "t_a",
+        return plugin_fail_param(err, reader->block, given(reader, "t_m") ? "t_m" : "t_a",
                                  "species '%s': t_m = %g years is not before t_a = %g years; a plant matures "
                                  "(t_m) before it stops growing (t_a), so t_m < t_a", name, out->t_m, out->t_a);
     if (!(out->t_a <= out->t_f))
-        return plugin_fail_param(err, block, given(block, "t_a") ? "t_a" : "t_f",
+        return plugin_fail_param(err, reader->block, given(reader, "t_a") ? "t_a" : "t_f",
                                  "species '%s': t_a = %g years is after t_f = %g years; a plant stops growing "
                                  "(t_a) no later than it dies of age (t_f), so t_a <= t_f", name, out->t_a,
                                  out->t_f);

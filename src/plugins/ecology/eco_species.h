@@ -14,6 +14,7 @@
 #include <stdint.h>
 
 #include "plugin_err.h"
+#include "plugin_params.h"
 #include "sylva/plugin.h"
 
 /* Favourability terms of the vigour (4.20), indexed like the factor maps. The fifth, slope, has
@@ -71,10 +72,11 @@ typedef enum eco_profile {
 extern const char *const eco_profile_names[ECO_N_PROFILES + 1]; /* NULL-terminated */
 extern const eco_species eco_profiles[ECO_N_PROFILES];
 
-/* Reads a species block validated against eco_species_schema (eco_schema.h). The profile is
- * the block's `profile` when given, else the profile named like the species (`name`), else
- * generic. Returns SYLVA_OK, or SYLVA_ERR_PARAM with err naming the key and the rule (t_m
- * before t_a, t_a at most t_f). */
-int eco_species_read(const sylva_params *block, const char *name, eco_species *out, plugin_err *err);
+/* Reads a species block validated against eco_species_schema (eco_schema.h) through `reader`
+ * (its block NULL: the species has none). The profile is the block's `profile` when given,
+ * else the profile named like the species (`name`), else generic. Returns SYLVA_OK;
+ * reader->status when the code read a name the schema lacks; or SYLVA_ERR_PARAM with err naming
+ * the key and the rule (t_m before t_a, t_a at most t_f). */
+int eco_species_read(plugin_params *reader, const char *name, eco_species *out, plugin_err *err);
 
 #endif

@@ -17,6 +17,7 @@
 #include "eco_schema.h"
 #include "eco_sim.h"
 #include "plugin_host.h"
+#include "plugin_params.h"
 #include "sylva/plugin.h"
 #include "sylva/ecology_ext.h"
 
@@ -55,8 +56,9 @@ static int run_start(const eco_plugin_state *st, const sylva_host_api *api, sylv
     plugin_host_ref h = {api, host};
     eco_random rnd = host_random(&h);
     plugin_err err = {0};
-    int rc = eco_sim_new(&rnd, &st->located, &st->cfg, st->only, req, out, &err);
-    return rc ? plugin_report(api, host, &err) : SYLVA_OK;
+    plugin_params located = plugin_params_open(api, host, &st->located);
+    int rc = eco_sim_new(&rnd, &located, &st->cfg, st->only, req, out, &err);
+    return rc ? plugin_params_report(&located, &err) : SYLVA_OK;
 }
 
 /* Simulates `years` more years with progress reports. */
@@ -105,53 +107,56 @@ static int eco_create(const sylva_host_api *api, sylva_host *host, const sylva_p
         api->error(host, "out of memory reading the ecology parameters");
         return SYLVA_ERR_NOMEM;
     }
+    plugin_params r = plugin_params_open(api, host, params);
     eco_config *c = &st->cfg;
     eco_factor_params *f = &c->factors;
-    f->patches = (uint32_t)sylva_param_int(params, "patches");
-    f->water_altitude = sylva_param_real(params, "water_altitude");
-    f->rain = sylva_param_real(params, "rain");
-    f->water_humidity = sylva_param_real(params, "water_humidity");
-    f->runoff = sylva_param_real(params, "runoff");
-    f->humidity_blur = (uint32_t)sylva_param_int(params, "humidity_blur");
-    f->wind_azimuth_deg = sylva_param_real(params, "wind_azimuth");
-    f->wind_samples = (uint32_t)sylva_param_int(params, "wind_samples");
-    f->shelter_deg = sylva_param_real(params, "shelter_angle");
-    f->latitude_deg = sylva_param_real(params, "latitude");
-    f->sun_samples = (uint32_t)sylva_param_int(params, "sun_samples");
-    f->ambient = sylva_param_real(params, "ambient");
-    int64_t threads = sylva_param_int(params, "threads");
+    f->patches = (uint32_t)plugin_param_int(&r, "patches");
+    f->water_altitude = plugin_param_real(&r, "water_altitude");
+    f->rain = plugin_param_real(&r, "rain");
+    f->water_humidity = plugin_param_real(&r, "water_humidity");
+    f->runoff = plugin_param_real(&r, "runoff");
+    f->humidity_blur = (uint32_t)plugin_param_int(&r, "humidity_blur");
+    f->wind_azimuth_deg = plugin_param_real(&r, "wind_azimuth");
+    f->wind_samples = (uint32_t)plugin_param_int(&r, "wind_samples");
+    f->shelter_deg = plugin_param_real(&r, "shelter_angle");
+    f->latitude_deg = plugin_param_real(&r, "latitude");
+    f->sun_samples = (uint32_t)plugin_param_int(&r, "sun_samples");
+    f->ambient = plugin_param_real(&r, "ambient");
+    int64_t threads = plugin_param_int(&r, "threads");
     /* The scene's own count, else the run's (--threads), else one per processor. */
     c->threads = threads > 0                     ? (unsigned)threads
                  : SYLVA_API_HAS(api, threads) ? api->threads(host)
                                                : plugin_threads_online();
     f->threads = c->threads;
-    c->years = (uint32_t)sylva_param_int(params, "years");
-    c->max_plants = (uint64_t)sylva_param_int(params, "max_plants");
-    c->min_height = sylva_param_real(params, "min_height");
-    c->edge_fade = sylva_param_real(params, "edge_fade");
-    int rc = SYLVA_OK;
+    c->years = (uint32_t)plugin_param_int(&r, "years");
+    c->max_plants = (uint64_t)plugin_param_int(&r, "max_plants");
+    c->min_height = plugin_param_real(&r, "min_height");
+    c->edge_fade = plugin_param_real(&r, "edge_fade");
+    int rc = r.status; /* a name the schema lacks: the host has the sentence */
+    if (rc) goto fail;
     if (f->sun_samples % 2 == 0) {
         rc = api->param_error(host, params, "sun_samples", "sun_samples = %u is even; give an odd number so that "
                               "one sample stands at noon (3, 5, 7, ...)", f->sun_samples);
         goto fail;
     }
     c->area[0] = -1;
-    const sylva_value *area = sylva_param(params, "growth_area");
+    const sylva_value *area = plugin_param(&r, "growth_area");
     if ((rc = whole_numbers(api, host, params, "growth_area", area, 4, c->area))) goto fail;
     if (!area->len) c->area[0] = -1;
     int64_t seeds[ECO_N_SEEDED_STREAMS] = {0};
-    if ((rc = whole_numbers(api, host, params, "stream_seeds", sylva_param(params, "stream_seeds"),
+    if ((rc = whole_numbers(api, host, params, "stream_seeds", plugin_param(&r, "stream_seeds"),
                             ECO_N_SEEDED_STREAMS, seeds)))
         goto fail;
     for (int i = 0; i < ECO_N_SEEDED_STREAMS; i++) c->stream_seeds[i] = (uint64_t)seeds[i];
-    const sylva_value *mask = sylva_param(params, "growth_mask");
+    const sylva_value *mask = plugin_param(&r, "growth_mask");
     if (mask->is_set && mask->rows && mask->cols) {
         size_t n = (size_t)mask->rows * mask->cols;
         if (!(st->mask = malloc(n * sizeof *st->mask))) goto nomem;
         memcpy(st->mask, mask->list, n * sizeof *st->mask);
         c->mask = st->mask, c->mask_rows = mask->rows, c->mask_cols = mask->cols;
     }
-    const char *only = sylva_param_str(params, "species");
+    const char *only = plugin_param_str(&r, "species");
+    if ((rc = r.status)) goto fail;
     if (only && !(st->only = strdup(only))) goto nomem;
     if (params->file && !(st->file = strdup(params->file))) goto nomem;
     if (!(st->where = calloc(params->n ? params->n : 1, sizeof *st->where))) goto nomem;

@@ -29,6 +29,7 @@
 #include "surface_classes.h"
 #include "sylva/plugin.h"
 #include "ifs_schema.h"
+#include "plugin_params.h"
 
 /* The refinement's detail is called out when its RMS passes this factor times what the DTM's
  * own roughness continues to, plus this many metres. */
@@ -91,18 +92,13 @@ static const char *const classes_only[] = {"snow_line", "scree_line", "snow_alti
                                            "dry_grass_albedo", "scree_albedo", "rock_albedo",
                                            "snow_albedo", "water_albedo"};
 
-static int is_set(const sylva_params *p, const char *name)
-{
-    const sylva_value *v = sylva_param(p, name);
-    return v && v->is_set;
-}
+static int is_set(plugin_params *r, const char *name) { return plugin_param_given(r, name); }
 
 /* The output grid for an nx x ny DTM: output_nodes, or (N - 1) refine + 1 along each axis. */
-static void output_size(const sylva_params *params, uint32_t nx, uint32_t ny, uint64_t *nxo,
-                        uint64_t *nyo)
+static void output_size(plugin_params *r, uint32_t nx, uint32_t ny, uint64_t *nxo, uint64_t *nyo)
 {
-    const sylva_value *out = sylva_param(params, "output_nodes");
-    uint64_t refine = (uint64_t)sylva_param_int(params, "refine");
+    const sylva_value *out = plugin_param(r, "output_nodes");
+    uint64_t refine = (uint64_t)plugin_param_int(r, "refine");
     *nxo = out->is_set ? (uint64_t)out->list[0] : (nx - 1) * refine + 1;
     *nyo = out->is_set ? (uint64_t)out->list[1] : (ny - 1) * refine + 1;
 }
@@ -111,14 +107,14 @@ static void output_size(const sylva_params *params, uint32_t nx, uint32_t ny, ui
  * uniformly: with refine >= 2, when detail_radius is given, or when the uniform grid would pass
  * TERRAIN_IFS_UNIFORM_NODES (then the finest window is TERRAIN_IFS_LOD_CELLS output cells
  * across its half-width). output_nodes always refines uniformly. */
-static void lod_plan(const sylva_params *params, const ifs_dtm *d, int *lod, uint32_t *refine,
+static void lod_plan(plugin_params *params, const ifs_dtm *d, int *lod, uint32_t *refine,
                      double *radius_cells)
 {
-    uint64_t r = (uint64_t)sylva_param_int(params, "refine");
-    double radius = sylva_param_real(params, "detail_radius");
+    uint64_t r = (uint64_t)plugin_param_int(params, "refine");
+    double radius = plugin_param_real(params, "detail_radius");
     uint64_t uniform = ((d->nx - 1) * r + 1) * ((d->ny - 1) * r + 1);
     *refine = (uint32_t)r;
-    *lod = !sylva_param(params, "output_nodes")->is_set && r >= 2 &&
+    *lod = !plugin_param_given(params, "output_nodes") && r >= 2 &&
            (radius > 0 || uniform > TERRAIN_IFS_UNIFORM_NODES);
     double spacing = d->dx < d->dy ? d->dx : d->dy;
     *radius_cells = radius > 0 && spacing > 0 ? radius / spacing : (double)TERRAIN_IFS_LOD_CELLS / r;
@@ -127,17 +123,15 @@ static void lod_plan(const sylva_params *params, const ifs_dtm *d, int *lod, uin
 /* What the memory check needs beside the DTM's size. */
 /* The worker threads of a run: the scene's own count, else the run's (--threads), else one per
  * processor; at most PLUGIN_MAX_THREADS. */
-static uint32_t run_threads(const sylva_host_api *api, sylva_host *host, const sylva_params *params)
+static uint32_t run_threads(plugin_params *r)
 {
-    uint32_t threads = (uint32_t)sylva_param_int(params, "threads");
-    if (!threads) threads = SYLVA_API_HAS(api, threads) ? api->threads(host) : plugin_threads_online();
+    uint32_t threads = (uint32_t)plugin_param_int(r, "threads");
+    if (!threads) threads = SYLVA_API_HAS(r->api, threads) ? r->api->threads(r->host) : plugin_threads_online();
     return threads < PLUGIN_MAX_THREADS ? threads : PLUGIN_MAX_THREADS;
 }
 
 typedef struct memory_ask {
-    const sylva_host_api *api;
-    sylva_host *host;
-    const sylva_params *params;
+    plugin_params *params;       /* the plugin's block, through the host of the call */
     const char *source;          /* the DTM, for the sentence */
 } memory_ask;
 
@@ -149,7 +143,8 @@ typedef struct memory_ask {
 static int memory_fits(void *ctx, uint32_t nx, uint32_t ny, plugin_err *err)
 {
     const memory_ask *m = ctx;
-    if (!SYLVA_API_HAS(m->api, memory_check)) return SYLVA_OK;
+    const sylva_host_api *api = m->params->api;
+    if (!SYLVA_API_HAS(api, memory_check)) return SYLVA_OK;
     uint64_t nxo, nyo;
     output_size(m->params, nx, ny, &nxo, &nyo);
     int lod;
@@ -164,14 +159,13 @@ static int memory_fits(void *ctx, uint32_t nx, uint32_t ny, plugin_err *err)
     }
     if (nxo > 65536 || nyo > 65536) return SYLVA_OK; /* refused with its own sentence later */
     uint64_t out = nxo * nyo, per_out = 1;
-    if (sylva_param_str(m->params, "humidity_map")) per_out += 4;
-    if (sylva_param_int(m->params, "method") == 0) {
-        per_out += 16 * (uint64_t)run_threads(m->api, m->host, m->params);
-    }
+    if (plugin_param_str(m->params, "humidity_map")) per_out += 4;
+    if (plugin_param_int(m->params, "method") == 0) per_out += 16 * (uint64_t)run_threads(m->params);
+    if (m->params->status) return m->params->status; /* the host has the sentence */
     char what[600];
     snprintf(what, sizeof what, "terrain_ifs: the %u x %u node DTM %s refined to %llu x %llu "
              "nodes", nx, ny, m->source, (unsigned long long)nxo, (unsigned long long)nyo);
-    if (m->api->memory_check(m->host, (uint64_t)nx * ny * IFS_DTM_BYTES_PER_NODE + out * per_out,
+    if (api->memory_check(m->params->host, (uint64_t)nx * ny * IFS_DTM_BYTES_PER_NODE + out * per_out,
                              out, what) == SYLVA_OK)
         return SYLVA_OK;
     /* the host's sentence is set; the plugin's error carries the status only */
@@ -180,28 +174,32 @@ static int memory_fits(void *ctx, uint32_t nx, uint32_t ny, plugin_err *err)
 }
 
 /* Loads the DTM from the one source the scene names. */
-static int load_dtm(const sylva_host_api *api, sylva_host *host, const sylva_params *params,
-                    terrain_ifs_state *s, const char *target_wkt)
+static int load_dtm(plugin_params *r, terrain_ifs_state *s, const char *target_wkt)
 {
-    const sylva_value *dtm = sylva_param(params, "dtm"), *heights = sylva_param(params, "heights");
-    const sylva_value *cell = sylva_param(params, "cell_size");
+    const sylva_host_api *api = r->api;
+    sylva_host *host = r->host;
+    const sylva_params *params = r->block;
+    const sylva_value *dtm = plugin_param(r, "dtm"), *heights = plugin_param(r, "heights");
+    const sylva_value *cell = plugin_param(r, "cell_size");
+    if (r->status) return r->status; /* the host has the sentence */
     double cs[2] = {0, 0};
     if (cell->len) cs[0] = cell->list[0], cs[1] = cell->list[cell->len > 1 ? 1 : 0];
     plugin_err err = {0};
     int rc;
     if (dtm->s) {
-        const sylva_value *crop = sylva_param(params, "crop");
-        const sylva_value *range = sylva_param(params, "height_range");
-        ifs_dtm_file_options o = {.band = (uint32_t)sylva_param_int(params, "band"),
+        const sylva_value *crop = plugin_param(r, "crop");
+        const sylva_value *range = plugin_param(r, "height_range");
+        ifs_dtm_file_options o = {.band = (uint32_t)plugin_param_int(r, "band"),
                                   .has_crop = crop->len == 4,
-                                  .step = (uint32_t)sylva_param_int(params, "step"),
-                                  .units = (ifs_units)sylva_param_int(params, "units"),
+                                  .step = (uint32_t)plugin_param_int(r, "step"),
+                                  .units = (ifs_units)plugin_param_int(r, "units"),
                                   .cell_size = {cs[0], cs[1]},
                                   .height_range = {range->list[0], range->list[1]}};
         char quoted[520];
         snprintf(quoted, sizeof quoted, "'%s'", dtm->s);
-        memory_ask ask = {api, host, params, quoted};
+        memory_ask ask = {r, quoted};
         o.check_size = memory_fits, o.check_ctx = &ask, o.target_wkt = target_wkt;
+        if (r->status) return r->status; /* the host has the sentence */
         if (!(range->list[0] < range->list[1]))
             return api->param_error(host, params, "height_range", "height_range [%g, %g] is "
                                     "empty; give [low, high] with low < high", range->list[0],
@@ -248,15 +246,16 @@ static int load_dtm(const sylva_host_api *api, sylva_host *host, const sylva_par
         snprintf(s->source, sizeof s->source, "inline heights");
         return SYLVA_OK;
     }
-    const sylva_params *g = sylva_param(params, "generated")->group;
-    const sylva_value *nodes = sylva_param(g, "nodes");
+    plugin_params g = plugin_params_in(r, plugin_param(r, "generated")->group);
+    const sylva_value *nodes = plugin_param(&g, "nodes");
+    ifs_dtm_generator gen = {.dx = dx, .dy = dy, .relief = plugin_param_real(&g, "relief"),
+                             .smoothness = plugin_param_real(&g, "smoothness")};
+    if (r->status) return r->status; /* the host has the sentence */
     for (uint32_t k = 0; k < 2; k++)
         if (!is_whole(nodes->list[k]))
             return api->param_error(host, params, "generated", "generated.nodes[%u] is %g; node "
                                     "counts are whole numbers", k, nodes->list[k]);
-    ifs_dtm_generator gen = {.nx = (uint32_t)nodes->list[0], .ny = (uint32_t)nodes->list[1],
-                             .dx = dx, .dy = dy, .relief = sylva_param_real(g, "relief"),
-                             .smoothness = sylva_param_real(g, "smoothness")};
+    gen.nx = (uint32_t)nodes->list[0], gen.ny = (uint32_t)nodes->list[1];
     sylva_rng rng;
     api->rng_init(host, &rng, "terrain_ifs.dtm", 0);
     if ((rc = ifs_dtm_generate(&gen, api->rng_u64, &rng, &s->dtm, &err))) {
@@ -268,209 +267,210 @@ static int load_dtm(const sylva_host_api *api, sylva_host *host, const sylva_par
 }
 
 /* A per-cell field of the parameters, after checking it matches the DTM's cells. */
-static int cell_field(const sylva_host_api *api, sylva_host *host, const sylva_params *params,
-                      const char *name, const ifs_dtm *d, const double **out)
+static int cell_field(plugin_params *r, const char *name, const ifs_dtm *d, const double **out)
 {
-    const sylva_value *v = api->param(host, params, name); /* NULL: not in the schema (message set) */
+    const sylva_value *v = plugin_param(r, name);
     *out = NULL;
-    if (!v) return SYLVA_ERR_INTERNAL;
-    if (!v->is_set) return SYLVA_OK;
+    if (r->status || !v->is_set) return r->status;
     if (v->rows != d->ny - 1 || v->cols != d->nx - 1)
-        return api->param_error(host, params, name, "%s has %u rows of %u values; the DTM has %u "
-                                "rows of %u cells (one value per cell, rows from south to north)",
-                                name, v->rows, v->cols, d->ny - 1, d->nx - 1);
+        return plugin_params_error(r, name, "%s has %u rows of %u values; the DTM has %u rows of %u "
+                                   "cells (one value per cell, rows from south to north)",
+                                   name, v->rows, v->cols, d->ny - 1, d->nx - 1);
     *out = v->list; /* valid until destroy(): the host's promise */
     return SYLVA_OK;
 }
 
 /* The relations between parameters that the schema cannot express. */
-static int check_relations(const sylva_host_api *api, sylva_host *host, const sylva_params *params)
+static int check_relations(plugin_params *r)
 {
-    int has_file = sylva_param_str(params, "dtm") != NULL, has_heights = is_set(params, "heights");
+    int has_file = plugin_param_str(r, "dtm") != NULL, has_heights = is_set(r, "heights");
     if (has_file && has_heights)
-        return api->param_error(host, params, "heights", "give dtm or heights, not both");
-    if ((has_file || has_heights) && is_set(params, "generated"))
-        return api->param_error(host, params, "generated", "generated makes a DTM when neither "
-                                "dtm nor heights is given; remove it or them");
+        return plugin_params_error(r, "heights", "give dtm or heights, not both");
+    if ((has_file || has_heights) && is_set(r, "generated"))
+        return plugin_params_error(r, "generated", "generated makes a DTM when neither "
+                                   "dtm nor heights is given; remove it or them");
     for (size_t k = 0; !has_file && k < sizeof file_only / sizeof file_only[0]; k++)
-        if (is_set(params, file_only[k]))
-            return api->param_error(host, params, file_only[k], "%s applies to a dtm file; this "
-                                    "terrain has none", file_only[k]);
-    if (is_set(params, "alpha") && is_set(params, "alpha_field"))
-        return api->param_error(host, params, "alpha_field", "give alpha or alpha_field, not both");
-    if (is_set(params, "detail") && (is_set(params, "alpha") || is_set(params, "alpha_field")))
-        return api->param_error(host, params, "detail", "give detail (metres) or alpha, not both: "
-                                "detail chooses alpha");
-    if (is_set(params, "refine") && is_set(params, "output_nodes"))
-        return api->param_error(host, params, "output_nodes", "give refine or output_nodes, not "
-                                "both");
-    int random = sylva_param_int(params, "method") == 0;
-    if (!random && (is_set(params, "iterations") || is_set(params, "start")))
-        return api->param_error(host, params, is_set(params, "iterations") ? "iterations" : "start",
-                                "iterations and start belong to method: random; this terrain is "
-                                "evaluated deterministically (the default): add method: random, "
-                                "or remove %s", is_set(params, "iterations") ? "iterations" : "start");
-    if (sylva_param_int(params, "surface") == 1)
+        if (is_set(r, file_only[k]))
+            return plugin_params_error(r, file_only[k], "%s applies to a dtm file; this "
+                                       "terrain has none", file_only[k]);
+    if (is_set(r, "alpha") && is_set(r, "alpha_field"))
+        return plugin_params_error(r, "alpha_field", "give alpha or alpha_field, not both");
+    if (is_set(r, "detail") && (is_set(r, "alpha") || is_set(r, "alpha_field")))
+        return plugin_params_error(r, "detail", "give detail (metres) or alpha, not both: "
+                                   "detail chooses alpha");
+    if (is_set(r, "refine") && is_set(r, "output_nodes"))
+        return plugin_params_error(r, "output_nodes", "give refine or output_nodes, not "
+                                   "both");
+    int random = plugin_param_int(r, "method") == 0;
+    if (!random && (is_set(r, "iterations") || is_set(r, "start")))
+        return plugin_params_error(r, is_set(r, "iterations") ? "iterations" : "start",
+                                   "iterations and start belong to method: random; this terrain is "
+                                   "evaluated deterministically (the default): add method: random, "
+                                   "or remove %s", is_set(r, "iterations") ? "iterations" : "start");
+    if (plugin_param_int(r, "surface") == 1)
         for (size_t k = 0; k < sizeof classes_only / sizeof classes_only[0]; k++)
-            if (is_set(params, classes_only[k]))
-                return api->param_error(host, params, classes_only[k], "%s belongs to surface: "
-                                        "classes; with surface: scene the scene's terrain "
-                                        "material covers the ground", classes_only[k]);
-    const sylva_value *cell = sylva_param(params, "cell_size");
+            if (is_set(r, classes_only[k]))
+                return plugin_params_error(r, classes_only[k], "%s belongs to surface: "
+                                           "classes; with surface: scene the scene's terrain "
+                                           "material covers the ground", classes_only[k]);
+    const sylva_value *cell = plugin_param(r, "cell_size");
     if (cell->is_set && cell->len == 0)
-        return api->param_error(host, params, "cell_size", "cell_size is empty; give [dx, dy] or "
-                                "[d] in metres, or leave it out");
-    const sylva_value *out = sylva_param(params, "output_nodes");
+        return plugin_params_error(r, "cell_size", "cell_size is empty; give [dx, dy] or "
+                                   "[d] in metres, or leave it out");
+    const sylva_value *out = plugin_param(r, "output_nodes");
     if (out->is_set && (out->len != 2 || !is_whole(out->list[0]) || !is_whole(out->list[1])))
-        return api->param_error(host, params, "output_nodes", "output_nodes must be two whole "
-                                "numbers [nx, ny]");
-    const sylva_value *start = sylva_param(params, "start");
+        return plugin_params_error(r, "output_nodes", "output_nodes must be two whole "
+                                   "numbers [nx, ny]");
+    const sylva_value *start = plugin_param(r, "start");
     if (start->is_set && start->len != 3)
-        return api->param_error(host, params, "start", "start has %u numbers; give [x, y, z] in "
-                                "metres, or leave it out for the DTM's origin", start->len);
-    if (sylva_param_real(params, "scree_slope") > sylva_param_real(params, "rock_slope"))
-        return api->param_error(host, params, "scree_slope", "scree_slope %g exceeds rock_slope "
-                                "%g; scree lies on gentler slopes than rock",
-                                sylva_param_real(params, "scree_slope"),
-                                sylva_param_real(params, "rock_slope"));
+        return plugin_params_error(r, "start", "start has %u numbers; give [x, y, z] in "
+                                   "metres, or leave it out for the DTM's origin", start->len);
+    if (plugin_param_real(r, "scree_slope") > plugin_param_real(r, "rock_slope"))
+        return plugin_params_error(r, "scree_slope", "scree_slope %g exceeds rock_slope "
+                                   "%g; scree lies on gentler slopes than rock",
+                                   plugin_param_real(r, "scree_slope"),
+                                   plugin_param_real(r, "rock_slope"));
     static const char *const older[3][2] = {{"snow_altitude", "snow_line"},
                                              {"scree_altitude", "scree_line"},
                                              {"water_altitude", "water_level"}};
     for (int k = 0; k < 3; k++)
-        if (is_set(params, older[k][0]) && is_set(params, older[k][1]))
-            return api->param_error(host, params, older[k][1], "give %s (metres) or %s (a fraction "
-                                    "of the DTM's height range), not both", older[k][0],
-                                    older[k][1]);
-    if (is_set(params, "scree_line") && is_set(params, "snow_line") &&
-        sylva_param_real(params, "scree_line") > sylva_param_real(params, "snow_line"))
-        return api->param_error(host, params, "scree_line", "scree_line %g is above snow_line %g; "
-                                "scree lies below the snow", sylva_param_real(params, "scree_line"),
-                                sylva_param_real(params, "snow_line"));
-    if (!is_set(params, "scree_line") && !is_set(params, "snow_line") &&
-        sylva_param_real(params, "scree_altitude") > sylva_param_real(params, "snow_altitude"))
-        return api->param_error(host, params, "scree_altitude", "scree_altitude %g m is above "
-                                "snow_altitude %g m; scree lies below the snow",
-                                sylva_param_real(params, "scree_altitude"),
-                                sylva_param_real(params, "snow_altitude"));
+        if (is_set(r, older[k][0]) && is_set(r, older[k][1]))
+            return plugin_params_error(r, older[k][1], "give %s (metres) or %s (a fraction "
+                                       "of the DTM's height range), not both", older[k][0],
+                                       older[k][1]);
+    if (is_set(r, "scree_line") && is_set(r, "snow_line") &&
+        plugin_param_real(r, "scree_line") > plugin_param_real(r, "snow_line"))
+        return plugin_params_error(r, "scree_line", "scree_line %g is above snow_line %g; "
+                                   "scree lies below the snow", plugin_param_real(r, "scree_line"),
+                                   plugin_param_real(r, "snow_line"));
+    if (!is_set(r, "scree_line") && !is_set(r, "snow_line") &&
+        plugin_param_real(r, "scree_altitude") > plugin_param_real(r, "snow_altitude"))
+        return plugin_params_error(r, "scree_altitude", "scree_altitude %g m is above "
+                                   "snow_altitude %g m; scree lies below the snow",
+                                   plugin_param_real(r, "scree_altitude"),
+                                   plugin_param_real(r, "snow_altitude"));
     return SYLVA_OK;
 }
 
 /* A height in metres from parameter `metres`, or from the older `fraction` of the DTM's height
  * range [zmin, zmax] when that is given. A fraction on a flat DTM: its height when the fraction
  * is 0, above every height otherwise (all points had normalised altitude 0). */
-static double height_of(const sylva_params *params, const char *metres, const char *fraction,
-                        double zmin, double zmax)
+static double height_of(plugin_params *r, const char *metres, const char *fraction, double zmin,
+                        double zmax)
 {
-    if (!is_set(params, fraction)) return sylva_param_real(params, metres);
-    double f = sylva_param_real(params, fraction);
+    if (!is_set(r, fraction)) return plugin_param_real(r, metres);
+    double f = plugin_param_real(r, fraction);
     if (!(zmax > zmin)) return f > 0 ? INFINITY : zmin;
     return zmin + f * (zmax - zmin);
 }
 
-static void read_albedo(const sylva_params *params, const char *name, float out[3])
+static void read_albedo(plugin_params *r, const char *name, float out[3])
 {
-    const double *v = sylva_param(params, name)->list;
+    const double *v = plugin_param(r, name)->list;
     for (int k = 0; k < 3; k++) out[k] = (float)v[k];
 }
 
 /* Everything the plugin derives from its DTM: loads it (in target_wkt when given, else in the
  * file's own coordinate system), checks the fields that depend on its size, and sizes the
  * output, the ground-cover rules and the humidity. */
-static int terrain_setup(const sylva_host_api *api, sylva_host *host, const sylva_params *params,
-                         terrain_ifs_state *s, const char *target_wkt)
+static int terrain_setup(plugin_params *r, terrain_ifs_state *s, const char *target_wkt)
 {
+    const sylva_host_api *api = r->api;
+    sylva_host *host = r->host;
     int rc;
-    if ((rc = load_dtm(api, host, params, s, target_wkt))) goto fail;
+    if ((rc = load_dtm(r, s, target_wkt))) goto fail;
     ifs_dtm *d = s->dtm;
-    double zs = sylva_param_real(params, "z_scale"), zo = sylva_param_real(params, "z_offset");
+    double zs = plugin_param_real(r, "z_scale"), zo = plugin_param_real(r, "z_offset");
+    if ((rc = r->status)) goto fail; /* the host has the sentence */
     for (size_t k = 0; k < (size_t)d->nx * d->ny; k++) d->z[k] = d->z[k] * zs + zo;
-    if ((rc = cell_field(api, host, params, "alpha_field", d, &s->alpha_field))) goto fail;
-    if ((rc = cell_field(api, host, params, "probability_field", d, &s->probability_field)))
+    if ((rc = cell_field(r, "alpha_field", d, &s->alpha_field))) goto fail;
+    if ((rc = cell_field(r, "probability_field", d, &s->probability_field)))
         goto fail;
 
-    const sylva_value *out = sylva_param(params, "output_nodes");
+    const sylva_value *out = plugin_param(r, "output_nodes");
     uint64_t nxo, nyo;
-    output_size(params, d->nx, d->ny, &nxo, &nyo);
-    lod_plan(params, d, &s->lod, &s->refine, &s->lod_radius);
+    output_size(r, d->nx, d->ny, &nxo, &nyo);
+    lod_plan(r, d, &s->lod, &s->refine, &s->lod_radius);
     if (s->lod) nxo = d->nx, nyo = d->ny; /* the DTM's nodes, and the levels in generate() */
     if (nxo > 65536 || nyo > 65536 || nxo * nyo > TERRAIN_IFS_MAX_OUTPUT_NODES) {
-        rc = api->param_error(host, params, out->is_set ? "output_nodes" : "refine",
-                              "the output grid would have %llu x %llu nodes; at most %u nodes "
-                              "(16384 x 16384) and 65536 along a side are made: lower %s",
-                              (unsigned long long)nxo, (unsigned long long)nyo,
-                              TERRAIN_IFS_MAX_OUTPUT_NODES, out->is_set ? "output_nodes" : "refine");
+        rc = plugin_params_error(r, out->is_set ? "output_nodes" : "refine",
+                                 "the output grid would have %llu x %llu nodes; at most %u nodes "
+                                 "(16384 x 16384) and 65536 along a side are made: lower %s",
+                                 (unsigned long long)nxo, (unsigned long long)nyo,
+                                 TERRAIN_IFS_MAX_OUTPUT_NODES, out->is_set ? "output_nodes" : "refine");
         goto fail;
     }
-    if (!sylva_param_str(params, "dtm")) {
+    if (!plugin_param_str(r, "dtm")) {
         plugin_err err = {0};
-        memory_ask ask = {api, host, params, s->source};
+        memory_ask ask = {r, s->source};
         if ((rc = memory_fits(&ask, d->nx, d->ny, &err))) goto fail;
     }
     s->nx_out = (uint32_t)nxo, s->ny_out = (uint32_t)nyo;
 
-    const double *centre = sylva_param(params, "centre")->list;
+    const double *centre = plugin_param(r, "centre")->list;
     s->centre[0] = centre[0], s->centre[1] = centre[1];
-    s->mode = sylva_param_int(params, "mode") == 1 ? IFS_MODE_AFFINE : IFS_MODE_BILINEAR;
-    s->alpha = sylva_param_real(params, "alpha");
-    s->random = sylva_param_int(params, "method") == 0;
-    s->iterations = (uint64_t)sylva_param_int(params, "iterations");
-    s->depth = (uint32_t)sylva_param_int(params, "depth");
-    s->threads = run_threads(api, host, params);
+    s->mode = plugin_param_int(r, "mode") == 1 ? IFS_MODE_AFFINE : IFS_MODE_BILINEAR;
+    s->alpha = plugin_param_real(r, "alpha");
+    s->random = plugin_param_int(r, "method") == 0;
+    s->iterations = (uint64_t)plugin_param_int(r, "iterations");
+    s->depth = (uint32_t)plugin_param_int(r, "depth");
+    s->threads = run_threads(r);
 
     /* The starting point: the DTM origin (U, V) = (0, 0) at its height, or the scene's point. */
-    const sylva_value *start = sylva_param(params, "start");
+    const sylva_value *start = plugin_param(r, "start");
     s->start_z = d->z[0];
     if (start->is_set) {
         double w = (d->nx - 1) * d->dx, h = (d->ny - 1) * d->dy;
         double u = (start->list[0] - (s->centre[0] - 0.5 * w)) / w;
         double v = (start->list[1] - (s->centre[1] - 0.5 * h)) / h;
         if (!(u >= 0 && u <= 1 && v >= 0 && v <= 1)) {
-            rc = api->param_error(host, params, "start", "start (%g, %g) lies outside the DTM, "
-                                  "which covers x in [%g, %g] and y in [%g, %g]", start->list[0],
-                                  start->list[1], s->centre[0] - 0.5 * w, s->centre[0] + 0.5 * w,
-                                  s->centre[1] - 0.5 * h, s->centre[1] + 0.5 * h);
+            rc = plugin_params_error(r, "start", "start (%g, %g) lies outside the DTM, "
+                                     "which covers x in [%g, %g] and y in [%g, %g]", start->list[0],
+                                     start->list[1], s->centre[0] - 0.5 * w, s->centre[0] + 0.5 * w,
+                                     s->centre[1] - 0.5 * h, s->centre[1] + 0.5 * h);
             goto fail;
         }
         s->has_start = 1, s->start_u = u, s->start_v = v, s->start_z = start->list[2];
     }
 
-    s->classes = sylva_param_int(params, "surface") == 0;
+    s->classes = plugin_param_int(r, "surface") == 0;
     /* Altitudes in metres; the older fractions of the DTM's height range when given. */
     double zmin, zmax;
     ifs_dtm_range(d, &zmin, &zmax);
     s->zmin = zmin, s->zmax = zmax;
-    s->rules.snow_z = height_of(params, "snow_altitude", "snow_line", zmin, zmax);
-    s->rules.scree_z = height_of(params, "scree_altitude", "scree_line", zmin, zmax);
-    s->has_water = is_set(params, "water_altitude") || sylva_param_real(params, "water_level") > 0;
-    s->water_z = is_set(params, "water_level")
-                     ? zmin + sylva_param_real(params, "water_level") * (zmax - zmin)
-                     : sylva_param_real(params, "water_altitude");
-    s->rules.scree_slope = sylva_param_real(params, "scree_slope");
-    s->rules.rock_slope = sylva_param_real(params, "rock_slope");
-    s->rules.dry_humidity = sylva_param_real(params, "dry_humidity");
-    read_albedo(params, "grass_albedo", s->albedo[IFS_SURFACE_GRASS]);
-    read_albedo(params, "dry_grass_albedo", s->albedo[IFS_SURFACE_DRY_GRASS]);
-    read_albedo(params, "scree_albedo", s->albedo[IFS_SURFACE_SCREE]);
-    read_albedo(params, "rock_albedo", s->albedo[IFS_SURFACE_ROCK]);
-    read_albedo(params, "snow_albedo", s->albedo[IFS_SURFACE_SNOW]);
-    read_albedo(params, "water_albedo", s->water_albedo);
-    const char *hum = sylva_param_str(params, "humidity_map");
-    const sylva_value *hrange = sylva_param(params, "humidity_range");
-    if (!hum && (is_set(params, "humidity_band") || hrange->is_set)) {
-        rc = api->param_error(host, params, hrange->is_set ? "humidity_range" : "humidity_band",
-                              "humidity_band and humidity_range describe a humidity_map; this "
-                              "terrain has none");
+    s->rules.snow_z = height_of(r, "snow_altitude", "snow_line", zmin, zmax);
+    s->rules.scree_z = height_of(r, "scree_altitude", "scree_line", zmin, zmax);
+    s->has_water = is_set(r, "water_altitude") || plugin_param_real(r, "water_level") > 0;
+    s->water_z = is_set(r, "water_level")
+                     ? zmin + plugin_param_real(r, "water_level") * (zmax - zmin)
+                     : plugin_param_real(r, "water_altitude");
+    s->rules.scree_slope = plugin_param_real(r, "scree_slope");
+    s->rules.rock_slope = plugin_param_real(r, "rock_slope");
+    s->rules.dry_humidity = plugin_param_real(r, "dry_humidity");
+    read_albedo(r, "grass_albedo", s->albedo[IFS_SURFACE_GRASS]);
+    read_albedo(r, "dry_grass_albedo", s->albedo[IFS_SURFACE_DRY_GRASS]);
+    read_albedo(r, "scree_albedo", s->albedo[IFS_SURFACE_SCREE]);
+    read_albedo(r, "rock_albedo", s->albedo[IFS_SURFACE_ROCK]);
+    read_albedo(r, "snow_albedo", s->albedo[IFS_SURFACE_SNOW]);
+    read_albedo(r, "water_albedo", s->water_albedo);
+    const char *hum = plugin_param_str(r, "humidity_map");
+    const sylva_value *hrange = plugin_param(r, "humidity_range");
+    if (!hum && (is_set(r, "humidity_band") || hrange->is_set)) {
+        rc = plugin_params_error(r, hrange->is_set ? "humidity_range" : "humidity_band",
+                                 "humidity_band and humidity_range describe a humidity_map; this "
+                                 "terrain has none");
         goto fail;
     }
     if (hrange->is_set && (hrange->len != 2 || hrange->list[0] == hrange->list[1])) {
-        rc = api->param_error(host, params, "humidity_range", "humidity_range must be two "
-                              "different numbers [raw value of humidity 0, of humidity 1]");
+        rc = plugin_params_error(r, "humidity_range", "humidity_range must be two "
+                                 "different numbers [raw value of humidity 0, of humidity 1]");
         goto fail;
     }
+    if ((rc = r->status)) goto fail;
     if (hum) {
         plugin_err err = {0};
         ifs_humidity_source src = {.path = hum,
-                                   .band = (uint32_t)sylva_param_int(params, "humidity_band"),
+                                   .band = (uint32_t)plugin_param_int(r, "humidity_band"),
                                    .has_range = hrange->is_set};
         if (hrange->is_set) src.range[0] = hrange->list[0], src.range[1] = hrange->list[1];
         s->humidity = api->mem_alloc((size_t)s->nx_out * s->ny_out * sizeof *s->humidity);
@@ -481,7 +481,7 @@ static int terrain_setup(const sylva_host_api *api, sylva_host *host, const sylv
             goto fail;
         }
         if ((rc = ifs_humidity_read(&src, s->nx_out, s->ny_out, s->humidity, &err))) {
-            api->param_error(host, params, "humidity_map", "%s", err.msg);
+            plugin_params_error(r, "humidity_map", "%s", err.msg);
             goto fail;
         }
     }
@@ -494,8 +494,9 @@ static int terrain_ifs_create(const sylva_host_api *api, sylva_host *host,
                               const sylva_params *params, void **state)
 {
     *state = NULL;
-    int rc = check_relations(api, host, params);
-    if (rc) return rc;
+    plugin_params r = plugin_params_open(api, host, params);
+    int rc = check_relations(&r);
+    if (rc || (rc = r.status)) return rc;
     if (!SYLVA_API_HAS(api, mem_alloc))
         return api->error(host, "terrain_ifs needs a host with sylva plugin ABI 1.1 or newer (for "
                           "its allocator); this host speaks %u.%u", api->abi_major, api->abi_minor);
@@ -718,10 +719,12 @@ static int refine_levels(const terrain_ifs_state *s, const ifs_maps *maps, uint3
 /* A site (ABI 1.2 request), once the DTM is read in the site's CRS (terrain_setup warps a file
  * in another one): its heights taken down by the origin's height. Sets *placed when the DTM's
  * own georeferencing places it (a file read in metres of its CRS), 0 when it keeps `centre`. */
-static void site_place(terrain_ifs_state *s, const sylva_host_api *api, sylva_host *host,
-                       const sylva_terrain_request *req, int *placed)
+static void site_place(terrain_ifs_state *s, plugin_params *r, const sylva_terrain_request *req,
+                       int *placed)
 {
-    const char *path = sylva_param_str(s->params, "dtm");
+    const sylva_host_api *api = r->api;
+    sylva_host *host = r->host;
+    const char *path = plugin_param_str(r, "dtm");
     if (!path)
         api->log(host, SYLVA_LOG_INFO, "the scene has a site; the %s has no coordinates of its own "
                  "and stands at centre", s->source);
@@ -749,14 +752,14 @@ static void place_footprint(const terrain_ifs_state *s, const sylva_terrain_requ
 }
 
 /* The water surface and what lies past the footprint's edge, the same on both grounds. */
-static void set_water_and_edge(const terrain_ifs_state *s, sylva_heightfield *hf)
+static void set_water_and_edge(const terrain_ifs_state *s, plugin_params *r, sylva_heightfield *hf)
 {
     if (s->has_water) {
         hf->has_water = 1;
         hf->water_level = s->water_z - s->z_shift;
     }
     if (SYLVA_HAS_FIELD(hf, sylva_heightfield, beyond_edge))
-        hf->beyond_edge = sylva_param_int(s->params, "beyond_edge") == 0 ? SYLVA_EDGE_FLAT : SYLVA_EDGE_VOID;
+        hf->beyond_edge = plugin_param_int(r, "beyond_edge") == 0 ? SYLVA_EDGE_FLAT : SYLVA_EDGE_VOID;
 }
 
 /* 1 when the ground to render is the DTM's own nodes (refine 1, no levels, the deterministic
@@ -770,31 +773,38 @@ static int renders_dtm_nodes(const terrain_ifs_state *s)
 
 /* The ground as surveyed (ABI 1.5 request): the DTM's own nodes and heights, as read, cropped,
  * stepped and placed, with no detail added: what the analyses read whatever the camera. */
-static int surveyed_ground(const terrain_ifs_state *s, const sylva_host_api *api, sylva_host *host,
-                           const sylva_terrain_request *req, int placed, sylva_terrain_out *o)
+static int surveyed_ground(const terrain_ifs_state *s, plugin_params *r, const sylva_terrain_request *req,
+                           int placed, sylva_terrain_out *o)
 {
+    const sylva_host_api *api = r->api;
+    sylva_host *host = r->host;
     const ifs_dtm *d = s->dtm;
     sylva_heightfield *hf = api->heightfield_new(host, d->nx, d->ny, 0);
     if (!hf) return SYLVA_ERR_NOMEM; /* the host has said why */
     place_footprint(s, req, placed, hf);
     hf->dx = d->dx, hf->dy = d->dy;
     for (size_t k = 0; k < (size_t)d->nx * d->ny; k++) hf->z[k] = (float)d->z[k];
-    set_water_and_edge(s, hf);
+    set_water_and_edge(s, r, hf);
+    if (r->status) return r->status; /* the host has the sentence */
     o->terrain = hf;
     return SYLVA_OK;
 }
 
 /* The global alpha, once: as given, or the one whose detail has the RMS the `detail` key gives
  * or, by default, the DTM's own roughness continued below what its nodes resolve (ifs_detail.h). */
-static int choose_alpha(terrain_ifs_state *s, const sylva_host_api *api, sylva_host *host)
+static int choose_alpha(terrain_ifs_state *s, plugin_params *params)
 {
+    const sylva_host_api *api = params->api;
+    sylva_host *host = params->host;
     if (s->alpha_chosen) return SYLVA_OK;
     s->alpha_chosen = 1;
     int measured = !ifs_roughness_measure(s->dtm, &s->roughness);
-    if (s->alpha_field || is_set(s->params, "alpha")) return SYLVA_OK;
+    int alpha_given = is_set(params, "alpha"), given = is_set(params, "detail");
+    double detail = plugin_param_real(params, "detail");
+    if (params->status) return params->status; /* the host has the sentence */
+    if (s->alpha_field || alpha_given) return SYLVA_OK;
     const ifs_roughness *r = &s->roughness;
-    int given = is_set(s->params, "detail");
-    double target = given ? sylva_param_real(s->params, "detail") : r->target;
+    double target = given ? detail : r->target;
     plugin_err err = {0};
     int rc = ifs_alpha_for_detail(s->dtm, s->mode, s->depth, target, &s->alpha, &err);
     if (rc) {
@@ -825,13 +835,15 @@ static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_ho
         return SYLVA_ERR_INTERNAL;
     }
     int placed = 0, rc;
+    plugin_params r = plugin_params_open(api, host, s->params);
     const int site = req && SYLVA_HAS_FIELD(req, sylva_terrain_request, eye) && req->site_crs;
-    if (!s->dtm && (rc = terrain_setup(api, host, s->params, s, site ? req->site_crs : NULL))) return rc;
-    if (site) site_place(s, api, host, req, &placed);
+    if (!s->dtm && (rc = terrain_setup(&r, s, site ? req->site_crs : NULL))) return rc;
+    if (site) site_place(s, &r, req, &placed);
+    if (r.status) return r.status; /* the host has the sentence */
     int surveyed = req && SYLVA_HAS_FIELD(req, sylva_terrain_request, surveyed) && req->surveyed;
-    if (surveyed && !renders_dtm_nodes(s)) return surveyed_ground(s, api, host, req, placed, o);
+    if (surveyed && !renders_dtm_nodes(s)) return surveyed_ground(s, &r, req, placed, o);
     if (surveyed && SYLVA_HAS_FIELD(o, sylva_terrain_out, renders_as_is)) o->renders_as_is = 1;
-    if ((rc = choose_alpha(s, api, host))) return rc;
+    if ((rc = choose_alpha(s, &r))) return rc;
     plugin_err err = {0};
     ifs_maps *maps = NULL;
     ifs_maps_params mp = {.mode = s->mode, .alpha = s->alpha, .alpha_field = s->alpha_field,
@@ -867,7 +879,7 @@ static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_ho
                  "%.3g m cells, %.1f times the %.3g m its own roughness continues to: the render shows "
                  "relief the DTM does not have (the analyses read the DTM as surveyed); leave alpha out "
                  "to continue the DTM's roughness, or give detail in metres",
-                 s->alpha_field ? "alpha_field" : is_set(s->params, "detail") ? "detail" : "alpha", rms, top,
+                 s->alpha_field ? "alpha_field" : is_set(&r, "detail") ? "detail" : "alpha", rms, top,
                  fmin(s->dtm->dx, s->dtm->dy), own > 0 ? rms / own : INFINITY, own);
     if (s->lod) {
         double eye[2] = {NAN, NAN};
@@ -880,7 +892,8 @@ static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_ho
     }
     ifs_maps_free(maps);
     if (rc) return rc;
-    set_water_and_edge(s, hf);
+    set_water_and_edge(s, &r, hf);
+    if (r.status) return r.status; /* the host has the sentence */
     if (s->classes && (rc = apply_surface(s, api, host, hf))) return rc;
     o->terrain = hf;
     return SYLVA_OK;

@@ -34,28 +34,29 @@ void aono_config_release(aono_config *cfg)
     cfg->controllers = NULL, cfg->n_controllers = 0, cfg->file = NULL;
 }
 
-static void vec3(const sylva_params *p, const char *name, double out[3])
+static void vec3(plugin_params *p, const char *name, double out[3])
 {
-    const sylva_value *v = sylva_param(p, name);
+    const sylva_value *v = plugin_param(p, name);
     for (int k = 0; k < 3; k++) out[k] = v->list[k];
 }
 
 /* A parameter that the chosen settings never read is refused, so that a scene never seems to
  * say something the tree ignores. */
-static int refuse_unread(const sylva_params *p, const char *name, int unread, const char *why, plugin_err *err)
+static int refuse_unread(plugin_params *p, const char *name, int unread, const char *why, plugin_err *err)
 {
-    if (unread && sylva_param(p, name)->is_set)
-        return plugin_fail_param(err, p, name, "%s is not read %s; remove it or change that setting", name, why);
+    if (unread && plugin_param_given(p, name))
+        return plugin_fail_param(err, p->block, name, "%s is not read %s; remove it or change that setting", name, why);
     return SYLVA_OK;
 }
 
-static int read_structure(const sylva_params *p, aono_config *c, plugin_err *err)
+static int read_structure(plugin_params *p, aono_config *c, plugin_err *err)
 {
-    c->levels = (uint32_t)sylva_param_int(p, "levels");
-    c->pattern = (aono_pattern)sylva_param_int(p, "pattern");
-    c->lvt = (uint32_t)sylva_param_int(p, "lvt") - 1;
-    c->ternary_probability = sylva_param_real(p, "ternary_probability");
+    c->levels = (uint32_t)plugin_param_int(p, "levels");
+    c->pattern = (aono_pattern)plugin_param_int(p, "pattern");
+    c->lvt = (uint32_t)plugin_param_int(p, "lvt") - 1;
+    c->ternary_probability = plugin_param_real(p, "ternary_probability");
     c->n_children = c->pattern == AONO_TERNARY || c->pattern == AONO_STOCHASTIC ? 3 : 2;
+    if (p->status) return p->status;
     int rc = refuse_unread(p, "lvt", c->pattern != AONO_MONOPODIAL, "unless pattern is monopodial", err);
     if (!rc) rc = refuse_unread(p, "ternary_probability", c->pattern != AONO_STOCHASTIC,
                                 "unless pattern is stochastic", err);
@@ -64,62 +65,65 @@ static int read_structure(const sylva_params *p, aono_config *c, plugin_err *err
     if (worst > AONO_MAX_SEGMENTS) {
         uint32_t fit = 0;
         while (fit < c->levels && aono_segment_bound(c->n_children, fit + 1) <= AONO_MAX_SEGMENTS) fit++;
-        return plugin_fail_param(err, p, "levels",
+        return plugin_fail_param(err, p->block, "levels",
                                  "%u levels of %s branching make up to %llu segments, more than the %u this "
                                  "plugin builds; use at most %u levels with this pattern",
                                  c->levels, pattern_names[c->pattern], (unsigned long long)worst,
                                  AONO_MAX_SEGMENTS, fit);
     }
-    c->trunk_length = sylva_param_real(p, "trunk_length");
-    c->height = sylva_param_real(p, "height");
-    c->crown_diameter = sylva_param_real(p, "crown_diameter");
-    c->rko = sylva_param_real(p, "rko");
-    return SYLVA_OK;
+    c->trunk_length = plugin_param_real(p, "trunk_length");
+    c->height = plugin_param_real(p, "height");
+    c->crown_diameter = plugin_param_real(p, "crown_diameter");
+    c->rko = plugin_param_real(p, "rko");
+    return p->status;
 }
 
-static int read_angles(const sylva_params *p, aono_config *c, plugin_err *err)
+static int read_angles(plugin_params *p, aono_config *c, plugin_err *err)
 {
-    const sylva_value *fi = sylva_param(p, "fi");
+    const sylva_value *fi = plugin_param(p, "fi");
+    if (p->status) return p->status;
     if (fi->len != c->n_children)
-        return plugin_fail_param(err, p, "fi", "pattern %s has %u children, so fi needs %u angles FI(i); got %u",
+        return plugin_fail_param(err, p->block, "fi", "pattern %s has %u children, so fi needs %u angles FI(i); got %u",
                                  pattern_names[c->pattern], c->n_children, c->n_children, fi->len);
     for (uint32_t i = 0; i < c->n_children; i++)
         c->fi[i] = (aono_angle_law){.kind = AONO_LAW_CONSTANT, .c = fi->list[i]};
-    const sylva_value *laws = sylva_param(p, "fi_laws");
+    const sylva_value *laws = plugin_param(p, "fi_laws");
     for (uint32_t k = 0; k < laws->len; k++) {
-        const sylva_params *item = &laws->items[k];
-        uint32_t child = (uint32_t)sylva_param_int(item, "child") - 1;
+        plugin_params item = plugin_params_in(p, &laws->items[k]);
+        uint32_t child = (uint32_t)plugin_param_int(&item, "child") - 1;
+        const sylva_value *pts = plugin_param(&item, "points");
+        aono_law_kind kind = (aono_law_kind)(plugin_param_int(&item, "law") + 1);
+        if (p->status) return p->status;
         if (child >= c->n_children)
-            return plugin_fail_param(err, item, "child", "fi_laws[%u]: pattern %s has children 1 to %u, not %u", k,
+            return plugin_fail_param(err, item.block, "child", "fi_laws[%u]: pattern %s has children 1 to %u, not %u", k,
                                      pattern_names[c->pattern], c->n_children, child + 1);
         if (c->fi[child].kind != AONO_LAW_CONSTANT)
-            return plugin_fail_param(err, item, "child", "fi_laws[%u]: child %u already has a law; give one law "
+            return plugin_fail_param(err, item.block, "child", "fi_laws[%u]: child %u already has a law; give one law "
                                      "per child", k, child + 1);
-        const sylva_value *pts = sylva_param(item, "points");
         char why[400];
-        aono_law_kind kind = (aono_law_kind)(sylva_param_int(item, "law") + 1);
         if (aono_law_fit(kind, pts->list, pts->len, &c->fi[child], why, sizeof why))
-            return plugin_fail_param(err, item, "points", "fi_laws[%u]: %s", k, why);
+            return plugin_fail_param(err, item.block, "points", "fi_laws[%u]: %s", k, why);
     }
     if (c->pattern == AONO_MONOPODIAL) {
         const aono_angle_law *lead = &c->fi[c->lvt];
         if (lead->kind != AONO_LAW_CONSTANT || lead->c != 0.0)
-            return plugin_fail_param(err, p, lead->kind != AONO_LAW_CONSTANT ? "fi_laws" : "fi",
+            return plugin_fail_param(err, p->block, lead->kind != AONO_LAW_CONSTANT ? "fi_laws" : "fi",
                                      "in the monopodial pattern child LVT = %u continues its mother's direction, "
                                      "so its angle FI(%u) must be the constant 0; give 0 there (or choose "
                                      "pattern dichotomous)",
                                      c->lvt + 1, c->lvt + 1);
     }
-    c->sf = sylva_param_real(p, "sf");
-    c->del = sylva_param_real(p, "del");
-    c->del_mode = (aono_del_mode)sylva_param_int(p, "del_mode");
-    c->gamma = sylva_param_real(p, "gamma");
-    return SYLVA_OK;
+    c->sf = plugin_param_real(p, "sf");
+    c->del = plugin_param_real(p, "del");
+    c->del_mode = (aono_del_mode)plugin_param_int(p, "del_mode");
+    c->gamma = plugin_param_real(p, "gamma");
+    return p->status;
 }
 
-static int read_ratios(const sylva_params *p, aono_config *c, plugin_err *err)
+static int read_ratios(plugin_params *p, aono_config *c, plugin_err *err)
 {
-    c->ri_method = (aono_ri_method)sylva_param_int(p, "ri_method");
+    c->ri_method = (aono_ri_method)plugin_param_int(p, "ri_method");
+    if (p->status) return p->status;
     int rc = refuse_unread(p, "ri", c->ri_method != AONO_RI_CONSTANT, "unless ri_method is constant", err);
     if (!rc) rc = refuse_unread(p, "ri_range", c->ri_method != AONO_RI_RANDOM,
                                 "unless ri_method is random", err);
@@ -132,70 +136,75 @@ static int read_ratios(const sylva_params *p, aono_config *c, plugin_err *err)
                                 "unless ri_method is dimensions and pattern dichotomous", err);
     if (rc) return rc;
     if (c->ri_method == AONO_RI_CONSTANT) {
-        const sylva_value *ri = sylva_param(p, "ri");
+        const sylva_value *ri = plugin_param(p, "ri");
+        if (p->status) return p->status;
         if (ri->len != c->n_children)
-            return plugin_fail_param(err, p, "ri", "pattern %s has %u children, so ri needs %u ratios RI(i); "
+            return plugin_fail_param(err, p->block, "ri", "pattern %s has %u children, so ri needs %u ratios RI(i); "
                                      "got %u", pattern_names[c->pattern], c->n_children, c->n_children, ri->len);
         for (uint32_t i = 0; i < c->n_children; i++) c->ri[i] = ri->list[i];
     } else if (c->ri_method == AONO_RI_DIMENSIONS) {
         char why[400];
         if (aono_ratios_from_dimensions(c->pattern, c->lvt, c->height, c->trunk_length, c->crown_diameter,
                                         c->rko, c->ri, why, sizeof why))
-            return plugin_fail_param(err, p, c->trunk_length >= c->height ? "trunk_length" : "crown_diameter",
+            return plugin_fail_param(err, p->block, c->trunk_length >= c->height ? "trunk_length" : "crown_diameter",
                                      "%s", why);
     } else {
-        const sylva_value *range = sylva_param(p, "ri_range");
+        const sylva_value *range = plugin_param(p, "ri_range");
         c->ri_range[0] = range->list[0], c->ri_range[1] = range->list[1];
+        if (p->status) return p->status;
         if (c->ri_range[0] > c->ri_range[1])
-            return plugin_fail_param(err, p, "ri_range", "ri_range [%g, %g] is empty; give [low, high] with "
+            return plugin_fail_param(err, p->block, "ri_range", "ri_range [%g, %g] is empty; give [low, high] with "
                                      "low <= high, both in (0, 1)", c->ri_range[0], c->ri_range[1]);
     }
     return SYLVA_OK;
 }
 
-static int read_deviations(const sylva_params *p, aono_config *c, plugin_err *err)
+static int read_deviations(plugin_params *p, aono_config *c, plugin_err *err)
 {
     vec3(p, "deviation", c->deviation);
-    c->preserve_length = (int)sylva_param_int(p, "preserve_length");
-    const sylva_value *list = sylva_param(p, "controllers");
-    if (!list->len) return SYLVA_OK;
+    c->preserve_length = (int)plugin_param_int(p, "preserve_length");
+    const sylva_value *list = plugin_param(p, "controllers");
+    if (p->status || !list->len) return p->status;
     c->controllers = calloc(list->len, sizeof *c->controllers); /* owned by cfg */
     if (!c->controllers) return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for %u controllers", list->len);
     for (uint32_t i = 0; i < list->len; i++) {
-        const sylva_params *item = &list->items[i];
+        plugin_params item = plugin_params_in(p, &list->items[i]);
         aono_controller *ctl = &c->controllers[i];
-        const sylva_value *pos = sylva_param(item, "position");
+        const sylva_value *pos = plugin_param(&item, "position");
         for (int k = 0; k < 3; k++) ctl->q[k] = pos->list[k];
-        ctl->fac = sylva_param_real(item, "fac");
-        ctl->line = pos->line ? pos->line : item->line;
-        ctl->column = pos->line ? pos->column : item->column;
+        ctl->fac = plugin_param_real(&item, "fac");
+        if (p->status) return p->status;
+        ctl->line = pos->line ? pos->line : item.block->line;
+        ctl->column = pos->line ? pos->column : item.block->column;
         if (ctl->fac == 0.0)
-            return plugin_fail_param(err, item, "fac", "controllers[%u]: fac 0 neither attracts nor repels; give "
+            return plugin_fail_param(err, item.block, "fac", "controllers[%u]: fac 0 neither attracts nor repels; give "
                                      "fac > 0 for an attractor or fac < 0 for an inhibitor", i);
         c->n_controllers++;
     }
     return SYLVA_OK;
 }
 
-static int read_geometry(const sylva_params *p, aono_config *c, plugin_err *err)
+static int read_geometry(plugin_params *p, aono_config *c, plugin_err *err)
 {
-    c->trunk_radius = sylva_param_real(p, "trunk_radius");
-    c->radius_reduction = sylva_param_real(p, "radius_reduction");
-    c->lateral_radius_ratio = sylva_param_real(p, "lateral_radius_ratio");
-    c->sides = (uint32_t)sylva_param_int(p, "sides");
-    c->min_sides = (uint32_t)sylva_param_int(p, "min_sides");
+    c->trunk_radius = plugin_param_real(p, "trunk_radius");
+    c->radius_reduction = plugin_param_real(p, "radius_reduction");
+    c->lateral_radius_ratio = plugin_param_real(p, "lateral_radius_ratio");
+    c->sides = (uint32_t)plugin_param_int(p, "sides");
+    c->min_sides = (uint32_t)plugin_param_int(p, "min_sides");
+    if (p->status) return p->status;
     if (c->min_sides > c->sides)
-        return plugin_fail_param(err, p, "min_sides", "min_sides %u is more than the trunk's sides %u; give "
+        return plugin_fail_param(err, p->block, "min_sides", "min_sides %u is more than the trunk's sides %u; give "
                                  "min_sides <= sides", c->min_sides, c->sides);
-    c->leaf_count = (uint32_t)sylva_param_int(p, "leaf_count");
-    c->leaf_length = sylva_param_real(p, "leaf_length");
-    c->leaf_placement = (aono_leaf_placement)sylva_param_int(p, "leaf_placement");
-    c->leaf_levels = (uint32_t)sylva_param_int(p, "leaf_levels");
-    c->leaf_angle = sylva_param_real(p, "leaf_angle");
-    c->leaf_jitter = sylva_param_real(p, "leaf_jitter");
+    c->leaf_count = (uint32_t)plugin_param_int(p, "leaf_count");
+    c->leaf_length = plugin_param_real(p, "leaf_length");
+    c->leaf_placement = (aono_leaf_placement)plugin_param_int(p, "leaf_placement");
+    c->leaf_levels = (uint32_t)plugin_param_int(p, "leaf_levels");
+    c->leaf_angle = plugin_param_real(p, "leaf_angle");
+    c->leaf_jitter = plugin_param_real(p, "leaf_jitter");
     vec3(p, "leaf_color", c->leaf_color);
     vec3(p, "leaf_transmittance", c->leaf_transmittance);
     vec3(p, "bark_color", c->bark_color);
+    if (p->status) return p->status;
     static const char *const leaf_keys[] = {"leaf", "leaf_length", "leaf_placement",
                                             "leaf_levels", "leaf_angle", "leaf_jitter", "leaf_color",
                                             "leaf_transmittance"};
@@ -205,16 +214,19 @@ static int read_geometry(const sylva_params *p, aono_config *c, plugin_err *err)
     }
     for (int k = 0; k < 3; k++)
         if (c->leaf_color[k] + c->leaf_transmittance[k] > 1.0)
-            return plugin_fail_param(err, p, "leaf_transmittance",
+            return plugin_fail_param(err, p->block, "leaf_transmittance",
                                      "leaf_color + leaf_transmittance is %g in channel %d; a leaf cannot scatter "
                                      "more light than it receives, so keep the sum at most 1",
                                      c->leaf_color[k] + c->leaf_transmittance[k], k);
+    const char *leaf = plugin_param_str(p, "leaf");
+    const sylva_value *angle = plugin_param(p, "bark_angle");
+    int bark = (int)plugin_param_int(p, "bark");
+    if (p->status) return p->status;
     char why[PLUGIN_ERR_MAX - 64];
-    if (c->leaf_count && tree_look_leaf(sylva_param_str(p, "leaf"), AONO_LEAF_TEXTURE_SIZE, &c->leaf, why, sizeof why) < 0)
-        return plugin_fail_param(err, p, "leaf", "%s", why);
-    const sylva_value *angle = sylva_param(p, "bark_angle");
-    if (tree_look_bark((int)sylva_param_int(p, "bark"), angle->is_set ? angle->r : NAN, &c->bark, why, sizeof why))
-        return plugin_fail_param(err, p, angle->is_set ? "bark_angle" : "bark", "%s", why);
+    if (c->leaf_count && tree_look_leaf(leaf, AONO_LEAF_TEXTURE_SIZE, &c->leaf, why, sizeof why) < 0)
+        return plugin_fail_param(err, p->block, "leaf", "%s", why);
+    if (tree_look_bark(bark, angle->is_set ? angle->r : NAN, &c->bark, why, sizeof why))
+        return plugin_fail_param(err, p->block, angle->is_set ? "bark_angle" : "bark", "%s", why);
     /* Leaves go by length: leaf_count on a branch of the mean outermost length H0 R̄^n, as many
      * per metre elsewhere. The full-grown tree's expected count (every branching with its most
      * children; read_structure has bounded the branch count) must stay within the limit. */
@@ -229,13 +241,13 @@ static int read_geometry(const sylva_params *p, aono_config *c, plugin_err *err)
         if (k + c->leaf_levels > c->levels) expected += layer * c->leaf_count * pow(mean_ratio, (double)k - c->levels);
     }
     if (expected > AONO_MAX_LEAVES)
-        return plugin_fail_param(err, p, "leaf_count", "%u leaves per outermost branch on the outermost %u levels "
+        return plugin_fail_param(err, p->block, "leaf_count", "%u leaves per outermost branch on the outermost %u levels "
                                  "make some %.0f leaves, more than the %u this plugin builds; lower leaf_count, "
                                  "leaf_levels or levels", c->leaf_count, c->leaf_levels, expected, AONO_MAX_LEAVES);
     return SYLVA_OK;
 }
 
-int aono_config_read(const sylva_params *params, aono_config *cfg, plugin_err *err)
+int aono_config_read(plugin_params *params, aono_config *cfg, plugin_err *err)
 {
     memset(cfg, 0, sizeof *cfg);
     int rc = read_structure(params, cfg, err);
@@ -243,7 +255,7 @@ int aono_config_read(const sylva_params *params, aono_config *cfg, plugin_err *e
     if (!rc) rc = read_ratios(params, cfg, err);
     if (!rc) rc = read_deviations(params, cfg, err);
     if (!rc) rc = read_geometry(params, cfg, err);
-    if (!rc && params->file && !(cfg->file = strdup(params->file)))
+    if (!rc && params->block->file && !(cfg->file = strdup(params->block->file)))
         rc = plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for the scene file's name");
     if (rc) aono_config_release(cfg);
     return rc;

@@ -19,6 +19,7 @@
 #include "bark_fractal.h"
 #include "leaf_affine.h"
 #include "plugin_err.h"
+#include "plugin_params.h"
 #include "sylva/plugin.h"
 
 #define AONO_MAX_LEVELS 30          /* schema bound on `levels` */
@@ -102,10 +103,11 @@ typedef struct aono_config {
 #define AONO_N_PARAMS 37
 extern const sylva_param_spec aono_params[];
 
-/* Reads and checks `params` (validated against aono_params) into *cfg. Returns SYLVA_OK, or a
- * negative status with err saying what is wrong and what would be valid (and at which key of
- * which block); *cfg is then released. */
-int aono_config_read(const sylva_params *params, aono_config *cfg, plugin_err *err);
+/* Reads and checks the block of `params` (its reader; the block validated against aono_params)
+ * into *cfg. Returns SYLVA_OK; params->status when the code read a name the schema lacks (the
+ * host has the sentence); or a negative status with err saying what is wrong and what would be
+ * valid (and at which key of which block). *cfg is released on failure. */
+int aono_config_read(plugin_params *params, aono_config *cfg, plugin_err *err);
 void aono_config_release(aono_config *cfg);
 
 /* Segments (trunk included) of a tree of `levels` levels when every branching has `children`

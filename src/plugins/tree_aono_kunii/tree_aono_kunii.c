@@ -95,7 +95,8 @@ static int aono_create(const sylva_host_api *api, sylva_host *host, const sylva_
     }
     plugin_last_stats_init(&st->last);
     plugin_err err = {0};
-    int rc = aono_config_read(params, &st->cfg, &err) ? plugin_report(api, host, &err) : SYLVA_OK;
+    plugin_params r = plugin_params_open(api, host, params);
+    int rc = aono_config_read(&r, &st->cfg, &err) ? plugin_params_report(&r, &err) : SYLVA_OK;
     if (!rc) rc = make_materials(api, host, st);
     if (rc) {
         aono_destroy(st);

@@ -31,6 +31,7 @@
 #include "lsys_texture.h"
 #include "lsys_turtle.h"
 #include "plugin_host.h"
+#include "plugin_params.h"
 #include "sylva/plugin.h"
 #include "sylva/tree_stats.h"
 
@@ -103,22 +104,26 @@ static void tree_destroy(void *state)
     free(s);
 }
 
-static int read_palette(tree_state *s, const sylva_host_api *api, sylva_host *host, const sylva_params *params)
+static int read_palette(tree_state *s, plugin_params *params)
 {
-    const sylva_value *v = sylva_param(params, "palette");
-    if (!v || !v->len) return SYLVA_OK;
+    const sylva_host_api *api = params->api;
+    sylva_host *host = params->host;
+    const sylva_value *v = plugin_param(params, "palette");
+    if (params->status || !v->len) return params->status;
     s->palette = calloc(v->len, sizeof *s->palette);
     if (!s->palette) {
         api->error(host, "tree_lsystem: out of memory for the palette");
         return SYLVA_ERR_NOMEM;
     }
     for (uint32_t i = 0; i < v->len; i++) {
-        const sylva_params *e = &v->items[i];
+        plugin_params item = plugin_params_in(params, &v->items[i]);
+        const sylva_params *e = item.block;
         palette_override *p = &s->palette[i];
-        p->index = (int32_t)sylva_param_int(e, "index");
-        const sylva_value *a = sylva_param(e, "albedo"), *t = sylva_param(e, "transmittance");
+        p->index = (int32_t)plugin_param_int(&item, "index");
+        const sylva_value *a = plugin_param(&item, "albedo"), *t = plugin_param(&item, "transmittance");
+        if (params->status) return params->status;
         for (int k = 0; k < 3; k++) p->albedo[k] = (float)a->list[k];
-        if (t && t->is_set) {
+        if (t->is_set) {
             p->has_transmittance = 1;
             for (int k = 0; k < 3; k++) {
                 p->transmittance[k] = (float)t->list[k];
@@ -138,9 +143,13 @@ static int read_palette(tree_state *s, const sylva_host_api *api, sylva_host *ho
     return SYLVA_OK;
 }
 
-static int read_height_by_age(tree_state *s, const sylva_host_api *api, sylva_host *host, const sylva_params *params)
+static int read_height_by_age(tree_state *s, plugin_params *r)
 {
-    const sylva_value *v = sylva_param(params, "height_by_age");
+    const sylva_host_api *api = r->api;
+    sylva_host *host = r->host;
+    const sylva_params *params = r->block;
+    const sylva_value *v = plugin_param(r, "height_by_age");
+    if (r->status) return r->status;
     s->n_height_by_age = v->len;
     s->height_by_age = malloc(2 * (size_t)v->len * sizeof *s->height_by_age);
     if (!s->height_by_age) {
@@ -193,9 +202,12 @@ static int32_t leaf_texture(int leaf, const sylva_host_api *api, sylva_host *hos
 }
 
 /* The species' textures (the bark and leaf keys), made once. */
-static int make_textures(tree_state *s, const sylva_host_api *api, sylva_host *host, const sylva_params *params)
+static int make_textures(tree_state *s, plugin_params *r)
 {
-    int bark = (int)sylva_param_int(params, "bark"), leaf = (int)sylva_param_int(params, "leaf");
+    const sylva_host_api *api = r->api;
+    sylva_host *host = r->host;
+    int bark = (int)plugin_param_int(r, "bark"), leaf = (int)plugin_param_int(r, "leaf");
+    if (r->status) return r->status;
     s->bark_texture = s->leaf_texture = -1;
     if (bark != LSYS_BARK_TEXTURE_OFF && (s->bark_texture = bark_texture(bark, api, host)) < 0) return s->bark_texture;
     if (leaf != LSYS_LEAF_TEXTURE_OFF && (s->leaf_texture = leaf_texture(leaf, api, host)) < 0) return s->leaf_texture;
@@ -218,8 +230,11 @@ static double height_fraction(const tree_state *s, double age)
 static int tree_create(const sylva_host_api *api, sylva_host *host, const sylva_params *params, void **state)
 {
     *state = NULL;
-    const char *source = sylva_param_str(params, "source"), *file = sylva_param_str(params, "file");
-    const sylva_value *vsource = sylva_param(params, "source"), *vfile = sylva_param(params, "file");
+    plugin_params r = plugin_params_open(api, host, params);
+    const sylva_value *vsource = plugin_param(&r, "source"), *vfile = plugin_param(&r, "file");
+    int lenient = (int)plugin_param_int(&r, "lenient");
+    if (r.status) return r.status; /* the host has the sentence */
+    const char *source = vsource->s, *file = vfile->s;
     int has_source = vsource->is_set && source, has_file = vfile->is_set && file;
     if (has_source == has_file)
         return api->param_error(host, params, has_source ? "file" : "source",
@@ -231,7 +246,7 @@ static int tree_create(const sylva_host_api *api, sylva_host *host, const sylva_
         return SYLVA_ERR_NOMEM;
     }
     plugin_host_ref ref = {api, host};
-    lsys_read_options ro = {.lenient = (int)sylva_param_int(params, "lenient"), .warn = warn_to_host, .warn_ctx = &ref};
+    lsys_read_options ro = {.lenient = lenient, .warn = warn_to_host, .warn_ctx = &ref};
     plugin_err e = {0};
     int rc = has_file ? lsys_read_file(file, &ro, &s->sys, &e)
                       : lsys_read(source, strlen(source), "source", &ro, &s->sys, &e);
@@ -243,26 +258,31 @@ static int tree_create(const sylva_host_api *api, sylva_host *host, const sylva_
     }
     const lsys_system *sys = s->sys;
     const sylva_value *v;
-    s->recursion = (v = sylva_param(params, "recursion"))->is_set ? (uint32_t)v->i : sys->recursion;
-    s->angle = (v = sylva_param(params, "angle"))->is_set ? v->r : sys->angle_deg;
-    s->thickness = (v = sylva_param(params, "thickness"))->is_set ? v->r : sys->thickness;
-    s->min_thickness = (v = sylva_param(params, "min_thickness"))->is_set ? v->r : sys->min_thickness;
-    s->base_length = sylva_param_real(params, "base_length") > 0 ? sylva_param_real(params, "base_length")
-                                                                  : sys->base_length;
-    s->height = sylva_param_real(params, "height");
-    s->unit_length = sylva_param_real(params, "unit_length");
-    int64_t shape = sylva_param_int(params, "segment_shape");
+    s->recursion = (v = plugin_param(&r, "recursion"))->is_set ? (uint32_t)v->i : sys->recursion;
+    s->angle = (v = plugin_param(&r, "angle"))->is_set ? v->r : sys->angle_deg;
+    s->thickness = (v = plugin_param(&r, "thickness"))->is_set ? v->r : sys->thickness;
+    s->min_thickness = (v = plugin_param(&r, "min_thickness"))->is_set ? v->r : sys->min_thickness;
+    double base_length = plugin_param_real(&r, "base_length");
+    s->base_length = base_length > 0 ? base_length : sys->base_length;
+    s->height = plugin_param_real(&r, "height");
+    s->unit_length = plugin_param_real(&r, "unit_length");
+    int64_t shape = plugin_param_int(&r, "segment_shape");
     s->flat = shape == 1 || (shape == 0 && sys->shape == 0);
-    s->sides = s->flat ? 4 : (uint32_t)sylva_param_int(params, "sides");
-    s->max_string = (uint64_t)sylva_param_int(params, "max_string");
-    s->max_segments = (uint64_t)sylva_param_int(params, "max_segments");
-    s->max_polygons = (uint64_t)sylva_param_int(params, "max_polygons");
+    s->sides = s->flat ? 4 : (uint32_t)plugin_param_int(&r, "sides");
+    s->max_string = (uint64_t)plugin_param_int(&r, "max_string");
+    s->max_segments = (uint64_t)plugin_param_int(&r, "max_segments");
+    s->max_polygons = (uint64_t)plugin_param_int(&r, "max_polygons");
     if (sys->poly_limit && sys->poly_limit < s->max_polygons) s->max_polygons = sys->poly_limit;
-    s->max_polygon_vertices = (uint32_t)sylva_param_int(params, "max_polygon_vertices");
-    s->branch_law = (int)sylva_param_int(params, "branch_law");
-    s->box_dimension = sylva_param_real(params, "box_dimension");
-    s->law_height = sylva_param_real(params, "law_height");
-    s->law_branches = (double)sylva_param_int(params, "law_branches");
+    s->max_polygon_vertices = (uint32_t)plugin_param_int(&r, "max_polygon_vertices");
+    s->branch_law = (int)plugin_param_int(&r, "branch_law");
+    s->box_dimension = plugin_param_real(&r, "box_dimension");
+    s->law_height = plugin_param_real(&r, "law_height");
+    s->law_branches = (double)plugin_param_int(&r, "law_branches");
+    s->bark_tile = plugin_param_real(&r, "bark_tile_length");
+    if (r.status) {
+        tree_destroy(s);
+        return r.status;
+    }
     if ((s->law_height > 0) != (s->law_branches > 0)) {
         const char *given = s->law_height > 0 ? "law_height" : "law_branches";
         tree_destroy(s);
@@ -271,9 +291,7 @@ static int tree_create(const sylva_host_api *api, sylva_host *host, const sylva_
                                 "(H1 and N1 of 002 eq. 6); give the other one too, or neither to start from the "
                                 "full-grown tree");
     }
-    s->bark_tile = sylva_param_real(params, "bark_tile_length");
-    if ((rc = read_palette(s, api, host, params)) || (rc = read_height_by_age(s, api, host, params)) ||
-        (rc = make_textures(s, api, host, params))) {
+    if ((rc = read_palette(s, &r)) || (rc = read_height_by_age(s, &r)) || (rc = make_textures(s, &r))) {
         tree_destroy(s);
         return rc;
     }

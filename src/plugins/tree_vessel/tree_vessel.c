@@ -91,8 +91,10 @@ static int tree_vessel_create(const sylva_host_api *api, sylva_host *host,
     }
     s->mem_free = api->mem_free;
     plugin_err err = {0};
-    if (vessel_config_read(params, &s->params, &err)) {
+    plugin_params r = plugin_params_open(api, host, params);
+    if (vessel_config_read(&r, &s->params, &err)) {
         api->mem_free(s);
+        if (r.status) return r.status; /* the host has the sentence */
         if (err.param[0]) api->param_error(host, params, err.param, "%s", err.msg);
         else api->error(host, "tree_vessel: %s", err.msg);
         return (int)err.status;

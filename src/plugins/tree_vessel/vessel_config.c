@@ -12,26 +12,26 @@
 #include "vessel_presets.h"
 #include "vessel_texture.h"
 
-static const sylva_value *given(const sylva_params *params, const char *key)
+static const sylva_value *given(plugin_params *params, const char *key)
 {
-    const sylva_value *v = sylva_param(params, key);
-    return v && v->is_set ? v : NULL;
+    const sylva_value *v = plugin_param(params, key);
+    return v->is_set ? v : NULL;
 }
 
-static void read_real(const sylva_params *params, const char *key, double *dst)
+static void read_real(plugin_params *params, const char *key, double *dst)
 {
     const sylva_value *v = given(params, key);
     if (v) *dst = v->r;
 }
 
-static void read_colour(const sylva_params *params, const char *key, float *dst)
+static void read_colour(plugin_params *params, const char *key, float *dst)
 {
     const sylva_value *v = given(params, key);
     if (v && v->list && v->len == 3)
         for (int k = 0; k < 3; k++) dst[k] = (float)v->list[k];
 }
 
-static int read_polyline(const sylva_params *params, const vessel_polyline_rule *rule,
+static int read_polyline(plugin_params *params, const vessel_polyline_rule *rule,
                          double x_max, vessel_polyline *dst, plugin_err *err)
 {
     const sylva_value *v = given(params, rule->key);
@@ -40,8 +40,9 @@ static int read_polyline(const sylva_params *params, const vessel_polyline_rule 
                                err);
 }
 
-/* Copies the keys `params` gives onto *out. Returns 0, or -1 with err set. */
-static int read_given(const sylva_params *params, vessel_params *out, plugin_err *err)
+/* Copies the keys `params` gives onto *out. Returns 0, or -1 with err set (a name the schema
+ * lacks: params->status is set instead, and what was read is not to be used). */
+static int read_given(plugin_params *params, vessel_params *out, plugin_err *err)
 {
     const sylva_value *v;
     if ((v = given(params, "vessels"))) {
@@ -126,17 +127,21 @@ int vessel_preset_get(vessel_preset which, vessel_params *out)
     }
     values[0].i = which; /* the preset key itself */
     sylva_params block = {.spec = vessel_schema, .n = VESSEL_SCHEMA_COUNT, .values = values};
+    plugin_params r = plugin_params_open(NULL, NULL, &block); /* the plugin's own block: no host */
     plugin_err err = {0};
     memset(out, 0, sizeof *out);
-    return read_given(&block, out, &err) ? -1 : 0;
+    return read_given(&r, out, &err) || r.status ? -1 : 0;
 }
 
-int vessel_config_read(const sylva_params *params, vessel_params *out, plugin_err *err)
+int vessel_config_read(plugin_params *params, vessel_params *out, plugin_err *err)
 {
-    const sylva_value *preset = sylva_param(params, "preset");
-    if (!preset || vessel_preset_get((vessel_preset)preset->i, out))
+    const sylva_value *preset = plugin_param(params, "preset");
+    if (params->status) return params->status;
+    if (vessel_preset_get((vessel_preset)preset->i, out))
         return plugin_fail_key(err, SYLVA_ERR_PARAM, NULL, "preset", "unknown preset; the presets are beech, spruce, "
                            "weeping_willow and maple");
-    if (read_given(params, out, err)) return -1;
+    int rc = read_given(params, out, err);
+    if (params->status) return params->status;
+    if (rc) return -1;
     return vessel_params_check(out, err);
 }

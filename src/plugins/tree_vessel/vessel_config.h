@@ -12,13 +12,15 @@
 
 #include "sylva/plugin.h"
 #include "plugin_err.h"
+#include "plugin_params.h"
 #include "vessel_params.h"
 
 #include "vessel_schema.h"
 
-/* Reads a block validated against vessel_schema into *out and checks it (vessel_params_check
- * plus the orders of the polylines). Returns 0, or a sylva_status with err set; err->param names
- * the key whose place in the scene file the message belongs to. */
-int vessel_config_read(const sylva_params *params, vessel_params *out, plugin_err *err);
+/* Reads a block validated against vessel_schema through `params` (its reader) into *out and
+ * checks it (vessel_params_check plus the orders of the polylines). Returns 0; or params->status
+ * when the code read a name the schema lacks (the host has the sentence); or a sylva_status with
+ * err set, err->param naming the key whose place in the scene file the message belongs to. */
+int vessel_config_read(plugin_params *params, vessel_params *out, plugin_err *err);
 
 #endif

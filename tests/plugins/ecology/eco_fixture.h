@@ -78,6 +78,20 @@ static inline void fixture_host_release(fixture_host *f)
     scene_free(f->scene);
 }
 
+/* A reader of `block` (NULL: none) through the fixture's host, as the plugin file makes one. */
+static inline plugin_params fixture_reader(fixture_host *f, const sylva_params *block)
+{
+    return plugin_params_open(f->api, &f->host, block);
+}
+
+/* eco_species_read of `block` (NULL: none) through the fixture's host. */
+static inline int fixture_species_read(fixture_host *f, const sylva_params *block, const char *name,
+                                       eco_species *out)
+{
+    plugin_params r = fixture_reader(f, block);
+    return eco_species_read(&r, name, out, &f->fail);
+}
+
 /* A species block with every key at its schema default, then `keys` (NULL-terminated names)
  * set to `values`. The block's values live in the returned struct (free with free()). */
 typedef struct fixture_block {
@@ -115,7 +129,8 @@ static inline int fixture_sim(fixture_host *f, const sylva_heightfield *hf, cons
     sylva_ecology_request req = {.size = sizeof req, .seed = f->host.seed, .terrain = hf, .species = info,
                                  .n_species = n};
     f->host.n_species = n;
-    return eco_sim_new(&f->rnd, NULL, cfg, NULL, &req, out, &f->fail);
+    plugin_params r = fixture_reader(f, NULL);
+    return eco_sim_new(&f->rnd, &r, cfg, NULL, &req, out, &f->fail);
 }
 
 /* 1 when two runs hold the same plants, field by field, in the same order. */

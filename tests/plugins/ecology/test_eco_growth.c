@@ -73,14 +73,14 @@ TEST(profiles_by_name_and_overrides)
     fixture_host_init(&f, 1);
     eco_species sp;
     fixture_block *none = fixture_species_block(NULL, NULL);
-    CHECK_INT(eco_species_read(&none->params, "spruce", &sp, &f.fail), 0);
+    CHECK_INT(fixture_species_read(&f, &none->params, "spruce", &sp), 0);
     CHECK_NEAR(sp.t_f, eco_profiles[ECO_PROFILE_SPRUCE].t_f, 0);
-    CHECK_INT(eco_species_read(&none->params, "oak", &sp, &f.fail), 0);
+    CHECK_INT(fixture_species_read(&f, &none->params, "oak", &sp), 0);
     CHECK_NEAR(sp.r_s, eco_profiles[ECO_PROFILE_GENERIC].r_s, 0);
     const char *keys[] = {"profile", "t_m", "altitude_opt", NULL};
     const double vals[] = {ECO_PROFILE_SHRUB, 2, 0.9};
     fixture_block *b = fixture_species_block(keys, vals);
-    CHECK_INT(eco_species_read(&b->params, "beech", &sp, &f.fail), 0);
+    CHECK_INT(fixture_species_read(&f, &b->params, "beech", &sp), 0);
     CHECK_NEAR(sp.t_m, 2, 0);                                   /* given */
     CHECK_NEAR(sp.opt[ECO_FAV_ALTITUDE], 0.9, 0);                /* given */
     CHECK_NEAR(sp.t_a, eco_profiles[ECO_PROFILE_SHRUB].t_a, 0);  /* from the profile named */
@@ -97,7 +97,7 @@ TEST(ages_out_of_order_are_refused)
     const char *k1[] = {"t_m", "t_a", NULL};
     const double v1[] = {50, 40};
     fixture_block *b = fixture_species_block(k1, v1);
-    CHECK(eco_species_read(&b->params, "beech", &sp, &f.fail) != 0);
+    CHECK(fixture_species_read(&f, &b->params, "beech", &sp) != 0);
     CHECK(f.fail.where == &b->params); /* the plugin file reports it at the key's place */
     CHECK_STR_CONTAINS(f.fail.param, "t_m");
     CHECK_STR_CONTAINS(f.fail.msg, "t_m = 50 years is not before t_a = 40 years");
@@ -105,7 +105,7 @@ TEST(ages_out_of_order_are_refused)
     const char *k2[] = {"t_f", NULL};
     const double v2[] = {30};
     b = fixture_species_block(k2, v2); /* generic t_a = 60 */
-    CHECK(eco_species_read(&b->params, "oak", &sp, &f.fail) != 0);
+    CHECK(fixture_species_read(&f, &b->params, "oak", &sp) != 0);
     CHECK_STR_CONTAINS(f.fail.param, "t_f");
     CHECK_STR_CONTAINS(f.fail.msg, "t_a <= t_f");
     free(b);

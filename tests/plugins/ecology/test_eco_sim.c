@@ -467,15 +467,16 @@ TEST(bad_growth_area_and_species)
     sylva_species_info info[2] = {{.size = sizeof info[0], .name = "shrub", .model_height = 2},
                                   {.size = sizeof info[1], .name = "beech", .model_height = 20}};
     sylva_ecology_request req = {.size = sizeof req, .terrain = &hf, .species = info, .n_species = 2};
-    CHECK(eco_sim_new(&f.rnd, NULL, &cfg, "beech, bech", &req, &s, &f.fail) != 0);
+    plugin_params top = fixture_reader(&f, NULL);
+    CHECK(eco_sim_new(&f.rnd, &top, &cfg, "beech, bech", &req, &s, &f.fail) != 0);
     CHECK_STR_CONTAINS(f.fail.msg, "unknown species 'bech'; the scene's species are shrub, beech");
-    CHECK_INT(eco_sim_new(&f.rnd, NULL, &cfg, "beech", &req, &s, &f.fail), 0);
+    CHECK_INT(eco_sim_new(&f.rnd, &top, &cfg, "beech", &req, &s, &f.fail), 0);
     CHECK_INT(s->n_species, 1);
     CHECK_INT(s->request_index[0], 1);
     eco_sim_free(s);
     /* the limit on living plants is an error, never a crash */
     cfg.max_plants = 50;
-    CHECK_INT(eco_sim_new(&f.rnd, NULL, &cfg, NULL, &req, &s, &f.fail), 0);
+    CHECK_INT(eco_sim_new(&f.rnd, &top, &cfg, NULL, &req, &s, &f.fail), 0);
     int rc = 0;
     for (int y = 0; y < 200 && !rc; y++) rc = eco_sim_step(s, &f.rnd, &f.fail);
     CHECK_INT(rc, SYLVA_ERR_LIMIT);

@@ -80,7 +80,8 @@ int aono_fixture_generate(aono_fixture *f, double age, mesh **out, double *heigh
 
 int aono_fixture_config(aono_fixture *f, aono_config *cfg)
 {
-    return aono_config_read(f->params, cfg, &f->fail);
+    plugin_params r = plugin_params_open(host_api_table(), &f->host, f->params);
+    return aono_config_read(&r, cfg, &f->fail);
 }
 
 int aono_fixture_grow(aono_fixture *f, uint32_t levels, aono_skeleton *skel)

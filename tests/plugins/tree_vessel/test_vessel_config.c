@@ -33,6 +33,13 @@ static void block_from_defaults(block *b, const char *preset_name)
     b->params = (sylva_params){.spec = vessel_schema, .n = VESSEL_SCHEMA_COUNT, .values = b->values};
 }
 
+/* vessel_config_read of b through a reader without a host. */
+static int read_block(const block *b, vessel_params *out, plugin_err *err)
+{
+    plugin_params r = plugin_params_open(NULL, NULL, &b->params);
+    return vessel_config_read(&r, out, err);
+}
+
 /* Field by field: the structs' padding bytes are not part of their value. */
 static int same_leaf(const leaf_affine_maps *a, const leaf_affine_maps *b)
 {
@@ -95,7 +102,7 @@ TEST(schema_defaults_are_the_beech_preset)
     block_from_defaults(&b, "beech");
     vessel_params read, beech = preset(VESSEL_PRESET_BEECH);
     plugin_err err = {0};
-    CHECK_INT(vessel_config_read(&b.params, &read, &err), 0);
+    CHECK_INT(read_block(&b, &read, &err), 0);
     CHECK(same_params(&read, &beech));
 }
 
@@ -106,7 +113,7 @@ TEST(a_preset_with_keys_replaced)
     for (uint32_t i = 0; i < VESSEL_SCHEMA_COUNT; i++) b.values[i].is_set = !strcmp(vessel_schema[i].name, "preset");
     vessel_params read, spruce = preset(VESSEL_PRESET_SPRUCE);
     plugin_err err = {0};
-    CHECK_INT(vessel_config_read(&b.params, &read, &err), 0);
+    CHECK_INT(read_block(&b, &read, &err), 0);
     CHECK(same_params(&read, &spruce)); /* nothing given: the preset itself */
 
     int vessels = sylva_param_index(&b.params, "vessels"), angle = sylva_param_index(&b.params, "angle_g");
@@ -115,7 +122,7 @@ TEST(a_preset_with_keys_replaced)
     static const double wide[] = {0, 90, 15, 60};
     b.values[angle].is_set = 1, b.values[angle].list = wide, b.values[angle].len = 2;
     b.values[leaf_type].is_set = 1, b.values[leaf_type].i = VESSEL_LEAF_BUNCHED;
-    CHECK_INT(vessel_config_read(&b.params, &read, &err), 0);
+    CHECK_INT(read_block(&b, &read, &err), 0);
     CHECK_INT(read.vessels, 321);
     CHECK_INT(read.by_g[VESSEL_ANGLE].n, 2);
     CHECK_NEAR(read.by_g[VESSEL_ANGLE].y[0], 90, 0);
@@ -135,17 +142,17 @@ TEST(orders_past_the_span_are_refused_at_their_key)
     b.values[k].list = far, b.values[k].len = 2;
     vessel_params read;
     plugin_err err = {0};
-    CHECK_INT(vessel_config_read(&b.params, &read, &err), -1);
+    CHECK_INT(read_block(&b, &read, &err), -1);
     CHECK_STR_CONTAINS(err.param, "split_g");
     CHECK_STR_CONTAINS(err.msg, "order 20; orders run from 0 to 15");
     k = sylva_param_index(&b.params, "length_scale_w");
     static const double fine[] = {0, 1, 50, 1}, past_w[] = {0, 1, 60, 1};
     b.values[sylva_param_index(&b.params, "split_g")].list = vessel_schema[sylva_param_index(&b.params, "split_g")].def_list;
     b.values[k].list = past_w;
-    CHECK_INT(vessel_config_read(&b.params, &read, &err), -1);
+    CHECK_INT(read_block(&b, &read, &err), -1);
     CHECK_STR_CONTAINS(err.msg, "'length_scale_w' point 1 has order 60; orders run from 0 to 50");
     b.values[k].list = fine;
-    CHECK_INT(vessel_config_read(&b.params, &read, &err), 0);
+    CHECK_INT(read_block(&b, &read, &err), 0);
 }
 
 /* leaf: names a preset or gives maps; bark: names a preset, whose own angle bark_angle: replaces.
@@ -177,7 +184,7 @@ TEST(leaf_and_bark_keys)
     /* a preset's name; a bark preset with its own angle */
     b.values[leaf].is_set = 1, b.values[leaf].s = "shrub";
     b.values[bark].is_set = 1, b.values[bark].i = BARK_FRACTAL_FISSURED;
-    CHECK_INT(vessel_config_read(&b.params, &read, &err), 0);
+    CHECK_INT(read_block(&b, &read, &err), 0);
     leaf_affine_maps shrub;
     leaf_affine_preset_maps(LEAF_AFFINE_SHRUB, &shrub);
     CHECK(same_leaf(&read.leaf, &shrub) && read.leaf_preset == LEAF_AFFINE_SHRUB);
@@ -187,7 +194,7 @@ TEST(leaf_and_bark_keys)
     b.values[leaf].s = "0.5 0 0 0.5 0.15 0; 0.5 0 0 0.5 0.35 0; 0.5 0 0 0.5 0.15 0.5; 0.5 0 0 0.5 0.35 0.5";
     b.values[bark].is_set = 0;
     b.values[angle].is_set = 1, b.values[angle].r = -90;
-    CHECK_INT(vessel_config_read(&b.params, &read, &err), 0);
+    CHECK_INT(read_block(&b, &read, &err), 0);
     CHECK_INT(read.leaf.n, 4);
     CHECK_INT(read.leaf_preset, -1);
     CHECK_NEAR(read.leaf.map[3].f, 0.5, 0);
@@ -206,7 +213,7 @@ TEST(leaf_and_bark_keys)
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         b.values[leaf].s = bad[i].leaf;
         memset(&err, 0, sizeof err);
-        CHECK_INT(vessel_config_read(&b.params, &read, &err), -1);
+        CHECK_INT(read_block(&b, &read, &err), -1);
         CHECK_STR_CONTAINS(err.param, bad[i].key);
         CHECK_STR_CONTAINS(err.msg, bad[i].why);
     }

@@ -53,7 +53,7 @@ extern "C" {
 #endif
 
 #define SYLVA_ABI_MAJOR 1
-#define SYLVA_ABI_MINOR 5
+#define SYLVA_ABI_MINOR 6
 
 /* Bytes from the start of `type` to the end of `field`. */
 #define SYLVA_FIELD_END(type, field) (offsetof(type, field) + sizeof(((type *)0)->field))
@@ -247,6 +247,17 @@ typedef struct sylva_ground_rules {
         snow_albedo[3];   /* linear RGB: the mean albedo of each cover */
 } sylva_ground_rules;
 
+/* The colours of the ground's kinds that no class stands for (ABI 1.6), linear RGB: the host
+ * shades bare soil, litter under crowns and lichen on rock with them (docs/models/ground.md).
+ * A terrain plugin fills them from its biome; without them the host uses a temperate ground's. */
+typedef struct sylva_ground_palette {
+    double soil_albedo[3];      /* dry bare soil */
+    double wet_soil_albedo[3];  /* the same soil wet (and the wet ground at the water's edge) */
+    double litter_albedo[3];    /* leaf and needle litter under the canopy */
+    double moss_albedo[3];      /* moss (or a dark soil crust) in the litter */
+    double lichen_albedo[3];    /* lichen (or a paler weathering) on rock */
+} sylva_ground_palette;
+
 /* A regular grid of heights, owned by the host. Node (i, j) sits at (x0 + i dx, y0 + j dy) with
  * height z[j * nx + i]. */
 typedef struct sylva_heightfield {
@@ -272,6 +283,10 @@ typedef struct sylva_heightfield {
     float *humidity;      /* NULL, or nx * ny humidity values in [0, 1] at the heightfield's nodes;
                              allocated with api->mem_alloc, then the host's (freed with the
                              heightfield) */
+    /* ---- ABI 1.6 (test with SYLVA_HAS_FIELD) ---- */
+    int has_ground_palette; /* 1: palette holds the colours of the biome the ground was classed
+                               for; 0: the host's temperate colours */
+    sylva_ground_palette palette;
 } sylva_heightfield;
 
 #define SYLVA_EDGE_VOID 0
@@ -429,6 +444,9 @@ typedef struct sylva_terrain_request {
                              the eye. 0: the ground to render. A host asks a plugin of ABI 1.5 or
                              later for both, the surveyed ground first; each answer is a new
                              heightfield_new. */
+    /* ---- ABI 1.6 (test with SYLVA_HAS_FIELD) ---- */
+    double site_latitude; /* degrees north (WGS 84) of the site origin, the centre of the scene;
+                             NaN when the scene has no site (no CRS) */
 } sylva_terrain_request;
 
 typedef struct sylva_terrain_out {
@@ -471,6 +489,8 @@ typedef struct sylva_ecology_request {
     const sylva_heightfield *terrain;
     const sylva_species_info *species;
     uint32_t n_species;
+    /* ---- ABI 1.6 (test with SYLVA_HAS_FIELD) ---- */
+    double site_latitude; /* degrees north (WGS 84) of the site origin; NaN without a site */
 } sylva_ecology_request;
 
 typedef struct sylva_ecology_out {
@@ -535,6 +555,7 @@ typedef struct sylva_plugin {
 #define SYLVA_PLUGIN_SIZE_1_3 SYLVA_PLUGIN_SIZE_1_2 /* 1.3 appended to the heightfield only */
 #define SYLVA_PLUGIN_SIZE_1_4 SYLVA_FIELD_END(sylva_plugin, flags)
 #define SYLVA_PLUGIN_SIZE_1_5 SYLVA_PLUGIN_SIZE_1_4 /* 1.5 appended to the terrain request only */
+#define SYLVA_PLUGIN_SIZE_1_6 SYLVA_PLUGIN_SIZE_1_5 /* 1.6 appended to the requests and heightfield */
 
 /* The one exported symbol: descriptor `index` of this module, NULL past the end. */
 #define SYLVA_PLUGIN_ENTRY "sylva_plugin_get"

@@ -1,6 +1,6 @@
 /* test_abi_layout.c — the plugin ABI's binary layout, member by member: the offset of every
  * member and the size and alignment of every struct of sylva/plugin.h and its interface headers,
- * and the per-version size macros, as ABI 1.5 laid them out (x86-64, LP64). A plugin built
+ * and the per-version size macros, as ABI 1.6 laid them out (x86-64, LP64). A plugin built
  * against any 1.x header must find each member where it was; appending is the only change a
  * minor version may make, and a member appended later gets its row here then. */
 #include <stdalign.h>
@@ -106,6 +106,11 @@ static const layout_row rows[] = {
     FIELD(sylva_ground_rules, scree_albedo, 88),
     FIELD(sylva_ground_rules, rock_albedo, 112),
     FIELD(sylva_ground_rules, snow_albedo, 136),
+    FIELD(sylva_ground_palette, soil_albedo, 0),
+    FIELD(sylva_ground_palette, wet_soil_albedo, 24),
+    FIELD(sylva_ground_palette, litter_albedo, 48),
+    FIELD(sylva_ground_palette, moss_albedo, 72),
+    FIELD(sylva_ground_palette, lichen_albedo, 96),
     FIELD(sylva_heightfield, size, 0),
     FIELD(sylva_heightfield, nx, 4),
     FIELD(sylva_heightfield, ny, 8),
@@ -124,6 +129,8 @@ static const layout_row rows[] = {
     FIELD(sylva_heightfield, has_ground_rules, 100),
     FIELD(sylva_heightfield, ground, 104),
     FIELD(sylva_heightfield, humidity, 264),
+    FIELD(sylva_heightfield, has_ground_palette, 272),
+    FIELD(sylva_heightfield, palette, 280),
     FIELD(sylva_plant, size, 0),
     FIELD(sylva_plant, species, 4),
     FIELD(sylva_plant, position, 8),
@@ -164,6 +171,7 @@ static const layout_row rows[] = {
     FIELD(sylva_terrain_request, site_origin, 24),
     FIELD(sylva_terrain_request, eye, 48),
     FIELD(sylva_terrain_request, surveyed, 72),
+    FIELD(sylva_terrain_request, site_latitude, 80),
     FIELD(sylva_terrain_out, size, 0),
     FIELD(sylva_terrain_out, terrain, 8),
     FIELD(sylva_terrain_out, renders_as_is, 16),
@@ -185,6 +193,7 @@ static const layout_row rows[] = {
     FIELD(sylva_ecology_request, terrain, 16),
     FIELD(sylva_ecology_request, species, 24),
     FIELD(sylva_ecology_request, n_species, 32),
+    FIELD(sylva_ecology_request, site_latitude, 40),
     FIELD(sylva_ecology_out, size, 0),
     FIELD(sylva_ecology_out, n_plants, 4),
     FIELD(sylva_plugin, size, 0),
@@ -251,15 +260,16 @@ static const layout_row rows[] = {
     SIZE(sylva_material_desc, 56, 8),
     SIZE(sylva_terrain_level, 48, 8),
     SIZE(sylva_ground_rules, 160, 8),
-    SIZE(sylva_heightfield, 272, 8),
+    SIZE(sylva_ground_palette, 120, 8),
+    SIZE(sylva_heightfield, 400, 8),
     SIZE(sylva_plant, 64, 8),
     SIZE(sylva_host_api, 208, 8),
-    SIZE(sylva_terrain_request, 80, 8),
+    SIZE(sylva_terrain_request, 88, 8),
     SIZE(sylva_terrain_out, 24, 8),
     SIZE(sylva_tree_request, 40, 8),
     SIZE(sylva_tree_out, 24, 8),
     SIZE(sylva_species_info, 32, 8),
-    SIZE(sylva_ecology_request, 40, 8),
+    SIZE(sylva_ecology_request, 48, 8),
     SIZE(sylva_ecology_out, 8, 4),
     SIZE(sylva_plugin, 144, 8),
     SIZE(sylva_ecology_plant_record, 64, 8),
@@ -274,24 +284,25 @@ static const layout_row rows[] = {
     MACRO(SYLVA_PLUGIN_SIZE_1_3, 140),
     MACRO(SYLVA_PLUGIN_SIZE_1_4, 144),
     MACRO(SYLVA_PLUGIN_SIZE_1_5, 144),
+    MACRO(SYLVA_PLUGIN_SIZE_1_6, 144),
     MACRO(SYLVA_HOST_API_SIZE_1_0, 144),
     MACRO(SYLVA_HOST_API_SIZE_1_1, 184),
     MACRO(SYLVA_HOST_API_SIZE_1_2, 200),
     MACRO(SYLVA_HOST_API_SIZE_1_4, 208),
 };
 
-TEST(every_member_where_abi_1_5_put_it)
+TEST(every_member_where_abi_1_6_put_it)
 {
 #if !defined(__x86_64__) || !defined(__LP64__)
     SKIP("the recorded layout is x86-64's");
 #else
     for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++)
         if (rows[i].got != rows[i].want) {
-            fprintf(stderr, "%s %s: %zu bytes, ABI 1.5 has %zu\n", rows[i].type, rows[i].member, rows[i].got,
+            fprintf(stderr, "%s %s: %zu bytes, ABI 1.6 has %zu\n", rows[i].type, rows[i].member, rows[i].got,
                     rows[i].want);
             harness_failures++;
         }
 #endif
 }
 
-TEST_LIST(TEST_CASE(every_member_where_abi_1_5_put_it))
+TEST_LIST(TEST_CASE(every_member_where_abi_1_6_put_it))

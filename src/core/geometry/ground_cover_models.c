@@ -170,12 +170,35 @@ static int32_t cover_species(scene *s, const char *name, err_buf *err)
     return sp;
 }
 
+/* The blade colours of a temperate meadow's fresh and cured grass, reflectance then
+ * transmittance, coloured after the ground the tufts stand on: each channel scaled by the
+ * ground's grass (dry grass) albedo over the temperate ground's, so a temperate ground keeps
+ * these colours to the bit and a biome's grass tints its blades (docs/models/ground.md). */
+static void blade_colours(const scene *s, float fresh[6], float cured[6])
+{
+    static const float temperate_fresh[6] = {0.075f, 0.13f, 0.035f, 0.05f, 0.12f, 0.02f},
+                       temperate_cured[6] = {0.30f, 0.25f, 0.13f, 0.14f, 0.11f, 0.05f},
+                       temperate_grass[3] = {0.07f, 0.10f, 0.04f}, temperate_dry[3] = {0.30f, 0.26f, 0.12f};
+    const sylva_heightfield *hf = s->terrain;
+    const int ruled = hf && SYLVA_HAS_FIELD(hf, sylva_heightfield, humidity) && hf->has_ground_rules;
+    for (int k = 0; k < 3; k++) {
+        double g = ruled ? hf->ground.grass_albedo[k] / temperate_grass[k] : 1.0;
+        double d = ruled ? hf->ground.dry_grass_albedo[k] / temperate_dry[k] : 1.0;
+        /* a leaf reflects and transmits at most what it receives */
+        double gs = fmin(g, 0.98 / (temperate_fresh[k] + temperate_fresh[k + 3]));
+        double ds = fmin(d, 0.98 / (temperate_cured[k] + temperate_cured[k + 3]));
+        fresh[k] = (float)(temperate_fresh[k] * gs), fresh[k + 3] = (float)(temperate_fresh[k + 3] * gs);
+        cured[k] = (float)(temperate_cured[k] * ds), cured[k + 3] = (float)(temperate_cured[k + 3] * ds);
+    }
+}
+
 int ground_cover_models_add(scene *s, uint64_t seed, ground_cover_models *out, err_buf *err)
 {
-    /* Linear reflectance and transmittance of fresh and cured grass blades, herb leaves and the
-     * petals of white and yellow meadow flowers (docs/rendering.md, Ground cover). */
-    static const float fresh[6] = {0.075f, 0.13f, 0.035f, 0.05f, 0.12f, 0.02f},
-                       cured[6] = {0.30f, 0.25f, 0.13f, 0.14f, 0.11f, 0.05f};
+    /* Linear reflectance and transmittance of fresh and cured grass blades (the ground's), herb
+     * leaves and the petals of white and yellow meadow flowers (docs/rendering.md, Ground
+     * cover). */
+    float fresh[6], cured[6];
+    blade_colours(s, fresh, cured);
     /* out of the growing season the green blades turn toward cured grass as the meadow's ground
      * does, and the herbs stand without flowers */
     double dormancy = meadow_dormancy(s->season_day);

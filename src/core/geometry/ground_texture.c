@@ -10,8 +10,9 @@
 #include "util/gradient_noise.h"
 #include "util/srgb.h"
 
-/* Measured mean albedos (linear RGB) of the kinds the terrain plugin has no colour for; the
- * sources are in docs/models/ground.md. */
+/* Measured mean albedos (linear RGB) of a temperate ground's kinds that no class stands for,
+ * used when the terrain plugin gives no palette (ABI 1.6); the sources are in
+ * docs/models/ground.md. */
 static const vec3 litter_albedo = {0.11f, 0.075f, 0.045f};   /* beech and spruce leaf litter */
 static const vec3 moss_albedo = {0.05f, 0.085f, 0.025f};     /* moss patches in the litter */
 static const vec3 soil_albedo = {0.16f, 0.115f, 0.08f};      /* dry loam */
@@ -48,6 +49,19 @@ static const noise_fbm landscape = {.wavelength = 2000.0, .octaves = 8, .gain = 
 
 static vec3 vec_of(const double v[3]) { return v3((float)v[0], (float)v[1], (float)v[2]); }
 
+/* The colours of litter, soil and their tints: the terrain's palette (its biome's), else a
+ * temperate ground's. */
+static void set_palette(ground_texture *g, const sylva_heightfield *hf)
+{
+    const sylva_ground_palette *p =
+        SYLVA_HAS_FIELD(hf, sylva_heightfield, palette) && hf->has_ground_palette ? &hf->palette : NULL;
+    g->albedo[GROUND_FOREST_FLOOR] = p ? vec_of(p->litter_albedo) : litter_albedo;
+    g->albedo[GROUND_SOIL] = p ? vec_of(p->soil_albedo) : soil_albedo;
+    g->moss = p ? vec_of(p->moss_albedo) : moss_albedo;
+    g->wet_soil = p ? vec_of(p->wet_soil_albedo) : wet_soil_albedo;
+    g->lichen = p ? vec_of(p->lichen_albedo) : lichen_albedo;
+}
+
 int ground_texture_build(const scene *s, ground_texture **out, err_buf *err)
 {
     *out = NULL;
@@ -63,12 +77,11 @@ int ground_texture_build(const scene *s, ground_texture **out, err_buf *err)
     g->map = m, g->hf = s->terrain;
     g->albedo[GROUND_MEADOW] = vec_of(r->grass_albedo);
     g->dry_grass = vec_of(r->dry_grass_albedo);
-    g->albedo[GROUND_FOREST_FLOOR] = litter_albedo;
-    g->albedo[GROUND_SOIL] = soil_albedo;
+    set_palette(g, s->terrain);
     g->albedo[GROUND_ROCK] = vec_of(r->rock_albedo);
     g->albedo[GROUND_SCREE] = vec_of(r->scree_albedo);
     g->albedo[GROUND_SNOW] = vec_of(r->snow_albedo);
-    g->albedo[GROUND_WATER] = wet_soil_albedo;
+    g->albedo[GROUND_WATER] = g->wet_soil;
     /* the image's colour beyond the footprint: the mean of a regular sample of its texels */
     uint32_t iw, ih;
     double texel, sum[3] = {0, 0, 0};
@@ -98,9 +111,9 @@ static vec3 hue_target(const ground_texture *g, ground_kind k)
 {
     switch (k) {
     case GROUND_MEADOW: return g->dry_grass;
-    case GROUND_FOREST_FLOOR: return moss_albedo;
-    case GROUND_SOIL: return wet_soil_albedo;
-    case GROUND_ROCK: return lichen_albedo;
+    case GROUND_FOREST_FLOOR: return g->moss;
+    case GROUND_SOIL: return g->wet_soil;
+    case GROUND_ROCK: return g->lichen;
     case GROUND_SCREE: return g->albedo[GROUND_ROCK];
     default: return g->albedo[k];
     }

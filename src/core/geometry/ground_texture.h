@@ -23,6 +23,7 @@ typedef struct ground_texture {
     const sylva_heightfield *hf; /* the scene's terrain; borrowed */
     vec3 albedo[GROUND_KINDS];   /* mean linear RGB albedo of each kind */
     vec3 dry_grass;              /* the meadow's albedo where it is dry */
+    vec3 moss, wet_soil, lichen; /* the tints of litter, soil and rock (the terrain's palette) */
     vec3 beyond;                 /* the image's colour beyond the footprint (the mean of 64 x 64
                                     of its texels, decoded) */
 } ground_texture;

@@ -72,6 +72,7 @@ typedef struct site_settings {
     const char *crs_wkt;    /* the site's projected CRS as WKT, or NULL: local metres only */
     const char *crs_name;   /* its short name for messages (e.g. "WGS 84 / UTM zone 14N"), or NULL */
     double origin[3];       /* map coordinates of the local origin */
+    double latitude_deg;    /* degrees north (WGS 84) of the origin; meaningful with crs_wkt only */
 } site_settings;
 
 /* The Earth under a site (docs/models/curvature.md): camera rays bend so that a point at

@@ -159,6 +159,12 @@ static sylva_species_info *ecology_species(const scene *s, const scene_file *sf,
     return info;
 }
 
+/* The site origin's latitude for a plugin's request (ABI 1.6): NaN without a site. */
+static double site_latitude(const scene_file *sf)
+{
+    return sf->site.crs_wkt ? sf->site.latitude_deg : NAN;
+}
+
 int plugin_call_open_ecology(plugin_call *c, const scene_file *sf, scene *s, const plugin_registry *reg,
                              const plugin_call_output *out, err_buf *err)
 {
@@ -168,7 +174,8 @@ int plugin_call_open_ecology(plugin_call *c, const scene_file *sf, scene *s, con
     if (!(c->species_info = ecology_species(s, sf, err))) return -1;
     uint64_t seed = part_seed(sf, "ecology");
     c->ecology = (sylva_ecology_request){.size = sizeof c->ecology, .seed = seed, .terrain = s->surveyed,
-                                         .species = c->species_info, .n_species = sf->n_species};
+                                         .species = c->species_info, .n_species = sf->n_species,
+                                         .site_latitude = site_latitude(sf)};
     if (call_open(c, s, reg, es->plugin, SYLVA_KIND_ECOLOGY, es->params, seed, out, err)) {
         plugin_call_close(c);
         return -1;
@@ -201,7 +208,7 @@ int plugin_call_terrain(plugin_call *c, int surveyed, int at_development, err_bu
     sylva_terrain_request req = {.size = sizeof req, .seed = c->host.seed, .site_crs = sf->site.crs_wkt,
                                  .site_origin = {sf->site.origin[0], sf->site.origin[1], sf->site.origin[2]},
                                  .eye = {sf->camera.position[0], sf->camera.position[1], sf->camera.position[2]},
-                                 .surveyed = surveyed};
+                                 .surveyed = surveyed, .site_latitude = site_latitude(sf)};
     if (at_development) development_centre(sf, req.eye);
     else if (!sf->has_camera) req.eye[0] = req.eye[1] = req.eye[2] = NAN; /* no eye: the footprint's centre */
     sylva_terrain_out out = {.size = sizeof out};

@@ -54,6 +54,19 @@ static int origin_from_dtm(loader *L, const ynode *dtm, const char *path, const 
     return 0;
 }
 
+/* The latitude of the site origin, which the terrain's biome and the ecology's sun path read. */
+static int origin_latitude(loader *L, const ynode_pair *pr, site_settings *site)
+{
+    double lonlat[2];
+    err_buf why = {{0}};
+    if (site_frame_to_lonlat(L->site, site->origin[0], site->origin[1], lonlat, &why))
+        return sf_located(L->err, L->file, pr->key_line, pr->key_column,
+                          "the site origin has no latitude: %s; give an origin inside the CRS's area",
+                          err_sentence(&why));
+    site->latitude_deg = lonlat[1];
+    return 0;
+}
+
 static int read_site(loader *L, const ynode_pair *pr, site_dtm *d)
 {
     const sylva_params *p;
@@ -98,11 +111,11 @@ static int read_site(loader *L, const ynode_pair *pr, site_dtm *d)
     site->crs_wkt = arena_strdup(L->a, site_frame_wkt(L->site));
     site->crs_name = arena_strdup(L->a, site_frame_name(L->site));
     if (!site->crs_wkt || !site->crs_name) return sf_out_of_memory(L);
-    if (origin->is_set) {
+    if (origin->is_set)
         for (uint32_t k = 0; k < origin->len; k++) site->origin[k] = origin->list[k];
-        return 0;
-    }
-    return origin_from_dtm(L, dtm, path, d, site->origin);
+    else if (origin_from_dtm(L, dtm, path, d, site->origin))
+        return -1;
+    return origin_latitude(L, pr, site);
 }
 
 int sf_read_site(loader *L)

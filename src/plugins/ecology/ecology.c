@@ -15,6 +15,7 @@
 
 #include "plugin_threads.h"
 #include "eco_schema.h"
+#include "eco_latitude.h"
 #include "eco_sim.h"
 #include "plugin_host.h"
 #include "plugin_params.h"
@@ -57,7 +58,13 @@ static int run_start(const eco_plugin_state *st, const sylva_host_api *api, sylv
     eco_random rnd = host_random(&h);
     plugin_err err = {0};
     plugin_params located = plugin_params_open(api, host, &st->located);
-    int rc = eco_sim_new(&rnd, &located, &st->cfg, st->only, req, out, &err);
+    eco_config cfg = st->cfg;
+    const char *whence;
+    int given = plugin_param_given(&located, "latitude");
+    if (located.status) return located.status;
+    cfg.factors.latitude_deg = eco_latitude_for(cfg.factors.latitude_deg, given, req, &whence);
+    api->log(host, SYLVA_LOG_INFO, "ecology: the sun's path at latitude %.2f (%s)", cfg.factors.latitude_deg, whence);
+    int rc = eco_sim_new(&rnd, &located, &cfg, st->only, req, out, &err);
     return rc ? plugin_params_report(&located, &err) : SYLVA_OK;
 }
 
@@ -204,7 +211,7 @@ static int eco_generate(void *state, const sylva_host_api *api, sylva_host *host
     const eco_plugin_state *st = state;
     const sylva_ecology_request *req = request;
     sylva_ecology_out *o = out;
-    if (!req || req->size < sizeof *req || !o || o->size < sizeof *o)
+    if (!req || req->size < SYLVA_FIELD_END(sylva_ecology_request, n_species) || !o || o->size < sizeof *o)
         return api->error(host, "the ecology request or output is smaller than this plugin expects");
     o->n_plants = 0;
     eco_sim *sim = NULL;
@@ -225,7 +232,7 @@ static int run_new(void *state, const sylva_host_api *api, sylva_host *host, con
 {
     *run = NULL;
     const eco_plugin_state *st = state;
-    if (!st || !req || req->size < sizeof *req)
+    if (!st || !req || req->size < SYLVA_FIELD_END(sylva_ecology_request, n_species))
         return api->error(host, "run_new needs the plugin's state and a request");
     sylva_ecology_run *r = calloc(1, sizeof *r);
     if (!r) {

@@ -13,6 +13,9 @@ static const char *const method_choices[] = {"random", "deterministic", NULL};
 static const char *const units_choices[] = {"auto", "metres", "degrees", NULL};
 static const char *const surface_choices[] = {"classes", "scene", NULL};
 static const char *const beyond_edge_choices[] = {"flat", "void", NULL};
+/* auto, then the biomes in ifs_biome order */
+static const char *const biome_choices[] = {"auto", "temperate", "mediterranean", "semi_arid", "prairie",
+                                            "boreal", "alpine", NULL};
 
 static const double def_generated_nodes[] = {17, 17};
 static const double def_centre[] = {0, 0};
@@ -129,6 +132,11 @@ const sylva_param_spec terrain_ifs_params[] = {
     {.name = "surface", .type = SYLVA_P_ENUM, .def_str = "classes", .choices = surface_choices,
      .help = "classes: grass, dry grass, scree, rock and snow by slope, altitude and humidity; "
              "scene: the terrain's material from the scene everywhere."},
+    {.name = "biome", .type = SYLVA_P_ENUM, .def_str = "auto", .choices = biome_choices,
+     .help = "The ground's colours, scree and rock slopes and the dryness of its snow line: "
+             "temperate meadow, Mediterranean scrub, semi-arid shrubland, prairie, boreal forest or "
+             "alpine tundra; auto: by the site's latitude (temperate without a site). Any key "
+             "below that the scene gives wins over the biome's."},
     {.name = "water_altitude", .type = SYLVA_P_REAL, .flags = RANGE, .def = 0, .min = -100000,
      .max = 100000, .unit = "m",
      .help = "Height of a water surface in metres of the DTM's heights (after z_scale and "
@@ -139,11 +147,13 @@ const sylva_param_spec terrain_ifs_params[] = {
     {.name = "snow_altitude", .type = SYLVA_P_REAL, .flags = RANGE,
      .def = TERRAIN_IFS_DEFAULT_SNOW_ALTITUDE, .min = -100000, .max = 100000, .unit = "m",
      .help = "Height above which snow lies (on slopes below rock_slope), metres of the DTM's "
-             "heights; the default is about the summer snow line of the Alps."},
+             "heights; leave out: the summer snow line at the site's latitude (the Alps' 2800 m "
+             "without a site), higher in a dry biome."},
     {.name = "scree_altitude", .type = SYLVA_P_REAL, .flags = RANGE,
      .def = TERRAIN_IFS_DEFAULT_SCREE_ALTITUDE, .min = -100000, .max = 100000, .unit = "m",
-     .help = "Height above which grass gives way to scree, metres of the DTM's heights; the "
-             "default is about the upper limit of closed alpine grassland."},
+     .help = "Height above which grass gives way to scree, metres of the DTM's heights; leave "
+             "out: the upper limit of closed alpine grassland, 300 m above the tree line at the "
+             "site's latitude (the Alps' 2300 m without a site)."},
     {.name = "snow_line", .type = SYLVA_P_REAL, .flags = RANGE, .def = 0.8, .min = 0, .max = 2,
      .help = "Older form of snow_altitude: a normalised altitude over the DTM's height range "
              "(used only when given)."},
@@ -151,9 +161,11 @@ const sylva_param_spec terrain_ifs_params[] = {
      .help = "Older form of scree_altitude: a normalised altitude over the DTM's height range "
              "(used only when given)."},
     {.name = "scree_slope", .type = SYLVA_P_REAL, .flags = RANGE, .def = 30, .min = 0, .max = 90,
-     .unit = "deg", .help = "Slope from which the ground is scree."},
+     .unit = "deg", .help = "Slope from which the ground is scree; the default is the biome's (30 "
+     "temperate, 40 Mediterranean, 38 semi-arid)."},
     {.name = "rock_slope", .type = SYLVA_P_REAL, .flags = RANGE, .def = 42, .min = 0, .max = 90,
-     .unit = "deg", .help = "Slope from which the ground is bare rock."},
+     .unit = "deg", .help = "Slope from which the ground is bare rock; the default is the biome's "
+     "(42 temperate)."},
     {.name = "humidity_map", .type = SYLVA_P_PATH,
      .help = "Raster of humidity whose pixels tile the terrain's footprint, north up (e.g. the "
              "humidity.png of sylva factors); grass below dry_humidity is dry."},

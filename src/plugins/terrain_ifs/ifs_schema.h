@@ -8,7 +8,7 @@
 
 #include "sylva/plugin.h"
 
-#define TERRAIN_IFS_N_PARAMS 45u
+#define TERRAIN_IFS_N_PARAMS 46u
 extern const sylva_param_spec terrain_ifs_params[TERRAIN_IFS_N_PARAMS];
 
 /* Defaults the plugin needs beside the schema. */

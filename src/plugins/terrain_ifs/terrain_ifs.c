@@ -25,6 +25,7 @@
 #include "ifs_chaos.h"
 #include "ifs_detail.h"
 #include "ifs_eval.h"
+#include "ifs_ground.h"
 #include "ifs_maps.h"
 #include "surface_classes.h"
 #include "sylva/plugin.h"
@@ -66,6 +67,8 @@ typedef struct terrain_ifs_state {
     float *humidity;             /* owned (host allocator): humidity at each output node, or NULL */
     float albedo[IFS_SURFACE_CLASSES][3];
     float water_albedo[3];
+    ifs_ground ground;           /* the biome and what it put in rules and albedo (ifs_ground.h) */
+    double latitude;             /* the site's (ABI 1.6 request), NaN without one */
     char source[512];            /* what the DTM is, for the log */
     const sylva_params *params;  /* create()'s, valid until destroy (the host's promise) */
     int georeferenced;           /* 1: the DTM file's node (0, 0) is at node0 in its CRS */
@@ -85,7 +88,7 @@ static int is_whole(double v) { return v == floor(v) && isfinite(v); }
 
 /* Parameters that only one DTM source or one setting reads. */
 static const char *const file_only[] = {"band", "crop", "step", "units"};
-static const char *const classes_only[] = {"snow_line", "scree_line", "snow_altitude",
+static const char *const classes_only[] = {"biome", "snow_line", "scree_line", "snow_altitude",
                                            "scree_altitude", "scree_slope", "rock_slope",
                                            "humidity_map", "humidity_band", "humidity_range",
                                            "dry_humidity", "grass_albedo",
@@ -343,25 +346,14 @@ static int check_relations(plugin_params *r)
         return plugin_params_error(r, "scree_line", "scree_line %g is above snow_line %g; "
                                    "scree lies below the snow", plugin_param_real(r, "scree_line"),
                                    plugin_param_real(r, "snow_line"));
-    if (!is_set(r, "scree_line") && !is_set(r, "snow_line") &&
+    if (!is_set(r, "scree_line") && !is_set(r, "snow_line") && is_set(r, "scree_altitude") &&
+        is_set(r, "snow_altitude") &&
         plugin_param_real(r, "scree_altitude") > plugin_param_real(r, "snow_altitude"))
         return plugin_params_error(r, "scree_altitude", "scree_altitude %g m is above "
                                    "snow_altitude %g m; scree lies below the snow",
                                    plugin_param_real(r, "scree_altitude"),
                                    plugin_param_real(r, "snow_altitude"));
     return SYLVA_OK;
-}
-
-/* A height in metres from parameter `metres`, or from the older `fraction` of the DTM's height
- * range [zmin, zmax] when that is given. A fraction on a flat DTM: its height when the fraction
- * is 0, above every height otherwise (all points had normalised altitude 0). */
-static double height_of(plugin_params *r, const char *metres, const char *fraction, double zmin,
-                        double zmax)
-{
-    if (!is_set(r, fraction)) return plugin_param_real(r, metres);
-    double f = plugin_param_real(r, fraction);
-    if (!(zmax > zmin)) return f > 0 ? INFINITY : zmin;
-    return zmin + f * (zmax - zmin);
 }
 
 static void read_albedo(plugin_params *r, const char *name, float out[3])
@@ -438,20 +430,18 @@ static int terrain_setup(plugin_params *r, terrain_ifs_state *s, const char *tar
     double zmin, zmax;
     ifs_dtm_range(d, &zmin, &zmax);
     s->zmin = zmin, s->zmax = zmax;
-    s->rules.snow_z = height_of(r, "snow_altitude", "snow_line", zmin, zmax);
-    s->rules.scree_z = height_of(r, "scree_altitude", "scree_line", zmin, zmax);
+    ifs_ground_resolve(r, s->latitude, zmin, zmax, &s->ground);
+    if (s->ground.biome_auto && isfinite(s->latitude) && r->api)
+        r->api->log(r->host, SYLVA_LOG_WARN, "biome '%s' picked from the site's latitude (%.2f) alone; "
+                    "the same latitude holds deserts, scrub, prairie and humid woods: give the terrain's "
+                    "biome: (temperate, mediterranean, semi_arid, prairie, boreal or alpine)",
+                    ifs_biome_preset_of(s->ground.biome)->name, s->latitude);
+    s->rules = s->ground.rules;
+    memcpy(s->albedo, s->ground.albedo, sizeof s->albedo);
     s->has_water = is_set(r, "water_altitude") || plugin_param_real(r, "water_level") > 0;
     s->water_z = is_set(r, "water_level")
                      ? zmin + plugin_param_real(r, "water_level") * (zmax - zmin)
                      : plugin_param_real(r, "water_altitude");
-    s->rules.scree_slope = plugin_param_real(r, "scree_slope");
-    s->rules.rock_slope = plugin_param_real(r, "rock_slope");
-    s->rules.dry_humidity = plugin_param_real(r, "dry_humidity");
-    read_albedo(r, "grass_albedo", s->albedo[IFS_SURFACE_GRASS]);
-    read_albedo(r, "dry_grass_albedo", s->albedo[IFS_SURFACE_DRY_GRASS]);
-    read_albedo(r, "scree_albedo", s->albedo[IFS_SURFACE_SCREE]);
-    read_albedo(r, "rock_albedo", s->albedo[IFS_SURFACE_ROCK]);
-    read_albedo(r, "snow_albedo", s->albedo[IFS_SURFACE_SNOW]);
     read_albedo(r, "water_albedo", s->water_albedo);
     const char *hum = plugin_param_str(r, "humidity_map");
     const sylva_value *hrange = plugin_param(r, "humidity_range");
@@ -624,6 +614,8 @@ static int report_ground_rules(const terrain_ifs_state *s, const sylva_host_api 
         hf->ground.rock_albedo[k] = s->albedo[IFS_SURFACE_ROCK][k];
         hf->ground.snow_albedo[k] = s->albedo[IFS_SURFACE_SNOW][k];
     }
+    if (SYLVA_HAS_FIELD(hf, sylva_heightfield, palette))
+        hf->has_ground_palette = 1, hf->palette = s->ground.palette;
     if (!s->humidity) return SYLVA_OK;
     size_t n = (size_t)hf->nx * hf->ny;
     hf->humidity = api->mem_alloc(n * sizeof *hf->humidity);
@@ -667,6 +659,11 @@ static int apply_surface(const terrain_ifs_state *s, const sylva_host_api *api, 
     api->log(host, SYLVA_LOG_INFO, "ground: %.1f%% grass, %.1f%% dry grass, %.1f%% scree, "
              "%.1f%% rock, %.1f%% snow", 100.0 * counts[0] / n, 100.0 * counts[1] / n,
              100.0 * counts[2] / n, 100.0 * counts[3] / n, 100.0 * counts[4] / n);
+    char biome[96];
+    ifs_ground_describe(&s->ground, s->latitude, biome, sizeof biome);
+    api->log(host, SYLVA_LOG_INFO, "ground of biome %s: snow from %.0f m, scree from %.0f m and "
+             "%.0f deg, rock from %.0f deg", biome, s->rules.snow_z, s->rules.scree_z,
+             s->rules.scree_slope, s->rules.rock_slope);
     if ((rc = report_ground_rules(s, api, host, hf))) return rc;
     if (s->has_water) {
         sylva_material_desc w = {.size = sizeof w, .name = "terrain_ifs water",
@@ -837,6 +834,7 @@ static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_ho
     int placed = 0, rc;
     plugin_params r = plugin_params_open(api, host, s->params);
     const int site = req && SYLVA_HAS_FIELD(req, sylva_terrain_request, eye) && req->site_crs;
+    s->latitude = req && SYLVA_HAS_FIELD(req, sylva_terrain_request, site_latitude) ? req->site_latitude : NAN;
     if (!s->dtm && (rc = terrain_setup(&r, s, site ? req->site_crs : NULL))) return rc;
     if (site) site_place(s, &r, req, &placed);
     if (r.status) return r.status; /* the host has the sentence */

@@ -99,7 +99,7 @@ TEST(descriptor_and_schema)
     err_buf err;
     const loaded_plugin *lp = plugin_registry_find(reg, "terrain_ifs", SYLVA_KIND_TERRAIN, &err);
     if (lp) {
-        CHECK_INT(lp->desc->n_params, 45);
+        CHECK_INT(lp->desc->n_params, 46);
         CHECK(plugin_schema_check(lp->desc->params, lp->desc->n_params, &err) == 0);
         CHECK_STR_CONTAINS(lp->desc->summary, "IFS");
     }

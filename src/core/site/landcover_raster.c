@@ -1,6 +1,7 @@
 /* landcover_raster.c — a classified raster sampled at the site grid's nodes: each node's map
  * coordinates in the raster's CRS, the cell holding them (the nearest class; classes are never
- * interpolated), read from one window covering every node that falls on the raster. The
+ * interpolated), read from the window covering every node that falls on the raster, a strip of
+ * rows at a time so that a fine map under a large site never has to be held whole. The
  * raster's category names (its .aux.xml, GDAL's category names, or a name column of its
  * attribute table) come with the codes. */
 #include "site/landcover_codes.h"
@@ -47,30 +48,50 @@ static cell_window cells_of_nodes(const double inv[6], int w, int h, double *x, 
     return win;
 }
 
-/* Reads the window of band into codes per node (col in x, row in y). */
+#define STRIP_BYTES ((size_t)64 << 20) /* the most of the map held at once */
+
+/* A strip of the window: rows [r0, r0 + rows) of its cells, ww a row, from column c0. */
+typedef struct cell_strip {
+    const int32_t *cells;
+    long r0, rows, c0;
+    size_t ww;
+} cell_strip;
+
+/* The codes of the nodes whose cells lie in the strip (col in x, row in y). */
+static void sample_strip(const cell_strip *st, GDALRasterBandH band, const double *x, const double *y,
+                         landcover_codes *c, size_t n)
+{
+    int has_nodata = 0;
+    double nodata = GDALGetRasterNoDataValue(band, &has_nodata);
+    for (size_t k = 0; k < n; k++) {
+        if (x[k] < 0 || y[k] < st->r0 || y[k] >= st->r0 + st->rows) continue;
+        int32_t v = st->cells[(size_t)((long)y[k] - st->r0) * st->ww + (size_t)((long)x[k] - st->c0)];
+        c->covered++;
+        if (!(has_nodata && (double)v == nodata)) c->code[k] = v;
+    }
+}
+
+/* Reads the window of band, a strip of rows at a time, into codes per node (col in x, row in y). */
 static int sample_window(GDALRasterBandH band, const cell_window *win, const double *x, const double *y,
                          landcover_codes *c, size_t n, err_buf *err)
 {
     size_t ww = (size_t)(win->c1 - win->c0 + 1), wh = (size_t)(win->r1 - win->r0 + 1);
-    if (memory_check(ww * wh * sizeof(int32_t), "the land-cover map's window over the site", err)) return -1;
-    int32_t *cells = malloc(ww * wh * sizeof *cells); /* freed below */
-    if (!cells) return err_nomem(err, "out of memory reading %zu x %zu cells of the land-cover map", ww, wh);
-    if (GDALRasterIO(band, GF_Read, (int)win->c0, (int)win->r0, (int)ww, (int)wh, cells, (int)ww, (int)wh,
-                     GDT_Int32, 0, 0) != CE_None) {
-        free(cells);
-        return err_set(err, "GDAL cannot read the land-cover map's cells: %s", CPLGetLastErrorMsg());
-    }
-    int has_nodata = 0;
-    double nodata = GDALGetRasterNoDataValue(band, &has_nodata);
-    for (size_t k = 0; k < n; k++) {
-        c->code[k] = LANDCOVER_NO_CODE;
-        if (x[k] < 0) continue;
-        int32_t v = cells[(size_t)((long)y[k] - win->r0) * ww + (size_t)((long)x[k] - win->c0)];
-        c->covered++;
-        if (!(has_nodata && (double)v == nodata)) c->code[k] = v;
+    size_t rows = STRIP_BYTES / (ww * sizeof(int32_t));
+    rows = rows < 1 ? 1 : rows > wh ? wh : rows;
+    if (memory_check(ww * rows * sizeof(int32_t), "the land-cover map's cells under the site", err)) return -1;
+    int32_t *cells = malloc(ww * rows * sizeof *cells); /* freed below */
+    if (!cells) return err_nomem(err, "out of memory reading %zu x %zu cells of the land-cover map", ww, rows);
+    for (size_t k = 0; k < n; k++) c->code[k] = LANDCOVER_NO_CODE;
+    int rc = 0;
+    for (long r = win->r0; !rc && r <= win->r1; r += (long)rows) {
+        cell_strip st = {cells, r, win->r1 - r + 1 < (long)rows ? win->r1 - r + 1 : (long)rows, win->c0, ww};
+        if (GDALRasterIO(band, GF_Read, (int)win->c0, (int)r, (int)ww, (int)st.rows, cells, (int)ww, (int)st.rows,
+                         GDT_Int32, 0, 0) != CE_None)
+            rc = err_set(err, "GDAL cannot read the land-cover map's cells: %s", CPLGetLastErrorMsg());
+        else sample_strip(&st, band, x, y, c, n);
     }
     free(cells);
-    return 0;
+    return rc;
 }
 
 /* The names of the band's categories: GDAL's category names (a PAM .aux.xml's among them),

@@ -170,6 +170,7 @@ static int read_layer(OGRLayerH layer, int field, const landcover_grid *g, landc
     OGRSpatialReferenceH srs = OGR_L_GetSpatialRef(layer), site = NULL;
     if (!srs) return err_set(err, "its layer '%s' names no CRS", OGR_L_GetName(layer));
     OGRSpatialReferenceH map = OSRClone(srs);
+    if (!map) return err_nomem(err, "out of memory for the polygons' CRS");
     OSRSetAxisMappingStrategy(map, OAMS_TRADITIONAL_GIS_ORDER);
     OGREnvelope e;
     if (OGR_L_GetExtent(layer, &e, 1) == OGRERR_NONE)

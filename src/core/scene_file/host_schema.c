@@ -21,7 +21,8 @@
 
 const char *const host_sections[] = {"image",   "site",    "camera",  "sun",     "sky",     "materials",
                                      "terrain", "species", "plants",  "ecology", "groups",  "objects",
-                                     "earth",   "viewpoints", "ztv",     "photo",   "ground_cover", "season",  "snow",    "landcover", NULL};
+                                     "earth",   "viewpoints", "ztv",     "photo",   "ground_cover", "season",  "snow",
+                                     "landcover", NULL};
 
 const char *const host_shape_names[] = {"mesh", "box", "sphere", "quad", "disk", NULL};
 const char *const host_sky_models[] = {"none", "constant", "preetham", "physical", NULL};

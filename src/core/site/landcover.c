@@ -13,7 +13,8 @@ static int check_raster(GDALDatasetH ds, err_buf *err)
     double gt[6];
     if (GDALGetRasterCount(ds) < 1) return err_set(err, "it has no raster band");
     if (GDALGetGeoTransform(ds, gt) != CE_None) return err_set(err, "it has no georeferencing (no geotransform)");
-    if (!GDALGetSpatialRef(ds)) return err_set(err, "it names no CRS (a .prj or .aux.xml beside it, or the file's own)");
+    if (!GDALGetSpatialRef(ds))
+        return err_set(err, "it names no CRS (a .prj or .aux.xml beside it, or the file's own)");
     return 0;
 }
 

@@ -26,8 +26,9 @@
 int landcover_check(const landcover_source *src, landcover_fault *fault, err_buf *err);
 
 /* Reads the map onto the grid. warnings: where the codes the legend lacks are reported, summary:
- * where the one line on the map, its legend and the kinds' shares goes (either NULL: none). Returns the land cover, or NULL with err set (no place): a map
- * that covers none of the grid, a file GDAL cannot read, out of memory, over the budget. */
+ * where the one line on the map, its legend and the kinds' shares goes (either NULL: none).
+ * Returns the land cover, or NULL with err set (no place): a map that covers none of the grid, a
+ * file GDAL cannot read, out of memory, over the budget. */
 land_cover *landcover_read(const landcover_source *src, const landcover_grid *grid, FILE *warnings,
                           FILE *summary, err_buf *err);
 

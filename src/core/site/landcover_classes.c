@@ -175,7 +175,8 @@ static void print_summary(FILE *log, const land_cover *lc, const char *why, size
     char shares[1024], a[32], b[32];
     kind_shares(lc, shares, sizeof shares);
     fprintf(log, "sylva: landcover: %s, legend %s (%s), %u class%s, %s nodes on the site grid (%s with no data)%s%s\n",
-            lc->source, lc->legend, why, lc->n_classes, lc->n_classes == 1 ? "" : "es", grouped(nodes, a), grouped(lc->no_data, b),
+            lc->source, lc->legend, why, lc->n_classes, lc->n_classes == 1 ? "" : "es", grouped(nodes, a),
+            grouped(lc->no_data, b),
             shares[0] ? "; " : "", shares);
 }
 

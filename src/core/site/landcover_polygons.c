@@ -153,7 +153,8 @@ static int burn(const landcover_grid *g, burn_list *b, landcover_codes *c, err_b
     GDALDatasetH ds = node_grid(g);
     if (!ds) return err_nomem(err, "out of memory for the site grid's polygons");
     int band = 1, rc = 0;
-    if (b->n && GDALRasterizeGeometries(ds, 1, &band, b->n, b->geoms, NULL, NULL, b->codes, NULL, NULL, NULL) != CE_None)
+    if (b->n &&
+        GDALRasterizeGeometries(ds, 1, &band, b->n, b->geoms, NULL, NULL, b->codes, NULL, NULL, NULL) != CE_None)
         rc = err_set(err, "GDAL cannot burn its polygons onto the site grid: %s", CPLGetLastErrorMsg());
     GDALRasterBandH rb = GDALGetRasterBand(ds, 1);
     for (uint32_t j = 0; !rc && j < g->ny; j++)
@@ -201,7 +202,9 @@ int landcover_polygon_codes(const landcover_source *src, const landcover_grid *g
     int field;
     landcover_fault fault;
     OGRLayerH layer = ds ? landcover_polygon_layer(ds, src, &field, &fault, err) : NULL;
-    int rc = !ds ? err_set(err, "it is not a vector file OGR reads") : !layer ? -1 : read_layer(layer, field, g, c, err);
+    int rc = !ds      ? err_set(err, "it is not a vector file OGR reads")
+             : !layer ? -1
+                      : read_layer(layer, field, g, c, err);
     gdal_offline_close(ds, &off);
     return rc;
 }

@@ -6,6 +6,7 @@
 #include <gdal.h>
 #include <ogr_srs_api.h>
 
+#include "geotiff_fixture.h"
 #include "harness.h"
 #include "plugin/plugin_host.h"
 #include "scene/heightfield.h"
@@ -91,17 +92,9 @@ TEST(utm_zones)
 static const char *write_dtm(const char *name, int epsg, double x0, double y0, double cell)
 {
     static char path_copy[1200]; /* work_path's buffer is reused by the next work file */
-    GDALAllRegister();
-    GDALDriverH drv = GDALGetDriverByName("GTiff");
     const char *path = strcpy(path_copy, work_path(name));
-    GDALDatasetH ds = drv ? GDALCreate(drv, path, 21, 11, 1, GDT_Float32, NULL) : NULL;
+    GDALDatasetH ds = geotiff_create(path, epsg, x0, y0, cell, 21, 11, GDT_Float32);
     if (!ds) return NULL;
-    double t[6] = {x0, cell, 0, y0, 0, -cell};
-    GDALSetGeoTransform(ds, t);
-    OGRSpatialReferenceH srs = OSRNewSpatialReference(NULL);
-    OSRImportFromEPSG(srs, epsg);
-    GDALSetSpatialRef(ds, srs);
-    OSRDestroySpatialReference(srs);
     float row[21];
     for (int j = 0; j < 11; j++) {
         for (int i = 0; i < 21; i++) row[i] = (float)(500 + 3 * i + 2 * j);

@@ -20,7 +20,8 @@ static const char probe_about[] =
     "Prints what is at one point of SCENE's ground: the terrain's height, slope and aspect\n"
     "there, whether water covers it, the plants standing within a radius (species, height,\n"
     "distance, position; nearest first) and the objects whose footprint covers it (with\n"
-    "their top above the point). The scene is built as for rendering (plugins run).\n\n"
+    "their top above the point), and its land-cover class (code, name, kind) when the scene\n"
+    "has a landcover: section. The scene is built as for rendering (plugins run).\n\n"
     "E N are map coordinates in the site's CRS when the scene has a site (local = map -\n"
     "site origin), local metres otherwise; positions and heights are printed the same way.\n";
 
@@ -67,6 +68,19 @@ static const char *compass_name(double deg)
     return names[(int)floor(fmod(deg + 22.5, 360.0) / 45.0) % 8];
 }
 
+/* The land-cover class at the point: its code, name and kind (only when the scene has land cover). */
+static void print_land_cover(const scene *sc, const probe_result *r)
+{
+    const land_cover *lc = sc->land_cover;
+    if (!lc) return;
+    if (r->land_class < 0) {
+        printf("landcover   no data (%s has no class here)\n", lc->source);
+        return;
+    }
+    const land_class *c = &lc->classes[r->land_class];
+    printf("landcover   %lld %s (%s; legend %s)\n", (long long)c->code, c->name, land_kind_names[c->kind], lc->legend);
+}
+
 static void print_result(const scene *sc, const probe_result *r, const double shift[3], const char *frame,
                          double radius)
 {
@@ -78,6 +92,7 @@ static void print_result(const scene *sc, const probe_result *r, const double sh
         printf("water       yes: level %.3f m, %.3f m deep\n", r->water_level + shift[2], r->water_depth);
     else
         printf("water       no\n");
+    print_land_cover(sc, r);
     printf("plants      %u within %g m\n", r->n_plants, radius);
     if (r->n_plants)
         printf("  %-24s %10s %10s %14s %14s %10s   (%s)\n", "species", "height_m", "distance_m", "x", "y", "z", frame);

@@ -12,6 +12,7 @@
 
 #include <stdint.h>
 
+#include "scene/land_cover.h"
 #include "scene/mesh.h"
 #include "scene/scene_settings.h"
 #include "util/err.h"
@@ -95,6 +96,8 @@ typedef struct scene {
                                    terrain for an inline grid, a scene built for an analysis
                                    (build_options.analysis), and a terrain plugin older than
                                    ABI 1.5, which cannot tell it apart (docs/models/terrain_ifs.md) */
+    land_cover *land_cover;     /* owned, or NULL: the class of each surveyed node from the
+                                   scene's land-cover map (landcover: section) */
     int32_t terrain_material;   /* default material of terrain nodes without one */
     int32_t water_material;
 

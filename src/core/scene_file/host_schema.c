@@ -9,6 +9,9 @@
 #include <stddef.h>
 #include <string.h>
 
+#include "scene/land_cover.h"
+#include "site/landcover_legend.h"
+
 #define COUNT(a) ((uint32_t)(sizeof(a) / sizeof((a)[0])))
 #define MIN SYLVA_PARAM_HAS_MIN
 #define MAX SYLVA_PARAM_HAS_MAX
@@ -18,7 +21,8 @@
 
 const char *const host_sections[] = {"image",   "site",    "camera",  "sun",     "sky",     "materials",
                                      "terrain", "species", "plants",  "ecology", "groups",  "objects",
-                                     "earth",   "viewpoints", "ztv",     "photo",   "ground_cover", "season",  "snow",    NULL};
+                                     "earth",   "viewpoints", "ztv",     "photo",   "ground_cover", "season",  "snow",
+                                     "landcover", NULL};
 
 const char *const host_shape_names[] = {"mesh", "box", "sphere", "quad", "disk", NULL};
 const char *const host_sky_models[] = {"none", "constant", "preetham", "physical", NULL};
@@ -400,6 +404,33 @@ static const sylva_param_spec photo_params[] = {
 const host_schema host_schema_photo = {"photo", "The photograph of a photomontage (sylva montage).", photo_params,
                                        COUNT(photo_params)};
 
+/* --- landcover ------------------------------------------------------------------------------ */
+static const sylva_param_spec landcover_class_params[] = {
+    {.name = "code", .type = SYLVA_P_INT, .flags = REQ | MIN | MAX, .min = -2147483647.0, .max = 2147483647.0,
+     .help = "The map's code of the class (a text class field's names are numbered 1, 2, ... "
+             "alphabetically)."},
+    {.name = "name", .type = SYLVA_P_STRING, .help = "The class's name (default: the legend's)."},
+    {.name = "kind", .type = SYLVA_P_ENUM, .def_str = "unknown", .choices = land_kind_names,
+     .help = "What the ground of the class is (default: the legend's kind, else unknown)."},
+};
+static const sylva_param_spec landcover_params[] = {
+    {.name = "raster", .type = SYLVA_P_PATH,
+     .help = "A classified raster GDAL reads (a code per cell), in any CRS."},
+    {.name = "polygons", .type = SYLVA_P_PATH,
+     .help = "Polygons OGR reads (GeoPackage, Shapefile, GeoJSON), classed by class_field."},
+    {.name = "layer", .type = SYLVA_P_STRING, .help = "The polygons' layer (default: the file's first)."},
+    {.name = "class_field", .type = SYLVA_P_STRING,
+     .help = "The polygons' attribute holding the class: a code, or a class name."},
+    {.name = "legend", .type = SYLVA_P_ENUM, .def_str = "auto", .choices = landcover_legend_choices,
+     .help = "What the codes mean: auto, nlcd2011, corine, or names (the class names the map carries)."},
+    {.name = "classes", .type = SYLVA_P_GROUP_LIST, .max_len = LAND_COVER_MAX_CLASSES,
+     .group = landcover_class_params, .n_group = COUNT(landcover_class_params),
+     .help = "Classes that replace or extend the legend's: a list of {code, name, kind}."},
+};
+const host_schema host_schema_landcover = {
+    "landcover", "The site's land-cover map: a class per node of the ground as surveyed.", landcover_params,
+    COUNT(landcover_params)};
+
 /* --- materials ------------------------------------------------------------------------------ */
 static const sylva_param_spec material_params[] = {
     {.name = "type", .type = SYLVA_P_ENUM, .def_str = "lambert", .choices = host_material_types,
@@ -700,7 +731,7 @@ const host_schema *host_schema_at(uint32_t i)
         &host_schema_image,        &host_schema_site,         &host_schema_position,
         &host_schema_camera,       &host_schema_sun,          &host_schema_sky,
         &host_schema_earth,        &host_schema_ztv,          &host_schema_ztv_target,
-        &host_schema_photo,        &host_schema_ground_cover, &host_schema_snow,
+        &host_schema_photo,        &host_schema_ground_cover, &host_schema_snow,  &host_schema_landcover,
         &host_schema_material,     &host_schema_terrain,
         &host_schema_species,      &host_schema_phenology,    &host_schema_blossom,      &host_schema_plant,
         &host_schema_plants_file,  &host_schema_ecology,

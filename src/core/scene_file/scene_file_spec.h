@@ -14,6 +14,7 @@
 #include "sylva/plugin.h"
 #include "season/phenology.h"
 #include "scene/scene_settings.h"
+#include "site/landcover_source.h"
 #include "util/err.h"
 #include "util/name_index.h"
 
@@ -173,6 +174,13 @@ typedef struct photo_settings {
     uint32_t line, column;
 } photo_settings;
 
+/* The landcover: section: the site's land-cover map (docs/landcover.md). */
+typedef struct landcover_spec {
+    int given;                  /* 0: no landcover: section */
+    landcover_source source;    /* its path, strings and classes in the scene_file's arena */
+    uint32_t line, column;      /* of the map's key (raster: or polygons:) */
+} landcover_spec;
+
 typedef struct scene_file {
     const char *path;           /* as given */
     const char *dir;            /* absolute folder of the file */
@@ -202,6 +210,7 @@ typedef struct scene_file {
     const char **developments; uint32_t n_developments; /* names, in order of first mention */
     ztv_settings ztv;
     photo_settings photo;
+    landcover_spec landcover;
     material_spec *materials; uint32_t n_materials;
     name_index material_names;  /* name → index into materials; owned (its table) */
     name_index species_names;   /* name → index into species; owned (its table) */

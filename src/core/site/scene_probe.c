@@ -90,6 +90,7 @@ int scene_probe(const scene *s, double x, double y, double radius, probe_result 
 {
     memset(r, 0, sizeof *r);
     r->x = x, r->y = y;
+    r->land_class = land_cover_at(s->land_cover, x, y);
     const sylva_heightfield *hf = s->terrain;
     if (!hf) return err_fail(err, ERR_INPUT, "the scene has no terrain to probe; add a 'terrain:' section");
     double n[3];

@@ -1,8 +1,9 @@
 /* scene_probe.h — what is at one point of a scene's ground, in local metres: the terrain's height,
  * slope and aspect there (scene/heightfield.h, the surface plants and cameras stand on), whether
  * the terrain's water covers it, the plants standing within a radius (nearest first), and the
- * objects whose footprint — the outline of their triangles seen from above — covers it. This is
- * what `sylva probe` prints.
+ * objects whose footprint — the outline of their triangles seen from above — covers it, and the
+ * land-cover class of the nearest node when the scene has land cover. This is what `sylva probe`
+ * prints.
  *
  * Ownership: a probe_result owns its two arrays; probe_result_free releases them.
  */
@@ -35,6 +36,8 @@ typedef struct probe_result {
                                  NAN where it is level */
     int water;                /* 1: below the terrain's water level */
     double water_level, water_depth; /* when water */
+    int32_t land_class;       /* index into scene.land_cover->classes at the nearest node, or -1
+                                 (no land cover, or no data there) */
     probe_plant *plants; uint32_t n_plants;   /* within the radius, nearest first; owned */
     probe_object *objects; uint32_t n_objects; /* in scene order; owned */
 } probe_result;

@@ -1,6 +1,5 @@
-/* site_dtm.c — a DTM's CRS and footprint centre through GDAL's C API, quietly and offline: the
- * thread's /vsicurl/ sees one impossible file name and every HTTP fetch is refused while the
- * file is open. */
+/* site_dtm.c — a DTM's CRS and footprint centre through GDAL's C API, quietly and offline
+ * (gdal_offline.h). */
 #include "site/site_dtm.h"
 
 #include <math.h>
@@ -8,23 +7,11 @@
 #include <string.h>
 
 #include <cpl_conv.h>
-#include <cpl_error.h>
-#include <cpl_http.h>
 #include <gdal.h>
 #include <ogr_srs_api.h>
 
+#include "site/gdal_offline.h"
 #include "util/file_check.h"
-
-static CPLHTTPResult *refuse_fetch(const char *url, CSLConstList options, GDALProgressFunc progress,
-                                   void *progress_arg, CPLHTTPFetchWriteFunc write, void *write_arg,
-                                   void *user)
-{
-    (void)url, (void)options, (void)progress, (void)progress_arg, (void)write, (void)write_arg, (void)user;
-    CPLHTTPResult *r = CPLCalloc(1, sizeof *r); /* freed by GDAL */
-    r->nStatus = 1;
-    r->pszErrBuf = CPLStrdup("sylva reads the site's DTM without network access");
-    return r;
-}
 
 /* Fills d from an open dataset; 0 or -1 with err set. */
 static int read_dataset(GDALDatasetH ds, const char *path, site_dtm *d, err_buf *err)
@@ -62,21 +49,12 @@ int site_dtm_read(const char *path, site_dtm *d, err_buf *err)
         return err_set(err, "the site's CRS is read from the DTM, but '%s' is not a local file; give "
                        "site: crs: (EPSG:NNNN or WKT)", path);
     if (file_check_regular(path, NULL, err)) return err_prefix(err, "the DTM: ");
-    GDALAllRegister();
-    const char *old = CPLGetThreadLocalConfigOption("CPL_VSIL_CURL_ALLOWED_FILENAME", NULL);
-    char *saved = CPLStrdup(old ? old : ""); /* CPLFree'd below */
-    CPLSetThreadLocalConfigOption("CPL_VSIL_CURL_ALLOWED_FILENAME", "sylva-network-is-off:");
-    CPLHTTPPushFetchCallback(refuse_fetch, NULL);
-    CPLPushErrorHandler(CPLQuietErrorHandler);
-    GDALDatasetH ds = GDALOpenEx(path, GDAL_OF_RASTER | GDAL_OF_READONLY, NULL, NULL, NULL);
+    gdal_offline g;
+    GDALDatasetH ds = gdal_offline_open(path, GDAL_OF_RASTER, &g);
     int rc = ds ? read_dataset(ds, path, d, err)
                 : err_set(err, "the DTM '%s' is not a raster GDAL reads (GeoTIFF, ESRI ASCII grid, "
                           "...), or it is damaged", path);
-    if (ds) GDALClose(ds);
-    CPLPopErrorHandler();
-    CPLHTTPPopFetchCallback();
-    CPLSetThreadLocalConfigOption("CPL_VSIL_CURL_ALLOWED_FILENAME", saved[0] ? saved : NULL);
-    CPLFree(saved);
+    gdal_offline_close(ds, &g);
     if (rc) site_dtm_release(d);
     return rc;
 }

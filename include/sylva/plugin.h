@@ -447,7 +447,24 @@ typedef struct sylva_terrain_request {
     /* ---- ABI 1.6 (test with SYLVA_HAS_FIELD) ---- */
     double site_latitude; /* degrees north (WGS 84) of the site origin, the centre of the scene;
                              NaN when the scene has no site (no CRS) */
+    const double *cover_shares; /* SYLVA_COVER_KINDS shares in [0, 1] of the scene's land-cover map
+                                   within 5 km of the site origin (of the ground the map covers
+                                   there); NULL when the scene has no land-cover map */
 } sylva_terrain_request;
+
+/* The kinds of land cover whose shares a terrain request carries (ABI 1.6), in this order. */
+enum {
+    SYLVA_COVER_FOREST = 0,
+    SYLVA_COVER_SHRUB,
+    SYLVA_COVER_GRASS,
+    SYLVA_COVER_CULTIVATED,
+    SYLVA_COVER_BARREN,
+    SYLVA_COVER_SNOW,
+    SYLVA_COVER_WATER,
+    SYLVA_COVER_DEVELOPED,
+    SYLVA_COVER_WETLAND,
+    SYLVA_COVER_KINDS
+};
 
 typedef struct sylva_terrain_out {
     uint32_t size;

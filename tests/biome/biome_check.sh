@@ -6,7 +6,8 @@
 #     slopes lie at 30 to 40 degrees, which shrubs cover there);
 #   - the same DTM with an explicit snow_altitude of 1,500 m has snow (the scene's key wins);
 #   - a scene without a site stays temperate;
-#   - the shared Zion DTM (37.2 N, top 2,892 m) has no snow in summer (skipped without the data).
+#   - the shared Zion DTM (37.2 N, top 2,892 m) has no snow in summer, its biome from the latitude
+#     alone is a warning, and with its NLCD land cover it is semi-arid (skipped without the data).
 # Exit 0 when all hold, 1 when one does not.
 set -uo pipefail
 sylva=$1 work=$2 src=$3
@@ -56,6 +57,17 @@ terrain: {plugin: terrain_ifs, dtm: $zion, refine: 1}"
   snow=$(share "$work/zion.log" snow)
   grep "biome" "$work/zion.log" | sed 's/^/   /'
   expect "no snow on Zion in summer" "${snow:-1} == 0" "snow ${snow:-?} %"
+  grep -q "picked from the site's latitude" "$work/zion.log" && echo "ok: latitude alone is a warning" ||
+    { echo "FAIL: no warning that the biome rests on the latitude alone"; status=1; }
+  render zion_cover "site: {}
+camera: {position: [-2000, -8000, 2300], look_at: [-1700, 10900, 2700]}
+terrain: {plugin: terrain_ifs, dtm: $zion, refine: 1}
+landcover: {raster: $(dirname "$zion")/nlcd2011.tif}"
+  grep "biome" "$work/zion_cover.log" | sed 's/^/   /'
+  grep -q "biome semi_arid (auto, from the land cover" "$work/zion_cover.log" &&
+    ! grep -q "picked from the site's latitude" "$work/zion_cover.log" &&
+    echo "ok: Zion's land cover (pinyon-juniper, scrub, bare rock) makes it semi-arid" ||
+    { echo "FAIL: Zion with its land cover:"; grep -i "biome\|landcover" "$work/zion_cover.log"; status=1; }
 else
   echo "skipped the Zion case: $zion is not there"
 fi

@@ -1,6 +1,7 @@
 /* plugin_call.c — opening a plugin for one part of a scene, its requests, and its failures in
  * one format (plugin_call.h). */
 #include "scene_build/plugin_call.h"
+#include "scene_build/scene_landcover.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -130,6 +131,7 @@ int plugin_call_open_terrain(plugin_call *c, const scene_file *sf, scene *s, con
 {
     const terrain_spec *t = &sf->terrain;
     call_begin(c, sf, t->line, t->column, "terrain plugin '%s'", t->plugin);
+    c->has_cover_shares = scene_landcover_shares(sf, c->cover_shares);
     return call_open(c, s, reg, t->plugin, SYLVA_KIND_TERRAIN, t->params, part_seed(sf, "terrain"), out, err);
 }
 
@@ -208,7 +210,8 @@ int plugin_call_terrain(plugin_call *c, int surveyed, int at_development, err_bu
     sylva_terrain_request req = {.size = sizeof req, .seed = c->host.seed, .site_crs = sf->site.crs_wkt,
                                  .site_origin = {sf->site.origin[0], sf->site.origin[1], sf->site.origin[2]},
                                  .eye = {sf->camera.position[0], sf->camera.position[1], sf->camera.position[2]},
-                                 .surveyed = surveyed, .site_latitude = site_latitude(sf)};
+                                 .surveyed = surveyed, .site_latitude = site_latitude(sf),
+                                 .cover_shares = c->has_cover_shares ? c->cover_shares : NULL};
     if (at_development) development_centre(sf, req.eye);
     else if (!sf->has_camera) req.eye[0] = req.eye[1] = req.eye[2] = NAN; /* no eye: the footprint's centre */
     sylva_terrain_out out = {.size = sizeof out};

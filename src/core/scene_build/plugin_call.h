@@ -39,6 +39,8 @@ typedef struct plugin_call {
     sylva_species_info *species_info; /* ecology: owned array of sf->n_species */
     sylva_ecology_request ecology; /* ecology: the request for generate() and the run */
     phase_times *times;            /* borrowed, may be NULL: where the calls' wall times add up */
+    double cover_shares[SYLVA_COVER_KINDS]; /* terrain: the land cover near the site origin */
+    int has_cover_shares;          /* terrain: 1 when cover_shares holds them */
 } plugin_call;
 
 /* How the plugin runs: verbose prints its DEBUG logs, quiet hides progress, warnings_only (the

@@ -11,4 +11,11 @@
  * the map's key. */
 int scene_build_landcover(scene *s, const scene_file *sf, int quiet, err_buf *err);
 
+/* The shares of the SYLVA_COVER_* kinds (sylva/plugin.h) of sf's land-cover map within 5 km of
+ * the site origin, read on a 100 m grid, over the ground the map covers there; the terrain
+ * plugin's `biome: auto` reads them. Returns 1 with shares set, 0 when the scene has no
+ * land-cover map or site, or the map covers none of that square (the full read that follows
+ * reports what is wrong with the map). */
+int scene_landcover_shares(const scene_file *sf, double shares[SYLVA_COVER_KINDS]);
+
 #endif

@@ -4,6 +4,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "sylva/plugin.h"
+
 #define REFERENCE_LATITUDE 46.0 /* the Alps: the lines of a scene without a site */
 #define DRY_SNOW_RAISE 600.0    /* m: the snow line of a dry climate stands this much higher */
 #define DRY_SNOW_FLOOR 3000.0   /* m: a dry biome has no snow below this */
@@ -67,21 +69,32 @@ static ifs_biome by_latitude(double a)
     return IFS_BIOME_ALPINE;
 }
 
-/* The biome of the land cover's largest kind, within the latitude's band (a: |latitude|, NaN
- * when unknown). */
+/* The biome of the land cover within the latitude's band (a: |latitude|, NaN when unknown):
+ * snow, then a dry site (scrub and bare ground below 45 degrees: semi-arid where bare ground
+ * shows through, Mediterranean where the scrub closes), then the largest of forest, scrub and
+ * open land (grass and fields). */
 static ifs_biome by_cover(const ifs_cover_shares *c, double a)
 {
     int cold = isfinite(a) && a >= 66.5, boreal = isfinite(a) && a >= 55 && !cold;
-    int subtropical = isfinite(a) && a < 40;
+    int warm = !isfinite(a) || a < 45;
     if (c->snow >= 0.5 || (cold && c->barren + c->snow >= 0.3)) return IFS_BIOME_ALPINE;
     if (c->barren >= 0.4) return IFS_BIOME_SEMI_ARID;
-    double largest = fmax(fmax(c->forest, c->shrub), c->grass);
+    if (warm && c->shrub + c->barren >= 0.3)
+        return c->barren >= 0.05 ? IFS_BIOME_SEMI_ARID : IFS_BIOME_MEDITERRANEAN;
+    double open = c->grass + c->cultivated;
+    double largest = fmax(fmax(c->forest, c->shrub), open);
     if (!(largest > 0)) return isfinite(a) ? by_latitude(a) : IFS_BIOME_TEMPERATE;
-    if (largest == c->forest) return boreal || cold ? IFS_BIOME_BOREAL : IFS_BIOME_TEMPERATE;
-    if (largest == c->shrub)
-        return cold ? IFS_BIOME_ALPINE : subtropical || !isfinite(a) ? IFS_BIOME_MEDITERRANEAN
-                                                                     : IFS_BIOME_TEMPERATE;
-    return cold ? IFS_BIOME_ALPINE : boreal ? IFS_BIOME_BOREAL : IFS_BIOME_PRAIRIE;
+    if (cold) return IFS_BIOME_ALPINE;
+    if (boreal) return IFS_BIOME_BOREAL;
+    return largest == open ? IFS_BIOME_PRAIRIE : IFS_BIOME_TEMPERATE;
+}
+
+ifs_cover_shares ifs_cover_shares_of(const double *r)
+{
+    return (ifs_cover_shares){.forest = r[SYLVA_COVER_FOREST], .shrub = r[SYLVA_COVER_SHRUB],
+                              .grass = r[SYLVA_COVER_GRASS], .cultivated = r[SYLVA_COVER_CULTIVATED],
+                              .barren = r[SYLVA_COVER_BARREN], .snow = r[SYLVA_COVER_SNOW],
+                              .water = r[SYLVA_COVER_WATER]};
 }
 
 ifs_biome ifs_biome_choose(double latitude_deg, const ifs_cover_shares *shares)

@@ -28,8 +28,11 @@ typedef struct ifs_biome_preset {
 /* The share of each kind of land cover over the site, each in [0, 1] (they need not sum to 1:
  * the rest is what the land cover does not name). */
 typedef struct ifs_cover_shares {
-    double forest, shrub, grass, barren, snow, water;
+    double forest, shrub, grass, cultivated, barren, snow, water;
 } ifs_cover_shares;
+
+/* The shares a terrain request carries (SYLVA_COVER_KINDS values, sylva/plugin.h). */
+ifs_cover_shares ifs_cover_shares_of(const double *request_shares);
 
 const ifs_biome_preset *ifs_biome_preset_of(ifs_biome b);
 
@@ -39,7 +42,8 @@ int ifs_biome_by_name(const char *name);
 /* `biome: auto`: the biome of a site at latitude_deg (degrees north; NaN: no site) with the
  * land cover's shares (NULL: the scene has no land cover). Without either, temperate.
  * Latitude alone: |latitude| < 30 semi-arid, < 40 Mediterranean, < 55 temperate, < 66.5
- * boreal, else alpine (tundra). With shares the largest named cover decides within the
+ * boreal, else alpine (tundra). With shares: scrub and bare ground decide a dry site below 45
+ * degrees, else the largest of forest, shrub and open land (grass, fields) within the
  * latitude's band (docs/models/terrain_ifs.md, Biomes, states the rule in full). */
 ifs_biome ifs_biome_choose(double latitude_deg, const ifs_cover_shares *shares);
 

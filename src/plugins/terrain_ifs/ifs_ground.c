@@ -28,12 +28,12 @@ static void copy3(double out[3], const double in[3])
     for (int k = 0; k < 3; k++) out[k] = in[k];
 }
 
-void ifs_ground_resolve(plugin_params *params, double latitude_deg, double zmin, double zmax,
-                        ifs_ground *out)
+void ifs_ground_resolve(plugin_params *params, double latitude_deg, const ifs_cover_shares *cover,
+                        double zmin, double zmax, ifs_ground *out)
 {
     int64_t choice = plugin_param_int(params, "biome"); /* 0: auto, else the biome's index + 1 */
     out->biome_auto = choice == 0;
-    out->biome = choice == 0 ? ifs_biome_choose(latitude_deg, NULL) : (ifs_biome)(choice - 1);
+    out->biome = choice == 0 ? ifs_biome_choose(latitude_deg, cover) : (ifs_biome)(choice - 1);
     const ifs_biome_preset *b = ifs_biome_preset_of(out->biome);
     double snow_z, scree_z;
     ifs_biome_heights(out->biome, latitude_deg, &snow_z, &scree_z);
@@ -59,10 +59,11 @@ void ifs_ground_resolve(plugin_params *params, double latitude_deg, double zmin,
     copy3(out->palette.lichen_albedo, b->lichen);
 }
 
-void ifs_ground_describe(const ifs_ground *g, double latitude_deg, char *buf, unsigned size)
+void ifs_ground_describe(const ifs_ground *g, double latitude_deg, int by_cover, char *buf, unsigned size)
 {
     const char *name = ifs_biome_preset_of(g->biome)->name;
     if (!g->biome_auto) snprintf(buf, size, "%s (given)", name);
+    else if (by_cover) snprintf(buf, size, "%s (auto, from the land cover at latitude %.2f)", name, latitude_deg);
     else if (isfinite(latitude_deg)) snprintf(buf, size, "%s (auto, site latitude %.2f)", name, latitude_deg);
     else snprintf(buf, size, "%s (auto: the scene has no site)", name);
 }

@@ -17,12 +17,13 @@ typedef struct ifs_ground {
     sylva_ground_palette palette;
 } ifs_ground;
 
-/* The ground for the terrain block read through `params` at latitude_deg (NaN: no site) over a DTM whose
+/* The ground for the terrain block read through `params` at latitude_deg (NaN: no site) with
+ * the land cover's shares near the site (NULL: none) over a DTM whose
  * heights span [zmin, zmax] (for the older fractions snow_line and scree_line). */
-void ifs_ground_resolve(plugin_params *params, double latitude_deg, double zmin, double zmax,
-                        ifs_ground *out);
+void ifs_ground_resolve(plugin_params *params, double latitude_deg, const ifs_cover_shares *cover,
+                        double zmin, double zmax, ifs_ground *out);
 
 /* The biome's name and how it was picked, for the log: "mediterranean (auto, latitude 34.30)". */
-void ifs_ground_describe(const ifs_ground *g, double latitude_deg, char *buf, unsigned size);
+void ifs_ground_describe(const ifs_ground *g, double latitude_deg, int by_cover, char *buf, unsigned size);
 
 #endif

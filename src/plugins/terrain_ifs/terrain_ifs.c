@@ -69,6 +69,8 @@ typedef struct terrain_ifs_state {
     float water_albedo[3];
     ifs_ground ground;           /* the biome and what it put in rules and albedo (ifs_ground.h) */
     double latitude;             /* the site's (ABI 1.6 request), NaN without one */
+    ifs_cover_shares cover;      /* the land cover near the site (ABI 1.6 request) */
+    int has_cover;               /* 1: cover holds the request's shares */
     char source[512];            /* what the DTM is, for the log */
     const sylva_params *params;  /* create()'s, valid until destroy (the host's promise) */
     int georeferenced;           /* 1: the DTM file's node (0, 0) is at node0 in its CRS */
@@ -430,8 +432,8 @@ static int terrain_setup(plugin_params *r, terrain_ifs_state *s, const char *tar
     double zmin, zmax;
     ifs_dtm_range(d, &zmin, &zmax);
     s->zmin = zmin, s->zmax = zmax;
-    ifs_ground_resolve(r, s->latitude, zmin, zmax, &s->ground);
-    if (s->ground.biome_auto && isfinite(s->latitude) && r->api)
+    ifs_ground_resolve(r, s->latitude, s->has_cover ? &s->cover : NULL, zmin, zmax, &s->ground);
+    if (s->ground.biome_auto && isfinite(s->latitude) && !s->has_cover && r->api)
         r->api->log(r->host, SYLVA_LOG_WARN, "biome '%s' picked from the site's latitude (%.2f) alone; "
                     "the same latitude holds deserts, scrub, prairie and humid woods: give the terrain's "
                     "biome: (temperate, mediterranean, semi_arid, prairie, boreal or alpine)",
@@ -660,7 +662,7 @@ static int apply_surface(const terrain_ifs_state *s, const sylva_host_api *api, 
              "%.1f%% rock, %.1f%% snow", 100.0 * counts[0] / n, 100.0 * counts[1] / n,
              100.0 * counts[2] / n, 100.0 * counts[3] / n, 100.0 * counts[4] / n);
     char biome[96];
-    ifs_ground_describe(&s->ground, s->latitude, biome, sizeof biome);
+    ifs_ground_describe(&s->ground, s->latitude, s->has_cover, biome, sizeof biome);
     api->log(host, SYLVA_LOG_INFO, "ground of biome %s: snow from %.0f m, scree from %.0f m and "
              "%.0f deg, rock from %.0f deg", biome, s->rules.snow_z, s->rules.scree_z,
              s->rules.scree_slope, s->rules.rock_slope);
@@ -835,6 +837,8 @@ static int terrain_ifs_generate(void *state, const sylva_host_api *api, sylva_ho
     plugin_params r = plugin_params_open(api, host, s->params);
     const int site = req && SYLVA_HAS_FIELD(req, sylva_terrain_request, eye) && req->site_crs;
     s->latitude = req && SYLVA_HAS_FIELD(req, sylva_terrain_request, site_latitude) ? req->site_latitude : NAN;
+    s->has_cover = req && SYLVA_HAS_FIELD(req, sylva_terrain_request, cover_shares) && req->cover_shares;
+    if (s->has_cover) s->cover = ifs_cover_shares_of(req->cover_shares);
     if (!s->dtm && (rc = terrain_setup(&r, s, site ? req->site_crs : NULL))) return rc;
     if (site) site_place(s, &r, req, &placed);
     if (r.status) return r.status; /* the host has the sentence */

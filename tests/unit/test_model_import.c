@@ -242,7 +242,10 @@ static void base64(const uint8_t *in, size_t n, char *out)
 
 /* A glTF whose node mirrors x (scale -1, 1, 1) under a parent lifted 5 units: the triangles
  * must still face the way their normals point, and glTF's +Y must become +Z. */
-static const char *write_mirrored_gltf(void)
+static void expect_error(const char *path, const model_import_options *o, err_status status, const char *want);
+
+/* A tetrahedron in a glTF whose mesh node has the scale `scale` ("x,y,z") under a lift of 5 m. */
+static const char *write_scaled_gltf(const char *name, const char *scale)
 {
     uint8_t buf[48 + 24];
     memcpy(buf, tet_pos, 48);
@@ -251,15 +254,25 @@ static const char *write_mirrored_gltf(void)
     base64(buf, sizeof buf, b64);
     snprintf(text, sizeof text,
              "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[0]}],"
-             "\"nodes\":[{\"translation\":[0,5,0],\"children\":[1]},{\"mesh\":0,\"scale\":[-1,1,1]}],"
+             "\"nodes\":[{\"translation\":[0,5,0],\"children\":[1]},{\"mesh\":0,\"scale\":[%s]}],"
              "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":1}]}],"
              "\"buffers\":[{\"byteLength\":72,\"uri\":\"data:application/octet-stream;base64,%s\"}],"
              "\"bufferViews\":[{\"buffer\":0,\"byteLength\":48},{\"buffer\":0,\"byteOffset\":48,\"byteLength\":24}],"
              "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":4,\"type\":\"VEC3\","
              "\"min\":[0,0,0],\"max\":[1,2,3]},{\"bufferView\":1,\"componentType\":5123,\"count\":12,"
              "\"type\":\"SCALAR\"}]}",
-             b64);
-    return write_text("mirrored.gltf", text);
+             scale, b64);
+    return write_text(name, text);
+}
+
+static const char *write_mirrored_gltf(void) { return write_scaled_gltf("mirrored.gltf", "-1,1,1"); }
+
+/* Positions finite in the file that a node's scale carries beyond single precision are refused,
+ * not handed on as infinities. */
+TEST(gltf_node_scale_beyond_single_precision)
+{
+    expect_error(write_scaled_gltf("huge.gltf", "2e38,2e38,2e38"), NULL, ERR_INPUT,
+                 "beyond 3.40282e+38 once placed by its node's transform");
 }
 
 TEST(gltf_mirrored_node_keeps_winding)
@@ -466,4 +479,5 @@ TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TES
           TEST_CASE(image_mime_type_without_slash),
           TEST_CASE(ply_named_otherwise), TEST_CASE(texture_coordinate_not_finite), TEST_CASE(damaged_glb_chunk), TEST_CASE(y_up_files_are_turned),
           TEST_CASE(obj_with_mtl_texture_points_lines), TEST_CASE(gltf_mirrored_node_keeps_winding),
+          TEST_CASE(gltf_node_scale_beyond_single_precision),
           TEST_CASE(clear_errors))

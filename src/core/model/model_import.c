@@ -14,6 +14,7 @@
 #include <assimp/scene.h>
 
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -223,9 +224,10 @@ static int copy_mesh(copy_state *cs, const struct aiMesh *am, const affine *xf, 
         float *dst = m->pos + (size_t)(v0 + v) * 3;
         for (int i = 0; i < 3; i++) {
             double x = a[i][0] * p->x + a[i][1] * p->y + a[i][2] * p->z + a[i][3];
-            if (!isfinite(x))
-                return err_fail(err, ERR_INPUT, "%s: mesh '%s' vertex %u is not a finite position",
-                                cs->path, am->mName.data, v);
+            if (!(fabs(x) <= FLT_MAX)) /* not finite, or beyond single precision once placed */
+                return err_fail(err, ERR_INPUT, "%s: mesh '%s' vertex %u is not a finite position (or one "
+                                "beyond %g once placed by its node's transform)", cs->path, am->mName.data, v,
+                                (double)FLT_MAX);
             dst[i] = (float)x;
         }
         if (am->mNormals) {

@@ -15,6 +15,7 @@
 #include "season/scene_season.h"
 #include "season/scene_spring.h"
 #include "scene_build/scene_tree_variants.h"
+#include "scene_build/scene_trees.h"
 #include "scene_build/shapes.h"
 #include "site/terrain_extent.h"
 #include "scene_build/terrain_site.h"
@@ -317,6 +318,7 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
         build_terrain(s, sf, plugins, opt, &out, err) || terrain_near_site(s, sf, err) ||
         scene_ground_camera(s, sf, err) ||
         build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) ||
+        scene_build_trees(s, sf, opt, err) ||
         build_ecology(s, sf, plugins, opt, &out, err) || scene_build_objects(s, sf, err) ||
         apply_season(s, sf, err)) {
         scene_free(s);

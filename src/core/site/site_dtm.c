@@ -22,8 +22,27 @@ static CPLHTTPResult *refuse_fetch(const char *url, CSLConstList options, GDALPr
     (void)url, (void)options, (void)progress, (void)progress_arg, (void)write, (void)write_arg, (void)user;
     CPLHTTPResult *r = CPLCalloc(1, sizeof *r); /* freed by GDAL */
     r->nStatus = 1;
-    r->pszErrBuf = CPLStrdup("sylva reads the site's DTM without network access");
+    r->pszErrBuf = CPLStrdup("sylva reads the site's files without network access");
     return r;
+}
+
+void site_gdal_offline_begin(gdal_offline *g)
+{
+    GDALAllRegister();
+    const char *old = CPLGetThreadLocalConfigOption("CPL_VSIL_CURL_ALLOWED_FILENAME", NULL);
+    g->saved_curl = CPLStrdup(old ? old : "");
+    CPLSetThreadLocalConfigOption("CPL_VSIL_CURL_ALLOWED_FILENAME", "sylva-network-is-off:");
+    CPLHTTPPushFetchCallback(refuse_fetch, NULL);
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+}
+
+void site_gdal_offline_end(gdal_offline *g)
+{
+    CPLPopErrorHandler();
+    CPLHTTPPopFetchCallback();
+    CPLSetThreadLocalConfigOption("CPL_VSIL_CURL_ALLOWED_FILENAME", g->saved_curl[0] ? g->saved_curl : NULL);
+    CPLFree(g->saved_curl);
+    g->saved_curl = NULL;
 }
 
 /* Fills d from an open dataset; 0 or -1 with err set. */
@@ -62,21 +81,14 @@ int site_dtm_read(const char *path, site_dtm *d, err_buf *err)
         return err_set(err, "the site's CRS is read from the DTM, but '%s' is not a local file; give "
                        "site: crs: (EPSG:NNNN or WKT)", path);
     if (file_check_regular(path, NULL, err)) return err_prefix(err, "the DTM: ");
-    GDALAllRegister();
-    const char *old = CPLGetThreadLocalConfigOption("CPL_VSIL_CURL_ALLOWED_FILENAME", NULL);
-    char *saved = CPLStrdup(old ? old : ""); /* CPLFree'd below */
-    CPLSetThreadLocalConfigOption("CPL_VSIL_CURL_ALLOWED_FILENAME", "sylva-network-is-off:");
-    CPLHTTPPushFetchCallback(refuse_fetch, NULL);
-    CPLPushErrorHandler(CPLQuietErrorHandler);
+    gdal_offline off;
+    site_gdal_offline_begin(&off);
     GDALDatasetH ds = GDALOpenEx(path, GDAL_OF_RASTER | GDAL_OF_READONLY, NULL, NULL, NULL);
     int rc = ds ? read_dataset(ds, path, d, err)
                 : err_set(err, "the DTM '%s' is not a raster GDAL reads (GeoTIFF, ESRI ASCII grid, "
                           "...), or it is damaged", path);
     if (ds) GDALClose(ds);
-    CPLPopErrorHandler();
-    CPLHTTPPopFetchCallback();
-    CPLSetThreadLocalConfigOption("CPL_VSIL_CURL_ALLOWED_FILENAME", saved[0] ? saved : NULL);
-    CPLFree(saved);
+    site_gdal_offline_end(&off);
     if (rc) site_dtm_release(d);
     return rc;
 }

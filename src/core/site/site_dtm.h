@@ -22,4 +22,13 @@ typedef struct site_dtm {
 int site_dtm_read(const char *path, site_dtm *out, err_buf *err);
 void site_dtm_release(site_dtm *d); /* accepts a zeroed site_dtm */
 
+/* GDAL quiet (its messages kept for CPLGetLastErrorMsg, none on stderr) and offline (every HTTP
+ * fetch refused, /vsicurl/ shut) on the calling thread between begin and end, which restores
+ * what was there; every file that site/ reads through GDAL is opened between the two. */
+typedef struct gdal_offline {
+    char *saved_curl; /* CPLStrdup'ed; freed by end */
+} gdal_offline;
+void site_gdal_offline_begin(gdal_offline *g);
+void site_gdal_offline_end(gdal_offline *g);
+
 #endif

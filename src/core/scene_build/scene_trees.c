@@ -95,14 +95,14 @@ static void warn(const scene *s, const scene_file *sf, const trees_tally *tally)
         char where[512];
         terrain_extent_text(s, t->position[0], t->position[1], where, sizeof where);
         fprintf(stderr, "sylva: warning: %s:%u:%u: trees: %u of the %u trees of %s stand outside the terrain and "
-                "are left out (the first: %s at local (%.1f, %.1f)%s)\n", sf->path, ts->line, ts->column,
+                "are left out (the first: %s at local (%.1f, %.1f), outside the terrain%s)\n", sf->path, ts->line, ts->column,
                 tally->outside, ts->n_trees, ts->file, t->feature, t->position[0], t->position[1], where);
     }
     if (tally->stretched) {
         const tree_spec *t = tally->most_stretched;
-        fprintf(stderr, "sylva: warning: %s:%u:%u: trees: %u trees are taller than %.1f times their species' "
-                "full-grown model and are scaled up, by at most %.2f (%s, %.1f m, species '%s')\n", sf->path,
-                ts->line, ts->column, tally->stretched, TREES_STRETCH_WARN, tally->largest_factor, t->feature,
+        fprintf(stderr, "sylva: warning: %s:%u:%u: trees: %u of the %u trees are taller than %.1f times their "
+                "species' full-grown model and are scaled up, by at most %.2f (%s, %.1f m, species '%s')\n",
+                sf->path, ts->line, ts->column, tally->stretched, ts->n_trees, TREES_STRETCH_WARN, tally->largest_factor, t->feature,
                 t->height, s->species[t->species].name);
     }
 }
@@ -124,7 +124,7 @@ int scene_build_trees(scene *s, const scene_file *sf, const build_options *opt, 
         terrain_extent_text(s, t->position[0], t->position[1], where, sizeof where);
         return err_at(err, ERR_INPUT, sf->path, ts->line, ts->column,
                       "trees: none of the %u trees of %s stands on the terrain (the first, %s, is at local "
-                      "(%.1f, %.1f)%s); is the survey of this site, and its CRS the one it states?", ts->n_trees,
+                      "(%.1f, %.1f), outside the terrain%s); is the survey of this site, and its CRS the one it states?", ts->n_trees,
                       ts->file, t->feature, t->position[0], t->position[1], where);
     }
     warn(s, sf, &tally);

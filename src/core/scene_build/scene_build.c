@@ -16,6 +16,7 @@
 #include "season/scene_season.h"
 #include "season/scene_spring.h"
 #include "scene_build/scene_tree_variants.h"
+#include "scene_build/scene_trees.h"
 #include "scene_build/shapes.h"
 #include "site/terrain_extent.h"
 #include "scene_build/terrain_site.h"
@@ -319,6 +320,7 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
         scene_build_landcover(s, sf, opt->quiet, err) ||
         scene_ground_camera(s, sf, err) ||
         build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) ||
+        scene_build_trees(s, sf, opt, err) ||
         build_ecology(s, sf, plugins, opt, &out, err) || scene_build_objects(s, sf, err) ||
         apply_season(s, sf, err)) {
         scene_free(s);

@@ -22,7 +22,7 @@
 const char *const host_sections[] = {"image",   "site",    "camera",  "sun",     "sky",     "materials",
                                      "terrain", "species", "plants",  "ecology", "groups",  "objects",
                                      "earth",   "viewpoints", "ztv",     "photo",   "ground_cover", "season",  "snow",
-                                     "landcover", NULL};
+                                     "landcover", "trees", NULL};
 
 const char *const host_shape_names[] = {"mesh", "box", "sphere", "quad", "disk", NULL};
 const char *const host_sky_models[] = {"none", "constant", "preetham", "physical", NULL};
@@ -582,6 +582,40 @@ static const sylva_param_spec plants_file_params[] = {
 const host_schema host_schema_plants_file = {"plants file", "The plants of a saved ecology run.", plants_file_params,
                                              COUNT(plants_file_params)};
 
+/* --- trees ---------------------------------------------------------------------------------- */
+static const sylva_param_spec trees_params[] = {
+    {.name = "file", .type = SYLVA_P_PATH, .flags = REQ,
+     .help = "The tree survey: a point layer GDAL reads (GeoPackage, Shapefile, GeoJSON, ...) or a CSV "
+             "with x and y columns."},
+    {.name = "layer", .type = SYLVA_P_STRING,
+     .help = "The file's layer holding the trees (default: its only layer)."},
+    {.name = "crs", .type = SYLVA_P_STRING,
+     .help = "CRS of the file's coordinates, EPSG:NNNN or WKT, in place of the one it states (default: "
+             "the file's own, else the site's)."},
+    {.name = "x_field", .type = SYLVA_P_STRING, .def_str = "x",
+     .help = "CSV column of the easting (or longitude)."},
+    {.name = "y_field", .type = SYLVA_P_STRING, .def_str = "y",
+     .help = "CSV column of the northing (or latitude)."},
+    {.name = "species_field", .type = SYLVA_P_STRING,
+     .help = "Attribute holding each tree's species name (default: none, every tree is of `species`)."},
+    {.name = "species", .type = SYLVA_P_STRING,
+     .help = "Species of a tree whose species is not given or names no species of the scene."},
+    {.name = "species_map", .type = SYLVA_P_STRING,
+     .help = "The file's species names mapped to the scene's species: {\"Pseudotsuga menziesii\": douglas_fir}."},
+    {.name = "height_field", .type = SYLVA_P_STRING, .def_str = "height",
+     .help = "Attribute holding each tree's measured height in metres (every tree needs one above 0)."},
+    {.name = "crown_field", .type = SYLVA_P_STRING,
+     .help = "Attribute holding the crown diameter in metres; the model's crown is stretched to it."},
+    {.name = "age_field", .type = SYLVA_P_STRING,
+     .help = "Attribute holding the tree's age in years; it picks the age variant, with full_grown_age."},
+    {.name = "full_grown_age", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 100, .min = 0, .max = 10000,
+     .unit = "years", .help = "Age at which a species' full-grown variant is used (age_field)."},
+    {.name = "development", .type = SYLVA_P_BOOL, .def = 0,
+     .help = "The trees are a new planting, part of the development (as plants' development)."},
+};
+const host_schema host_schema_trees = {"trees", "Existing trees from a survey file.", trees_params,
+                                       COUNT(trees_params)};
+
 /* --- objects -------------------------------------------------------------------------------- */
 /* Keys every kind of object has: its name, where it stands and how it is turned, whether it is
  * part of the development, and the CSV layout that places it many times. */
@@ -734,7 +768,7 @@ const host_schema *host_schema_at(uint32_t i)
         &host_schema_photo,        &host_schema_ground_cover, &host_schema_snow,  &host_schema_landcover,
         &host_schema_material,     &host_schema_terrain,
         &host_schema_species,      &host_schema_phenology,    &host_schema_blossom,      &host_schema_plant,
-        &host_schema_plants_file,  &host_schema_ecology,
+        &host_schema_plants_file,  &host_schema_trees,        &host_schema_ecology,
         &host_schema_object,       &host_schema_object_model, &host_schema_object_group,
         &host_schema_shape_box,    &host_schema_shape_sphere,
         &host_schema_shape_quad,   &host_schema_shape_disk,   &host_schema_shape_mesh};

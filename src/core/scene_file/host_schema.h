@@ -44,6 +44,7 @@ extern const host_schema host_schema_phenology;    /* a species' phenology: bloc
 extern const host_schema host_schema_blossom;      /* its blossom: block */
 extern const host_schema host_schema_plant;        /* one item of plants: */
 extern const host_schema host_schema_plants_file;  /* plants: {file: ...} */
+extern const host_schema host_schema_trees;        /* trees: a survey's trees */
 extern const host_schema host_schema_object;       /* one item of objects: (without shape keys) */
 extern const host_schema host_schema_object_model; /* one item of objects: with model: */
 extern const host_schema host_schema_object_group; /* one item of objects: with group: */

@@ -9,7 +9,7 @@
  * beyond the registry's descriptor lookup runs.
  *
  * Sections are read in a fixed order: image, site, camera, sun, sky, materials, ecology,
- * terrain, species (with includes), plants, groups, objects, earth — the site before every
+ * terrain, species (with includes), plants, trees, groups, objects, earth — the site before every
  * position, materials before their users, the ecology before the species blocks it defines,
  * species before plants, the earth (whose default follows the site) last.
  */
@@ -92,6 +92,7 @@ static int load(loader *L, const char *path)
                         ter ? ter->key_column : 0) ||
         sf_read_species(L, ynode_get(L->root, "species")) ||
         sf_read_plants(L, ynode_get(L->root, "plants")) ||
+        sf_read_trees(L, ynode_get_pair(L->root, "trees")) ||
         sf_read_groups(L, ynode_get(L->root, "groups")) ||
         sf_read_objects(L, ynode_get(L->root, "objects")) || sf_read_earth(L) || sf_read_ztv(L) ||
         sf_read_ground_cover(L) || sf_read_snow(L) || sf_read_season(L) ||

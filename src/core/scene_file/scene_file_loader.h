@@ -15,6 +15,7 @@
  *   scene_file_includes.c   gathering species across included files
  *   scene_file_species.c    each species' keys, plugin or shape, ecology block
  *   scene_file_plants.c     the plants section
+ *   scene_file_trees.c      the trees section (a tree survey)
  *   scene_file_groups.c     the groups section (parts placed as one object)
  *   scene_file_objects.c    the objects section, and one object entry (also a group's part)
  *   scene_file_layout.c     a layout CSV of placements
@@ -157,6 +158,7 @@ int sf_read_ecology(loader *L, const ynode *node, uint32_t line, uint32_t column
 int sf_read_terrain(loader *L, const ynode *node, uint32_t line, uint32_t column);
 int sf_read_species(loader *L, const ynode *node);
 int sf_read_plants(loader *L, const ynode *node);
+int sf_read_trees(loader *L, const ynode_pair *section); /* scene_file_trees.c; NULL: none */
 int sf_read_groups(loader *L, const ynode *node);
 int sf_read_objects(loader *L, const ynode *node);
 int sf_read_ztv(loader *L); /* after the objects: its targets name their developments */

@@ -1,5 +1,5 @@
 /* scene_file_spec.h — what a scene file says, once read and validated: its sections as specs
- * (shapes, materials, objects, groups, species, plants, terrain, ecology, ztv, photo) and the
+ * (shapes, materials, objects, groups, species, plants, trees, terrain, ecology, ztv, photo) and the
  * settings the scene copies (scene/scene_settings.h), gathered in the scene_file record that
  * scene_file_load() returns (scene_file.h).
  *
@@ -113,6 +113,25 @@ typedef struct plant_spec {
     uint32_t line, column;
 } plant_spec;
 
+/* One tree of a survey (the trees: section): a plant of its species whose model is scaled to the
+ * measured height (docs/trees.md). */
+typedef struct tree_spec {
+    uint32_t species;         /* index into scene_file.species */
+    double position[2];       /* local metres; the tree stands on the terrain */
+    double height;            /* measured, metres (> 0) */
+    double crown;             /* crown diameter, metres; 0: not measured */
+    double age;               /* normalised age in (0, 1] from the surveyed years; 0: not given */
+    double rotation_deg;      /* about +Z: the golden angle times its index, so neighbours differ */
+    const char *feature;      /* "FID 12", "line 5" */
+} tree_spec;
+
+typedef struct trees_spec {
+    tree_spec *trees; uint32_t n_trees;
+    const char *file;         /* the survey's name as written */
+    int development;          /* 1: a new planting, part of the development */
+    uint32_t line, column;    /* of the file key */
+} trees_spec;
+
 typedef enum terrain_source { TERRAIN_NONE = 0, TERRAIN_GRID = 1, TERRAIN_PLUGIN = 2 } terrain_source;
 
 typedef struct terrain_spec {
@@ -204,6 +223,7 @@ typedef struct scene_file {
     plant_spec *plants; uint32_t n_plants;
     const char *plants_file;    /* plants: {file: F}: a saved ecology run (resolved), or NULL */
     uint32_t plants_file_line, plants_file_column;
+    trees_spec trees;           /* the trees: section (n_trees 0 without one) */
     ecology_spec ecology;
     group_spec *groups; uint32_t n_groups;
     object_spec *objects; uint32_t n_objects; /* layouts expanded: one per CSV row */

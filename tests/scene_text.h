@@ -1,13 +1,15 @@
 /* scene_text.h — scene files written by a test into its work folder (work_dir.h), loaded and
- * built without plugins, rendered, a grey material added, and the world bounds of a built object. Header-only, for the test
- * executables. */
+ * built without plugins, rendered, a grey material added, and the world bounds of a built object;
+ * or built with the project's plugins for an analysis. Header-only, for the test executables. */
 #ifndef SYLVA_TEST_SCENE_TEXT_H
 #define SYLVA_TEST_SCENE_TEXT_H
 
 #include <math.h>
+#include <sys/stat.h>
 
 #include "harness.h"
 #include "work_dir.h"
+#include "plugin/plugin_host.h"
 #include "render/film.h"
 #include "render/render.h"
 #include "scene_build/scene_build.h"
@@ -77,6 +79,29 @@ static inline void scene_text_object_bounds(const scene *s, uint32_t o, double l
         double q[3] = {p.x, p.y, p.z};
         for (int d = 0; d < 3; d++) lo[d] = fmin(lo[d], q[d]), hi[d] = fmax(hi[d], q[d]);
     }
+}
+
+/* 1 when the file at path exists (the shared data set's cases skip without it). */
+static inline int scene_text_file_exists(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0;
+}
+
+/* The scene of `text` (written as NAME in the work folder), built for an analysis with the
+ * project's plugins (quiet: without the loader's and the build's lines), or NULL with err set.
+ * The caller frees it with scene_free. */
+static inline scene *scene_text_build_analysis(const char *name, const char *text, int quiet, err_buf *err)
+{
+    const char *path = work_file(name, text);
+    plugin_registry *reg = plugin_registry_open(err);
+    unsigned flags = SCENE_FILE_NO_CAMERA | (quiet ? SCENE_FILE_QUIET : 0);
+    scene_file *sf = reg && path ? scene_file_load_with(path, reg, flags, err) : NULL;
+    build_options opt = {.analysis = 1, .quiet = quiet};
+    scene *s = sf ? scene_build(sf, reg, &opt, err) : NULL;
+    scene_file_free(sf);
+    plugin_registry_free(reg);
+    return s;
 }
 
 #endif

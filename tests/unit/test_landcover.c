@@ -18,30 +18,11 @@
 #include "site/landcover_legend.h"
 #include "site/scene_probe.h"
 #include "work_dir.h"
+#include "scene_text.h"
 
 #define SHARED SYLVA_SHARED_DATA_DIR
 #define ZION SHARED "/sites/zion"
 #define SCENES SYLVA_TEST_DATA_DIR "/scenes"
-
-static int shared_file(const char *path)
-{
-    struct stat st;
-    return stat(path, &st) == 0;
-}
-
-/* The scene of `text` (written as NAME in the work folder), built for an analysis, or NULL with
- * err set. */
-static scene *build_text(const char *name, const char *text, err_buf *err)
-{
-    const char *path = work_file(name, text);
-    plugin_registry *reg = plugin_registry_open(err);
-    scene_file *sf = reg && path ? scene_file_load_with(path, reg, SCENE_FILE_NO_CAMERA, err) : NULL;
-    build_options opt = {.analysis = 1};
-    scene *s = sf ? scene_build(sf, reg, &opt, err) : NULL;
-    scene_file_free(sf);
-    plugin_registry_free(reg);
-    return s;
-}
 
 TEST(legends)
 {
@@ -106,7 +87,7 @@ static scene *zion(const char *map, err_buf *err)
 {
     char text[1024];
     snprintf(text, sizeof text, zion_scene, map);
-    scene *s = build_text("zion.yaml", text, err);
+    scene *s = scene_text_build_analysis("zion.yaml", text, 0, err);
     if (!s) fprintf(stderr, "%s\n", err->msg);
     return s;
 }
@@ -155,7 +136,7 @@ static const land_class *probed(const scene *s, double e, double n)
 
 TEST(zion_nlcd_and_names)
 {
-    if (!shared_file(ZION "/nlcd.tif.aux.xml")) SKIP("no shared data at %s", ZION);
+    if (!scene_text_file_exists(ZION "/nlcd.tif.aux.xml")) SKIP("no shared data at %s", ZION);
     err_buf err = {{0}};
     scene *a = zion("nlcd2011.tif", &err), *b = a ? zion("nlcd.tif", &err) : NULL;
     CHECK(a && b && a->land_cover && b->land_cover);
@@ -232,7 +213,7 @@ static int histogram_shares(const char *path, double shares[LAND_KIND_COUNT])
 TEST(corine_vaud)
 {
     const char *map = SHARED "/landcover/corine-vaud/ls100_12.tif";
-    if (!shared_file(map)) SKIP("no shared data at %s", map);
+    if (!scene_text_file_exists(map)) SKIP("no shared data at %s", map);
     GDALAllRegister();
     GDALDatasetH ds = GDALOpen(map, GA_ReadOnly);
     double t[6] = {0};
@@ -243,7 +224,7 @@ TEST(corine_vaud)
     snprintf(text, sizeof text, "site: {}\nterrain: {plugin: terrain_ifs, dtm: %s}\nlandcover: {raster: %s}\n", dtm,
              map);
     err_buf err = {{0}};
-    scene *s = build_text("vaud.yaml", text, &err);
+    scene *s = scene_text_build_analysis("vaud.yaml", text, 0, &err);
     if (!s) fprintf(stderr, "%s\n", err.msg);
     CHECK(s && s->land_cover);
     if (!s || !s->land_cover) return scene_free(s);
@@ -282,7 +263,7 @@ static int block_at(OGRLayerH layer, double x, double y)
 TEST(kootenay_blocks)
 {
     const char *shp = SHARED "/canopy/foresttools/kootenayBlocks.shp";
-    if (!shared_file(shp)) SKIP("no shared data at %s", shp);
+    if (!scene_text_file_exists(shp)) SKIP("no shared data at %s", shp);
     const char *dtm = write_tif("kootenay_flat.tif", 32611, 439670, 5526580, 2.0, 90, 75, 900.0, GDT_Float32);
     char text[2048];
     snprintf(text, sizeof text, "site: {}\nterrain: {plugin: terrain_ifs, dtm: %s}\n"
@@ -291,7 +272,7 @@ TEST(kootenay_blocks)
              "    - {code: 113, name: block 113, kind: shrub}\n"
              "    - {code: 3308, name: block 3308, kind: grass}\n", dtm, shp);
     err_buf err = {{0}};
-    scene *s = dtm ? build_text("kootenay.yaml", text, &err) : NULL;
+    scene *s = dtm ? scene_text_build_analysis("kootenay.yaml", text, 0, &err) : NULL;
     if (!s) fprintf(stderr, "%s\n", err.msg);
     CHECK(s && s->land_cover && s->land_cover->n_classes == 3);
     if (!s || !s->land_cover || s->land_cover->n_classes != 3) return scene_free(s);
@@ -361,10 +342,10 @@ static double park_agreement(const scene *s, const char *path, uint32_t step, ui
  * inside the boundary and no others (OGR's test, on every 7th node, 99.9 %). */
 TEST(zion_park_boundary)
 {
-    if (!shared_file(ZION "/zion.gpkg")) SKIP("no shared data at %s", ZION);
+    if (!scene_text_file_exists(ZION "/zion.gpkg")) SKIP("no shared data at %s", ZION);
     err_buf err = {{0}};
-    scene *s = build_text("park.yaml", "site: {}\nterrain: {plugin: terrain_ifs, dtm: " ZION "/srtm.tif}\n"
-                          "landcover: {polygons: " ZION "/zion.gpkg, class_field: UNIT_NAME}\n", &err);
+    scene *s = scene_text_build_analysis("park.yaml", "site: {}\nterrain: {plugin: terrain_ifs, dtm: " ZION "/srtm.tif}\n"
+                          "landcover: {polygons: " ZION "/zion.gpkg, class_field: UNIT_NAME}\n", 0, &err);
     if (!s) fprintf(stderr, "%s\n", err.msg);
     CHECK(s && s->land_cover && s->land_cover->n_classes == 1);
     if (!s || !s->land_cover || s->land_cover->n_classes != 1) return scene_free(s);
@@ -388,7 +369,7 @@ static scene *grid_site(const char *name, double x0, double y0, int code, err_bu
     snprintf(text, sizeof text, "site: {crs: EPSG:32611, origin: [440000, 3760000]}\n"
              "terrain: {grid: [[0, 0], [0, 0]], origin: [-50, -50], spacing: [100, 100]}\n"
              "landcover:\n  raster: %s\n", map);
-    return map ? build_text(name, text, err) : NULL;
+    return map ? scene_text_build_analysis(name, text, 0, err) : NULL;
 }
 
 /* A map that lies off the site is refused at its key, with what to check. */

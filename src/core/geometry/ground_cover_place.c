@@ -80,7 +80,7 @@ static int visit_cell(cover_pass *c, int64_t ix, int64_t iy, err_buf *err)
     double n[3];
     ground_cover_weights(c->ground, p[0], p[1], w);
     if (heightfield_normal(c->s->terrain, p[0], p[1], n)) return 0;
-    double share = ground_cover_density(w, n);
+    double share = ground_cover_density(w, n) * land_cover_herb_share(c->s->land_cover, p[0], p[1]);
     if (c->place) {
         double t = (d / c->radius - FADE_START) / (1.0 - FADE_START);
         if (t > 0) share *= t >= 1 ? 0 : 1.0 - t * t * (3.0 - 2.0 * t);

@@ -35,3 +35,18 @@ int32_t land_cover_at(const land_cover *lc, double x, double y)
     uint16_t c = lc->node_class[(size_t)fj * lc->nx + (size_t)fi];
     return c == LAND_COVER_NONE ? -1 : (int32_t)c;
 }
+
+double land_cover_herb_share(const land_cover *lc, double x, double y)
+{
+    int32_t c = land_cover_at(lc, x, y);
+    if (c < 0) return 1;
+    switch (land_kind_broad(lc->classes[c].kind)) {
+    case LAND_WATER:
+    case LAND_SNOW_ICE: return 0;
+    case LAND_BARREN: return 0.05;
+    case LAND_DEVELOPED: return 0.15;
+    case LAND_SHRUB: return 0.35;
+    case LAND_FOREST: return 0.5;
+    default: return 1;
+    }
+}

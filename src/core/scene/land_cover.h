@@ -64,4 +64,10 @@ void land_cover_free(land_cover *lc); /* accepts NULL */
  * map has no data or (x, y) lies off the grid by more than half a spacing. */
 int32_t land_cover_at(const land_cover *lc, double x, double y);
 
+/* The share of the ground cover's full density (grass and herb tufts) that the class at (x, y)
+ * holds: none on water and snow, a few tufts on barren and built land, about a third under
+ * shrubs, half on a forest floor, all of it on grass, fields and wetland, and where the map has
+ * no class (1) or there is no map (lc NULL). */
+double land_cover_herb_share(const land_cover *lc, double x, double y);
+
 #endif

@@ -12,6 +12,7 @@
 #include "scene_build/host.h"
 #include "scene_build/plugin_call.h"
 #include "scene_build/scene_ground.h"
+#include "scene_build/scene_communities.h"
 #include "scene_build/scene_landcover.h"
 #include "season/scene_season.h"
 #include "season/scene_spring.h"
@@ -320,7 +321,7 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
         scene_build_landcover(s, sf, opt->quiet, err) ||
         scene_ground_camera(s, sf, err) ||
         build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) ||
-        scene_build_trees(s, sf, opt, err) ||
+        scene_build_trees(s, sf, opt, err) || scene_build_communities(s, sf, opt->quiet, err) ||
         build_ecology(s, sf, plugins, opt, &out, err) || scene_build_objects(s, sf, err) ||
         apply_season(s, sf, err)) {
         scene_free(s);

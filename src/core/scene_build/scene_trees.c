@@ -6,50 +6,17 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "scene_build/plant_scale.h"
 #include "site/terrain_extent.h"
 
 /* Above this factor over a species' full-grown model a tree is named in a warning. */
 #define TREES_STRETCH_WARN 1.5
-/* The crown's horizontal scale stays within these factors of the vertical scale. */
-#define CROWN_RATIO_MIN 0.5
-#define CROWN_RATIO_MAX 2.0
 
 typedef struct trees_tally {
     uint32_t outside, stretched;
     const tree_spec *first_outside, *most_stretched;
     double largest_factor;
 } trees_tally;
-
-/* The variant whose model height is nearest to h (the lower one on a tie). */
-static uint32_t variant_nearest(const scene *s, uint32_t sp, double h)
-{
-    const species *p = &s->species[sp];
-    uint32_t best = 0;
-    for (uint32_t v = 1; v < p->n_variants; v++)
-        if (fabs(s->prototypes[p->first_prototype + v].height - h) <
-            fabs(s->prototypes[p->first_prototype + best].height - h))
-            best = v;
-    return best;
-}
-
-/* The model's crown width: the mean of its horizontal extents. */
-static double model_width(const prototype *pr)
-{
-    float lo[3], hi[3];
-    mesh_bounds(pr->mesh, lo, hi);
-    double w = 0.5 * ((double)(hi[0] - lo[0]) + (double)(hi[1] - lo[1]));
-    return isfinite(w) && w > 0 ? w : 0;
-}
-
-/* Scales of the model (vertical, horizontal) for tree t on prototype pr. */
-static void tree_scales(const tree_spec *t, const prototype *pr, double *vertical, double *horizontal)
-{
-    *vertical = t->height / pr->height;
-    *horizontal = *vertical;
-    double w = t->crown > 0 ? model_width(pr) : 0;
-    if (w > 0)
-        *horizontal = fmin(fmax(t->crown / w, CROWN_RATIO_MIN * *vertical), CROWN_RATIO_MAX * *vertical);
-}
 
 /* How much taller than its species' full-grown model the tree is, counted when notable. */
 static void tally_stretch(const scene *s, const tree_spec *t, trees_tally *tally)
@@ -71,14 +38,14 @@ static int place_tree(scene *s, const tree_spec *t, int development, trees_tally
     }
     const species *p = &s->species[t->species];
     if (!p->n_variants) return err_set(err, "%s: species '%s' has no model", t->feature, p->name);
-    uint32_t v = t->age > 0 ? scene_variant_for_age(s, t->species, t->age) : variant_nearest(s, t->species, t->height);
+    uint32_t v = t->age > 0 ? scene_variant_for_age(s, t->species, t->age) : plant_variant_nearest(s, t->species, t->height);
     uint32_t proto = p->first_prototype + v;
     const prototype *pr = &s->prototypes[proto];
     if (!(pr->height > 0))
         return err_set(err, "%s: the model of species '%s' (variant %u) has no height to scale to the tree's %g m",
                        t->feature, p->name, v, t->height);
     double sv, sh;
-    tree_scales(t, pr, &sv, &sh);
+    plant_scales(pr, t->height, t->crown, &sv, &sh);
     tally_stretch(s, t, tally);
     xform3x4 xf = xf_trs(v3((float)t->position[0], (float)t->position[1], (float)z), v3(0, 0, (float)t->rotation_deg),
                          v3((float)sh, (float)sh, (float)sv));

@@ -413,6 +413,23 @@ static const sylva_param_spec landcover_class_params[] = {
     {.name = "kind", .type = SYLVA_P_ENUM, .def_str = "unknown", .choices = land_kind_names,
      .help = "What the ground of the class is (default: the legend's kind, else unknown)."},
 };
+static const double no_plant_area[4] = {0, 0, 0, 0}; /* unset: the whole terrain */
+static const sylva_param_spec landcover_community_params[] = {
+    {.name = "kind", .type = SYLVA_P_ENUM, .def_str = "unknown", .choices = land_kind_names,
+     .help = "The kind of ground the community grows on (forest holds every forest_* kind, wetland "
+             "both wetland_* kinds); or give code."},
+    {.name = "code", .type = SYLVA_P_INT, .flags = MIN | MAX, .min = -2147483647.0, .max = 2147483647.0,
+     .help = "The map's code of the class the community grows on (in place of kind)."},
+    {.name = "species", .type = SYLVA_P_STRING, .flags = REQ,
+     .help = "The scene's species of the community, separated by spaces or commas."},
+    {.name = "shares", .type = SYLVA_P_LIST, .flags = MIN_X | MAX, .min = 0, .max = 1e6, .max_len = COMMUNITY_MAX_SPECIES,
+     .help = "Each species' share of the plants, in the order of species (default: equal shares)."},
+    {.name = "density", .type = SYLVA_P_REAL, .flags = REQ | MIN_X | MAX, .min = 0, .max = 100000, .unit = "1/ha",
+     .help = "Plants per hectare of the community's ground."},
+    {.name = "height", .type = SYLVA_P_LIST, .flags = REQ | MIN_X | MAX, .min = 0, .max = 200, .min_len = 2,
+     .max_len = 2, .unit = "m",
+     .help = "[lowest, tallest] plant height, metres: heights are spread evenly between them."},
+};
 static const sylva_param_spec landcover_params[] = {
     {.name = "raster", .type = SYLVA_P_PATH,
      .help = "A classified raster GDAL reads (a code per cell), in any CRS."},
@@ -426,6 +443,16 @@ static const sylva_param_spec landcover_params[] = {
     {.name = "classes", .type = SYLVA_P_GROUP_LIST, .max_len = LAND_COVER_MAX_CLASSES,
      .group = landcover_class_params, .n_group = COUNT(landcover_class_params),
      .help = "Classes that replace or extend the legend's: a list of {code, name, kind}."},
+    {.name = "communities", .type = SYLVA_P_GROUP_LIST, .max_len = LAND_COVER_MAX_CLASSES,
+     .group = landcover_community_params, .n_group = COUNT(landcover_community_params),
+     .help = "The plants of each kind or class of ground: {kind or code, species, shares, density, height}."},
+    {.name = "plant_area", .type = SYLVA_P_LIST, .min_len = 4, .max_len = 4, .def_list = no_plant_area, .def_len = 4,
+     .unit = "m",
+     .help = "[west, south, east, north] map coordinates of the area the communities are planted in "
+             "(default: the whole terrain)."},
+    {.name = "plant_spacing", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 5, .min = 0.5, .max = 1000, .unit = "m",
+     .help = "The grid the map is read on for planting: a cell whose four nodes share a community is planted, "
+             "so plants keep this far from a class boundary at most."},
 };
 const host_schema host_schema_landcover = {
     "landcover", "The site's land-cover map: a class per node of the ground as surveyed.", landcover_params,

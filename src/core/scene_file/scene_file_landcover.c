@@ -99,7 +99,8 @@ int sf_read_landcover(loader *L)
     src->path = map->s;
     src->legend = (landcover_legend)sylva_param(p, "legend")->i;
     lc->line = map->line, lc->column = map->column;
-    if (polygon_keys(L, p, map, src) || read_classes(L, sylva_param(p, "classes"), src) || check_map(L, p, map, src))
+    if (polygon_keys(L, p, map, src) || read_classes(L, sylva_param(p, "classes"), src) ||
+        check_map(L, p, map, src) || sf_read_communities(L, p, lc))
         return -1;
     lc->given = 1;
     return 0;

@@ -193,11 +193,31 @@ typedef struct photo_settings {
     uint32_t line, column;
 } photo_settings;
 
+#define COMMUNITY_MAX_SPECIES 16u
+
+/* A plant community of the landcover: section: the plants of one kind or class of ground,
+ * placed at a density with heights spread over a range (docs/landcover.md, Communities). */
+typedef struct landcover_community {
+    int kind;                   /* a land_kind, or -1: the class `code` */
+    int64_t code;
+    uint32_t species[COMMUNITY_MAX_SPECIES]; /* scene species indices */
+    double share[COMMUNITY_MAX_SPECIES];     /* each one's share, summing to 1 */
+    uint32_t n_species;
+    double density;             /* plants per hectare */
+    double height[2];           /* lowest and tallest, metres */
+    uint32_t line, column;      /* of the entry */
+} landcover_community;
+
 /* The landcover: section: the site's land-cover map (docs/landcover.md). */
 typedef struct landcover_spec {
     int given;                  /* 0: no landcover: section */
     landcover_source source;    /* its path, strings and classes in the scene_file's arena */
     uint32_t line, column;      /* of the map's key (raster: or polygons:) */
+    landcover_community *communities; /* in the arena */
+    uint32_t n_communities;
+    int has_plant_area;
+    double plant_area[4];       /* west, south, east, north: map coordinates */
+    double plant_spacing;       /* metres between the nodes the map is read on for planting */
 } landcover_spec;
 
 typedef struct scene_file {

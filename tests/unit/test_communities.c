@@ -1,0 +1,205 @@
+/* test_communities.c — the land cover's plant communities (scene_build/scene_communities.h) on the
+ * shared Zion site: over 3 x 3 km of the canyon's mouth, the NLCD 2011 raster's own 30 m cells
+ * (read here through GDAL, not through sylva) hold trees where they are forest, shrubs where they
+ * are shrubland and (nearly) nothing where they are bare, built or water; the reclassified copy
+ * named through its .aux.xml plants the same plants; the counts follow the densities; bad
+ * communities are refused at their keys. The Zion cases skip without ../shared/data. */
+#include <gdal.h>
+#include <math.h>
+
+#include "harness.h"
+#include "scene_build/scene_build.h"
+#include "scene_file/scene_file.h"
+#include "work_dir.h"
+#include "scene_text.h"
+
+#define ZION SYLVA_SHARED_DATA_DIR "/sites/zion"
+#define SPECIES SYLVA_TEST_DATA_DIR "/../scenes/species/zion.yaml"
+#define WEST 322000.0
+#define SOUTH 4117000.0
+#define EAST 325000.0
+#define NORTH 4120000.0
+
+/* Zion with communities keyed by broad kind (so that the names legend's "Forest" takes the same
+ * community as the NLCD's 41-43) on the map `map`. */
+static scene *zion(const char *map, err_buf *err)
+{
+    char text[2048];
+    snprintf(text, sizeof text,
+             "image: {seed: 7}\n"
+             "site: {}\n"
+             "terrain: {plugin: terrain_ifs, dtm: %s/srtm.tif}\n"
+             "species: {include: [%s]}\n"
+             "landcover:\n"
+             "  raster: %s/%s\n"
+             "  plant_area: [%.0f, %.0f, %.0f, %.0f]\n"
+             "  communities:\n"
+             "    - {kind: forest, species: pinyon_juniper ponderosa, shares: [3, 1], density: 150, height: [3, 12]}\n"
+             "    - {kind: shrub, species: sagebrush, density: 600, height: [0.4, 1.5]}\n",
+             ZION, SPECIES, ZION, map, WEST, SOUTH, EAST, NORTH);
+    return scene_text_build_analysis("zion.yaml", text, 1, err);
+}
+
+/* The NLCD's cells over the test area, read through GDAL: codes, their grid and the window. */
+typedef struct nlcd_window {
+    int x0, y0, w, h;           /* the window in the raster's cells */
+    double gt[6];
+    uint8_t *code;              /* w * h, row 0 north; owned */
+} nlcd_window;
+
+static int read_window(nlcd_window *win)
+{
+    GDALAllRegister();
+    GDALDatasetH ds = GDALOpen(ZION "/nlcd2011.tif", GA_ReadOnly);
+    if (!ds || GDALGetGeoTransform(ds, win->gt) != CE_None) return -1;
+    /* whole cells inside the area, a cell's margin in from its edges */
+    win->x0 = (int)ceil((WEST - win->gt[0]) / win->gt[1]) + 1, win->y0 = (int)ceil((NORTH - win->gt[3]) / win->gt[5]) + 1;
+    win->w = (int)floor((EAST - win->gt[0]) / win->gt[1]) - 1 - win->x0;
+    win->h = (int)floor((SOUTH - win->gt[3]) / win->gt[5]) - 1 - win->y0;
+    win->code = malloc((size_t)win->w * win->h);
+    int rc = win->code && GDALRasterIO(GDALGetRasterBand(ds, 1), GF_Read, win->x0, win->y0, win->w, win->h, win->code,
+                                       win->w, win->h, GDT_Byte, 0, 0) == CE_None ? 0 : -1;
+    GDALClose(ds);
+    return rc;
+}
+
+enum { HOLDS_TREE = 1, HOLDS_SHRUB = 2 };
+
+/* What each NLCD cell of the window holds: the plants of s whose base stands in it. */
+static uint8_t *cell_contents(const scene *s, const nlcd_window *win)
+{
+    uint8_t *holds = calloc((size_t)win->w * win->h, 1);
+    for (uint32_t i = 0; holds && i < s->n_instances; i++) {
+        const instance *in = &s->instances[i];
+        if (scene_instance_is_ground_cover(s, i)) continue;
+        double e = in->xf.m[0][3] + s->site.origin[0], n = in->xf.m[1][3] + s->site.origin[1];
+        int cx = (int)floor((e - win->gt[0]) / win->gt[1]) - win->x0, cy = (int)floor((n - win->gt[3]) / win->gt[5]) - win->y0;
+        if (cx < 0 || cy < 0 || cx >= win->w || cy >= win->h) continue;
+        const char *name = s->species[s->prototypes[in->prototype].species].name;
+        holds[(size_t)cy * win->w + cx] |= strcmp(name, "sagebrush") ? HOLDS_TREE : HOLDS_SHRUB;
+    }
+    return holds;
+}
+
+TEST(zion_follows_the_nlcd)
+{
+    if (!scene_text_file_exists(ZION "/nlcd2011.tif")) SKIP("no shared data at %s", ZION);
+    err_buf err = {{0}};
+    scene *s = zion("nlcd2011.tif", &err);
+    if (!s) fprintf(stderr, "%s\n", err.msg);
+    nlcd_window win = {0};
+    CHECK(s && !read_window(&win));
+    uint8_t *holds = s && win.code ? cell_contents(s, &win) : NULL;
+    CHECK(holds != NULL);
+    uint64_t forest = 0, forest_trees = 0, shrub = 0, shrub_shrubs = 0, shrub_trees = 0, bare = 0, bare_plants = 0;
+    for (size_t c = 0; holds && c < (size_t)win.w * win.h; c++) {
+        int code = win.code[c];
+        if (code >= 41 && code <= 43) forest++, forest_trees += (holds[c] & HOLDS_TREE) != 0;
+        if (code == 51 || code == 52)
+            shrub++, shrub_shrubs += (holds[c] & HOLDS_SHRUB) != 0, shrub_trees += (holds[c] & HOLDS_TREE) != 0;
+        if (code == 11 || code == 12 || (code >= 21 && code <= 24) || code == 31) bare++, bare_plants += holds[c] != 0;
+    }
+    fprintf(stderr, "zion: of %llu forest cells %.2f %% hold a tree; of %llu shrub cells %.2f %% hold a shrub, "
+            "%.2f %% a tree; of %llu barren, built or water cells %.2f %% hold a plant\n", (unsigned long long)forest,
+            100.0 * forest_trees / forest, (unsigned long long)shrub, 100.0 * shrub_shrubs / shrub,
+            100.0 * shrub_trees / shrub, (unsigned long long)bare, 100.0 * bare_plants / bare);
+    CHECK(forest > 500 && shrub > 500 && bare > 500); /* the area holds all three in numbers */
+    CHECK(forest_trees >= 0.95 * forest);
+    CHECK(shrub_shrubs >= 0.95 * shrub);
+    CHECK(bare_plants <= 0.05 * bare);
+    free(holds), free(win.code);
+    scene_free(s);
+}
+
+/* The reclassified map with its names in the .aux.xml gives the very same plants. */
+TEST(zion_names_plant_the_same)
+{
+    if (!scene_text_file_exists(ZION "/nlcd.tif.aux.xml")) SKIP("no shared data at %s", ZION);
+    err_buf err = {{0}};
+    scene *a = zion("nlcd2011.tif", &err), *b = a ? zion("nlcd.tif", &err) : NULL;
+    if (!b) fprintf(stderr, "%s\n", err.msg);
+    CHECK(a && b);
+    if (a && b) {
+        fprintf(stderr, "zion: %u plants from nlcd2011.tif, %u from nlcd.tif\n", a->n_instances, b->n_instances);
+        CHECK_INT(a->n_instances, b->n_instances);
+        CHECK(a->n_instances == b->n_instances &&
+              !memcmp(a->instances, b->instances, a->n_instances * sizeof *a->instances));
+    }
+    scene_free(a);
+    scene_free(b);
+}
+
+/* A flat site all of one class: the count is the density times the area, to the plant. */
+static const char *flat_site(int code, const char *communities)
+{
+    static char text[2048];
+    snprintf(text, sizeof text,
+             "site: {crs: \"EPSG:32612\", origin: [400000, 4100000]}\n"
+             "terrain: {grid: [[0, 0, 0], [0, 0, 0], [0, 0, 0]], spacing: [1000, 1000]}\n"
+             "species: {include: [%s]}\n"
+             "landcover:\n"
+             "  polygons: %s\n"
+             "  class_field: code\n"
+             "  classes: [{code: %d, kind: shrub}]\n"
+             "  communities:\n%s",
+             SPECIES, work_file("one.geojson", "{\"type\": \"FeatureCollection\", \"crs\": {\"type\": \"name\", "
+                                               "\"properties\": {\"name\": \"EPSG:32612\"}}, \"features\": [{\"type\": "
+                                               "\"Feature\", \"properties\": {\"code\": 5}, \"geometry\": {\"type\": "
+                                               "\"Polygon\", \"coordinates\": [[[398000, 4098000], [402000, 4098000], "
+                                               "[402000, 4102000], [398000, 4102000], [398000, 4098000]]]}}]}"),
+             code, communities);
+    return text;
+}
+
+TEST(density_and_shares)
+{
+    err_buf err = {{0}};
+    scene *s = scene_text_build_analysis("flat.yaml",
+                          flat_site(5, "    - {code: 5, species: sagebrush pinyon_juniper, shares: [3, 1], density: 25, "
+                                       "height: [1, 2]}\n  plant_spacing: 100\n"),
+                          1, &err);
+    if (!s) fprintf(stderr, "%s\n", err.msg);
+    CHECK(s != NULL);
+    uint32_t n[2] = {0, 0};
+    for (uint32_t i = 0; s && i < s->n_instances; i++) {
+        if (scene_instance_is_ground_cover(s, i)) continue;
+        const char *name = s->species[s->prototypes[s->instances[i].prototype].species].name;
+        n[strcmp(name, "sagebrush") != 0]++;
+        float h = s->instances[i].xf.m[2][2] * (float)s->prototypes[s->instances[i].prototype].height;
+        CHECK(h >= 0.999f && h <= 2.001f);
+    }
+    /* 2 x 2 km at 25 per hectare: 25 plants in each of the 400 cells of one hectare, a quarter
+     * of them pinyon-juniper (2,500, give or take 43) */
+    fprintf(stderr, "flat: %u sagebrush, %u pinyon_juniper\n", n[0], n[1]);
+    CHECK_INT(n[0] + n[1], 10000);
+    CHECK(n[1] >= 2300 && n[1] <= 2700);
+    scene_free(s);
+}
+
+static void refused(const char *communities, const char *expect)
+{
+    err_buf err = {{0}};
+    scene *s = scene_text_build_analysis("bad.yaml", flat_site(5, communities), 1, &err);
+    CHECK(s == NULL);
+    CHECK_STR_CONTAINS(err.msg, expect);
+    scene_free(s);
+}
+
+TEST(bad_communities_refused)
+{
+    refused("    - {kind: shrub, species: sagebrsh, density: 10, height: [1, 2]}\n",
+            "unknown species 'sagebrsh' in 'landcover.communities'; did you mean 'sagebrush'?");
+    refused("    - {kind: shrub, code: 5, species: sagebrush, density: 10, height: [1, 2]}\n",
+            "give kind: (forest, shrub, grass, ...) or code: (the map's code), not both");
+    refused("    - {code: 5, species: sagebrush ponderosa, shares: [1], density: 10, height: [1, 2]}\n",
+            "'shares' gives 1 numbers for 2 species");
+    refused("    - {code: 5, species: sagebrush, density: 10, height: [2, 1]}\n", "'height' [2, 1] runs downward");
+    refused("    - {code: 5, species: sagebrush, density: 10, height: [1, 2]}\n"
+            "    - {code: 5, species: ponderosa, density: 10, height: [1, 2]}\n",
+            "the class 5 has two communities");
+    refused("    - {code: 5, species: sagebrush, density: 30000, height: [1, 2]}\n",
+            "more than the 8000000 a scene takes");
+}
+
+TEST_LIST(TEST_CASE(zion_follows_the_nlcd), TEST_CASE(zion_names_plant_the_same), TEST_CASE(density_and_shares),
+          TEST_CASE(bad_communities_refused))

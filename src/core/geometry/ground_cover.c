@@ -28,6 +28,7 @@ struct ground_cover_map {
     snow_settings snow;            /* the scene's snow lying on the ground (off unless asked) */
     double snow_edge;              /* drift noise below which snow lies: its cover-quantile */
     float rest;                    /* how far the meadow has turned toward cured grass for its season */
+    const land_cover *land;        /* the scene's land cover, or NULL; borrowed */
 };
 
 /* Boundary noise: where an edge between two kinds wanders (tens of metres), where patches lie
@@ -148,7 +149,7 @@ ground_cover_map *ground_cover_map_new(const scene *s, err_buf *err)
         err_nomem(err, "out of memory for the ground cover");
         return NULL;
     }
-    m->hf = hf, m->rules = hf->ground;
+    m->hf = hf, m->rules = hf->ground, m->land = s->land_cover;
     float zlo = INFINITY, zhi = -INFINITY;
     for (size_t k = 0; k < (size_t)hf->nx * hf->ny; k++) zlo = fminf(zlo, hf->z[k]), zhi = fmaxf(zhi, hf->z[k]);
     m->band = fmax(1.0, 0.03 * ((double)zhi - zlo));
@@ -247,6 +248,10 @@ void ground_cover_weights(const ground_cover_map *m, double x, double y, float w
     share[GROUND_FOREST_FLOOR] = smooth_step(0.25, 0.75, ground_cover_canopy(m, x, y) + 0.25 * np);
     share[GROUND_SOIL] = fmin(1.0, 0.6 * smooth_step(r->scree_slope - 8.0, r->scree_slope + 2.0, slope + 6.0 * nw) +
                                        0.5 * smooth_step(0.4, 0.65, nb));
+    double land_rock = 0, land_soil = 0; /* the land cover's bare ground (docs/models/ground.md) */
+    land_cover_bare_ground(m->land, x, y, &land_rock, &land_soil);
+    share[GROUND_ROCK] = fmax(share[GROUND_ROCK], land_rock * smooth_step(-0.6, 0.2, nw));
+    share[GROUND_SOIL] = fmax(share[GROUND_SOIL], land_soil * smooth_step(-0.4, 0.4, nb));
     static const ground_kind order[] = {GROUND_WATER, GROUND_ROCK, GROUND_SNOW, GROUND_SCREE,
                                         GROUND_FOREST_FLOOR, GROUND_SOIL};
     double left = 1.0;

@@ -50,3 +50,33 @@ double land_cover_herb_share(const land_cover *lc, double x, double y)
     default: return 1;
     }
 }
+
+/* The bare ground of a kind: its rock share, and its soil share of what the rock leaves. */
+static void kind_bare_ground(land_kind k, double *rock, double *soil)
+{
+    *rock = *soil = 0;
+    switch (land_kind_broad(k)) {
+    case LAND_BARREN: *rock = 0.6, *soil = 0.85; break;
+    case LAND_DEVELOPED: *soil = 0.6; break;
+    case LAND_SHRUB: *soil = 0.6; break;
+    default: break;
+    }
+}
+
+void land_cover_bare_ground(const land_cover *lc, double x, double y, double *rock, double *soil)
+{
+    *rock = *soil = 0;
+    if (!lc || !lc->node_class || lc->nx < 2 || lc->ny < 2) return;
+    double fx = (x - lc->x0) / lc->dx, fy = (y - lc->y0) / lc->dy;
+    fx = fx < 0 ? 0 : fx > lc->nx - 1 ? lc->nx - 1 : fx;
+    fy = fy < 0 ? 0 : fy > lc->ny - 1 ? lc->ny - 1 : fy;
+    uint32_t i = (uint32_t)fx < lc->nx - 1 ? (uint32_t)fx : lc->nx - 2;
+    uint32_t j = (uint32_t)fy < lc->ny - 1 ? (uint32_t)fy : lc->ny - 2;
+    double u = fx - i, v = fy - j;
+    for (int c = 0; c < 4; c++) {
+        uint16_t k = lc->node_class[(size_t)(j + c / 2) * lc->nx + i + c % 2];
+        double r = 0, s = 0, b = (c % 2 ? u : 1 - u) * (c / 2 ? v : 1 - v);
+        if (k != LAND_COVER_NONE) kind_bare_ground(lc->classes[k].kind, &r, &s);
+        *rock += b * r, *soil += b * s;
+    }
+}

@@ -70,4 +70,10 @@ int32_t land_cover_at(const land_cover *lc, double x, double y);
  * no class (1) or there is no map (lc NULL). */
 double land_cover_herb_share(const land_cover *lc, double x, double y);
 
+/* The bare ground the land cover shows at (x, y): the least share of rock, and of bare soil in
+ * what the rock leaves, that the ground has there (docs/models/ground.md, "Land cover"): barren
+ * land mostly rock and soil, built land and shrubland much bare soil, the other kinds none. Blended
+ * bilinearly between the nodes, so continuous; 0 and 0 without a map (lc NULL) or off it. */
+void land_cover_bare_ground(const land_cover *lc, double x, double y, double *rock, double *soil);
+
 #endif

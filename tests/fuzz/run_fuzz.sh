@@ -51,7 +51,7 @@ case $name in
     copy_seed() { cp "$1" "$2/$(basename "$(dirname "$1")")-$(basename "$1")"; }
     shared_seeds lparser -name '*.ls'
     max_len=4096 ;;
-  layout_csv|control_points)
+  layout_csv|control_points|tree_survey)
     seeds+=("$here/seeds/$name")
     max_len=4096 ;;
   photo)

@@ -4,11 +4,13 @@
  * as its measured height (the prototype's height times the instance's vertical scale). A CSV in
  * longitude and latitude whose species names are mapped to the scene's, with crown diameters.
  * Bad surveys refused at the key they are about: an unknown species, a missing height column, a
- * polygon, a missing file. Without the shared data set the ForestTools case is skipped. */
+ * polygon, a missing file, a point beyond the pole (with no message of GDAL's own). Without the
+ * shared data set the ForestTools case is skipped. */
 #include <math.h>
 #include <string.h>
 #include <sys/stat.h>
 
+#include <cpl_error.h>
 #include <gdal.h>
 #include <ogr_api.h>
 
@@ -186,5 +188,30 @@ TEST(off_the_terrain)
     CHECK_STR_CONTAINS(e, "scene.yaml:8:9: trees: none of the 1 trees of farther.csv stands on the terrain");
 }
 
+/* GDAL's messages that reached its handler of last resort (stderr, outside this test). */
+static int gdal_messages;
+static void count_gdal_message(CPLErr level, CPLErrorNum number, const char *text)
+{
+    (void)number, (void)text;
+    if (level != CE_Debug) gdal_messages++;
+}
+
+/* A point PROJ cannot convert (a latitude beyond the pole) is refused at the crs key, naming the
+ * file, its line and PROJ's reason; GDAL's own message of it does not reach stderr. */
+TEST(point_beyond_the_pole)
+{
+    work_file("pole.csv", "lon,lat,h\n-117.836691786,49.889674948,12\n-117.8,95,8\n");
+    CPLErrorHandler before = CPLSetErrorHandler(count_gdal_message);
+    gdal_messages = 0;
+    const char *e = refusal("  file: pole.csv\n  crs: EPSG:4326\n  x_field: lon\n  y_field: lat\n"
+                            "  height_field: h\n  species: fir\n");
+    CPLSetErrorHandler(before);
+    fprintf(stderr, "%s\n", e);
+    CHECK_STR_CONTAINS(e, "scene.yaml:9:8: trees: 'pole.csv' line 3: the point (-117.8, 95) cannot be converted "
+                          "from WGS 84 into the site CRS (");
+    CHECK_STR_CONTAINS(e, "give the survey's points in WGS 84, or its own CRS as crs:");
+    CHECK_INT(gdal_messages, 0);
+}
+
 TEST_LIST(TEST_CASE(foresttools_tree_tops), TEST_CASE(csv_mapped_species), TEST_CASE(bad_surveys),
-          TEST_CASE(off_the_terrain))
+          TEST_CASE(off_the_terrain), TEST_CASE(point_beyond_the_pole))

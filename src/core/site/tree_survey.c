@@ -47,29 +47,34 @@ static OGRSpatialReferenceH srs_from_text(const char *text, err_buf *err)
     return srs;
 }
 
-/* Moves every point by the transformation; the first that fails is named. */
-static int transform_points(survey_points *pts, OGRCoordinateTransformationH ct, err_buf *err)
+/* Moves every point by the transformation; the first that fails is named, with PROJ's reason. */
+static int transform_points(survey_points *pts, OGRCoordinateTransformationH ct, const char *shown, err_buf *err)
 {
     for (uint32_t i = 0; i < pts->n; i++) {
         survey_point *p = &pts->points[i];
         double x = p->map[0], y = p->map[1], z = 0;
         int ok = 0;
-        if (!OCTTransformEx(ct, 1, &x, &y, &z, &ok) || !ok)
-            return err_set(err, "%s: the point (%.10g, %.10g) cannot be converted from %s into the site CRS",
-                           p->feature, p->map[0], p->map[1], pts->crs_name);
-        p->map[0] = x, p->map[1] = y;
+        CPLErrorReset();
+        if (OCTTransformEx(ct, 1, &x, &y, &z, &ok) && ok) {
+            p->map[0] = x, p->map[1] = y;
+            continue;
+        }
+        const char *why = CPLGetLastErrorMsg();
+        return err_set(err, "'%s' %s: the point (%.10g, %.10g) cannot be converted from %s into the site CRS%s%s%s; "
+                       "give the survey's points in %s, or its own CRS as crs:", shown, p->feature, p->map[0],
+                       p->map[1], pts->crs_name, why[0] ? " (" : "", why, why[0] ? ")" : "", pts->crs_name);
     }
     return 0;
 }
 
-int survey_to_site(arena *a, survey_points *pts, const char *from_crs, const char *from_wkt,
+int survey_to_site(arena *a, survey_points *pts, const char *shown, const char *from_crs, const char *from_wkt,
                    const char *site_wkt, survey_key *bad_key, err_buf *err)
 {
     *bad_key = from_crs ? SURVEY_KEY_CRS : SURVEY_KEY_FILE;
+    CPLPushErrorHandler(CPLQuietErrorHandler); /* GDAL's and PROJ's messages: the sentence says why */
     OGRSpatialReferenceH from = srs_from_text(from_crs ? from_crs : from_wkt, err);
-    if (!from) return -1;
-    OGRSpatialReferenceH site = srs_from_text(site_wkt, err);
-    const char *name = OSRGetName(from);
+    OGRSpatialReferenceH site = from ? srs_from_text(site_wkt, err) : NULL;
+    const char *name = site ? OSRGetName(from) : NULL;
     int rc = site ? 0 : -1;
     if (!rc && !(pts->crs_name = arena_strdup(a, name ? name : "the file's CRS")))
         rc = err_nomem(err, "out of memory");
@@ -79,11 +84,12 @@ int survey_to_site(arena *a, survey_points *pts, const char *from_crs, const cha
             rc = err_set(err, "GDAL finds no conversion from %s into the site CRS: %s", pts->crs_name,
                          CPLGetLastErrorMsg());
         else
-            rc = transform_points(pts, ct, err);
+            rc = transform_points(pts, ct, shown, err);
         OCTDestroyCoordinateTransformation(ct);
     }
     OSRDestroySpatialReference(from);
     OSRDestroySpatialReference(site);
+    CPLPopErrorHandler();
     return rc;
 }
 
@@ -96,7 +102,7 @@ int survey_read(arena *a, const survey_request *rq, survey_points *out, survey_k
                                    : survey_read_ogr(a, rq, out, bad_key, &file_wkt, err);
     if (!rc) {
         const char *from_wkt = file_wkt ? file_wkt : rq->site_wkt; /* a file with no CRS: the site's */
-        rc = survey_to_site(a, out, rq->crs, from_wkt, rq->site_wkt, bad_key, err);
+        rc = survey_to_site(a, out, rq->shown, rq->crs, from_wkt, rq->site_wkt, bad_key, err);
     }
     CPLFree(file_wkt);
     return rc;

@@ -63,8 +63,9 @@ int survey_read_csv(arena *a, const survey_request *rq, survey_points *out, surv
 
 /* Converts every point from `from_wkt` (or the text `from_crs`: EPSG:NNNN, EPSG:NNNN+MMMM or
  * WKT, which wins when not NULL) into `site_wkt`; pts->crs_name is set (in a). Returns 0, or -1
- * with err set. */
-int survey_to_site(arena *a, survey_points *pts, const char *from_crs, const char *from_wkt,
+ * with err set (a point that cannot be converted named by the file's name `shown` and its
+ * feature, with PROJ's reason). */
+int survey_to_site(arena *a, survey_points *pts, const char *shown, const char *from_crs, const char *from_wkt,
                    const char *site_wkt, survey_key *bad_key, err_buf *err);
 
 #endif

@@ -53,7 +53,7 @@ extern "C" {
 #endif
 
 #define SYLVA_ABI_MAJOR 1
-#define SYLVA_ABI_MINOR 6
+#define SYLVA_ABI_MINOR 7
 
 /* Bytes from the start of `type` to the end of `field`. */
 #define SYLVA_FIELD_END(type, field) (offsetof(type, field) + sizeof(((type *)0)->field))
@@ -508,6 +508,12 @@ typedef struct sylva_ecology_request {
     uint32_t n_species;
     /* ---- ABI 1.6 (test with SYLVA_HAS_FIELD) ---- */
     double site_latitude; /* degrees north (WGS 84) of the site origin; NaN without a site */
+    /* ---- ABI 1.7 (test with SYLVA_HAS_FIELD) ---- */
+    /* Where each species may take root, from the scene's land cover and its communities: NULL
+     * (everywhere), or n_species rows, row i for species[i]: NULL (everywhere), or one byte per
+     * node of `terrain` (terrain->nx * terrain->ny, row j = 0 south), 1 where the species' community
+     * grows and 0 elsewhere. Owned by the host, valid for the call. */
+    const uint8_t *const *habitat;
 } sylva_ecology_request;
 
 typedef struct sylva_ecology_out {
@@ -573,6 +579,7 @@ typedef struct sylva_plugin {
 #define SYLVA_PLUGIN_SIZE_1_4 SYLVA_FIELD_END(sylva_plugin, flags)
 #define SYLVA_PLUGIN_SIZE_1_5 SYLVA_PLUGIN_SIZE_1_4 /* 1.5 appended to the terrain request only */
 #define SYLVA_PLUGIN_SIZE_1_6 SYLVA_PLUGIN_SIZE_1_5 /* 1.6 appended to the requests and heightfield */
+#define SYLVA_PLUGIN_SIZE_1_7 SYLVA_PLUGIN_SIZE_1_6 /* 1.7 appended to the ecology request only */
 
 /* The one exported symbol: descriptor `index` of this module, NULL past the end. */
 #define SYLVA_PLUGIN_ENTRY "sylva_plugin_get"

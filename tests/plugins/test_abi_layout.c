@@ -1,6 +1,6 @@
 /* test_abi_layout.c — the plugin ABI's binary layout, member by member: the offset of every
  * member and the size and alignment of every struct of sylva/plugin.h and its interface headers,
- * and the per-version size macros, as ABI 1.6 laid them out (x86-64, LP64). A plugin built
+ * and the per-version size macros, as ABI 1.7 laid them out (x86-64, LP64). A plugin built
  * against any 1.x header must find each member where it was; appending is the only change a
  * minor version may make, and a member appended later gets its row here then. */
 #include <stdalign.h>
@@ -195,6 +195,7 @@ static const layout_row rows[] = {
     FIELD(sylva_ecology_request, species, 24),
     FIELD(sylva_ecology_request, n_species, 32),
     FIELD(sylva_ecology_request, site_latitude, 40),
+    FIELD(sylva_ecology_request, habitat, 48),
     FIELD(sylva_ecology_out, size, 0),
     FIELD(sylva_ecology_out, n_plants, 4),
     FIELD(sylva_plugin, size, 0),
@@ -270,7 +271,7 @@ static const layout_row rows[] = {
     SIZE(sylva_tree_request, 40, 8),
     SIZE(sylva_tree_out, 24, 8),
     SIZE(sylva_species_info, 32, 8),
-    SIZE(sylva_ecology_request, 48, 8),
+    SIZE(sylva_ecology_request, 56, 8),
     SIZE(sylva_ecology_out, 8, 4),
     SIZE(sylva_plugin, 144, 8),
     SIZE(sylva_ecology_plant_record, 64, 8),
@@ -286,24 +287,25 @@ static const layout_row rows[] = {
     MACRO(SYLVA_PLUGIN_SIZE_1_4, 144),
     MACRO(SYLVA_PLUGIN_SIZE_1_5, 144),
     MACRO(SYLVA_PLUGIN_SIZE_1_6, 144),
+    MACRO(SYLVA_PLUGIN_SIZE_1_7, 144),
     MACRO(SYLVA_HOST_API_SIZE_1_0, 144),
     MACRO(SYLVA_HOST_API_SIZE_1_1, 184),
     MACRO(SYLVA_HOST_API_SIZE_1_2, 200),
     MACRO(SYLVA_HOST_API_SIZE_1_4, 208),
 };
 
-TEST(every_member_where_abi_1_6_put_it)
+TEST(every_member_where_abi_1_7_put_it)
 {
 #if !defined(__x86_64__) || !defined(__LP64__)
     SKIP("the recorded layout is x86-64's");
 #else
     for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++)
         if (rows[i].got != rows[i].want) {
-            fprintf(stderr, "%s %s: %zu bytes, ABI 1.6 has %zu\n", rows[i].type, rows[i].member, rows[i].got,
+            fprintf(stderr, "%s %s: %zu bytes, ABI 1.7 has %zu\n", rows[i].type, rows[i].member, rows[i].got,
                     rows[i].want);
             harness_failures++;
         }
 #endif
 }
 
-TEST_LIST(TEST_CASE(every_member_where_abi_1_6_put_it))
+TEST_LIST(TEST_CASE(every_member_where_abi_1_7_put_it))

@@ -201,5 +201,73 @@ TEST(bad_communities_refused)
             "more than the 8000000 a scene takes");
 }
 
+/* A 128 m square site whose west half is forest (code 1) and east half grass (code 2), the
+ * boundary 4 m east of the middle nodes, with a mesh beech the ecology grows for 120 years;
+ * `communities` (may be empty) under the landcover: section. */
+static scene *halves(const char *communities, err_buf *err)
+{
+    static char text[16384];
+    const char *map = work_file("halves.geojson",
+        "{\"type\": \"FeatureCollection\", \"crs\": {\"type\": \"name\", \"properties\": {\"name\": \"EPSG:32612\"}},"
+        " \"features\": ["
+        "{\"type\": \"Feature\", \"properties\": {\"code\": 1}, \"geometry\": {\"type\": \"Polygon\", \"coordinates\": "
+        "[[[399900, 4099900], [400004, 4099900], [400004, 4100100], [399900, 4100100], [399900, 4099900]]]}},"
+        "{\"type\": \"Feature\", \"properties\": {\"code\": 2}, \"geometry\": {\"type\": \"Polygon\", \"coordinates\": "
+        "[[[400004, 4099900], [400100, 4099900], [400100, 4100100], [400004, 4100100], [400004, 4099900]]]}}]}");
+    int n = snprintf(text, sizeof text,
+                     "site: {crs: \"EPSG:32612\", origin: [400000, 4100000]}\n"
+                     "terrain:\n  origin: [-64, -64]\n  spacing: [8, 8]\n  grid:\n");
+    for (int j = 0; j < 17; j++) {
+        n += snprintf(text + n, sizeof text - n, "    - [");
+        for (int i = 0; i < 17; i++) n += snprintf(text + n, sizeof text - n, "%s0", i ? ", " : "");
+        n += snprintf(text + n, sizeof text - n, "]\n");
+    }
+    snprintf(text + n, sizeof text - n,
+             "species:\n"
+             "  beech: {shape: box, size: [4, 4, 20], ecology: {profile: beech}}\n"
+             "landcover:\n"
+             "  polygons: %s\n"
+             "  class_field: code\n"
+             "  classes: [{code: 1, kind: forest}, {code: 2, kind: grass}]\n"
+             "%s"
+             "ecology: {plugin: ecology, years: 120, patches: 32}\n",
+             map, communities);
+    return scene_text_build_analysis("halves.yaml", text, 1, err);
+}
+
+/* The beeches standing east of x, and all of them. */
+static uint32_t beeches_east_of(const scene *s, double x, uint32_t *all)
+{
+    uint32_t n = 0;
+    *all = 0;
+    for (uint32_t i = 0; s && i < s->n_instances; i++) {
+        if (scene_instance_is_ground_cover(s, i)) continue;
+        ++*all;
+        n += s->instances[i].xf.m[0][3] > x;
+    }
+    return n;
+}
+
+/* A community's species with an ecology block is grown by the ecology, and only where the land
+ * cover has its community (patches of 4 m: a patch belongs to the west half when its centre's
+ * nearest node does, so no beech stands east of 6 m); without the community it grows on both. */
+TEST(grown_within_habitat)
+{
+    err_buf err = {{0}};
+    scene *with = halves("  communities: [{kind: forest, species: beech, density: 100, height: [5, 20]}]\n", &err);
+    if (!with) fprintf(stderr, "%s\n", err.msg);
+    scene *without = with ? halves("", &err) : NULL;
+    CHECK(with && without);
+    uint32_t all_with, all_without;
+    uint32_t east_with = beeches_east_of(with, 6.0, &all_with), east_without = beeches_east_of(without, 6.0, &all_without);
+    fprintf(stderr, "halves: %u beeches with the forest community, %u of them east of the boundary; %u without, %u "
+            "east\n", all_with, east_with, all_without, east_without);
+    CHECK(all_with > 20);
+    CHECK_INT(east_with, 0);
+    CHECK(east_without > 20);
+    scene_free(with);
+    scene_free(without);
+}
+
 TEST_LIST(TEST_CASE(zion_follows_the_nlcd), TEST_CASE(zion_names_plant_the_same), TEST_CASE(density_and_shares),
-          TEST_CASE(bad_communities_refused))
+          TEST_CASE(bad_communities_refused), TEST_CASE(grown_within_habitat))

@@ -132,7 +132,7 @@ TEST(api_table_versions)
     CHECK_INT(host_api_table()->size, sizeof(sylva_host_api));
     CHECK_INT(host_api_table()->abi_major, SYLVA_ABI_MAJOR);
     CHECK_INT(host_api_table()->abi_minor, SYLVA_ABI_MINOR);
-    CHECK_INT(SYLVA_ABI_MINOR, 6);
+    CHECK_INT(SYLVA_ABI_MINOR, 7);
 }
 
 TEST(param_by_unknown_name_is_an_error)

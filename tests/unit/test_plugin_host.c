@@ -112,11 +112,11 @@ TEST(each_broken_module_gives_one_problem)
 {
     static const broken_case cases[] = {
         {"broken_abi.so",
-         {"sylva_plugin_get(0)", "built against sylva plugin ABI 99.0, this host speaks 1.6; "
+         {"sylva_plugin_get(0)", "built against sylva plugin ABI 99.0, this host speaks 1.7; "
                                  "rebuild the plugin"}},
         {"broken_manifest.so",
          {"not opened: its manifest ", "broken_manifest.sylva-plugin says plugin "
-          "'broken_manifest' is built against sylva plugin ABI 2.0, this host speaks 1.6"}},
+          "'broken_manifest' is built against sylva plugin ABI 2.0, this host speaks 1.7"}},
         {"broken_noentry.so", {"no entry point [sylva_plugin_get] in shared library [/",
                                "broken_noentry.so]"}},
         {"broken_schema.so",
@@ -164,7 +164,7 @@ TEST(descriptor_rules_one_problem_each)
         {5, "plugin 'mixed_ecology': the module already declares a plugin of this name"},
         {6, "the summary is more than one line"},
         {7, "declares size 8, too small to hold its ABI version"},
-        {8, "but sylva plugin ABI 1.6 defines"},
+        {8, "but sylva plugin ABI 1.7 defines"},
         {9, "parameter 'spacing' takes a key the host keeps for itself"},
         {10, "species_section \"shape\" is a key the host keeps for itself"},
     };
@@ -813,14 +813,14 @@ TEST(manifest_mismatch_and_damage_are_refused)
         const char *fragment;
     } cases[] = {
         {"sylva-plugin-manifest 1\nplugin example_terrain tree 1.1\n", 1,
-         "plugin 'example_terrain' (terrain, ABI 1.6) does not match its manifest, which says "
+         "plugin 'example_terrain' (terrain, ABI 1.7) does not match its manifest, which says "
          "'example_terrain' (tree, ABI 1.1); rewrite the manifest with `sylva plugins --manifest "},
         {"sylva-plugin-manifest 1\nplugin example_terrain terrain 1.0\n", 1,
          "does not match its manifest, which says 'example_terrain' (terrain, ABI 1.0)"},
         {"sylva-plugin-manifest 1\nplugin example_terrain terrain 1.1\nplugin other tree 1.1\n", 1,
          "the module provides 1 plugin, its manifest names 2"},
         {"sylva-plugin-manifest 1\nplugin example_terrain terrain 3.0\n", 0,
-         "built against sylva plugin ABI 3.0, this host speaks 1.6"},
+         "built against sylva plugin ABI 3.0, this host speaks 1.7"},
         {"# a comment\nsylva-plugin-manifest 1\nplugin example_terrain terrain\n", 0,
          "example_terrain.sylva-plugin:3: expected `plugin NAME KIND MAJOR.MINOR`"},
         {"plugin example_terrain terrain 1.1\n", 0,

@@ -43,6 +43,7 @@ static const size_t descriptor_bytes[SYLVA_ABI_MINOR + 1] = {
     SYLVA_PLUGIN_SIZE_1_4,
     SYLVA_PLUGIN_SIZE_1_5,
     SYLVA_PLUGIN_SIZE_1_6,
+    SYLVA_PLUGIN_SIZE_1_7,
 };
 
 /* One module file of the search path, in search order. */

@@ -1,6 +1,8 @@
 /* plugin_call.c — opening a plugin for one part of a scene, its requests, and its failures in
  * one format (plugin_call.h). */
 #include "scene_build/plugin_call.h"
+
+#include "scene_build/ecology_habitat.h"
 #include "scene_build/scene_landcover.h"
 
 #include <math.h>
@@ -105,6 +107,7 @@ void plugin_call_share(const plugin_call *c, plugin_call *w)
     *w = *c;
     err_clear(&w->plugin_err);
     w->species_info = NULL; /* c's */
+    w->habitat = NULL;      /* c's */
     const sylva_host *h = &c->host;
     host_init(&w->host, h->scene, h->scene_dir, h->seed, w->context, &w->plugin_err);
     w->host.verbose = h->verbose, w->host.quiet = h->quiet, w->host.kind = h->kind, w->host.threads = h->threads;
@@ -123,6 +126,7 @@ void plugin_call_close(plugin_call *c)
     if (c->plugin && c->state) c->plugin->desc->destroy(c->state);
     if (c->plugin) host_release(&c->host);
     free(c->species_info);
+    ecology_habitat_free(c->habitat, c->sf ? c->sf->n_species : 0);
     memset(c, 0, sizeof *c);
 }
 
@@ -175,9 +179,13 @@ int plugin_call_open_ecology(plugin_call *c, const scene_file *sf, scene *s, con
     if (!s->surveyed) return err_at(err, ERR_INPUT, sf->path, es->line, es->column, "the ecology needs a terrain");
     if (!(c->species_info = ecology_species(s, sf, err))) return -1;
     uint64_t seed = part_seed(sf, "ecology");
+    err_clear(err);
+    c->habitat = ecology_habitat_new(s, sf, err);
+    if (!c->habitat && err->status) return -1;
     c->ecology = (sylva_ecology_request){.size = sizeof c->ecology, .seed = seed, .terrain = s->surveyed,
                                          .species = c->species_info, .n_species = sf->n_species,
-                                         .site_latitude = site_latitude(sf)};
+                                         .site_latitude = site_latitude(sf),
+                                         .habitat = (const uint8_t *const *)c->habitat};
     if (call_open(c, s, reg, es->plugin, SYLVA_KIND_ECOLOGY, es->params, seed, out, err)) {
         plugin_call_close(c);
         return -1;

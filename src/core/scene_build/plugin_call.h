@@ -38,6 +38,8 @@ typedef struct plugin_call {
     const species_spec *species;   /* tree: borrowed from sf */
     sylva_species_info *species_info; /* ecology: owned array of sf->n_species */
     sylva_ecology_request ecology; /* ecology: the request for generate() and the run */
+    uint8_t **habitat;             /* ecology: owned rows of the request's habitat (ecology_habitat.h),
+                                      sf->n_species of them, or NULL */
     phase_times *times;            /* borrowed, may be NULL: where the calls' wall times add up */
     double cover_shares[SYLVA_COVER_KINDS]; /* terrain: the land cover near the site origin */
     int has_cover_shares;          /* terrain: 1 when cover_shares holds them */

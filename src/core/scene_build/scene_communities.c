@@ -16,6 +16,7 @@
 
 typedef struct planting {
     scene *s;
+    const scene_file *sf;
     const landcover_spec *spec;
     const land_cover *lc;       /* the map on the planting grid; owned by the caller */
     int32_t *community;         /* per class of lc: the community's index, or -1; owned by the caller */
@@ -24,8 +25,7 @@ typedef struct planting {
     uint64_t seed;
 } planting;
 
-/* The community a class grows: the one of its code, else of its kind, else of its broad kind. */
-static int32_t community_of(const landcover_spec *spec, const land_class *c)
+int32_t landcover_community_of(const landcover_spec *spec, const land_class *c)
 {
     int32_t by_kind = -1, by_broad = -1;
     for (uint32_t k = 0; k < spec->n_communities; k++) {
@@ -35,6 +35,11 @@ static int32_t community_of(const landcover_spec *spec, const land_class *c)
         if (m->kind >= 0 && m->kind != (int)c->kind && m->kind == (int)land_kind_broad(c->kind)) by_broad = (int32_t)k;
     }
     return by_kind >= 0 ? by_kind : by_broad;
+}
+
+int community_species_grown(const scene_file *sf, uint32_t sp)
+{
+    return sf->ecology.plugin && sp < sf->n_species && sf->species[sp].ecology;
 }
 
 /* The grid the map is read on for planting: nodes plant_spacing apart over the plant area (or
@@ -75,8 +80,9 @@ static int plant_one(planting *p, uint32_t m, double x, double y, sylva_rng *r, 
     double turn = 360.0 * rng_next_double(r), z;
     uint32_t k = 0;
     for (double acc = c->share[0]; k + 1 < c->n_species && pick >= acc; acc += c->share[++k]) {}
-    if (scene_terrain_height(p->s, x, y, &z)) return p->outside++, 0;
     uint32_t sp = c->species[k];
+    if (community_species_grown(p->sf, sp)) return 0; /* the ecology grows it there */
+    if (scene_terrain_height(p->s, x, y, &z)) return p->outside++, 0;
     const species *spc = &p->s->species[sp];
     if (!spc->n_variants) return err_set(err, "species '%s' has no model", spc->name);
     uint32_t proto = spc->first_prototype + plant_variant_nearest(p->s, sp, h);
@@ -133,8 +139,11 @@ static void summary(const planting *p, const scene_file *sf, const landcover_gri
         if (c->kind >= 0) fprintf(stderr, "%s %s", m ? ";" : "", land_kind_names[c->kind]);
         else fprintf(stderr, "%s class %lld", m ? ";" : "", (long long)c->code);
         for (uint32_t k = 0; k < c->n_species; k++)
-            fprintf(stderr, "%s %s %llu", k ? "," : "", sf->species[c->species[k]].name,
-                    (unsigned long long)p->placed[(size_t)m * COMMUNITY_MAX_SPECIES + k]);
+            if (community_species_grown(sf, c->species[k]))
+                fprintf(stderr, "%s %s grown by the ecology", k ? "," : "", sf->species[c->species[k]].name);
+            else
+                fprintf(stderr, "%s %s %llu", k ? "," : "", sf->species[c->species[k]].name,
+                        (unsigned long long)p->placed[(size_t)m * COMMUNITY_MAX_SPECIES + k]);
     }
     if (p->outside) fprintf(stderr, "; %llu off the terrain left out", (unsigned long long)p->outside);
     fputc('\n', stderr);
@@ -143,7 +152,7 @@ static void summary(const planting *p, const scene_file *sf, const landcover_gri
 /* Reads the map onto the planting grid, checks the count and plants every node. */
 static int plant_all(planting *p, const scene_file *sf, const landcover_grid *g, int quiet, err_buf *err)
 {
-    for (uint32_t c = 0; c < p->lc->n_classes; c++) p->community[c] = community_of(p->spec, &p->lc->classes[c]);
+    for (uint32_t c = 0; c < p->lc->n_classes; c++) p->community[c] = landcover_community_of(p->spec, &p->lc->classes[c]);
     double expected = expected_plants(p);
     if (expected > COMMUNITY_MAX_PLANTS)
         return err_at(err, ERR_INPUT, sf->path, p->spec->communities[0].line, p->spec->communities[0].column,
@@ -172,7 +181,7 @@ int scene_build_communities(scene *s, const scene_file *sf, int quiet, err_buf *
         err_default(err, ERR_INPUT);
         return err->status == ERR_NOMEM ? -1 : err_locate(err, sf->path, spec->line, spec->column);
     }
-    planting p = {s, spec, lc, malloc(lc->n_classes * sizeof *p.community), /* owned here */
+    planting p = {s, sf, spec, lc, malloc(lc->n_classes * sizeof *p.community), /* owned here */
                   calloc((size_t)spec->n_communities * COMMUNITY_MAX_SPECIES, sizeof *p.placed), 0, s->image.seed};
     int rc = !p.community || !p.placed ? err_nomem(err, "out of memory for the communities")
                                        : plant_all(&p, sf, &g, quiet, err);

@@ -34,8 +34,8 @@ static uint32_t beside(const eco_terrain *t, uint32_t p, double u)
     return opt[c < n ? c : n - 1];
 }
 
-/* A seedling of species j on patch p at a random point of it (Fig. 4.19); lost in water or
- * outside the growth area, and in the edge band unless it takes root. The population has room
+/* A seedling of species j on patch p at a random point of it (Fig. 4.19); lost in water,
+ * outside the growth area or the species' habitat, and in the edge band unless it takes root. The population has room
  * (reserved by the caller). */
 static void sow(eco_sim *s, uint32_t j, uint32_t p, const eco_random *rnd)
 {
@@ -43,7 +43,7 @@ static void sow(eco_sim *s, uint32_t j, uint32_t p, const eco_random *rnd)
     sylva_rng *rng = &s->rng[(size_t)j * ECO_N_STREAMS];
     double x = t->x0 + (p % t->ni + rnd->uniform(&rng[ECO_RNG_POSITION_I])) * t->kx;
     double y = t->y0 + (p / t->ni + rnd->uniform(&rng[ECO_RNG_POSITION_J])) * t->ky;
-    if (!s->growable[p] || eco_in_water(t, x, y)) return;
+    if (!s->growable[p] || (s->habitat && s->habitat[j] && !s->habitat[j][p]) || eco_in_water(t, x, y)) return;
     /* drawn only in the band, so a run without one draws what it always drew */
     if (s->establish[p] < 1.0f && !(rnd->uniform(&rng[ECO_RNG_ESTABLISH]) < s->establish[p])) return;
     const eco_species *sp = &s->species[j];

@@ -34,6 +34,8 @@ void eco_sim_free(eco_sim *s)
     free(s->species), free(s->request_index), free(s->names), free(s->model_height), free(s->p_r);
     free(s->pop), free(s->seeds), free(s->carry), free(s->rng);
     free(s->growable), free(s->growable_list), free(s->establish), free(s->band_list);
+    for (uint32_t j = 0; s->habitat && j < s->n_species; j++) free(s->habitat[j]);
+    free(s->habitat);
     free(s->cell_start), free(s->patch_r_max), free(s->cell);
     free(s);
 }
@@ -171,6 +173,7 @@ static uint64_t sim_fingerprint(const eco_sim *s)
         h = fnv1a(h, s->names[i], strlen(s->names[i]) + 1);
         h = fnv1a(h, &s->species[i], sizeof s->species[i]);
         h = fnv1a(h, &s->model_height[i], sizeof s->model_height[i]);
+        if (s->habitat && s->habitat[i]) h = fnv1a(h, s->habitat[i], n); /* a run without keeps its print */
     }
     return h;
 }
@@ -232,7 +235,7 @@ int eco_sim_new(const eco_random *rnd, plugin_params *reader, const eco_config *
         rc = plugin_fail_param(err, params, "patches", "%s", msg);
         goto fail;
     }
-    if ((rc = growth_area(s, rnd, params, err))) goto fail;
+    if ((rc = growth_area(s, rnd, params, err)) || (rc = eco_habitat_build(s, req, err))) goto fail;
     s->config.mask = NULL; /* borrowed: not kept past this call */
     s->n_opt = eco_n_opt(s->max_r_s, s->terrain.k);
 

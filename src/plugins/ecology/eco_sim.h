@@ -110,6 +110,8 @@ typedef struct eco_sim {
     double *carry;              /* owned: fractional seedlings carried to the next year */
     sylva_rng *rng;             /* owned: ECO_N_STREAMS per species */
     uint32_t year;
+    uint8_t **habitat;          /* owned, one per species: NULL (everywhere) or 1 for a patch
+                                   where the land cover lets the species take root (eco_habitat.c) */
     uint8_t *growable;          /* owned: 1 for a patch where plants may grow */
     float *establish;           /* owned: chance a seedling takes root on each patch (1 in the
                                    area, falling across the edge band; eco_edge.c) */
@@ -157,6 +159,11 @@ uint32_t eco_sim_count(const eco_sim *s); /* living plants */
  * caller frees it), or NULL when out of memory. */
 double eco_edge_chance(double d, double fade, double noise);
 float *eco_edge_establishment(const eco_terrain *t, const uint8_t *inside, double fade, uint64_t seed);
+
+/* The request's habitat rows (ABI 1.7) on the patches: s->habitat[j] for each species taking
+ * part, NULL where the request gives none; a patch takes the row's value at the node nearest
+ * its centre (eco_habitat.c). SYLVA_OK or SYLVA_ERR_NOMEM with err set. */
+int eco_habitat_build(eco_sim *s, const sylva_ecology_request *req, plugin_err *err);
 
 /* Save and load the whole state (eco_state_io.c). save writes the file whole or not at all:
  * through a new temporary file beside it (never an existing name, never through a symbolic

@@ -46,6 +46,7 @@ void scene_free(scene *s)
     if (s->surveyed != s->terrain) heightfield_free(s->surveyed);
     heightfield_free(s->terrain);
     land_cover_free(s->land_cover);
+    canopy_free(s->canopy);
     for (uint32_t i = 0; i < s->n_materials; i++) free(s->materials[i].name);
     for (uint32_t i = 0; i < s->n_textures; i++) free(s->textures[i].name), free(s->textures[i].rgba);
     for (uint32_t i = 0; i < s->n_species; i++) free(s->species[i].name);

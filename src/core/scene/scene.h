@@ -12,6 +12,7 @@
 
 #include <stdint.h>
 
+#include "scene/canopy.h"
 #include "scene/land_cover.h"
 #include "scene/mesh.h"
 #include "scene/scene_settings.h"
@@ -98,6 +99,8 @@ typedef struct scene {
                                    ABI 1.5, which cannot tell it apart (docs/models/terrain_ifs.md) */
     land_cover *land_cover;     /* owned, or NULL: the class of each surveyed node from the
                                    scene's land-cover map (landcover: section) */
+    canopy *canopy;             /* owned, or NULL: the canopy's height above each surveyed node
+                                   (canopy: section) */
     int32_t terrain_material;   /* default material of terrain nodes without one */
     int32_t water_material;
 

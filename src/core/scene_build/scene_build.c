@@ -12,6 +12,7 @@
 #include "scene_build/host.h"
 #include "scene_build/plugin_call.h"
 #include "scene_build/scene_ground.h"
+#include "scene_build/scene_canopy.h"
 #include "scene_build/scene_landcover.h"
 #include "season/scene_season.h"
 #include "season/scene_spring.h"
@@ -317,7 +318,7 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
                               .threads = opt->threads, .times = opt->times};
     if (scene_set_site(s, &sf->site, err) || add_materials(s, sf, err) ||
         build_terrain(s, sf, plugins, opt, &out, err) || terrain_near_site(s, sf, err) ||
-        scene_build_landcover(s, sf, opt->quiet, err) ||
+        scene_build_landcover(s, sf, opt->quiet, err) || scene_build_canopy(s, sf, opt->quiet, err) ||
         scene_ground_camera(s, sf, err) ||
         build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) ||
         scene_build_trees(s, sf, opt, err) ||

@@ -16,6 +16,7 @@
 #include "geotiff_fixture.h"
 #include "harness.h"
 #include "scene_build/scene_build.h"
+#include "scene_build/scene_canopy.h"
 #include "scene_file/scene_file.h"
 #include "work_dir.h"
 #include "ztv/ztv_grid.h"
@@ -233,6 +234,55 @@ TEST(foresttools_chm_in_degrees)
     scene_free(s), scene_free(u);
 }
 
+/* The modelled height of instance i: its prototype's height times its vertical scale. */
+static double plant_height(const scene *s, uint32_t i)
+{
+    return s->prototypes[s->instances[i].prototype].height * s->instances[i].xf.m[2][2];
+}
+
+/* Plants fitted to the CHM of the small site, one at a node of each case: a fir (a 10 m box) that
+ * reaches the canopy scaled to it; a fir under a canopy no fir reaches (30 m over a 10 m model)
+ * kept; a shrub (2 m) scaled up to a 3 m canopy and one under a 5 m canopy kept; firs where the
+ * canopy is 0 and below the ground removed; a fir on no data kept as grown; a fir of the
+ * development kept where the canopy is below 0.5 m. The survivors keep their order and positions. */
+TEST(plants_fitted_to_the_canopy)
+{
+    CHECK(raster_fixture("chm.tif", chm_cells, 5, 3, 10, E0 - 25, N0 + 15) != NULL);
+    static const char plants[] =
+        "{chm: chm.tif}\nspecies:\n  fir: {shape: box, size: [1, 1, 10]}\n  shrub: {shape: box, size: [1, 1, 2]}\n"
+        "plants:\n"
+        "  - {species: fir, position: [0, 10], rotation: 30}\n"    /* 12.5 m: scaled to it */
+        "  - {species: fir, position: [0, -10]}\n"                 /* 30 m: kept */
+        "  - {species: shrub, position: [-10, 10]}\n"              /* 3 m: scaled to it */
+        "  - {species: shrub, position: [20, 0]}\n"                /* 5 m: understorey, kept */
+        "  - {species: fir, position: [-20, 10]}\n"                /* 0 m: removed */
+        "  - {species: fir, position: [20, 10], scale: 0.8}\n"     /* no data: kept as grown */
+        "  - {species: fir, position: [10, 10]}\n"                 /* -0.2 m: removed */
+        "  - {species: fir, position: [-10, -10], development: true}\n";
+    err_buf err = {{0}};
+    scene *s = small_site(plants, &err);
+    CHECK(s != NULL);
+    if (!s) return;
+    CHECK_INT(s->n_instances, 8); /* hand-placed plants are not fitted by the build */
+    const char *path = work_path("site.yaml");
+    scene_file *sf = scene_file_load_with(path, NULL, SCENE_FILE_NO_CAMERA, &err);
+    CHECK(sf != NULL);
+    if (sf) scene_canopy_fit_plants(s, sf, 0, 0);
+    static const double want[6][3] = {{0, 10, 12.5}, {0, -10, 10}, {-10, 10, 3}, {20, 0, 2}, {20, 10, 8},
+                                      {-10, -10, 10}};
+    CHECK_INT(s->n_instances, 6);
+    for (uint32_t i = 0; i < 6 && i < s->n_instances; i++) {
+        CHECK_NEAR(s->instances[i].xf.m[0][3], want[i][0], 1e-6);
+        CHECK_NEAR(s->instances[i].xf.m[1][3], want[i][1], 1e-6);
+        CHECK_NEAR(plant_height(s, i), want[i][2], 1e-4);
+    }
+    const float(*m)[4] = s->instances[0].xf.m; /* still turned by 30 degrees, uniformly scaled */
+    CHECK_NEAR(atan2(m[1][0], m[0][0]) * 180 / M_PI, 30, 1e-3);
+    CHECK_NEAR(hypot(m[0][0], m[1][0]), 1.25, 1e-5);
+    scene_file_free(sf);
+    scene_free(s);
+}
+
 /* Every block's canopy layer and bare layer, copied into whole-map arrays. */
 typedef struct map_copy {
     uint32_t nx;
@@ -326,4 +376,5 @@ TEST(canopy_wall_hides_the_mast)
 }
 
 TEST_LIST(TEST_CASE(chm_on_the_nodes), TEST_CASE(dsm_less_dtm_is_the_chm), TEST_CASE(bad_sections_refused_at_their_keys),
-          TEST_CASE(foresttools_chm_in_degrees), TEST_CASE(canopy_wall_hides_the_mast))
+          TEST_CASE(foresttools_chm_in_degrees), TEST_CASE(canopy_wall_hides_the_mast),
+          TEST_CASE(plants_fitted_to_the_canopy))

@@ -223,6 +223,17 @@ uint32_t scene_variant_for_age(const scene *s, uint32_t sp, double t)
     return best;
 }
 
+uint32_t scene_variant_nearest_height(const scene *s, uint32_t sp, double h)
+{
+    const species *p = &s->species[sp];
+    uint32_t best = 0;
+    for (uint32_t v = 1; v < p->n_variants; v++)
+        if (fabs(s->prototypes[p->first_prototype + v].height - h) <
+            fabs(s->prototypes[p->first_prototype + best].height - h))
+            best = v;
+    return best;
+}
+
 int scene_terrain_height(const scene *s, double x, double y, double *z)
 {
     return s->terrain ? heightfield_height(s->terrain, x, y, z) : -1;

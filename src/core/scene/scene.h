@@ -162,6 +162,8 @@ xform3x4 plant_transform(const double p[3], double rot_deg, double scale);
 
 /* The variant of `species` for normalised age t: the youngest variant at least as old as t. */
 uint32_t scene_variant_for_age(const scene *s, uint32_t species, double t);
+/* The variant of `species` whose model height is nearest to h metres (the lower one on a tie). */
+uint32_t scene_variant_nearest_height(const scene *s, uint32_t species, double h);
 
 /* Terrain height and unit normal at (x, y) (heightfield.h); -1 outside it or when there is no
  * terrain. The rendered ground: what plants and the camera stand on. */

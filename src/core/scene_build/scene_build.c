@@ -287,6 +287,15 @@ static int build_ecology(scene *s, const scene_file *sf, const plugin_registry *
     return rc;
 }
 
+/* The ecology's plants, fitted to the canopy's heights when the scene has them. */
+static int build_fitted_ecology(scene *s, const scene_file *sf, const plugin_registry *reg, const build_options *opt,
+                                const plugin_call_output *out, err_buf *err)
+{
+    uint32_t first = s->n_instances;
+    if (build_ecology(s, sf, reg, opt, out, err)) return -1;
+    return scene_canopy_fit_plants(s, sf, first, opt->quiet);
+}
+
 /* The season on the scene file's day, species by species (scene species i is scene-file species i;
  * ground cover and the flowers come after them): blossom first, while the leaves it grows from are
  * all there, then leaf fall and autumn colour, then spring's fresh leaves. */
@@ -322,7 +331,7 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
         scene_ground_camera(s, sf, err) ||
         build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) ||
         scene_build_trees(s, sf, opt, err) ||
-        build_ecology(s, sf, plugins, opt, &out, err) || scene_build_objects(s, sf, err) ||
+        build_fitted_ecology(s, sf, plugins, opt, &out, err) || scene_build_objects(s, sf, err) ||
         apply_season(s, sf, err)) {
         scene_free(s);
         return NULL;

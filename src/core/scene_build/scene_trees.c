@@ -20,18 +20,6 @@ typedef struct trees_tally {
     double largest_factor;
 } trees_tally;
 
-/* The variant whose model height is nearest to h (the lower one on a tie). */
-static uint32_t variant_nearest(const scene *s, uint32_t sp, double h)
-{
-    const species *p = &s->species[sp];
-    uint32_t best = 0;
-    for (uint32_t v = 1; v < p->n_variants; v++)
-        if (fabs(s->prototypes[p->first_prototype + v].height - h) <
-            fabs(s->prototypes[p->first_prototype + best].height - h))
-            best = v;
-    return best;
-}
-
 /* The model's crown width: the mean of its horizontal extents. */
 static double model_width(const prototype *pr)
 {
@@ -71,7 +59,7 @@ static int place_tree(scene *s, const tree_spec *t, int development, trees_tally
     }
     const species *p = &s->species[t->species];
     if (!p->n_variants) return err_set(err, "%s: species '%s' has no model", t->feature, p->name);
-    uint32_t v = t->age > 0 ? scene_variant_for_age(s, t->species, t->age) : variant_nearest(s, t->species, t->height);
+    uint32_t v = t->age > 0 ? scene_variant_for_age(s, t->species, t->age) : scene_variant_nearest_height(s, t->species, t->height);
     uint32_t proto = p->first_prototype + v;
     const prototype *pr = &s->prototypes[proto];
     if (!(pr->height > 0))

@@ -440,6 +440,9 @@ static const sylva_param_spec canopy_params[] = {
      .help = "A surface model (elevations of the canopy's top), read with dtm: the heights are dsm - dtm."},
     {.name = "dtm", .type = SYLVA_P_PATH,
      .help = "The bare-earth elevations of the survey under dsm."},
+    {.name = "fit_plants", .type = SYLVA_P_BOOL, .def = 1,
+     .help = "Fit the ecology's plants to the canopy: each that reaches it scaled to its height there, those "
+             "where it is below 0.5 m removed."},
 };
 const host_schema host_schema_canopy = {
     "canopy", "The site's canopy heights: the vegetation's top above each node of the ground as surveyed.",

@@ -66,6 +66,7 @@ int sf_read_canopy(loader *L)
     c->source = (canopy_source){chm->is_set ? chm->s : NULL, dsm->is_set ? dsm->s : NULL, dtm->is_set ? dtm->s : NULL};
     c->line = first->line, c->column = first->column;
     c->dtm_line = dtm->line, c->dtm_column = dtm->column;
+    c->fit_plants = (int)sylva_param(p, "fit_plants")->i;
     if (check_files(L, &c->source, first, dtm)) return -1;
     c->given = 1;
     return 0;

@@ -207,6 +207,7 @@ typedef struct canopy_spec {
     canopy_source source;       /* its paths in the scene_file's arena */
     uint32_t line, column;      /* of the key naming the heights (chm: or dsm:) */
     uint32_t dtm_line, dtm_column; /* of dtm: (with dsm:) */
+    int fit_plants;             /* 1: the ecology's plants are fitted to the heights */
 } canopy_spec;
 
 typedef struct scene_file {

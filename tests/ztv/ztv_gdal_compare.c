@@ -36,41 +36,13 @@
 #include <stdlib.h>
 
 #include "ztv/ztv_raster.h"
+#include "ztv_band.h"
+
+#define TOOL "ztv_gdal_compare"
 
 #define AGREEMENT_MIN 0.99 /* share of (cell, target) pairs on which the two agree */
 #define EDGE_SHARE_MIN 0.95 /* share of the differing pairs that lie along an edge */
 #define EDGE_CELLS 2        /* "along an edge": within this many cells of one, in x and in y */
-
-typedef struct raster {
-    int nx, ny;
-    double gt[6];
-} raster;
-
-/* Band b of the file at path into a new nx * ny array of floats (caller frees), with its size and
- * geotransform in *r; NULL with a message on stderr. */
-static float *read_band(const char *path, int b, raster *r)
-{
-    GDALDatasetH ds = GDALOpen(path, GA_ReadOnly);
-    if (!ds) {
-        fprintf(stderr, "ztv_gdal_compare: cannot open %s\n", path);
-        return NULL;
-    }
-    float *v = NULL;
-    r->nx = GDALGetRasterXSize(ds), r->ny = GDALGetRasterYSize(ds);
-    if (b > GDALGetRasterCount(ds))
-        fprintf(stderr, "ztv_gdal_compare: %s has %d bands, not %d\n", path, GDALGetRasterCount(ds), b);
-    else if (GDALGetGeoTransform(ds, r->gt) != CE_None)
-        fprintf(stderr, "ztv_gdal_compare: %s has no geotransform\n", path);
-    else if (!(v = malloc((size_t)r->nx * r->ny * sizeof *v)))
-        fprintf(stderr, "ztv_gdal_compare: out of memory for %s\n", path);
-    else if (GDALRasterIO(GDALGetRasterBand(ds, b), GF_Read, 0, 0, r->nx, r->ny, v, r->nx, r->ny, GDT_Float32, 0,
-                          0) != CE_None) {
-        fprintf(stderr, "ztv_gdal_compare: cannot read band %d of %s\n", b, path);
-        free(v), v = NULL;
-    }
-    GDALClose(ds);
-    return v;
-}
 
 /* 1 when the ZTV's cells are the DTM's pixels; prints how they line up. */
 static int lined_up(const raster *z, const raster *d)
@@ -142,8 +114,8 @@ int main(int argc, char **argv)
     }
     GDALAllRegister();
     raster zr, dr;
-    float *cls = read_band(argv[1], 3, &zr), *count = read_band(argv[1], 1, &zr);
-    float *seen = read_band(argv[1], 4, &zr), *dtm = read_band(argv[2], 1, &dr);
+    float *cls = read_band(TOOL, argv[1], 3, &zr), *count = read_band(TOOL, argv[1], 1, &zr);
+    float *seen = read_band(TOOL, argv[1], 4, &zr), *dtm = read_band(TOOL, argv[2], 1, &dr);
     if (!cls || !count || !seen || !dtm) return 2;
     int ok = lined_up(&zr, &dr);
     const int nx = zr.nx, ny = zr.ny;
@@ -162,7 +134,7 @@ int main(int argc, char **argv)
     tally all = {0};
     for (int t = 0; t < n_targets; t++) {
         raster gr;
-        float *g = read_band(argv[3 + t], 1, &gr);
+        float *g = read_band(TOOL, argv[3 + t], 1, &gr);
         if (!g) return 2;
         if (gr.nx != nx || gr.ny != ny || gr.gt[0] != dr.gt[0] || gr.gt[3] != dr.gt[3]) {
             printf("FAIL: %s is not on the DTM's pixels\n", argv[3 + t]);

@@ -38,7 +38,7 @@ static const char ztv_epilogue[] =
     "exit status: 0 done, 1 usage, 2 bad scene, plugin failure or nothing to map, 3 output\n"
     "not written, 4 out of memory or internal error\n";
 
-static const char *const screening_names[] = {"none", "vegetation", "all", NULL}; /* ztv_mode's order */
+static const char *const screening_names[] = {"none", "vegetation", "all", "canopy", NULL}; /* ztv_mode's order */
 static const char *const ground_names[] = {"surveyed", "refined", NULL};
 
 static int ztv_run(cli_mpi *m, int argc, char **argv)
@@ -55,7 +55,7 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
         CLI_OPT_NUMBER("--cell", "M", "metres", o.cell, 0, 1e6, 0, "cell size in metres (0: one cell per terrain node)"),
         CLI_OPT_NUMBER("--observer-height", "M", "metres", o.eye, 0, 1e4, 0, "eye height above the ground (default 2)"),
         CLI_OPT_CHOICE("--screening", o.screening, screening_names, "what screens besides bare earth (default all: "
-                       "the plants and the objects)"),
+                       "the plants and the objects; canopy: the surface of the canopy: section's heights)"),
         CLI_OPT_CHOICE("--ground", refined, ground_names, "the ground the sightlines trace: the DTM as surveyed "
                        "(default; a ZTV is a property of the DTM and the development), or the terrain plugin's "
                        "refinement, with its levels of detail around the development, not the camera"),

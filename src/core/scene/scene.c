@@ -46,6 +46,7 @@ void scene_free(scene *s)
     if (s->surveyed != s->terrain) heightfield_free(s->surveyed);
     heightfield_free(s->terrain);
     land_cover_free(s->land_cover);
+    canopy_free(s->canopy);
     for (uint32_t i = 0; i < s->n_materials; i++) free(s->materials[i].name);
     for (uint32_t i = 0; i < s->n_textures; i++) free(s->textures[i].name), free(s->textures[i].rgba);
     for (uint32_t i = 0; i < s->n_species; i++) free(s->species[i].name);
@@ -219,6 +220,17 @@ uint32_t scene_variant_for_age(const scene *s, uint32_t sp, double t)
             best = v;
             break;
         }
+    return best;
+}
+
+uint32_t scene_variant_nearest_height(const scene *s, uint32_t sp, double h)
+{
+    const species *p = &s->species[sp];
+    uint32_t best = 0;
+    for (uint32_t v = 1; v < p->n_variants; v++)
+        if (fabs(s->prototypes[p->first_prototype + v].height - h) <
+            fabs(s->prototypes[p->first_prototype + best].height - h))
+            best = v;
     return best;
 }
 

@@ -12,6 +12,7 @@
 
 #include <stdint.h>
 
+#include "scene/canopy.h"
 #include "scene/land_cover.h"
 #include "scene/mesh.h"
 #include "scene/scene_settings.h"
@@ -98,6 +99,8 @@ typedef struct scene {
                                    ABI 1.5, which cannot tell it apart (docs/models/terrain_ifs.md) */
     land_cover *land_cover;     /* owned, or NULL: the class of each surveyed node from the
                                    scene's land-cover map (landcover: section) */
+    canopy *canopy;             /* owned, or NULL: the canopy's height above each surveyed node
+                                   (canopy: section) */
     int32_t terrain_material;   /* default material of terrain nodes without one */
     int32_t water_material;
 
@@ -159,6 +162,8 @@ xform3x4 plant_transform(const double p[3], double rot_deg, double scale);
 
 /* The variant of `species` for normalised age t: the youngest variant at least as old as t. */
 uint32_t scene_variant_for_age(const scene *s, uint32_t species, double t);
+/* The variant of `species` whose model height is nearest to h metres (the lower one on a tie). */
+uint32_t scene_variant_nearest_height(const scene *s, uint32_t species, double h);
 
 /* Terrain height and unit normal at (x, y) (heightfield.h); -1 outside it or when there is no
  * terrain. The rendered ground: what plants and the camera stand on. */

@@ -7,17 +7,6 @@
 #define CROWN_RATIO_MIN 0.5
 #define CROWN_RATIO_MAX 2.0
 
-uint32_t plant_variant_nearest(const scene *s, uint32_t sp, double h)
-{
-    const species *p = &s->species[sp];
-    uint32_t best = 0;
-    for (uint32_t v = 1; v < p->n_variants; v++)
-        if (fabs(s->prototypes[p->first_prototype + v].height - h) <
-            fabs(s->prototypes[p->first_prototype + best].height - h))
-            best = v;
-    return best;
-}
-
 /* The model's crown width: the mean of its horizontal extents. */
 static double model_width(const prototype *pr)
 {

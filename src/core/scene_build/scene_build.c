@@ -13,6 +13,7 @@
 #include "scene_build/plugin_call.h"
 #include "scene_build/scene_ground.h"
 #include "scene_build/scene_communities.h"
+#include "scene_build/scene_canopy.h"
 #include "scene_build/scene_landcover.h"
 #include "season/scene_season.h"
 #include "season/scene_spring.h"
@@ -287,6 +288,16 @@ static int build_ecology(scene *s, const scene_file *sf, const plugin_registry *
     return rc;
 }
 
+/* The woodland: the land cover's communities placed and the ecology's plants grown, all of them
+ * fitted to the canopy's heights when the scene has them. */
+static int build_woodland(scene *s, const scene_file *sf, const plugin_registry *reg, const build_options *opt,
+                          const plugin_call_output *out, err_buf *err)
+{
+    uint32_t first = s->n_instances;
+    if (scene_build_communities(s, sf, opt->quiet, err) || build_ecology(s, sf, reg, opt, out, err)) return -1;
+    return scene_canopy_fit_plants(s, sf, first, opt->quiet);
+}
+
 /* The season on the scene file's day, species by species (scene species i is scene-file species i;
  * ground cover and the flowers come after them): blossom first, while the leaves it grows from are
  * all there, then leaf fall and autumn colour, then spring's fresh leaves. */
@@ -318,11 +329,11 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
                               .threads = opt->threads, .times = opt->times};
     if (scene_set_site(s, &sf->site, err) || add_materials(s, sf, err) ||
         build_terrain(s, sf, plugins, opt, &out, err) || terrain_near_site(s, sf, err) ||
-        scene_build_landcover(s, sf, opt->quiet, err) ||
+        scene_build_landcover(s, sf, opt->quiet, err) || scene_build_canopy(s, sf, opt->quiet, err) ||
         scene_ground_camera(s, sf, err) ||
         build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) ||
-        scene_build_trees(s, sf, opt, err) || scene_build_communities(s, sf, opt->quiet, err) ||
-        build_ecology(s, sf, plugins, opt, &out, err) || scene_build_objects(s, sf, err) ||
+        scene_build_trees(s, sf, opt, err) || build_woodland(s, sf, plugins, opt, &out, err) ||
+        scene_build_objects(s, sf, err) ||
         apply_season(s, sf, err)) {
         scene_free(s);
         return NULL;

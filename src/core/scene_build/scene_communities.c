@@ -85,7 +85,7 @@ static int plant_one(planting *p, uint32_t m, double x, double y, sylva_rng *r, 
     if (scene_terrain_height(p->s, x, y, &z)) return p->outside++, 0;
     const species *spc = &p->s->species[sp];
     if (!spc->n_variants) return err_set(err, "species '%s' has no model", spc->name);
-    uint32_t proto = spc->first_prototype + plant_variant_nearest(p->s, sp, h);
+    uint32_t proto = spc->first_prototype + scene_variant_nearest_height(p->s, sp, h);
     const prototype *pr = &p->s->prototypes[proto];
     if (!(pr->height > 0)) return err_set(err, "the model of species '%s' has no height to scale to %g m", spc->name, h);
     double sv, sh;

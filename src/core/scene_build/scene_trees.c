@@ -38,7 +38,7 @@ static int place_tree(scene *s, const tree_spec *t, int development, trees_tally
     }
     const species *p = &s->species[t->species];
     if (!p->n_variants) return err_set(err, "%s: species '%s' has no model", t->feature, p->name);
-    uint32_t v = t->age > 0 ? scene_variant_for_age(s, t->species, t->age) : plant_variant_nearest(s, t->species, t->height);
+    uint32_t v = t->age > 0 ? scene_variant_for_age(s, t->species, t->age) : scene_variant_nearest_height(s, t->species, t->height);
     uint32_t proto = p->first_prototype + v;
     const prototype *pr = &s->prototypes[proto];
     if (!(pr->height > 0))

@@ -22,7 +22,7 @@
 const char *const host_sections[] = {"image",   "site",    "camera",  "sun",     "sky",     "materials",
                                      "terrain", "species", "plants",  "ecology", "groups",  "objects",
                                      "earth",   "viewpoints", "ztv",     "photo",   "ground_cover", "season",  "snow",
-                                     "landcover", "trees", NULL};
+                                     "landcover", "trees", "canopy", NULL};
 
 const char *const host_shape_names[] = {"mesh", "box", "sphere", "quad", "disk", NULL};
 const char *const host_sky_models[] = {"none", "constant", "preetham", "physical", NULL};
@@ -340,7 +340,7 @@ const host_schema host_schema_ground_cover = {
     ground_cover_params, COUNT(ground_cover_params)};
 
 /* --- ztv ----------------------------------------------------------------------------------- */
-static const char *const ztv_screenings[] = {"none", "vegetation", "all", NULL};
+static const char *const ztv_screenings[] = {"none", "vegetation", "all", "canopy", NULL};
 static const sylva_param_spec ztv_params[] = {
     {.name = "observer_height", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 2, .min = 0,
      .max = 10000, .unit = "m", .help = "Eye height of the observer above the ground of each cell."},
@@ -349,8 +349,9 @@ static const sylva_param_spec ztv_params[] = {
     {.name = "cell", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = 0, .max = 1e6, .unit = "m",
      .help = "Cell size of the map (0: the terrain's own grid, a cell per node)."},
     {.name = "screening", .type = SYLVA_P_ENUM, .def_str = "all", .choices = ztv_screenings,
-     .help = "What screens the view besides bare earth: none, vegetation (the plants) or all (plants "
-             "and objects); bare earth is always mapped too."},
+     .help = "What screens the view besides bare earth: none, vegetation (the plants), all (plants "
+             "and objects) or canopy (the surface of the canopy: section's heights); bare earth is always "
+             "mapped too."},
     {.name = "samples", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 32, .min = 1, .max = 65535,
      .help = "Targets sampled on each development object's surface (when neither targets nor "
              "target_heights are given)."},
@@ -457,6 +458,22 @@ static const sylva_param_spec landcover_params[] = {
 const host_schema host_schema_landcover = {
     "landcover", "The site's land-cover map: a class per node of the ground as surveyed.", landcover_params,
     COUNT(landcover_params)};
+
+/* --- canopy --------------------------------------------------------------------------------- */
+static const sylva_param_spec canopy_params[] = {
+    {.name = "chm", .type = SYLVA_P_PATH,
+     .help = "A canopy height model GDAL reads: the vegetation's height above the ground, in any CRS."},
+    {.name = "dsm", .type = SYLVA_P_PATH,
+     .help = "A surface model (elevations of the canopy's top), read with dtm: the heights are dsm - dtm."},
+    {.name = "dtm", .type = SYLVA_P_PATH,
+     .help = "The bare-earth elevations of the survey under dsm."},
+    {.name = "fit_plants", .type = SYLVA_P_BOOL, .def = 1,
+     .help = "Fit the woodland's plants (communities and ecology) to the canopy: each that reaches it scaled to "
+             "its height there, those where it is below 0.5 m removed."},
+};
+const host_schema host_schema_canopy = {
+    "canopy", "The site's canopy heights: the vegetation's top above each node of the ground as surveyed.",
+    canopy_params, COUNT(canopy_params)};
 
 /* --- materials ------------------------------------------------------------------------------ */
 static const sylva_param_spec material_params[] = {
@@ -793,6 +810,7 @@ const host_schema *host_schema_at(uint32_t i)
         &host_schema_camera,       &host_schema_sun,          &host_schema_sky,
         &host_schema_earth,        &host_schema_ztv,          &host_schema_ztv_target,
         &host_schema_photo,        &host_schema_ground_cover, &host_schema_snow,  &host_schema_landcover,
+        &host_schema_canopy,
         &host_schema_material,     &host_schema_terrain,
         &host_schema_species,      &host_schema_phenology,    &host_schema_blossom,      &host_schema_plant,
         &host_schema_plants_file,  &host_schema_trees,        &host_schema_ecology,

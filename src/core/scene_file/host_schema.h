@@ -37,6 +37,7 @@ extern const host_schema host_schema_ztv;
 extern const host_schema host_schema_ztv_target; /* one entry of ztv: targets: */
 extern const host_schema host_schema_photo;
 extern const host_schema host_schema_landcover;    /* landcover: the site's land-cover map */
+extern const host_schema host_schema_canopy;       /* canopy: the site's canopy heights */
 extern const host_schema host_schema_material;     /* one entry of materials: */
 extern const host_schema host_schema_terrain;      /* terrain's host keys */
 extern const host_schema host_schema_species;      /* a species' host keys */

@@ -96,7 +96,7 @@ static int load(loader *L, const char *path)
         sf_read_groups(L, ynode_get(L->root, "groups")) ||
         sf_read_objects(L, ynode_get(L->root, "objects")) || sf_read_earth(L) || sf_read_ztv(L) ||
         sf_read_ground_cover(L) || sf_read_snow(L) || sf_read_season(L) ||
-        sf_read_photo(L) || sf_read_landcover(L))
+        sf_read_photo(L) || sf_read_landcover(L) || sf_read_canopy(L))
         return -1;
     if (scene_estimate_check(L->sf, L->err)) return -1; /* before any mesh is built */
     if (L->sf->ecology.plugin && L->sf->terrain.source == TERRAIN_NONE)

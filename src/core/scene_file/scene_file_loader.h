@@ -21,6 +21,7 @@
  *   scene_file_layout.c     a layout CSV of placements
  *   scene_file_landcover.c  the landcover section: the site's land-cover map
  *   scene_file_communities.c  the landcover section's plant communities
+ *   scene_file_canopy.c     the canopy section: the site's canopy heights
  *
  * Every function returns 0, or -1 with L->err set (a message located in the file). Everything
  * allocated lives in L->a, the scene_file's arena, except the scene_file's name indexes.
@@ -168,6 +169,7 @@ int sf_read_landcover(loader *L); /* scene_file_landcover.c; after the site */
 /* The landcover: section's communities, plant_area and plant_spacing (p: the section's keys) into
  * lc; scene_file_communities.c, after the species. */
 int sf_read_communities(loader *L, const sylva_params *p, landcover_spec *lc);
+int sf_read_canopy(loader *L);    /* scene_file_canopy.c; after the site */
 /* The index of the development named `name` in L->sf->developments, added when new; -1 with
  * L->err set (out of memory, or more than SCENE_MAX_DEVELOPMENTS). */
 int sf_development_index(loader *L, const char *name, const char *file, uint32_t line, uint32_t column);

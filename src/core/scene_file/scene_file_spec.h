@@ -14,6 +14,7 @@
 #include "sylva/plugin.h"
 #include "season/phenology.h"
 #include "scene/scene_settings.h"
+#include "site/canopy_read.h"
 #include "site/landcover_source.h"
 #include "util/err.h"
 #include "util/name_index.h"
@@ -220,6 +221,15 @@ typedef struct landcover_spec {
     double plant_spacing;       /* metres between the nodes the map is read on for planting */
 } landcover_spec;
 
+/* The canopy: section: the site's canopy heights (docs/canopy.md). */
+typedef struct canopy_spec {
+    int given;                  /* 0: no canopy: section */
+    canopy_source source;       /* its paths in the scene_file's arena */
+    uint32_t line, column;      /* of the key naming the heights (chm: or dsm:) */
+    uint32_t dtm_line, dtm_column; /* of dtm: (with dsm:) */
+    int fit_plants;             /* 1: the ecology's plants are fitted to the heights */
+} canopy_spec;
+
 typedef struct scene_file {
     const char *path;           /* as given */
     const char *dir;            /* absolute folder of the file */
@@ -251,6 +261,7 @@ typedef struct scene_file {
     ztv_settings ztv;
     photo_settings photo;
     landcover_spec landcover;
+    canopy_spec canopy;
     material_spec *materials; uint32_t n_materials;
     name_index material_names;  /* name → index into materials; owned (its table) */
     name_index species_names;   /* name → index into species; owned (its table) */

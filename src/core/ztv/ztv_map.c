@@ -189,7 +189,8 @@ static void add_item(map_style *st, const uint8_t rgb[3], int overlay, const cha
 /* Under a crown, inside an object, not computed, no terrain: the same on every map. */
 static void add_class_items(const ztv_map *m, map_style *st, ztv_mode mode)
 {
-    if (m->class_pixels[mode][ZTV_UNDER_CROWN]) add_item(st, crown_rgb, 0, "under a tree crown");
+    if (m->class_pixels[mode][ZTV_UNDER_CROWN])
+        add_item(st, crown_rgb, 0, mode == ZTV_CANOPY ? "under the canopy" : "under a tree crown");
     if (m->class_pixels[mode][ZTV_IN_OBJECT]) add_item(st, object_rgb, 0, "inside an object");
     if (m->class_pixels[mode][ZTV_OUTSIDE]) add_item(st, outside_rgb, 2, "not computed");
     if (m->class_pixels[mode][ZTV_NO_TERRAIN]) add_item(st, no_terrain_rgb, 0, "no terrain (past the DTM's edge)");
@@ -531,7 +532,9 @@ static int draw_map(const ztv_map *m, const map_style *st, canvas *c, err_buf *e
 
 static const char *mode_title(ztv_mode mode)
 {
-    return mode == ZTV_BARE ? "bare earth" : mode == ZTV_VEGETATION ? "with vegetation" : "with vegetation and objects";
+    static const char *const titles[ZTV_MODES] = {"bare earth", "with vegetation", "with vegetation and objects",
+                                                  "with the canopy surface"};
+    return mode < ZTV_MODES ? titles[mode] : "?";
 }
 
 static int mode_missing(const ztv_map *m, ztv_mode mode, err_buf *err)

@@ -13,20 +13,23 @@
 
 #include <stdint.h>
 
-/* What stands between a viewpoint and the development. Each mode screens with what the one
- * before it does, and more. */
+/* What stands between a viewpoint and the development. Each of the first three screens with what
+ * the one before it does, and more; the canopy mode screens with bare earth and the canopy's
+ * surface from the site's canopy heights (ztv/ztv_canopy.h). */
 typedef enum ztv_mode {
     ZTV_BARE = 0,        /* bare earth: the terrain (and water surfaces) only */
     ZTV_VEGETATION = 1,  /* the terrain and the plants (alpha-masked leaves let rays through) */
     ZTV_ALL = 2,         /* the terrain, the plants and every object that is not the development */
-    ZTV_MODES = 3
+    ZTV_CANOPY = 3,      /* the terrain and the canopy surface: ground plus the measured canopy height */
+    ZTV_MODES = 4
 } ztv_mode;
 
 /* What a cell's observer stands in. Only ZTV_OPEN cells are viewpoints; the others carry no
  * count. In bare-earth mode every cell on the terrain is open. */
 typedef enum ztv_class {
     ZTV_OPEN = 0,         /* a viewpoint */
-    ZTV_UNDER_CROWN = 1,  /* the observer stands under a tree crown (vegetation and all modes) */
+    ZTV_UNDER_CROWN = 1,  /* the observer stands under a tree crown (vegetation and all modes), or
+                           * under the canopy surface (canopy mode) */
     ZTV_IN_OBJECT = 2,    /* the observer stands inside an object (all mode) */
     ZTV_OUTSIDE = 3,      /* beyond the radius (or off the terrain of a map without one): not computed */
     ZTV_NO_TERRAIN = 4,   /* within the radius but past the terrain's edge: no ground to stand on */

@@ -16,7 +16,7 @@
 #include "ztv/ztv_output.h"
 #include "ztv/ztv_trace.h"
 
-static const char *const mode_names[ZTV_MODES] = {"bare earth", "vegetation", "all"};
+static const char *const mode_names[ZTV_MODES] = {"bare earth", "vegetation", "all", "the canopy surface"};
 
 /* Where the blocks of rows go: straight to the output in one part; in a job of several, into a
  * copy of the block on every part, in which part 0 gathers the other parts' rows before
@@ -155,11 +155,24 @@ static int trace_and_write(ztv_job *job, const run_parts *parts, ztv_output *out
     return 0;
 }
 
+/* The canopy mode asked of a scene without canopy heights: refused at the ztv: key that asked, or
+ * as the option's. Returns 0 when the mode has what it screens with. */
+static int refuse_canopy_without_heights(const ztv_study_options *opt, const scene_file *sf, const scene *sc,
+                                         int screening, err_buf *err)
+{
+    if (screening != ZTV_CANOPY || sc->canopy) return 0;
+    static const char what[] = "screening canopy screens with the canopy surface, but the scene has no canopy "
+                               "heights; add a canopy: section (chm: FILE, or dsm: FILE with dtm: FILE)";
+    if (opt->screening >= 0) return err_fail(err, ERR_INPUT, "--%s", what);
+    return err_at(err, ERR_INPUT, sf->path, sf->ztv.line, sf->ztv.column, "ztv: %s", what);
+}
+
 int ztv_study_run(const scene_file *sf, const scene *sc, const ztv_study_options *opt, const run_parts *parts,
                   phase_times *times, err_buf *err)
 {
     if (parts->same_scene(parts->job, sc, err)) return err_default(err, ERR_INPUT);
     ztv_study_options o = settled(opt, sf, sc);
+    if (refuse_canopy_without_heights(opt, sf, sc, o.screening, err)) return -1;
     ztv_targets targets = {0};
     accel acc = {0};
     ztv_output *out = NULL;

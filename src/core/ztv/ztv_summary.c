@@ -51,7 +51,7 @@ static const char *const band_key[ZTV_BANDS] = {"0", "1_25", "25_50", "50_75", "
 
 const char *ztv_mode_name(ztv_mode mode)
 {
-    static const char *const names[ZTV_MODES] = {"bare", "vegetation", "all"};
+    static const char *const names[ZTV_MODES] = {"bare", "vegetation", "all", "canopy"};
     return mode < ZTV_MODES ? names[mode] : "?";
 }
 

@@ -31,7 +31,7 @@ typedef enum ztv_band {
 ztv_band ztv_band_of(float fraction);
 /* "0", "1-25", "25-50", "50-75", "75-<100", "100" (percent). */
 const char *ztv_band_label(ztv_band band);
-/* "bare", "vegetation", "all": the name in file names and summaries. */
+/* "bare", "vegetation", "all", "canopy": the name in file names and summaries. */
 const char *ztv_mode_name(ztv_mode mode);
 
 typedef struct ztv_summary ztv_summary;

@@ -10,6 +10,7 @@
 #include "render/render.h"
 #include "util/interleave.h"
 #include "util/progress.h"
+#include "ztv/ztv_canopy.h"
 #include "ztv/ztv_cover.h"
 #include "ztv/ztv_grid.h"
 #include "ztv/ztv_sight.h"
@@ -19,6 +20,7 @@ unsigned ztv_mode_mask(ztv_mode m)
     switch (m) {
     case ZTV_BARE: return ACCEL_MASK_GROUND;
     case ZTV_VEGETATION: return ACCEL_MASK_GROUND | ACCEL_MASK_PLANT;
+    case ZTV_CANOPY: return ACCEL_MASK_GROUND; /* and the canopy surface's own scene (ztv_canopy.h) */
     default: return ACCEL_MASK_GROUND | ACCEL_MASK_PLANT | ACCEL_MASK_OBJECT;
     }
 }
@@ -34,7 +36,9 @@ typedef struct layer_buf {
 typedef struct trace_ctx {
     const ztv_job *job;
     ztv_sight sight;
-    const ztv_cover *cover;
+    ztv_sight canopy_sight;        /* over the canopy surface alone (canopy mode) */
+    const ztv_cover *cover;        /* vegetation and all modes */
+    const ztv_canopy *canopy;      /* canopy mode */
     uint32_t j0, rows;             /* the block being computed */
     uint32_t first, step, own;     /* its rows of this part: first + k * step, k < own */
     atomic_uint next_row;
@@ -66,6 +70,32 @@ static int within_radius(const ztv_job *job, double x, double y)
     return 0;
 }
 
+/* Whether target t is in sight of eye on bare earth (*bare) and screened (*screened, 0 when the
+ * cell is no viewpoint screened or no screened mode is computed). */
+static void pair_sight(const trace_ctx *c, row_scratch *w, int viewpoint, const double eye[3], const double t[3],
+                       int *bare, int *screened, uint64_t *rays)
+{
+    unsigned screen_mask = ztv_mode_mask(c->job->screened);
+    *screened = 0;
+    if (!c->screened || !viewpoint) {
+        *bare = ztv_sight_clear(&c->sight, eye, t, ACCEL_MASK_GROUND, rays);
+        return;
+    } else if (c->canopy) {
+        /* the canopy surface does not hold the ground's apron and water: both are asked */
+        *bare = ztv_sight_clear(&c->sight, eye, t, ACCEL_MASK_GROUND, rays);
+        *screened = *bare && ztv_sight_clear(&c->canopy_sight, eye, t, ~0u, rays);
+    } else if (w->bare_clear < w->screened_blocked) {
+        /* bare earth hides most: what it hides, the screening hides too */
+        *bare = ztv_sight_clear(&c->sight, eye, t, ACCEL_MASK_GROUND, rays);
+        *screened = *bare && ztv_sight_clear(&c->sight, eye, t, screen_mask, rays);
+    } else {
+        /* the screening hides little: what it lets through, bare earth does too */
+        *screened = ztv_sight_clear(&c->sight, eye, t, screen_mask, rays);
+        *bare = *screened || ztv_sight_clear(&c->sight, eye, t, ACCEL_MASK_GROUND, rays);
+    }
+    w->bare_clear += *bare, w->screened_blocked += !*screened;
+}
+
 static void trace_row(trace_ctx *c, uint32_t row, row_scratch *w, uint64_t *cells, uint64_t *pairs, uint64_t *rays)
 {
     const ztv_job *job = c->job;
@@ -83,9 +113,9 @@ static void trace_row(trace_ctx *c, uint32_t row, row_scratch *w, uint64_t *cell
         w->eye[i] = on ? (float)(ground + job->observer_height) : NAN;
     }
     memset(w->under, 0, g->nx), memset(w->inside, 0, g->nx);
-    if (c->screened && job->screened >= ZTV_VEGETATION) ztv_cover_crowns(c->cover, j, w->eye, w->under);
-    if (c->screened && job->screened == ZTV_ALL) ztv_cover_objects(c->cover, j, w->eye, w->inside);
-    unsigned screen_mask = ztv_mode_mask(job->screened);
+    if (c->cover) ztv_cover_crowns(c->cover, j, w->eye, w->under);
+    if (c->cover && job->screened == ZTV_ALL) ztv_cover_objects(c->cover, j, w->eye, w->inside);
+    if (c->canopy) ztv_canopy_under(c->canopy, g, j, w->eye, w->under);
     for (uint32_t i = 0; i < g->nx; i++) {
         size_t k = base + i;
         int on = !isnan(w->eye[i]);
@@ -98,19 +128,8 @@ static void trace_row(trace_ctx *c, uint32_t row, row_scratch *w, uint64_t *cell
             (*cells)++;
             for (uint32_t n = 0; n < t->n; n++) {
                 uint32_t bit = 1u << t->development[n];
-                int bare, screened = 0;
-                if (!c->screened || cls_s != ZTV_OPEN) {
-                    bare = ztv_sight_clear(&c->sight, eye, t->p[n], ACCEL_MASK_GROUND, rays);
-                } else if (w->bare_clear < w->screened_blocked) {
-                    /* bare earth hides most: what it hides, the screening hides too */
-                    bare = ztv_sight_clear(&c->sight, eye, t->p[n], ACCEL_MASK_GROUND, rays);
-                    screened = bare && ztv_sight_clear(&c->sight, eye, t->p[n], screen_mask, rays);
-                } else {
-                    /* the screening hides little: what it lets through, bare earth does too */
-                    screened = ztv_sight_clear(&c->sight, eye, t->p[n], screen_mask, rays);
-                    bare = screened || ztv_sight_clear(&c->sight, eye, t->p[n], ACCEL_MASK_GROUND, rays);
-                }
-                if (c->screened && cls_s == ZTV_OPEN) w->bare_clear += bare, w->screened_blocked += !screened;
+                int bare, screened;
+                pair_sight(c, w, cls_s == ZTV_OPEN, eye, t->p[n], &bare, &screened, rays);
                 if (bare) vis[0]++, devs[0] |= bit;
                 if (screened) vis[1]++, devs[1] |= bit;
                 (*pairs)++;
@@ -169,16 +188,20 @@ int ztv_trace(const ztv_job *job, ztv_sink sink, void *user, ztv_stats *stats, e
     size_t n = (size_t)block_rows * g->nx;
     int rc = 0;
     ztv_cover *cover = NULL;
+    ztv_canopy *surface = NULL;
     c.ground = malloc(n * sizeof *c.ground);
     if (!c.ground || layer_alloc(&c.layer[0], n) || (c.screened && layer_alloc(&c.layer[1], n))) {
         rc = err_nomem(err, "out of memory for a block of %zu cells of the map", n);
         goto done;
     }
-    if (c.screened && !(cover = ztv_cover_new(job->scene, job->accel, g, err))) {
+    if (job->screened == ZTV_CANOPY) surface = ztv_canopy_new(job->scene, job->accel, err);
+    else if (c.screened) cover = ztv_cover_new(job->scene, job->accel, g, err);
+    if (c.screened && !cover && !surface) {
         rc = -1;
         goto done;
     }
-    c.cover = cover;
+    c.cover = cover, c.canopy = surface;
+    if (surface) ztv_sight_init(&c.canopy_sight, ztv_canopy_scene(surface), job->earth);
     unsigned threads = job->threads ? job->threads : render_default_threads();
     progress prog;
     uint32_t parts = job->parts > 1 ? job->parts : 1, part = parts > 1 ? job->part : 0;
@@ -219,6 +242,7 @@ done:
     if (stats)
         *stats = (ztv_stats){.cells = c.cells, .pairs = c.pairs, .rays = c.rays, .seconds = progress_now() - t0};
     ztv_cover_free(cover);
+    ztv_canopy_free(surface);
     free(c.ground);
     layer_free(&c.layer[0]);
     layer_free(&c.layer[1]);

@@ -11,7 +11,9 @@
  * one blocked on bare earth is blocked screened: a pair of observer and target costs one
  * sightline or two. Each worker casts first the one that has settled more of its pairs so far
  * (bare earth where the terrain hides most, the screened one where little is screened); the
- * answer is the same in either order.
+ * answer is the same in either order. The canopy mode screens with bare earth and the canopy
+ * surface, a scene of its own (ztv/ztv_canopy.h): its sightline is cast over the surface only
+ * when bare earth leaves it clear.
  */
 #ifndef SYLVA_ZTV_TRACE_H
 #define SYLVA_ZTV_TRACE_H

@@ -199,6 +199,8 @@ TEST(bad_communities_refused)
             "the class 5 has two communities");
     refused("    - {code: 5, species: sagebrush, density: 30000, height: [1, 2]}\n",
             "more than the 8000000 a scene takes");
+    refused("    - {code: 5, species: sagebrush, density: 10, height: [1, 2]}\n  plant_area: [0, 0, 100, 100]\n",
+            "the plant_area [0, 0, 100, 100] holds no cell of 5 m on the terrain");
 }
 
 /* A 128 m square site whose west half is forest (code 1) and east half grass (code 2), the

@@ -13,6 +13,8 @@
 /* The most plants the communities may place, so that a map of a whole county at forest density
  * is refused before it fills the memory (about 100 bytes a plant in the scene and its BVH). */
 #define COMMUNITY_MAX_PLANTS 8000000.0
+/* The most nodes of the planting grid (26 bytes each while the map is read on it). */
+#define COMMUNITY_MAX_NODES 50000000.0
 
 typedef struct planting {
     scene *s;
@@ -57,8 +59,8 @@ static landcover_grid planting_grid(const scene *s, const scene_file *sf)
     }
     double d = spec->plant_spacing;
     landcover_grid g = {sf->site.crs_wkt, {sf->site.origin[0], sf->site.origin[1]}, 0, 0, west, south, d, d};
-    if (east - west >= d && north - south >= d)
-        g.nx = (uint32_t)floor((east - west) / d) + 1, g.ny = (uint32_t)floor((north - south) / d) + 1;
+    double nx = floor((east - west) / d) + 1, ny = floor((north - south) / d) + 1;
+    if (nx >= 2 && ny >= 2 && nx * ny <= COMMUNITY_MAX_NODES) g.nx = (uint32_t)nx, g.ny = (uint32_t)ny;
     return g;
 }
 
@@ -172,10 +174,17 @@ int scene_build_communities(scene *s, const scene_file *sf, int quiet, err_buf *
     const landcover_spec *spec = &sf->landcover;
     if (!spec->given || !spec->n_communities || !s->surveyed) return 0;
     landcover_grid g = planting_grid(s, sf);
-    if (!g.nx || !g.ny)
+    if (!g.nx && spec->has_plant_area)
         return err_at(err, ERR_INPUT, sf->path, spec->line, spec->column,
-                      "landcover: the plant_area [%g, %g, %g, %g] lies off the terrain; give an area of the site",
-                      spec->plant_area[0], spec->plant_area[1], spec->plant_area[2], spec->plant_area[3]);
+                      "landcover: the plant_area [%g, %g, %g, %g] holds no cell of %g m on the terrain, or more "
+                      "than %.0f; give an area of the site, at most that many cells", spec->plant_area[0],
+                      spec->plant_area[1], spec->plant_area[2], spec->plant_area[3], spec->plant_spacing,
+                      COMMUNITY_MAX_NODES);
+    if (!g.nx)
+        return err_at(err, ERR_INPUT, sf->path, spec->line, spec->column,
+                      "landcover: planting the whole terrain on a grid of %g m takes more than %.0f cells (or none); "
+                      "give plant_area: [west, south, east, north], the land round the development and the views, "
+                      "or a larger plant_spacing", spec->plant_spacing, COMMUNITY_MAX_NODES);
     land_cover *lc = landcover_read(&spec->source, &g, NULL, NULL, err); /* owned here */
     if (!lc) {
         err_default(err, ERR_INPUT);

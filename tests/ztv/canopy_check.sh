@@ -9,7 +9,10 @@
 # too) and the canopy as the CHM itself (CHM_test.tif) or as the DSM less the DTM
 # (kootenayCHM.tif); MASTS masts of H metres, each its own development, on a flat Earth, eyes EYE
 # metres above the ground. gdal_viewshed: its observer at the mast, -oz H less the CHM at the mast
-# (its DSM stands that much above the ground), the cell's target -tz EYE, -cc 0.
+# (its DSM stands that much above the ground), -cc 0, in its output mode GROUND (each cell's least
+# target height above the DSM from which the mast is in sight), so that the comparison can put its
+# eye EYE above the ground as sylva's, below the open cells' low vegetation (-tz EYE would put it
+# EYE above the DSM).
 #
 # Exit 0 when both models pass, 1 when one does not, 77 (skipped) without the shared data.
 set -uo pipefail
@@ -53,7 +56,7 @@ for case in "CHM_test {chm: $data/CHM_test.tif}" "kootenayCHM {dsm: dsm.tif, dtm
   while read -r e n c; do
     t=${#maps[@]}
     oz=$(awk -v h="$H" -v c="$c" 'BEGIN { printf "%.4f", h - c }')
-    gdal_viewshed -q -ox "$e" -oy "$n" -oz "$oz" -tz "$EYE" -cc 0 -vv 1 -iv 0 "$w/dsm.tif" "$w/gdal_$t.tif" ||
+    gdal_viewshed -q -ox "$e" -oy "$n" -oz "$oz" -cc 0 -om GROUND "$w/dsm.tif" "$w/gdal_$t.tif" ||
       { echo "$name: gdal_viewshed failed" >&2; exit 1; }
     maps+=("$w/gdal_$t.tif")
   done <"$w/masts.txt"

@@ -8,12 +8,16 @@
  * class, band 4 the developments seen, one bit each). MASTS.txt holds a line "E N C" per mast (map
  * coordinates of its cell's centre and the CHM there, canopy_ground.c); mast t is development t,
  * alone, H metres above the ground, and GDAL_t.tif is gdal_viewshed run from it over DSM.tif with
- * -oz H - C and the cell's target height -tz EYE. CHM.tif, DTM.tif and DSM.tif are on the maps'
- * grid.
+ * -oz H - C in its output mode GROUND: each cell's least target height above the surface model
+ * from which the mast is in sight. CHM.tif, DTM.tif and DSM.tif are on the maps' grid.
  *
- * The two tools ask different questions where the canopy stands: sylva's observer stands EYE
- * above the ground with the canopy above him, gdal_viewshed's EYE above the surface model, on the
- * treetops. They ask the same where nothing stands. Checks, failing (exit 1) when one does not hold:
+ * gdal_viewshed's usual run, -tz EYE, puts the observer EYE above the surface model: on the
+ * treetops in a wood, and on the low vegetation elsewhere (an open cell's CHM, up to OPEN_BELOW,
+ * is in the DSM), where sylva's eye stands EYE above the ground. From the least heights the tool
+ * takes gdal's answer for sylva's eye, EYE less the cell's canopy above the surface model, on every
+ * cell but woodland; there it keeps the treetop observer (-tz EYE), which sylva's screening has
+ * none of. The usual run's agreement on the open cells is printed beside. Checks, failing (exit 1)
+ * when one does not hold:
  *  - woodland (CHM above EYE): every cell is no viewpoint in sylva's canopy map (class 1, under the
  *    canopy), and no other cell is; gdal_viewshed, on the treetops, sees the masts from many of
  *    them (printed: why a surface model's viewshed is no screening analysis);
@@ -27,7 +31,8 @@
  *    (gdal_viewshed's agreement with them is printed);
  *  - the canopy screens: on the open cells it hides at least HIDDEN_MIN of the pairs that bare
  *    earth sees, so that the agreement is not that of an unscreened map.
- * Low vegetation (CHM from OPEN_BELOW to EYE), where the two eyes stand the CHM apart, is printed.
+ * Low vegetation (CHM from OPEN_BELOW to EYE), where the usual run's eye stands the CHM higher, is
+ * printed.
  * Exit 2 on bad usage or an unreadable file. */
 #include <gdal.h>
 #include <math.h>
@@ -55,6 +60,7 @@ static const char *const kind_name[KINDS] = {"open (CHM < 0.5 m)", "open (no dat
 typedef struct tally {
     long pairs, agree, near, sylva, gdal, bare; /* pairs; agreeing; agreeing or along an edge; seen by
                                                  * sylva's canopy map, gdal, sylva's bare map */
+    long usual;                                 /* agreeing with gdal's usual run, -tz EYE */
 } tally;
 
 typedef struct maps {
@@ -85,6 +91,22 @@ static double share(long a, long b) { return b ? (double)a / (double)b : 0.0; }
 
 static int seen_by(const float *map, size_t k, int t) { return (uint32_t)map[k] >> t & 1u; }
 
+/* The canopy the surface model holds at cell k: the CHM, no data and heights below 0 taken as 0
+ * (canopy_ground.c). */
+static double dsm_canopy(const maps *m, size_t k)
+{
+    double h = m->chm[k];
+    return kind_of(m, k) == OPEN_NO_DATA || h < 0 ? 0.0 : h;
+}
+
+/* 1 when gdal's least heights g see the mast from cell k: sylva's eye, EYE above the ground, but
+ * in woodland the usual run's, EYE above the treetops; with usual, the usual run's everywhere. */
+static int gdal_sees(const maps *m, const float *g, size_t k, int usual)
+{
+    int treetop = usual || kind_of(m, k) == WOOD;
+    return g[k] <= m->eye - (treetop ? 0.0 : dsm_canopy(m, k));
+}
+
 /* The cell classes of sylva's canopy map against the CHM: under the canopy exactly where it
  * stands above the eye (a thousandth of a metre either way is float rounding). */
 static int classes_hold(const maps *m, const float *cls)
@@ -111,7 +133,8 @@ static int near_edge(const maps *m, const float *g, int t, int i, int j)
             int ii = i + di, jj = j + dj;
             if (ii < 0 || jj < 0 || ii >= m->nx || jj >= m->ny) continue;
             size_t q = (size_t)jj * m->nx + ii;
-            if ((g[q] > 0) != (g[k] > 0) || seen_by(m->seen, q, t) != seen_by(m->seen, k, t)) return 1;
+            if (gdal_sees(m, g, q, 0) != gdal_sees(m, g, k, 0) || seen_by(m->seen, q, t) != seen_by(m->seen, k, t))
+                return 1;
         }
     return 0;
 }
@@ -123,8 +146,9 @@ static void tally_mast(const maps *m, const float *g, int t, tally *by_kind)
         for (int i = 0; i < m->nx; i++) {
             size_t k = (size_t)j * m->nx + i;
             tally *c = &by_kind[kind_of(m, k)];
-            int s = seen_by(m->seen, k, t), v = g[k] > 0;
-            c->pairs++, c->agree += s == v, c->sylva += s, c->gdal += v, c->bare += seen_by(m->bare, k, t);
+            int s = seen_by(m->seen, k, t), v = gdal_sees(m, g, k, 0);
+            c->pairs++, c->agree += s == v, c->usual += s == gdal_sees(m, g, k, 1);
+            c->sylva += s, c->gdal += v, c->bare += seen_by(m->bare, k, t);
             c->near += s == v || near_edge(m, g, t, i, j);
         }
 }
@@ -143,7 +167,7 @@ static void exact_mast(const maps *m, const float *g, int t, int ti, int tj, lon
             if (kind_of(m, k) > OPEN_NO_DATA) continue;
             double eye[3] = {i * dx, (m->ny - 1 - j) * dy, m->dtm[k] + m->eye};
             int clear = sightline_clear(&surface, eye, target, 0.0);
-            e[0]++, e[1] += clear == seen_by(m->seen, k, t), e[2] += clear == (g[k] > 0);
+            e[0]++, e[1] += clear == seen_by(m->seen, k, t), e[2] += clear == gdal_sees(m, g, k, 0);
         }
 }
 
@@ -155,14 +179,16 @@ static void print_tally(const char *name, const tally *t)
            100 * share(t->bare, t->pairs));
 }
 
-/* The checks on the open cells' figures; prints them and the failures. */
-static int open_checks(const tally *t, const long exact[3])
+/* The checks on the open cells' figures (eye: the eyes' height); prints them and the failures. */
+static int open_checks(const tally *t, const long exact[3], double eye)
 {
     tally o = {0};
     for (int k = OPEN_DATA; k <= OPEN_NO_DATA; k++)
         o.pairs += t[k].pairs, o.agree += t[k].agree, o.near += t[k].near, o.sylva += t[k].sylva,
-        o.gdal += t[k].gdal, o.bare += t[k].bare;
+        o.gdal += t[k].gdal, o.bare += t[k].bare, o.usual += t[k].usual;
     print_tally("all open cells", &o);
+    printf("gdal_viewshed's usual run (-tz %.1f: its eye on the open cells' low vegetation) agrees on %.3f %% of "
+           "them\n", eye, 100 * share(o.usual, o.pairs));
     printf("exact sightlines on %ld open pairs (a cell in %d x %d): sylva agrees on %.3f %%, gdal_viewshed on "
            "%.3f %%\n", exact[0], EXACT_STEP, EXACT_STEP, 100 * share(exact[1], exact[0]),
            100 * share(exact[2], exact[0]));
@@ -224,7 +250,7 @@ int main(int argc, char **argv)
         free(g);
     }
     for (int k = 0; ok && k < KINDS; k++) print_tally(kind_name[k], &t[k]);
-    ok = ok && open_checks(t, exact);
+    ok = ok && open_checks(t, exact, m.eye);
     free(cls), free(seen), free(bare), free(chm), free(dtm_z), free(dsm_z);
     return ok ? 0 : 1;
 }

@@ -12,6 +12,7 @@
 #include "scene_file/scene_file.h"
 #include "work_dir.h"
 #include "scene_text.h"
+#include "geotiff_fixture.h"
 
 #define ZION SYLVA_SHARED_DATA_DIR "/sites/zion"
 #define SPECIES SYLVA_TEST_DATA_DIR "/../scenes/species/zion.yaml"
@@ -271,5 +272,37 @@ TEST(grown_within_habitat)
     scene_free(without);
 }
 
+/* Communities are fitted to a canopy height model as the ecology's plants are
+ * (scene_build/scene_canopy.h): under a CHM of 8 m everywhere, every ponderosa placed at 4-12 m
+ * reaches half the canopy and is scaled to 8 m exactly. */
+TEST(fitted_to_the_canopy)
+{
+    char chm[1200]; /* work_path's buffer is reused by the next call */
+    snprintf(chm, sizeof chm, "%s", work_path("chm8.tif"));
+    GDALDatasetH ds = geotiff_create(chm, 32612, 397000, 4103000, 100, 60, 60, GDT_Float32);
+    CHECK(ds != NULL);
+    if (!ds) return;
+    CHECK(GDALFillRaster(GDALGetRasterBand(ds, 1), 8.0, 0) == CE_None);
+    GDALClose(ds);
+    char text[4096];
+    snprintf(text, sizeof text, "%s  plant_spacing: 100\ncanopy: {chm: %s}\n",
+             flat_site(5, "    - {code: 5, species: ponderosa, density: 25, height: [4, 12]}\n"), chm);
+    err_buf err = {{0}};
+    scene *s = scene_text_build_analysis("fitted.yaml", text, 1, &err);
+    if (!s) fprintf(stderr, "%s\n", err.msg);
+    CHECK(s != NULL);
+    uint32_t n = 0, at_8 = 0;
+    for (uint32_t i = 0; s && i < s->n_instances; i++) {
+        if (scene_instance_is_ground_cover(s, i)) continue;
+        double h = s->instances[i].xf.m[2][2] * s->prototypes[s->instances[i].prototype].height;
+        n++, at_8 += fabs(h - 8.0) < 1e-3;
+    }
+    fprintf(stderr, "canopy: %u of %u ponderosas stand 8 m tall under the 8 m canopy\n", at_8, n);
+    CHECK_INT(n, 10000);
+    CHECK_INT(at_8, n);
+    scene_free(s);
+}
+
 TEST_LIST(TEST_CASE(zion_follows_the_nlcd), TEST_CASE(zion_names_plant_the_same), TEST_CASE(density_and_shares),
-          TEST_CASE(bad_communities_refused), TEST_CASE(grown_within_habitat))
+          TEST_CASE(bad_communities_refused), TEST_CASE(grown_within_habitat),
+          TEST_CASE(fitted_to_the_canopy))

@@ -204,19 +204,26 @@ TEST(bad_communities_refused)
             "the plant_area [0, 0, 100, 100] holds no cell of 5 m on the terrain");
 }
 
-/* A 128 m square site whose west half is forest (code 1) and east half grass (code 2), the
- * boundary 4 m east of the middle nodes, with a mesh beech the ecology grows for 120 years;
- * `communities` (may be empty) under the landcover: section. */
-static scene *halves(const char *communities, err_buf *err)
+/* The west (code 1) and east (code 2) halves of a 128 m square round (400000, 4100000) in
+ * EPSG:32612, their boundary at 400004 E: a GeoJSON file in the work folder. */
+static const char *halves_map(void)
 {
-    static char text[16384];
-    const char *map = work_file("halves.geojson",
+    return work_file("halves.geojson",
         "{\"type\": \"FeatureCollection\", \"crs\": {\"type\": \"name\", \"properties\": {\"name\": \"EPSG:32612\"}},"
         " \"features\": ["
         "{\"type\": \"Feature\", \"properties\": {\"code\": 1}, \"geometry\": {\"type\": \"Polygon\", \"coordinates\": "
         "[[[399900, 4099900], [400004, 4099900], [400004, 4100100], [399900, 4100100], [399900, 4099900]]]}},"
         "{\"type\": \"Feature\", \"properties\": {\"code\": 2}, \"geometry\": {\"type\": \"Polygon\", \"coordinates\": "
         "[[[400004, 4099900], [400100, 4099900], [400100, 4100100], [400004, 4100100], [400004, 4099900]]]}}]}");
+}
+
+/* A 128 m square site whose west half is forest (code 1) and east half grass (code 2), the
+ * boundary 4 m east of the middle nodes, with a mesh beech the ecology grows for 120 years;
+ * `communities` (may be empty) under the landcover: section. */
+static scene *halves(const char *communities, err_buf *err)
+{
+    static char text[16384];
+    const char *map = halves_map();
     int n = snprintf(text, sizeof text,
                      "site: {crs: \"EPSG:32612\", origin: [400000, 4100000]}\n"
                      "terrain:\n  origin: [-64, -64]\n  spacing: [8, 8]\n  grid:\n");
@@ -303,6 +310,53 @@ TEST(fitted_to_the_canopy)
     scene_free(s);
 }
 
+/* Sagebrush over the west half on a 1 m grid: plants per square metre between x0 and x1. */
+static double sage_density(const scene *s, double x0, double x1)
+{
+    uint32_t n = 0;
+    for (uint32_t i = 0; s && i < s->n_instances; i++) {
+        if (scene_instance_is_ground_cover(s, i)) continue;
+        double x = s->instances[i].xf.m[0][3], y = s->instances[i].xf.m[1][3];
+        n += x >= x0 && x < x1 && y > -60 && y < 60;
+    }
+    return n / ((x1 - x0) * 120.0);
+}
+
+/* A community thins out over plant_edge inside its edge, and keeps its density without one. */
+static scene *sage_west(const char *edge, err_buf *err)
+{
+    char text[4096];
+    snprintf(text, sizeof text,
+             "site: {crs: \"EPSG:32612\", origin: [400000, 4100000]}\n"
+             "terrain: {origin: [-64, -64], spacing: [64, 64], grid: [[0, 0, 0], [0, 0, 0], [0, 0, 0]]}\n"
+             "species: {include: [%s]}\n"
+             "landcover:\n  polygons: %s\n  class_field: code\n  classes: [{code: 1, kind: shrub}, {code: 2, kind: grass}]\n"
+             "  plant_spacing: 1\n  %s\n"
+             "  communities: [{kind: shrub, species: sagebrush, density: 2000, height: [0.5, 1]}]\n",
+             SPECIES, halves_map(), edge);
+    return scene_text_build_analysis("sage.yaml", text, 1, err);
+}
+
+TEST(edge_thins_out)
+{
+    err_buf err = {{0}};
+    scene *soft = sage_west("plant_edge: 10", &err), *hard = soft ? sage_west("plant_edge: 0", &err) : NULL;
+    if (!hard) fprintf(stderr, "%s\n", err.msg);
+    CHECK(soft && hard);
+    /* the boundary at x = 4: the band from 1 to 5 m inside it */
+    double inner = sage_density(soft, -60, -30), band = sage_density(soft, -1, 3);
+    double inner_hard = sage_density(hard, -60, -30), band_hard = sage_density(hard, -1, 3);
+    fprintf(stderr, "edge: plants per m2 inside %.3f, 1-5 m inside the edge %.3f; hard edge %.3f and %.3f\n", inner,
+            band, inner_hard, band_hard);
+    CHECK(fabs(inner - 0.2) < 0.02 && fabs(inner_hard - 0.2) < 0.02);
+    CHECK(band < 0.6 * inner);
+    CHECK(band_hard > 0.85 * inner_hard);
+    CHECK_INT(sage_density(soft, 5, 60) == 0 && sage_density(hard, 5, 60) == 0, 1);
+    scene_free(soft);
+    scene_free(hard);
+}
+
 TEST_LIST(TEST_CASE(zion_follows_the_nlcd), TEST_CASE(zion_names_plant_the_same), TEST_CASE(density_and_shares),
           TEST_CASE(bad_communities_refused), TEST_CASE(grown_within_habitat),
-          TEST_CASE(fitted_to_the_canopy))
+          TEST_CASE(fitted_to_the_canopy),
+          TEST_CASE(edge_thins_out))

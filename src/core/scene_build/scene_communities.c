@@ -8,6 +8,7 @@
 
 #include "scene_build/plant_scale.h"
 #include "site/landcover.h"
+#include "util/gradient_noise.h"
 #include "util/rng.h"
 
 /* The most plants the communities may place, so that a map of a whole county at forest density
@@ -105,9 +106,34 @@ static int32_t node_community(const planting *p, uint32_t i, uint32_t j)
     return cls == LAND_COVER_NONE ? -1 : p->community[cls];
 }
 
+/* The share of a community's density a cell keeps near the community's edge (plant_edge e):
+ * with d the distance from the cell's south-west node to the nearest node of another class (or
+ * none) within e, and n a smooth noise in [-1, 1] of wavelength 4e, S(d / e + 0.3 n), S the
+ * smoothstep on [0, 1], so a wood thins out toward its edge over a band that wanders by up to a
+ * third of its width. The grid's own edge is no edge. 1 away from every edge or for e = 0. */
+static double edge_share(const planting *p, uint32_t i, uint32_t j, int32_t m)
+{
+    const land_cover *lc = p->lc;
+    double e = p->spec->plant_edge;
+    if (!(e > 0)) return 1;
+    int64_t ri = (int64_t)ceil(e / lc->dx), rj = (int64_t)ceil(e / lc->dy);
+    double best = INFINITY;
+    for (int64_t b = -rj; b <= rj; b++)
+        for (int64_t a = -ri; a <= ri; a++) {
+            int64_t x = (int64_t)i + a, y = (int64_t)j + b;
+            if (x < 0 || y < 0 || x >= lc->nx || y >= lc->ny || node_community(p, (uint32_t)x, (uint32_t)y) == m) continue;
+            best = fmin(best, hypot(a * lc->dx, b * lc->dy));
+        }
+    if (!(best <= e)) return 1;
+    const noise_fbm wander = {.wavelength = 4 * e, .octaves = 2, .gain = 0.5f, .seed = 0xed6eu};
+    double t = best / e + 0.3 * noise_fbm2(&wander, lc->x0 + i * lc->dx, lc->y0 + j * lc->dy, 0, NULL);
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    return t * t * (3 - 2 * t);
+}
+
 /* The plants of the cell between nodes (i, j) and (i + 1, j + 1), when its four corners share a
- * community: the whole part of the community's expected count per cell, and one more with the
- * chance of its fraction, each at a uniform point of the cell. A map's class boundary is a
+ * community: the whole part of the community's expected count per cell (thinned near its edge),
+ * and one more with the chance of its fraction, each at a uniform point of the cell. A map's class boundary is a
  * straight line across such a cell, and each side of it holds a corner, so no plant stands on
  * the far side of a boundary; a band up to a cell wide along each boundary stays bare. */
 static int plant_cell(planting *p, uint32_t i, uint32_t j, err_buf *err)
@@ -119,7 +145,7 @@ static int plant_cell(planting *p, uint32_t i, uint32_t j, err_buf *err)
         return 0;
     sylva_rng r;
     rng_stream(&r, p->seed, "landcover community", (uint64_t)j * lc->nx + i);
-    double expected = p->spec->communities[m].density * lc->dx * lc->dy / 1e4;
+    double expected = p->spec->communities[m].density * lc->dx * lc->dy / 1e4 * edge_share(p, i, j, m);
     uint64_t n = (uint64_t)expected + (rng_next_double(&r) < expected - floor(expected));
     double x0 = lc->x0 + i * lc->dx, y0 = lc->y0 + j * lc->dy;
     for (uint64_t k = 0; k < n; k++) {

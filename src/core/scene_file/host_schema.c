@@ -454,6 +454,9 @@ static const sylva_param_spec landcover_params[] = {
     {.name = "plant_spacing", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 5, .min = 0.5, .max = 1000, .unit = "m",
      .help = "The grid the map is read on for planting: a cell whose four nodes share a community is planted, "
              "so plants keep this far from a class boundary at most."},
+    {.name = "plant_edge", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 10, .min = 0, .max = 1000, .unit = "m",
+     .help = "The band inside a community's edge over which it thins out to none, its line wandering by noise "
+             "(0: a hard edge)."},
 };
 const host_schema host_schema_landcover = {
     "landcover", "The site's land-cover map: a class per node of the ground as surveyed.", landcover_params,

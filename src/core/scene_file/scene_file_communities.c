@@ -97,6 +97,7 @@ static int read_area(loader *L, const sylva_params *p, landcover_spec *lc)
 {
     const sylva_value *area = sylva_param(p, "plant_area");
     lc->plant_spacing = sylva_param_real(p, "plant_spacing");
+    lc->plant_edge = sylva_param_real(p, "plant_edge");
     if (!area->is_set) return 0;
     const double *a = area->list;
     if (!(a[0] < a[2] && a[1] < a[3]))

@@ -219,6 +219,7 @@ typedef struct landcover_spec {
     int has_plant_area;
     double plant_area[4];       /* west, south, east, north: map coordinates */
     double plant_spacing;       /* metres between the nodes the map is read on for planting */
+    double plant_edge;          /* metres: the band inside a community's edge where it thins out */
 } landcover_spec;
 
 /* The canopy: section: the site's canopy heights (docs/canopy.md). */

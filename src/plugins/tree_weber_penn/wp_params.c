@@ -42,7 +42,7 @@ const wp_param_def wp_param_table[] = {
     GEN("LeafScaleX", WP_FLOAT, leaf_scale_x, 0.5, 1e-6, INF, "Leaves", "leaf width to length"),
     GEN("LeafBend", WP_FLOAT, leaf_bend, 0.3, 0, 1, "Leaf orientation", "how far leaves turn to the light"),
     GEN("LeafStemLen", WP_FLOAT, leaf_stem_len, 0.5, -INF, INF, "Leaves (Arbaro)", "leaf stalk length to leaf length"),
-    GEN("LeafDistrib", WP_INT, leaf_distrib, 4, 0, 8, "Leaves", "shape id of the leaves' distribution along a stem"),
+    GEN("LeafDistrib", WP_INT, leaf_distrib, 4, 0, 8, "Leaves (Arbaro)", "shape id of the leaves' distribution along a stem"),
     GEN("LeafQuality", WP_FLOAT, leaf_quality, 1, 1e-6, 1, "Quality (Arbaro)", "leaf count reduction"),
     GEN("Smooth", WP_FLOAT, smooth, 0.5, 0, 1, "Quality (Arbaro)", "mesh smoothness"),
     GEN("AttractionUp", WP_FLOAT, attraction_up, 0, -INF, INF, "Vertical attraction", "upward pull on stems"),

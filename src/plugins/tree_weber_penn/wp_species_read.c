@@ -215,6 +215,7 @@ static int arbaro_species(const reading *r, const wp_xml_node *n)
     if (!p) return r->err->status;
     if ((rc = only_elements(r, n))) return rc;
     unsigned char seen[SEEN_SIZE] = { 0 };
+    seen[(size_t)(wp_param_find("Species") - wp_param_table) * WP_LEVELS] = 1; /* given by name=... */
     for (const wp_xml_node *c = n->children; c && !rc; c = c->next) rc = arbaro_param(r, c, p, seen);
     return rc;
 }

@@ -148,7 +148,10 @@ static int append_text(cursor *c, char **t, size_t *n, size_t from, size_t to, i
         char ch = c->buf[i];
         if (ch == '&') {
             size_t k = entity_at(c->buf + i, to - i, &ch);
-            if (!k) return fail_at(c, line, col, "unknown entity; use &lt; &gt; &amp; &quot; or &apos;");
+            if (!k) {
+                for (size_t j = from; j < i; j++) c->buf[j] == '\n' ? (line++, col = 1) : col++;
+                return fail_at(c, line, col, "unknown entity; use &lt; &gt; &amp; &quot; or &apos;");
+            }
             i += k - 1;
         }
         (*t)[(*n)++] = ch;

@@ -157,7 +157,8 @@ TEST(malformed_xml_refused)
     expect_refused("<arbaro>\n<!-- open\n", "t.xml:2:1: comment not closed", NULL);
     expect_refused("<arbaro></arbaro>\n<x/>", "t.xml:2:1: text after the root element", NULL);
     expect_refused("<helios><WeberPennTree label='A'><Shape>1 &nbsp;</Shape></WeberPennTree></helios>",
-                   "unknown entity", NULL);
+                   "t.xml:1:43: unknown entity", NULL);
+    expect_refused("<arbaro><species name='a\nb&x;'/></arbaro>", "t.xml:2:2: unknown entity", NULL);
     expect_refused("<arbaro><species name='a' name='b'/></arbaro>", "t.xml:1:27: attribute 'name' given twice", NULL);
     char deep[400] = "";
     for (int i = 0; i < 40; i++) strcat(deep, "<a>");
@@ -192,6 +193,8 @@ TEST(unknown_parameter_refused)
     expect_refused("<arbaro><species name='a'>\n<param name='Shape' value='1'/>\n<param name='Shape' value='1'/></species></arbaro>",
                    "t.xml:3:14: 'Shape' given twice", NULL);
     expect_refused("<tree/>", "t.xml:1:1: root element <tree>", NULL);
+    expect_refused("<arbaro><species name='a'><param name='Species' value='b'/></species></arbaro>",
+                   "t.xml:1:40: 'Species' given twice", NULL);
 }
 
 TEST(helios_own_fields_noted)
@@ -221,6 +224,24 @@ TEST(helios_unused_levels)
                    "t.xml:2:16: 'nCurveRes' must be an integer in [1, 2147483647] at level 2, got 0", NULL);
 }
 
-TEST_LIST(TEST_CASE(helios_unused_levels), TEST_CASE(arbaro_files_load), TEST_CASE(helios_library_loads), TEST_CASE(values_match_files),
+/* docs/models/tree_weber_penn.md lists every row of the table, with its range. */
+TEST(doc_lists_every_parameter)
+{
+    FILE *f = fopen(WP_DOC_PATH, "rb");
+    CHECK(f != NULL);
+    if (!f) return;
+    static char doc[1 << 16];
+    size_t n = fread(doc, 1, sizeof doc - 1, f);
+    fclose(f);
+    doc[n] = '\0';
+    for (size_t i = 0; i < wp_param_count; i++) {
+        char row[96];
+        snprintf(row, sizeof row, "| `%s` |", wp_param_table[i].name);
+        CHECK_STR_CONTAINS(doc, row);
+    }
+    CHECK_STR_CONTAINS(doc, "| `nTaper` | radius taper: 0-1 cone, 1-2 spherical, 2-3 periodic | number [0, 2.99999999] | 1 / 1 / 1 / 1 |");
+}
+
+TEST_LIST(TEST_CASE(doc_lists_every_parameter), TEST_CASE(helios_unused_levels), TEST_CASE(arbaro_files_load), TEST_CASE(helios_library_loads), TEST_CASE(values_match_files),
           TEST_CASE(defaults_from_table), TEST_CASE(malformed_xml_refused), TEST_CASE(out_of_range_refused),
           TEST_CASE(unknown_parameter_refused), TEST_CASE(helios_own_fields_noted))

@@ -227,13 +227,10 @@ TEST(helios_unused_levels)
 /* docs/models/tree_weber_penn.md lists every row of the table, with its range. */
 TEST(doc_lists_every_parameter)
 {
-    FILE *f = fopen(WP_DOC_PATH, "rb");
-    CHECK(f != NULL);
-    if (!f) return;
     static char doc[1 << 16];
-    size_t n = fread(doc, 1, sizeof doc - 1, f);
-    fclose(f);
-    doc[n] = '\0';
+    int found = harness_read_text(WP_DOC_PATH, doc, sizeof doc);
+    CHECK(found);
+    if (!found) return;
     for (size_t i = 0; i < wp_param_count; i++) {
         char row[96];
         snprintf(row, sizeof row, "| `%s` |", wp_param_table[i].name);

@@ -35,7 +35,7 @@ CC=clang CXX=clang++ "$root/scripts/build.sh" "$root/build-clang" -DSYLVA_WERROR
 
 stage "clang libFuzzer build: short fuzz runs"
 CC=clang CXX=clang++ cmake -S "$root" -B "$root/build-fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSYLVA_FUZZ=ON >/dev/null
-cmake --build "$root/build-fuzz" -j"$jobs" --target fuzz_scene_load fuzz_lsystem fuzz_layout_csv \
+cmake --build "$root/build-fuzz" -j"$jobs" --target fuzz_scene_load fuzz_lsystem fuzz_weber_penn fuzz_layout_csv \
       fuzz_control_points fuzz_tree_survey fuzz_photo fuzz_model_import fuzz_ecology_state
 (cd "$root/build-fuzz" && ctest --output-on-failure -j"$jobs" -L fuzz)
 

@@ -71,6 +71,19 @@ static int harness_skipped; /* set by SKIP in the running test */
         return;                                                                              \
     } while (0)
 
+/* The text file at path read into buf (cap bytes, NUL-terminated, cut to cap - 1): 1, or 0 when
+ * it cannot be opened (buf then ""). */
+static inline int harness_read_text(const char *path, char *buf, size_t cap)
+{
+    FILE *f = fopen(path, "rb");
+    buf[0] = '\0';
+    if (!f) return 0;
+    size_t n = fread(buf, 1, cap - 1, f);
+    fclose(f);
+    buf[n] = '\0';
+    return 1;
+}
+
 /* The folder SUB of the shared data (DEMs, L-parser corpus beside the clone), whose root ctest
  * passes in SYLVA_SHARED_DATA_DIR to tests registered NEEDS_SHARED_DATA; NULL when it is not
  * there. The string lives until the next call. */

@@ -54,6 +54,9 @@ case $name in
   layout_csv|control_points|tree_survey)
     seeds+=("$here/seeds/$name")
     max_len=4096 ;;
+  weber_penn)
+    seeds+=("$here/seeds/weber_penn")
+    max_len=8192 ;;
   photo)
     seeds+=("$here/seeds/photo")
     max_len=16384 ;;

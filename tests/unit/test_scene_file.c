@@ -400,13 +400,10 @@ TEST(host_reserved_keys)
 /* docs/scene-file.md has a table row for every host key, with the schema's help sentence. */
 TEST(docs_list_every_key)
 {
-    FILE *f = fopen(SYLVA_TEST_DATA_DIR "/../docs/scene-file.md", "r");
-    CHECK(f != NULL);
-    if (!f) return;
     static char doc[1 << 17];
-    size_t n = fread(doc, 1, sizeof doc - 1, f);
-    fclose(f);
-    doc[n] = '\0';
+    int doc_read = harness_read_text(SYLVA_TEST_DATA_DIR "/../docs/scene-file.md", doc, sizeof doc);
+    CHECK(doc_read);
+    if (!doc_read) return;
     for (uint32_t i = 0; host_schema_at(i); i++) {
         const host_schema *s = host_schema_at(i);
         for (uint32_t k = 0; k < s->n_params; k++) {

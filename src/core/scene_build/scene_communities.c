@@ -16,6 +16,9 @@
 #define COMMUNITY_MAX_PLANTS 8000000.0
 /* The most nodes of the planting grid (26 bytes each while the map is read on it). */
 #define COMMUNITY_MAX_NODES 50000000.0
+/* The most node lookups the edge band may cost (each cell looks at the nodes within plant_edge
+ * of it): about ten seconds' work. */
+#define COMMUNITY_MAX_EDGE_LOOKUPS 5e9
 
 typedef struct planting {
     scene *s;
@@ -181,6 +184,13 @@ static void summary(const planting *p, const scene_file *sf, const landcover_gri
 static int plant_all(planting *p, const scene_file *sf, const landcover_grid *g, int quiet, err_buf *err)
 {
     for (uint32_t c = 0; c < p->lc->n_classes; c++) p->community[c] = landcover_community_of(p->spec, &p->lc->classes[c]);
+    double reach = (2 * ceil(p->spec->plant_edge / g->dx) + 1) * (2 * ceil(p->spec->plant_edge / g->dy) + 1);
+    if (p->spec->plant_edge > 0 && (double)g->nx * g->ny * reach > COMMUNITY_MAX_EDGE_LOOKUPS)
+        return err_at(err, ERR_INPUT, sf->path, p->spec->line, p->spec->column,
+                      "landcover: a plant_edge of %g m on a grid of %g m over %u x %u nodes looks at %.3g nodes, more "
+                      "than the %.0f a scene takes; give a narrower plant_edge, a larger plant_spacing or a smaller "
+                      "plant_area", p->spec->plant_edge, g->dx, g->nx, g->ny, (double)g->nx * g->ny * reach,
+                      COMMUNITY_MAX_EDGE_LOOKUPS);
     double expected = expected_plants(p);
     if (expected > COMMUNITY_MAX_PLANTS)
         return err_at(err, ERR_INPUT, sf->path, p->spec->communities[0].line, p->spec->communities[0].column,

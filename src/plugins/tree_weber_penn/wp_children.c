@@ -142,7 +142,7 @@ static void leaves_along(wp_growth *g, wp_stem *st, const wp_segment *seg)
     if (count <= 0) return;
     double offs = seg->index == 0 ? wp_stem_radius(g, wp_stem_at(g, st->parent), st->offset) / st->segment_length : 0;
     double dist = (1.0 - offs) / count;
-    for (int i = 0; i < count; i++) {
+    for (int i = 0; i < count && !g->failed; i++) {
         double where = offs + dist / 2 + i * dist + wp_level_var(lv, dist / 2);
         double loffs = (seg->index + where) * st->segment_length;
         wp_frame trf = wp_stem_child_direction(g, st, seg->transf, loffs);
@@ -169,7 +169,7 @@ static void leaves_in_fan(wp_growth *g, wp_stem *st, const wp_segment *seg)
     } else {
         offsetangle = distangle / 2;
     }
-    for (int i = 0; i < cnt / 2; i++) {
+    for (int i = 0; i < cnt / 2 && !g->failed; i++) {
         for (int rot = 1; rot >= -1; rot -= 2) {
             double v = wp_level_var(child, varangle);
             wp_frame leaf = wp_frame_roty(&trf, rot * (offsetangle + i * distangle + v));

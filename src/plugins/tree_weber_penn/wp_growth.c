@@ -35,6 +35,16 @@ int wp_growth_fail_nomem(wp_growth *g)
     return g->failed;
 }
 
+int wp_growth_fail_triangles(wp_growth *g)
+{
+    if (!g->failed)
+        g->failed = plugin_fail(g->err, SYLVA_ERR_LIMIT,
+                                "species '%s' would have more than %zu stem triangles (the limit max_triangles); lower "
+                                "Levels, the nBranches, nCurveRes or Smooth, or raise the limit",
+                                g->t->p->species, g->max_triangles);
+    return g->failed;
+}
+
 /* A trunk's direction (TreeImpl.trunkDirection): rotating trunks turn on by Rotate each,
  * alternating ones (Rotate < 0) swing to either side. */
 static wp_frame trunk_direction(wp_growth *g, wp_frame trf, wp_level_state *lv)

@@ -16,6 +16,10 @@
 
 #define WP_NONE (-1)
 
+/* Clones of clones nest at most this deep (each nesting is a recursion of the growing code;
+ * real species nest fewer levels than they have segments per stem, a handful). */
+#define WP_MAX_SPLIT_DEPTH 200
+
 /* Stems shorter than this (metres), or thinner than a tenth of it, are not made (Arbaro's
  * MIN_STEM_LEN and MIN_STEM_RADIUS). */
 #define WP_MIN_STEM_LEN 0.00001
@@ -48,6 +52,7 @@ typedef struct wp_stem {
     int parent;           /* the stem it grows from, WP_NONE for a trunk */
     int cloned_from;      /* for a clone: the stem it split from, else WP_NONE */
     int is_clone;
+    int split_depth;      /* clones between it and the stem that did not split off */
     int index;            /* its number among its parent's children */
     wp_frame transf;
     double offset;        /* from the parent's base, metres */
@@ -69,6 +74,7 @@ typedef struct wp_growth {
     int trunk_first, trunk_last;
     double trunk_rotangle;
     size_t rings_made;    /* cross-sections with a radius made, outside pruning tests */
+    size_t stems_tried;   /* stems begun, kept or not (too short, pruning trials) */
     size_t leaves_made;
     size_t max_triangles, max_leaves;
     int failed;           /* a negative sylva_status once a failure is recorded */
@@ -114,6 +120,9 @@ void wp_growth_free(wp_growth *g);
 
 /* Records a failure (the first only) and returns it. */
 int wp_growth_fail_nomem(wp_growth *g);
+
+/* Records that the tree passes max_triangles (the first failure only) and returns it. */
+int wp_growth_fail_triangles(wp_growth *g);
 
 /* Grows every trunk and all they bear (Arbaro's TreeImpl.make). Returns 0 or g->failed. */
 int wp_growth_grow(wp_growth *g);

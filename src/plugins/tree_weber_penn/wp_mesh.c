@@ -99,7 +99,7 @@ static int add_triangle(mesh_build *b, size_t i, size_t j, size_t k, int level)
     if (m->n_triangles >= b->max_triangles) {
         b->failed = plugin_fail(b->err, SYLVA_ERR_LIMIT,
                                 "species '%s' has more than %zu stem triangles (the limit max_triangles); lower "
-                                "Levels, the nBranches or Smooth, or raise the limit",
+                                "Levels, the nBranches, nCurveRes or Smooth, or raise the limit",
                                 b->g->t->p->species, b->max_triangles);
         return b->failed;
     }

@@ -78,6 +78,21 @@ static int add_leaves(const wp_growth *g, const wp_params *p, wp_model *m, plugi
     return 0;
 }
 
+/* Points of the stems and leaves whose position or axes are not finite numbers. */
+static size_t count_undefined(const wp_model *m)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < m->n_vertices; i++)
+        n += !(isfinite(m->vertex[i][0]) && isfinite(m->vertex[i][1]) && isfinite(m->vertex[i][2]));
+    for (size_t i = 0; i < m->n_leaves; i++) {
+        const wp_leaf *l = &m->leaf[i];
+        int ok = isfinite(l->origin[0]) && isfinite(l->origin[1]) && isfinite(l->origin[2]);
+        for (int a = 0; a < 3; a++) ok = ok && isfinite(l->axis[a][0] + l->axis[a][1] + l->axis[a][2]);
+        n += !ok;
+    }
+    return n;
+}
+
 static int grow(const wp_params *p, int64_t seed, size_t max_triangles, size_t max_leaves, wp_model *out,
                 plugin_err *err)
 {
@@ -90,6 +105,14 @@ static int grow(const wp_params *p, int64_t seed, size_t max_triangles, size_t m
     if (!rc) rc = wp_mesh_stems(&g, max_triangles, out, err);
     if (!rc) rc = add_leaves(&g, p, out, err);
     wp_growth_free(&g);
+    size_t undefined = rc ? 0 : count_undefined(out);
+    if (undefined)
+        return plugin_fail(err, SYLVA_ERR_PARAM,
+                           "species '%s' at seed %lld puts %zu stem points or leaves at no defined place (Arbaro's "
+                           "arithmetic gives NaN there, as for a stem of level 2 or more pointing straight up with "
+                           "AttractionUp not 0); turn such stems off the vertical (nDownAngle, nCurve) or set "
+                           "AttractionUp to 0",
+                           p->species, (long long)seed, undefined);
     return rc;
 }
 

@@ -20,6 +20,10 @@ static wp_vec upper_position(const wp_segment *seg)
 
 static int add_subsegment(wp_growth *g, wp_segment *seg, wp_vec pos, double rad, double dist)
 {
+    /* each cross-section normally brings 6 triangles or more: a tree (or a pruning trial) with
+     * more sections than the limit's triangles is refused, so that stems thinner than a point
+     * cannot grow without bound */
+    if (g->subsegments.count >= g->max_triangles) return wp_growth_fail_triangles(g);
     wp_subsegment *sub = wp_pool_push(&g->subsegments);
     if (!sub) return wp_growth_fail_nomem(g);
     if (seg->sub_count == 0) seg->sub_first = (int)(g->subsegments.count - 1);
@@ -91,13 +95,7 @@ int wp_segment_make(wp_growth *g, int k)
     if (!st->prune_test) {
         for (int i = 0; i < seg->sub_count; i++)
             if (wp_subsegment_at(g, seg->sub_first + i)->rad >= 0.000001) g->rings_made++;
-        if (g->rings_made > g->max_triangles / 3) {
-            g->failed = plugin_fail(g->err, SYLVA_ERR_LIMIT,
-                                    "species '%s' would have more than %zu stem triangles (the limit max_triangles); lower "
-                                    "Levels, the nBranches or Smooth, or raise the limit",
-                                    g->t->p->species, g->max_triangles);
-            return -1;
-        }
+        if (g->rings_made > g->max_triangles / 3) return wp_growth_fail_triangles(g);
     }
     return 0;
 }

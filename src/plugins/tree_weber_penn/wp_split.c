@@ -12,6 +12,14 @@
 static int clone_stem(wp_growth *g, int s, wp_frame trf)
 {
     wp_stem *st = wp_stem_at(g, s);
+    if (st->split_depth >= WP_MAX_SPLIT_DEPTH) {
+        if (!g->failed)
+            g->failed = plugin_fail(g->err, SYLVA_ERR_LIMIT,
+                                    "species '%s': clones split from clones more than %d deep; lower the nSegSplits or "
+                                    "nCurveRes",
+                                    g->t->p->species, WP_MAX_SPLIT_DEPTH);
+        return WP_NONE;
+    }
     int c = wp_stem_new(g, s, st->level, trf, st->offset);
     if (c == WP_NONE) return WP_NONE;
     wp_stem *cl = wp_stem_at(g, c);
@@ -23,6 +31,7 @@ static int clone_stem(wp_growth *g, int s, wp_frame trf)
     cl->prune_test = st->prune_test;
     cl->index = st->index;
     cl->is_clone = 1;
+    cl->split_depth = st->split_depth + 1;
     if (!st->prune_test) {
         cl->length_child_max = st->length_child_max;
         cl->substems_per_segment = st->substems_per_segment;

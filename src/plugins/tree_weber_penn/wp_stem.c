@@ -11,6 +11,13 @@
 int wp_stem_new(wp_growth *g, int grows_out_of, int level, wp_frame trf, double offset)
 {
     if (g->failed) return WP_NONE;
+    /* every stem kept brings triangles, and a stem begun costs its work: a species that begins
+     * more stems than the limit's triangles (children too short to be kept, by the billion) is
+     * refused rather than waited for */
+    if (++g->stems_tried > g->max_triangles) {
+        wp_growth_fail_triangles(g);
+        return WP_NONE;
+    }
     wp_stem *st = wp_pool_push(&g->stems);
     if (!st) {
         wp_growth_fail_nomem(g);

@@ -274,6 +274,23 @@ TEST(limits_refused)
     p = leafy_default();
     p.levels = 5;
     expect_refused(&p, 1000000, 1000000, SYLVA_ERR_PARAM, "at most 4 stem levels");
+    /* stems of level 2 pointing straight up with AttractionUp: Arbaro writes NaN vertices */
+    p = leafy_default();
+    p.attraction_up = 0.5;
+    p.level[1].down_angle = p.level[2].down_angle = p.level[1].rotate = p.level[2].rotate = 0;
+    p.level[2].curve_res = 3;
+    expect_refused(&p, 1000000, 1000000, SYLVA_ERR_PARAM, "at no defined place");
+    /* a clone at every segment of a trunk of 1000: clones of clones 200 deep */
+    p = leafy_default();
+    p.level[0].curve_res = 1000;
+    p.level[0].seg_splits = 1;
+    p.level[0].split_angle = 10;
+    expect_refused(&p, 10000000, 10000000, SYLVA_ERR_LIMIT, "clones split from clones more than 200 deep");
+    /* ten million children per stem, all too short to be kept */
+    p = leafy_default();
+    p.level[1].branches = 10000000;
+    p.level[1].length = 1e-7;
+    expect_refused(&p, 1000000, 1000000, SYLVA_ERR_LIMIT, "more than 1000000 stem triangles");
     p = leafy_default();
     snprintf(p.leaf_shape, sizeof p.leaf_shape, "disc5000");
     expect_refused(&p, 1000000, 1000000, SYLVA_ERR_LIMIT, "more than 1000 triangles per leaf");

@@ -19,6 +19,18 @@ typedef struct leaf_points {
     int n;
 } leaf_points;
 
+static void find_leaf_points(const wp_leaf_shape *shape, leaf_points *lp)
+{
+    lp->shape = shape;
+    lp->n = 0;
+    for (size_t i = 0; i < shape->n_vertices && i < WP_LEAF_POINTS_MAX; i++) {
+        int used = 0;
+        for (size_t t = 0; t < shape->n_triangles && !used; t++)
+            used = shape->triangle[t][0] == i || shape->triangle[t][1] == i || shape->triangle[t][2] == i;
+        if (used) lp->used[lp->n++] = (int)i;
+    }
+}
+
 /* Widens m's box by the leaf at frame f. */
 static void widen_by_leaf(wp_model *m, const wp_frame *f, const leaf_points *lp)
 {
@@ -63,15 +75,8 @@ static int add_leaves(const wp_growth *g, const wp_params *p, wp_model *m, plugi
                                g->leaves.count, p->species);
         }
     }
-    static leaf_points none;
-    leaf_points lp = none;
-    lp.shape = &shape;
-    for (size_t i = 0; i < shape.n_vertices && i < WP_LEAF_POINTS_MAX; i++) {
-        int used = 0;
-        for (size_t t = 0; t < shape.n_triangles && !used; t++)
-            used = shape.triangle[t][0] == i || shape.triangle[t][1] == i || shape.triangle[t][2] == i;
-        if (used) lp.used[lp.n++] = (int)i;
-    }
+    leaf_points lp;
+    find_leaf_points(&shape, &lp);
     for (int s = g->trunk_first; s != WP_NONE; s = wp_stem_at(g, s)->next) gather(g, s, m, &lp);
     m->faces[WP_GROUP_LEAVES] = m->n_leaves * shape.faces;
     wp_leaf_shape_release(&shape);

@@ -83,6 +83,19 @@ static int add_leaves(const wp_growth *g, const wp_params *p, wp_model *m, plugi
     return 0;
 }
 
+/* The stems meshed (wp_mesh.h) and their arrays, faces and box taken over by m. */
+static int take_stems(wp_growth *g, size_t max_triangles, wp_model *m, plugin_err *err)
+{
+    wp_stem_mesh sm;
+    int rc = wp_mesh_stems(g, max_triangles, &sm, err);
+    if (rc) return rc;
+    m->vertex = sm.vertex, m->uv = sm.uv, m->n_vertices = sm.n_vertices;
+    m->triangle = sm.triangle, m->level = sm.level, m->n_triangles = sm.n_triangles;
+    for (int i = 0; i < WP_LEVELS; i++) m->faces[i] = sm.faces[i];
+    for (int i = 0; i < 3; i++) m->bbox_min[i] = sm.bbox_min[i], m->bbox_max[i] = sm.bbox_max[i];
+    return 0;
+}
+
 /* Points of the stems and leaves whose position or axes are not finite numbers. */
 static size_t count_undefined(const wp_model *m)
 {
@@ -107,7 +120,7 @@ static int grow(const wp_params *p, int64_t seed, size_t max_triangles, size_t m
     wp_growth g;
     wp_growth_init(&g, &t, max_triangles, max_leaves, err);
     rc = wp_growth_grow(&g);
-    if (!rc) rc = wp_mesh_stems(&g, max_triangles, out, err);
+    if (!rc) rc = take_stems(&g, max_triangles, out, err);
     if (!rc) rc = add_leaves(&g, p, out, err);
     wp_growth_free(&g);
     size_t undefined = rc ? 0 : count_undefined(out);

@@ -14,7 +14,7 @@
 /* The arrays being filled, with their capacities. */
 typedef struct mesh_build {
     wp_growth *g;
-    wp_model *m;
+    wp_stem_mesh *m;
     size_t cap_vertices, cap_triangles;
     size_t max_triangles;
     plugin_err *err;
@@ -37,7 +37,7 @@ static size_t next_capacity(size_t cap, size_t first)
 
 static int grow_vertices(mesh_build *b)
 {
-    wp_model *m = b->m;
+    wp_stem_mesh *m = b->m;
     if (m->n_vertices < b->cap_vertices) return 0;
     size_t cap = next_capacity(b->cap_vertices, 4096);
     double(*v)[3] = realloc(m->vertex, cap * sizeof *v); /* owned by m */
@@ -52,7 +52,7 @@ static int grow_vertices(mesh_build *b)
 
 static int grow_triangles(mesh_build *b)
 {
-    wp_model *m = b->m;
+    wp_stem_mesh *m = b->m;
     if (m->n_triangles < b->cap_triangles) return 0;
     size_t cap = next_capacity(b->cap_triangles, 8192);
     uint32_t(*t)[3] = realloc(m->triangle, cap * sizeof *t); /* owned by m */
@@ -74,7 +74,7 @@ static int fail_nomem(mesh_build *b)
 static int add_vertex(mesh_build *b, wp_vec p, double u, double v)
 {
     if (grow_vertices(b) < 0) return fail_nomem(b);
-    wp_model *m = b->m;
+    wp_stem_mesh *m = b->m;
     m->vertex[m->n_vertices][0] = p.x;
     m->vertex[m->n_vertices][1] = p.y;
     m->vertex[m->n_vertices][2] = p.z;
@@ -84,7 +84,7 @@ static int add_vertex(mesh_build *b, wp_vec p, double u, double v)
     return 0;
 }
 
-static void widen_bbox(wp_model *m, size_t i)
+static void widen_bbox(wp_stem_mesh *m, size_t i)
 {
     for (int k = 0; k < 3; k++) {
         if (m->vertex[i][k] < m->bbox_min[k]) m->bbox_min[k] = m->vertex[i][k];
@@ -95,7 +95,7 @@ static void widen_bbox(wp_model *m, size_t i)
 static int add_triangle(mesh_build *b, size_t i, size_t j, size_t k, int level)
 {
     if (i == j || j == k || i == k) return 0;
-    wp_model *m = b->m;
+    wp_stem_mesh *m = b->m;
     if (m->n_triangles >= b->max_triangles) {
         b->failed = plugin_fail(b->err, SYLVA_ERR_LIMIT,
                                 "species '%s' has more than %zu stem triangles (the limit max_triangles); lower "
@@ -246,11 +246,25 @@ static int mesh_level(mesh_build *b, int s, int level)
     return 0;
 }
 
-int wp_mesh_stems(wp_growth *g, size_t max_triangles, wp_model *m, plugin_err *err)
+int wp_mesh_stems(wp_growth *g, size_t max_triangles, wp_stem_mesh *m, plugin_err *err)
 {
+    memset(m, 0, sizeof *m);
+    for (int i = 0; i < 3; i++) m->bbox_min[i] = INFINITY, m->bbox_max[i] = -INFINITY;
     mesh_build b = { g, m, 0, 0, max_triangles, err, 0 };
     for (int level = 0; level < g->t->levels; level++)
         for (int s = g->trunk_first; s != WP_NONE; s = wp_stem_at(g, s)->next)
-            if (mesh_level(&b, s, level)) return b.failed;
+            if (mesh_level(&b, s, level)) {
+                wp_stem_mesh_release(m);
+                return b.failed;
+            }
     return 0;
+}
+
+void wp_stem_mesh_release(wp_stem_mesh *m)
+{
+    free(m->vertex);
+    free(m->uv);
+    free(m->triangle);
+    free(m->level);
+    memset(m, 0, sizeof *m);
 }

@@ -19,6 +19,18 @@ typedef struct leaf_points {
     int n;
 } leaf_points;
 
+static void find_leaf_points(const wp_leaf_shape *shape, leaf_points *lp)
+{
+    lp->shape = shape;
+    lp->n = 0;
+    for (size_t i = 0; i < shape->n_vertices && i < WP_LEAF_POINTS_MAX; i++) {
+        int used = 0;
+        for (size_t t = 0; t < shape->n_triangles && !used; t++)
+            used = shape->triangle[t][0] == i || shape->triangle[t][1] == i || shape->triangle[t][2] == i;
+        if (used) lp->used[lp->n++] = (int)i;
+    }
+}
+
 /* Widens m's box by the leaf at frame f. */
 static void widen_by_leaf(wp_model *m, const wp_frame *f, const leaf_points *lp)
 {
@@ -63,18 +75,24 @@ static int add_leaves(const wp_growth *g, const wp_params *p, wp_model *m, plugi
                                g->leaves.count, p->species);
         }
     }
-    static leaf_points none;
-    leaf_points lp = none;
-    lp.shape = &shape;
-    for (size_t i = 0; i < shape.n_vertices && i < WP_LEAF_POINTS_MAX; i++) {
-        int used = 0;
-        for (size_t t = 0; t < shape.n_triangles && !used; t++)
-            used = shape.triangle[t][0] == i || shape.triangle[t][1] == i || shape.triangle[t][2] == i;
-        if (used) lp.used[lp.n++] = (int)i;
-    }
+    leaf_points lp;
+    find_leaf_points(&shape, &lp);
     for (int s = g->trunk_first; s != WP_NONE; s = wp_stem_at(g, s)->next) gather(g, s, m, &lp);
     m->faces[WP_GROUP_LEAVES] = m->n_leaves * shape.faces;
     wp_leaf_shape_release(&shape);
+    return 0;
+}
+
+/* The stems meshed (wp_mesh.h) and their arrays, faces and box taken over by m. */
+static int take_stems(wp_growth *g, size_t max_triangles, wp_model *m, plugin_err *err)
+{
+    wp_stem_mesh sm;
+    int rc = wp_mesh_stems(g, max_triangles, &sm, err);
+    if (rc) return rc;
+    m->vertex = sm.vertex, m->uv = sm.uv, m->n_vertices = sm.n_vertices;
+    m->triangle = sm.triangle, m->level = sm.level, m->n_triangles = sm.n_triangles;
+    for (int i = 0; i < WP_LEVELS; i++) m->faces[i] = sm.faces[i];
+    for (int i = 0; i < 3; i++) m->bbox_min[i] = sm.bbox_min[i], m->bbox_max[i] = sm.bbox_max[i];
     return 0;
 }
 
@@ -102,7 +120,7 @@ static int grow(const wp_params *p, int64_t seed, size_t max_triangles, size_t m
     wp_growth g;
     wp_growth_init(&g, &t, max_triangles, max_leaves, err);
     rc = wp_growth_grow(&g);
-    if (!rc) rc = wp_mesh_stems(&g, max_triangles, out, err);
+    if (!rc) rc = take_stems(&g, max_triangles, out, err);
     if (!rc) rc = add_leaves(&g, p, out, err);
     wp_growth_free(&g);
     size_t undefined = rc ? 0 : count_undefined(out);

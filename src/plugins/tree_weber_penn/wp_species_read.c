@@ -338,6 +338,9 @@ static int helios_tree(const reading *r, const wp_xml_node *n)
     int rc = t->p ? only_elements(r, n) : r->err->status;
     for (const wp_xml_node *c = n->children; c && !rc; c = c->next) rc = helios_field(r, c, t);
     if (!rc) rc = helios_check_levels(r, t);
+    /* Helios grows one trunk and never reads nBranches at level 0 (0 in most of its species, 40
+     * in its olive); Arbaro reads 0Branches as the number of trunks. */
+    if (!rc) t->p->level[0].branches = 1;
     free(t);
     return rc;
 }

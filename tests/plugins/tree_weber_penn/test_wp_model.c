@@ -339,5 +339,30 @@ TEST(leaf_shapes)
     wp_leaf_shape_release(&s);
 }
 
+/* Every species of Helios' library grows one trunk with its branches and leaves (Helios writes
+ * nBranches 0, or 40 for its olive, at level 0, which Arbaro would read as the trunks). */
+TEST(helios_species_grow)
+{
+    const char *path = harness_shared_data("weber-penn/helios/WeberPennTreeLibrary.xml");
+    if (!path) SKIP("no ../shared/data/weber-penn/helios");
+    wp_species_list l;
+    plugin_err err = { 0 };
+    CHECK_INT(wp_species_read_file(path, &l, &err), 0);
+    CHECK(l.count == 9);
+    for (size_t i = 0; i < l.count; i++) {
+        wp_model m;
+        int rc = wp_model_grow(&l.items[i], 13, (size_t)1 << 26, (size_t)1 << 24, &m, &err);
+        if (rc) fprintf(stderr, "%s: %s\n", l.items[i].species, err.msg);
+        CHECK_INT(rc, 0);
+        if (rc) continue;
+        printf("%-10s stems %zu/%zu/%zu/%zu  leaves %zu  triangles %zu  height %.2f m\n", l.items[i].species,
+               m.stems[0], m.stems[1], m.stems[2], m.stems[3], m.n_leaves, m.n_triangles, m.height);
+        CHECK(m.stems[0] >= 1 && m.stems[1] > 0);
+        CHECK(m.n_triangles > 0 && m.height > 0.5);
+        wp_model_release(&m);
+    }
+    wp_species_list_free(&l);
+}
+
 TEST_LIST(TEST_CASE(java_random), TEST_CASE(frame_rotations), TEST_CASE(arbaro_figures), TEST_CASE(arbaro_measured),
-          TEST_CASE(model_consistent), TEST_CASE(limits_refused), TEST_CASE(leaf_shapes))
+          TEST_CASE(model_consistent), TEST_CASE(limits_refused), TEST_CASE(leaf_shapes), TEST_CASE(helios_species_grow))

@@ -18,7 +18,7 @@
 #include "wp_leaf_form.h"
 #include "wp_leaf_shape.h"
 #include "wp_limits.h"
-#include "wp_mesh.h"
+#include "wp_host_mesh.h"
 #include "wp_model.h"
 #include "wp_schema.h"
 #include "wp_stats.h"
@@ -163,9 +163,9 @@ static int wp_generate(void *state, const sylva_host_api *api, sylva_host *host,
     int64_t seed = wp_variant_seed(st->cfg.seed, req->variant, req->n_variants);
     plugin_err err = {0};
     wp_model m = {0};
-    wp_mesh w = {0};
+    wp_host_mesh w = {0};
     int rc = grow(st, &p, seed, req->age, &m, &err);
-    if (!rc) rc = wp_mesh_build(&m, &st->leaf, st->bark_material, st->leaf_material, &w, &err);
+    if (!rc) rc = wp_host_mesh_build(&m, &st->leaf, st->bark_material, st->leaf_material, &w, &err);
     if (rc) rc = plugin_report(api, host, &err);
     sylva_tree_stats last = {.size = sizeof last, .age = req->age};
     if (!rc && wp_stats_measure(&m, p.levels, &w, &last)) {
@@ -176,7 +176,7 @@ static int wp_generate(void *state, const sylva_host_api *api, sylva_host *host,
     if (!rc) rc = api->mesh_append(host, o->mesh, w.pos, NULL, w.uv, w.nv, w.tri, w.mat, w.nt);
     if (!rc) o->height = w.top;
     plugin_last_stats_set(&st->last, rc ? NULL : &last);
-    wp_mesh_release(&w);
+    wp_host_mesh_release(&w);
     return rc;
 }
 

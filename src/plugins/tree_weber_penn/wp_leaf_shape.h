@@ -11,6 +11,9 @@
 #include "plugin_err.h"
 #include "wp_params.h"
 
+#define WP_LEAF_DISC_MAX 1000                     /* triangles of a "discN" leaf; more is refused */
+#define WP_LEAF_POINTS_MAX (WP_LEAF_DISC_MAX + 2) /* points of any leaf shape */
+
 typedef struct wp_leaf_shape {
     double (*vertex)[3];     /* owned; n_vertices, metres in the leaf's frame */
     double (*uv)[2];         /* owned; per vertex, in [0, 1]^2 across and along the blade */

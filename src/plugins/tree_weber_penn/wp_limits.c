@@ -2,7 +2,7 @@
  * (wp_limits.h). */
 #include "wp_limits.h"
 
-#include "wp_mesh.h"
+#include "wp_host_mesh.h"
 
 /* Leaf frames that N triangles allow. */
 static size_t leaves_of(size_t triangles, uint32_t leaf_triangles)
@@ -12,7 +12,7 @@ static size_t leaves_of(size_t triangles, uint32_t leaf_triangles)
 
 void wp_caps_fit(uint32_t leaf_triangles, wp_fits fits, void *ctx, wp_caps *out)
 {
-    size_t n = WP_MESH_MAX_TRIANGLES;
+    size_t n = WP_HOST_MESH_MAX_TRIANGLES;
     out->by_memory = 0;
     while (fits && n > WP_MIN_TRIANGLES &&
            !fits(ctx, (uint64_t)n * WP_BYTES_PER_TRIANGLE + (uint64_t)leaves_of(n, leaf_triangles) * WP_BYTES_PER_LEAF)) {

@@ -1,120 +1,256 @@
-/* wp_mesh.c — a grown tree's stems and leaves in the host's mesh form (wp_mesh.h). */
+/* wp_mesh.c — stems into triangles as Arbaro 1.9's MeshPartCreator, MeshSection and MeshPart
+ * make them (wp_mesh.h). The order matters beyond the faces' order: the trunk's lobed sections
+ * draw from the mesh stream, so the stems of level 0 are meshed in Arbaro's traversal order
+ * (each trunk, then its clones depth first). */
 #include "wp_mesh.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#define WP_MESH_NO_RING_ROUND 1.0 /* metres per bark tile on a level without rings */
 
-void wp_mesh_bark_rounds(const wp_model *m, double round[WP_LEVELS])
+#define ONE_POINT_RADIUS 0.000001 /* below it a section is a single point */
+
+/* The arrays being filled, with their capacities. */
+typedef struct mesh_build {
+    wp_growth *g;
+    wp_model *m;
+    size_t cap_vertices, cap_triangles;
+    size_t max_triangles;
+    plugin_err *err;
+    int failed;
+} mesh_build;
+
+/* One cross-section of a stem: where it is and how wide. */
+typedef struct section {
+    wp_frame trf;
+    double rad;
+    double dist;   /* from the stem's base, metres */
+    int sub_count; /* subsegments of its segment (spreads 0ScaleV over them) */
+} section;
+
+/* The next capacity of an array that is full at cap (doubling from `first`). */
+static size_t next_capacity(size_t cap, size_t first)
 {
-    double sum[WP_LEVELS] = {0};
-    size_t count[WP_LEVELS] = {0};
-    for (size_t t = 0; t < m->n_triangles; t++) {
-        unsigned l = m->level[t] < WP_LEVELS ? m->level[t] : WP_LEVELS - 1;
-        for (int k = 0; k < 3; k++) {
-            uint32_t a = m->triangle[t][k], b = m->triangle[t][(k + 1) % 3];
-            double du = fabs(m->uv[a][0] - m->uv[b][0]), dv = fabs(m->uv[a][1] - m->uv[b][1]);
-            if (!(du > 1e-9 && du < 0.5) || dv > 1e-9 * (1.0 + fabs(m->uv[a][1]))) continue;
-            double d[3] = {m->vertex[a][0] - m->vertex[b][0], m->vertex[a][1] - m->vertex[b][1],
-                           m->vertex[a][2] - m->vertex[b][2]};
-            sum[l] += sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) / du;
-            count[l]++;
+    return cap ? 2 * cap : first;
+}
+
+static int grow_vertices(mesh_build *b)
+{
+    wp_model *m = b->m;
+    if (m->n_vertices < b->cap_vertices) return 0;
+    size_t cap = next_capacity(b->cap_vertices, 4096);
+    double(*v)[3] = realloc(m->vertex, cap * sizeof *v); /* owned by m */
+    if (!v) return -1;
+    m->vertex = v;
+    double(*uv)[2] = realloc(m->uv, cap * sizeof *uv); /* owned by m */
+    if (!uv) return -1;
+    m->uv = uv;
+    b->cap_vertices = cap;
+    return 0;
+}
+
+static int grow_triangles(mesh_build *b)
+{
+    wp_model *m = b->m;
+    if (m->n_triangles < b->cap_triangles) return 0;
+    size_t cap = next_capacity(b->cap_triangles, 8192);
+    uint32_t(*t)[3] = realloc(m->triangle, cap * sizeof *t); /* owned by m */
+    if (!t) return -1;
+    m->triangle = t;
+    uint8_t *level = realloc(m->level, cap); /* owned by m */
+    if (!level) return -1;
+    m->level = level;
+    b->cap_triangles = cap;
+    return 0;
+}
+
+static int fail_nomem(mesh_build *b)
+{
+    if (!b->failed) b->failed = plugin_fail(b->err, SYLVA_ERR_NOMEM, "out of memory while meshing a tree's stems");
+    return b->failed;
+}
+
+static int add_vertex(mesh_build *b, wp_vec p, double u, double v)
+{
+    if (grow_vertices(b) < 0) return fail_nomem(b);
+    wp_model *m = b->m;
+    m->vertex[m->n_vertices][0] = p.x;
+    m->vertex[m->n_vertices][1] = p.y;
+    m->vertex[m->n_vertices][2] = p.z;
+    m->uv[m->n_vertices][0] = u;
+    m->uv[m->n_vertices][1] = v;
+    m->n_vertices++;
+    return 0;
+}
+
+static void widen_bbox(wp_model *m, size_t i)
+{
+    for (int k = 0; k < 3; k++) {
+        if (m->vertex[i][k] < m->bbox_min[k]) m->bbox_min[k] = m->vertex[i][k];
+        if (m->vertex[i][k] > m->bbox_max[k]) m->bbox_max[k] = m->vertex[i][k];
+    }
+}
+
+static int add_triangle(mesh_build *b, size_t i, size_t j, size_t k, int level)
+{
+    if (i == j || j == k || i == k) return 0;
+    wp_model *m = b->m;
+    if (m->n_triangles >= b->max_triangles) {
+        b->failed = plugin_fail(b->err, SYLVA_ERR_LIMIT,
+                                "species '%s' has more than %zu stem triangles (the limit max_triangles); lower "
+                                "Levels, the nBranches, nCurveRes or Smooth, or raise the limit",
+                                b->g->t->p->species, b->max_triangles);
+        return b->failed;
+    }
+    if (grow_triangles(b) < 0) return fail_nomem(b);
+    m->triangle[m->n_triangles][0] = (uint32_t)i;
+    m->triangle[m->n_triangles][1] = (uint32_t)j;
+    m->triangle[m->n_triangles][2] = (uint32_t)k;
+    m->level[m->n_triangles] = (uint8_t)level;
+    m->n_triangles++;
+    return 0;
+}
+
+/* One of Arbaro's faces: 3 or 4 corners; counted, its corners in the box, kept as triangles. */
+static int add_face(mesh_build *b, const size_t *c, int corners, int level)
+{
+    b->m->faces[level]++;
+    for (int i = 0; i < corners; i++) widen_bbox(b->m, c[i]);
+    if (add_triangle(b, c[0], c[1], c[2], level)) return b->failed;
+    if (corners == 4 && add_triangle(b, c[0], c[2], c[3], level)) return b->failed;
+    return 0;
+}
+
+/* The faces between a section of `size` points from vertex inx and the next one of `nsize`
+ * points from ninx, as Arbaro's MeshSection enumerates them (quads when the sizes agree). */
+static int faces_between(mesh_build *b, size_t inx, int size, size_t ninx, int nsize, int level)
+{
+    int i = 0, ni = 0;
+    while (!((size == 1 && ni >= nsize) || (nsize == 1 && i >= size) || (ni >= nsize && i >= size))) {
+        size_t c[4];
+        if (size > 1 && nsize == size) {
+            c[0] = inx + (size_t)i;
+            c[1] = ninx + (size_t)ni;
+            ni++;
+            c[2] = ninx + (size_t)(ni % nsize);
+            i++;
+            c[3] = inx + (size_t)(i % size);
+            if (add_face(b, c, 4, level)) return b->failed;
+        } else if (i <= ni || nsize == 1) {
+            c[0] = inx + (size_t)i;
+            c[1] = ninx + (size_t)ni;
+            i++;
+            c[2] = inx + (size_t)(i % size);
+            if (add_face(b, c, 3, level)) return b->failed;
+        } else {
+            c[0] = inx + (size_t)(i % size);
+            c[1] = ninx + (size_t)ni;
+            ni++;
+            c[2] = ninx + (size_t)(ni % nsize);
+            if (add_face(b, c, 3, level)) return b->failed;
         }
     }
-    for (int l = 0; l < WP_LEVELS; l++) round[l] = count[l] ? sum[l] / (double)count[l] : 0.0;
+    return 0;
 }
 
-/* Room for the whole mesh; every array owned by w. */
-static int mesh_alloc(wp_mesh *w, uint64_t nv, uint64_t nt, plugin_err *err)
+/* The section's points (Arbaro's getSectionPoints); returns how many, or -1. */
+static int section_points(mesh_build *b, const wp_stem *st, const section *sec)
 {
-    if (nv > WP_MESH_MAX_VERTICES || nt > WP_MESH_MAX_TRIANGLES)
-        return plugin_fail(err, SYLVA_ERR_LIMIT, "the tree needs %llu vertices and %llu triangles, more than the "
-                           "host's %u and %u per model", (unsigned long long)nv, (unsigned long long)nt,
-                           WP_MESH_MAX_VERTICES, WP_MESH_MAX_TRIANGLES);
-    w->pos = malloc((size_t)nv * 3 * sizeof(float) + 1);
-    w->uv = malloc((size_t)nv * 2 * sizeof(float) + 1);
-    w->tri = malloc((size_t)nt * 3 * sizeof(uint32_t) + 1);
-    w->mat = malloc((size_t)nt * sizeof(int32_t) + 1);
-    if (!w->pos || !w->uv || !w->tri || !w->mat) {
-        wp_mesh_release(w);
-        return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for a mesh of %llu vertices and %llu triangles",
-                           (unsigned long long)nv, (unsigned long long)nt);
+    wp_prepared *t = b->g->t;
+    const wp_params *p = t->p;
+    const wp_level_state *lv = wp_level_of(t, st->level);
+    if (sec->rad < ONE_POINT_RADIUS) {
+        if (add_vertex(b, wp_frame_apply(&sec->trf, wp_v(0, 0, 0)), 0.5, sec->dist)) return -1;
+        return 1;
     }
-    return SYLVA_OK;
-}
-
-static void put_vertex(wp_mesh *w, const double p[3], double u, double v)
-{
-    uint32_t i = w->nv++;
-    for (int k = 0; k < 3; k++) w->pos[3 * i + k] = (float)p[k];
-    w->uv[2 * i] = (float)u, w->uv[2 * i + 1] = (float)v;
-    if (p[2] > w->top || i == 0) w->top = p[2];
-}
-
-static void put_triangle(wp_mesh *w, uint32_t a, uint32_t b, uint32_t c, int32_t material)
-{
-    uint32_t t = w->nt++;
-    w->tri[3 * t] = a, w->tri[3 * t + 1] = b, w->tri[3 * t + 2] = c;
-    w->mat[t] = material;
-}
-
-/* The stems: the model's vertices with v in bark tiles of their level. */
-static int put_stems(wp_mesh *w, const wp_model *m, int32_t bark, plugin_err *err)
-{
-    double round[WP_LEVELS];
-    wp_mesh_bark_rounds(m, round);
-    for (int l = 0; l < WP_LEVELS; l++)
-        if (!(round[l] > 0)) round[l] = l ? round[l - 1] : WP_MESH_NO_RING_ROUND;
-    uint8_t *level = calloc(m->n_vertices ? m->n_vertices : 1, 1); /* owned here; 0 when unused */
-    if (!level) return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for the levels of %zu vertices", m->n_vertices);
-    for (size_t t = 0; t < m->n_triangles; t++)
-        for (int k = 0; k < 3; k++) level[m->triangle[t][k]] = m->level[t] < WP_LEVELS ? m->level[t] : WP_LEVELS - 1;
-    for (size_t i = 0; i < m->n_vertices; i++)
-        put_vertex(w, m->vertex[i], m->uv[i][0], m->uv[i][1] / round[level[i]]);
-    free(level);
-    for (size_t t = 0; t < m->n_triangles; t++)
-        put_triangle(w, m->triangle[t][0], m->triangle[t][1], m->triangle[t][2], bark);
-    w->stem_triangles = w->nt;
-    return SYLVA_OK;
-}
-
-/* One leaf form at leaf frame f. */
-static void put_leaf(wp_mesh *w, const wp_leaf *f, const wp_leaf_form *form, int32_t material)
-{
-    uint32_t first = w->nv;
-    for (uint32_t i = 0; i < form->nv; i++) {
-        const double *q = form->vertex[i];
-        double p[3];
-        for (int k = 0; k < 3; k++)
-            p[k] = f->origin[k] + q[0] * f->axis[0][k] + q[1] * f->axis[1][k] + q[2] * f->axis[2][k];
-        put_vertex(w, p, form->uv[i][0], form->uv[i][1]);
+    int n = lv->mesh_points;
+    int trunk = lv->level == 0;
+    for (int i = 0; i < n; i++) {
+        double angle = i * 360.0 / n;
+        double u = angle / 360.0;
+        if (trunk && p->lobes != 0) angle -= 10.0 / p->lobes;
+        wp_vec pt = wp_v(cos(angle * M_PI / 180), sin(angle * M_PI / 180), 0);
+        if (trunk && (p->lobes != 0 || p->trunk_scale_v != 0)) {
+            double draw = wp_random_uniform(&t->mesh_random, -p->trunk_scale_v, p->trunk_scale_v);
+            double rad1 = sec->rad * (1 + draw / sec->sub_count);
+            pt = wp_vmul(pt, rad1 * (1.0 + p->lobe_depth * cos(p->lobes * angle * M_PI / 180.0)));
+        } else {
+            pt = wp_vmul(pt, sec->rad);
+        }
+        if (add_vertex(b, wp_frame_apply(&sec->trf, pt), u, sec->dist)) return -1;
     }
-    for (uint32_t t = 0; t < form->nt; t++)
-        put_triangle(w, first + form->tri[t][0], first + form->tri[t][1], first + form->tri[t][2], material);
+    return n;
 }
 
-int wp_mesh_build(const wp_model *m, const wp_leaf_form *leaf, int32_t bark, int32_t leaf_material, wp_mesh *out,
-                  plugin_err *err)
+/* Adds section sec after the previous one (prev_start, prev_size; prev_size 0 for none). */
+static int add_section(mesh_build *b, const wp_stem *st, const section *sec, size_t *prev_start, int *prev_size)
 {
-    memset(out, 0, sizeof *out);
-    size_t leaves = leaf && leaf->nt ? m->n_leaves : 0;
-    uint64_t nv = (uint64_t)m->n_vertices + (uint64_t)leaves * (leaf ? leaf->nv : 0);
-    uint64_t nt = (uint64_t)m->n_triangles + (uint64_t)leaves * (leaf ? leaf->nt : 0);
-    int rc = mesh_alloc(out, nv, nt, err);
-    if (rc) return rc;
-    if ((rc = put_stems(out, m, bark, err))) {
-        wp_mesh_release(out);
-        return rc;
+    size_t start = b->m->n_vertices;
+    int size = section_points(b, st, sec);
+    if (size < 0) return b->failed;
+    if (*prev_size > 0 && faces_between(b, *prev_start, *prev_size, start, size, st->level)) return b->failed;
+    *prev_start = start;
+    *prev_size = size;
+    return 0;
+}
+
+/* The mesh part of one stem (MeshPartCreator.createMeshPart without the unwritten root point). */
+static int mesh_stem(mesh_build *b, const wp_stem *st)
+{
+    const wp_growth *g = b->g;
+    if (st->seg_first == WP_NONE) return 0;
+    size_t prev_start = 0;
+    int prev_size = 0;
+    section sec;
+    memset(&sec, 0, sizeof sec);
+    for (int k = st->seg_first; k != WP_NONE; k = wp_segment_at(g, k)->next) {
+        const wp_segment *seg = wp_segment_at(g, k);
+        sec.sub_count = seg->sub_count;
+        if (k == st->seg_first) {
+            sec.trf = seg->transf;
+            sec.rad = seg->rad1;
+            sec.dist = seg->index * seg->length;
+            if (add_section(b, st, &sec, &prev_start, &prev_size)) return b->failed;
+        }
+        for (int i = 0; i < seg->sub_count; i++) {
+            const wp_subsegment *sub = wp_subsegment_at(g, seg->sub_first + i);
+            sec.trf = wp_frame_translate(&seg->transf, wp_vsub(sub->pos, seg->transf.t));
+            sec.rad = sub->rad;
+            sec.dist = seg->index * seg->length + sub->dist;
+            if (add_section(b, st, &sec, &prev_start, &prev_size)) return b->failed;
+        }
     }
-    for (size_t i = 0; i < leaves; i++) put_leaf(out, &m->leaf[i], leaf, leaf_material);
-    return SYLVA_OK;
+    if (sec.rad > ONE_POINT_RADIUS) {
+        size_t start = b->m->n_vertices;
+        if (add_vertex(b, wp_frame_apply(&sec.trf, wp_v(0, 0, 0)), 0.5, sec.dist)) return b->failed;
+        if (faces_between(b, prev_start, prev_size, start, 1, st->level)) return b->failed;
+    }
+    return 0;
 }
 
-void wp_mesh_release(wp_mesh *w)
+/* Meshes the stems of `level` below stem s, in Arbaro's traversal order (the stem, its leaves,
+ * its children, its clones). */
+static int mesh_level(mesh_build *b, int s, int level)
 {
-    if (!w) return;
-    free(w->pos), free(w->uv), free(w->tri), free(w->mat);
-    memset(w, 0, sizeof *w);
+    const wp_stem *st = wp_stem_at(b->g, s);
+    if (st->level > level) return 0;
+    if (st->level == level) {
+        if (mesh_stem(b, st)) return b->failed;
+    } else {
+        for (int c = st->child_first; c != WP_NONE; c = wp_stem_at(b->g, c)->next)
+            if (mesh_level(b, c, level)) return b->failed;
+    }
+    for (int c = st->clone_first; c != WP_NONE; c = wp_stem_at(b->g, c)->next)
+        if (mesh_level(b, c, level)) return b->failed;
+    return 0;
+}
+
+int wp_mesh_stems(wp_growth *g, size_t max_triangles, wp_model *m, plugin_err *err)
+{
+    mesh_build b = { g, m, 0, 0, max_triangles, err, 0 };
+    for (int level = 0; level < g->t->levels; level++)
+        for (int s = g->trunk_first; s != WP_NONE; s = wp_stem_at(g, s)->next)
+            if (mesh_level(&b, s, level)) return b.failed;
+    return 0;
 }

@@ -1,46 +1,21 @@
-/* wp_mesh.h — a grown tree (wp_model.h) as the mesh the plugin hands the host: the stems'
- * triangles with bark uv, then one leaf form (wp_leaf_form.h) at every leaf frame, in single
- * precision, with a material per triangle. No normals: the host smooths them over the shared
- * vertices, the stems' rings as Arbaro's Smooth does and each leaf on its own.
- *
- * Bark uv: u goes once round a stem as the model gives it; v is the model's metres along the
- * stem divided by the mean circumference of that stem level's rings, so the bark texture (one
- * circumference wide and long) keeps its aspect on every level (wp_mesh_bark_rounds).
- *
- * Ownership: a wp_mesh owns its arrays; wp_mesh_release() frees them and accepts a zeroed one. */
+/* wp_mesh.h — the stems of a grown tree meshed as Arbaro 1.9's mesh generator meshes them for
+ * its OBJ writer: level by level, each stem a tube of cross-sections (the first segment's base,
+ * then every subsegment; a section of radius below 1e-6 is a single point), the trunk's
+ * sections with their lobes and 0ScaleV drawn from the tree's mesh stream, a point closing the
+ * top, and between sections Arbaro's faces (quads between rings, triangles to a point). */
 #ifndef WP_MESH_H
 #define WP_MESH_H
 
-#include <stdint.h>
-
 #include "plugin_err.h"
-#include "wp_leaf_form.h"
+#include "wp_growth.h"
 #include "wp_model.h"
 
-#define WP_MESH_MAX_VERTICES 100000000u /* the host's per-mesh limits */
-#define WP_MESH_MAX_TRIANGLES 50000000u
-
-typedef struct wp_mesh {
-    float *pos, *uv;         /* owned: 3 and 2 floats per vertex */
-    uint32_t nv;
-    uint32_t *tri;           /* owned: 3 indices per triangle */
-    int32_t *mat;            /* owned: material per triangle */
-    uint32_t nt;
-    uint32_t stem_triangles; /* the first triangles are the stems' */
-    double top;              /* the highest vertex's z, metres (0 when empty) */
-} wp_mesh;
-
-/* The mean circumference of the rings of each stem level (metres; 0 where a level has none):
- * over the edges between two vertices of one ring (equal v, u apart by less than a half turn),
- * chord length over the turn between them. */
-void wp_mesh_bark_rounds(const wp_model *m, double round[WP_LEVELS]);
-
-/* The model's stems (material `bark`) and its leaves drawn with `leaf` (material `leaf_material`;
- * leaf NULL or without triangles: no leaves drawn) into *out (emptied first). Returns 0, or
- * SYLVA_ERR_LIMIT past the host's per-mesh limits or SYLVA_ERR_NOMEM, with err set and out empty. */
-int wp_mesh_build(const wp_model *m, const wp_leaf_form *leaf, int32_t bark, int32_t leaf_material, wp_mesh *out,
-                  plugin_err *err);
-
-void wp_mesh_release(wp_mesh *w);
+/* Appends the stems of g to m (vertex, uv, triangle, level; empty on entry), sets m->faces for
+ * the stem levels to Arbaro's face counts and widens m's bounding box by every vertex a face
+ * uses (m->bbox_min/max must be set to +inf/-inf first). Quads become two triangles; faces whose
+ * corners repeat a vertex (Arbaro makes some where a point meets a ring) are counted but not
+ * kept as triangles. Stops with SYLVA_ERR_LIMIT past max_triangles triangles. Returns 0 or a
+ * negative sylva_status with err set (m keeps what it has; the caller releases it). */
+int wp_mesh_stems(wp_growth *g, size_t max_triangles, wp_model *m, plugin_err *err);
 
 #endif

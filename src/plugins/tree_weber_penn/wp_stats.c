@@ -32,7 +32,7 @@ static int stem_dimension(const wp_model *m, double *d)
     return 0;
 }
 
-int wp_stats_measure(const wp_model *m, int levels, const wp_mesh *w, sylva_tree_stats *st)
+int wp_stats_measure(const wp_model *m, int levels, const wp_host_mesh *w, sylva_tree_stats *st)
 {
     st->recursion = levels > 0 ? (uint32_t)levels : 0;
     st->symbols = 0, st->segments = 0, st->branches = 0;

@@ -8,11 +8,11 @@
 #define WP_STATS_H
 
 #include "sylva/tree_stats.h"
-#include "wp_mesh.h"
+#include "wp_host_mesh.h"
 #include "wp_model.h"
 
 /* Fills st's figures (its size and age are the caller's) from the model grown with `levels`
  * stem levels and the mesh made of it. Returns 0, or -1 when memory runs out for the silhouette. */
-int wp_stats_measure(const wp_model *m, int levels, const wp_mesh *w, sylva_tree_stats *st);
+int wp_stats_measure(const wp_model *m, int levels, const wp_host_mesh *w, sylva_tree_stats *st);
 
 #endif

@@ -11,7 +11,7 @@
 #include "wp_age.h"
 #include "wp_leaf_form.h"
 #include "wp_limits.h"
-#include "wp_mesh.h"
+#include "wp_host_mesh.h"
 #include "wp_stats.h"
 
 TEST(levels_and_scale_by_age)
@@ -149,7 +149,7 @@ TEST(mesh_of_a_hand_built_tree)
     hand_tree h;
     hand_tree_make(&h);
     double round[WP_LEVELS];
-    wp_mesh_bark_rounds(&h.m, round);
+    wp_host_mesh_bark_rounds(&h.m, round);
     CHECK_NEAR(round[0], sqrt(2.0) / 0.25, 1e-9); /* chord of a quarter turn over the turn */
     CHECK_NEAR(round[1], 0.5 * sqrt(2.0) / 0.25, 1e-9);
     CHECK_NEAR(round[2], 0, 0);
@@ -157,8 +157,8 @@ TEST(mesh_of_a_hand_built_tree)
     wp_leaf_form form;
     plugin_err err = {0};
     CHECK_INT(wp_leaf_form_own(&s, &form, &err), 0);
-    wp_mesh w;
-    CHECK_INT(wp_mesh_build(&h.m, &form, 7, 9, &w, &err), 0);
+    wp_host_mesh w;
+    CHECK_INT(wp_host_mesh_build(&h.m, &form, 7, 9, &w, &err), 0);
     CHECK_INT(w.nv, 16 + 2 * 4);
     CHECK_INT(w.nt, 16 + 2 * 2);
     CHECK_INT(w.stem_triangles, 16);
@@ -183,12 +183,12 @@ TEST(mesh_of_a_hand_built_tree)
     CHECK_NEAR(st.bbox_max[0], 3.1, 1e-6);
     CHECK_NEAR(st.bbox_min[2], 0, 0);
     CHECK(st.box_dimension > 1.0 && st.box_dimension < 2.01);
-    wp_mesh_release(&w);
+    wp_host_mesh_release(&w);
     /* no leaf form: the stems alone */
-    CHECK_INT(wp_mesh_build(&h.m, NULL, 7, -1, &w, &err), 0);
+    CHECK_INT(wp_host_mesh_build(&h.m, NULL, 7, -1, &w, &err), 0);
     CHECK_INT(w.nt, 16);
     CHECK_NEAR(w.top, 3.0, 1e-12);
-    wp_mesh_release(&w);
+    wp_host_mesh_release(&w);
     wp_leaf_form_release(&form);
 }
 
@@ -229,8 +229,8 @@ TEST(caps_from_the_budget)
 {
     wp_caps c;
     wp_caps_fit(8, NULL, NULL, &c);
-    CHECK_INT(c.triangles, WP_MESH_MAX_TRIANGLES);
-    CHECK_INT(c.leaves, WP_MESH_MAX_TRIANGLES / 8);
+    CHECK_INT(c.triangles, WP_HOST_MESH_MAX_TRIANGLES);
+    CHECK_INT(c.leaves, WP_HOST_MESH_MAX_TRIANGLES / 8);
     CHECK_INT(c.by_memory, 0);
     wp_caps_fit(2, fits_one_gib, NULL, &c);
     CHECK_INT(c.by_memory, 1);

@@ -43,8 +43,7 @@ static int make_leaf(wp_state *st, plugin_err *err)
     int rc = wp_leaf_shape_make(&c->species, &shape, &why);
     if (rc) {
         const sylva_params *where = c->model ? c->model : c->where;
-        return plugin_fail_key(err, rc, where, c->model ? "leaf_shape" : "file", "LeafShape '%s': %s",
-                               c->species.leaf_shape, why.msg);
+        return plugin_fail_key(err, rc, where, c->model ? "leaf_shape" : "file", "%s", why.msg);
     }
     rc = c->leaf == WP_LEAF_OWN ? wp_leaf_form_own(&shape, &st->leaf, &why) : wp_leaf_form_card(&shape, &st->leaf, &why);
     wp_leaf_shape_release(&shape);
@@ -173,7 +172,7 @@ static int wp_generate(void *state, const sylva_host_api *api, sylva_host *host,
         rc = SYLVA_ERR_NOMEM;
     }
     wp_model_release(&m);
-    if (!rc) rc = api->mesh_append(host, o->mesh, w.pos, NULL, w.uv, w.nv, w.tri, w.mat, w.nt);
+    if (!rc) rc = api->mesh_append(host, o->mesh, w.pos, w.nrm, w.uv, w.nv, w.tri, w.mat, w.nt);
     if (!rc) o->height = w.top;
     plugin_last_stats_set(&st->last, rc ? NULL : &last);
     wp_host_mesh_release(&w);

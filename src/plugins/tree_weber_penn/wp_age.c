@@ -5,9 +5,9 @@
 
 int wp_age_levels(int levels, double age)
 {
-    if (levels <= 1 || age >= 1.0) return levels;
+    if (levels <= 2 || age >= 1.0) return levels;
     double n = ceil(age * levels - 1e-9);
-    if (!(n >= 1.0)) return 1;
+    if (!(n >= 2.0)) return 2; /* Arbaro puts no leaves on the trunk: the youngest tree has branches */
     return n > levels ? levels : (int)n;
 }
 

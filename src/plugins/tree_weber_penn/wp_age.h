@@ -2,8 +2,8 @@
  * the full-grown tree; the plugin makes a younger one from the model's own stages
  * (docs/models/tree_weber_penn.md, "Ages"): Scale and ScaleV (so every stem length and radius,
  * which the model takes relative to Scale) times the age, and the first ceil(age Levels) stem
- * levels, the last level grown bearing the leaves placed as the species places them. Age 1 is
- * the species unchanged. */
+ * levels (at least 2), the last level grown bearing the leaves placed as the species places
+ * them. Age 1 is the species unchanged. */
 #ifndef WP_AGE_H
 #define WP_AGE_H
 
@@ -11,8 +11,8 @@
 
 #include "wp_params.h"
 
-/* The stem levels grown at `age` by a species of `levels`: ceil(age levels), at least 1 (0 for
- * a species of 0 levels), at most levels. */
+/* The stem levels grown at `age` by a species of `levels`: ceil(age levels), at least 2 (Arbaro
+ * grows no leaves on the trunk, so a tree of one level would be a bare pole), at most levels. */
 int wp_age_levels(int levels, double age);
 
 /* *out = *full at `age` in (0, 1] (age >= 1: *full itself). */

@@ -103,6 +103,12 @@ static int member_of(const wp_param_def *d)
 static int check_levels(plugin_params *m, const wp_config *c, const char *file, plugin_err *err)
 {
     wp_params p = c->species;
+    if (p.levels > WP_LEVELS) {
+        int given = plugin_param_given(m, "levels");
+        return plugin_fail_param(err, given ? m->block : c->where, given ? "levels" : c->where_key,
+                                 "Levels is %d; Arbaro 1.9 grows at most %d stem levels (give Levels 0 to %d)",
+                                 p.levels, WP_LEVELS, WP_LEVELS);
+    }
     for (size_t k = 0; k < wp_param_count; k++) {
         const wp_param_def *d = &wp_param_table[k];
         if (!d->per_level) continue;
@@ -150,7 +156,10 @@ static int read_species(plugin_params *r, wp_config *c, plugin_err *err)
                                  "file, or remove name and give the species in model");
     int rc = SYLVA_OK;
     if (file) rc = species_from_file(r, file, name, &c->species, err);
-    else wp_params_defaults(&c->species);
+    else {
+        wp_params_defaults(&c->species);
+        snprintf(c->species.species, sizeof c->species.species, "inline"); /* named so in the grower's sentences */
+    }
     if (rc) return rc;
     plugin_params m = plugin_params_in(r, model->group);
     for (size_t i = 0; i < WP_MODEL_SCHEMA_COUNT && !rc; i++) {

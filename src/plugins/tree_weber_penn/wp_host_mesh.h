@@ -1,13 +1,17 @@
 /* wp_host_mesh.h — a grown tree (wp_model.h) as the mesh the plugin hands the host: the stems'
  * triangles with bark uv, then one leaf form (wp_leaf_form.h) at every leaf frame, in single
- * precision, with a material per triangle. No normals: the host smooths them over the shared
- * vertices, the stems' rings as Arbaro's Smooth does and each leaf on its own.
+ * precision, with a material per triangle and smooth normals (each vertex's, the area-weighted
+ * sum of its triangles' normals: the stems' rings shade round, each leaf as its form).
  *
- * Bark uv: u goes once round a stem as the model gives it; v is the model's metres along the
- * stem divided by the mean circumference of that stem level's rings, so the bark texture (one
- * circumference wide and long) keeps its aspect on every level (wp_host_mesh_bark_rounds).
+ * Bark uv: u goes once round a stem as the model gives it, i / points; a triangle across the seam
+ * (its u spanning more than half a turn) takes copies of its vertices below u 0.5 at u + 1, with
+ * their normals, so the texture runs on instead of back across the whole turn. v is the model's
+ * metres along the stem divided by the mean circumference of that stem level's rings, so the bark
+ * texture (one circumference wide and long) keeps its aspect on every level
+ * (wp_host_mesh_bark_rounds).
  *
- * Ownership: a wp_host_mesh owns its arrays; wp_host_mesh_release() frees them and accepts a zeroed one. */
+ * Ownership: a wp_host_mesh owns its arrays; wp_host_mesh_release() frees them and accepts a
+ * zeroed one. */
 #ifndef WP_HOST_MESH_H
 #define WP_HOST_MESH_H
 
@@ -21,12 +25,13 @@
 #define WP_HOST_MESH_MAX_TRIANGLES 50000000u
 
 typedef struct wp_host_mesh {
-    float *pos, *uv;         /* owned: 3 and 2 floats per vertex */
+    float *pos, *nrm, *uv;   /* owned: 3, 3 and 2 floats per vertex (normals not unit) */
     uint32_t nv;
     uint32_t *tri;           /* owned: 3 indices per triangle */
     int32_t *mat;            /* owned: material per triangle */
     uint32_t nt;
     uint32_t stem_triangles; /* the first triangles are the stems' */
+    /* vertices: the model's, then the seam copies, then each leaf's */
     double top;              /* the highest vertex's z, metres (0 when empty) */
 } wp_host_mesh;
 

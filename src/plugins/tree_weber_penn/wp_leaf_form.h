@@ -2,7 +2,7 @@
  * leaf's own frame (x across the blade, y its normal, z from the stalk's base to the tip): the
  * species' own LeafShape mesh (wp_leaf_shape.h), or a card, two triangles over that shape's
  * extent across and along the blade, whose uv carries an affine-map leaf texture (stalk at
- * v = 0, tip at v = 1, as leaf_affine.h draws it).
+ * v = 0, tip at v = 1, as leaf_affine.h draws it), facing +y.
  *
  * Ownership: a wp_leaf_form owns its arrays; wp_leaf_form_release() frees them and accepts a
  * zeroed form. */
@@ -17,6 +17,7 @@
 typedef struct wp_leaf_form {
     double (*vertex)[3]; /* owned; nv points, metres in the leaf's frame */
     double (*uv)[2];     /* owned; nv */
+    double (*normal)[3]; /* owned; nv: the area-weighted sum of each vertex's triangles' normals */
     uint32_t nv;
     uint32_t (*tri)[3];  /* owned; nt */
     uint32_t nt;

@@ -1,5 +1,5 @@
 /* wp_limits.h — how large one tree_weber_penn model may grow: at most the host's triangles per
- * model (WP_MESH_MAX_TRIANGLES), fewer when the memory budget cannot hold that many. The caps are
+ * model (WP_HOST_MESH_MAX_TRIANGLES), fewer when the memory budget cannot hold that many. The caps are
  * handed to wp_model_grow (stem triangles, leaves), which stops a tree that would pass them, and
  * the whole model (stem triangles plus the leaves' triangles) is held to the same count.
  *
@@ -14,7 +14,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#define WP_BYTES_PER_TRIANGLE 112u
+#define WP_BYTES_PER_TRIANGLE 120u
 #define WP_BYTES_PER_LEAF 96u
 #define WP_MIN_TRIANGLES 65536u
 

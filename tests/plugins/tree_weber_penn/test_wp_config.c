@@ -165,6 +165,8 @@ TEST(model_values_out_of_range_refused)
     expect_refused("model: {taper: [1, 3]}\n", -1, "'taper'", "2.99999999");
     expect_refused("model: {length: [1, 0.5, 0.5, 0.5, 0.5]}\n", -1, "'length'", "4");
     expect_refused("model: {lenght: [1]}\n", -1, "unknown key 'lenght'", "did you mean 'length'");
+    expect_refused("model: {levels: 5}\n", SYLVA_ERR_PARAM, "test.yaml:1:17: 'levels': Levels is 5; Arbaro 1.9 grows at "
+                   "most 4 stem levels", NULL);
     expect_refused("model: {curve_res: [3, 2.5]}\n", SYLVA_ERR_PARAM,
                    "test.yaml:1:20: 'curve_res': model.curve_res gives 2.5 at level 1; curve_res takes whole numbers",
                    NULL);

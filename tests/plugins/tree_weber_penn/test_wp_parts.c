@@ -16,13 +16,16 @@
 
 TEST(levels_and_scale_by_age)
 {
-    CHECK_INT(wp_age_levels(3, 0.25), 1);
-    CHECK_INT(wp_age_levels(3, 1.0 / 3.0), 1);
+    CHECK_INT(wp_age_levels(3, 0.25), 2); /* never the bare trunk: Arbaro grows no leaves on it */
+    CHECK_INT(wp_age_levels(3, 1.0 / 3.0), 2);
     CHECK_INT(wp_age_levels(3, 0.34), 2);
     CHECK_INT(wp_age_levels(3, 2.0 / 3.0), 2);
     CHECK_INT(wp_age_levels(3, 0.67), 3);
     CHECK_INT(wp_age_levels(3, 1.0), 3);
     CHECK_INT(wp_age_levels(4, 0.5), 2);
+    CHECK_INT(wp_age_levels(4, 0.6), 3);
+    CHECK_INT(wp_age_levels(4, 0.1), 2);
+    CHECK_INT(wp_age_levels(2, 0.1), 2);
     CHECK_INT(wp_age_levels(1, 0.1), 1);
     CHECK_INT(wp_age_levels(0, 0.5), 0);
     wp_params full, young;
@@ -41,9 +44,10 @@ TEST(levels_and_scale_by_age)
     CHECK_NEAR(young.level[2].branch_dist, 0.25, 0);
     CHECK_NEAR(young.level[1].down_angle, full.level[1].down_angle, 0);
     CHECK_NEAR(young.level[2].length, full.level[2].length, 0);
+    full.levels = 4;
     wp_params_at_age(&full, 0.2, &young);
-    CHECK_INT(young.levels, 1);
-    CHECK_NEAR(young.level[1].down_angle, 55, 0);
+    CHECK_INT(young.levels, 2);
+    CHECK_NEAR(young.level[2].down_angle, 55, 0); /* a 4-level species' leaves: level 3's */
     CHECK_NEAR(young.scale, 4, 1e-12);
 }
 
@@ -76,6 +80,7 @@ TEST(leaf_forms)
     CHECK_INT(own.nv, 4);
     CHECK_INT(own.nt, 2);
     CHECK_NEAR(own.vertex[2][2], 0.5, 0);
+    CHECK(own.normal[0][1] > 0 && own.normal[0][0] == 0 && own.normal[0][2] == 0); /* the kite faces +y */
     CHECK_INT(wp_leaf_form_card(&s, &card, &err), 0);
     CHECK_INT(card.nv, 4);
     CHECK_INT(card.nt, 2);
@@ -91,8 +96,10 @@ TEST(leaf_forms)
         double e[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, f[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
         CHECK(e[2] * f[0] - e[0] * f[2] > 0);
     }
-    for (uint32_t i = 0; i < card.nv; i++) /* stalk at v = 0, tip at v = 1, u across */
+    for (uint32_t i = 0; i < card.nv; i++) { /* stalk at v = 0, tip at v = 1, u across; facing +y */
         CHECK_NEAR(card.uv[i][1], (card.vertex[i][2] - 0.1) / 0.4, 1e-12);
+        CHECK(card.normal[i][1] > 0 && card.normal[i][0] == 0 && card.normal[i][2] == 0);
+    }
     wp_leaf_form_release(&own);
     wp_leaf_form_release(&card);
     double flat[3][3] = {{0, 0, 0}, {0, 0, 1}, {0, 0.5, 0.5}};
@@ -159,18 +166,31 @@ TEST(mesh_of_a_hand_built_tree)
     CHECK_INT(wp_leaf_form_own(&s, &form, &err), 0);
     wp_host_mesh w;
     CHECK_INT(wp_host_mesh_build(&h.m, &form, 7, 9, &w, &err), 0);
-    CHECK_INT(w.nv, 16 + 2 * 4);
+    CHECK_INT(w.nv, 16 + 4 + 2 * 4); /* the stems, a seam copy of each ring's u = 0 vertex, the leaves */
     CHECK_INT(w.nt, 16 + 2 * 2);
     CHECK_INT(w.stem_triangles, 16);
     CHECK_INT(w.mat[0], 7);
     CHECK_INT(w.mat[15], 7);
     CHECK_INT(w.mat[16], 9);
-    CHECK_INT(w.tri[3 * 16], 16);
+    CHECK_INT(w.tri[3 * 16], 20);
     CHECK_NEAR(w.uv[2 * 4 + 1], 2.0 / round[0], 1e-6);  /* the trunk's top ring: 2 m in bark tiles */
     CHECK_NEAR(w.uv[2 * 12 + 1], 1.0 / round[1], 1e-6); /* the branch's: 1 m in its own tiles */
+    CHECK_NEAR(w.uv[2 * 16], 1.0, 0);                   /* vertex 0's seam copy at u = 1 */
+    CHECK_NEAR(w.pos[3 * 16], w.pos[0], 0);
+    for (uint32_t t = 0; t < w.stem_triangles; t++) { /* no triangle runs back across the texture */
+        float lo = 2, hi = -1;
+        for (int k = 0; k < 3; k++) lo = fminf(lo, w.uv[2 * w.tri[3 * t + k]]), hi = fmaxf(hi, w.uv[2 * w.tri[3 * t + k]]);
+        CHECK(hi - lo <= 0.5f);
+    }
+    for (uint32_t i = 0; i < 16; i++) { /* the stems' normals point out of them, the seam's as its vertex's */
+        const float *p = w.pos + 3 * i, *n = w.nrm + 3 * i;
+        CHECK(p[0] * n[0] + p[1] * n[1] > 0 && fabsf(n[2]) < 1e-6f);
+    }
+    CHECK(w.nrm[3 * 16] == w.nrm[0] && w.nrm[3 * 16 + 1] == w.nrm[1]);
+    CHECK(w.nrm[3 * 20 + 1] > 0 && fabsf(w.nrm[3 * 20]) < 1e-6f); /* the kite faces +y, the frame's y */
     /* leaf 1's tip: origin (3, 0, 3) + 0.5 along its z axis */
-    CHECK_NEAR(w.pos[3 * (16 + 4 + 2) + 0], 3.0, 1e-6);
-    CHECK_NEAR(w.pos[3 * (16 + 4 + 2) + 2], 3.5, 1e-6);
+    CHECK_NEAR(w.pos[3 * (20 + 4 + 2) + 0], 3.0, 1e-6);
+    CHECK_NEAR(w.pos[3 * (20 + 4 + 2) + 2], 3.5, 1e-6);
     CHECK_NEAR(w.top, 3.5, 1e-12);
     sylva_tree_stats st = {.size = sizeof st, .age = 1};
     CHECK_INT(wp_stats_measure(&h.m, 2, &w, &st), 0);
@@ -187,6 +207,7 @@ TEST(mesh_of_a_hand_built_tree)
     /* no leaf form: the stems alone */
     CHECK_INT(wp_host_mesh_build(&h.m, NULL, 7, -1, &w, &err), 0);
     CHECK_INT(w.nt, 16);
+    CHECK_INT(w.nv, 16 + 4);
     CHECK_NEAR(w.top, 3.0, 1e-12);
     wp_host_mesh_release(&w);
     wp_leaf_form_release(&form);

@@ -452,6 +452,27 @@ TEST(scene_include_fifo)
     CHECK_STR_CONTAINS(err.msg, "species.fifo: not a regular file: it is a FIFO");
 }
 
+/* A species library's ecology blocks are left unread by a scene without an ecology, so the same
+ * library serves scenes that grow plants and scenes that place them; the scene's own block is
+ * still refused (tests/scenes/bad/ecology_without_section.yaml). */
+TEST(scene_library_ecology_unread)
+{
+    CHECK(work_file("library_eco.yaml", "species:\n  crate: {shape: box, ecology: {t_m: 40}}\n") != NULL);
+    const char *scene = work_file("library_scene.yaml", "camera:\n  position: [0, -10, 2]\n"
+                                                        "species:\n  include: library_eco.yaml\n");
+    CHECK(scene != NULL);
+    if (!scene) return;
+    err_buf err;
+    scene_file *sf = scene_file_load(scene, NULL, &err);
+    CHECK(sf != NULL);
+    if (!sf) {
+        fprintf(stderr, "%s\n", err.msg);
+        return;
+    }
+    CHECK(sf->n_species == 1);
+    scene_file_free(sf);
+}
+
 /* A texture (any path parameter) naming a FIFO is refused where it is written. */
 TEST(scene_texture_fifo)
 {
@@ -563,7 +584,7 @@ TEST_LIST(TEST_CASE(scene_minimal_defaults), TEST_CASE(scene_full), TEST_CASE(sc
           TEST_CASE(scene_bad_plugin_corpus), TEST_CASE(scene_plugins),
           TEST_CASE(scene_file_errors), TEST_CASE(scene_file_size_limit),
           TEST_CASE(host_schemas_are_well_formed), TEST_CASE(host_reserved_keys),
-          TEST_CASE(docs_list_every_key), TEST_CASE(scene_include_fifo),
+          TEST_CASE(docs_list_every_key), TEST_CASE(scene_include_fifo), TEST_CASE(scene_library_ecology_unread),
           TEST_CASE(scene_texture_fifo), TEST_CASE(scene_gdal_virtual_opt_in),
           TEST_CASE(scene_extreme_directions), TEST_CASE(scene_shapes_beyond_memory),
           TEST_CASE(scene_file_beyond_memory))

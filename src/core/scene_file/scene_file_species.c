@@ -3,6 +3,8 @@
  * plugin's species section (the plugin's defaults when the block is left out). */
 #include "scene_file/scene_file_loader.h"
 
+#include <string.h>
+
 static int read_species_entry(loader *L, const species_entry *e, species_spec *sp)
 {
     const char *file = e->file;
@@ -73,6 +75,10 @@ static int read_species_entry(loader *L, const species_entry *e, species_spec *s
         return params_validate(L->a, NULL, L->ecology->species_params, L->ecology->n_species_params,
                                &ds, &sp->ecology, L->err);
     }
+    /* A library of species carries the ecology blocks that a scene growing them needs; a scene
+     * without an ecology places its plants by other means and leaves an included file's blocks
+     * unread. A block in the scene file itself is a mistake there. */
+    if (!L->ecology && strcmp(file, L->file) != 0) return 0;
     if (!L->ecology)
         return sf_located(L->err, file, eco->key_line, eco->key_column,
                           "species '%s' has an '%s:' block, but the scene has no 'ecology:' section "

@@ -60,6 +60,38 @@ void box_raster_line(box_raster *r, double ax, double ay, double bx, double by, 
     }
 }
 
+/* Sets the pixel holding (x, y), pixel units, when it lies on the raster. */
+static void cover_point(box_raster *r, double x, double y)
+{
+    if (x >= 0 && y >= 0 && x < r->n && y < r->n) r->px[(size_t)y * r->n + (size_t)x] = 1;
+}
+
+void box_raster_triangle(box_raster *r, double ax, double ay, double bx, double by, double cx, double cy)
+{
+    double q[3][2] = {{(ax - r->x0) / r->pixel, (ay - r->y0) / r->pixel},
+                      {(bx - r->x0) / r->pixel, (by - r->y0) / r->pixel},
+                      {(cx - r->x0) / r->pixel, (cy - r->y0) / r->pixel}};
+    for (int k = 0; k < 3; k++) cover_point(r, q[k][0], q[k][1]);
+    double ylo = fmin(q[0][1], fmin(q[1][1], q[2][1])), yhi = fmax(q[0][1], fmax(q[1][1], q[2][1]));
+    double jlo = fmax(ceil(ylo - 0.5), 0.0), jhi = fmin(floor(yhi - 0.5), (double)r->n - 1);
+    if (!(jlo <= jhi)) return;
+    for (long j = (long)jlo; j <= (long)jhi; j++) {
+        double yc = j + 0.5, xlo = INFINITY, xhi = -INFINITY;
+        for (int k = 0; k < 3; k++) {
+            const double *p = q[k], *s = q[(k + 1) % 3];
+            if (!((p[1] <= yc && s[1] >= yc) || (s[1] <= yc && p[1] >= yc))) continue;
+            if (p[1] == s[1]) {
+                xlo = fmin(xlo, fmin(p[0], s[0])), xhi = fmax(xhi, fmax(p[0], s[0]));
+                continue;
+            }
+            double x = p[0] + (yc - p[1]) * (s[0] - p[0]) / (s[1] - p[1]);
+            xlo = fmin(xlo, x), xhi = fmax(xhi, x);
+        }
+        double ilo = fmax(ceil(xlo - 0.5), 0.0), ihi = fmin(floor(xhi - 0.5), (double)r->n - 1);
+        if (ilo <= ihi) memset(r->px + (size_t)j * r->n + (size_t)ilo, 1, (size_t)(ihi - ilo + 1));
+    }
+}
+
 void box_count(const box_raster *r, uint64_t *counts)
 {
     /* Occupancy at the finest grid, then each coarser grid ORs 2 x 2 blocks of the finer one. */

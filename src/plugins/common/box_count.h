@@ -33,6 +33,10 @@ void box_raster_free(box_raster *r); /* accepts a zeroed raster */
  * least one pixel wide). */
 void box_raster_line(box_raster *r, double ax, double ay, double bx, double by, double hw);
 
+/* Covers the triangle (ax, ay), (bx, by), (cx, cy) (world units): every pixel whose centre it
+ * holds, and at least the pixels its corners fall in, so a sliver still leaves its trace. */
+void box_raster_triangle(box_raster *r, double ax, double ay, double bx, double by, double cx, double cy);
+
 /* Box counts: counts[i] = boxes of side n / 2^i pixels that hold a covered pixel, for the grids
  * of 2^i x 2^i boxes, i = 0..level. */
 void box_count(const box_raster *r, uint64_t *counts);

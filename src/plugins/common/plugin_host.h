@@ -6,6 +6,8 @@
 
 #include <pthread.h>
 
+#include "bark_fractal.h"
+#include "leaf_affine.h"
 #include "plugin_err.h"
 #include "sylva/plugin.h"
 #include "sylva/tree_stats.h"
@@ -31,6 +33,20 @@ int plugin_tree_stats_copy(const sylva_tree_stats *last, int has_last, sylva_tre
 /* Sets st's bbox_min and bbox_max from a model's nv vertices (pos: 3 * nv, metres); both 0 for
  * an empty model. */
 void plugin_tree_stats_bounds(sylva_tree_stats *st, const float *pos, uint32_t nv);
+
+/* A tree plugin's bark material `name`: Lambert, albedo `color` (linear RGB) times the fractal
+ * bark texture of `bark` (size x size texels, tree_look_bark_texture). Returns its id, or a
+ * negative status with the host's sentence set. */
+int32_t plugin_bark_material(const sylva_host_api *api, sylva_host *host, const char *name,
+                             const bark_fractal_params *bark, uint32_t size, const double color[3]);
+
+/* A tree plugin's leaf material `name`: SYLVA_BSDF_LEAF of albedo `color` and `transmittance`
+ * (linear RGB) times the affine-map leaf texture of `maps` (size x size texels, chaos-game seed
+ * `seed`, alpha-masked to its outline), or plain when maps is NULL. Returns its id, or a negative
+ * status with the host's sentence set. */
+int32_t plugin_leaf_material(const sylva_host_api *api, sylva_host *host, const char *name,
+                             const leaf_affine_maps *maps, uint32_t size, uint64_t seed, const double color[3],
+                             const double transmittance[3]);
 
 /* A tree plugin's last model's figures, kept under a lock so that generate() calls running at
  * once (SYLVA_PLUGIN_CONCURRENT_GENERATE) may each set them: last_stats then gives the figures

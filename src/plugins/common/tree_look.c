@@ -47,6 +47,17 @@ int tree_look_leaf(const char *text, uint32_t size, leaf_affine_maps *out, char 
     return rc ? -1 : TREE_LOOK_USER_MAPS;
 }
 
+int tree_look_leaf_balance(const double color[3], const double transmittance[3], char *msg, size_t msg_size)
+{
+    for (int k = 0; k < 3; k++)
+        if (color[k] + transmittance[k] > 1.0) {
+            snprintf(msg, msg_size, "leaf_color + leaf_transmittance is %g in channel %d; a leaf cannot scatter more "
+                     "light than it receives, so keep the sum at most 1", color[k] + transmittance[k], k);
+            return -1;
+        }
+    return 0;
+}
+
 int tree_look_bark(int preset, double angle_deg, bark_fractal_params *out, char *msg, size_t msg_size)
 {
     if (preset < 0 || preset >= BARK_FRACTAL_PRESETS) {

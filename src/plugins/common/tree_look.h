@@ -27,6 +27,11 @@ int tree_look_leaf(const char *text, uint32_t size, leaf_affine_maps *out, char 
  * not finite). Returns 0, or -1 with a sentence in msg. */
 int tree_look_bark(int preset, double angle_deg, bark_fractal_params *out, char *msg, size_t msg_size);
 
+/* Whether a leaf of albedo `color` and transmittance `transmittance` (the `leaf_color:` and
+ * `leaf_transmittance:` keys, linear RGB) scatters at most what it receives: 0, or -1 with a
+ * sentence naming the channel in msg. */
+int tree_look_leaf_balance(const double color[3], const double transmittance[3], char *msg, size_t msg_size);
+
 #define TREE_LOOK_MAX_BARK_SIZE 1024u
 
 /* Fills rgba (size * size * 4 bytes, sRGB-encoded, row 0 at the top; size at most

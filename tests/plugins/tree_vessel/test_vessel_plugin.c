@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "harness.h"
+#include "plugin_module.h"
 #include "work_dir.h"
 #include "plugin/plugin_host.h"
 #include "scene_build/scene_build.h"
@@ -13,17 +14,7 @@
 #include "vessel_mesh.h"
 #include "vessel_test_util.h"
 
-static plugin_registry *registry(void)
-{
-    err_buf err = {{0}};
-    plugin_registry *reg = plugin_registry_open_path("", &err);
-    if (reg && plugin_registry_add_file(reg, SYLVA_PLUGIN_BUILD_DIR "/tree_vessel.so", &err)) {
-        fprintf(stderr, "%s\n", err.msg);
-        plugin_registry_free(reg);
-        return NULL;
-    }
-    return reg;
-}
+static plugin_registry *registry(void) { return plugin_module_registry(SYLVA_PLUGIN_BUILD_DIR "/tree_vessel.so"); }
 
 /* Writes a scene whose species block holds `keys` (YAML flow mapping members) and loads and
  * builds it. Returns the scene, or NULL with err set. */
@@ -39,13 +30,7 @@ static scene *load(const plugin_registry *reg, const char *keys, uint32_t varian
              variants, keys[0] ? ", " : "", keys);
     const char *path = work_file("scene.yaml", yaml);
     if (!path) return NULL;
-    scene *s = NULL;
-    scene_file *sf = scene_file_load(path, reg, err);
-    if (sf) {
-        build_options opt = {.quiet = 1};
-        s = scene_build(sf, reg, &opt, err);
-    }
-    scene_file_free(sf);
+    scene *s = plugin_module_scene(reg, path, err);
     unlink(path);
     return s;
 }

@@ -112,18 +112,44 @@ TEST(failures_leave_nothing)
     atomic_file_abort(&af);
     CHECK_INT(atomic_file_commit(&af, &err), -1); /* nothing left to commit */
     CHECK_INT(count_entries(), 0);
-    /* the rename fails: the target is a non-empty folder */
-    const char *folder = work_path("taken.csv");
+    /* the rename fails: a non-empty folder came to stand at the target after the open */
+    char folder[1200];
+    snprintf(folder, sizeof folder, "%s", work_path("taken.csv"));
+    CHECK_INT(atomic_file_open(&af, folder, &err), 0);
     CHECK_INT(mkdir(folder, 0755), 0);
     char inner[1300];
     snprintf(inner, sizeof inner, "%s/keep", folder);
     CHECK_INT(mkdir(inner, 0755), 0);
-    CHECK_INT(atomic_file_open(&af, folder, &err), 0);
     CHECK_INT(atomic_file_commit(&af, &err), -1);
     CHECK_STR_CONTAINS(err.msg, "cannot move the finished file into place");
     CHECK_INT(count_entries(), 1);
     rmdir(inner);
     rmdir(folder);
+}
+
+/* A device, a FIFO or a folder standing at the output's name is refused before anything is
+ * written: the commit's rename would have put a file in its place (as root, a regular file in
+ * place of /dev/null). */
+TEST(only_files_are_replaced)
+{
+    atomic_file af;
+    err_buf err = {{0}};
+    struct stat before, after;
+    CHECK(stat("/dev/null", &before) == 0 && S_ISCHR(before.st_mode));
+    CHECK_INT(atomic_file_open(&af, "/dev/null", &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "/dev/null: is a character device; an output replaces the file it names");
+    CHECK(stat("/dev/null", &after) == 0 && S_ISCHR(after.st_mode));
+    const char *fifo = work_path("out.fifo");
+    CHECK_INT(mkfifo(fifo, 0600), 0);
+    CHECK_INT(atomic_file_open(&af, fifo, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "is a FIFO (named pipe)");
+    remove(fifo);
+    const char *folder = work_path("folder.png");
+    CHECK_INT(mkdir(folder, 0755), 0);
+    CHECK_INT(atomic_file_open(&af, folder, &err), -1);
+    CHECK_STR_CONTAINS(err.msg, "is a folder");
+    rmdir(folder);
+    CHECK_INT(count_entries(), 0);
 }
 
 /* SIGTERM while a temporary is open: the process ends by the signal and the temporary is gone. */
@@ -154,4 +180,4 @@ TEST(signal_removes_the_temporary)
 
 TEST_LIST(TEST_CASE(write_and_commit), TEST_CASE(temporary_names_are_unique),
           TEST_CASE(link_at_the_target_is_replaced_not_followed), TEST_CASE(failures_leave_nothing),
-          TEST_CASE(signal_removes_the_temporary))
+          TEST_CASE(signal_removes_the_temporary), TEST_CASE(only_files_are_replaced))

@@ -121,6 +121,20 @@ static int temp_name(const char *path, char *tmp, size_t n)
 
 /* --- the file --------------------------------------------------------------------------------- */
 
+/* -1 with err when something other than a file or a symbolic link stands at path: the commit
+ * renames over what is there, and would put a file in place of a device (/dev/null), a FIFO, a
+ * socket or a folder. A link is replaced, never followed. */
+static int not_a_file_to_replace(const char *path, err_buf *err)
+{
+    struct stat st;
+    if (lstat(path, &st) != 0 || S_ISREG(st.st_mode) || S_ISLNK(st.st_mode)) return 0;
+    const char *what = S_ISDIR(st.st_mode) ? "a folder" : S_ISCHR(st.st_mode) ? "a character device"
+                     : S_ISBLK(st.st_mode) ? "a block device" : S_ISFIFO(st.st_mode) ? "a FIFO (named pipe)"
+                     : S_ISSOCK(st.st_mode) ? "a socket" : "not a regular file";
+    return err_set(err, "%s: is %s; an output replaces the file it names, so name a regular file (or a new one)",
+                   path, what);
+}
+
 int atomic_file_open(atomic_file *af, const char *path, err_buf *err)
 {
     memset(af, 0, sizeof *af);
@@ -131,6 +145,7 @@ int atomic_file_open(atomic_file *af, const char *path, err_buf *err)
         return err_set(err, "%s: output path is too long", path);
     if (path[len - 1] == '/') return err_set(err, "%s: names a folder, not an output file", path);
     if (output_guard_check(path, err)) return -1;
+    if (not_a_file_to_replace(path, err)) return -1;
     memcpy(af->path, path, len + 1);
     for (int attempt = 0; attempt < 100; attempt++) {
         if (temp_name(path, af->tmp, sizeof af->tmp))

@@ -226,7 +226,7 @@ TEST(missing_folder_fails_cleanly)
 
 TEST(failed_rename_leaves_no_file)
 {
-    /* the target is a non-empty folder: the file is written but cannot be moved into place */
+    /* the target is a non-empty folder: refused before the file is written */
     char target[1024], inner[1100];
     snprintf(target, sizeof target, "%s", work_path("occupied"));
     CHECK_INT(mkdir(target, 0755), 0);
@@ -237,7 +237,7 @@ TEST(failed_rename_leaves_no_file)
     exr_frame f = {.width = W, .height = H, .depth = depth};
     err_buf err = {{0}};
     CHECK_INT(exr_write(target, &f, &err), -1);
-    CHECK_STR_CONTAINS(err.msg, "cannot move the finished file into place");
+    CHECK_STR_CONTAINS(err.msg, "occupied: is a folder");
     CHECK_INT(count_entries(work_path("")), before);
     rmdir(inner);
     rmdir(target);

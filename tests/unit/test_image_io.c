@@ -149,7 +149,7 @@ TEST(failed_writes_leave_nothing)
     CHECK_STR_CONTAINS(err.msg, unknown);
     CHECK_INT(access(unknown, F_OK), -1);
 
-    /* the target is a non-empty folder: the rename fails after the file was written */
+    /* the target is a non-empty folder: refused before anything is written */
     const char *folder = work_path("occupied.png");
     CHECK_INT(mkdir(folder, 0755), 0);
     char inner[1100];
@@ -157,7 +157,7 @@ TEST(failed_writes_leave_nothing)
     CHECK_INT(mkdir(inner, 0755), 0);
     err_clear(&err);
     CHECK_INT(image_write_u8(folder, 2, 2, 3, px, &err), -1);
-    CHECK_STR_CONTAINS(err.msg, "cannot move the finished file into place");
+    CHECK_STR_CONTAINS(err.msg, "occupied.png: is a folder");
     CHECK_INT(count_other_entries("occupied.png", NULL), 0);
     rmdir(inner);
     rmdir(folder);

@@ -430,6 +430,44 @@ TEST(damaged_png_chunk)
     CHECK(p.rgb == NULL);
 }
 
+/* A JPEG whose frame states 65285 x 59651 pixels is refused by the memory budget before it is
+ * opened: OpenImageIO's reader starts libjpeg's decompression on opening, and libjpeg allocated
+ * 11 GB for such a frame in a file of 753 bytes. */
+TEST(huge_jpeg_frame)
+{
+    const uint8_t rgb[3 * 8 * 8] = {0};
+    char path[1200];
+    snprintf(path, sizeof path, "%s/huge.jpg", work_dir());
+    err_buf err = {{0}};
+    CHECK_INT(image_write_u8(path, 8, 8, 3, rgb, &err), 0);
+    unsigned char bytes[8192];
+    FILE *f = fopen(path, "rb");
+    size_t n = f ? fread(bytes, 1, sizeof bytes, f) : 0;
+    if (f) fclose(f);
+    CHECK(n > 20 && n < sizeof bytes);
+    size_t sof = 0;
+    for (size_t i = 2; i + 9 < n && !sof; i++)
+        if (bytes[i] == 0xFF && (bytes[i + 1] == 0xC0 || bytes[i + 1] == 0xC2)) sof = i;
+    CHECK(sof > 0);
+    if (!sof) return;
+    bytes[sof + 5] = 0xE9, bytes[sof + 6] = 0x03; /* height 59651 */
+    bytes[sof + 7] = 0xFF, bytes[sof + 8] = 0x05; /* width 65285 */
+    f = fopen(path, "wb");
+    CHECK(f != NULL);
+    if (!f) return;
+    fwrite(bytes, 1, n, f);
+    fclose(f);
+    photo p = {0};
+    err_clear(&err);
+    double t0 = harness_seconds();
+    CHECK_INT(photo_read(path, &p, &err), -1);
+    CHECK(harness_seconds() - t0 < 2.0);
+    CHECK_STR_CONTAINS(err.msg, path);
+    CHECK_STR_CONTAINS(err.msg, "(65285x59651, as its JPEG frame states)");
+    CHECK_INT(err.status, ERR_LIMIT);
+    CHECK(p.rgb == NULL);
+}
+
 /* A PNG that ends before its IEND chunk, whether in a chunk's header or just after a whole
  * chunk, is refused as cut short before it is decoded. */
 TEST(png_without_its_end)
@@ -459,4 +497,4 @@ TEST_LIST(TEST_CASE(cut_photographs_are_refused), TEST_CASE(exif_matches_exiftoo
           TEST_CASE(png_round_trip_linear), TEST_CASE(exif_instant), TEST_CASE(orientations),
           TEST_CASE(orientation_tag_honoured), TEST_CASE(sixteen_bit_png), TEST_CASE(memory_budget),
           TEST_CASE(errors_name_the_file), TEST_CASE(damaged_png_chunk),
-          TEST_CASE(png_without_its_end))
+          TEST_CASE(png_without_its_end), TEST_CASE(huge_jpeg_frame))

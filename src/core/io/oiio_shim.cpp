@@ -8,6 +8,7 @@ extern "C" {
 #include "util/chunk_check.h"
 #include "util/err.h"
 #include "util/file_check.h"
+#include "util/jpeg_frame.h"
 #include "util/memory_budget.h"
 }
 #include "io/image_io.h"
@@ -80,6 +81,21 @@ std::string pixels_damage(OIIO::ImageInput *in, float *dst)
     return eol == std::string::npos ? why : why.substr(0, eol);
 }
 
+// The memory a JPEG's decoding would take, from the frame its markers state, checked against
+// the budget before OpenImageIO opens it (libjpeg allocates for the whole frame on opening):
+// `need_per_sample` bytes for each sample and `extra_per_pixel` for each pixel, as the caller
+// will hold them. `what` names the read in the refusal.
+int jpeg_budget(const char *path, const char *what, uint64_t need_per_sample, uint64_t extra_per_pixel,
+                err_buf *err)
+{
+    uint32_t w = 0, h = 0, c = 0;
+    if (!jpeg_frame(path, &w, &h, &c)) return 0;
+    const uint64_t need = static_cast<uint64_t>(w) * h * (c * need_per_sample + extra_per_pixel);
+    const std::string label = std::string(what) + " '" + path + "' (" + std::to_string(w) + "x" +
+                              std::to_string(h) + ", as its JPEG frame states)";
+    return memory_check(need, label.c_str(), err) ? err_default(err, ERR_LIMIT) : 0;
+}
+
 // Reads the file `path`, or the bytes behind `proxy` when it is not NULL (OpenImageIO then
 // takes the format from the extension of `open_name`); `path` names the image in messages.
 int read_into(const char *path, const char *open_name, OIIO::Filesystem::IOProxy *proxy,
@@ -91,6 +107,8 @@ int read_into(const char *path, const char *open_name, OIIO::Filesystem::IOProxy
         if (file_check_regular(path, label.c_str(), err)) return -1;
         if (access(path, R_OK) != 0) // OpenImageIO would only say it could not open the file
             return err_set(err, "%s: cannot read the image: %s", path, std::strerror(errno));
+        if (jpeg_budget(path, "reading the image", sizeof(float), IMAGE_READ_COPY_BYTES_PER_PIXEL, err))
+            return -1;
     }
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
@@ -348,6 +366,7 @@ int photo_read_into(const char *path, image_f32 *img, photo *meta, err_buf *err)
         return err_fail(err, ERR_INPUT, "%s: cannot read the photograph (a JPEG, PNG or TIFF "
                         "file is expected): its first bytes are none of theirs", path);
     if (png_check(path, err)) return -1; /* libpng allocates what a damaged chunk states */
+    if (jpeg_budget(path, "reading the photograph", sizeof(float), 3 * sizeof(float), err)) return -1;
     auto in = OIIO::ImageInput::create(format);
     OIIO::ImageSpec opened;
     if (!in || !in->open(path, opened)) {

@@ -400,23 +400,33 @@ TEST(cut_photographs_are_refused)
     photo_free(&p);
 }
 
+/* Writes a black w x h RGB image to the work folder as `name` (its format from the extension),
+ * its path into path (size 1200) and its bytes into bytes (at most cap); returns their count, 0
+ * when the image could not be written or read back. */
+static size_t small_image_bytes(const char *name, int w, int h, char *path, unsigned char *bytes, size_t cap)
+{
+    uint8_t rgb[3 * 8 * 8] = {0};
+    snprintf(path, 1200, "%s/%s", work_dir(), name);
+    err_buf err = {{0}};
+    if (w * h > 64 || image_write_u8(path, (uint32_t)w, (uint32_t)h, 3, rgb, &err)) return 0;
+    FILE *f = fopen(path, "rb");
+    size_t n = f ? fread(bytes, 1, cap, f) : 0;
+    if (f) fclose(f);
+    return n;
+}
+
 /* A PNG chunk that states more data than the file holds (libpng allocated all of it, up to
  * 2 GiB, before finding the file's end) is refused before the file is decoded. */
 TEST(damaged_png_chunk)
 {
-    const uint8_t rgb[3 * 2 * 3] = {0};
     char path[1200];
-    snprintf(path, sizeof path, "%s/damaged.png", work_dir());
-    err_buf err = {{0}};
-    CHECK_INT(image_write_u8(path, 3, 2, 3, rgb, &err), 0);
     unsigned char bytes[4096];
-    FILE *f = fopen(path, "rb");
-    size_t n = f ? fread(bytes, 1, sizeof bytes, f) : 0;
-    if (f) fclose(f);
+    size_t n = small_image_bytes("damaged.png", 3, 2, path, bytes, sizeof bytes);
+    err_buf err = {{0}};
     CHECK(n > 33 && n < sizeof bytes - 32);
     /* after the signature (8) and IHDR (25): a tEXt chunk stating 0x70000000 bytes */
     static const unsigned char text[] = {0x70, 0, 0, 0, 't', 'E', 'X', 't', 'S', 'o', 'f', 't', 0, 'x'};
-    f = fopen(path, "wb");
+    FILE *f = fopen(path, "wb");
     CHECK(f != NULL);
     if (!f) return;
     fwrite(bytes, 1, 33, f), fwrite(text, 1, sizeof text, f), fwrite(bytes + 33, 1, n - 33, f);
@@ -435,15 +445,10 @@ TEST(damaged_png_chunk)
  * 11 GB for such a frame in a file of 753 bytes. */
 TEST(huge_jpeg_frame)
 {
-    const uint8_t rgb[3 * 8 * 8] = {0};
     char path[1200];
-    snprintf(path, sizeof path, "%s/huge.jpg", work_dir());
-    err_buf err = {{0}};
-    CHECK_INT(image_write_u8(path, 8, 8, 3, rgb, &err), 0);
     unsigned char bytes[8192];
-    FILE *f = fopen(path, "rb");
-    size_t n = f ? fread(bytes, 1, sizeof bytes, f) : 0;
-    if (f) fclose(f);
+    size_t n = small_image_bytes("huge.jpg", 8, 8, path, bytes, sizeof bytes);
+    err_buf err = {{0}};
     CHECK(n > 20 && n < sizeof bytes);
     size_t sof = 0;
     for (size_t i = 2; i + 9 < n && !sof; i++)
@@ -452,7 +457,7 @@ TEST(huge_jpeg_frame)
     if (!sof) return;
     bytes[sof + 5] = 0xE9, bytes[sof + 6] = 0x03; /* height 59651 */
     bytes[sof + 7] = 0xFF, bytes[sof + 8] = 0x05; /* width 65285 */
-    f = fopen(path, "wb");
+    FILE *f = fopen(path, "wb");
     CHECK(f != NULL);
     if (!f) return;
     fwrite(bytes, 1, n, f);

@@ -13,6 +13,7 @@
 
 #include "plugin_host.h"
 #include "sylva/tree_stats.h"
+#include "leaf_affine.h"
 #include "wp_age.h"
 #include "wp_config.h"
 #include "wp_leaf_form.h"
@@ -33,6 +34,21 @@ typedef struct wp_state {
     plugin_last_stats last; /* the figures of the last model generate() built */
 } wp_state;
 
+/* What the card's texture shows: the texture the leaf material gets, drawn here once more. */
+static int card_texture_fit(const wp_config *c, wp_leaf_texture_fit *fit, plugin_err *err)
+{
+    const uint32_t n = WP_LEAF_TEXTURE_SIZE;
+    uint8_t *rgba = malloc((size_t)n * n * 4); /* owned here */
+    if (!rgba) return plugin_fail(err, SYLVA_ERR_NOMEM, "out of memory for the leaf texture");
+    char why[256];
+    int rc = leaf_affine_render(&c->leaf_maps, n, WP_LEAF_TEXTURE_SEED, rgba, why, sizeof why)
+                 ? plugin_fail(err, SYLVA_ERR_NOMEM, "the leaf texture: %s", why)
+                 : SYLVA_OK;
+    if (!rc) wp_leaf_texture_fit_of(rgba, n, fit); /* an empty texture leaves fit empty: the card refuses it */
+    free(rgba);
+    return rc;
+}
+
 /* The leaf form of the species: its own shape or a card over it. */
 static int make_leaf(wp_state *st, plugin_err *err)
 {
@@ -45,7 +61,11 @@ static int make_leaf(wp_state *st, plugin_err *err)
         const sylva_params *where = c->model ? c->model : c->where;
         return plugin_fail_key(err, rc, where, c->model ? "leaf_shape" : "file", "%s", why.msg);
     }
-    rc = c->leaf == WP_LEAF_OWN ? wp_leaf_form_own(&shape, &st->leaf, &why) : wp_leaf_form_card(&shape, &st->leaf, &why);
+    wp_leaf_texture_fit fit = {0};
+    if (c->leaf == WP_LEAF_OWN)
+        rc = wp_leaf_form_own(&shape, &st->leaf, &why);
+    else if (!(rc = card_texture_fit(c, &fit, &why)))
+        rc = wp_leaf_form_card(&shape, &fit, &st->leaf, &why);
     wp_leaf_shape_release(&shape);
     return rc ? plugin_fail_key(err, rc, c->where, rc == SYLVA_ERR_PARAM ? "leaf" : NULL, "%s", why.msg) : SYLVA_OK;
 }

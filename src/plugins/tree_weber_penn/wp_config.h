@@ -28,7 +28,7 @@
 
 typedef enum wp_leaf_kind {
     WP_LEAF_OWN = 0, /* the species' LeafShape mesh (wp_leaf_shape.h) */
-    WP_LEAF_CARD = 1 /* a card over the leaf's extent with the affine-map texture */
+    WP_LEAF_CARD = 1 /* a card with the leaf's area and the affine-map texture (wp_leaf_form.h) */
 } wp_leaf_kind;
 
 typedef struct wp_config {

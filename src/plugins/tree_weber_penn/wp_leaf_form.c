@@ -2,6 +2,7 @@
 #include "wp_leaf_form.h"
 
 #include <float.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -53,7 +54,26 @@ int wp_leaf_form_own(const wp_leaf_shape *shape, wp_leaf_form *out, plugin_err *
     return SYLVA_OK;
 }
 
-int wp_leaf_form_card(const wp_leaf_shape *shape, wp_leaf_form *out, plugin_err *err)
+int wp_leaf_texture_fit_of(const uint8_t *rgba, uint32_t size, wp_leaf_texture_fit *out)
+{
+    uint32_t c0 = size, c1 = 0, r0 = size, r1 = 0;
+    size_t opaque = 0;
+    for (uint32_t r = 0; r < size; r++)
+        for (uint32_t c = 0; c < size; c++) {
+            if (rgba[4 * ((size_t)r * size + c) + 3] < 128) continue;
+            opaque++;
+            c0 = c < c0 ? c : c0, c1 = c > c1 ? c : c1, r0 = r < r0 ? r : r0, r1 = r > r1 ? r : r1;
+        }
+    memset(out, 0, sizeof *out);
+    if (!opaque) return -1;
+    out->u0 = (double)c0 / size, out->u1 = (double)(c1 + 1) / size;
+    out->v0 = 1 - (double)(r1 + 1) / size, out->v1 = 1 - (double)r0 / size;
+    out->fill = (double)opaque / ((double)(c1 - c0 + 1) * (r1 - r0 + 1));
+    return 0;
+}
+
+int wp_leaf_form_card(const wp_leaf_shape *shape, const wp_leaf_texture_fit *fit, wp_leaf_form *out,
+                      plugin_err *err)
 {
     double x0 = DBL_MAX, x1 = -DBL_MAX, z0 = DBL_MAX, z1 = -DBL_MAX;
     for (size_t i = 0; i < shape->n_vertices; i++) {
@@ -62,13 +82,19 @@ int wp_leaf_form_card(const wp_leaf_shape *shape, wp_leaf_form *out, plugin_err 
         z0 = p[2] < z0 ? p[2] : z0, z1 = p[2] > z1 ? p[2] : z1;
     }
     memset(out, 0, sizeof *out);
-    if (!(x1 > x0) || !(z1 > z0))
+    double area = wp_leaf_shape_face_area(shape);
+    if (!(x1 > x0) || !(z1 > z0) || !(area > 0))
         return plugin_fail(err, SYLVA_ERR_PARAM, "the species' leaf shape has no extent across or along the blade, "
                            "so a leaf card has no size; give leaf: own");
+    if (!(fit->fill > 0) || !(fit->u1 > fit->u0) || !(fit->v1 > fit->v0))
+        return plugin_fail(err, SYLVA_ERR_PARAM, "the leaf texture shows no leaf, so a card would draw nothing; give "
+                           "other leaf maps or leaf: own");
     int rc = form_alloc(out, 4, 2, err);
     if (rc) return rc;
-    const double corner[4][3] = {{x0, 0, z0}, {x1, 0, z0}, {x1, 0, z1}, {x0, 0, z1}};
-    const double uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    double grow = sqrt(area / (fit->fill * (x1 - x0) * (z1 - z0)));
+    double mid = 0.5 * (x0 + x1), half = 0.5 * (x1 - x0) * grow, tip = z0 + (z1 - z0) * grow;
+    const double corner[4][3] = {{mid - half, 0, z0}, {mid + half, 0, z0}, {mid + half, 0, tip}, {mid - half, 0, tip}};
+    const double uv[4][2] = {{fit->u0, fit->v0}, {fit->u1, fit->v0}, {fit->u1, fit->v1}, {fit->u0, fit->v1}};
     memcpy(out->vertex, corner, sizeof corner);
     memcpy(out->uv, uv, sizeof uv);
     /* Counter-clockwise seen from +y, the blade's normal (x across, z along: x cross z = -y, so

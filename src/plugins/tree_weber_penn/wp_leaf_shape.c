@@ -153,6 +153,40 @@ int wp_leaf_shape_make(const wp_params *p, wp_leaf_shape *out, plugin_err *err)
     return 0;
 }
 
+/* Whether (x, z) lies in triangle t's shadow on the x-z plane (either winding; a degenerate one
+ * covers nothing). */
+static int covers(const wp_leaf_shape *s, size_t t, double x, double z)
+{
+    const double *a = s->vertex[s->triangle[t][0]], *b = s->vertex[s->triangle[t][1]], *c = s->vertex[s->triangle[t][2]];
+    double d1 = (b[0] - a[0]) * (z - a[2]) - (b[2] - a[2]) * (x - a[0]);
+    double d2 = (c[0] - b[0]) * (z - b[2]) - (c[2] - b[2]) * (x - b[0]);
+    double d3 = (a[0] - c[0]) * (z - c[2]) - (a[2] - c[2]) * (x - c[0]);
+    return (d1 >= 0 && d2 >= 0 && d3 >= 0 && d1 + d2 + d3 > 0) || (d1 <= 0 && d2 <= 0 && d3 <= 0 && d1 + d2 + d3 < 0);
+}
+
+double wp_leaf_shape_face_area(const wp_leaf_shape *s)
+{
+    double x0 = INFINITY, x1 = -INFINITY, z0 = INFINITY, z1 = -INFINITY;
+    for (size_t i = 0; i < s->n_vertices; i++) {
+        x0 = fmin(x0, s->vertex[i][0]), x1 = fmax(x1, s->vertex[i][0]);
+        z0 = fmin(z0, s->vertex[i][2]), z1 = fmax(z1, s->vertex[i][2]);
+    }
+    if (!(x1 > x0) || !(z1 > z0)) return 0;
+    const int n = WP_LEAF_FACE_CELLS;
+    double dx = (x1 - x0) / n, dz = (z1 - z0) / n;
+    long inside = 0;
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < n; i++) {
+            double x = x0 + (i + 0.5) * dx, z = z0 + (j + 0.5) * dz;
+            for (size_t t = 0; t < s->n_triangles; t++)
+                if (covers(s, t, x, z)) {
+                    inside++;
+                    break;
+                }
+        }
+    return inside * dx * dz;
+}
+
 void wp_leaf_shape_release(wp_leaf_shape *s)
 {
     free(s->vertex);

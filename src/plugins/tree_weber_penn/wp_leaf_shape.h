@@ -27,6 +27,13 @@ typedef struct wp_leaf_shape {
  * emptied first. Returns 0, or a negative sylva_status with err set and *out empty. */
 int wp_leaf_shape_make(const wp_params *p, wp_leaf_shape *out, plugin_err *err);
 
+/* The area the leaf shows seen face on, along its normal (y), in square metres: the cells of a
+ * WP_LEAF_FACE_CELLS x WP_LEAF_FACE_CELLS grid over its extent in x and z whose centres some
+ * triangle covers (a flat leaf's blade; a sphere's outline, not its surface). 0 for a shape
+ * without extent in x or z. */
+#define WP_LEAF_FACE_CELLS 256
+double wp_leaf_shape_face_area(const wp_leaf_shape *s);
+
 /* Frees what *s owns and empties it. */
 void wp_leaf_shape_release(wp_leaf_shape *s);
 

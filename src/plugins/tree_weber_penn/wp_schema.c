@@ -117,8 +117,8 @@ const sylva_param_spec wp_schema[WP_SCHEMA_COUNT] = {
      .help = "The Weber-Penn parameters, each replacing the file's value (without file, the species itself; "
              "a parameter not given keeps Arbaro's default)."},
     {.name = "leaf", .type = SYLVA_P_STRING, .def_str = "own",
-     .help = "own: the species' LeafShape as Arbaro draws it; or a card the size of that leaf with the "
-             "affine-map leaf texture of a preset (beech, maple, spruce, shrub, willow) or of maps "
+     .help = "own: the species' LeafShape as Arbaro draws it; or a card of that leaf's proportions "
+             "whose leaf has that leaf's area, with the affine-map leaf texture of a preset (beech, maple, spruce, shrub, willow) or of maps "
              "\"a b c d e f[ p]; ...\"."},
     {.name = "leaf_color", .type = SYLVA_P_VEC3, .flags = RANGE, .min = 0, .max = 1, .def_list = def_leaf_color,
      .def_len = 3, .help = "Linear RGB reflectance of the leaves (multiplied by a leaf texture's veins)."},

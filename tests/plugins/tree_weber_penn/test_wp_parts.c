@@ -1,13 +1,14 @@
 /* test_wp_parts.c — the parts of tree_weber_penn that do not grow a tree, on hand-built inputs:
  * the age rule (levels and Scale by age, the leaves' placement on the last level grown, age 1
- * unchanged), the variants' seeds, the leaf forms, a hand-built model's mesh (bark uv, leaves
- * at their frames, top), its figures, the model's caps against a memory budget, and a filled
- * triangle on the silhouette raster. */
+ * unchanged), the variants' seeds, the leaf forms (a card shows the leaf's area), a hand-built
+ * model's mesh (bark uv, leaves at their frames, top), its figures, the model's caps against a
+ * memory budget, and a filled triangle on the silhouette raster. */
 #include <math.h>
 #include <string.h>
 
 #include "box_count.h"
 #include "harness.h"
+#include "leaf_affine.h"
 #include "wp_age.h"
 #include "wp_leaf_form.h"
 #include "wp_limits.h"
@@ -76,37 +77,113 @@ TEST(leaf_forms)
     wp_leaf_shape s = kite();
     wp_leaf_form own, card;
     plugin_err err = {0};
+    CHECK_NEAR(wp_leaf_shape_face_area(&s), 0.04, 0.04 * 0.01); /* 0.2 x 0.4 / 2, within the grid's 1 % */
     CHECK_INT(wp_leaf_form_own(&s, &own, &err), 0);
     CHECK_INT(own.nv, 4);
     CHECK_INT(own.nt, 2);
     CHECK_NEAR(own.vertex[2][2], 0.5, 0);
     CHECK(own.normal[0][1] > 0 && own.normal[0][0] == 0 && own.normal[0][2] == 0); /* the kite faces +y */
-    CHECK_INT(wp_leaf_form_card(&s, &card, &err), 0);
+    /* A texture whose leaf fills half its box, as the kite fills half its extent: the card is the
+     * extent, and its uv the texture's box. */
+    wp_leaf_texture_fit half = {.u0 = 0.25, .u1 = 0.75, .v0 = 0, .v1 = 0.9, .fill = 0.5};
+    CHECK_INT(wp_leaf_form_card(&s, &half, &card, &err), 0);
     CHECK_INT(card.nv, 4);
     CHECK_INT(card.nt, 2);
     double lo[3] = {1, 1, 1}, hi[3] = {-1, -1, -1};
     for (uint32_t i = 0; i < card.nv; i++)
         for (int k = 0; k < 3; k++) lo[k] = fmin(lo[k], card.vertex[i][k]), hi[k] = fmax(hi[k], card.vertex[i][k]);
-    CHECK_NEAR(lo[0], -0.1, 0);
-    CHECK_NEAR(hi[0], 0.1, 0);
+    CHECK_NEAR(lo[0], -0.1, 1e-3);
+    CHECK_NEAR(hi[0], 0.1, 1e-3);
     CHECK_NEAR(lo[2], 0.1, 0);
-    CHECK_NEAR(hi[2], 0.5, 0);
+    CHECK_NEAR(hi[2], 0.5, 2e-3);
     for (uint32_t t = 0; t < card.nt; t++) { /* each faces +y, the blade's normal */
         const double *a = card.vertex[card.tri[t][0]], *b = card.vertex[card.tri[t][1]], *c = card.vertex[card.tri[t][2]];
         double e[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, f[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
         CHECK(e[2] * f[0] - e[0] * f[2] > 0);
     }
-    for (uint32_t i = 0; i < card.nv; i++) { /* stalk at v = 0, tip at v = 1, u across; facing +y */
-        CHECK_NEAR(card.uv[i][1], (card.vertex[i][2] - 0.1) / 0.4, 1e-12);
+    for (uint32_t i = 0; i < card.nv; i++) { /* stalk at the box's v0, tip at its v1, u across; facing +y */
+        CHECK_NEAR(card.uv[i][1], 0.9 * (card.vertex[i][2] - 0.1) / (hi[2] - 0.1), 1e-12);
+        CHECK_NEAR(card.uv[i][0], 0.25 + 0.5 * (card.vertex[i][0] - lo[0]) / (hi[0] - lo[0]), 1e-12);
         CHECK(card.normal[i][1] > 0 && card.normal[i][0] == 0 && card.normal[i][2] == 0);
     }
+    wp_leaf_form_release(&card);
+    /* A texture whose leaf fills an eighth of its box (a needle twig): the card grows twice as
+     * long and wide from the blade's base, so it shows the kite's area. */
+    wp_leaf_texture_fit twig = {.u0 = 0, .u1 = 1, .v0 = 0, .v1 = 1, .fill = 0.125};
+    CHECK_INT(wp_leaf_form_card(&s, &twig, &card, &err), 0);
+    for (int k = 0; k < 3; k++) lo[k] = 1, hi[k] = -1;
+    for (uint32_t i = 0; i < card.nv; i++)
+        for (int k = 0; k < 3; k++) lo[k] = fmin(lo[k], card.vertex[i][k]), hi[k] = fmax(hi[k], card.vertex[i][k]);
+    CHECK_NEAR(hi[0] - lo[0], 0.4, 2e-3);
+    CHECK_NEAR(lo[2], 0.1, 0);
+    CHECK_NEAR(hi[2], 0.9, 4e-3);
+    CHECK_NEAR(0.125 * (hi[0] - lo[0]) * (hi[2] - lo[2]), 0.04, 0.04 * 0.01);
     wp_leaf_form_release(&own);
     wp_leaf_form_release(&card);
+    wp_leaf_texture_fit none = {0};
+    CHECK_INT(wp_leaf_form_card(&s, &none, &card, &err), SYLVA_ERR_PARAM);
+    CHECK_STR_CONTAINS(err.msg, "shows no leaf");
     double flat[3][3] = {{0, 0, 0}, {0, 0, 1}, {0, 0.5, 0.5}};
     uint32_t one[1][3] = {{0, 1, 2}};
     wp_leaf_shape needle = {.vertex = flat, .uv = kite_uv, .n_vertices = 3, .triangle = one, .n_triangles = 1};
-    CHECK_INT(wp_leaf_form_card(&needle, &card, &err), SYLVA_ERR_PARAM);
+    CHECK_INT(wp_leaf_form_card(&needle, &half, &card, &err), SYLVA_ERR_PARAM);
     CHECK_STR_CONTAINS(err.msg, "give leaf: own");
+}
+
+/* The opaque area of the card's texture, found by looking up the texel under each point of a
+ * fine grid over the card (the card's uv is bilinear over its rectangle). */
+static double card_leaf_area(const wp_leaf_form *card, const uint8_t *rgba, uint32_t size)
+{
+    const double *p0 = card->vertex[0], *p2 = card->vertex[2];
+    const double *t0 = card->uv[0], *t2 = card->uv[2];
+    const int n = 512;
+    long opaque = 0;
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < n; i++) {
+            double u = t0[0] + (t2[0] - t0[0]) * (i + 0.5) / n, v = t0[1] + (t2[1] - t0[1]) * (j + 0.5) / n;
+            int col = (int)(u * size), row = (int)((1 - v) * size);
+            col = col < 0 ? 0 : col >= (int)size ? (int)size - 1 : col;
+            row = row < 0 ? 0 : row >= (int)size ? (int)size - 1 : row;
+            opaque += rgba[4 * ((size_t)row * size + col) + 3] >= 128;
+        }
+    return opaque * fabs(p2[0] - p0[0]) * fabs(p2[2] - p0[2]) / ((double)n * n);
+}
+
+/* Every preset texture on a card over Arbaro's plain leaf ("0", as the library's oak and tamarack
+ * draw it) and over a two-triangle disc (the willow's): the leaf the card shows has the shape's
+ * area within 3 % (the texels at the leaf's edge), where a card over the extent alone showed 10 %
+ * (willow) and 11 % (spruce) to 56 % (maple) of the plain leaf's. */
+TEST(cards_show_the_leaf_area)
+{
+    static const char *shapes[] = {"0", "disc2"};
+    for (int k = 0; k < 2; k++) {
+        wp_params p;
+        wp_params_defaults(&p);
+        p.leaf_scale = 0.15, p.leaf_scale_x = 0.35;
+        snprintf(p.leaf_shape, sizeof p.leaf_shape, "%s", shapes[k]);
+        wp_leaf_shape s;
+        plugin_err err = {0};
+        CHECK_INT(wp_leaf_shape_make(&p, &s, &err), 0);
+        double area = wp_leaf_shape_face_area(&s);
+        for (int preset = 0; preset < LEAF_AFFINE_PRESET_COUNT; preset++) {
+            leaf_affine_maps maps;
+            leaf_affine_preset_maps((leaf_affine_preset)preset, &maps);
+            uint8_t rgba[128 * 128 * 4];
+            char why[256];
+            CHECK_INT(leaf_affine_render(&maps, 128, 1, rgba, why, sizeof why), 0);
+            wp_leaf_texture_fit fit;
+            CHECK_INT(wp_leaf_texture_fit_of(rgba, 128, &fit), 0);
+            wp_leaf_form card;
+            CHECK_INT(wp_leaf_form_card(&s, &fit, &card, &err), 0);
+            double shown = card_leaf_area(&card, rgba, 128);
+            printf("%-6s on %-5s: fill %.3f of its box, card %.3f x %.3f m, leaf %.5f m2 for the shape's %.5f\n",
+                   leaf_affine_preset_name((leaf_affine_preset)preset), shapes[k], fit.fill,
+                   card.vertex[2][0] - card.vertex[0][0], card.vertex[2][2] - card.vertex[0][2], shown, area);
+            CHECK_NEAR(shown, area, 0.03 * area);
+            wp_leaf_form_release(&card);
+        }
+        wp_leaf_shape_release(&s);
+    }
 }
 
 /* A trunk: two rings of 4 vertices round the z axis (radius 1, at z = 0 and 2, v = 0 and 2 m),
@@ -262,6 +339,6 @@ TEST(caps_from_the_budget)
     CHECK_INT(c.triangles, WP_MIN_TRIANGLES);
 }
 
-TEST_LIST(TEST_CASE(levels_and_scale_by_age), TEST_CASE(variant_seeds), TEST_CASE(leaf_forms),
+TEST_LIST(TEST_CASE(levels_and_scale_by_age), TEST_CASE(variant_seeds), TEST_CASE(leaf_forms), TEST_CASE(cards_show_the_leaf_area),
           TEST_CASE(mesh_of_a_hand_built_tree), TEST_CASE(filled_triangles_on_the_silhouette),
           TEST_CASE(caps_from_the_budget))

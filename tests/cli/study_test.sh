@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# study_test.sh SYLVA SCENE POINTS — `sylva study` end to end on tests/scenes/study/hill_study.yaml:
+# study_test.sh SYLVA SCENE POINTS LOD_SCENE — `sylva study` end to end on
+# tests/scenes/study/hill_study.yaml:
 #   identical   each viewpoint's proposed view is byte for byte `sylva render --viewpoint NAME
 #               --size WxH` (PNG and EXR), the ground cover near each camera included;
 #   built_once  the scene is built once for the three viewpoints: the terrain plugin's
@@ -8,9 +9,12 @@
 #               alone, every other file left untouched (by their times), and a study with
 #               nothing left builds nothing;
 #   settings    --only with --force renders one viewpoint anew; another spp renders everything;
-#   points      a points file (POINTS, longitude and latitude) adds its viewpoints.
+#   points      a points file (POINTS, longitude and latitude) adds its viewpoints;
+#   ground      on LOD_SCENE, whose ground is refined in levels of detail, the study's view is
+#               `render --ground development`'s (its ground refined around the development),
+#               not that of a render refining it around the camera.
 set -uo pipefail
-sylva=$1 scene=$2 points=$3
+sylva=$1 scene=$2 points=$3 lod=$4
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 fails=0
@@ -71,5 +75,14 @@ got=$(cd "$out/p" && ls | tr '\n' ' ')
 [ "$got" = "gate south " ] || fail "--points --viewpoints gate,south wrote '$got'"
 cmp -s "$out/p/south/proposed_single.png" "$out/r_south.png" || fail "south differs beside the points"
 
-[ $fails -eq 0 ] && echo "study: identical to render, built once, resumed, settings and points as expected"
+# ground: levels of detail around the development
+"$sylva" study "$lod" -o "$out/lod" --products proposed -q >/dev/null || fail "study of $lod exited with $?"
+"$sylva" render "$lod" --viewpoint south --size 72x48 --ground development -o "$out/lod_dev.png" -q >/dev/null &&
+  "$sylva" render "$lod" --viewpoint south --size 72x48 -o "$out/lod_camera.png" -q >/dev/null || fail "LOD renders failed"
+cmp -s "$out/lod/south/proposed_single.png" "$out/lod_dev.png" && cmp -s "$out/lod/south/proposed_single.exr" "$out/lod_dev.exr" ||
+  fail "the study's view of $lod differs from render --ground development's"
+cmp -s "$out/lod/south/proposed_single.png" "$out/lod_camera.png" &&
+  fail "the study's view of $lod is the render's refined around the camera"
+
+[ $fails -eq 0 ] && echo "study: identical to render, built once, resumed, settings, points and ground as expected"
 exit $((fails > 0))

@@ -42,6 +42,13 @@ TEST(frame_sizes)
     study_frame_size(STUDY_CYLINDRICAL_90, &z, px);
     CHECK_INT(px[0], 4961);
     CHECK_INT(px[1], 1573);
+    z.size[0] = 480; /* the width alone: each frame's own height */
+    study_frame_size(STUDY_SINGLE, &z, px);
+    CHECK_INT(px[0], 480);
+    CHECK_INT(px[1], 320);
+    study_frame_size(STUDY_CYLINDRICAL_90, &z, px);
+    CHECK_INT(px[0], 480);
+    CHECK_INT(px[1], 152);
     z.size[0] = 640, z.size[1] = 200; /* given: every frame that size */
     study_frame_size(STUDY_PLANAR_53, &z, px);
     CHECK_INT(px[0], 640);

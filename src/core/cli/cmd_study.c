@@ -32,12 +32,15 @@ static const char study_epilogue[] =
     "exit status: 0 done, 1 usage, 2 bad scene, viewpoint or plugin failure, 3 output not\n"
     "written, 4 out of memory or internal error\n";
 
-/* The study's last lines: what was written and kept, and where the time went. */
-static void report(const study_report *r)
+/* The study's last lines: what was written and kept, and where the time went (rank 0's share
+ * of an MPI job's). */
+static void report(const study_report *r, int ranks)
 {
-    fprintf(stderr, "study: %u product%s written, %u up to date; %u scene build%s, %u frame%s rendered; total %.2fs "
-            "(scene %.2fs)\n", r->rendered, r->rendered == 1 ? "" : "s", r->kept, r->builds, r->builds == 1 ? "" : "s",
-            r->renders, r->renders == 1 ? "" : "s", r->seconds, r->build_seconds);
+    char share[48] = "";
+    if (ranks > 1) snprintf(share, sizeof share, " (rank 0 of %d)", ranks);
+    fprintf(stderr, "study%s: %u product%s written, %u up to date; %u scene build%s, %u frame%s rendered; total "
+            "%.2fs (scene %.2fs)\n", share, r->rendered, r->rendered == 1 ? "" : "s", r->kept, r->builds,
+            r->builds == 1 ? "" : "s", r->renders, r->renders == 1 ? "" : "s", r->seconds, r->build_seconds);
     if (r->renders) phase_times_print(&r->times, stderr);
 }
 
@@ -45,6 +48,7 @@ static int study_main(cli_mpi *m, int argc, char **argv)
 {
     const char *scene_path = NULL, *season = NULL, *points = NULL, *points_layer = NULL;
     study_options o = {0};
+    uint32_t width = 0;
     const cli_option options[] = {
         {.names = "-o, --output", .type = CLI_PATH, .value = "DIR", .target = &o.dir, .flags = CLI_REQUIRED,
          .help = "folder for the study (created when missing): a folder per viewpoint"},
@@ -63,6 +67,8 @@ static int study_main(cli_mpi *m, int argc, char **argv)
                      "single)"),
         CLI_OPT_SIZE("--size", o.size[0], o.size[1], "every frame at WxH pixels (overrides study: size and "
                      "print_width)"),
+        CLI_OPT_WHOLE("--width", "N", width, 1, 16384, "frames N pixels wide, each as high as its page (single 3:2, "
+                      "planar_53 and cylindrical_90 820:260)"),
         CLI_OPT_NUMBER("--print-width", "MM", "millimetres", o.print_width_mm, 0, 10000, CLI_OPEN_LOW,
                        "frames print_width / 25.4 * dpi pixels wide, each as high as its page"),
         CLI_OPT_NUMBER("--dpi", "N", "pixels per inch", o.dpi, 0, 10000, CLI_OPEN_LOW, "pixels per inch of the "
@@ -79,6 +85,11 @@ static int study_main(cli_mpi *m, int argc, char **argv)
                                    cli_operand_scene, &scene_path};
     int parsed = cli_options_parse(&spec, argc, argv);
     if (parsed) return cli_options_status(parsed);
+    if (width && o.size[0]) {
+        fprintf(stderr, "sylva study: give --size or --width, not both\n");
+        return EXIT_USAGE;
+    }
+    if (width) o.size[0] = width, o.size[1] = 0;
     if (!o.build.threads) o.build.threads = m->threads;
     if (m->rank) o.build.quiet = 1;
 
@@ -93,7 +104,7 @@ static int study_main(cli_mpi *m, int argc, char **argv)
     if (!rc && points && scene_file_read_points(cs.sf, points, points_layer, &err)) rc = cli_fail(NULL, &err, ERR_INPUT);
     study_report rep;
     if (!rc && study_run(cs.sf, cs.reg, &o, &parts.parts, &rep, &err)) rc = cli_parts_fail(&parts, &err);
-    if (!rc && !o.build.quiet) report(&rep);
+    if (!rc && !o.build.quiet) report(&rep, m->ranks);
     if (!rc && !m->rank) printf("%s\n", o.dir);
     cli_scene_close(&cs);
     return rc;

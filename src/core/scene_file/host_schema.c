@@ -431,8 +431,8 @@ static const sylva_param_spec study_params[] = {
              "names separated by spaces or commas."},
     {.name = "size", .type = SYLVA_P_LIST, .flags = MIN | MAX, .min = 0, .max = HOST_IMAGE_MAX_SIZE, .min_len = 2,
      .max_len = 2, .def_list = no_size, .def_len = 2, .unit = "px",
-     .help = "[width, height] of every frame in pixels (default: a width from print_width and dpi, else the "
-             "image's width, and each frame's own height for it)."},
+     .help = "[width, height] of every frame in pixels, or [width, 0] for each frame's own height (default: a "
+             "width from print_width and dpi, else the image's width, and each frame's own height for it)."},
     {.name = "print_width", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = 0, .max = 10000, .unit = "mm",
      .help = "Width of the printed frame: the frame is print_width / 25.4 * dpi pixels wide (0: no print "
              "size; A3 landscape is 420)."},

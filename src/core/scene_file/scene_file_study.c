@@ -116,10 +116,10 @@ static int read_size(loader *L, const sylva_params *p)
     st->print_width_mm = print->r;
     st->dpi = sylva_param_real(p, "dpi");
     if (size->is_set && ((double)st->size[0] != size->list[0] || (double)st->size[1] != size->list[1] ||
-                         !st->size[0] || !st->size[1]))
+                         !st->size[0]))
         return sf_located(L->err, L->file, size->line, size->column,
-                          "'study.size' is [width, height] in whole pixels from 1 to %d, got [%g, %g]",
-                          HOST_IMAGE_MAX_SIZE, size->list[0], size->list[1]);
+                          "'study.size' is [width, height] in whole pixels from 1 to %d, or [width, 0] for each "
+                          "frame's own height, got [%g, %g]", HOST_IMAGE_MAX_SIZE, size->list[0], size->list[1]);
     if (size->is_set && print->is_set && print->r > 0)
         return sf_located(L->err, L->file, print->line, print->column,
                           "'study' takes size (pixels) or print_width (millimetres at dpi), not both");

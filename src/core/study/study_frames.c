@@ -22,7 +22,8 @@ void study_frame_size(int f, const study_sizing *z, uint32_t out[2])
         out[0] = z->size[0], out[1] = z->size[1];
         return;
     }
-    double w = z->print_width_mm > 0 ? round(z->print_width_mm / 25.4 * z->dpi) : z->image_width;
+    double w = z->size[0] ? z->size[0] : z->print_width_mm > 0 ? round(z->print_width_mm / 25.4 * z->dpi)
+                                                               : z->image_width;
     if (w < 1) w = 1;
     double h = round(w * study_frame_of(f)->aspect);
     out[0] = (uint32_t)w, out[1] = h < 1 ? 1 : (uint32_t)h;

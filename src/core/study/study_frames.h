@@ -7,10 +7,10 @@
  *   cylindrical_90  a cylindrical panorama 90 degrees across, on the same 820 x 260 mm page
  *
  * A frame keeps a viewpoint's place, direction, up and roll and replaces its lens. Its size: the
- * study's [width, height] when given (every frame then that size, its vertical field following
- * from it); else a width of print_width / 25.4 * dpi pixels when a print width is given, else
- * the scene's image width, and the height that keeps the frame's page (width times its aspect,
- * rounded). */
+ * study's [width, height] when both are given (every frame then that size, its vertical field
+ * following from it); else a width of the study's width when given (a height of 0), else of
+ * print_width / 25.4 * dpi pixels when a print width is given, else the scene's image width, and
+ * the height that keeps the frame's page (width times its aspect, rounded). */
 #ifndef SYLVA_STUDY_FRAMES_H
 #define SYLVA_STUDY_FRAMES_H
 
@@ -31,7 +31,8 @@ const study_frame_def *study_frame_of(int f);
 
 /* How a study's frames are sized (study_settings, with the command line's overrides). */
 typedef struct study_sizing {
-    uint32_t size[2];        /* [width, height] of every frame; 0, 0: not given */
+    uint32_t size[2];        /* [width, height] of every frame; [width, 0]: the width alone; 0, 0:
+                                not given */
     double print_width_mm;   /* 0: not given */
     double dpi;
     uint32_t image_width;    /* the scene's image width */

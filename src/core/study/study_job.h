@@ -33,6 +33,7 @@ typedef struct study_job {
     uint32_t size[2];                /* pixels */
     camera_settings camera;          /* the viewpoint's, with the frame's lens */
     unsigned todo;                   /* the products to render: bits 1u << study_product */
+    int part;                        /* the part of the run that renders it (util/run_parts.h) */
     char record[STUDY_PRODUCTS][STUDY_MANIFEST_MAX]; /* each product's record (study_manifest.h) */
     char folder[STUDY_PATH_MAX];     /* DIR/VIEWPOINT */
 } study_job;

@@ -134,19 +134,47 @@ static void product_names(unsigned todo, char *out, size_t n)
         if (todo & 1u << k) used += (size_t)snprintf(out + used, n - used, "%s%s", used ? " " : "", host_study_products[k]);
 }
 
-static int render_jobs(scene *s, const scene_file *sf, const study_options *o, const study_plan *p,
+/* The jobs to render shared between the parts: the largest first, each to the part with the
+ * least work so far (the lower part on a tie), so that every part computes the same sharing. */
+static int share_jobs(study_plan *p, int parts, err_buf *err)
+{
+    uint64_t *load = calloc((size_t)parts, sizeof *load);
+    char *given = calloc((size_t)p->n_jobs + 1, 1);
+    if (!load || !given) {
+        free(load), free(given);
+        return err_nomem(err, "out of memory sharing the study's jobs");
+    }
+    for (;;) {
+        int64_t next = -1;
+        for (uint32_t i = 0; i < p->n_jobs; i++)
+            if (p->jobs[i].todo && !given[i] && (next < 0 || job_work(p, &p->jobs[i]) > job_work(p, &p->jobs[next])))
+                next = i;
+        if (next < 0) break;
+        int least = 0;
+        for (int k = 1; k < parts; k++)
+            if (load[k] < load[least]) least = k;
+        p->jobs[next].part = least, given[next] = 1;
+        load[least] += job_work(p, &p->jobs[next]);
+    }
+    free(load), free(given);
+    return 0;
+}
+
+static int render_jobs(scene *s, const scene_file *sf, const study_options *o, study_plan *p,
                        const run_parts *parts, study_report *rep, err_buf *err)
 {
+    if (share_jobs(p, parts->parts, err)) return -1;
     uint64_t total = 0;
-    for (uint32_t i = 0, k = 0; i < p->n_jobs; i++)
-        if (p->jobs[i].todo && k++ % (uint32_t)parts->parts == (uint32_t)parts->part) total += job_work(p, &p->jobs[i]);
+    uint32_t n_mine = 0;
+    for (uint32_t i = 0; i < p->n_jobs; i++)
+        if (p->jobs[i].todo && p->jobs[i].part == parts->part) total += job_work(p, &p->jobs[i]), n_mine++;
     progress prog;
     progress_begin(&prog, "study", total, 1); /* its time left, printed with each job's line */
     render_options ro = {.threads = o->build.threads, .quiet = 1, .spp = p->spp};
     int rc = 0;
-    for (uint32_t i = 0, k = 0, mine = 0; !rc && i < p->n_jobs; i++) {
+    for (uint32_t i = 0, mine = 0; !rc && i < p->n_jobs; i++) {
         const study_job *j = &p->jobs[i];
-        if (!j->todo || k++ % (uint32_t)parts->parts != (uint32_t)parts->part) continue;
+        if (!j->todo || j->part != parts->part) continue;
         double t0 = progress_now();
         ro.width = j->size[0], ro.height = j->size[1];
         rc = output_folder_make(o->dir, err) || output_folder_make(j->folder, err) ||
@@ -159,9 +187,8 @@ static int render_jobs(scene *s, const scene_file *sf, const study_options *o, c
         product_names(j->todo, names, sizeof names);
         progress_format_seconds(took, sizeof took, progress_now() - t0);
         progress_format_seconds(left, sizeof left, progress_eta(&prog));
-        fprintf(stderr, "study: [%u/%u] %s %s %ux%u: %s in %s; ETA %s\n", ++mine,
-                (p->n_todo + (uint32_t)parts->parts - 1 - (uint32_t)parts->part) / (uint32_t)parts->parts,
-                j->view->name, study_frame_of(j->frame)->name, j->size[0], j->size[1], names, took, left);
+        fprintf(stderr, "study: [%u/%u] %s %s %ux%u: %s in %s; ETA %s\n", ++mine, n_mine, j->view->name,
+                study_frame_of(j->frame)->name, j->size[0], j->size[1], names, took, left);
     }
     progress_end(&prog);
     return rc;

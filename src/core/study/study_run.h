@@ -11,9 +11,10 @@
  * order, with a line of progress and the study's time left after each.
  *
  * Split between the parts of a job (an MPI job, util/run_parts.h), each part builds the scene
- * and renders whole jobs: the k-th job to render goes to part k modulo parts. The parts agree
- * once after planning, so no part writes before every part has planned; each part writes its
- * own jobs' files.
+ * and renders whole jobs, shared by their samples (frame pixels times spp, twice for a pair):
+ * the largest first, each to the part with the least work so far, so every part computes the
+ * same sharing; each part renders its jobs in rank order. The parts agree once after planning,
+ * so no part writes before every part has planned; each part writes its own jobs' files.
  *
  * The scene file is borrowed; the scene built is freed before study_run returns. */
 #ifndef SYLVA_STUDY_RUN_H
@@ -33,7 +34,8 @@ typedef struct study_options {
     const char *dir;              /* the output folder (made when missing; its parent must exist) */
     study_view_names names;       /* --viewpoints, --only, --rank */
     const char *products, *frames; /* names separated by commas or spaces; NULL: the study: section's */
-    uint32_t size[2];             /* pixels of every frame; 0, 0: the section's */
+    uint32_t size[2];             /* pixels of every frame; [width, 0]: the width, each frame's own
+                                     height; 0, 0: the section's */
     double print_width_mm;        /* > 0: the frames' width in print (with dpi); 0: the section's */
     double dpi;                   /* > 0: in place of the section's */
     uint32_t spp;                 /* 0: the section's, else the image's */

@@ -13,7 +13,8 @@
 # pixels wide, each as high as its page (480: the single frame 480 x 320, the panorama
 # 480 x 152), the separate renders the single frame's size; all at SPP samples per pixel.
 # Prints each side's wall and CPU time, the time per product and per render, and the ratio of
-# the 20 separate renders' wall time to the whole study's (the goal: at least 3).
+# the 20 separate renders' wall time to the whole study's (the goal: at least 3). On a machine
+# shared with other work the CPU times are the steadier measure; the load is printed after each side.
 #
 # The separate renders refine the ground around each camera, the study around the development
 # (docs/study.md), so their images are not compared here; tests/cli/study_test.sh checks the
@@ -61,6 +62,7 @@ echo "study: 20 viewpoints x (existing, proposed, wireline) x (single, cylindric
 read -r s_wall s_user s_sys <<<"$(timed "$workdir/study.log" "$sylva" study "$scene" -o "$workdir/study" \
     --frames single,cylindrical_90 --width "$width" --spp "$spp" --threads "$threads")"
 grep -E '^study: the scene built|products written|^phases:' "$workdir/study.log" | sed 's/^/  /'
+echo "  load after the study: $(cut -d' ' -f1-3 /proc/loadavg)"
 s_cpu=$(awk -v u="$s_user" -v s="$s_sys" 'BEGIN {printf "%.1f", u + s}')
 s_products=$(grep -oE '[0-9]+ products written' "$workdir/study.log" | grep -oE '^[0-9]+')
 s_frames=$(grep -oE '[0-9]+ frames rendered' "$workdir/study.log" | grep -oE '^[0-9]+')
@@ -78,6 +80,7 @@ read -r r_wall r_cpu <<<"$(sum < "$workdir/renders.times")"
 r_wall20=$(awk -v w="$r_wall" -v k="$k" 'BEGIN {printf "%.1f", w / k * 20}')
 r_cpu20=$(awk -v c="$r_cpu" -v k="$k" 'BEGIN {printf "%.1f", c / k * 20}')
 grep -h '^phases:' "$workdir/renders/"*.log | head -1 | sed 's/^/  one render: /'
+echo "  load after the renders: $(cut -d' ' -f1-3 /proc/loadavg)"
 
 awk -v sw="$s_wall" -v sc="$s_cpu" -v sp="$s_products" -v sf="$s_frames" -v rw="$r_wall20" -v rc="$r_cpu20" -v k="$k" \
     -v mw="$r_wall" 'BEGIN {

@@ -8,7 +8,8 @@
 #   resume      a rerun keeps every product; with one output deleted it renders that product
 #               alone, every other file left untouched (by their times), and a study with
 #               nothing left builds nothing;
-#   settings    --only with --force renders one viewpoint anew; another spp renders everything;
+#   settings    --only with --force renders one viewpoint anew; another spp renders everything,
+#               and so does another season;
 #   points      a points file (POINTS, longitude and latitude) adds its viewpoints;
 #   ground      on LOD_SCENE, whose ground is refined in levels of detail, the study's view is
 #               `render --ground development`'s (its ground refined around the development),
@@ -67,6 +68,10 @@ grep -q '3 products in .*; 3 to render' "$out/only.log" && grep -q '\[1/1\] sout
   fail "--only south_east --force: $(grep 'to render' "$out/only.log")"
 "$sylva" study "$scene" -o "$out/s" --spp 3 -q >/dev/null || fail "--spp 3 exited with $?"
 grep -q '^spp 3$' "$out/s/south_west/wireline_single.manifest" || fail "--spp 3 did not render south_west anew"
+"$sylva" study "$scene" -o "$out/s" --spp 3 --season winter --only south >/dev/null 2>"$out/winter.log" ||
+  fail "--season winter exited with $?"
+grep -q '3 products in .*; 3 to render' "$out/winter.log" && grep -q '^season_day 15$' "$out/s/south/proposed_single.manifest" ||
+  fail "--season winter did not render south anew: $(grep 'to render' "$out/winter.log")"
 
 # points: two more viewpoints by longitude and latitude
 "$sylva" study "$scene" -o "$out/p" --points "$points" --viewpoints gate,south --products proposed -q >/dev/null ||

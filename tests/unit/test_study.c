@@ -1,7 +1,8 @@
 /* test_study.c — the pieces of `sylva study` (study/): the frames' sizes by the rule of
  * docs/study.md and their lenses (the single frame's field of view is the scene file's 50 mm
  * lens to the bit), the viewpoints picked and ranked, a product's record, and the scene marked
- * and rewound as each viewpoint's ground cover comes and goes (scene/scene_mark.h). The command
+ * and rewound as each viewpoint's ground cover comes and goes (scene/scene_mark.h), the scene's
+ * digest (what it leaves out and what it keeps). The command
  * end to end is tests/cli/study_test.sh. */
 #include <math.h>
 #include <stdlib.h>
@@ -25,34 +26,28 @@ static const char *views_scene =
     "objects:\n"
     "  - {name: mast, shape: box, size: [1, 1, 20], position: [0, 0, 10], development: true}\n";
 
-TEST(frame_sizes)
+/* Frame f of z is w x h pixels. */
+static void check_size(int f, const study_sizing *z, uint32_t w, uint32_t h)
 {
     uint32_t px[2];
+    study_frame_size(f, z, px);
+    CHECK_INT(px[0], w);
+    CHECK_INT(px[1], h);
+}
+
+TEST(frame_sizes)
+{
     study_sizing z = {.dpi = 300, .image_width = 72};
-    study_frame_size(STUDY_SINGLE, &z, px);
-    CHECK_INT(px[0], 72);
-    CHECK_INT(px[1], 48);
-    study_frame_size(STUDY_PLANAR_53, &z, px);
-    CHECK_INT(px[0], 72);
-    CHECK_INT(px[1], 23); /* 72 * 260 / 820 = 22.8 */
-    z.print_width_mm = 420;                      /* A3 landscape at 300 dpi */
-    study_frame_size(STUDY_SINGLE, &z, px);
-    CHECK_INT(px[0], 4961);
-    CHECK_INT(px[1], 3307);
-    study_frame_size(STUDY_CYLINDRICAL_90, &z, px);
-    CHECK_INT(px[0], 4961);
-    CHECK_INT(px[1], 1573);
+    check_size(STUDY_SINGLE, &z, 72, 48);
+    check_size(STUDY_PLANAR_53, &z, 72, 23); /* 72 * 260 / 820 = 22.8 */
+    z.print_width_mm = 420;                  /* A3 landscape at 300 dpi */
+    check_size(STUDY_SINGLE, &z, 4961, 3307);
+    check_size(STUDY_CYLINDRICAL_90, &z, 4961, 1573);
     z.size[0] = 480; /* the width alone: each frame's own height */
-    study_frame_size(STUDY_SINGLE, &z, px);
-    CHECK_INT(px[0], 480);
-    CHECK_INT(px[1], 320);
-    study_frame_size(STUDY_CYLINDRICAL_90, &z, px);
-    CHECK_INT(px[0], 480);
-    CHECK_INT(px[1], 152);
-    z.size[0] = 640, z.size[1] = 200; /* given: every frame that size */
-    study_frame_size(STUDY_PLANAR_53, &z, px);
-    CHECK_INT(px[0], 640);
-    CHECK_INT(px[1], 200);
+    check_size(STUDY_SINGLE, &z, 480, 320);
+    check_size(STUDY_CYLINDRICAL_90, &z, 480, 152);
+    z.size[1] = 200; /* both: every frame that size */
+    check_size(STUDY_PLANAR_53, &z, 480, 200);
 }
 
 TEST(frame_lenses)
@@ -154,6 +149,33 @@ TEST(scene_rewound)
     scene_free(s);
 }
 
+/* The digest of the views scene with `from` replaced by `to` and `extra` after it, or 0 when it
+ * does not load. */
+static uint64_t digest_of(const char *from, const char *to, const char *extra)
+{
+    char text[2048];
+    const char *at = strstr(views_scene, from);
+    snprintf(text, sizeof text, "%.*s%s%s%s", (int)(at - views_scene), views_scene, to, at + strlen(from), extra);
+    err_buf err;
+    scene_file *sf = scene_file_load(work_file("digest.yaml", text), NULL, &err);
+    CHECK(sf != NULL);
+    uint64_t d = sf ? sf->digest : 0;
+    scene_file_free(sf);
+    return d;
+}
+
+/* The scene's digest leaves out its cameras, its study and its comments, not what is drawn. */
+TEST(scene_digest)
+{
+    uint64_t base = digest_of("camera", "camera", "");
+    CHECK(base != 0);
+    CHECK(digest_of("heading: 270", "heading: 210", "study: {frames: cylindrical_90}\n") == base);
+    CHECK(digest_of("camera: {position: [0, 0, 2]}", "camera: {position: [5, 0, 2]}  # moved", "") == base);
+    CHECK(digest_of("[1, 1, 20]", "[1,  1,  20]", "") == base); /* the same mast, written otherwise */
+    CHECK(digest_of("[1, 1, 20]", "[1, 1, 30]", "") != base);   /* a 30 m mast */
+    CHECK(digest_of("camera", "camera", "sun: {azimuth: 90}\n") != base);
+}
+
 TEST(name_lists)
 {
     const char *text = " existing, proposed ,wireline", *name;
@@ -168,4 +190,4 @@ TEST(name_lists)
 }
 
 TEST_LIST(TEST_CASE(frame_sizes), TEST_CASE(frame_lenses), TEST_CASE(views_picked_and_ranked),
-          TEST_CASE(record_current), TEST_CASE(scene_rewound), TEST_CASE(name_lists))
+          TEST_CASE(record_current), TEST_CASE(scene_rewound), TEST_CASE(scene_digest), TEST_CASE(name_lists))

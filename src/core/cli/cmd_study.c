@@ -85,6 +85,10 @@ static int study_main(cli_mpi *m, int argc, char **argv)
                                    cli_operand_scene, &scene_path};
     int parsed = cli_options_parse(&spec, argc, argv);
     if (parsed) return cli_options_status(parsed);
+    if (points_layer && !points) {
+        fprintf(stderr, "sylva study: --points-layer names a layer of --points, which is not given\n");
+        return EXIT_USAGE;
+    }
     if (width && o.size[0]) {
         fprintf(stderr, "sylva study: give --size or --width, not both\n");
         return EXIT_USAGE;

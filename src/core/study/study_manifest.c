@@ -25,9 +25,9 @@ void study_manifest_text(const study_record *r, char out[STUDY_MANIFEST_MAX])
 {
     int n = snprintf(out, STUDY_MANIFEST_MAX,
                      "sylva study record 1\nsylva %s\nscene %016llx\nviewpoint %s\nproduct %s\nframe %s\n"
-                     "size %u %u\nspp %u\nseed %llu\n",
+                     "size %u %u\nspp %u\nseed %llu\nseason_day %u\n",
                      SYLVA_VERSION, (unsigned long long)r->scene_digest, r->viewpoint, r->product, r->frame, r->width,
-                     r->height, r->spp, (unsigned long long)r->seed);
+                     r->height, r->spp, (unsigned long long)r->seed, r->season_day);
     if (n > 0 && n < STUDY_MANIFEST_MAX) camera_text(r->camera, out + n, STUDY_MANIFEST_MAX - (size_t)n);
 }
 

@@ -88,7 +88,8 @@ static int plan_job(const scene_file *sf, const study_options *o, const study_pl
         if (!(p->products & 1u << k)) continue;
         study_record r = {.scene_digest = sf->digest, .viewpoint = v->name, .camera = &j->camera,
                           .product = host_study_products[k], .frame = study_frame_of(f)->name, .width = j->size[0],
-                          .height = j->size[1], .spp = p->spp, .seed = sf->image.seed};
+                          .height = j->size[1], .spp = p->spp, .seed = sf->image.seed,
+                          .season_day = sf->season.day};
         study_manifest_text(&r, j->record[k]);
         char png[STUDY_PATH_MAX], exr[STUDY_PATH_MAX], record[STUDY_PATH_MAX];
         if (study_job_path(j, k, "png", png, err) || study_job_path(j, k, "exr", exr, err) ||

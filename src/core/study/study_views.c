@@ -56,8 +56,11 @@ static int base_list(const scene_file *sf, const study_view_names *names, study_
 {
     if (names->viewpoints) return add_named(sf, names->viewpoints, "--viewpoints", out, err);
     if (sf->study.n_viewpoints) {
-        for (uint32_t i = 0; i < sf->study.n_viewpoints; i++)
-            out->views[out->n++] = find(sf, sf->study.viewpoints[i], strlen(sf->study.viewpoints[i]));
+        for (uint32_t i = 0; i < sf->study.n_viewpoints; i++) {
+            const char *name = sf->study.viewpoints[i];
+            if (!(out->views[out->n++] = find(sf, name, strlen(name)))) /* a point --points replaced */
+                return unknown(sf, "the study's viewpoints", name, strlen(name), err);
+        }
         return 0;
     }
     for (uint32_t i = 0; i < sf->n_viewpoints; i++) out->views[out->n++] = &sf->viewpoints[i];

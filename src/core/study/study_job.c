@@ -97,11 +97,16 @@ static int render_pair(scene *s, const study_job *j, const render_options *ro, p
     return failed ? err_default(err, ERR_INTERNAL) : 0;
 }
 
+int study_job_place(scene *s, const scene_file *sf, const study_job *j, err_buf *err)
+{
+    s->camera = j->camera;
+    return scene_ground_camera(s, sf, err) ? view_error(j->view, sf, err) : 0;
+}
+
 int study_job_run(scene *s, const scene_file *sf, const study_job *j, const render_options *ro, phase_times *times,
                   uint32_t *renders, err_buf *err)
 {
-    s->camera = j->camera;
-    if (scene_ground_camera(s, sf, err)) return view_error(j->view, sf, err);
+    if (study_job_place(s, sf, j, err)) return -1;
     scene_mark mark = scene_mark_take(s);
     const scene_view view = {.picture = 1, .width = j->size[0], .height = j->size[1], .quiet = 1};
     film *full = NULL, *bg = NULL;

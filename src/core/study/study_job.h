@@ -42,6 +42,11 @@ typedef struct study_job {
  * Returns 0, or -1 with err set when it does not fit. */
 int study_job_path(const study_job *j, int p, const char *ext, char out[STUDY_PATH_MAX], err_buf *err);
 
+/* Checks that j's camera can be placed over s's ground (its eye height above the terrain), so that
+ * a viewpoint off the terrain is refused before any image is rendered. Returns 0, or -1 with err
+ * set at the viewpoint. s's camera is left as j's. */
+int study_job_place(scene *s, const scene_file *sf, const study_job *j, err_buf *err);
+
 /* Renders j on s (built from sf) with ro's threads and samples and writes its products, adding
  * the phases to times and the renders made to *renders. s is the same after as before. Returns 0,
  * or -1 with err set (a camera off the terrain located at the viewpoint, an output not written). */

@@ -165,6 +165,8 @@ static int render_jobs(scene *s, const scene_file *sf, const study_options *o, s
                        const run_parts *parts, study_report *rep, err_buf *err)
 {
     if (share_jobs(p, parts->parts, err)) return -1;
+    for (uint32_t i = 0; i < p->n_jobs; i++) /* every viewpoint over the ground before any image */
+        if (p->jobs[i].todo && study_job_place(s, sf, &p->jobs[i], err)) return -1;
     uint64_t total = 0;
     uint32_t n_mine = 0;
     for (uint32_t i = 0; i < p->n_jobs; i++)

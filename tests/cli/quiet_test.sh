@@ -8,6 +8,7 @@ set -uo pipefail
 sylva=$1 dir=$2 scene=$3 geo_scene=$4
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir" || exit 1
 cp "$scene" scene.yaml && echo "photo: {file: plate.png}" >> scene.yaml || exit 1
+echo "viewpoints: {south: {position: [0, -260, 90], look_at: [0, 0, 20], fov: 55}}" >> scene.yaml || exit 1
 fail() { echo "$*" >&2; exit 1; }
 
 err=$("$sylva" render scene.yaml -o plate.png 2>&1 >/dev/null) || fail "render without -q failed: $err"
@@ -28,6 +29,7 @@ quiet export-pov export-pov scene.yaml -q -o x.pov
 quiet probe probe scene.yaml 0 0 -q
 quiet ztv ztv scene.yaml -q -o ztv --cell 20
 quiet montage montage scene.yaml -q -o montage
+quiet study study scene.yaml -q -o study --width 32
 err=$("$sylva" probe "$geo_scene" 499660 3762300 2>&1 >/dev/null) || fail "probe on a geographic DTM failed: $err"
 grep -q "the site CRS is the UTM zone of its centre" <<<"$err" ||
   fail "probe without -q does not say which UTM zone the site took: $err"

@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# mpi_test.sh CASE SYLVA SCENES_DIR — `sylva render` and `sylva ztv` under mpirun on this machine
+# mpi_test.sh CASE SYLVA SCENES_DIR — `sylva render`, `sylva ztv` and `sylva study` under mpirun on this machine
 # (docs/mpi.md). Skipped (77) without mpirun. Cases:
 #   render    scenes rendered by 2 and 4 ranks (and 3 and 1 on a frame of fewer bands than
 #             ranks) give the PNG and the EXR of a plain run, byte for byte; the plain run of
 #             this build (no mpirun, so no MPI) prints what it always did
 #   ztv       maps traced by 2 and 4 ranks (and 3), one block of rows and two, give every file
 #             of a plain run byte for byte
+#   study     a study rendered by 2 and 3 ranks (whole images each) writes every file of a plain
+#             run, byte for byte; a rerun on 2 ranks renders the one product deleted, alone
 #   failures  a failure ends every rank with one message and the right exit status, never a
 #             hang: rank 0 cannot write (render, ztv), one rank alone is refused by its memory
 #             budget (render: its frame, while rank 0 waits to gather; ztv: the scene file,
@@ -71,6 +73,28 @@ ztv)
       [ "$(cat "$out/$name.$n.stdout")" = "$out/$name.$n" ] || fail "ztv $name: stdout of $n ranks"
     done
   done
+  ;;
+study)
+  # whole images shared between the ranks: every file of a plain run, byte for byte; rank 0
+  # alone prints; a rerun with one product deleted renders it alone
+  scene=$scenes/study/hill_study.yaml
+  args=(study "$scene" --frames single,planar_53)
+  plain "$sylva" "${args[@]}" --threads 2 -q -o "$out/one" >/dev/null || fail "study: the plain run exited with $?"
+  for n in 2 3; do
+    ranks $n "$sylva" "${args[@]}" --threads 1 -o "$out/s$n" >"$out/s$n.stdout" 2>"$out/s$n.stderr" ||
+      fail "study: $n ranks exited with $?"
+    diff -r "$out/one" "$out/s$n" >/dev/null || fail "study: $n ranks wrote other files than one process"
+    [ "$(grep -c "^study (rank 0 of $n): " "$out/s$n.stderr")" = 1 ] || fail "study: $n ranks: no summary, or more"
+    [ "$(cat "$out/s$n.stdout")" = "$out/s$n" ] || fail "study: stdout of $n ranks"
+  done
+  sleep 1
+  touch "$out/mark"
+  rm "$out/s2/south/wireline_planar_53.exr"
+  ranks 2 "$sylva" "${args[@]}" --threads 1 -q -o "$out/s2" >/dev/null || fail "study: the rerun on 2 ranks exited with $?"
+  newer=$(cd "$out/s2" && find . -type f -newer "$out/mark" | sort | tr '\n' ' ')
+  [ "$newer" = "./south/wireline_planar_53.exr ./south/wireline_planar_53.manifest ./south/wireline_planar_53.png " ] ||
+    fail "study: the rerun on 2 ranks rewrote '$newer'"
+  diff -r "$out/one" "$out/s2" >/dev/null || fail "study: after the rerun, 2 ranks' files differ from one process's"
   ;;
 failures)
   scene=$scenes/image/sphere_on_plane.yaml site=$scenes/ztv/small_site.yaml

@@ -16,10 +16,10 @@
 #include "io/image_io.h"
 #include "montage/composite.h"
 #include "montage/montage_run.h"
-#include "montage/wireline.h"
 #include "render/accel.h"
 #include "render/camera.h"
 #include "render/render.h"
+#include "render/wireline.h"
 #include "scene_fixture.h"
 #include "work_dir.h"
 

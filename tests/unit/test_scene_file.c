@@ -373,13 +373,15 @@ TEST(host_schemas_are_well_formed)
         CHECK_INT(rc, 0);
         for (uint32_t k = 0; k < s->n_params; k++) CHECK(s->params[k].help && s->params[k].help[0]);
     }
-    CHECK_INT(n, 31);
+    CHECK_INT(n, 32);
     CHECK(host_schema_shape(SHAPE_DISK) == &host_schema_shape_disk);
     /* enum orders the loader relies on */
     CHECK(!strcmp(host_sky_models[SKY_PREETHAM], "preetham"));
     CHECK(!strcmp(host_shape_names[SHAPE_SPHERE], "sphere"));
     CHECK(!strcmp(host_material_types[SYLVA_BSDF_LEAF - 1], "leaf"));
     CHECK(!strcmp(host_model_up_axes[1], "y") && !strcmp(host_model_up_axes[2], "z")); /* MODEL_UP_Y, _Z */
+    CHECK(!strcmp(host_study_products[STUDY_WIRELINE], "wireline") && !host_study_products[STUDY_PRODUCTS]);
+    CHECK(!strcmp(host_study_frames[STUDY_CYLINDRICAL_90], "cylindrical_90") && !host_study_frames[STUDY_FRAMES]);
 }
 
 TEST(host_reserved_keys)

@@ -1,4 +1,4 @@
-/* test_wireline.c — the development's wireline (montage/wireline.h) on a rendered box: every
+/* test_wireline.c — the development's wireline (render/wireline.h) on a rendered box: every
  * wireline pixel lies within a pixel of one of the box's visible edges as the camera projects
  * them, every visible edge is drawn along its length and painted, and a box that is not the
  * development has none. */
@@ -7,9 +7,9 @@
 #include <string.h>
 
 #include "harness.h"
-#include "montage/wireline.h"
 #include "render/camera.h"
 #include "render/render.h"
+#include "render/wireline.h"
 #include "scene_fixture.h"
 #include "work_dir.h"
 

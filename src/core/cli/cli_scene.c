@@ -24,6 +24,8 @@ int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const 
     if (!(c->sf = scene_file_load_with(scene_path, c->reg, (use->no_camera ? SCENE_FILE_NO_CAMERA : 0) | (opt && opt->quiet ? SCENE_FILE_QUIET : 0), &err))) return cli_fail(NULL, &err, ERR_INPUT);
     if (viewpoint && scene_file_use_viewpoint(c->sf, viewpoint, &err)) return cli_fail(cmd, &err, ERR_USAGE);
     if (season && scene_file_use_season(c->sf, season, &err)) return cli_fail(cmd, &err, ERR_USAGE);
+    if (use->no_build) return use->check_outputs ? cli_outputs_check(cmd, c->sf, use->inputs, use->n_inputs,
+                                                                      use->outputs, use->n_outputs) : EXIT_OK;
     build_options bo = opt ? *opt : (build_options){0};
     bo.times = &c->times;
     if (!(c->scene = scene_build(c->sf, c->reg, &bo, &err))) return cli_fail(NULL, &err, ERR_INPUT);

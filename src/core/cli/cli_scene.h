@@ -17,6 +17,8 @@ typedef struct cli_scene_use {
     const char *viewpoint; /* NULL: the scene's camera; else one of its viewpoints (--viewpoint) */
     const char *season;    /* NULL: the scene's season: key; else a season's name or a date (--season) */
     int no_camera;         /* 1: an analysis (ztv, probe): the scene needs no camera: section */
+    int no_build;          /* 1: the file loaded and checked and the outputs with it, the scene left
+                              to the command (a study builds it once it knows there is work) */
     int check_outputs;     /* 1: check the outputs against what the run reads (cli_outputs.h) */
     const cli_file *inputs, *outputs; /* with check_outputs: the files the command line names */
     uint32_t n_inputs, n_outputs;

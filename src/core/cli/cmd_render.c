@@ -54,12 +54,15 @@ static int output_paths(const char *scene_path, const char *viewpoint, const cha
     return 0;
 }
 
+static const char *const ground_names[] = {"camera", "development", NULL};
+
 static int render_run(cli_mpi *m, int argc, char **argv)
 {
     const char *viewpoint = NULL, *season = NULL;
     const char *scene_path = NULL, *out = NULL;
     render_options ro = {0};
     build_options bo = {0};
+    int ground = 0;
     const cli_option options[] = {
         CLI_OPT_PATH("-o, --output", "FILE", out, "FILE.png or FILE.exr; the other format is written beside it "
                      "(default: the scene's name, _VIEWPOINT with --viewpoint and _SEASON with --season, with "
@@ -76,6 +79,9 @@ static int render_run(cli_mpi *m, int argc, char **argv)
                      "is on (the view POV-Ray's export gives)"),
         CLI_OPT_TEXT("--viewpoint", "NAME", viewpoint, CLI_HELP_VIEWPOINT),
         CLI_OPT_TEXT("--season", "S", season, CLI_HELP_SEASON),
+        CLI_OPT_CHOICE("--ground", ground, ground_names, "the terrain plugin's levels of detail around the camera "
+                       "(default) or around the development, one ground for every viewpoint, as `sylva study` "
+                       "renders it"),
         CLI_OPTS_SCENE_COMMON(bo),
     };
     const cli_command_spec spec = {"render", "SCENE", render_about, NULL, options, sizeof options / sizeof *options,
@@ -83,6 +89,7 @@ static int render_run(cli_mpi *m, int argc, char **argv)
     int parsed = cli_options_parse(&spec, argc, argv);
     if (parsed) return cli_options_status(parsed);
     ro.threads = bo.threads, ro.quiet = bo.quiet;
+    bo.detail_at_development = ground;
     char png[4200], exr[4200];
     if (output_paths(scene_path, viewpoint, season, out, png, exr, sizeof png)) return EXIT_USAGE;
     if (!ro.threads) ro.threads = bo.threads = m->threads;

@@ -13,6 +13,7 @@ const sylva_command sylva_commands[] = {
     {"tree-stats", cmd_tree_stats, "SCENE SPECIES", "a tree species' variants: segments, leaves, bounds, D_B"},
     {"ztv", cmd_ztv, "SCENE -o DIR", "map where the development can be seen from (GeoTIFF, PNG maps, summary)"},
     {"montage", cmd_montage, "SCENE -o DIR", "render the development into the scene's photograph (montage, wireline, sheet)"},
+    {"study", cmd_study, "SCENE -o DIR", "every viewpoint's existing, proposed and wireline views from one build"},
     {"probe", cmd_probe, "SCENE E N", "the ground at a point (height, slope, aspect, water) and what stands there"},
     {NULL, NULL, NULL, NULL},
 };

@@ -15,6 +15,7 @@ int cmd_tree_stats(int argc, char **argv); /* cmd_tree_stats.c */
 int cmd_probe(int argc, char **argv);      /* cmd_probe.c */
 int cmd_ztv(int argc, char **argv);        /* cmd_ztv.c */
 int cmd_montage(int argc, char **argv);    /* cmd_montage.c */
+int cmd_study(int argc, char **argv);      /* cmd_study.c */
 
 typedef struct sylva_command {
     const char *name;                 /* as typed after `sylva` */

@@ -12,6 +12,8 @@ int output_folder_make(const char *dir, err_buf *err)
         if (S_ISDIR(st.st_mode)) return 0;
         return err_fail(err, ERR_OUTPUT, "%s: exists and is not a folder", dir);
     }
-    if (mkdir(dir, 0777)) return err_fail(err, ERR_OUTPUT, "%s: cannot create the folder: %s", dir, strerror(errno));
-    return 0;
+    if (!mkdir(dir, 0777)) return 0;
+    int why = errno; /* another process may have made it meanwhile (the ranks of a study) */
+    if (why == EEXIST && !stat(dir, &st) && S_ISDIR(st.st_mode)) return 0;
+    return err_fail(err, ERR_OUTPUT, "%s: cannot create the folder: %s", dir, strerror(why));
 }

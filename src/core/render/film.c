@@ -118,11 +118,9 @@ int film_write_exr(const film *f, const site_settings *site, double exposure_sto
     return exr_write(path, &fr, err);
 }
 
-int film_write_pair(const film *f, const site_settings *site, tone_curve tone, double exposure_stops,
-                    const char *png_path, const char *exr_path, err_buf *err)
+int film_write_pair_pixels(const film *f, const site_settings *site, double exposure_stops, const uint8_t *px,
+                           const char *png_path, const char *exr_path, err_buf *err)
 {
-    uint8_t *px = film_tonemap(f, tone, exposure_stops); /* owned here */
-    if (!px) return err_nomem(err, "out of memory tone-mapping the image");
     exr_frame fr = film_exr_frame(f, site, exposure_stops);
     atomic_file out[2]; /* the EXR, then the PNG */
     memset(out, 0, sizeof out);
@@ -132,6 +130,15 @@ int film_write_pair(const film *f, const site_settings *site, tone_curve tone, d
              image_write_u8_into(&out[1], f->width, f->height, 3, px, err)
                  ? -1 : atomic_file_commit_together(out, 2, err);
     if (rc) atomic_file_abort(&out[0]), atomic_file_abort(&out[1]);
+    return rc;
+}
+
+int film_write_pair(const film *f, const site_settings *site, tone_curve tone, double exposure_stops,
+                    const char *png_path, const char *exr_path, err_buf *err)
+{
+    uint8_t *px = film_tonemap(f, tone, exposure_stops); /* owned here */
+    if (!px) return err_nomem(err, "out of memory tone-mapping the image");
+    int rc = film_write_pair_pixels(f, site, exposure_stops, px, png_path, exr_path, err);
     free(px);
     return rc;
 }

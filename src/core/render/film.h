@@ -83,5 +83,9 @@ int film_write_png(const film *f, const char *path, tone_curve tone, double expo
  * that runs writing the same pair at once leave the PNG and the EXR of one run. */
 int film_write_pair(const film *f, const site_settings *site, tone_curve tone, double exposure_stops,
                     const char *png_path, const char *exr_path, err_buf *err);
+/* The same pair with the PNG's 8-bit pixels given (3 per pixel, the frame's size: a tone-mapped
+ * frame drawn over, as a wireline), the EXR from f's layers. */
+int film_write_pair_pixels(const film *f, const site_settings *site, double exposure_stops, const uint8_t *png_pixels,
+                           const char *png_path, const char *exr_path, err_buf *err);
 
 #endif

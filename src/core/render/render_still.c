@@ -31,12 +31,17 @@ static int gather_film(const run_parts *parts, film *f, err_buf *err)
     return parts->gather_rows(parts->job, a, FILM_LAYERS, 0, f->height, RENDER_BAND_ROWS, err);
 }
 
+double render_still_exposure(const scene *sc, const film *f)
+{
+    return sc->image.exposure_set ? sc->image.exposure : auto_exposure_stops(f);
+}
+
 /* Part 0: the exposure metered (or the scene's), the pair written, the closing lines. */
 static int write_frame(const scene *sc, const render_still_options *o, const film *f, const render_stats *st,
                        uint64_t samples, int parts, phase_times *times, phase_mark t_out, err_buf *err)
 {
     int quiet = o->render.quiet;
-    double ev = sc->image.exposure_set ? sc->image.exposure : auto_exposure_stops(f);
+    double ev = render_still_exposure(sc, f);
     if (!quiet) fprintf(stderr, "exposure: %+.2f EV (%s)\n", ev, sc->image.exposure_set ? "image.exposure" : "metered");
     if (film_write_pair(f, &sc->site, sc->image.tone, ev, o->png, o->exr, err)) return err_default(err, ERR_OUTPUT);
     phase_stop(times, PHASE_OUTPUT, t_out);

@@ -18,6 +18,10 @@ typedef struct render_still_options {
     double scene_seconds;  /* to load and build the scene */
 } render_still_options;
 
+/* The exposure in stops a still of sc is written with: the scene's image.exposure when given,
+ * else metered on f (render/auto_exposure.h). */
+double render_still_exposure(const scene *sc, const film *f);
+
 /* Renders sc and writes the pair (part 0), adding the phases to times. Returns 0, or -1 with err
  * set (its kind stated), or -1 with err empty when another part failed. */
 int render_still_run(const scene *sc, const render_still_options *o, const run_parts *parts, phase_times *times,

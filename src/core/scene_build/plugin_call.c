@@ -198,17 +198,11 @@ int plugin_call_knows_surveyed(const plugin_call *c)
     return c->plugin->desc->abi_minor >= 5;
 }
 
-/* Where the development stands: the mean position of its objects, else of the ztv: section's
- * targets; NaN when the scene names neither. */
+/* Where the development stands (scene_file_development_place); NaN when the scene names none. */
 static void development_centre(const scene_file *sf, double at[3])
 {
-    double sum[2] = {0, 0};
-    uint32_t n = 0;
-    for (uint32_t k = 0; k < sf->n_objects; k++)
-        if (sf->objects[k].development) sum[0] += sf->objects[k].position[0], sum[1] += sf->objects[k].position[1], n++;
-    if (!n)
-        for (; n < sf->ztv.n_targets; n++) sum[0] += sf->ztv.targets[n].position[0], sum[1] += sf->ztv.targets[n].position[1];
-    at[0] = n ? sum[0] / n : NAN, at[1] = n ? sum[1] / n : NAN, at[2] = NAN;
+    if (scene_file_development_place(sf, at)) at[0] = at[1] = NAN;
+    at[2] = NAN;
 }
 
 int plugin_call_terrain(plugin_call *c, int surveyed, int at_development, err_buf *err)

@@ -22,7 +22,7 @@
 const char *const host_sections[] = {"image",   "site",    "camera",  "sun",     "sky",     "materials",
                                      "terrain", "species", "plants",  "ecology", "groups",  "objects",
                                      "earth",   "viewpoints", "ztv",     "photo",   "ground_cover", "season",  "snow",
-                                     "landcover", "trees", "canopy", NULL};
+                                     "landcover", "trees", "canopy", "study", NULL};
 
 const char *const host_shape_names[] = {"mesh", "box", "sphere", "quad", "disk", NULL};
 const char *const host_sky_models[] = {"none", "constant", "preetham", "physical", NULL};
@@ -404,6 +404,46 @@ static const sylva_param_spec photo_params[] = {
 };
 const host_schema host_schema_photo = {"photo", "The photograph of a photomontage (sylva montage).", photo_params,
                                        COUNT(photo_params)};
+
+/* --- study -------------------------------------------------------------------------------- */
+const char *const host_study_products[] = {"existing", "proposed", "wireline", NULL};
+const char *const host_study_frames[] = {"single", "planar_53", "cylindrical_90", NULL};
+static const double no_size[2] = {0, 0};
+static const sylva_param_spec study_params[] = {
+    {.name = "viewpoints", .type = SYLVA_P_STRING,
+     .help = "The scene's viewpoints to render, in rank order: a list of names, or names separated by "
+             "spaces or commas (default: every one, in the file's order)."},
+    {.name = "points", .type = SYLVA_P_PATH,
+     .help = "More viewpoints from a file of points: a CSV (id or name; easting and northing, x and y, or "
+             "longitude and latitude; height_above_ground; heading) or a point layer OGR reads (GeoPackage, "
+             "Shapefile, GeoJSON) with the fields name, height_above_ground and heading."},
+    {.name = "points_layer", .type = SYLVA_P_STRING,
+     .help = "The layer of the points file holding the viewpoints (default: its only one)."},
+    {.name = "eye_height", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 1.5, .min = 0, .max = 10000, .unit = "m",
+     .help = "Eye height above the ground of a point that gives no height_above_ground."},
+    {.name = "products", .type = SYLVA_P_STRING, .def_str = "existing proposed wireline",
+     .help = "What each viewpoint gives: existing (the view without the development), proposed (with it), "
+             "wireline (the development's outline over the existing view); a list or names separated by "
+             "spaces or commas."},
+    {.name = "frames", .type = SYLVA_P_STRING, .def_str = "single",
+     .help = "The frames of each product: single (50 mm on a full-frame sensor, 39.6 x 27 degrees), planar_53 "
+             "(53.5 x 18.2 degrees, planar), cylindrical_90 (a 90 degree cylindrical panorama); a list or "
+             "names separated by spaces or commas."},
+    {.name = "size", .type = SYLVA_P_LIST, .flags = MIN | MAX, .min = 0, .max = HOST_IMAGE_MAX_SIZE, .min_len = 2,
+     .max_len = 2, .def_list = no_size, .def_len = 2, .unit = "px",
+     .help = "[width, height] of every frame in pixels, or [width, 0] for each frame's own height (default: a "
+             "width from print_width and dpi, else the image's width, and each frame's own height for it)."},
+    {.name = "print_width", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = 0, .max = 10000, .unit = "mm",
+     .help = "Width of the printed frame: the frame is print_width / 25.4 * dpi pixels wide (0: no print "
+             "size; A3 landscape is 420)."},
+    {.name = "dpi", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 300, .min = 0, .max = 10000,
+     .help = "Pixels per inch of the print (with print_width)."},
+    {.name = "spp", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 0, .min = 0, .max = 1 << 20,
+     .help = "Samples per pixel (0: the image's spp)."},
+};
+const host_schema host_schema_study = {
+    "study", "The viewpoints, products and frames `sylva study` renders from one build of the scene.",
+    study_params, COUNT(study_params)};
 
 /* --- landcover ------------------------------------------------------------------------------ */
 static const sylva_param_spec landcover_class_params[] = {
@@ -812,7 +852,7 @@ const host_schema *host_schema_at(uint32_t i)
         &host_schema_image,        &host_schema_site,         &host_schema_position,
         &host_schema_camera,       &host_schema_sun,          &host_schema_sky,
         &host_schema_earth,        &host_schema_ztv,          &host_schema_ztv_target,
-        &host_schema_photo,        &host_schema_ground_cover, &host_schema_snow,  &host_schema_landcover,
+        &host_schema_photo,        &host_schema_study,        &host_schema_ground_cover, &host_schema_snow,  &host_schema_landcover,
         &host_schema_canopy,
         &host_schema_material,     &host_schema_terrain,
         &host_schema_species,      &host_schema_phenology,    &host_schema_blossom,      &host_schema_plant,

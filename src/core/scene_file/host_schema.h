@@ -36,6 +36,7 @@ extern const host_schema host_schema_ground_cover;
 extern const host_schema host_schema_ztv;
 extern const host_schema host_schema_ztv_target; /* one entry of ztv: targets: */
 extern const host_schema host_schema_photo;
+extern const host_schema host_schema_study;        /* study: what `sylva study` renders */
 extern const host_schema host_schema_landcover;    /* landcover: the site's land-cover map */
 extern const host_schema host_schema_canopy;       /* canopy: the site's canopy heights */
 extern const host_schema host_schema_material;     /* one entry of materials: */
@@ -75,6 +76,8 @@ extern const char *const host_shape_names[];
 extern const char *const host_sky_models[];
 extern const char *const host_material_types[];
 extern const char *const host_model_up_axes[]; /* model_up order: file, y, z */
+extern const char *const host_study_products[]; /* study_product order */
+extern const char *const host_study_frames[];   /* study_frame order */
 
 /* Image size limit (width and height), pixels. */
 #define HOST_IMAGE_MAX_SIZE 16384

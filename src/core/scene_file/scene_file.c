@@ -9,9 +9,11 @@
  * beyond the registry's descriptor lookup runs.
  *
  * Sections are read in a fixed order: image, site, camera, sun, sky, materials, ecology,
- * terrain, species (with includes), plants, trees, groups, objects, earth — the site before every
- * position, materials before their users, the ecology before the species blocks it defines,
- * species before plants, the earth (whose default follows the site) last.
+ * terrain, species (with includes), plants, trees, groups, objects, earth, then ztv, ground cover,
+ * snow, season, photo, landcover, canopy and study — the site before every position, materials
+ * before their users, the ecology before the species blocks it defines, species before plants,
+ * the earth after the site (its default follows it), the study after the viewpoints and the
+ * objects (a point of its points file faces the development).
  */
 #include "scene_file/scene_file_loader.h"
 
@@ -96,7 +98,7 @@ static int load(loader *L, const char *path)
         sf_read_groups(L, ynode_get(L->root, "groups")) ||
         sf_read_objects(L, ynode_get(L->root, "objects")) || sf_read_earth(L) || sf_read_ztv(L) ||
         sf_read_ground_cover(L) || sf_read_snow(L) || sf_read_season(L) ||
-        sf_read_photo(L) || sf_read_landcover(L) || sf_read_canopy(L))
+        sf_read_photo(L) || sf_read_landcover(L) || sf_read_canopy(L) || sf_read_study(L))
         return -1;
     if (scene_estimate_check(L->sf, L->err)) return -1; /* before any mesh is built */
     if (L->sf->ecology.plugin && L->sf->terrain.source == TERRAIN_NONE)
@@ -133,6 +135,7 @@ scene_file *scene_file_load_with(const char *path, const struct plugin_registry 
     if (!rc && L.n_seen && !(sf->includes = arena_alloc(a, (size_t)L.n_seen * sizeof *sf->includes)))
         rc = sf_out_of_memory(&L);
     for (uint32_t i = 0; !rc && i < L.n_seen; i++) sf->includes[sf->n_includes++] = L.seen[i].real;
+    if (!rc) rc = sf_digest(&L);
     if (rc) {
         scene_file_free(sf);
         return NULL;

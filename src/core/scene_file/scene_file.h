@@ -39,6 +39,16 @@ int scene_file_use_viewpoint(scene_file *sf, const char *name, err_buf *err);
  * with err (ERR_USAGE) saying what would be valid. */
 int scene_file_use_season(scene_file *sf, const char *text, err_buf *err);
 
+/* Reads the viewpoints of a points file (docs/study.md: a CSV, or a point layer OGR reads, from
+ * `layer` or its only one) in place of the study: section's points (before the scene is built).
+ * path is as given on the command line. Returns 0, or -1 with err (ERR_INPUT) at the file's
+ * line and column. */
+int scene_file_read_points(scene_file *sf, const char *path, const char *layer, err_buf *err);
+
+/* Where the development stands (local x, y): the mean position of the objects marked
+ * `development`, else of the ztv: section's targets. 0, or -1 when the scene names neither. */
+int scene_file_development_place(const scene_file *sf, double at[2]);
+
 /* Index of a material or species by name, or -1 (a hash lookup). */
 int scene_file_material_index(const scene_file *sf, const char *name);
 int scene_file_species_index(const scene_file *sf, const char *name);

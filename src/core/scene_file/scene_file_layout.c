@@ -1,9 +1,10 @@
-/* scene_file_layout.c — a layout: a CSV file of placements (one object per row) that an
- * objects entry with `layout:` names. The first line names the columns: `id`, `easting` and
- * `northing` (map coordinates: local = map - site origin) or `x` and `y` (local metres), and
- * optionally `heading` (degrees clockwise from north) and `height_above_ground` (metres).
- * Blank lines and lines starting with '#' are skipped; a field may be wrapped in double quotes.
- * Every problem is reported at file:line:column of the CSV. */
+/* scene_file_layout.c — a layout: a CSV file of placements (one object per row of an objects
+ * entry with `layout:`, or one viewpoint per row of a study's points file). The first line names
+ * the columns: `id` (or `name`), `easting` and `northing` (map coordinates: local = map - site
+ * origin), `longitude` and `latitude` (degrees, WGS 84, placed on the site's map) or `x` and `y`
+ * (local metres), and optionally `heading` (degrees clockwise from north) and
+ * `height_above_ground` (metres). Blank lines and lines starting with '#' are skipped; a field
+ * may be wrapped in double quotes. Every problem is reported at file:line:column of the CSV. */
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -20,12 +21,16 @@
 #define LAYOUT_MAX_ROWS 1000000u
 #define LAYOUT_MAX_FIELDS 32u
 
-enum { COL_ID, COL_EASTING, COL_NORTHING, COL_X, COL_Y, COL_HEADING, COL_HEIGHT, COL_COUNT };
-static const char *const column_names[COL_COUNT] = {"id", "easting", "northing", "x", "y", "heading",
-                                                    "height_above_ground"};
+enum { COL_ID, COL_EASTING, COL_NORTHING, COL_LONGITUDE, COL_LATITUDE, COL_X, COL_Y, COL_HEADING, COL_HEIGHT,
+       COL_COUNT };
+static const char *const column_names[COL_COUNT] = {"id", "easting", "northing", "longitude", "latitude", "x", "y",
+                                                    "heading", "height_above_ground"};
+/* The pairs of columns that give a position, and what each pair is. */
+static const int position_columns[3][2] = {{COL_EASTING, COL_NORTHING}, {COL_LONGITUDE, COL_LATITUDE}, {COL_X, COL_Y}};
+#define LAYOUT_COLUMNS "id (or name), then easting and northing (map coordinates), longitude and latitude " \
+                       "(degrees) or x and y (local metres), optionally heading and height_above_ground"
 
-/* The file, whole, NUL-terminated, in the arena; NULL with L->err set. */
-static char *read_whole(loader *L, const char *path, const char *shown, size_t *len)
+char *sf_read_text_file(loader *L, const char *path, const char *shown, size_t *len)
 {
     int fd = file_open_regular(path, shown, L->err);
     if (fd < 0) return NULL;
@@ -67,36 +72,68 @@ static int read_number(loader *L, const char *shown, uint32_t line, uint32_t col
     return 0;
 }
 
-/* Maps the header's names to columns; *where[c] is the field index of column c or -1. */
+/* Maps the header's names to columns; *where[c] is the field index of column c or -1, and
+ * *pair the pair of position_columns the file gives. */
 static int read_header(loader *L, const char *shown, uint32_t line, char **field, const uint32_t *column,
-                       uint32_t n, int where[COL_COUNT])
+                       uint32_t n, int where[COL_COUNT], int *pair)
 {
     for (int c = 0; c < COL_COUNT; c++) where[c] = -1;
     for (uint32_t i = 0; i < n; i++) {
+        const char *name = strcasecmp(field[i], "name") ? field[i] : "id";
         int c = 0;
-        while (c < COL_COUNT && strcasecmp(field[i], column_names[c])) c++;
+        while (c < COL_COUNT && strcasecmp(name, column_names[c])) c++;
         if (c == COL_COUNT)
-            return sf_located(L->err, shown, line, column[i],
-                              "unknown column '%s'; the columns are id, easting and northing (or x and y), "
-                              "heading, height_above_ground", field[i]);
+            return sf_located(L->err, shown, line, column[i], "unknown column '%s'; the columns are " LAYOUT_COLUMNS,
+                              field[i]);
         if (where[c] >= 0)
-            return sf_located(L->err, shown, line, column[i], "column '%s' appears twice", column_names[c]);
+            return sf_located(L->err, shown, line, column[i], "column '%s' appears twice%s", column_names[c],
+                              c == COL_ID ? " (name is another name of id)" : "");
         where[c] = (int)i;
     }
-    int map = where[COL_EASTING] >= 0 || where[COL_NORTHING] >= 0, local = where[COL_X] >= 0 || where[COL_Y] >= 0;
-    if (where[COL_ID] < 0 || map == local || (map && (where[COL_EASTING] < 0 || where[COL_NORTHING] < 0)) ||
-        (local && (where[COL_X] < 0 || where[COL_Y] < 0)))
-        return sf_located(L->err, shown, line, 1,
-                          "the first line must name the columns: id, then easting and northing (map "
-                          "coordinates) or x and y (local metres), optionally heading and "
-                          "height_above_ground");
+    int pairs = 0, whole = 0;
+    for (int k = 0; k < 3; k++) {
+        int a = where[position_columns[k][0]] >= 0, b = where[position_columns[k][1]] >= 0;
+        pairs += a || b, whole += a && b;
+        if (a || b) *pair = k;
+    }
+    if (where[COL_ID] < 0 || pairs != 1 || whole != 1)
+        return sf_located(L->err, shown, line, 1, "the first line must name the columns: " LAYOUT_COLUMNS);
+    if (*pair == 1 && !L->site)
+        return sf_located(L->err, shown, line, column[where[COL_LONGITUDE]],
+                          "longitude and latitude are placed on the site's map, and the scene has no site: "
+                          "section; add one, or give x and y in local metres");
+    return 0;
+}
+
+/* The row's position in local metres from the pair of columns the file gives. */
+static int read_position(loader *L, const char *shown, uint32_t line, char **field, const uint32_t *column,
+                         const int where[COL_COUNT], int pair, double xy[2])
+{
+    int cx = position_columns[pair][0], cy = position_columns[pair][1];
+    if (read_number(L, shown, line, column[where[cx]], column_names[cx], field[where[cx]], &xy[0]) ||
+        read_number(L, shown, line, column[where[cy]], column_names[cy], field[where[cy]], &xy[1]))
+        return -1;
+    if (pair == 2) return 0;
+    if (pair == 1) {
+        if (fabs(xy[0]) > 180 || fabs(xy[1]) > 90)
+            return sf_located(L->err, shown, line, column[where[fabs(xy[0]) > 180 ? cx : cy]],
+                              "longitude %g, latitude %g lies off the globe; longitude is in [-180, 180] and "
+                              "latitude in [-90, 90] degrees", xy[0], xy[1]);
+        double map[2];
+        if (site_frame_from_lonlat(L->site, xy[0], xy[1], map, L->err)) {
+            err_prefix(L->err, "longitude %g, latitude %g: ", xy[0], xy[1]);
+            return err_locate(L->err, shown, line, column[where[cx]]);
+        }
+        xy[0] = map[0], xy[1] = map[1];
+    }
+    xy[0] -= L->sf->site.origin[0], xy[1] -= L->sf->site.origin[1];
     return 0;
 }
 
 int sf_read_layout(loader *L, const char *path, const char *shown, layout_row **rows_out, uint32_t *n_out)
 {
     size_t len = 0;
-    char *text = read_whole(L, path, shown, &len);
+    char *text = sf_read_text_file(L, path, shown, &len);
     if (!text) return -1;
     if (memchr(text, 0, len))
         return sf_located(L->err, shown, 1, 1, "the layout holds a NUL byte; it must be a text CSV file");
@@ -104,7 +141,7 @@ int sf_read_layout(loader *L, const char *path, const char *shown, layout_row **
     for (size_t i = 0; i < len; i++) cap += text[i] == '\n';
     layout_row *rows = arena_alloc(L->a, ((size_t)cap + 1) * sizeof *rows);
     if (!rows) return sf_out_of_memory(L);
-    int where[COL_COUNT], have_header = 0;
+    int where[COL_COUNT], have_header = 0, pair = 0;
     uint32_t n = 0, line = 0;
     char *field[LAYOUT_MAX_FIELDS];
     uint32_t column[LAYOUT_MAX_FIELDS];
@@ -127,7 +164,7 @@ int sf_read_layout(loader *L, const char *path, const char *shown, layout_row **
             return sf_located(L->err, shown, line, 1, "%u fields; a layout line has at most %u", nf,
                               LAYOUT_MAX_FIELDS);
         if (!have_header) {
-            if (read_header(L, shown, line, field, column, nf, where)) return -1;
+            if (read_header(L, shown, line, field, column, nf, where, &pair)) return -1;
             have_header = 1;
             continue;
         }
@@ -143,12 +180,7 @@ int sf_read_layout(loader *L, const char *path, const char *shown, layout_row **
         const char *id = field[where[COL_ID]];
         if (!*id) return sf_located(L->err, shown, line, column[where[COL_ID]], "'id' is empty; name the placement");
         if (!(r->id = arena_strdup(L->a, id))) return sf_out_of_memory(L);
-        int map = where[COL_EASTING] >= 0;
-        int cx = map ? COL_EASTING : COL_X, cy = map ? COL_NORTHING : COL_Y;
-        if (read_number(L, shown, line, column[where[cx]], column_names[cx], field[where[cx]], &r->xy[0]) ||
-            read_number(L, shown, line, column[where[cy]], column_names[cy], field[where[cy]], &r->xy[1]))
-            return -1;
-        if (map) r->xy[0] -= L->sf->site.origin[0], r->xy[1] -= L->sf->site.origin[1];
+        if (read_position(L, shown, line, field, column, where, pair, r->xy)) return -1;
         if (where[COL_HEADING] >= 0 && *field[where[COL_HEADING]]) {
             if (read_number(L, shown, line, column[where[COL_HEADING]], "heading", field[where[COL_HEADING]],
                             &r->heading_deg))

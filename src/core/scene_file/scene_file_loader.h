@@ -22,6 +22,9 @@
  *   scene_file_landcover.c  the landcover section: the site's land-cover map
  *   scene_file_communities.c  the landcover section's plant communities
  *   scene_file_canopy.c     the canopy section: the site's canopy heights
+ *   scene_file_study.c      the study section: what `sylva study` renders
+ *   scene_file_points.c     a study's points file of viewpoints
+ *   scene_file_digest.c     the digest of what every render of the scene reads
  *
  * Every function returns 0, or -1 with L->err set (a message located in the file). Everything
  * allocated lives in L->a, the scene_file's arena, except the scene_file's name indexes.
@@ -191,5 +194,18 @@ typedef struct layout_row {
 } layout_row;
 /* Reads the CSV at path (shown: its name in messages) into rows in the arena. */
 int sf_read_layout(loader *L, const char *path, const char *shown, layout_row **rows, uint32_t *n);
+/* The text file at path, whole and NUL-terminated, in the arena (*len its bytes); NULL with
+ * L->err set (shown: its name in messages). */
+char *sf_read_text_file(loader *L, const char *path, const char *shown, size_t *len);
+
+/* The scene file's digest into L->sf->digest, once every section is read (scene_file_digest.c). */
+int sf_digest(loader *L);
+
+/* --- the study (scene_file_study.c, scene_file_points.c) --- */
+int sf_read_study(loader *L); /* after the camera, its viewpoints and the objects */
+/* The viewpoints of a points file (a CSV by its name, else a point layer OGR reads; layer NULL:
+ * its only one) appended to L->sf->study.points, each eye_height above the ground unless the
+ * point gives its height, and facing the development unless it gives a heading. */
+int sf_read_points(loader *L, const char *path, const char *shown, const char *layer, double eye_height);
 
 #endif

@@ -1,7 +1,7 @@
 /* scene_file_spec.h — what a scene file says, once read and validated: its sections as specs
- * (shapes, materials, objects, groups, species, plants, trees, terrain, ecology, ztv, photo) and the
- * settings the scene copies (scene/scene_settings.h), gathered in the scene_file record that
- * scene_file_load() returns (scene_file.h).
+ * (shapes, materials, objects, groups, species, plants, trees, terrain, ecology, ztv, photo,
+ * study) and the settings the scene copies (scene/scene_settings.h), gathered in the scene_file
+ * record that scene_file_load() returns (scene_file.h).
  *
  * Ownership: a scene_file owns everything reachable from it (one arena); scene_file_free()
  * releases it all. The sylva_params it holds point into that arena and stay valid until then.
@@ -23,7 +23,8 @@
 typedef struct viewpoint {
     const char *name;
     camera_settings camera;
-    uint32_t line, column;  /* of its name */
+    const char *file;       /* where it is written: NULL for the scene file, else a study's points file */
+    uint32_t line, column;  /* of its name (of its row in a points file; 0 for a point OGR read) */
 } scene_viewpoint;
 
 typedef enum shape_kind {
@@ -194,6 +195,35 @@ typedef struct photo_settings {
     uint32_t line, column;
 } photo_settings;
 
+/* What a study renders from each viewpoint (`sylva study`, docs/study.md): the view without the
+ * development, with it, and the development's outline over the view without it. */
+typedef enum study_product { STUDY_EXISTING = 0, STUDY_PROPOSED = 1, STUDY_WIRELINE = 2 } study_product;
+#define STUDY_PRODUCTS 3u
+/* The frames a study renders each product in: a 50 mm lens on a full-frame sensor, a 53.5 degree
+ * planar view and a 90 degree cylindrical panorama (study/study_frames.h). */
+typedef enum study_frame { STUDY_SINGLE = 0, STUDY_PLANAR_53 = 1, STUDY_CYLINDRICAL_90 = 2 } study_frame;
+#define STUDY_FRAMES 3u
+
+/* The study: section: which viewpoints, products and frames `sylva study` renders, and at what
+ * size (docs/study.md). */
+typedef struct study_settings {
+    const char **viewpoints;    /* names of the scene's viewpoints, in rank order; NULL: all of them */
+    uint32_t n_viewpoints;
+    scene_viewpoint *points;    /* the viewpoints of the points file, in its order */
+    uint32_t n_points;
+    const char *points_file;    /* resolved, or NULL */
+    const char *points_layer;   /* the points file's layer (OGR), or NULL: its only one */
+    double eye_height;          /* metres above the ground for a point that gives none */
+    unsigned products;          /* bits 1u << study_product */
+    unsigned frames;            /* bits 1u << study_frame */
+    uint32_t size[2];           /* pixels of every frame; 0, 0: a width from print_width and dpi, or
+                                   the image's width, and the frame's own height for it */
+    double print_width_mm;      /* 0: no print size */
+    double dpi;                 /* pixels per inch of the print */
+    uint32_t spp;               /* 0: the image's */
+    uint32_t line, column;      /* of the section (of the file's start when absent) */
+} study_settings;
+
 #define COMMUNITY_MAX_SPECIES 16u
 
 /* A plant community of the landcover: section: the plants of one kind or class of ground,
@@ -261,11 +291,15 @@ typedef struct scene_file {
     const char **developments; uint32_t n_developments; /* names, in order of first mention */
     ztv_settings ztv;
     photo_settings photo;
+    study_settings study;
     landcover_spec landcover;
     canopy_spec canopy;
     material_spec *materials; uint32_t n_materials;
     name_index material_names;  /* name → index into materials; owned (its table) */
     name_index species_names;   /* name → index into species; owned (its table) */
+    uint64_t digest;            /* of what every render of the scene reads but the camera: the file's
+                                   sections but camera:, viewpoints: and study:, the files it includes
+                                   and its layouts (scene_file_digest.c) */
     struct arena *arena;        /* owns all of the above but the two indexes' tables */
 } scene_file;
 

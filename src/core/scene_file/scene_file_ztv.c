@@ -1,5 +1,7 @@
 /* scene_file_ztv.c — the ztv: section (what `sylva ztv` maps: observer height, radius, cell,
- * screening and the targets) and the developments' names, which objects and targets share. */
+ * screening and the targets), the developments' names, which objects and targets share, and
+ * where the development stands. */
+#include "scene_file/scene_file.h"
 #include "scene_file/scene_file_loader.h"
 
 #include <math.h>
@@ -20,6 +22,19 @@ int sf_development_index(loader *L, const char *name, const char *file, uint32_t
     }
     sf->developments[sf->n_developments] = name;
     return (int)sf->n_developments++;
+}
+
+int scene_file_development_place(const scene_file *sf, double at[2])
+{
+    double sum[2] = {0, 0};
+    uint32_t n = 0;
+    for (uint32_t k = 0; k < sf->n_objects; k++)
+        if (sf->objects[k].development) sum[0] += sf->objects[k].position[0], sum[1] += sf->objects[k].position[1], n++;
+    if (!n)
+        for (; n < sf->ztv.n_targets; n++) sum[0] += sf->ztv.targets[n].position[0], sum[1] += sf->ztv.targets[n].position[1];
+    if (!n) return -1;
+    at[0] = sum[0] / n, at[1] = sum[1] / n;
+    return 0;
 }
 
 /* targets: a list of {position, height_above_ground, development}. */

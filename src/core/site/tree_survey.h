@@ -1,5 +1,6 @@
 /* tree_survey.h — the trees of a survey file, as points in the site CRS with the attributes a
- * scene reads: species name, measured height, crown diameter and age, as text.
+ * scene reads: species name, measured height, crown diameter and age, as text. A study's file of
+ * viewpoints is read the same way (its name, eye height and heading in the first three slots).
  *
  * A survey is a point layer that OGR reads (GeoPackage, Shapefile, GeoJSON, ...) or a CSV
  * with x and y columns. Points come out in the site CRS: transformed through OSR/OCT in
@@ -37,6 +38,10 @@ typedef struct survey_request {
     const char *x_field, *y_field; /* CSV columns of the coordinates */
     const char *field[SURVEY_N_VALUES]; /* attribute names; NULL: not read */
     const char *site_wkt;       /* the site CRS as WKT */
+    const char *noun;           /* what a point is, in messages: "tree" when NULL (a study's
+                                   viewpoints read the same way: "viewpoint") */
+    unsigned optional;          /* bits 1u << k: field[k] may be absent from an OGR layer (its value
+                                   is then NULL at every point) */
 } survey_request;
 
 typedef struct survey_point {

@@ -32,6 +32,8 @@ static void list_names(char *buf, size_t size, int n, const char *(*name)(void *
 static const char *layer_name(void *ds, int i) { return OGR_L_GetName(GDALDatasetGetLayer(ds, i)); }
 static const char *field_name(void *defn, int i) { return OGR_Fld_GetNameRef(OGR_FD_GetFieldDefn(defn, i)); }
 
+static const char *noun(const survey_request *rq) { return rq->noun ? rq->noun : "tree"; }
+
 static OGRLayerH pick_layer(GDALDatasetH ds, const survey_request *rq, survey_key *bad_key, err_buf *err)
 {
     int n = GDALDatasetGetLayerCount(ds);
@@ -42,7 +44,8 @@ static OGRLayerH pick_layer(GDALDatasetH ds, const survey_request *rq, survey_ke
     *bad_key = rq->layer ? SURVEY_KEY_LAYER : SURVEY_KEY_FILE;
     if (!n) err_set(err, "'%s' has no layers", rq->shown);
     else if (rq->layer) err_set(err, "'%s' has no layer '%s'; its layers are %s", rq->shown, rq->layer, names);
-    else err_set(err, "'%s' has %d layers; name the trees' one with layer: (%s)", rq->shown, n, names);
+    else err_set(err, "'%s' has %d layers; name the %ss' one with %s (%s)", rq->shown, n, noun(rq),
+                 rq->noun ? "points_layer:" : "layer:", names);
     return NULL;
 }
 
@@ -52,7 +55,7 @@ static int find_fields(OGRFeatureDefnH defn, const survey_request *rq, int index
 {
     for (int k = 0; k < SURVEY_N_VALUES; k++) {
         index[k] = rq->field[k] ? OGR_FD_GetFieldIndex(defn, rq->field[k]) : -1;
-        if (!rq->field[k] || index[k] >= 0) continue;
+        if (!rq->field[k] || index[k] >= 0 || (rq->optional & 1u << k)) continue;
         char names[768];
         list_names(names, sizeof names, OGR_FD_GetFieldCount(defn), field_name, defn);
         *bad_key = value_key[k];
@@ -72,19 +75,21 @@ static int keep_text(arena *a, const char *s, const char **out)
     return n && !*out ? -1 : 0;
 }
 
-static int read_feature(arena *a, OGRFeatureH f, const int index[SURVEY_N_VALUES], const char *shown,
+static int read_feature(arena *a, OGRFeatureH f, const int index[SURVEY_N_VALUES], const survey_request *rq,
                         survey_point *p, err_buf *err)
 {
+    const char *shown = rq->shown;
     long long fid = (long long)OGR_F_GetFID(f);
     if (!(p->feature = arena_alloc(a, 32))) return err_nomem(err, "out of memory");
     snprintf((char *)p->feature, 32, "FID %lld", fid);
     OGRGeometryH g = OGR_F_GetGeometryRef(f);
     OGRwkbGeometryType t = g ? wkbFlatten(OGR_G_GetGeometryType(g)) : wkbNone;
     if (!g || OGR_G_IsEmpty(g))
-        return err_set(err, "'%s' %s has no geometry; every tree must be a point", shown, p->feature);
+        return err_set(err, "'%s' %s has no geometry; every %s must be a point", shown, p->feature, noun(rq));
     if (t != wkbPoint)
-        return err_set(err, "'%s' %s is a %s, not a point; a survey gives each tree as a point (its trunk)",
-                       shown, p->feature, OGRGeometryTypeToName(t));
+        return err_set(err, "'%s' %s is a %s, not a point; %s", shown, p->feature, OGRGeometryTypeToName(t),
+                       rq->noun ? "give each viewpoint as a point (the eye's place on the ground)"
+                                : "a survey gives each tree as a point (its trunk)");
     p->map[0] = OGR_G_GetX(g, 0), p->map[1] = OGR_G_GetY(g, 0);
     for (int k = 0; k < SURVEY_N_VALUES; k++) {
         p->value[k] = NULL;
@@ -105,12 +110,12 @@ static int read_layer(arena *a, OGRLayerH layer, const survey_request *rq, surve
         return err_set(err, "'%s' holds %lld features; a survey may hold at most %u", rq->shown, (long long)count,
                        SURVEY_MAX_POINTS);
     if (!(out->points = arena_alloc(a, (size_t)count * sizeof *out->points + 1)))
-        return err_nomem(err, "out of memory for %lld trees", (long long)count);
+        return err_nomem(err, "out of memory for %lld %ss", (long long)count, noun(rq));
     OGR_L_ResetReading(layer);
     int rc = 0;
     for (OGRFeatureH f; !rc && (f = OGR_L_GetNextFeature(layer));) {
         if (out->n == count) rc = err_set(err, "'%s' gave more features than it counted", rq->shown);
-        else rc = read_feature(a, f, index, rq->shown, &out->points[out->n++], err);
+        else rc = read_feature(a, f, index, rq, &out->points[out->n++], err);
         OGR_F_Destroy(f);
     }
     return rc;

@@ -13,7 +13,7 @@ double progress_now(void)
     return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
-static void format_seconds(char *buf, size_t n, double s)
+void progress_format_seconds(char *buf, size_t n, double s)
 {
     if (s < 0 || s != s) s = 0;
     if (s < 60) snprintf(buf, n, "%.1fs", s);
@@ -41,8 +41,8 @@ static void draw(progress *p, int final)
     double frac = p->total ? (double)p->done / (double)p->total : 1.0;
     if (frac > 1) frac = 1;
     char eta[32], elapsed[32];
-    format_seconds(elapsed, sizeof elapsed, el);
-    format_seconds(eta, sizeof eta, frac > 0 ? el / frac - el : 0);
+    progress_format_seconds(elapsed, sizeof elapsed, el);
+    progress_format_seconds(eta, sizeof eta, frac > 0 ? el / frac - el : 0);
     if (p->tty) {
         if (!final && now - p->last_draw < 0.1) return;
         p->last_draw = now;
@@ -79,6 +79,14 @@ void progress_set(progress *p, uint64_t done, uint64_t total)
     p->total = total;
     draw(p, 0);
     pthread_mutex_unlock(&p->lock);
+}
+
+double progress_eta(progress *p)
+{
+    pthread_mutex_lock(&p->lock);
+    double el = progress_now() - p->start, frac = p->total ? (double)p->done / (double)p->total : 1.0;
+    pthread_mutex_unlock(&p->lock);
+    return frac > 0 && frac < 1 ? el / frac - el : 0;
 }
 
 void progress_end(progress *p)

@@ -5,6 +5,7 @@
 #define SYLVA_PROGRESS_H
 
 #include <pthread.h>
+#include <stddef.h>
 #include <stdint.h>
 
 typedef struct progress {
@@ -22,6 +23,10 @@ void progress_begin(progress *p, const char *label, uint64_t total, int quiet);
 void progress_advance(progress *p, uint64_t n);
 /* Sets the absolute count (for plugins reporting done/total). */
 void progress_set(progress *p, uint64_t done, uint64_t total);
+/* Seconds left at the pace so far (0 before any progress is made). */
+double progress_eta(progress *p);
+/* Writes seconds as a duration ("4.2s", "3m07s", "1h02m") into buf. */
+void progress_format_seconds(char *buf, size_t n, double seconds);
 /* Prints the final line with the elapsed time. */
 void progress_end(progress *p);
 

@@ -1,5 +1,5 @@
 /* wireline.c — the development's outline and visible edges from a rendered frame's layers. */
-#include "montage/wireline.h"
+#include "render/wireline.h"
 
 #include <math.h>
 #include <stdlib.h>

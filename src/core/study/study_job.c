@@ -1,0 +1,123 @@
+/* study_job.c — one viewpoint in one frame rendered and written (study_job.h). */
+#include "study/study_job.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "geometry/scene_view.h"
+#include "render/accel.h"
+#include "render/camera.h"
+#include "render/render_still.h"
+#include "render/wireline.h"
+#include "scene/scene_mark.h"
+#include "scene_build/scene_ground.h"
+#include "scene_file/host_schema.h"
+#include "study/study_frames.h"
+
+int study_job_path(const study_job *j, int p, const char *ext, char out[STUDY_PATH_MAX], err_buf *err)
+{
+    int n = snprintf(out, STUDY_PATH_MAX, "%s/%s_%s.%s", j->folder, host_study_products[p],
+                     study_frame_of(j->frame)->name, ext);
+    return n > 0 && n < STUDY_PATH_MAX ? 0 : err_fail(err, ERR_USAGE, "the path of %s's files is too long", j->folder);
+}
+
+/* A camera that cannot be placed, said at the viewpoint (a point of a points file at its row). */
+static int view_error(const scene_viewpoint *v, const scene_file *sf, err_buf *err)
+{
+    char what[ERR_MSG_MAX], file[ERR_FILE_MAX];
+    snprintf(what, sizeof what, "%s", err_sentence(err));
+    snprintf(file, sizeof file, "%s", v->file ? v->file : err_has_place(err) ? err->file : sf->path);
+    uint32_t line = v->file || !err_has_place(err) ? v->line : err->line;
+    uint32_t column = v->file || !err_has_place(err) ? v->column : err->column;
+    return err_at(err, ERR_INPUT, file, line, column, "viewpoint '%s': %s", v->name, what);
+}
+
+/* The wireline of the development in `full` over the existing view `bg`, exposed at ev. */
+static int write_wireline(const scene *s, const study_job *j, const film *full, const film *bg, double ev,
+                          const char *png, const char *exr, err_buf *err)
+{
+    static const uint8_t red[3] = {255, 0, 0}, yellow[3] = {255, 220, 0};
+    camera cam;
+    camera_init(&cam, &s->camera, j->size[0], j->size[1]);
+    wireline wl = {0};
+    uint8_t *px = film_tonemap(bg, s->image.tone, ev); /* owned here */
+    if (!px) return err_nomem(err, "out of memory tone-mapping the wireline");
+    int rc = wireline_find(&wl, full, s, &cam, err);
+    if (!rc) {
+        wireline_draw(&wl, px, red, yellow);
+        film layers = *bg; /* the existing view's layers, borrowed, with the proposed view's development */
+        layers.development = full->development, layers.development_rgb = full->development_rgb;
+        rc = film_write_pair_pixels(&layers, &s->site, ev, px, png, exr, err);
+    }
+    wireline_free(&wl);
+    free(px);
+    return rc;
+}
+
+/* Every product of j written from the renders, each with its record after its files. */
+static int write_products(const scene *s, const study_job *j, const film *full, const film *bg, err_buf *err)
+{
+    double ev = render_still_exposure(s, full);
+    char png[STUDY_PATH_MAX], exr[STUDY_PATH_MAX], record[STUDY_PATH_MAX];
+    for (int p = 0; p < (int)STUDY_PRODUCTS; p++) {
+        if (!(j->todo & 1u << p)) continue;
+        if (study_job_path(j, p, "png", png, err) || study_job_path(j, p, "exr", exr, err) ||
+            study_job_path(j, p, "manifest", record, err))
+            return -1;
+        int rc = p == STUDY_PROPOSED ? film_write_pair(full, &s->site, s->image.tone, ev, png, exr, err)
+                 : p == STUDY_EXISTING ? film_write_pair(bg, &s->site, s->image.tone, ev, png, exr, err)
+                                       : write_wireline(s, j, full, bg, ev, png, exr, err);
+        if (rc || study_manifest_write(record, j->record[p], err)) return err_default(err, ERR_OUTPUT);
+    }
+    return 0;
+}
+
+/* The renders of j on its setup: the whole scene, and without the development when asked. */
+static int render_pair(scene *s, const study_job *j, const render_options *ro, phase_times *times, film **full,
+                       film **bg, uint32_t *renders, err_buf *err)
+{
+    render_setup *rs = render_setup_new(s, ro, err);
+    if (!rs) return err_default(err, ERR_INTERNAL);
+    render_stats st;
+    *full = render_setup_run(rs, ro, &st, err);
+    if (*full) {
+        phase_add(times, PHASE_BVH, st.bvh_seconds);
+        phase_add(times, PHASE_RENDER_SETUP, st.build_seconds - st.bvh_seconds);
+        phase_add(times, PHASE_RENDER, st.render_seconds);
+        ++*renders;
+    }
+    if (*full && (j->todo & (1u << STUDY_EXISTING | 1u << STUDY_WIRELINE))) {
+        render_options without = *ro;
+        without.leave_out |= ACCEL_MASK_DEVELOPMENT;
+        if ((*bg = render_setup_run(rs, &without, &st, err))) phase_add(times, PHASE_RENDER, st.render_seconds), ++*renders;
+    }
+    render_setup_free(rs);
+    int failed = !*full || (!*bg && (j->todo & (1u << STUDY_EXISTING | 1u << STUDY_WIRELINE)));
+    return failed ? err_default(err, ERR_INTERNAL) : 0;
+}
+
+int study_job_place(scene *s, const scene_file *sf, const study_job *j, err_buf *err)
+{
+    s->camera = j->camera;
+    return scene_ground_camera(s, sf, err) ? view_error(j->view, sf, err) : 0;
+}
+
+int study_job_run(scene *s, const scene_file *sf, const study_job *j, const render_options *ro, phase_times *times,
+                  uint32_t *renders, err_buf *err)
+{
+    if (study_job_place(s, sf, j, err)) return -1;
+    scene_mark mark = scene_mark_take(s);
+    const scene_view view = {.picture = 1, .width = j->size[0], .height = j->size[1], .quiet = 1};
+    film *full = NULL, *bg = NULL;
+    int rc = scene_view_prepare(s, &sf->ground_cover, &view, times, err);
+    if (!rc) rc = render_pair(s, j, ro, times, &full, &bg, renders, err);
+    phase_mark t_out = phase_start();
+    if (!rc) rc = write_products(s, j, full, bg, err);
+    phase_stop(times, PHASE_OUTPUT, t_out);
+    film_free(full);
+    film_free(bg);
+    err_buf rewind_err = {{0}};
+    if (scene_rewind(s, &mark, &rewind_err) && !rc) rc = (*err = rewind_err, -1);
+    return rc;
+}

@@ -473,6 +473,23 @@ TEST(huge_jpeg_frame)
     CHECK(p.rgb == NULL);
 }
 
+/* The fuzzer's JPEG: a segment whose length falls short of its data leaves a stray byte before
+ * the next marker, which libjpeg skips with a warning and then decodes the 65285 x 59651 frame
+ * behind it; the frame is found the same way and refused. */
+TEST(huge_jpeg_frame_behind_stray_bytes)
+{
+    char path[1200];
+    snprintf(path, sizeof path, "%s/fuzz/regressions/photo/jpeg_frame_65285x59651.jpg", SYLVA_TEST_DATA_DIR);
+    err_buf err = {{0}};
+    photo p = {0};
+    double t0 = harness_seconds();
+    CHECK_INT(photo_read(path, &p, &err), -1);
+    CHECK(harness_seconds() - t0 < 2.0);
+    CHECK_STR_CONTAINS(err.msg, "(65285x59651, as its JPEG frame states)");
+    CHECK_INT(err.status, ERR_LIMIT);
+    photo_free(&p);
+}
+
 /* A PNG that ends before its IEND chunk, whether in a chunk's header or just after a whole
  * chunk, is refused as cut short before it is decoded. */
 TEST(png_without_its_end)
@@ -502,4 +519,4 @@ TEST_LIST(TEST_CASE(cut_photographs_are_refused), TEST_CASE(exif_matches_exiftoo
           TEST_CASE(png_round_trip_linear), TEST_CASE(exif_instant), TEST_CASE(orientations),
           TEST_CASE(orientation_tag_honoured), TEST_CASE(sixteen_bit_png), TEST_CASE(memory_budget),
           TEST_CASE(errors_name_the_file), TEST_CASE(damaged_png_chunk),
-          TEST_CASE(png_without_its_end), TEST_CASE(huge_jpeg_frame))
+          TEST_CASE(png_without_its_end), TEST_CASE(huge_jpeg_frame), TEST_CASE(huge_jpeg_frame_behind_stray_bytes))

@@ -13,13 +13,19 @@ static int is_frame(int code)
     return code >= 0xC0 && code <= 0xCF && code != 0xC4 && code != 0xC8 && code != 0xCC;
 }
 
-/* The next marker's code after the bytes at f's position (FF fill bytes skipped), or -1. */
+/* The next marker's code from f's position, or -1 at the end of the file. As libjpeg does, bytes
+ * before the marker that are not FF are skipped (a damaged segment length leaves some; libjpeg
+ * only warns of them), as are FF fill bytes and FF 00 (a stuffed zero, not a marker). */
 static int next_marker(FILE *f)
 {
-    int c = fgetc(f);
-    if (c != 0xFF) return -1;
-    while ((c = fgetc(f)) == 0xFF) {}
-    return c == EOF ? -1 : c;
+    for (;;) {
+        int c;
+        while ((c = fgetc(f)) != 0xFF)
+            if (c == EOF) return -1;
+        while ((c = fgetc(f)) == 0xFF) {}
+        if (c == EOF) return -1;
+        if (c != 0) return c;
+    }
 }
 
 int jpeg_frame(const char *path, uint32_t *width, uint32_t *height, uint32_t *components)

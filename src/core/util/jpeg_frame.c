@@ -40,15 +40,14 @@ int jpeg_frame(const char *path, uint32_t *width, uint32_t *height, uint32_t *co
             unsigned char b[8];
             if (fread(b, 1, 2, f) != 2) break;
             long length = (long)b[0] << 8 | b[1];
-            if (length < 2) break;
             if (is_frame(code)) {
-                if (length < 8 || fread(b, 1, 6, f) != 6) break;
+                if (fread(b, 1, 6, f) != 6) break;
                 *height = (uint32_t)b[1] << 8 | b[2];
                 *width = (uint32_t)b[3] << 8 | b[4];
                 *components = b[5];
                 found = 1;
-            } else if (fseek(f, length - 2, SEEK_CUR) != 0) {
-                break;
+            } else if (length > 2 && fseek(f, length - 2, SEEK_CUR) != 0) {
+                break; /* a length below 2 skips nothing, as in libjpeg */
             }
         }
     }

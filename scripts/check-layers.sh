@@ -16,7 +16,7 @@ rank() { case $1 in util) echo 0;; io) echo 1;; params) echo 2;; plugin) echo 3;
 # named here. study/ is no back end: like the command line it drives the build (scene_build) and
 # reads its own study: section, then hands the built scene to the renderer.
 backend() { case $1 in geometry|render|pov|ztv|montage) return 0;; *) return 1;; esac; }
-reads_file() { case $1 in ztv/ztv_study.c|ztv/ztv_targets.c|montage/montage_run.c) return 0;; *) return 1;; esac; }
+reads_file() { case $1 in ztv/ztv_study.c|ztv/ztv_targets.c|ztv/ztv_features.c|montage/montage_run.c) return 0;; *) return 1;; esac; }
 bad=0
 for f in $(find . -name '*.[ch]' -o -name '*.cpp' | sed 's|^\./||'); do
   d=${f%%/*}; rd=$(rank $d)

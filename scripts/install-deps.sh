@@ -18,6 +18,7 @@ packages=(
   libgsl-dev             # photomontage camera match: nonlinear least squares (multifit_nlinear)
   libimage-exiftool-perl # exiftool: the EXIF tests compare what sylva reads with what it reports
   libopenmpi-dev openmpi-bin  # MPI: render and ztv split between ranks (docs/mpi.md); optional
+  chromium fonts-dejavu-core  # the study's index.html opened headless by its test (cli.study_index)
 )
 case ${1:-} in
   --bench) packages+=(blender) ;;  # never a build or test dependency

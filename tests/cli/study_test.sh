@@ -77,7 +77,7 @@ grep -q '3 products in .*; 3 to render' "$out/winter.log" && grep -q '^season_da
 "$sylva" study "$scene" -o "$out/p" --points "$points" --viewpoints gate,south --products proposed -q >/dev/null ||
   fail "--points exited with $?"
 got=$(cd "$out/p" && ls | tr '\n' ' ')
-[ "$got" = "gate south " ] || fail "--points --viewpoints gate,south wrote '$got'"
+[ "$got" = "gate index.html south " ] || fail "--points --viewpoints gate,south wrote '$got'"
 cmp -s "$out/p/south/proposed_single.png" "$out/r_south.png" || fail "south differs beside the points"
 
 # ground: levels of detail around the development

@@ -12,7 +12,7 @@ fail() { echo "FAIL: $*" >&2; fails=$((fails + 1)); }
 
 "$sylva" ztv "$scene" -o "$out/a" --threads 1 -q >/dev/null || fail "ztv exited with $?"
 "$sylva" ztv "$scene" -o "$out/b" --threads 2 -q >/dev/null || fail "ztv --threads 2 exited with $?"
-want="ztv_all.png ztv_all.tif ztv_bare.png ztv_bare.tif ztv_hidden_all.png ztv_hidden_all.tif ztv_summary.csv ztv_summary.json"
+want="ztv_all.png ztv_all.qml ztv_all.tif ztv_bare.png ztv_bare.qml ztv_bare.tif ztv_developments.qml ztv_distance_rings.qml ztv_hidden_all.png ztv_hidden_all.tif ztv_layers.gpkg ztv_summary.csv ztv_summary.json ztv_viewpoints.qml"
 got=$(cd "$out/a" && ls -A | tr '\n' ' ' | sed 's/ $//')
 [ "$got" = "$want" ] || fail "files: '$got', expected '$want'"
 for f in $want; do

@@ -2,6 +2,7 @@
  * development, with it, and its wireline) in every frame asked for, from one build of the scene
  * (study/study_run.h, docs/study.md). Under mpirun each rank builds the scene and renders whole
  * images: every N-th viewpoint-frame to render. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -12,7 +13,9 @@
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
+#include "scene/scene_surveyed.h"
 #include "study/study_run.h"
+#include "ztv/ztv_study.h"
 
 static const char study_about[] =
     "Renders SCENE's viewpoints for a visual-impact study from one build of the scene: for\n"
@@ -41,13 +44,33 @@ static void report(const study_report *r, int ranks)
     fprintf(stderr, "study%s: %u product%s written, %u up to date; %u scene build%s, %u frame%s rendered; total "
             "%.2fs (scene %.2fs)\n", share, r->rendered, r->rendered == 1 ? "" : "s", r->kept, r->builds,
             r->builds == 1 ? "" : "s", r->renders, r->renders == 1 ? "" : "s", r->seconds, r->build_seconds);
+    if (r->ztv) fprintf(stderr, "study: the ZTV %s\n", r->ztv == 1 ? "mapped into ztv/" : "up to date in ztv/");
     if (r->renders) phase_times_print(&r->times, stderr);
+}
+
+/* The study's visibility map (study/study_ztv.h): `sylva ztv`'s on the scene the study built, traced
+ * on the ground as surveyed, as `sylva ztv` traces it, not the ground refined for the views. */
+static int study_map_ztv(void *user, const scene_file *sf, const scene *s, const study_views *views, const char *dir,
+                         const run_parts *parts, phase_times *times, err_buf *err)
+{
+    const study_options *o = user;
+    scene_surveyed surveyed; /* the same scene on the DTM as surveyed, its plants standing on it */
+    if (scene_surveyed_view(s, &surveyed, err)) return -1;
+    ztv_study_options zo = {.dir = dir, .radius = NAN, .cell = NAN, .eye = NAN, .screening = -1,
+                            .threads = o->build.threads, .quiet = o->build.quiet, .views = views->views,
+                            .n_views = views->n};
+    phase_times own = {0}; /* the map's phases, printed as its own and added to the study's */
+    int rc = ztv_study_run(sf, &surveyed.view, &zo, parts, &own, err);
+    for (int p = 0; p < PHASE_COUNT; p++) phase_add(times, (job_phase)p, own.seconds[p]);
+    scene_surveyed_free(&surveyed);
+    return rc;
 }
 
 static int study_main(cli_mpi *m, int argc, char **argv)
 {
     const char *scene_path = NULL, *season = NULL, *points = NULL, *points_layer = NULL;
-    study_options o = {0};
+    study_options o = {.ztv = {.map = study_map_ztv}};
+    o.ztv.user = &o;
     uint32_t width = 0;
     const cli_option options[] = {
         {.names = "-o, --output", .type = CLI_PATH, .value = "DIR", .target = &o.dir, .flags = CLI_REQUIRED,
@@ -61,8 +84,8 @@ static int study_main(cli_mpi *m, int argc, char **argv)
         CLI_OPT_TEXT("--only", "LIST", o.names.only, "render only these viewpoints of the study (the rest are "
                      "left as they are)"),
         CLI_OPT_TEXT("--rank", "LIST", o.names.rank, "render these viewpoints first, in this order"),
-        CLI_OPT_TEXT("--products", "LIST", o.products, "existing, proposed, wireline (default: the study's, else "
-                     "all three)"),
+        CLI_OPT_TEXT("--products", "LIST", o.products, "existing, proposed, wireline, ztv (default: the study's, "
+                     "else the first three, and ztv when the scene has a ztv: section)"),
         CLI_OPT_TEXT("--frames", "LIST", o.frames, "single, planar_53, cylindrical_90 (default: the study's, else "
                      "single)"),
         CLI_OPT_SIZE("--size", o.size[0], o.size[1], "every frame at WxH pixels (overrides study: size and "

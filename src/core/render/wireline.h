@@ -2,10 +2,15 @@
  * verification shows them, drawn over the photograph so the rendered development can be checked
  * against the view.
  *
- * The edges are found in the rendered frame's centre-ray layers (render/film.h): a pixel that
- * shows a development object (or its new planting) is on the outline when a neighbour (left, right, above, below)
- * shows anything else (the sky, the ground, a tree in front, another object), and on an inner
- * edge when a neighbour shows another part of the development, a face turned more than
+ * The edges are found in the rendered frame's centre-ray layers (render/film.h). The outline is
+ * the development's silhouette: the pixels that show a development object (or its new planting),
+ * with gaps of up to 2 * WIRELINE_CLOSING pixels closed and every hole filled (but a hole that
+ * shows something nearer than all of the development, a tree in front), so that a lattice
+ * tower or another open structure is drawn as one closed contour round each part in view, not as
+ * the edges of its members; a pixel of the silhouette is on the outline when a neighbour (left,
+ * right, above, below) is outside it. A development pixel inside is on an inner edge when a
+ * neighbour shows something else through the structure (a gap between members), another part
+ * of the development, a face turned more than
  * WIRELINE_CREASE_DEG from its own, or a point off the pixel's own surface by more than
  * WIRELINE_DEPTH_STEP of its distance (a wing of a building in front of another: the points
  * are placed from the depth layer along the camera's rays). Only what the camera sees is drawn: a part hidden
@@ -25,6 +30,7 @@
 #include "util/err.h"
 
 #define WIRELINE_CREASE_DEG 25.0  /* normals of neighbouring pixels farther apart are an edge */
+#define WIRELINE_CLOSING 2        /* pixels: gaps of the development up to twice this are closed */
 #define WIRELINE_DEPTH_STEP 0.02  /* a neighbour's point off the pixel's tangent plane by this share
                                    * of the pixel's distance is an edge */
 
@@ -42,7 +48,7 @@ int wireline_find(wireline *w, const film *f, const scene *s, const camera *c, e
 void wireline_free(wireline *w); /* accepts a zeroed one */
 
 /* Paints the wireline over rgb (8-bit, 3 per pixel, w->width x w->height): the outline in
- * outline_rgb, the inner edges in edge_rgb. */
+ * outline_rgb, the inner edges in edge_rgb (NULL: the outline alone). */
 void wireline_draw(const wireline *w, uint8_t *rgb, const uint8_t outline_rgb[3], const uint8_t edge_rgb[3]);
 
 #endif

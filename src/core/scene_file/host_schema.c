@@ -406,7 +406,7 @@ const host_schema host_schema_photo = {"photo", "The photograph of a photomontag
                                        COUNT(photo_params)};
 
 /* --- study -------------------------------------------------------------------------------- */
-const char *const host_study_products[] = {"existing", "proposed", "wireline", NULL};
+const char *const host_study_products[] = {"existing", "proposed", "wireline", "ztv", NULL};
 const char *const host_study_frames[] = {"single", "planar_53", "cylindrical_90", NULL};
 static const double no_size[2] = {0, 0};
 static const sylva_param_spec study_params[] = {
@@ -423,7 +423,8 @@ static const sylva_param_spec study_params[] = {
      .help = "Eye height above the ground of a point that gives no height_above_ground."},
     {.name = "products", .type = SYLVA_P_STRING, .def_str = "existing proposed wireline",
      .help = "What each viewpoint gives: existing (the view without the development), proposed (with it), "
-             "wireline (the development's outline over the existing view); a list or names separated by "
+             "wireline (the development's outline over the existing view); and once for the study, ztv (its "
+             "visibility map, made anyway when the scene has a ztv: section); a list or names separated by "
              "spaces or commas."},
     {.name = "frames", .type = SYLVA_P_STRING, .def_str = "single",
      .help = "The frames of each product: single (50 mm on a full-frame sensor, 39.6 x 27 degrees), planar_53 "
@@ -440,6 +441,9 @@ static const sylva_param_spec study_params[] = {
      .help = "Pixels per inch of the print (with print_width)."},
     {.name = "spp", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 0, .min = 0, .max = 1 << 20,
      .help = "Samples per pixel (0: the image's spp)."},
+    {.name = "inner_edges", .type = SYLVA_P_BOOL, .def = 1,
+     .help = "Whether the wireline draws the development's inner edges (yellow) inside its outline (red, the "
+             "silhouette); false: the outline alone, as for a lattice tower seen as one shape."},
 };
 const host_schema host_schema_study = {
     "study", "The viewpoints, products and frames `sylva study` renders from one build of the scene.",

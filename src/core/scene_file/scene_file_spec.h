@@ -177,6 +177,7 @@ typedef struct ztv_settings {
     uint32_t samples;
     const double *target_heights; uint32_t n_target_heights;
     ztv_target_spec *targets; uint32_t n_targets;
+    int given;                /* 1: the scene has a ztv: section (a study then maps it) */
     uint32_t line, column;    /* of the section (of the file's start when absent) */
 } ztv_settings;
 
@@ -198,7 +199,10 @@ typedef struct photo_settings {
 /* What a study renders from each viewpoint (`sylva study`, docs/study.md): the view without the
  * development, with it, and the development's outline over the view without it. */
 typedef enum study_product { STUDY_EXISTING = 0, STUDY_PROPOSED = 1, STUDY_WIRELINE = 2 } study_product;
-#define STUDY_PRODUCTS 3u
+#define STUDY_PRODUCTS 3u /* the products of each viewpoint */
+/* The study's own product, made once for every viewpoint: its visibility map (docs/study.md, "The
+ * ZTV"), named `ztv` beside the others. */
+#define STUDY_ZTV 3u
 /* The frames a study renders each product in: a 50 mm lens on a full-frame sensor, a 53.5 degree
  * planar view and a 90 degree cylindrical panorama (study/study_frames.h). */
 typedef enum study_frame { STUDY_SINGLE = 0, STUDY_PLANAR_53 = 1, STUDY_CYLINDRICAL_90 = 2 } study_frame;
@@ -221,6 +225,7 @@ typedef struct study_settings {
     double print_width_mm;      /* 0: no print size */
     double dpi;                 /* pixels per inch of the print */
     uint32_t spp;               /* 0: the image's */
+    int inner_edges;            /* 1: the wireline draws inner edges inside the silhouette */
     uint32_t line, column;      /* of the section (of the file's start when absent) */
 } study_settings;
 

@@ -140,6 +140,7 @@ int sf_read_study(loader *L)
     if (params_validate(L->a, section, keys, n_keys, &scope, &p, L->err) || read_size(L, p)) return -1;
     st->eye_height = sylva_param_real(p, "eye_height");
     st->spp = (uint32_t)sylva_param(p, "spp")->i;
+    st->inner_edges = (int)sylva_param_int(p, "inner_edges");
     st->points_layer = sylva_param(p, "points_layer")->s;
     const sylva_value *points = sylva_param(p, "points");
     if (points->is_set) {

@@ -89,6 +89,7 @@ int sf_read_ztv(loader *L)
     const ynode_pair *pr = ynode_get_pair(L->root, "ztv");
     ztv_settings *z = &L->sf->ztv;
     z->line = pr ? pr->key_line : L->root->line, z->column = pr ? pr->key_column : L->root->column;
+    z->given = pr != NULL;
     static const char *const targets_key[] = {"targets"};
     uint32_t n_keys;
     const sylva_param_spec *keys = sf_keys_without(L, &host_schema_ztv, targets_key, 1, &n_keys);

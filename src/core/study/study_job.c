@@ -35,7 +35,7 @@ static int view_error(const scene_viewpoint *v, const scene_file *sf, err_buf *e
 
 /* The wireline of the development in `full` over the existing view `bg`, exposed at ev. */
 static int write_wireline(const scene *s, const study_job *j, const film *full, const film *bg, double ev,
-                          const char *png, const char *exr, err_buf *err)
+                          int inner_edges, const char *png, const char *exr, err_buf *err)
 {
     static const uint8_t red[3] = {255, 0, 0}, yellow[3] = {255, 220, 0};
     camera cam;
@@ -45,7 +45,7 @@ static int write_wireline(const scene *s, const study_job *j, const film *full, 
     if (!px) return err_nomem(err, "out of memory tone-mapping the wireline");
     int rc = wireline_find(&wl, full, s, &cam, err);
     if (!rc) {
-        wireline_draw(&wl, px, red, yellow);
+        wireline_draw(&wl, px, red, inner_edges ? yellow : NULL);
         film layers = *bg; /* the existing view's layers, borrowed, with the proposed view's development */
         layers.development = full->development, layers.development_rgb = full->development_rgb;
         rc = film_write_pair_pixels(&layers, &s->site, ev, px, png, exr, err);
@@ -56,7 +56,8 @@ static int write_wireline(const scene *s, const study_job *j, const film *full, 
 }
 
 /* Every product of j written from the renders, each with its record after its files. */
-static int write_products(const scene *s, const study_job *j, const film *full, const film *bg, err_buf *err)
+static int write_products(const scene *s, const scene_file *sf, const study_job *j, const film *full, const film *bg,
+                          err_buf *err)
 {
     double ev = render_still_exposure(s, full);
     char png[STUDY_PATH_MAX], exr[STUDY_PATH_MAX], record[STUDY_PATH_MAX];
@@ -67,7 +68,7 @@ static int write_products(const scene *s, const study_job *j, const film *full, 
             return -1;
         int rc = p == STUDY_PROPOSED ? film_write_pair(full, &s->site, s->image.tone, ev, png, exr, err)
                  : p == STUDY_EXISTING ? film_write_pair(bg, &s->site, s->image.tone, ev, png, exr, err)
-                                       : write_wireline(s, j, full, bg, ev, png, exr, err);
+                                       : write_wireline(s, j, full, bg, ev, sf->study.inner_edges, png, exr, err);
         if (rc || study_manifest_write(record, j->record[p], err)) return err_default(err, ERR_OUTPUT);
     }
     return 0;
@@ -113,7 +114,7 @@ int study_job_run(scene *s, const scene_file *sf, const study_job *j, const rend
     int rc = scene_view_prepare(s, &sf->ground_cover, &view, times, err);
     if (!rc) rc = render_pair(s, j, ro, times, &full, &bg, renders, err);
     phase_mark t_out = phase_start();
-    if (!rc) rc = write_products(s, j, full, bg, err);
+    if (!rc) rc = write_products(s, sf, j, full, bg, err);
     phase_stop(times, PHASE_OUTPUT, t_out);
     film_free(full);
     film_free(bg);

@@ -9,6 +9,7 @@
 #include "scene_build/scene_build.h"
 #include "scene_file/host_schema.h"
 #include "study/study_frames.h"
+#include "study/study_index.h"
 #include "study/study_job.h"
 #include "util/name_list.h"
 #include "util/progress.h"
@@ -21,6 +22,10 @@ typedef struct study_plan {
     study_views views;
     study_job *jobs;              /* views.n times the frames; owned */
     uint32_t n_jobs, n_todo;      /* n_todo: the jobs with a product to render */
+    int ztv, ztv_todo;            /* the visibility map asked for; and to be made */
+    study_views ztv_views;        /* the viewpoints it numbers: the study's, --only or not */
+    char ztv_dir[STUDY_PATH_MAX];
+    char *ztv_record;             /* owned */
 } study_plan;
 
 /* The bit mask of `text`'s names among choices (option: --products, --frames). */
@@ -41,6 +46,24 @@ static int names_mask(const char *text, const char *const *choices, const char *
         *mask |= 1u << k;
     }
     return *mask ? 0 : err_fail(err, ERR_USAGE, "%s names nothing", option);
+}
+
+/* The visibility map: asked for by the products, or by the scene's ztv: section when --products
+ * does not say; kept when its files and record are there (and no --force). */
+static int plan_ztv(const scene_file *sf, const study_options *o, study_plan *p, study_report *rep, err_buf *err)
+{
+    p->ztv = (p->products >> STUDY_ZTV & 1u) || (sf->ztv.given && !o->products);
+    if (!p->ztv) return 0;
+    study_view_names all = o->names;
+    all.only = NULL;
+    int n = snprintf(p->ztv_dir, sizeof p->ztv_dir, "%s/ztv", o->dir);
+    if (n < 0 || (size_t)n >= sizeof p->ztv_dir) return err_fail(err, ERR_USAGE, "%s: the path is too long", o->dir);
+    if (study_views_pick(sf, &all, &p->ztv_views, err)) return -1;
+    if (!(p->ztv_record = malloc(STUDY_ZTV_RECORD_MAX))) return err_nomem(err, "out of memory planning the study");
+    if (study_ztv_record(sf, &p->ztv_views, p->ztv_record, err)) return -1;
+    p->ztv_todo = o->force && !o->names.only ? 1 : !study_ztv_current(p->ztv_dir, p->ztv_record);
+    rep->ztv = p->ztv_todo ? 1 : 2;
+    return 0;
 }
 
 static int has_development(const scene_file *sf)
@@ -91,6 +114,9 @@ static int plan_job(const scene_file *sf, const study_options *o, const study_pl
                           .height = j->size[1], .spp = p->spp, .seed = sf->image.seed,
                           .season_day = sf->season.day};
         study_manifest_text(&r, j->record[k]);
+        if (k == STUDY_WIRELINE) /* what the wireline draws, in its record alone */
+            snprintf(j->record[k] + strlen(j->record[k]), STUDY_MANIFEST_MAX - strlen(j->record[k]),
+                     "inner_edges %d\n", sf->study.inner_edges);
         char png[STUDY_PATH_MAX], exr[STUDY_PATH_MAX], record[STUDY_PATH_MAX];
         if (study_job_path(j, k, "png", png, err) || study_job_path(j, k, "exr", exr, err) ||
             study_job_path(j, k, "manifest", record, err))
@@ -214,12 +240,25 @@ static scene *build_once(const scene_file *sf, const plugin_registry *reg, const
     return s;
 }
 
+/* DIR/index.html over the whole study's viewpoints (--only or not), numbered as the ZTV numbers them. */
+static int write_index(const scene_file *sf, const study_options *o, const study_plan *p, err_buf *err)
+{
+    if (p->ztv) return study_index_write(sf, &p->ztv_views, o->dir, err);
+    study_view_names all = o->names;
+    all.only = NULL;
+    study_views views = {0};
+    int rc = study_views_pick(sf, &all, &views, err) || study_index_write(sf, &views, o->dir, err) ? -1 : 0;
+    study_views_free(&views);
+    return rc;
+}
+
 static void say_plan(const study_options *o, const study_plan *p, const study_report *rep)
 {
     if (o->build.quiet) return;
-    fprintf(stderr, "study: %u viewpoint%s, %u frame%s each: %u products in %s; %u to render, %u up to date\n",
+    fprintf(stderr, "study: %u viewpoint%s, %u frame%s each: %u products in %s; %u to render, %u up to date%s\n",
             rep->viewpoints, rep->viewpoints == 1 ? "" : "s", p->views.n ? rep->jobs / p->views.n : 0,
-            rep->jobs == p->views.n ? "" : "s", rep->products, o->dir, rep->products - rep->kept, rep->kept);
+            rep->jobs == p->views.n ? "" : "s", rep->products, o->dir, rep->products - rep->kept, rep->kept,
+            !p->ztv ? "" : p->ztv_todo ? "; the ZTV to map" : "; the ZTV up to date");
 }
 
 int study_run(scene_file *sf, const plugin_registry *reg, const study_options *o, const run_parts *parts,
@@ -229,16 +268,23 @@ int study_run(scene_file *sf, const plugin_registry *reg, const study_options *o
     double t0 = progress_now();
     study_plan p = {0};
     int rc = plan_settings(sf, o, &p, err) || study_views_pick(sf, &o->names, &p.views, err) ||
-             plan_jobs(sf, o, &p, rep, err) ? -1 : 0;
+             plan_jobs(sf, o, &p, rep, err) || plan_ztv(sf, o, &p, rep, err) ? -1 : 0;
     if (parts->agree(parts->job, rc, err)) rc = -1; /* every part has looked before any writes */
     if (!rc) say_plan(o, &p, rep);
     scene *s = NULL;
-    if (!rc && p.n_todo && !(s = build_once(sf, reg, o, rep, err))) rc = -1;
+    if (!rc && (p.n_todo || p.ztv_todo) && !(s = build_once(sf, reg, o, rep, err))) rc = -1;
     if (!rc && s && parts->same_scene(parts->job, s, err)) rc = err_default(err, ERR_INPUT);
     if (!rc && s) rc = render_jobs(s, sf, o, &p, parts, rep, err);
+    if (p.ztv_todo && parts->agree(parts->job, rc, err)) rc = -1; /* every part maps, or none */
+    if (!rc && p.ztv_todo)
+        rc = study_ztv_make(&o->ztv, sf, s, &p.ztv_views, p.ztv_dir, p.ztv_record, parts, &rep->times, err);
+    if (parts->agree(parts->job, rc, err)) rc = -1; /* every part's files are there before the index */
+    if (!rc && !parts->part) rc = output_folder_make(o->dir, err) || write_index(sf, o, &p, err) ? -1 : 0;
     scene_free(s);
     free(p.jobs);
+    free(p.ztv_record);
     study_views_free(&p.views);
+    study_views_free(&p.ztv_views);
     rep->seconds = progress_now() - t0;
     return rc;
 }

@@ -10,6 +10,9 @@
  * viewpoint; then each viewpoint in each frame is rendered as one job (study_job.h), in rank
  * order, with a line of progress and the study's time left after each.
  *
+ * With the scene's ztv: section (or the product ztv asked for) the study's visibility map is made
+ * once from the same build, after the views, into DIR/ztv/ (study_ztv.h).
+ *
  * Split between the parts of a job (an MPI job, util/run_parts.h), each part builds the scene
  * and renders whole jobs, shared by their samples (frame pixels times spp, twice for a pair):
  * the largest first, each to the part with the least work so far, so every part computes the
@@ -26,6 +29,7 @@
 #include "scene_build/build_options.h"
 #include "scene_file/scene_file.h"
 #include "study/study_views.h"
+#include "study/study_ztv.h"
 #include "util/err.h"
 #include "util/phase_times.h"
 #include "util/run_parts.h"
@@ -41,6 +45,7 @@ typedef struct study_options {
     uint32_t spp;                 /* 0: the section's, else the image's */
     int force;                    /* 1: render every product, kept or not */
     build_options build;          /* threads, quiet, verbose; its ground is set here */
+    study_ztv ztv;                /* how the study's visibility map is made (study_ztv.h) */
 } study_options;
 
 typedef struct study_report {
@@ -49,6 +54,7 @@ typedef struct study_report {
     uint32_t kept;                /* of which up to date and kept */
     uint32_t rendered;            /* written by this part */
     uint32_t renders, builds;     /* frames rendered and scenes built by this part */
+    int ztv;                      /* the visibility map: 0 not asked for, 1 made, 2 up to date and kept */
     double build_seconds, seconds;
     phase_times times;            /* this part's */
 } study_report;

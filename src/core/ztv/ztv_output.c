@@ -12,10 +12,13 @@
 #include "io/atomic_file.h"
 #include "io/raster_canvas.h"
 #include "ztv/ztv_geotiff.h"
+#include "ztv/ztv_layers.h"
 #include "ztv/ztv_map.h"
+#include "ztv/ztv_qml.h"
 #include "ztv/ztv_summary.h"
 
-#define MAX_FILES 16 /* pictures and tables: 3 modes, 2 hidden, 3 cumulative, 2 summaries */
+#define MAX_FILES 24 /* pictures and tables: 3 modes, 2 hidden, 3 cumulative, 2 summaries, the
+                     * GeoPackage, its 3 styles and a style per mode */
 
 struct ztv_output {
     const ztv_info *info;            /* borrowed */
@@ -249,6 +252,41 @@ static int write_table(ztv_output *o, table_fn write, const char *name, err_buf 
     return write(o->summary, f, err) ? err_prefix(err, "%s: ", path) : 0;
 }
 
+/* The GeoPackage of the viewpoints, rings and structures (ztv_layers.h). */
+static int write_layers(ztv_output *o, err_buf *err)
+{
+    char path[ATOMIC_PATH_MAX];
+    file_path(o, "ztv_layers.gpkg", -1, "", path, sizeof path);
+    atomic_file *af = &o->files[o->n_files];
+    FILE *f = atomic_file_open_stream(af, path, err);
+    if (!f) return -1;
+    o->n_files++;
+    return ztv_layers_write(o->info, f, err) ? err_prefix(err, "%s: ", path) : 0;
+}
+
+/* A QGIS style into a file named prefix + mode (m >= 0) + ".qml". */
+static int write_style(ztv_output *o, ztv_qml_style style, const char *prefix, int m, err_buf *err)
+{
+    char path[ATOMIC_PATH_MAX];
+    file_path(o, prefix, m, ".qml", path, sizeof path);
+    atomic_file *af = &o->files[o->n_files];
+    FILE *f = atomic_file_open_stream(af, path, err);
+    if (!f) return -1;
+    o->n_files++;
+    return fputs(ztv_qml_text(style), f) < 0 ? err_fail(err, ERR_OUTPUT, "%s: cannot write the style", path) : 0;
+}
+
+static int write_styles(ztv_output *o, err_buf *err)
+{
+    if (write_layers(o, err) || write_style(o, ZTV_QML_VIEWPOINTS, "ztv_viewpoints", -1, err) ||
+        write_style(o, ZTV_QML_RINGS, "ztv_distance_rings", -1, err) ||
+        write_style(o, ZTV_QML_DEVELOPMENTS, "ztv_developments", -1, err))
+        return -1;
+    for (int m = 0; m < ZTV_MODES; m++)
+        if (o->info->computed[m] && write_style(o, ZTV_QML_VISIBILITY, "ztv_", m, err)) return -1;
+    return 0;
+}
+
 int ztv_output_finish(ztv_output *o, err_buf *err)
 {
     if (o->failed || o->finished)
@@ -271,7 +309,7 @@ int ztv_output_finish(ztv_output *o, err_buf *err)
             return -1;
     }
     if (write_table(o, ztv_summary_write_csv, "ztv_summary.csv", err) ||
-        write_table(o, ztv_summary_write_json, "ztv_summary.json", err))
+        write_table(o, ztv_summary_write_json, "ztv_summary.json", err) || write_styles(o, err))
         return -1;
     /* everything is written: rename it all into place */
     for (int m = 0; m < ZTV_MODES; m++) {

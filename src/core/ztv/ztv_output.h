@@ -1,7 +1,9 @@
 /* ztv_output.h — the files of a visibility map in its output folder (docs/ztv.md, "Outputs"):
  * per computed mode ztv_MODE.tif and ztv_MODE.png, per screened mode ztv_hidden_MODE.tif and
  * ztv_hidden_MODE.png, with several developments ztv_cumulative_MODE.png, and
- * ztv_summary.csv / ztv_summary.json. The tracer hands the blocks of rows over as it makes
+ * ztv_summary.csv / ztv_summary.json, the GeoPackage ztv_layers.gpkg (viewpoints, distance rings,
+ * structures; ztv_layers.h) and QGIS styles (ztv_qml.h): ztv_viewpoints.qml,
+ * ztv_distance_rings.qml, ztv_developments.qml and ztv_MODE.qml beside each ztv_MODE.tif. The tracer hands the blocks of rows over as it makes
  * them; memory stays bounded whatever the grid (GeoTIFFs are streamed, the maps drawn from a
  * reduced copy, the summary counts). Every file is written under a temporary name and renamed
  * into place at the end, so an interrupted or failed run leaves nothing behind.

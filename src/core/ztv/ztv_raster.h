@@ -71,6 +71,24 @@ typedef struct ztv_block {
     const ztv_layer *layer[ZTV_MODES];  /* NULL for a mode not computed */
 } ztv_block;
 
+/* A viewpoint of the study, as the GeoPackage beside the map lists it (ztv/ztv_layers.h). */
+typedef struct ztv_viewpoint {
+    const char *name;            /* borrowed from the scene file */
+    uint32_t number;             /* 1, 2, ...: its place in the study's order */
+    double xy[2];                /* local horizontal position */
+    double eye_height;           /* metres above the ground */
+    double heading;              /* degrees clockwise from grid north, 0 to 360; NAN: straight up or down */
+    double ground;               /* local height of the ground under it; NAN off the terrain */
+} ztv_viewpoint;
+
+/* A structure of a development (an object marked development: true, a layout's row), as placed. */
+typedef struct ztv_structure {
+    const char *name;            /* borrowed from the scene file */
+    const char *development;     /* the development it belongs to; borrowed */
+    double xy[2];                /* local horizontal position */
+    double base, top;            /* local heights of its lowest and highest point */
+} ztv_structure;
+
 /* What the writers need to know of the map besides its cells. */
 typedef struct ztv_info {
     ztv_grid grid;
@@ -91,6 +109,10 @@ typedef struct ztv_info {
                                             * (the centre of its targets) */
     const double (*target_xy)[2];          /* n_targets: local horizontal positions */
     const uint32_t *target_development;    /* n_targets: development index */
+    const ztv_viewpoint *viewpoints;       /* n_viewpoints, in the study's order (may be 0) */
+    uint32_t n_viewpoints;
+    const ztv_structure *structures;       /* n_structures (may be 0: targets given by hand) */
+    uint32_t n_structures;
 } ztv_info;
 
 #endif

@@ -12,6 +12,7 @@
 #include "site/ground_departure.h"
 #include "scene/heightfield.h"
 #include "scene_file/scene_file.h"
+#include "ztv/ztv_features.h"
 #include "ztv/ztv_grid.h"
 #include "ztv/ztv_output.h"
 #include "ztv/ztv_trace.h"
@@ -111,15 +112,18 @@ static void describe_ground(const scene *sc, const ztv_grid *g, const run_parts 
 /* Part 0 opens the output (the folder created when missing) for the job's grid and targets,
  * described in *info, which the caller keeps until the output is freed (ztv_output.h). */
 static int open_output(const scene_file *sf, const scene *sc, const ztv_job *job, const ztv_study_options *o,
-                       const char *ground, ztv_info *info, ztv_output **out, err_buf *err)
+                       const char *ground, ztv_features *features, ztv_info *info, ztv_output **out, err_buf *err)
 {
     const ztv_targets *t = job->targets;
+    if (ztv_features_gather(features, sf, sc, o->views, o->n_views, err)) return err_default(err, ERR_NOMEM);
     *info = (ztv_info){.grid = job->grid, .crs_wkt = sf->site.crs_wkt, .crs_name = sf->site.crs_name,
                      .observer_height = o->eye, .ground = ground, .radius = o->radius,
                      .curvature = job->earth && job->earth->curvature, .refraction = sc->earth.refraction,
                      .n_targets = t->n, .n_developments = t->n_developments, .development_names = t->names,
                      .development_xy = (const double(*)[2])t->centre, .target_xy = (const double(*)[2])t->xy,
-                     .target_development = t->development};
+                     .target_development = t->development, .viewpoints = features->viewpoints,
+                     .n_viewpoints = features->n_viewpoints, .structures = features->structures,
+                     .n_structures = features->n_structures};
     if (sf->site.crs_wkt) memcpy(info->origin, sf->site.origin, sizeof info->origin);
     info->computed[ZTV_BARE] = 1;
     info->computed[job->screened] = 1;
@@ -177,6 +181,7 @@ int ztv_study_run(const scene_file *sf, const scene *sc, const ztv_study_options
     accel acc = {0};
     ztv_output *out = NULL;
     ztv_info info; /* what out describes; lives as long as out */
+    ztv_features features = {0}; /* the viewpoints and structures info points to */
     ztv_job job = {.scene = sc, .accel = &acc, .targets = &targets, .observer_height = o.eye, .radius = o.radius,
                    .screened = (ztv_mode)o.screening, .earth = o.flat_earth ? NULL : &sc->earth,
                    .threads = o.threads, .quiet = o.quiet, .part = (uint32_t)parts->part,
@@ -203,10 +208,11 @@ int ztv_study_run(const scene_file *sf, const scene *sc, const ztv_study_options
     phase_stop(times, PHASE_BVH, t_phase);
     char ground[256];
     describe_ground(sc, &job.grid, parts, o.quiet, ground, sizeof ground);
-    if (!parts->part && open_output(sf, sc, &job, &o, ground, &info, &out, err)) goto done; /* part 0 alone writes */
+    if (!parts->part && open_output(sf, sc, &job, &o, ground, &features, &info, &out, err)) goto done; /* part 0 alone writes */
     rc = trace_and_write(&job, parts, out, times, o.quiet, err);
 done:
     ztv_output_free(out);
+    ztv_features_free(&features);
     accel_free(&acc);
     ztv_targets_free(&targets);
     return rc;

@@ -11,6 +11,7 @@
 #include "util/run_parts.h"
 
 struct scene_file; /* scene_file/scene_file.h: the ztv: section and the site read here */
+struct viewpoint;  /* scene_file/scene_file_spec.h: a scene_viewpoint */
 
 typedef struct ztv_study_options {
     const char *dir;     /* the output folder; created when missing */
@@ -21,6 +22,9 @@ typedef struct ztv_study_options {
     int flat_earth;      /* 1: straight sightlines */
     unsigned threads;
     int quiet;           /* no information lines (the warnings still print) */
+    const struct viewpoint *const *views; /* the viewpoints the GeoPackage lists, numbered in this
+                                           * order; NULL: the scene's, then its points file's */
+    uint32_t n_views;
 } ztv_study_options;
 
 /* Runs the study of sc (built from sf with the ground it is to trace), printing its information

@@ -7,7 +7,8 @@
 #   ztv       maps traced by 2 and 4 ranks (and 3), one block of rows and two, give every file
 #             of a plain run byte for byte
 #   study     a study rendered by 2 and 3 ranks (whole images each) writes every file of a plain
-#             run, byte for byte; a rerun on 2 ranks renders the one product deleted, alone
+#             run, byte for byte, its ZTV (rows shared) and index too; a rerun on 2 ranks renders
+#             the one product deleted, alone
 #   failures  a failure ends every rank with one message and the right exit status, never a
 #             hang: rank 0 cannot write (render, ztv), one rank alone is refused by its memory
 #             budget (render: its frame, while rank 0 waits to gather; ztv: the scene file,
@@ -75,10 +76,10 @@ ztv)
   done
   ;;
 study)
-  # whole images shared between the ranks: every file of a plain run, byte for byte; rank 0
+  # whole images shared between the ranks, the map's rows too: every file of a plain run, byte for byte; rank 0
   # alone prints; a rerun with one product deleted renders it alone
   scene=$scenes/study/hill_study.yaml
-  args=(study "$scene" --frames single,planar_53)
+  args=(study "$scene" --frames single,planar_53 --products existing,proposed,wireline,ztv)
   plain "$sylva" "${args[@]}" --threads 2 -q -o "$out/one" >/dev/null || fail "study: the plain run exited with $?"
   for n in 2 3; do
     ranks $n "$sylva" "${args[@]}" --threads 1 -o "$out/s$n" >"$out/s$n.stdout" 2>"$out/s$n.stderr" ||

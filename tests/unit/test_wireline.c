@@ -1,8 +1,10 @@
 /* test_wireline.c — the development's wireline (render/wireline.h) on a rendered box: every
  * wireline pixel lies within a pixel of one of the box's visible edges as the camera projects
  * them, every visible edge is drawn along its length and painted, and a box that is not the
- * development has none. */
+ * development has none; an open frame is outlined as one silhouette. */
 #include <math.h>
+#include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -155,4 +157,92 @@ TEST(a_box_that_is_not_the_development_has_no_wireline)
     scene_free(s);
 }
 
-TEST_LIST(TEST_CASE(wireline_lies_on_the_box_edges), TEST_CASE(a_box_that_is_not_the_development_has_no_wireline))
+/* An open frame, the development: two posts 6 m apart and five rungs, 30 m from the camera, the
+ * gaps between the rungs some 14 pixels high; optionally a small block in front of one gap. */
+static const char *frame_scene =
+    "image: {width: 160, height: 120, spp: 1, seed: 1}\n"
+    "camera: {position: [0, -30, 5], look_at: [0, 0, 5], fov: 40}\n"
+    "sun: {azimuth: 200, elevation: 40}\n"
+    "terrain: {grid: [[0, 0], [0, 0]], origin: [-100, -100], spacing: [200, 200]}\n"
+    "objects:\n"
+    "  - {name: post_w, shape: box, size: [0.3, 0.3, 10], position: [-3, 0, 5], development: true}\n"
+    "  - {name: post_e, shape: box, size: [0.3, 0.3, 10], position: [3, 0, 5], development: true}\n"
+    "  - {name: rung_1, shape: box, size: [6, 0.3, 0.3], position: [0, 0, 1], development: true}\n"
+    "  - {name: rung_3, shape: box, size: [6, 0.3, 0.3], position: [0, 0, 3], development: true}\n"
+    "  - {name: rung_5, shape: box, size: [6, 0.3, 0.3], position: [0, 0, 5], development: true}\n"
+    "  - {name: rung_7, shape: box, size: [6, 0.3, 0.3], position: [0, 0, 7], development: true}\n"
+    "  - {name: rung_9, shape: box, size: [6, 0.3, 0.3], position: [0, 0, 9.85], development: true}\n"
+    "%s";
+
+/* The 8-connected pieces of the wireline's pixels of kind k. */
+static int pieces(const wireline *w, wireline_kind k)
+{
+    size_t n = (size_t)w->width * w->height;
+    uint8_t *seen = calloc(n, 1);
+    uint32_t *stack = malloc(n * sizeof *stack);
+    int count = 0;
+    for (size_t start = 0; seen && stack && start < n; start++) {
+        if (w->edge[start] != k || seen[start]) continue;
+        count++;
+        size_t top = 0;
+        stack[top++] = (uint32_t)start, seen[start] = 1;
+        while (top) {
+            size_t at = stack[--top];
+            int x = (int)(at % w->width), y = (int)(at / w->width);
+            for (int dy = -1; dy <= 1; dy++)
+                for (int dx = -1; dx <= 1; dx++) {
+                    int nx = x + dx, ny = y + dy;
+                    if (nx < 0 || ny < 0 || nx >= (int)w->width || ny >= (int)w->height) continue;
+                    size_t m = (size_t)ny * w->width + (size_t)nx;
+                    if (w->edge[m] == k && !seen[m]) seen[m] = 1, stack[top++] = (uint32_t)m;
+                }
+        }
+    }
+    free(seen), free(stack);
+    return count;
+}
+
+static void frame_contours(const char *extra, int *outline, uint64_t *outline_px, uint64_t *inner_px)
+{
+    char text[2048];
+    snprintf(text, sizeof text, frame_scene, extra);
+    scene *s = fixture_scene(work_file("frame.yaml", text));
+    *outline = -1, *outline_px = *inner_px = 0;
+    if (!s) return;
+    err_buf err = {{0}};
+    render_options o = {.threads = 2, .quiet = 1};
+    film *f = render_scene(s, &o, NULL, &err);
+    CHECK(f != NULL);
+    camera c;
+    wireline w = {0};
+    if (f) camera_init(&c, &s->camera, f->width, f->height);
+    if (f && !wireline_find(&w, f, s, &c, &err))
+        *outline = pieces(&w, WIRELINE_OUTLINE), *outline_px = w.outline, *inner_px = w.inner;
+    wireline_free(&w);
+    film_free(f);
+    scene_free(s);
+}
+
+/* The silhouette: the frame's outline is one closed contour round it, some 2 x (46 + 73)
+ * pixels, the gaps between its rungs filled (with each rung's edges as outline it would be
+ * some 440 pixels more); the rungs' edges are inner edges. A block in front of a gap is no hole
+ * of the frame: the outline goes round that gap too (some 2 x (44 + 12) pixels more). */
+TEST(an_open_frame_is_outlined_as_one_silhouette)
+{
+    int outline;
+    uint64_t outline_px, inner_px, blocked_px, blocked_inner;
+    frame_contours("", &outline, &outline_px, &inner_px);
+    printf("frame: outline %d contour(s), %llu pixels; inner edges %llu pixels\n", outline,
+           (unsigned long long)outline_px, (unsigned long long)inner_px);
+    CHECK_INT(outline, 1);
+    CHECK(outline_px > 200 && outline_px < 320);
+    CHECK(inner_px > 250);
+    frame_contours("  - {name: block, shape: box, size: [0.5, 0.5, 0.5], position: [0, -10, 4.33]}\n", &outline,
+                   &blocked_px, &blocked_inner);
+    printf("frame behind a block: outline %d contour(s), %llu pixels; inner edges %llu pixels\n", outline,
+           (unsigned long long)blocked_px, (unsigned long long)blocked_inner);
+    CHECK(blocked_px > outline_px + 60);
+}
+
+TEST_LIST(TEST_CASE(wireline_lies_on_the_box_edges), TEST_CASE(a_box_that_is_not_the_development_has_no_wireline),
+          TEST_CASE(an_open_frame_is_outlined_as_one_silhouette))

@@ -274,7 +274,9 @@ int study_run(scene_file *sf, const plugin_registry *reg, const study_options *o
     scene *s = NULL;
     if (!rc && (p.n_todo || p.ztv_todo) && !(s = build_once(sf, reg, o, rep, err))) rc = -1;
     if (!rc && s && parts->same_scene(parts->job, s, err)) rc = err_default(err, ERR_INPUT);
+    camera_settings built = s ? s->camera : (camera_settings){0}; /* each job moves it */
     if (!rc && s) rc = render_jobs(s, sf, o, &p, parts, rep, err);
+    if (s) s->camera = built; /* the scene as built on every part again, for the map */
     if (p.ztv_todo && parts->agree(parts->job, rc, err)) rc = -1; /* every part maps, or none */
     if (!rc && p.ztv_todo)
         rc = study_ztv_make(&o->ztv, sf, s, &p.ztv_views, p.ztv_dir, p.ztv_record, parts, &rep->times, err);

@@ -147,8 +147,21 @@ static void put_map_picture(FILE *f, const char *dir, const index_map *m, const 
     fputs("</svg>\n", f);
 }
 
+/* A scale bar of a round length near `about` metres (1, 2 or 5 times a power of ten) in the key
+ * map's lower left corner, at scale pixels a metre, and a north arrow (grid north: up). */
+static void put_scale_bar(FILE *f, double about, double scale)
+{
+    double ten = pow(10, floor(log10(about))), step = about / ten >= 5 ? 5 * ten : about / ten >= 2 ? 2 * ten : ten;
+    double len = step * scale;
+    fprintf(f, "<path d=\"M20 770 h%.1f M20 764 v12 M%.1f 764 v12\" stroke=\"#000\" stroke-width=\"2\"/>\n"
+               "<text x=\"20\" y=\"758\" class=\"name\">%g %s</text>\n"
+               "<path d=\"M770 60 l-8 16 h16 z\" fill=\"#000\"/><text x=\"770\" y=\"50\" class=\"name\" "
+               "text-anchor=\"middle\">N</text>\n",
+            len, 20 + len, step >= 1000 ? step / 1000 : step, step >= 1000 ? "km" : "m");
+}
+
 /* A key map drawn here: the structures as triangles and the viewpoints' marks, north up, framed
- * round them all with a margin. */
+ * round them all with a margin, with a scale bar and a north arrow. */
 static void put_key_map(FILE *f, const scene_file *sf, const char *dir, const double origin[3],
                         const index_view *views, uint32_t n)
 {
@@ -176,6 +189,7 @@ static void put_key_map(FILE *f, const scene_file *sf, const char *dir, const do
         fputs("</text>\n", f);
     }
     for (uint32_t k = 0; k < n; k++) put_mark(f, dir, &views[k], PX(views[k].e), PY(views[k].n), r);
+    put_scale_bar(f, size / 4, scale);
 #undef PX
 #undef PY
     fputs("</svg>\n", f);

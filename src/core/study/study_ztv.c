@@ -2,6 +2,7 @@
 #include "study/study_ztv.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
@@ -52,10 +53,12 @@ int study_ztv_current(const char *dir, const char *text)
     if (record_path(dir, path)) return 0;
     FILE *f = fopen(path, "rb");
     if (!f) return 0;
-    static char held[STUDY_ZTV_RECORD_MAX + 1]; /* one study at a time reads its record */
-    size_t n = fread(held, 1, sizeof held, f);
+    char *held = malloc(STUDY_ZTV_RECORD_MAX + 1); /* owned here */
+    size_t n = held ? fread(held, 1, STUDY_ZTV_RECORD_MAX + 1, f) : 0;
     fclose(f);
-    return n == strlen(text) && !memcmp(held, text, n);
+    int same = held && n == strlen(text) && !memcmp(held, text, n);
+    free(held);
+    return same;
 }
 
 int study_ztv_make(const study_ztv *z, const scene_file *sf, const scene *s, const study_views *views,

@@ -43,7 +43,8 @@ typedef struct gpkg {
 typedef struct field_def {
     const char *name;
     OGRFieldType type;
-    int width;
+    int width;          /* 0: none */
+    int boolean;        /* 1: an integer read as true or false */
 } field_def;
 
 static OGRLayerH make_layer(gpkg *g, const char *name, OGRwkbGeometryType type, const field_def *fields,
@@ -58,7 +59,7 @@ static OGRLayerH make_layer(gpkg *g, const char *name, OGRwkbGeometryType type, 
     for (unsigned k = 0; k < n; k++) {
         OGRFieldDefnH fd = OGR_Fld_Create(fields[k].name, fields[k].type);
         if (fields[k].width) OGR_Fld_SetWidth(fd, fields[k].width);
-        if (fields[k].type == OFTInteger && fields[k].width < 0) OGR_Fld_SetSubType(fd, OFSTBoolean), OGR_Fld_SetWidth(fd, 0);
+        if (fields[k].boolean) OGR_Fld_SetSubType(fd, OFSTBoolean);
         OGRErr e = OGR_L_CreateField(l, fd, TRUE);
         OGR_Fld_Destroy(fd);
         if (e != OGRERR_NONE) {
@@ -93,9 +94,8 @@ static OGRGeometryH map_point(const ztv_info *info, const double xy[2])
 
 static int write_viewpoints(gpkg *g)
 {
-    static const field_def fields[] = {{"number", OFTInteger, 0}, {"name", OFTString, 0},
-                                       {"eye_height", OFTReal, 0}, {"heading", OFTReal, 0},
-                                       {"ground_level", OFTReal, 0}};
+    static const field_def fields[] = {{"number", OFTInteger}, {"name", OFTString}, {"eye_height", OFTReal},
+                                       {"heading", OFTReal}, {"ground_level", OFTReal}};
     OGRLayerH l = make_layer(g, "viewpoints", wkbPoint, fields, 5);
     if (!l) return -1;
     const ztv_info *info = g->info;
@@ -124,7 +124,7 @@ static OGRGeometryH ring_around_targets(const ztv_info *info, double d)
 
 static int write_rings(gpkg *g)
 {
-    static const field_def fields[] = {{"distance", OFTReal, 0}, {"label", OFTString, 0}};
+    static const field_def fields[] = {{"distance", OFTReal}, {"label", OFTString}};
     OGRLayerH l = make_layer(g, "distance_rings", wkbMultiPolygon, fields, 2);
     if (!l) return -1;
     const ztv_info *info = g->info;
@@ -148,9 +148,8 @@ static int write_rings(gpkg *g)
 
 static int write_structures(gpkg *g)
 {
-    static const field_def fields[] = {{"name", OFTString, 0}, {"development", OFTString, 0},
-                                       {"base_level", OFTReal, 0}, {"top_level", OFTReal, 0},
-                                       {"height", OFTReal, 0}};
+    static const field_def fields[] = {{"name", OFTString}, {"development", OFTString}, {"base_level", OFTReal},
+                                       {"top_level", OFTReal}, {"height", OFTReal}};
     OGRLayerH l = make_layer(g, "developments", wkbPoint, fields, 5);
     if (!l) return -1;
     const ztv_info *info = g->info;
@@ -172,9 +171,9 @@ static int write_styles(gpkg *g)
 {
     static const field_def fields[] = {
         {"f_table_catalog", OFTString, 256}, {"f_table_schema", OFTString, 256}, {"f_table_name", OFTString, 256},
-        {"f_geometry_column", OFTString, 256}, {"styleName", OFTString, 30}, {"styleQML", OFTString, 0},
-        {"styleSLD", OFTString, 0}, {"useAsDefault", OFTInteger, -1}, {"description", OFTString, 0},
-        {"owner", OFTString, 30}, {"ui", OFTString, 30}, {"update_time", OFTDateTime, 0}};
+        {"f_geometry_column", OFTString, 256}, {"styleName", OFTString, 30}, {"styleQML", OFTString},
+        {"styleSLD", OFTString}, {"useAsDefault", OFTInteger, 0, 1}, {"description", OFTString},
+        {"owner", OFTString, 30}, {"ui", OFTString, 30}, {"update_time", OFTDateTime}};
     static const char *const tables[3] = {"viewpoints", "distance_rings", "developments"};
     OGRLayerH l = make_layer(g, "layer_styles", wkbNone, fields, sizeof fields / sizeof *fields);
     if (!l) return -1;

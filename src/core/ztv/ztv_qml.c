@@ -1,12 +1,13 @@
 /* ztv_qml.c — the QGIS styles of ztv_qml.h, written out by hand as QGIS 3 reads them: a
- * renderer-v2 with one symbol and simple labels for the vector layers, a discrete
- * colour-ramp shader for the GeoTIFF's fraction band. The colours are the maps' (ztv_map.c,
- * docs/ztv.md "The maps"). */
+ * renderer-v2 with one symbol (its properties as <prop> elements, which every QGIS 3 reads) and
+ * simple labels for the vector layers, a discrete colour-ramp shader for the GeoTIFF's fraction
+ * band. The colours are the maps' (ztv_map.c, docs/ztv.md "The maps"). */
 #include "ztv/ztv_qml.h"
 
 #define QML_HEAD "<!DOCTYPE qgis PUBLIC 'http://mrcc.com/qgis.dtd' 'SYSTEM'>\n" \
-                 "<qgis version=\"3.28.0\" styleCategories=\"Symbology|Labeling\">\n"
-#define OPT(name, value) "       <Option name=\"" name "\" type=\"QString\" value=\"" value "\"/>\n"
+                 "<qgis version=\"3.16.0\" styleCategories=\"Symbology|Labeling\" labelsEnabled=\"1\">\n"
+/* A symbol layer's property, in the form every QGIS 3 reads. */
+#define OPT(name, value) "     <prop k=\"" name "\" v=\"" value "\"/>\n"
 
 /* Simple labels of `field` (an expression when expr is "1"), size points, dist mm off the feature. */
 #define LABELS(field, expr, size, colour, placement) \
@@ -26,9 +27,7 @@
     " <renderer-v2 type=\"singleSymbol\" symbollevels=\"0\" enableorderby=\"0\" forceraster=\"0\">\n" \
     "  <symbols>\n" \
     "   <symbol type=\"" kind "\" name=\"0\" alpha=\"1\" clip_to_extent=\"1\" force_rhr=\"0\">\n" \
-    "    <layer class=\"" symbol_class "\" enabled=\"1\" pass=\"0\" locked=\"0\">\n" \
-    "     <Option type=\"Map\">\n" options \
-    "     </Option>\n" \
+    "    <layer class=\"" symbol_class "\" enabled=\"1\" pass=\"0\" locked=\"0\">\n" options \
     "    </layer>\n" \
     "   </symbol>\n" \
     "  </symbols>\n" \
@@ -70,7 +69,7 @@ static const char developments[] =
 /* Band 2 of ztv_MODE.tif: a discrete ramp, each item colouring the values up to its own. */
 static const char visibility[] =
     "<!DOCTYPE qgis PUBLIC 'http://mrcc.com/qgis.dtd' 'SYSTEM'>\n"
-    "<qgis version=\"3.28.0\" styleCategories=\"Symbology\">\n"
+    "<qgis version=\"3.16.0\" styleCategories=\"Symbology\">\n"
     " <pipe>\n"
     "  <provider>\n"
     "   <resampling enabled=\"false\" zoomedInResamplingMethod=\"nearestNeighbour\""

@@ -3,7 +3,8 @@
 # (tests/scenes/ztv/layers_site.yaml): read back through OGR, the viewpoints, the distance rings
 # and the structures stand where the scene puts them, with their numbers, heights and CRS; QGIS's
 # layer_styles table holds a default style per layer; every .qml parses as XML; the same map
-# twice gives the same GeoPackage bytes.
+# twice gives the same GeoPackage bytes; with QGIS's Python bindings, QGIS opens every layer
+# and the GeoTIFF styled.
 set -uo pipefail
 sylva=$1 scene=$2
 command -v ogrinfo >/dev/null || { echo "ogrinfo (gdal-bin) is not installed: skipped"; exit 77; }
@@ -83,6 +84,42 @@ import sqlite3, sys, xml.etree.ElementTree as E
 for name, qml in sqlite3.connect(sys.argv[1]).execute("SELECT f_table_name, styleQML FROM layer_styles"):
     if E.fromstring(qml.split("\n", 1)[1]).tag != "qgis": sys.exit(1)
 PY
+fi
+
+# where QGIS's Python bindings are installed (python3-qgis, optional): QGIS opens each layer with
+# its style from layer_styles and the GeoTIFF with ztv_bare.qml, as a reader's QGIS would
+qgis_python=
+for p in python3 /usr/bin/python3; do
+  if "$p" -c 'import qgis.core' 2>/dev/null; then qgis_python=$p; break; fi
+done
+if [ -n "$qgis_python" ]; then
+  QT_QPA_PLATFORM=offscreen XDG_RUNTIME_DIR=$out "$qgis_python" - "$gpkg" "$out/a/ztv_bare.tif" <<'PY' 2>"$out/qgis.log" ||
+import sys
+from qgis.core import QgsApplication, QgsRasterLayer, QgsVectorLayer
+app = QgsApplication([], False)
+app.initQgis()
+want = {"viewpoints": ("SimpleMarker", "circle", 2), "distance_rings": ("SimpleFill", None, 2),
+        "developments": ("SimpleMarker", "triangle", 2)}
+for name, (kind, shape, count) in want.items():
+    layer = QgsVectorLayer(sys.argv[1] + "|layername=" + name, name, "ogr")
+    message, loaded = layer.loadDefaultStyle()  # what QGIS does when it adds the layer
+    symbol = layer.renderer().symbol().symbolLayer(0)
+    props = symbol.properties()
+    ok = (layer.isValid() and loaded and layer.featureCount() == count and symbol.layerType() == kind
+          and (shape is None or props.get("name") == shape) and layer.labelsEnabled())
+    print(name, "styled" if ok else "NOT styled", message, symbol.layerType(), props.get("name"))
+    if not ok: sys.exit(1)
+raster = QgsRasterLayer(sys.argv[2], "ztv")
+message, loaded = raster.loadDefaultStyle()
+shader = raster.renderer().shader().rasterShaderFunction()
+values = [round(item.value, 5) for item in shader.colorRampItemList()]
+print("raster", raster.renderer().type(), values)
+sys.exit(0 if loaded and raster.renderer().type() == "singlebandpseudocolor" and raster.renderer().band() == 2
+         and values == [0, 0.25, 0.5, 0.75, 0.99999, 1] else 1)
+PY
+    { fail "QGIS does not open the layers styled"; cat "$out/qgis.log" >&2; }
+else
+  echo "QGIS's Python bindings (python3-qgis) are not installed: the styles not opened in QGIS"
 fi
 
 [ $fails -eq 0 ] && echo "ztv layers: viewpoints, rings, structures and styles as expected"

@@ -43,7 +43,7 @@ static const char viewpoints[] =
     QML_HEAD
     MARKER("circle", "255,255,255,255", "0,0,0,255", "0.5", "4.5")
     LABELS("concat(&quot;number&quot;, ' ', &quot;name&quot;)", "1", "9", "0,0,0,255",
-           "placement=\"1\" quadOffset=\"2\" dist=\"1.5\" distUnits=\"MM\"")
+           "placement=\"0\" dist=\"1.2\" distUnits=\"MM\" priority=\"8\"")
     " <layerGeometryType>0</layerGeometryType>\n"
     "</qgis>\n";
 
@@ -52,14 +52,14 @@ static const char rings[] =
     SINGLE_SYMBOL("fill", "SimpleFill",
                   OPT("style", "no") OPT("color", "0,0,0,0") OPT("outline_color", "40,40,40,255")
                   OPT("outline_style", "dash") OPT("outline_width", "0.4") OPT("outline_width_unit", "MM"))
-    LABELS("label", "0", "8", "40,40,40,255", "placement=\"3\" placementFlags=\"1\" dist=\"0.5\" distUnits=\"MM\"")
+    LABELS("label", "0", "8", "40,40,40,255", "placement=\"7\" placementFlags=\"1\" dist=\"0.5\" distUnits=\"MM\" priority=\"5\"")
     " <layerGeometryType>2</layerGeometryType>\n"
     "</qgis>\n";
 
 static const char developments[] =
     QML_HEAD
     MARKER("triangle", "0,0,0,255", "255,255,255,255", "0.3", "3.5")
-    LABELS("name", "0", "8", "0,0,0,255", "placement=\"1\" quadOffset=\"5\" dist=\"1\" distUnits=\"MM\"")
+    LABELS("name", "0", "8", "0,0,0,255", "placement=\"0\" dist=\"1\" distUnits=\"MM\" priority=\"6\"")
     " <layerGeometryType>0</layerGeometryType>\n"
     "</qgis>\n";
 

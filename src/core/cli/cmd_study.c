@@ -1,6 +1,6 @@
 /* cmd_study.c — `sylva study SCENE -o DIR`: every viewpoint's products (the view without the
- * development, with it, and its wireline) in every frame asked for, from one build of the scene
- * (study/study_run.h, docs/study.md). Under mpirun each rank builds the scene and renders whole
+ * development, with it, and its wireline) in every frame asked for, and the study's ZTV, from one
+ * build of the scene (study/study_run.h, docs/study.md). Under mpirun each rank builds the scene and renders whole
  * images: every N-th viewpoint-frame to render. */
 #include <math.h>
 #include <stdio.h>
@@ -26,7 +26,10 @@ static const char study_about[] =
     ".manifest record each. A rerun keeps every product whose files are there and whose record\n"
     "matches, so an interrupted study goes on where it stopped. The proposed view is byte for\n"
     "byte `sylva render --viewpoint NAME --size WxH` of the same viewpoint, with the ground\n"
-    "refined around the development rather than the camera. See docs/study.md.\n";
+    "refined around the development rather than the camera. With a ztv: section (or the\n"
+    "product ztv) the study also maps its ZTV once, from the same build on the ground as\n"
+    "surveyed, into DIR/ztv/ (sylva ztv's files and GeoPackage); last it writes DIR/index.html,\n"
+    "the viewpoints on the map, each linked to its sheets and images. See docs/study.md.\n";
 
 static const char study_epilogue[] =
     "Under MPI (`mpirun -np N sylva study ...`, in a build with SYLVA_MPI), every rank builds\n"

@@ -26,8 +26,10 @@ static const char ztv_about[] =
     "sightline over the curved Earth (earth: section), on bare earth and screened by what\n"
     "the scene holds. Writes into DIR (created when missing): ztv_bare.tif and ztv_MODE.tif\n"
     "(GeoTIFF on the site's CRS: targets visible, fraction visible, cell class, developments\n"
-    "seen), ztv_hidden_MODE.tif (what the screening hides), PNG maps of each, and\n"
-    "ztv_summary.csv / .json (areas in km2). See docs/ztv.md.\n";
+    "seen), ztv_hidden_MODE.tif (what the screening hides), PNG maps of each,\n"
+    "ztv_summary.csv / .json (areas in km2), and ztv_layers.gpkg (the viewpoints, distance\n"
+    "rings and structures) with QGIS styles (.qml, and in its layer_styles table) so that the\n"
+    "map opens styled in QGIS. See docs/ztv.md.\n";
 
 static const char ztv_epilogue[] =
     "Under MPI (`mpirun -np N sylva ztv ...`, in a build with SYLVA_MPI), every rank builds\n"

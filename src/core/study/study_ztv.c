@@ -31,8 +31,8 @@ int study_ztv_record(const scene_file *sf, const study_views *views, char *out, 
                                  views->views[k]->name, own ? own : "");
     }
     if (used >= STUDY_ZTV_RECORD_MAX)
-        return err_fail(err, ERR_LIMIT, "the record of the study's visibility map would pass %d bytes: fewer viewpoints",
-                        STUDY_ZTV_RECORD_MAX);
+        return err_fail(err, ERR_LIMIT, "the record of the study's visibility map would pass %d bytes: "
+                        "fewer viewpoints", STUDY_ZTV_RECORD_MAX);
     return 0;
 }
 

@@ -116,7 +116,8 @@ static int write_viewpoints(gpkg *g)
 static OGRGeometryH ring_around_targets(const ztv_info *info, double d)
 {
     OGRGeometryH targets = OGR_G_CreateGeometry(wkbMultiPoint);
-    for (uint32_t k = 0; k < info->n_targets; k++) OGR_G_AddGeometryDirectly(targets, map_point(info, info->target_xy[k]));
+    for (uint32_t k = 0; k < info->n_targets; k++)
+        OGR_G_AddGeometryDirectly(targets, map_point(info, info->target_xy[k]));
     OGRGeometryH ring = OGR_G_Buffer(targets, d, ZTV_RING_SEGMENTS);
     OGR_G_DestroyGeometry(targets);
     return ring ? OGR_G_ForceToMultiPolygon(ring) : NULL;

@@ -223,6 +223,11 @@ int ztv_layers_write(const ztv_info *info, FILE *f, err_buf *err)
         g.srs = OSRNewSpatialReference(info->crs_wkt);
         if (!g.srs) rc = err_fail(err, ERR_INPUT, "GDAL does not accept the site's CRS: %s", ogr_why());
         else OSRSetAxisMappingStrategy(g.srs, OAMS_TRADITIONAL_GIS_ORDER);
+    } else if (!rc) { /* a scene in local metres: an engineering CRS, not GDAL's undefined geographic one */
+        g.srs = OSRNewSpatialReference(NULL);
+        if (!g.srs || OSRSetLocalCS(g.srs, "sylva local metres") != OGRERR_NONE ||
+            OSRSetLinearUnits(g.srs, SRS_UL_METER, 1.0) != OGRERR_NONE)
+            rc = err_fail(err, ERR_INTERNAL, "GDAL cannot describe local metres: %s", ogr_why());
     }
     if (!rc && !(g.ds = GDALCreate(drv, mem, 0, 0, 0, GDT_Unknown, NULL)))
         rc = err_fail(err, ERR_OUTPUT, "GDAL cannot create a GeoPackage: %s", ogr_why());

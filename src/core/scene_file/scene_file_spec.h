@@ -201,8 +201,8 @@ typedef struct photo_settings {
 typedef enum study_product { STUDY_EXISTING = 0, STUDY_PROPOSED = 1, STUDY_WIRELINE = 2 } study_product;
 #define STUDY_PRODUCTS 3u /* the products of each viewpoint */
 /* The study's own product, made once for every viewpoint: its visibility map (docs/study.md, "The
- * ZTV"), named `ztv` beside the others. */
-#define STUDY_ZTV 3u
+ * ZTV"), named `ztv` after the products of each viewpoint. */
+#define STUDY_ZTV STUDY_PRODUCTS
 /* The frames a study renders each product in: a 50 mm lens on a full-frame sensor, a 53.5 degree
  * planar view and a 90 degree cylindrical panorama (study/study_frames.h). */
 typedef enum study_frame { STUDY_SINGLE = 0, STUDY_PLANAR_53 = 1, STUDY_CYLINDRICAL_90 = 2 } study_frame;

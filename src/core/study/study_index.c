@@ -16,6 +16,10 @@
 
 #define MARK_RADIUS 11 /* pixels of a viewpoint's mark on the map */
 
+/* The products whose PNG is a view (PRODUCT_FRAME.png), in the order the page lists them. */
+static const study_product views_rendered[] = {STUDY_EXISTING, STUDY_PROPOSED, STUDY_WIRELINE};
+#define N_RENDERED (sizeof views_rendered / sizeof *views_rendered)
+
 /* A viewpoint as the page shows it. */
 typedef struct index_view {
     const scene_viewpoint *v;
@@ -113,8 +117,9 @@ static int first_file(const char *dir, const index_view *iv, char *out, size_t n
             if (is_file(dir, out)) return 0;
         }
     for (int f = 0; f < (int)STUDY_FRAMES; f++)
-        for (int p = 0; p < (int)STUDY_PRODUCTS; p++) {
-            snprintf(out, n, "%s/%s_%s.png", iv->v->name, host_study_products[p], study_frame_of(f)->name);
+        for (size_t p = 0; p < N_RENDERED; p++) {
+            snprintf(out, n, "%s/%s_%s.png", iv->v->name, host_study_products[views_rendered[p]],
+                     study_frame_of(f)->name);
             if (is_file(dir, out)) return 0;
         }
     return -1;
@@ -209,12 +214,13 @@ static void put_links(FILE *f, const char *dir, const index_view *iv)
             put_url(f, rel);
             fprintf(f, "\">sheet %s (%s)</a>", frame, exts[e]);
         }
-        for (int p = 0; p < (int)STUDY_PRODUCTS; p++) {
-            snprintf(rel, sizeof rel, "%s/%s_%s.png", iv->v->name, host_study_products[p], frame);
+        for (size_t p = 0; p < N_RENDERED; p++) {
+            const char *product = host_study_products[views_rendered[p]];
+            snprintf(rel, sizeof rel, "%s/%s_%s.png", iv->v->name, product, frame);
             if (!is_file(dir, rel)) continue;
             fputs(any++ ? " <a href=\"" : "<a href=\"", f);
             put_url(f, rel);
-            fprintf(f, "\">%s %s</a>", host_study_products[p], frame);
+            fprintf(f, "\">%s %s</a>", product, frame);
         }
     }
     if (!any) fputs("none yet", f);

@@ -99,8 +99,8 @@ static int write_viewpoints(gpkg *g)
     OGRLayerH l = make_layer(g, "viewpoints", wkbPoint, fields, 5);
     if (!l) return -1;
     const ztv_info *info = g->info;
-    for (uint32_t k = 0; k < info->n_viewpoints; k++) {
-        const ztv_viewpoint *v = &info->viewpoints[k];
+    for (uint32_t k = 0; k < info->n_study_views; k++) {
+        const ztv_viewpoint *v = &info->study_views[k];
         OGRFeatureH f = OGR_F_Create(OGR_L_GetLayerDefn(l));
         OGR_F_SetFieldInteger(f, 0, (int)v->number);
         OGR_F_SetFieldString(f, 1, v->name ? v->name : "");

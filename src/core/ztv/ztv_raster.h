@@ -109,8 +109,9 @@ typedef struct ztv_info {
                                             * (the centre of its targets) */
     const double (*target_xy)[2];          /* n_targets: local horizontal positions */
     const uint32_t *target_development;    /* n_targets: development index */
-    const ztv_viewpoint *viewpoints;       /* n_viewpoints, in the study's order (may be 0) */
-    uint32_t n_viewpoints;
+    const ztv_viewpoint *study_views;      /* n_study_views, the study's viewpoints in its order, as
+                                            * the GeoPackage lists them (may be 0) */
+    uint32_t n_study_views;
     const ztv_structure *structures;       /* n_structures (may be 0: targets given by hand) */
     uint32_t n_structures;
 } ztv_info;

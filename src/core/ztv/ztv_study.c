@@ -121,8 +121,8 @@ static int open_output(const scene_file *sf, const scene *sc, const ztv_job *job
                      .curvature = job->earth && job->earth->curvature, .refraction = sc->earth.refraction,
                      .n_targets = t->n, .n_developments = t->n_developments, .development_names = t->names,
                      .development_xy = (const double(*)[2])t->centre, .target_xy = (const double(*)[2])t->xy,
-                     .target_development = t->development, .viewpoints = features->viewpoints,
-                     .n_viewpoints = features->n_viewpoints, .structures = features->structures,
+                     .target_development = t->development, .study_views = features->viewpoints,
+                     .n_study_views = features->n_viewpoints, .structures = features->structures,
                      .n_structures = features->n_structures};
     if (sf->site.crs_wkt) memcpy(info->origin, sf->site.origin, sizeof info->origin);
     info->computed[ZTV_BARE] = 1;

@@ -21,10 +21,11 @@
  *  3. Screening: on the generated DTM with --trees trees (default 100,000; a crown of 320
  *     triangles on a stem) in stands over a sixth of the ground, the bare-earth and the
  *     vegetation maps together against bare earth alone, 10 targets, tracing alone.
- * Each time is the best of REPEATS runs (the machine may be busy; the load average is printed).
+ * Each time is the best of --repeats runs (default 3; the machine may be busy, and the load average
+ * is printed).
  * The goals of the visibility map are printed beside the figures they judge.
  *
- * usage: ztv_bench [--cells N] [--trees N] [--threads N] [--dem FILE] [--sylva PATH] [--no-gdal]
+ * usage: ztv_bench [--cells N] [--trees N] [--threads N] [--dem FILE] [--sylva PATH] [--repeats N] [--no-gdal]
  */
 #include <embree3/rtcore.h>
 #include <gdal.h>
@@ -55,7 +56,7 @@
 #define HUB 150.0          /* target height above the ground */
 #define EYE 2.0            /* observer height above the ground */
 #define REFRACTION 0.13
-#define REPEATS 3          /* a time is the best of this many runs */
+static int repeats = 3;   /* a time is the best of this many runs (--repeats) */
 #define REAL_DEM ZTV_BENCH_DEM /* ../shared/data beside the clone */
 #define REAL_CELL 83.0     /* the Zion DTM's 3" cells taken as squares, as tests/ztv does */
 
@@ -295,7 +296,7 @@ static cost sylva_process(const site *st, const char *sylva, uint32_t n, unsigne
     snprintf(th, sizeof th, "%u", threads);
     if (scene_file_write(st, n, yaml)) return (cost){-1, 0};
     cost best = {INFINITY, INFINITY};
-    for (int rep = 0; rep < REPEATS; rep++) {
+    for (int rep = 0; rep < repeats; rep++) {
         snprintf(out, sizeof out, "%s/ztv_%u", st->dir, run++);
         char *argv[] = {(char *)sylva, "ztv", yaml, "-o", out, "-q", "--threads", th, NULL}, **cmds[1] = {argv};
         cost c = run_commands(cmds, 1, 1);
@@ -319,7 +320,7 @@ static cost gdal_processes(const site *st, uint32_t n, unsigned parallel)
         cmds[t] = argv[t];
     }
     cost best = {INFINITY, INFINITY};
-    for (int rep = 0; rep < REPEATS; rep++) {
+    for (int rep = 0; rep < repeats; rep++) {
         cost c = run_commands(cmds, n, parallel);
         if (c.cpu < 0) return c;
         keep_best(&best, c);
@@ -337,11 +338,11 @@ static int count_block(void *user, const ztv_block *b, err_buf *err)
     return 0;
 }
 
-/* sylva's tracer over job (its Embree scene built), best of REPEATS. */
+/* sylva's tracer over job (its Embree scene built), the best of the runs. */
 static cost sylva_tracing(const ztv_job *job, ztv_stats *st, err_buf *err)
 {
     cost best = {INFINITY, INFINITY};
-    for (int rep = 0; rep < REPEATS; rep++) {
+    for (int rep = 0; rep < repeats; rep++) {
         uint64_t rows = 0;
         double c0 = cpu_now(), t0 = progress_now();
         if (ztv_trace(job, count_block, &rows, st, err)) return (cost){-1, 0};
@@ -378,7 +379,7 @@ static void *gdal_share_run(void *arg)
 static cost gdal_tracing(const site *st, uint32_t n, unsigned threads)
 {
     cost best = {INFINITY, INFINITY};
-    for (int rep = 0; rep < REPEATS; rep++) {
+    for (int rep = 0; rep < repeats; rep++) {
         gdal_share share[64];
         pthread_t tid[64];
         double c0 = cpu_now(), t0 = progress_now();
@@ -462,14 +463,15 @@ int main(int argc, char **argv)
         else if (i + 1 < argc && !strcmp(argv[i], "--threads")) threads = (unsigned)atol(argv[++i]);
         else if (i + 1 < argc && !strcmp(argv[i], "--dem")) dem = argv[++i];
         else if (i + 1 < argc && !strcmp(argv[i], "--sylva")) sylva = argv[++i];
+        else if (i + 1 < argc && !strcmp(argv[i], "--repeats")) repeats = atoi(argv[++i]);
         else {
             fprintf(stderr, "usage: ztv_bench [--cells N] [--trees N] [--threads N] [--dem FILE] [--sylva PATH] "
                             "[--no-gdal]\n");
             return 1;
         }
     }
-    if (cells < 300 || cells > 20000 || threads < 1 || threads > 64)
-        return fprintf(stderr, "ztv_bench: --cells 300..20000, --threads 1..64\n"), 1;
+    if (cells < 300 || cells > 20000 || threads < 1 || threads > 64 || repeats < 1)
+        return fprintf(stderr, "ztv_bench: --cells 300..20000, --threads 1..64, --repeats 1 or more\n"), 1;
     char cpu[256], dir[] = "/tmp/ztv_bench.XXXXXX";
     bench_cpu_model(cpu, sizeof cpu);
     printf("machine: %s, %ld processors online; %u threads; load average %s\n", cpu,

@@ -69,17 +69,17 @@ static double crossing_height(const ztv_sweep_ground *g, int kind, long line, do
 {
     if (kind == 0) {
         if (line < 0 || line >= (long)g->nx) return NAN;
-        long b = clamp_cell((long)floor(v), g->ny);
+        long b = clamp_cell((long)v, g->ny); /* v >= 0 but for rounding: truncation is floor */
         double z0 = node_z(g, line, b);
         return z0 + (v - b) * (node_z(g, line, b + 1) - z0);
     }
     if (kind == 1) {
         if (line < 0 || line >= (long)g->ny) return NAN;
-        long a = clamp_cell((long)floor(u), g->nx);
+        long a = clamp_cell((long)u, g->nx);
         double z0 = node_z(g, a, line);
         return z0 + (u - a) * (node_z(g, a + 1, line) - z0);
     }
-    long a = clamp_cell((long)floor(u), g->nx), b = a - line;
+    long a = clamp_cell((long)u, g->nx), b = a - line;
     if (b < 0 || b > (long)g->ny - 2) return NAN;
     double z0 = node_z(g, a, b);
     return z0 + (u - a) * (node_z(g, a + 1, b + 1) - z0);
@@ -103,13 +103,12 @@ static double steep_at(const ztv_sweep_ground *g, long a, long b)
     return g->steep[(size_t)clamp_cell(b, g->ny) * (g->nx - 1) + (size_t)clamp_cell(a, g->nx)];
 }
 
-/* The steepness of the cells a crossing of family kind at (u, v) borders. */
-static double crossing_steepness(const ztv_sweep_ground *g, int kind, long line, double u, double v)
+/* The steepness of the cell a walk enters at a crossing of family kind (0 or 1) at (u, v), going
+ * the way of step along that family. Every cell a walk passes is entered across a grid line. */
+static double entered_steepness(const ztv_sweep_ground *g, int kind, long line, int step, double u, double v)
 {
-    long a = (long)floor(u), b = (long)floor(v);
-    if (kind == 0) return most(steep_at(g, line - 1, b), steep_at(g, line, b));
-    if (kind == 1) return most(steep_at(g, a, line - 1), steep_at(g, a, line));
-    return steep_at(g, a, b);
+    long back = step > 0 ? 0 : 1;
+    return kind == 0 ? steep_at(g, line - back, (long)v) : steep_at(g, (long)u, line - back);
 }
 
 void ztv_sweep_steepness(const ztv_sweep_ground *g, float *steep)
@@ -208,15 +207,15 @@ static int node_status(const ztv_sweep_ground *g, const target *tg, const double
     /* the ends' gaps cannot hide what the bound below blames on the ground next to them */
     double need = ZTV_SIGHT_GAP * (g->steepest + fabs(eye - tg->z) / S + c * S) + ZTV_SWEEP_SLACK;
     int may_hide = g->observer_height >= need && tg->height >= need;
-    int near = near_walk(g, tg, pa, pb, eye, S);
     double rnear = ZTV_SWEEP_NEAR * g->cell;
-    if (near == ZTV_HIDDEN || S <= rnear) return near;
+    if (S <= rnear) return near_walk(g, tg, pa, pb, eye, S);
     /* the rest: the ray as far as the share 1 - rnear / S of the way to the node */
     const double *at = rec + 4 * crossing_at(rec, n, t * (1 - rnear / S));
     double lam = S * S / (t * t), skew = c * fabs(lam - 1) * t, drop = c * lam * t, G = at[AT_STEEP];
-    if (near == ZTV_SEEN && at[AT_ABOVE] + skew < (eye - tg->z - G * D) / t - drop) return ZTV_SEEN;
     if (may_hide && at[AT_BELOW] - skew > (eye - tg->z + G * D) / t - drop) return ZTV_HIDDEN;
-    return ZTV_DOUBT;
+    int far_clear = at[AT_ABOVE] + skew < (eye - tg->z - G * D) / t - drop;
+    int near = near_walk(g, tg, pa, pb, eye, S);
+    return near == ZTV_HIDDEN ? ZTV_HIDDEN : near == ZTV_SEEN && far_clear ? ZTV_SEEN : ZTV_DOUBT;
 }
 
 /* Walks the ray from the target to (ue, ve), trying each node not yet settled that it passes
@@ -239,7 +238,7 @@ static void walk_ray(const ztv_sweep_ground *g, const target *tg, double ue, dou
         if (!(t <= len * (1 + 1e-12))) break;
         double u = tg->u + w.a * t, v = tg->v + w.b * t, h = crossing_height(g, kind, line, u, v);
         if (isnan(h)) continue;
-        steep = most(steep, crossing_steepness(g, kind, line, u, v));
+        if (kind < 2) steep = most(steep, entered_steepness(g, kind, line, w.step[kind], u, v));
         double inv = 1.0 / t, base = (h - tg->z) * inv - c * t;
         /* between crossings (h - zT) / t - c t exceeds its value at the far one by c dt at most */
         above = most(above, base + ZTV_SWEEP_SLACK * inv + c * (t - tprev));

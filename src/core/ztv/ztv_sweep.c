@@ -185,16 +185,13 @@ static int near_walk(const ztv_sweep_ground *g, const target *tg, long pa, long 
  * slack above and below the ground, [3] the steepness passed. */
 enum { AT_T, AT_ABOVE, AT_BELOW, AT_STEEP };
 
-/* The first of the n crossings recorded at distance t or beyond (the last when none). */
+/* The first of the n crossings recorded at distance t or beyond (the last when none): searched
+ * back from the last, as t lies a few cells short of it. */
 static uint32_t crossing_at(const double *rec, uint32_t n, double t)
 {
-    uint32_t lo = 0, hi = n - 1;
-    while (lo < hi) {
-        uint32_t mid = lo + (hi - lo) / 2;
-        if (rec[4 * mid + AT_T] < t) lo = mid + 1;
-        else hi = mid;
-    }
-    return lo;
+    uint32_t k = n - 1;
+    while (k > 0 && rec[4 * (k - 1) + AT_T] >= t) k--;
+    return k;
 }
 
 /* The status of node (pa, pb), which the ray passes D metres away at its n-th crossing (t from
@@ -202,7 +199,7 @@ static uint32_t crossing_at(const double *rec, uint32_t n, double t)
 static int node_status(const ztv_sweep_ground *g, const target *tg, const double *rec, uint32_t n, long pa, long pb,
                        double eye, double D, double t)
 {
-    double S = hypot(pa - tg->u, pb - tg->v) * g->cell, c = g->c;
+    double eu = pa - tg->u, ev = pb - tg->v, S = sqrt(eu * eu + ev * ev) * g->cell, c = g->c;
     if (S < 1e-3) return ZTV_DOUBT;
     /* the ends' gaps cannot hide what the bound below blames on the ground next to them */
     double need = ZTV_SIGHT_GAP * (g->steepest + fabs(eye - tg->z) / S + c * S) + ZTV_SWEEP_SLACK;

@@ -1,41 +1,44 @@
-/* ztv_bench.c — the visibility map's speed against raw Embree on the same rays and against
- * gdal_viewshed on the same map, measured in one run on one machine.
+/* ztv_bench.c — sylva's visibility map against gdal_viewshed, measured honestly in one run on
+ * one machine: CPU time and wall time for both tools at the same thread count, as whole processes
+ * the way a user runs them and as the tracing alone, on a real DTM and a generated one.
  *
- * The scene, built in code: a 1,000 x 1,000-node terrain of hills (10 m apart, 150 m of relief),
- * one development of ten turbine hubs 150 m above the ground in two rows of five near its centre,
- * and a forest of 150,000 trees (a crown of 320 triangles on a stem, 8 to 25 m tall) in stands
- * over a sixth of the ground. The map's grid is the terrain's nodes: 1,000,000 cells, observer
- * 2 m above each, 10,000,000 cell-targets.
+ * The DTMs: the generated one, 1,000 x 1,000 nodes 10 m apart (hills, 150 m of relief; --cells),
+ * and a real one (--dem, default the shared Zion SRTM DTM, 465 x 457 nodes taken as 83 m squares:
+ * the largest real DTM of ../shared/data; none there has 10^6 nodes). Each is written as a
+ * GeoTIFF on a transverse Mercator of sylva's Earth sphere, which both tools read. The targets:
+ * up to 100 hubs HUB m above the ground on a square lattice 300 m apart round the centre; the
+ * observers EYE m above every node; the Earth curved with refraction 0.13 (gdal_viewshed -cc 0.87).
  *
- *  1. sylva's tracer (ztv/ztv_trace.h) makes the bare-earth map alone, then the bare-earth and
- *     the vegetation maps together (screening vegetation), on the threads asked (default 2):
- *     wall time, from the built Embree scene to the last block handed over, and cell-targets per
- *     second;
- *  2. raw Embree: the same rays, cast with rtcOccluded1 in a plain loop over rows on as many
- *     threads (rows interleaved), through the same Embree scene with the same masks and the same
- *     ends (a gap at each), choosing the same way which sightline of a pair to cast first (the
- *     one that has settled more of the thread's pairs so far; only bare earth for a cell under a
- *     crown): rays per second, and the tracer's share of it. Each time is the best of 3 runs, the
- *     tracer's and the loop's taken in turn (the machine may be busy). The loop's visible counts
- *     must equal the maps' (else it did not answer the same questions); its ray count differs
- *     from the tracer's by the few pairs whose order the threads' other rows decided otherwise.
- *     For scale, the bare-earth rays also through an Embree scene of the terrain alone;
- *  3. gdal_viewshed over the same terrain written as a GeoTIFF: one run per target (-cc 0), as a
- *     ZTV is made with it, timed as commands (the best of 3 rounds of 10).
- * The Earth is flat (curvature off), so that a cell-target is one straight ray for the tracer
- * and the loop alike; --curvature also times the tracer with the Earth's curvature and
- * refraction (its sightlines are then chains of chords, so it has no raw baseline).
+ *  1. Whole processes: `sylva ztv SCENE -o DIR -q --threads N` (the scene file names the GeoTIFF
+ *     and the targets; every product written) against `gdal_viewshed` once per target, N of them
+ *     at a time. CPU time is the processes' own (user + system, from wait4), wall time the whole
+ *     batch's. For 1, 10 and 100 targets, on 1 thread (one gdal_viewshed process at a time) and
+ *     on N (--threads, default 2; N gdal_viewshed processes in parallel); the cost per target and
+ *     sylva's CPU time over gdal_viewshed's.
+ *  2. The tracing alone: sylva's ztv_trace over the scene built in code (the Embree scene built
+ *     beforehand, outside the clock) against GDALViewshedGenerate called in-process into memory,
+ *     per target, on 1 and on N threads (N targets at once), CPU and wall time.
+ *  3. Screening: on the generated DTM with --trees trees (default 100,000; a crown of 320
+ *     triangles on a stem) in stands over a sixth of the ground, the bare-earth and the
+ *     vegetation maps together against bare earth alone, 10 targets, tracing alone.
+ * Each time is the best of --repeats runs (default 3; the machine may be busy, and the load average
+ * is printed).
+ * The goals of the visibility map are printed beside the figures they judge.
  *
- * usage: ztv_bench [--cells N] [--trees N] [--threads N] [--curvature] [--no-gdal]
+ * usage: ztv_bench [--cells N] [--trees N] [--threads N] [--dem FILE] [--sylva PATH] [--repeats N] [--no-gdal]
  */
 #include <embree3/rtcore.h>
 #include <gdal.h>
+#include <gdal_alg.h>
 #include <math.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "bench_machine.h"
@@ -46,14 +49,19 @@
 #include "util/progress.h"
 #include "util/rng.h"
 #include "ztv/ztv_grid.h"
-#include "ztv/ztv_sight.h"
 #include "ztv/ztv_trace.h"
 
-#define SPACING 10.0       /* metres between nodes */
-#define N_TARGETS 10u
+#define SPACING 10.0       /* metres between the generated DTM's nodes */
+#define MAX_TARGETS 100u
 #define HUB 150.0          /* target height above the ground */
 #define EYE 2.0            /* observer height above the ground */
-#define REPEATS 3          /* a time is the best of this many runs; the tracer's and the loop's in turn */
+#define REFRACTION 0.13
+static int repeats = 3;   /* a time is the best of this many runs (--repeats) */
+#define REAL_DEM ZTV_BENCH_DEM /* ../shared/data beside the clone */
+#define REAL_CELL 83.0     /* the Zion DTM's 3" cells taken as squares, as tests/ztv does */
+
+static const uint32_t target_counts[] = {1, 10, 100};
+#define N_COUNTS (sizeof target_counts / sizeof *target_counts)
 
 static double hill(double x, double y)
 {
@@ -93,173 +101,6 @@ static mesh *tree_mesh(int32_t mat, err_buf *err)
     return m;
 }
 
-/* The scene with its forest, and the development's targets (local, on nodes). */
-static scene *build(uint32_t cells, uint32_t trees, double target[N_TARGETS][3], err_buf *err)
-{
-    scene *s = scene_new();
-    if (!s || !(s->terrain = terrain_new(cells)) || !(s->species = calloc(1, sizeof(species))))
-        return scene_free(s), err_nomem(err, "out of memory for the scene"), NULL;
-    for (uint32_t t = 0; t < N_TARGETS; t++) { /* two rows of five, 500 m apart */
-        double x = -1000.0 + 500.0 * (t % 5), y = t < 5 ? 250.0 : -250.0, z;
-        scene_terrain_height(s, x, y, &z);
-        target[t][0] = x, target[t][1] = y, target[t][2] = z + HUB;
-    }
-    s->species[0] = (species){.name = strdup("tree"), .first_prototype = 0, .n_variants = 1};
-    s->n_species = 1;
-    mesh *m = tree_mesh(s->default_material, err);
-    sylva_plant *plants = malloc((size_t)trees * sizeof *plants);
-    if (!m || !plants || scene_add_prototype(s, 0, 0, 1.0, 10.0, m, err) < 0) {
-        if (!plants) err_nomem(err, "out of memory for %u plants", trees);
-        return free(plants), scene_free(s), NULL;
-    }
-    sylva_rng r;
-    rng_stream(&r, 14, "ztv bench forest", 0);
-    double half = 0.5 * (cells - 1) * SPACING;
-    for (uint32_t k = 0; k < trees;) {
-        double x = -half + 2 * half * rng_next_double(&r), y = -half + 2 * half * rng_next_double(&r);
-        double rot = 2 * M_PI * rng_next_double(&r), h = 8 + 17 * rng_next_double(&r);
-        if (in_stand(x, y))
-            plants[k++] = (sylva_plant){.size = sizeof(sylva_plant), .position = {x, y, 0}, .snap_to_terrain = 1,
-                                        .rotation = rot, .height = h, .age = 1};
-    }
-    int rc = scene_place_plants(s, plants, trees, err);
-    free(plants);
-    return rc ? scene_free(s), NULL : s;
-}
-
-/* --- sylva's tracer ------------------------------------------------------------------------ */
-
-/* What the sink keeps of the maps: each mode's visible cell-targets, and the class of every cell
- * in the screened mode (the raw loop casts only bare-earth rays from a cell under a crown). */
-typedef struct map_record {
-    ztv_mode screened;
-    uint32_t nx;
-    uint8_t *cls;          /* nx * ny; owned by the caller */
-    uint64_t visible[ZTV_MODES];
-} map_record;
-
-static int record_block(void *user, const ztv_block *b, err_buf *err)
-{
-    (void)err;
-    map_record *r = user;
-    size_t n = (size_t)b->rows * r->nx, first = (size_t)b->j0 * r->nx;
-    for (int m = 0; m < ZTV_MODES; m++)
-        for (size_t k = 0; b->layer[m] && k < n; k++) r->visible[m] += b->layer[m]->visible[k];
-    const ztv_layer *l = b->layer[r->screened];
-    memcpy(r->cls + first, l->cls, n);
-    return 0;
-}
-
-/* One map of job's mode; its wall time, or -1 with err. */
-static double run_tracer(const ztv_job *job, map_record *rec, ztv_stats *st, err_buf *err)
-{
-    rec->screened = job->screened;
-    memset(rec->visible, 0, sizeof rec->visible);
-    double t0 = progress_now();
-    if (ztv_trace(job, record_block, rec, st, err)) return -1;
-    return progress_now() - t0;
-}
-
-/* --- raw Embree: the same rays through rtcOccluded1 ---------------------------------------- */
-
-typedef struct raw_job {
-    const accel *acc;
-    const ztv_grid *grid;
-    const sylva_heightfield *hf;
-    const double (*target)[3];
-    const uint8_t *cls;    /* the screened mode's classes, or NULL for bare earth alone */
-    unsigned screen_mask;
-    uint32_t first, stride; /* rows first, first + stride, ... (interleaved: the threads' loads even out) */
-    uint64_t rays, visible[2];
-} raw_job;
-
-/* The straight sightline from eye to target as ztv_sight_clear casts it: 1 when clear. */
-static int raw_clear(RTCScene top, const float eye[3], const double t[3], unsigned mask)
-{
-    double d[3] = {t[0] - eye[0], t[1] - eye[1], t[2] - eye[2]};
-    double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), far = len - ZTV_SIGHT_GAP;
-    struct RTCIntersectContext ctx;
-    rtcInitIntersectContext(&ctx);
-    struct RTCRay ray = {.org_x = eye[0], .org_y = eye[1], .org_z = eye[2],
-                         .tnear = (float)fmin(ZTV_SIGHT_GAP, 0.5 * far), .dir_x = (float)(d[0] / len),
-                         .dir_y = (float)(d[1] / len), .dir_z = (float)(d[2] / len),
-                         .tfar = (float)far, .mask = mask};
-    rtcOccluded1(top, &ctx, &ray);
-    return ray.tfar >= 0;
-}
-
-static void *raw_rows(void *arg)
-{
-    raw_job *j = arg;
-    const ztv_grid *g = j->grid;
-    uint64_t rays = 0, visible[2] = {0, 0}; /* local: the jobs share cache lines */
-    uint64_t bare_clear = 0, screened_blocked = 0; /* choose which sightline to cast first */
-    for (uint32_t row = j->first; row < g->ny; row += j->stride)
-        for (uint32_t i = 0; i < g->nx; i++) {
-            double x, y, ground;
-            ztv_cell_centre(g, i, row, &x, &y);
-            ztv_ground(j->acc->scene, x, y, &ground);
-            float eye[3] = {(float)x, (float)y, (float)(ground + EYE)};
-            int open = j->cls && j->cls[(size_t)row * g->nx + i] == ZTV_OPEN;
-            for (uint32_t t = 0; t < N_TARGETS; t++) {
-                int bare, screened = 0;
-                if (!open) {
-                    bare = (rays++, raw_clear(j->acc->top, eye, j->target[t], ACCEL_MASK_GROUND));
-                } else if (bare_clear < screened_blocked) { /* bare earth first: it settles more */
-                    bare = (rays++, raw_clear(j->acc->top, eye, j->target[t], ACCEL_MASK_GROUND));
-                    screened = bare && (rays++, raw_clear(j->acc->top, eye, j->target[t], j->screen_mask));
-                } else { /* the screened sightline first */
-                    screened = (rays++, raw_clear(j->acc->top, eye, j->target[t], j->screen_mask));
-                    bare = screened || (rays++, raw_clear(j->acc->top, eye, j->target[t], ACCEL_MASK_GROUND));
-                }
-                if (open) bare_clear += bare, screened_blocked += !screened;
-                visible[0] += bare, visible[1] += screened;
-            }
-        }
-    j->rays = rays, j->visible[0] = visible[0], j->visible[1] = visible[1];
-    return NULL;
-}
-
-/* One run of the loop on `threads` threads: its wall time, its tallies in *out. */
-static double raw_once(raw_job proto, unsigned threads, raw_job *out)
-{
-    raw_job jobs[64];
-    pthread_t tid[64];
-    double t0 = progress_now();
-    for (unsigned k = 0; k < threads; k++) {
-        jobs[k] = proto;
-        jobs[k].first = k, jobs[k].stride = threads;
-        pthread_create(&tid[k], NULL, raw_rows, &jobs[k]);
-    }
-    *out = proto;
-    for (unsigned k = 0; k < threads; k++) {
-        pthread_join(tid[k], NULL);
-        out->rays += jobs[k].rays, out->visible[0] += jobs[k].visible[0], out->visible[1] += jobs[k].visible[1];
-    }
-    return progress_now() - t0;
-}
-
-/* The tracer's map of job's mode and the loop over the same rays (and over `also`, when not
- * NULL), in turn REPEATS times: their best wall times in *t_sylva, *t_raw (and *t_also), the
- * tallies in *st and *got. 0, or -1 with err. */
-static int time_mode(const ztv_job *job, map_record *rec, raw_job raw, const raw_job *also, unsigned threads,
-                     double *t_sylva, double *t_raw, double *t_also, ztv_stats *st, raw_job *got, err_buf *err)
-{
-    *t_sylva = *t_raw = INFINITY;
-    if (also) *t_also = INFINITY;
-    for (int rep = 0; rep < REPEATS; rep++) {
-        double t = run_tracer(job, rec, st, err);
-        if (t < 0) return -1;
-        *t_sylva = fmin(*t_sylva, t);
-        *t_raw = fmin(*t_raw, raw_once(raw, threads, got));
-        raw_job unused;
-        if (also) *t_also = fmin(*t_also, raw_once(*also, threads, &unused));
-    }
-    return 0;
-}
-
-/* --- gdal_viewshed ------------------------------------------------------------------------- */
-
 /* The terrain as a Float32 GeoTIFF at path (pixels = nodes, local metres) on a transverse
  * Mercator of a sphere; 0 or -1. */
 static int write_terrain(const char *path, const sylva_heightfield *hf)
@@ -279,18 +120,6 @@ static int write_terrain(const char *path, const sylva_heightfield *hf)
     return rc ? -1 : 0;
 }
 
-/* Seconds for gdal_viewshed from every target over dem, one command each; -1 when one fails. */
-static double gdal_viewshed_time(const char *dem, const char *dir, const double (*target)[3])
-{
-    double t0 = progress_now();
-    for (uint32_t t = 0; t < N_TARGETS; t++) {
-        char cmd[1024];
-        snprintf(cmd, sizeof cmd, "gdal_viewshed -q -ox %.3f -oy %.3f -oz %g -tz %g -cc 0 %s %s/viewshed_%u.tif",
-                 target[t][0], target[t][1], HUB, EYE, dem, dir, t);
-        if (system(cmd) != 0) return -1;
-    }
-    return progress_now() - t0;
-}
 
 /* The 1, 5 and 15 minute load averages (/proc/loadavg): other work on the machine shows in them. */
 static const char *load_average(void)
@@ -305,145 +134,404 @@ static const char *load_average(void)
     return line;
 }
 
-/* sylva / raw is the ratio of their rays per second (their ray counts may differ a little). */
-static void print_map(const char *what, double seconds, const ztv_stats *st, double raw, uint64_t raw_rays)
+
+
+
+/* The heightfield of the real DTM: its first band, nodes REAL_CELL m apart centred on the origin;
+ * NULL when it cannot be read. */
+static sylva_heightfield *terrain_read(const char *path)
 {
-    printf("sylva ztv, %-22s %6.3f s: %6.2f M cell-targets/s, %.2f M rays/s (%llu rays)  goal <= 10 s\n", what,
-           seconds, st->pairs / seconds / 1e6, st->rays / seconds / 1e6, (unsigned long long)st->rays);
-    if (raw > 0)
-        printf("raw Embree, the same rays:     %6.3f s: %6.2f M rays/s (%llu rays); sylva / raw: %.2f "
-               "(goal >= 0.7)\n", raw, raw_rays / raw / 1e6, (unsigned long long)raw_rays,
-               (st->rays / seconds) / (raw_rays / raw));
+    GDALAllRegister();
+    GDALDatasetH ds = GDALOpen(path, GA_ReadOnly);
+    if (!ds) return NULL;
+    uint32_t nx = (uint32_t)GDALGetRasterXSize(ds), ny = (uint32_t)GDALGetRasterYSize(ds);
+    sylva_heightfield *hf = calloc(1, sizeof *hf);
+    float *z = malloc((size_t)nx * ny * sizeof *z); /* the heightfield's; freed with it */
+    int ok = hf && z;
+    for (uint32_t row = 0; ok && row < ny; row++)
+        ok = GDALRasterIO(GDALGetRasterBand(ds, 1), GF_Read, 0, (int)row, (int)nx, 1,
+                          z + (size_t)(ny - 1 - row) * nx, (int)nx, 1, GDT_Float32, 0, 0) == CE_None;
+    GDALClose(ds);
+    if (!ok) return free(hf), free(z), NULL;
+    *hf = (sylva_heightfield){.size = sizeof *hf, .nx = nx, .ny = ny, .x0 = -0.5 * (nx - 1) * REAL_CELL,
+                              .y0 = -0.5 * (ny - 1) * REAL_CELL, .dx = REAL_CELL, .dy = REAL_CELL, .z = z,
+                              .water_material = -1};
+    return hf;
+}
+
+/* A scene on heightfield hf (taken) with `trees` trees in stands; NULL with err. */
+static scene *build(sylva_heightfield *hf, uint32_t trees, err_buf *err)
+{
+    scene *s = scene_new();
+    if (!s || !hf || !(s->species = calloc(1, sizeof(species))))
+        return scene_free(s), free(hf), err_nomem(err, "out of memory for the scene"), NULL;
+    s->terrain = hf;
+    if (!trees) return s;
+    s->species[0] = (species){.name = strdup("tree"), .first_prototype = 0, .n_variants = 1};
+    s->n_species = 1;
+    mesh *m = tree_mesh(s->default_material, err);
+    sylva_plant *plants = malloc((size_t)trees * sizeof *plants);
+    if (!m || !plants || scene_add_prototype(s, 0, 0, 1.0, 10.0, m, err) < 0) {
+        if (!plants) err_nomem(err, "out of memory for %u plants", trees);
+        return free(plants), scene_free(s), NULL;
+    }
+    sylva_rng r;
+    rng_stream(&r, 14, "ztv bench forest", 0);
+    double hx = 0.5 * (hf->nx - 1) * hf->dx, hy = 0.5 * (hf->ny - 1) * hf->dy;
+    for (uint32_t k = 0; k < trees;) {
+        double x = -hx + 2 * hx * rng_next_double(&r), y = -hy + 2 * hy * rng_next_double(&r);
+        double rot = 2 * M_PI * rng_next_double(&r), h = 8 + 17 * rng_next_double(&r);
+        if (in_stand(x, y))
+            plants[k++] = (sylva_plant){.size = sizeof(sylva_plant), .position = {x, y, 0}, .snap_to_terrain = 1,
+                                        .rotation = rot, .height = h, .age = 1};
+    }
+    int rc = scene_place_plants(s, plants, trees, err);
+    free(plants);
+    return rc ? scene_free(s), NULL : s;
+}
+
+/* The targets: a square lattice 300 m apart round the centre, HUB m above the ground, the first
+ * ones nearest the centre. */
+static void targets_place(const scene *s, double p[MAX_TARGETS][3], double xy[MAX_TARGETS][2])
+{
+    for (uint32_t t = 0; t < MAX_TARGETS; t++) {
+        int i = (int)(t % 10) - 5, j = (int)(t / 10) - 5;
+        double x = 300.0 * i + 150, y = 300.0 * j + 150, z;
+        scene_terrain_height(s, x, y, &z);
+        p[t][0] = xy[t][0] = x, p[t][1] = xy[t][1] = y, p[t][2] = z + HUB;
+    }
+    /* nearest the centre first: 1 and 10 targets stand together, as a development's do */
+    for (uint32_t a = 0; a < MAX_TARGETS; a++)
+        for (uint32_t b = a + 1; b < MAX_TARGETS; b++)
+            if (hypot(p[b][0], p[b][1]) < hypot(p[a][0], p[a][1]) - 1e-9) {
+                for (int k = 0; k < 3; k++) {
+                    double q = p[a][k];
+                    p[a][k] = p[b][k], p[b][k] = q;
+                }
+                xy[a][0] = p[a][0], xy[a][1] = p[a][1], xy[b][0] = p[b][0], xy[b][1] = p[b][1];
+            }
+}
+
+/* --- clocks and processes ------------------------------------------------------------------ */
+
+typedef struct cost {
+    double cpu, wall;   /* seconds */
+} cost;
+
+static double cpu_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+static void keep_best(cost *best, cost c)
+{
+    if (c.cpu < best->cpu) best->cpu = c.cpu;
+    if (c.wall < best->wall) best->wall = c.wall;
+}
+
+/* Runs the n commands (argv lists), at most `parallel` at once, their output to /dev/null: the
+ * processes' CPU time and the batch's wall time; cpu < 0 when one failed. */
+static cost run_commands(char **const *cmds, uint32_t n, unsigned parallel)
+{
+    cost c = {0, 0};
+    double t0 = progress_now();
+    uint32_t next = 0, running = 0;
+    int failed = 0;
+    while (next < n || running) {
+        if (next < n && running < parallel) {
+            fflush(NULL); /* what is buffered is the parent's to write */
+            pid_t pid = fork();
+            if (pid == 0) {
+                if (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr)) _exit(126);
+                execvp(cmds[next][0], cmds[next]);
+                _exit(127);
+            }
+            if (pid < 0) return (cost){-1, 0};
+            next++, running++;
+            continue;
+        }
+        int status;
+        struct rusage ru;
+        if (wait4(-1, &status, 0, &ru) < 0) return (cost){-1, 0};
+        running--;
+        failed |= !WIFEXITED(status) || WEXITSTATUS(status);
+        c.cpu += ru.ru_utime.tv_sec + 1e-6 * ru.ru_utime.tv_usec + ru.ru_stime.tv_sec + 1e-6 * ru.ru_stime.tv_usec;
+    }
+    c.wall = progress_now() - t0;
+    if (failed) c.cpu = -1;
+    return c;
+}
+
+/* --- the two tools as processes ------------------------------------------------------------ */
+
+typedef struct site {
+    const char *name;
+    const scene *s;
+    char dem[256], dir[128];
+    double (*p)[3];
+} site;
+
+/* The scene file of the first n targets over the site's GeoTIFF at path; 0 or -1. */
+static int scene_file_write(const site *st, uint32_t n, const char *path)
+{
+    FILE *f = fopen(path, "w");
+    if (!f) return -1;
+    fprintf(f, "camera: {position: [0, -5000, 3000], look_at: [0, 0, 0]}\nterrain:\n  plugin: terrain_ifs\n"
+               "  dtm: %s\nearth: {curvature: true, refraction: %g}\nztv:\n  observer_height: %g\n"
+               "  screening: none\n  targets:\n", st->dem, REFRACTION, EYE);
+    for (uint32_t t = 0; t < n; t++)
+        fprintf(f, "    - {position: [%.3f, %.3f], height_above_ground: %g, development: D}\n", st->p[t][0],
+                st->p[t][1], HUB);
+    return fclose(f) ? -1 : 0;
+}
+
+/* sylva ztv over the first n targets on `threads` threads, as a process. */
+static cost sylva_process(const site *st, const char *sylva, uint32_t n, unsigned threads)
+{
+    static unsigned run;
+    char yaml[256], out[256], th[16];
+    snprintf(yaml, sizeof yaml, "%s/scene_%u.yaml", st->dir, n);
+    snprintf(th, sizeof th, "%u", threads);
+    if (scene_file_write(st, n, yaml)) return (cost){-1, 0};
+    cost best = {INFINITY, INFINITY};
+    for (int rep = 0; rep < repeats; rep++) {
+        snprintf(out, sizeof out, "%s/ztv_%u", st->dir, run++);
+        char *argv[] = {(char *)sylva, "ztv", yaml, "-o", out, "-q", "--threads", th, NULL}, **cmds[1] = {argv};
+        cost c = run_commands(cmds, 1, 1);
+        if (c.cpu < 0) return c;
+        keep_best(&best, c);
+    }
+    return best;
+}
+
+/* gdal_viewshed once per target of the first n, `parallel` processes at a time. */
+static cost gdal_processes(const site *st, uint32_t n, unsigned parallel)
+{
+    static char text[MAX_TARGETS][4][40];
+    char *argv[MAX_TARGETS][16], **cmds[MAX_TARGETS];
+    for (uint32_t t = 0; t < n; t++) {
+        snprintf(text[t][0], 40, "%.3f", st->p[t][0]), snprintf(text[t][1], 40, "%.3f", st->p[t][1]);
+        snprintf(text[t][2], 40, "%s/gdal_%u.tif", st->dir, t), snprintf(text[t][3], 40, "%g", 1 - REFRACTION);
+        char *a[] = {"gdal_viewshed", "-q", "-ox", text[t][0], "-oy", text[t][1], "-oz", "150", "-tz", "2",
+                     "-cc", text[t][3], (char *)st->dem, text[t][2], NULL};
+        memcpy(argv[t], a, sizeof a);
+        cmds[t] = argv[t];
+    }
+    cost best = {INFINITY, INFINITY};
+    for (int rep = 0; rep < repeats; rep++) {
+        cost c = run_commands(cmds, n, parallel);
+        if (c.cpu < 0) return c;
+        keep_best(&best, c);
+    }
+    return best;
+}
+
+/* --- the tracing alone ---------------------------------------------------------------------- */
+
+/* The sink of the tracing alone: the blocks are counted, not written. */
+static int count_block(void *user, const ztv_block *b, err_buf *err)
+{
+    (void)err;
+    *(uint64_t *)user += b->rows;
+    return 0;
+}
+
+/* sylva's tracer over job (its Embree scene built), the best of the runs. */
+static cost sylva_tracing(const ztv_job *job, ztv_stats *st, err_buf *err)
+{
+    cost best = {INFINITY, INFINITY};
+    for (int rep = 0; rep < repeats; rep++) {
+        uint64_t rows = 0;
+        double c0 = cpu_now(), t0 = progress_now();
+        if (ztv_trace(job, count_block, &rows, st, err)) return (cost){-1, 0};
+        keep_best(&best, (cost){cpu_now() - c0, progress_now() - t0});
+    }
+    return best;
+}
+
+typedef struct gdal_share {
+    const char *dem;
+    const double (*p)[3];
+    uint32_t first, step, n;
+    int failed;
+} gdal_share;
+
+/* GDALViewshedGenerate for targets first, first + step, ... into memory, on its own dataset. */
+static void *gdal_share_run(void *arg)
+{
+    gdal_share *g = arg;
+    GDALDatasetH ds = GDALOpen(g->dem, GA_ReadOnly);
+    if (!ds) return g->failed = 1, NULL;
+    for (uint32_t t = g->first; t < g->n; t += g->step) {
+        GDALDatasetH out = GDALViewshedGenerate(GDALGetRasterBand(ds, 1), "MEM", "", NULL, g->p[t][0], g->p[t][1],
+                                                HUB, EYE, 255, 0, 0, 0, 1 - REFRACTION, GVM_Edge, 0, NULL, NULL,
+                                                GVOT_NORMAL, NULL);
+        if (!out) g->failed = 1;
+        else GDALClose(out);
+    }
+    GDALClose(ds);
+    return NULL;
+}
+
+/* gdal_viewshed's algorithm in-process over the first n targets on `threads` threads. */
+static cost gdal_tracing(const site *st, uint32_t n, unsigned threads)
+{
+    cost best = {INFINITY, INFINITY};
+    for (int rep = 0; rep < repeats; rep++) {
+        gdal_share share[64];
+        pthread_t tid[64];
+        double c0 = cpu_now(), t0 = progress_now();
+        for (unsigned k = 0; k < threads; k++) {
+            share[k] = (gdal_share){st->dem, (const double(*)[3])st->p, k, threads, n, 0};
+            pthread_create(&tid[k], NULL, gdal_share_run, &share[k]);
+        }
+        int failed = 0;
+        for (unsigned k = 0; k < threads; k++) pthread_join(tid[k], NULL), failed |= share[k].failed;
+        if (failed) return (cost){-1, 0};
+        keep_best(&best, (cost){cpu_now() - c0, progress_now() - t0});
+    }
+    return best;
+}
+
+/* --- the report ----------------------------------------------------------------------------- */
+
+static void print_pair(const char *what, uint32_t n, unsigned threads, cost s, cost g)
+{
+    if (s.cpu < 0 || g.cpu < 0) {
+        printf("  %-17s %3u targets, %u thread%s: %s failed\n", what, n, threads, threads > 1 ? "s" : "",
+               s.cpu < 0 ? "sylva" : "gdal_viewshed");
+        return;
+    }
+    printf("  %-17s %3u targets, %u thread%s: sylva %7.3f s CPU %7.3f s wall | gdal %7.3f s CPU %7.3f s wall"
+           " | per target CPU sylva %.4f s gdal %.4f s | sylva / gdal CPU %.3f\n",
+           what, n, threads, threads > 1 ? "s" : " ", s.cpu, s.wall, g.cpu, g.wall, s.cpu / n, g.cpu / n,
+           s.cpu / g.cpu);
+}
+
+/* Both tools on one site: whole processes and the tracing alone. The CPU ratios of the goals
+ * into ratio_one (1 target, whole process, 1 thread) and ratio_hundred (100 targets, per target). */
+static int compare_site(site *st, accel *acc, const char *sylva, unsigned threads, int gdal, double *ratio_one,
+                        double *ratio_hundred, err_buf *err)
+{
+    double xy[MAX_TARGETS][2], centre[1][2] = {{0, 0}};
+    uint32_t dev[MAX_TARGETS] = {0};
+    const char *names[1] = {"D"};
+    for (uint32_t t = 0; t < MAX_TARGETS; t++) xy[t][0] = st->p[t][0], xy[t][1] = st->p[t][1];
+    earth_settings earth = {.curvature = 1, .refraction = REFRACTION, .radius = 6371000};
+    ztv_targets tg = {.source = ZTV_TARGETS_GIVEN, .p = st->p, .xy = xy, .development = dev, .n_developments = 1,
+                      .names = names, .centre = centre};
+    ztv_job job = {.scene = st->s, .accel = acc, .targets = &tg, .observer_height = EYE, .radius = INFINITY,
+                   .screened = ZTV_BARE, .earth = &earth, .quiet = 1};
+    tg.n = MAX_TARGETS;
+    if (ztv_grid_make(st->s, &tg, st->s->terrain->dx, INFINITY, &job.grid, err)) return -1;
+    printf("%s: %u x %u nodes of %g m, %.3g cells; observers %g m, targets %g m above the ground; curved Earth, "
+           "refraction %g\n", st->name, st->s->terrain->nx, st->s->terrain->ny, st->s->terrain->dx,
+           (double)job.grid.nx * job.grid.ny, EYE, HUB, REFRACTION);
+    unsigned counts[2] = {1, threads};
+    for (int w = 0; w < 2 - (threads == 1); w++) {
+        unsigned th = counts[w];
+        for (size_t k = 0; k < N_COUNTS; k++) {
+            uint32_t n = target_counts[k];
+            cost s = sylva_process(st, sylva, n, th), g = gdal ? gdal_processes(st, n, th) : (cost){-1, 0};
+            print_pair("whole processes", n, th, s, g);
+            if (th == 1 && n == 1 && s.cpu > 0 && g.cpu > 0) *ratio_one = s.cpu / g.cpu;
+            if (th == 1 && n == 100 && s.cpu > 0 && g.cpu > 0) *ratio_hundred = s.cpu / g.cpu;
+            tg.n = n, job.threads = th;
+            ztv_stats stats;
+            cost ts = sylva_tracing(&job, &stats, err), tgd = gdal ? gdal_tracing(st, n, th) : (cost){-1, 0};
+            print_pair("tracing alone", n, th, ts, tgd);
+            printf("  %-17s %3u targets: %.1f %% of the pairs settled by the bare-earth sweep, %.3f rays a pair\n",
+                   "", n, stats.pairs ? 100.0 * stats.swept / stats.pairs : 0.0,
+                   stats.pairs ? (double)stats.rays / stats.pairs : 0.0);
+        }
+    }
+    return 0;
 }
 
 int main(int argc, char **argv)
 {
-    uint32_t cells = 1000, trees = 150000;
+    uint32_t cells = 1000, trees = 100000;
     unsigned threads = 2;
-    int curvature = 0, gdal = 1;
+    int gdal = 1;
+    const char *dem = REAL_DEM, *sylva = SYLVA_BUILD_ROOT "/sylva";
     for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--curvature")) curvature = 1;
-        else if (!strcmp(argv[i], "--no-gdal")) gdal = 0;
+        if (!strcmp(argv[i], "--no-gdal")) gdal = 0;
         else if (i + 1 < argc && !strcmp(argv[i], "--cells")) cells = (uint32_t)atol(argv[++i]);
         else if (i + 1 < argc && !strcmp(argv[i], "--trees")) trees = (uint32_t)atol(argv[++i]);
         else if (i + 1 < argc && !strcmp(argv[i], "--threads")) threads = (unsigned)atol(argv[++i]);
+        else if (i + 1 < argc && !strcmp(argv[i], "--dem")) dem = argv[++i];
+        else if (i + 1 < argc && !strcmp(argv[i], "--sylva")) sylva = argv[++i];
+        else if (i + 1 < argc && !strcmp(argv[i], "--repeats")) repeats = atoi(argv[++i]);
         else {
-            fprintf(stderr, "usage: ztv_bench [--cells N] [--trees N] [--threads N] [--curvature] [--no-gdal]\n");
+            fprintf(stderr, "usage: ztv_bench [--cells N] [--trees N] [--threads N] [--dem FILE] [--sylva PATH] "
+                            "[--no-gdal]\n");
             return 1;
         }
     }
-    if (cells < 300 || cells > 20000 || threads < 1 || threads > 64)
-        return fprintf(stderr, "ztv_bench: --cells 300..20000, --threads 1..64\n"), 1;
-    char cpu[256];
+    if (cells < 300 || cells > 20000 || threads < 1 || threads > 64 || repeats < 1)
+        return fprintf(stderr, "ztv_bench: --cells 300..20000, --threads 1..64, --repeats 1 or more\n"), 1;
+    char cpu[256], dir[] = "/tmp/ztv_bench.XXXXXX";
     bench_cpu_model(cpu, sizeof cpu);
     printf("machine: %s, %ld processors online; %u threads; load average %s\n", cpu,
            sysconf(_SC_NPROCESSORS_ONLN), threads, load_average());
+    if (!mkdtemp(dir)) return perror("ztv_bench: mkdtemp"), 3;
     err_buf err = {{0}};
-    double target[N_TARGETS][3];
-    double t0 = progress_now();
-    scene *s = build(cells, trees, target, &err);
+    double ratio_one = NAN, ratio_hundred = NAN, p[2][MAX_TARGETS][3], xy[MAX_TARGETS][2];
+    sylva_heightfield *real = terrain_read(dem);
+    if (!real) printf("real DTM %s: not read (the shared data beside the clone?); skipped\n", dem);
+    for (int k = real ? 0 : 1; k < 2; k++) {
+        site st = {.name = k ? "generated DTM" : "real DTM (Zion SRTM)", .p = p[k]};
+        scene *s = build(k ? terrain_new(cells) : real, 0, &err);
+        accel acc;
+        if (!s || accel_build(&acc, s, threads, &err)) return fprintf(stderr, "ztv_bench: %s\n", err.msg), 4;
+        st.s = s;
+        targets_place(s, p[k], xy);
+        snprintf(st.dir, sizeof st.dir, "%s/%s", dir, k ? "generated" : "real");
+        snprintf(st.dem, sizeof st.dem, "%s/dtm.tif", st.dir);
+        if (mkdir(st.dir, 0700) || write_terrain(st.dem, s->terrain))
+            return fprintf(stderr, "ztv_bench: cannot write %s\n", st.dem), 3;
+        double one = NAN, hundred = NAN;
+        if (compare_site(&st, &acc, sylva, threads, gdal, &one, &hundred, &err))
+            return fprintf(stderr, "ztv_bench: %s\n", err.msg), 4;
+        if (k == 0) ratio_one = one, ratio_hundred = hundred;
+        accel_free(&acc);
+        scene_free(s);
+    }
+
+    /* screening: the generated DTM with its forest, 10 targets, tracing alone */
+    scene *s = build(terrain_new(cells), trees, &err);
     accel acc;
     if (!s || accel_build(&acc, s, threads, &err)) return fprintf(stderr, "ztv_bench: %s\n", err.msg), 4;
-    printf("scene: %u x %u nodes %g m apart, %u targets %g m above the ground, %u trees; built with its Embree "
-           "scene in %.2f s\n", cells, cells, SPACING, N_TARGETS, HUB, s->n_instances, progress_now() - t0);
-
-    /* the development: one, of the ten targets */
-    double xy[N_TARGETS][2], centre[1][2] = {{0, 0}};
-    uint32_t dev[N_TARGETS] = {0};
-    const char *names[1] = {"wind farm"};
-    for (uint32_t t = 0; t < N_TARGETS; t++) xy[t][0] = target[t][0], xy[t][1] = target[t][1];
-    for (uint32_t t = 0; t < N_TARGETS; t++) centre[0][0] += xy[t][0] / N_TARGETS, centre[0][1] += xy[t][1] / N_TARGETS;
-    ztv_targets tg = {.source = ZTV_TARGETS_GIVEN, .n = N_TARGETS, .p = target, .xy = xy, .development = dev,
+    targets_place(s, p[1], xy);
+    double centre[1][2] = {{0, 0}};
+    uint32_t dev[MAX_TARGETS] = {0};
+    const char *names[1] = {"D"};
+    earth_settings earth = {.curvature = 1, .refraction = REFRACTION, .radius = 6371000};
+    ztv_targets tg = {.source = ZTV_TARGETS_GIVEN, .n = 10, .p = p[1], .xy = xy, .development = dev,
                       .n_developments = 1, .names = names, .centre = centre};
     ztv_job job = {.scene = s, .accel = &acc, .targets = &tg, .observer_height = EYE, .radius = INFINITY,
-                   .screened = ZTV_BARE, .threads = threads, .quiet = 1};
-    if (ztv_grid_make(s, &tg, 0, INFINITY, &job.grid, &err)) return fprintf(stderr, "ztv_bench: %s\n", err.msg), 4;
-    const double pairs = (double)job.grid.nx * job.grid.ny * N_TARGETS;
-    printf("map: %u x %u cells of %g m, observer %g m: %.0f cell-targets; flat Earth\n", job.grid.nx, job.grid.ny,
-           job.grid.cell, EYE, pairs);
-    map_record rec = {.nx = job.grid.nx, .cls = malloc((size_t)job.grid.nx * job.grid.ny)};
-    if (!rec.cls) return fprintf(stderr, "ztv_bench: out of memory\n"), 4;
-
-    /* bare earth alone; and, for what skipping the plants by mask costs, the same rays through an
-     * Embree scene of the terrain alone */
+                   .screened = ZTV_BARE, .earth = &earth, .threads = threads, .quiet = 1};
+    if (ztv_grid_make(s, &tg, s->terrain->dx, INFINITY, &job.grid, &err)) return fprintf(stderr, "ztv_bench: %s\n", err.msg), 4;
     ztv_stats st;
-    raw_job raw = {.acc = &acc, .grid = &job.grid, .hf = s->terrain, .target = (const double(*)[3])target}, got;
-    scene *ground = scene_new();
-    accel acc_ground;
-    if (!ground || !(ground->terrain = terrain_new(cells)) || accel_build(&acc_ground, ground, threads, &err))
-        return fprintf(stderr, "ztv_bench: %s\n", err.msg[0] ? err.msg : "out of memory"), 4;
-    raw_job alone = raw;
-    alone.acc = &acc_ground;
-    double t_bare, r_bare, r_alone;
-    if (time_mode(&job, &rec, raw, &alone, threads, &t_bare, &r_bare, &r_alone, &st, &got, &err))
-        return fprintf(stderr, "ztv_bench: %s\n", err.msg), 4;
-    accel_free(&acc_ground);
-    scene_free(ground);
-    print_map("bare earth:", t_bare, &st, r_bare, got.rays);
-    printf("raw Embree, the same rays through the terrain alone (no plants to skip): %6.3f s: %6.2f M rays/s\n",
-           r_alone, got.rays / r_alone / 1e6);
-    if (got.visible[0] != rec.visible[ZTV_BARE])
-        printf("MISMATCH: the raw loop sees %llu cell-targets in %llu rays, the map %llu in %llu\n",
-               (unsigned long long)got.visible[0], (unsigned long long)got.rays,
-               (unsigned long long)rec.visible[ZTV_BARE], (unsigned long long)st.rays);
-    uint64_t bare_visible = rec.visible[ZTV_BARE];
-
-    /* bare earth and vegetation */
+    cost bare = sylva_tracing(&job, &st, &err);
     job.screened = ZTV_VEGETATION;
-    raw.cls = rec.cls, raw.screen_mask = ztv_mode_mask(ZTV_VEGETATION);
-    double t_veg, r_veg;
-    if (time_mode(&job, &rec, raw, NULL, threads, &t_veg, &r_veg, NULL, &st, &got, &err))
-        return fprintf(stderr, "ztv_bench: %s\n", err.msg), 4;
-    print_map("bare and vegetation:", t_veg, &st, r_veg, got.rays);
-    if (got.visible[0] != rec.visible[ZTV_BARE] || got.visible[1] != rec.visible[ZTV_VEGETATION])
-        printf("MISMATCH: the raw loop sees %llu / %llu cell-targets in %llu rays, the map %llu / %llu in %llu\n",
-               (unsigned long long)got.visible[0], (unsigned long long)got.visible[1], (unsigned long long)got.rays,
-               (unsigned long long)rec.visible[ZTV_BARE], (unsigned long long)rec.visible[ZTV_VEGETATION],
-               (unsigned long long)st.rays);
-    size_t under = 0;
-    for (size_t k = 0; k < (size_t)job.grid.nx * job.grid.ny; k++) under += rec.cls[k] == ZTV_UNDER_CROWN;
-    printf("  visible cell-targets: bare %llu (%.1f %%), vegetation %llu (%.1f %%); %zu cells under a crown\n",
-           (unsigned long long)bare_visible, 100.0 * bare_visible / pairs,
-           (unsigned long long)rec.visible[ZTV_VEGETATION], 100.0 * rec.visible[ZTV_VEGETATION] / pairs, under);
-
-    if (curvature) {
-        earth_settings earth = {.curvature = 1, .refraction = 0.13, .radius = 6371000};
-        job.earth = &earth;
-        const ztv_mode modes[2] = {ZTV_BARE, ZTV_VEGETATION};
-        const char *what[2] = {"bare, curved Earth:", "vegetation, curved:"};
-        for (int m = 0; m < 2; m++) {
-            job.screened = modes[m];
-            double best = INFINITY;
-            for (int rep = 0; rep < REPEATS; rep++) {
-                double t = run_tracer(&job, &rec, &st, &err);
-                if (t < 0) return fprintf(stderr, "ztv_bench: %s\n", err.msg), 4;
-                best = fmin(best, t);
-            }
-            print_map(what[m], best, &st, 0, 0);
-        }
-    }
-
-    if (gdal) {
-        char dir[] = "/tmp/ztv_bench.XXXXXX", dem[64], cmd[128];
-        if (!mkdtemp(dir)) return perror("ztv_bench: mkdtemp"), 3;
-        snprintf(dem, sizeof dem, "%s/terrain.tif", dir);
-        double g = write_terrain(dem, s->terrain) ? -1 : INFINITY;
-        for (int rep = 0; rep < REPEATS && g >= 0; rep++) {
-            double t = gdal_viewshed_time(dem, dir, (const double(*)[3])target);
-            g = t < 0 ? -1 : fmin(g, t);
-        }
-        if (g < 0) printf("gdal_viewshed: not run (no gdal_viewshed, or it failed)\n");
-        else
-            printf("gdal_viewshed, bare earth:     %6.3f s for %u runs, one per target: %.2f M cell-targets/s; "
-                   "sylva's bare map takes %.2f times as long\n", g, N_TARGETS, pairs / g / 1e6, t_bare / g);
-        snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-        if (system(cmd) != 0) fprintf(stderr, "ztv_bench: could not remove %s\n", dir);
-    }
+    cost screened = sylva_tracing(&job, &st, &err);
+    if (bare.cpu < 0 || screened.cpu < 0) return fprintf(stderr, "ztv_bench: %s\n", err.msg), 4;
+    printf("screening: generated DTM, %u trees, 10 targets, %u threads, tracing alone: bare earth %.3f s CPU "
+           "%.3f s wall; bare earth and vegetation %.3f s CPU %.3f s wall: %.2f times bare earth's CPU\n",
+           s->n_instances, threads, bare.cpu, bare.wall, screened.cpu, screened.wall, screened.cpu / bare.cpu);
+    printf("goals: one target on the real DTM, whole process, 1 thread: sylva / gdal_viewshed CPU %.3f (goal <= 1); "
+           "100 targets, per target: %.3f (goal <= 0.2); screened / bare earth CPU %.2f (goal <= 2)\n",
+           ratio_one, ratio_hundred, screened.cpu / bare.cpu);
+    accel_free(&acc);
+    scene_free(s);
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
     printf("peak memory: %.0f MiB; load average at the end %s\n", ru.ru_maxrss / 1024.0, load_average());
-    free(rec.cls);
-    accel_free(&acc);
-    scene_free(s);
+    char cmd[160];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    if (system(cmd) != 0) fprintf(stderr, "ztv_bench: could not remove %s\n", dir);
     return 0;
 }

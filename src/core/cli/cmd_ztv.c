@@ -62,6 +62,8 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
                        "(default; a ZTV is a property of the DTM and the development), or the terrain plugin's "
                        "refinement, with its levels of detail around the development, not the camera"),
         CLI_OPT_FLAG("--flat-earth", o.flat_earth, "straight sightlines, whatever the earth: section says"),
+        CLI_OPT_FLAG("--sightlines", o.sightlines, "every pair by its sightline, bare earth too, without the "
+                     "bare-earth sweep (slower; the same maps)"),
         CLI_OPT_TEXT("--season", "S", season, CLI_HELP_SEASON),
         CLI_OPT_WHOLE("--threads", "N", bo.threads, 1, 1024, "threads for every phase (default: one per core, "
                       "shared out between the ranks of an MPI job on one machine); the maps do not depend on it"),

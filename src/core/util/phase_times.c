@@ -6,7 +6,8 @@
 #include "util/progress.h"
 
 static const char *const names[PHASE_COUNT] = {
-    [PHASE_TERRAIN] = "terrain",         [PHASE_TREES] = "tree variants",
+    [PHASE_LIBRARIES] = "libraries",     [PHASE_PLUGINS] = "plugins",
+    [PHASE_SCENE_FILE] = "scene file",   [PHASE_TERRAIN] = "terrain",         [PHASE_TREES] = "tree variants",
     [PHASE_ECOLOGY] = "ecology",         [PHASE_SCENE_OTHER] = "rest of the scene",
     [PHASE_GROUND_COVER] = "ground cover", [PHASE_BVH] = "BVH",
     [PHASE_RENDER_SETUP] = "lights and proxies", [PHASE_RENDER] = "render",

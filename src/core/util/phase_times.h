@@ -7,6 +7,11 @@
 #include <stdio.h>
 
 typedef enum job_phase {
+    PHASE_LIBRARIES,     /* before the command's work: the dynamic loader mapping and relocating
+                          * the shared libraries, their initialisers, the options (CPU time) */
+    PHASE_PLUGINS,       /* the plugin registry: manifests read, nothing run */
+    PHASE_SCENE_FILE,    /* the scene file read and checked (a site's CRS and DTM through PROJ
+                          * and GDAL included) */
     PHASE_TERRAIN,       /* the terrain plugin */
     PHASE_TREES,         /* the tree plugins' variants */
     PHASE_ECOLOGY,       /* the ecology plugin: simulated, or a saved run placed */

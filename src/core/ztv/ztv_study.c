@@ -151,9 +151,10 @@ static int trace_and_write(ztv_job *job, const run_parts *parts, ztv_output *out
     if (!quiet) {
         char ranks[32] = "";
         if (parts->parts > 1) snprintf(ranks, sizeof ranks, " on %d ranks", parts->parts);
-        fprintf(stderr, "ztv: %llu cells x %u targets in %.2fs%s: %.3g sightlines/s, %.2f rays each\n",
+        fprintf(stderr, "ztv: %llu cells x %u targets in %.2fs%s: %.3g pairs/s, %.2f rays each, %.1f %% of "
+                "the pairs settled by the bare-earth sweep\n",
                 (unsigned long long)total[0], job->targets->n, st.seconds, ranks, total[1] / fmax(st.seconds, 1e-9),
-                total[1] ? (double)total[2] / total[1] : 0.0);
+                total[1] ? (double)total[2] / total[1] : 0.0, total[1] ? 100.0 * st.swept / total[1] : 0.0);
         phase_times_print(times, stderr);
     }
     return 0;
@@ -185,7 +186,7 @@ int ztv_study_run(const scene_file *sf, const scene *sc, const ztv_study_options
     ztv_job job = {.scene = sc, .accel = &acc, .targets = &targets, .observer_height = o.eye, .radius = o.radius,
                    .screened = (ztv_mode)o.screening, .earth = o.flat_earth ? NULL : &sc->earth,
                    .threads = o.threads, .quiet = o.quiet, .part = (uint32_t)parts->part,
-                   .parts = (uint32_t)parts->parts};
+                   .parts = (uint32_t)parts->parts, .sightlines = o.sightlines};
     int rc = -1;
     if (ztv_targets_build(&targets, sf, sc, sf->image.seed, err) ||
         ztv_grid_make(sc, &targets, o.cell, o.radius, &job.grid, err)) {

@@ -20,6 +20,7 @@ typedef struct ztv_study_options {
     double eye;          /* NAN: the scene's ztv.observer_height */
     int screening;       /* a ztv_mode, or -1: the scene's */
     int flat_earth;      /* 1: straight sightlines */
+    int sightlines;      /* 1: bare earth by sightlines too, not by the sweep (ztv/ztv_job.h) */
     unsigned threads;
     int quiet;           /* no information lines (the warnings still print) */
     const struct viewpoint *const *views; /* the viewpoints the GeoPackage lists, numbered in this

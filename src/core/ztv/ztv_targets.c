@@ -17,6 +17,17 @@ int ztv_ground(const scene *s, double x, double y, double *z)
     return 0;
 }
 
+int ztv_within_radius(const ztv_targets *t, double radius, double x, double y)
+{
+    if (!isfinite(radius)) return 1;
+    double r2 = radius * radius;
+    for (uint32_t k = 0; k < t->n; k++) {
+        double dx = t->p[k][0] - x, dy = t->p[k][1] - y;
+        if (dx * dx + dy * dy <= r2) return 1;
+    }
+    return 0;
+}
+
 static int reserve(ztv_targets *t, uint64_t n, err_buf *err)
 {
     if (n > ZTV_MAX_TARGETS)

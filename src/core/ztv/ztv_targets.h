@@ -44,4 +44,7 @@ void ztv_targets_free(ztv_targets *t); /* accepts a zeroed one */
  * where it lies above the ground. Returns 0, or -1 when (x, y) is off the terrain. */
 int ztv_ground(const scene *s, double x, double y, double *z);
 
+/* 1 when (x, y) lies within radius metres of a target of t (radius INFINITY: always). */
+int ztv_within_radius(const ztv_targets *t, double radius, double x, double y);
+
 #endif

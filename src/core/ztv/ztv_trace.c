@@ -14,16 +14,7 @@
 #include "ztv/ztv_cover.h"
 #include "ztv/ztv_grid.h"
 #include "ztv/ztv_sight.h"
-
-unsigned ztv_mode_mask(ztv_mode m)
-{
-    switch (m) {
-    case ZTV_BARE: return ACCEL_MASK_GROUND;
-    case ZTV_VEGETATION: return ACCEL_MASK_GROUND | ACCEL_MASK_PLANT;
-    case ZTV_CANOPY: return ACCEL_MASK_GROUND; /* and the canopy surface's own scene (ztv_canopy.h) */
-    default: return ACCEL_MASK_GROUND | ACCEL_MASK_PLANT | ACCEL_MASK_OBJECT;
-    }
-}
+#include "ztv/ztv_sweep_map.h"
 
 /* One mode's arrays over a block; owned. */
 typedef struct layer_buf {
@@ -58,17 +49,6 @@ typedef struct row_scratch {
     uint8_t *where;    /* ZTV_OPEN on the terrain within the radius, else ZTV_OUTSIDE or ZTV_NO_TERRAIN */
     uint64_t bare_clear, screened_blocked;
 } row_scratch;
-
-static int within_radius(const ztv_job *job, double x, double y)
-{
-    if (!isfinite(job->radius)) return 1;
-    double r2 = job->radius * job->radius;
-    for (uint32_t k = 0; k < job->targets->n; k++) {
-        double dx = job->targets->p[k][0] - x, dy = job->targets->p[k][1] - y;
-        if (dx * dx + dy * dy <= r2) return 1;
-    }
-    return 0;
-}
 
 /* Whether target t is in sight of eye on bare earth (*bare) and screened (*screened, 0 when the
  * cell is no viewpoint screened or no screened mode is computed). */
@@ -106,7 +86,8 @@ static void trace_row(trace_ctx *c, uint32_t row, row_scratch *w, uint64_t *cell
     for (uint32_t i = 0; i < g->nx; i++) {
         double x, y, ground;
         ztv_cell_centre(g, i, j, &x, &y);
-        int near = within_radius(job, x, y), ground_there = !ztv_ground(job->scene, x, y, &ground);
+        int near = ztv_within_radius(job->targets, job->radius, x, y);
+        int ground_there = !ztv_ground(job->scene, x, y, &ground);
         int on = near && ground_there;
         w->where[i] = on ? ZTV_OPEN : near ? ZTV_NO_TERRAIN : ZTV_OUTSIDE;
         c->ground[base + i] = on ? (float)ground : NAN;
@@ -178,6 +159,7 @@ static void layer_free(layer_buf *l)
 
 int ztv_trace(const ztv_job *job, ztv_sink sink, void *user, ztv_stats *stats, err_buf *err)
 {
+    if (ztv_sweep_map_fits(job)) return ztv_sweep_map(job, sink, user, stats, err);
     const ztv_grid *g = &job->grid;
     double t0 = progress_now();
     trace_ctx c = {.job = job, .screened = job->screened != ZTV_BARE};

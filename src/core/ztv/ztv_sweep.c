@@ -1,0 +1,277 @@
+/* ztv_sweep.c — bare-earth visibility from one target by rays walked over the ground's triangles. */
+#include "ztv/ztv_sweep.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "ztv/ztv_sight.h"
+
+/* The target in the window's node coordinates. */
+typedef struct target {
+    double u, v;       /* nodes east and north of the window's south-west node */
+    double z;          /* its height */
+    double height;     /* above the ground under it */
+} target;
+
+/* The crossings of a walk along a line of the window with the grid's three families of lines:
+ * u = k (kind 0), v = k (kind 1) and the diagonals u - v = k (kind 2). */
+typedef struct walker {
+    double u0, v0, a, b;    /* start, and nodes per metre along u and v */
+    double per[3], from[3]; /* metres per line of each family; where it starts among them */
+    double t[3];            /* distance of each family's next line */
+    long next[3];
+    int step[3];
+} walker;
+
+static void walker_start(walker *w, double u0, double v0, double a, double b)
+{
+    double rate[3] = {a, b, a - b};
+    *w = (walker){.u0 = u0, .v0 = v0, .a = a, .b = b, .from = {u0, v0, u0 - v0}};
+    for (int k = 0; k < 3; k++) {
+        double x = w->from[k];
+        w->step[k] = rate[k] > 0 ? 1 : rate[k] < 0 ? -1 : 0;
+        w->next[k] = rate[k] > 0 ? (long)floor(x) + 1 : (long)ceil(x) - 1;
+        w->per[k] = w->step[k] ? 1.0 / rate[k] : 0.0;
+        w->t[k] = w->step[k] ? (w->next[k] - x) * w->per[k] : INFINITY; /* INFINITY: it runs along them */
+    }
+}
+
+/* The next crossing: its distance from the start, its family and its line. */
+static inline double walker_next(walker *w, int *kind, long *line)
+{
+    int k = w->t[0] <= w->t[1] && w->t[0] <= w->t[2] ? 0 : w->t[1] <= w->t[2] ? 1 : 2;
+    double t = w->t[k];
+    *kind = k, *line = w->next[k];
+    w->next[k] += w->step[k];
+    w->t[k] = (w->next[k] - w->from[k]) * w->per[k];
+    return t;
+}
+
+static double node_z(const ztv_sweep_ground *g, long a, long b)
+{
+    return g->z[(size_t)(g->j0 + b) * g->stride + g->i0 + (size_t)a];
+}
+
+static inline double most(double a, double b)
+{
+    return a > b ? a : b;
+}
+
+static long clamp_cell(long k, uint32_t nodes)
+{
+    return k < 0 ? 0 : k > (long)nodes - 2 ? (long)nodes - 2 : k;
+}
+
+/* The ground at (u, v) on line `line` of family kind, exact on the triangles' edges; NAN off the
+ * window. */
+static double crossing_height(const ztv_sweep_ground *g, int kind, long line, double u, double v)
+{
+    if (kind == 0) {
+        if (line < 0 || line >= (long)g->nx) return NAN;
+        long b = clamp_cell((long)v, g->ny); /* v >= 0 but for rounding: truncation is floor */
+        double z0 = node_z(g, line, b);
+        return z0 + (v - b) * (node_z(g, line, b + 1) - z0);
+    }
+    if (kind == 1) {
+        if (line < 0 || line >= (long)g->ny) return NAN;
+        long a = clamp_cell((long)u, g->nx);
+        double z0 = node_z(g, a, line);
+        return z0 + (u - a) * (node_z(g, a + 1, line) - z0);
+    }
+    long a = clamp_cell((long)u, g->nx), b = a - line;
+    if (b < 0 || b > (long)g->ny - 2) return NAN;
+    double z0 = node_z(g, a, b);
+    return z0 + (u - a) * (node_z(g, a + 1, b + 1) - z0);
+}
+
+/* The ground anywhere in the window (the triangle holding (u, v)). */
+static double ground_at(const ztv_sweep_ground *g, double u, double v)
+{
+    long a = clamp_cell((long)floor(u), g->nx), b = clamp_cell((long)floor(v), g->ny);
+    double fx = u - a, fy = v - b, z00 = node_z(g, a, b), z11 = node_z(g, a + 1, b + 1);
+    if (fx >= fy) {
+        double z10 = node_z(g, a + 1, b);
+        return z00 + fx * (z10 - z00) + fy * (z11 - z10);
+    }
+    double z01 = node_z(g, a, b + 1);
+    return z00 + fy * (z01 - z00) + fx * (z11 - z01);
+}
+
+static double steep_at(const ztv_sweep_ground *g, long a, long b)
+{
+    return g->steep[(size_t)clamp_cell(b, g->ny) * (g->nx - 1) + (size_t)clamp_cell(a, g->nx)];
+}
+
+/* The steepness of the cell a walk enters at a crossing of family kind (0 or 1) at (u, v), going
+ * the way of step along that family. Every cell a walk passes is entered across a grid line. */
+static double entered_steepness(const ztv_sweep_ground *g, int kind, long line, int step, double u, double v)
+{
+    long back = step > 0 ? 0 : 1;
+    return kind == 0 ? steep_at(g, line - back, (long)v) : steep_at(g, (long)u, line - back);
+}
+
+void ztv_sweep_steepness(const ztv_sweep_ground *g, float *steep)
+{
+    uint32_t cx = g->nx - 1, cy = g->ny - 1;
+    for (uint32_t b = 0; b < cy; b++)
+        for (uint32_t a = 0; a < cx; a++) {
+            double z00 = node_z(g, a, b), z10 = node_z(g, a + 1, b), z01 = node_z(g, a, b + 1);
+            double z11 = node_z(g, a + 1, b + 1);
+            double lower = hypot(z10 - z00, z11 - z10), upper = hypot(z11 - z01, z01 - z00);
+            steep[(size_t)b * cx + a] = (float)(fmax(lower, upper) / g->cell);
+        }
+    /* each cell takes its neighbours' too: along the rows, then along the columns */
+    for (uint32_t b = 0; b < cy; b++) {
+        float *r = steep + (size_t)b * cx, prev = r[0];
+        for (uint32_t a = 0; a < cx; a++) {
+            float cur = r[a], next = a + 1 < cx ? r[a + 1] : cur;
+            r[a] = fmaxf(fmaxf(prev, cur), next);
+            prev = cur;
+        }
+    }
+    for (uint32_t a = 0; a < cx; a++) {
+        float prev = steep[a];
+        for (uint32_t b = 0; b < cy; b++) {
+            float *p = steep + (size_t)b * cx + a, cur = *p, next = b + 1 < cy ? p[cx] : cur;
+            *p = fmaxf(fmaxf(prev, cur), next);
+            prev = cur;
+        }
+    }
+}
+
+int ztv_sweep_scratch_alloc(ztv_sweep_scratch *s, const ztv_sweep_ground *g)
+{
+    s->crossings = 2 * (g->nx + g->ny) + 16;
+    s->nearest = malloc((size_t)g->nx * g->ny * sizeof *s->nearest);
+    s->crossing = malloc((size_t)s->crossings * 4 * sizeof *s->crossing);
+    return s->nearest && s->crossing ? 0 : -1;
+}
+
+void ztv_sweep_scratch_free(ztv_sweep_scratch *s)
+{
+    free(s->nearest), free(s->crossing);
+    s->nearest = NULL, s->crossing = NULL;
+}
+
+/* The sightline from the eye at node (pa, pb), S metres from the target, walked exactly over
+ * its first ZTV_SWEEP_NEAR cells (all of it when shorter): ZTV_HIDDEN when the ground stands
+ * above it by more than the slack where the Embree sightline is traced, ZTV_SEEN when it stays
+ * below by more than the slack all the way, else ZTV_DOUBT. */
+static int near_walk(const ztv_sweep_ground *g, const target *tg, long pa, long pb, double eye, double S)
+{
+    double len = fmin(ZTV_SWEEP_NEAR * g->cell, S), c = g->c, least = eye - node_z(g, pa, pb), rprev = 0;
+    walker w;
+    walker_start(&w, (double)pa, (double)pb, (tg->u - pa) / S, (tg->v - pb) / S);
+    for (;;) {
+        int kind;
+        long line;
+        double r = walker_next(&w, &kind, &line);
+        if (!(r <= S)) break;
+        double h = crossing_height(g, kind, line, pa + w.a * r, pb + w.b * r);
+        if (isnan(h)) continue;
+        double m = eye + r / S * (tg->z - eye) - c * r * (S - r) - h;
+        if (m < -ZTV_SWEEP_SLACK && r >= 2 * ZTV_SIGHT_GAP && r <= S - 2 * ZTV_SIGHT_GAP) return ZTV_HIDDEN;
+        /* between crossings the ground is straight and the sightline bows down by c dr^2 / 4 at most */
+        least = fmin(least, m - 0.25 * c * (r - rprev) * (r - rprev));
+        rprev = r;
+        if (r >= len) break;
+    }
+    if (len >= S) least = fmin(least, tg->height - 0.25 * c * (S - rprev) * (S - rprev));
+    return least > ZTV_SWEEP_SLACK ? ZTV_SEEN : ZTV_DOUBT;
+}
+
+/* What a walked ray knows at crossing k: [0] its distance, [1] and [2] the horizons with the
+ * slack above and below the ground, [3] the steepness passed. */
+enum { AT_T, AT_ABOVE, AT_BELOW, AT_STEEP };
+
+/* The first of the n crossings recorded at distance t or beyond (the last when none): searched
+ * back from the last, as t lies a few cells short of it. */
+static uint32_t crossing_at(const double *rec, uint32_t n, double t)
+{
+    uint32_t k = n - 1;
+    while (k > 0 && rec[4 * (k - 1) + AT_T] >= t) k--;
+    return k;
+}
+
+/* The status of node (pa, pb), which the ray passes D metres away at its n-th crossing (t from
+ * the target). */
+static int node_status(const ztv_sweep_ground *g, const target *tg, const double *rec, uint32_t n, long pa, long pb,
+                       double eye, double D, double t)
+{
+    double eu = pa - tg->u, ev = pb - tg->v, S = sqrt(eu * eu + ev * ev) * g->cell, c = g->c;
+    if (S < 1e-3) return ZTV_DOUBT;
+    /* the ends' gaps cannot hide what the bound below blames on the ground next to them */
+    double need = ZTV_SIGHT_GAP * (g->steepest + fabs(eye - tg->z) / S + c * S) + ZTV_SWEEP_SLACK;
+    int may_hide = g->observer_height >= need && tg->height >= need;
+    double rnear = ZTV_SWEEP_NEAR * g->cell;
+    if (S <= rnear) return near_walk(g, tg, pa, pb, eye, S);
+    /* the rest: the ray as far as the share 1 - rnear / S of the way to the node */
+    const double *at = rec + 4 * crossing_at(rec, n, t * (1 - rnear / S));
+    double lam = S * S / (t * t), skew = c * fabs(lam - 1) * t, drop = c * lam * t, G = at[AT_STEEP];
+    if (may_hide && at[AT_BELOW] - skew > (eye - tg->z + G * D) / t - drop) return ZTV_HIDDEN;
+    int far_clear = at[AT_ABOVE] + skew < (eye - tg->z - G * D) / t - drop;
+    int near = near_walk(g, tg, pa, pb, eye, S);
+    return near == ZTV_HIDDEN ? ZTV_HIDDEN : near == ZTV_SEEN && far_clear ? ZTV_SEEN : ZTV_DOUBT;
+}
+
+/* Walks the ray from the target to (ue, ve), trying each node not yet settled that it passes
+ * nearer than any ray before it. */
+static void walk_ray(const ztv_sweep_ground *g, const target *tg, double ue, double ve, uint8_t *status,
+                     ztv_sweep_scratch *s)
+{
+    double du = ue - tg->u, dv = ve - tg->v, len = hypot(du, dv) * g->cell, c = g->c;
+    if (len <= 0) return;
+    walker w;
+    walker_start(&w, tg->u, tg->v, du / len, dv / len);
+    int own = fabs(du) >= fabs(dv) ? 0 : 1; /* the family of lines whose nodes it settles */
+    double above = -INFINITY, below = -INFINITY, tprev = 0;
+    double steep = steep_at(g, (long)floor(tg->u), (long)floor(tg->v));
+    uint32_t n = 0;
+    while (n < s->crossings) {
+        int kind;
+        long line;
+        double t = walker_next(&w, &kind, &line);
+        if (!(t <= len * (1 + 1e-12))) break;
+        double u = tg->u + w.a * t, v = tg->v + w.b * t, h = crossing_height(g, kind, line, u, v);
+        if (isnan(h)) continue;
+        if (kind < 2) steep = most(steep, entered_steepness(g, kind, line, w.step[kind], u, v));
+        double inv = 1.0 / t, base = (h - tg->z) * inv - c * t;
+        /* between crossings (h - zT) / t - c t exceeds its value at the far one by c dt at most */
+        above = most(above, base + ZTV_SWEEP_SLACK * inv + c * (t - tprev));
+        below = most(below, base - ZTV_SWEEP_SLACK * inv);
+        tprev = t;
+        double *r = s->crossing + 4 * (size_t)n++;
+        r[AT_T] = t, r[AT_ABOVE] = above, r[AT_BELOW] = below, r[AT_STEEP] = steep;
+        if (kind != own) continue;
+        long pa = own ? (long)floor(u + 0.5) : line, pb = own ? line : (long)floor(v + 0.5);
+        if (pa < 0 || pb < 0 || pa >= (long)g->nx || pb >= (long)g->ny) continue;
+        size_t k = (size_t)(g->ny - 1 - pb) * g->nx + (size_t)pa;
+        float D = (float)(fabs(own ? u - pa : v - pb) * g->cell);
+        if (status[k] != ZTV_DOUBT || isnan(g->eye[k]) || !(D < s->nearest[k])) continue;
+        s->nearest[k] = D;
+        status[k] = (uint8_t)node_status(g, tg, s->crossing, n, pa, pb, g->eye[k], D, t);
+    }
+}
+
+void ztv_sweep_target(const ztv_sweep_ground *g, const double t[3], uint8_t *status, ztv_sweep_scratch *s)
+{
+    size_t n = (size_t)g->nx * g->ny;
+    memset(status, ZTV_DOUBT, n);
+    for (size_t k = 0; k < n; k++) s->nearest[k] = INFINITY;
+    target tg = {(t[0] - g->x0) / g->cell - g->i0, (t[1] - g->y0) / g->cell - g->j0, t[2], 0};
+    double umax = g->nx - 1, vmax = g->ny - 1;
+    if (!(tg.u >= 0 && tg.v >= 0 && tg.u <= umax && tg.v <= vmax)) return; /* all doubtful */
+    tg.height = tg.z - ground_at(g, tg.u, tg.v);
+    uint32_t m = ZTV_SWEEP_RAYS;
+    for (uint32_t k = 0; k <= g->nx * m - m; k++) {
+        double u = (double)k / m;
+        walk_ray(g, &tg, u, 0, status, s);
+        walk_ray(g, &tg, u, vmax, status, s);
+    }
+    for (uint32_t k = 0; k <= g->ny * m - m; k++) {
+        double v = (double)k / m;
+        walk_ray(g, &tg, 0, v, status, s);
+        walk_ray(g, &tg, umax, v, status, s);
+    }
+}

@@ -164,6 +164,7 @@ int sf_read_terrain(loader *L, const ynode *node, uint32_t line, uint32_t column
 int sf_read_species(loader *L, const ynode *node);
 int sf_read_plants(loader *L, const ynode *node);
 int sf_read_trees(loader *L, const ynode_pair *section); /* scene_file_trees.c; NULL: none */
+int sf_read_planting(loader *L, const ynode_pair *section); /* scene_file_planting.c; NULL: none */
 int sf_read_groups(loader *L, const ynode *node);
 int sf_read_objects(loader *L, const ynode *node);
 int sf_read_ztv(loader *L); /* after the objects: its targets name their developments */

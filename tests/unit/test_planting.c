@@ -10,6 +10,8 @@
 #include <string.h>
 
 #include "harness.h"
+#include "render/film.h"
+#include "render/render.h"
 #include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 #include "work_dir.h"
@@ -25,6 +27,9 @@ static const char *site_text(const char *tail)
                       "[2, -2, 12], [2, 2, 12], [-2, 2, 12]], triangles: [[0, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7], "
                       "[0, 1, 5], [0, 5, 4], [1, 2, 6], [1, 6, 5], [2, 3, 7], [2, 7, 6], [3, 0, 4], [3, 4, 7]]}\n"
                       "  other: {shape: box, size: [1, 1, 3]}\n"
+                      "  leafy: {shape: box, size: [3, 3, 6], material: foliage, phenology: {habit: deciduous, "
+                      "leaf_out: 120, colouring: 260, leaf_fall: 300}}\n"
+                      "materials: {foliage: {type: leaf, albedo: [0.1, 0.3, 0.1], transmittance: [0.05, 0.1, 0.05]}}\n"
                       "terrain: {origin: [-100, -10], spacing: [5, 5], grid: [");
     for (int j = 0; j < 5; j++) {
         at += snprintf(text + at, sizeof text - at, "%s[", j ? ", " : "");
@@ -64,20 +69,20 @@ static double instance_height(const scene *s, uint32_t i)
 TEST(bad_plans_refused_at_their_place)
 {
     CHECK_STR_CONTAINS(refusal("planting:\n  year: 2027\n  trees:\n    - {position: [0, 0], species: oak}\n"),
-                       "plan.yaml:9:35: unknown species 'oak' in 'planting.trees[0]'");
+                       "plan.yaml:11:35: unknown species 'oak' in 'planting.trees[0]'");
     const char *bowtie = refusal("planting:\n  year: 2027\n  blocks:\n"
                                  "    - {polygon: [[0, 0], [10, 5], [10, 0], [0, 5]], species: screen, spacing: 2}\n");
-    CHECK_STR_CONTAINS(bowtie, "plan.yaml:9:17");
+    CHECK_STR_CONTAINS(bowtie, "plan.yaml:11:17");
     CHECK_STR_CONTAINS(bowtie, "the polygon crosses itself");
     const char *zero = refusal("planting:\n  year: 2027\n  belts:\n"
                                "    - {line: [[0, -5], [0, 5]], species: screen, spacing: 0}\n");
-    CHECK_STR_CONTAINS(zero, "plan.yaml:9:59: 'spacing' must be in (0, 1000], got 0");
+    CHECK_STR_CONTAINS(zero, "plan.yaml:11:59: 'spacing' must be in (0, 1000], got 0");
     const char *outside = refusal("planting:\n  year: 2027\n  belts:\n"
                                   "    - {name: far, line: [[0, 0], [300, 0]], species: screen, spacing: 2}\n");
-    CHECK_STR_CONTAINS(outside, "plan.yaml:9:7");
+    CHECK_STR_CONTAINS(outside, "plan.yaml:11:7");
     CHECK_STR_CONTAINS(outside, "the belt 'far' lies outside the terrain: its point 1 at local (300.0, 0.0)");
     CHECK_STR_CONTAINS(refusal("planting:\n  year: 2027\n  trees:\n    - {position: [0, 0], species: other, "
-                               "stock_height: 3.5}\n"), "plan.yaml:9:7: planting: the tree 'trees[0]': its stock of 3.50 m is taller than species "
+                               "stock_height: 3.5}\n"), "plan.yaml:11:7: planting: the tree 'trees[0]': its stock of 3.50 m is taller than species "
                "'other' grows (its full-grown model is 3.00 m)");
 }
 
@@ -234,5 +239,75 @@ TEST(belt_hides_the_mast_once_above_the_sightline)
     }
 }
 
-TEST_LIST(TEST_CASE(bad_plans_refused_at_their_place), TEST_CASE(plants_keep_their_place_and_follow_the_curve),
+static film *render_at(const char *tail, double year, const char *season, scene **out)
+{
+    err_buf err = {{0}};
+    const char *path = work_file("plan.yaml", site_text(tail));
+    scene_file *sf = path ? scene_file_load(path, NULL, &err) : NULL;
+    build_options bo = {.quiet = 1, .planting_shown = 1, .planting_years = year};
+    scene *s = sf && !scene_file_use_season(sf, season, &err) ? scene_build(sf, NULL, &bo, &err) : NULL;
+    render_options ro = {.threads = 2, .quiet = 1};
+    film *f = s ? render_scene(s, &ro, NULL, &err) : NULL;
+    if (!f) fprintf(stderr, "%s\n", err.msg);
+    scene_file_free(sf);
+    *out = s;
+    return f;
+}
+
+/* 1 when instance id of s is a planted plant or a deciduous one (0 for id 0: no plant). */
+static int planted_or_seasonal(const scene *s, uint32_t id, uint32_t *planted, uint32_t *seasonal)
+{
+    if (!id) return 0;
+    const instance *in = &s->instances[id - 1];
+    uint32_t sp = s->prototypes[in->prototype].species;
+    *planted += in->planted != 0, *seasonal += sp == 2;
+    return in->planted != 0 || sp == 2;
+}
+
+/* The view of a belt planted in front of an evergreen and a deciduous plant, in year 1 in winter
+ * and in year 15 in summer: pixel by pixel the instance seen differs only where the plant seen in
+ * one of them (or both) is planted or deciduous; the belt has grown into view and the deciduous
+ * plant has come into leaf (and is not hidden by it: the camera looks down over the belt). */
+TEST(year_1_winter_and_year_15_summer_differ_in_planted_and_seasonal_plants)
+{
+    const char *tail = "camera: {position: [-40, 0, 12], look_at: [20, 0, 0], focal_length: 35}\n"
+                       "image: {width: 96, height: 64, spp: 1}\n"
+                       "plants:\n  - {species: other, position: [20, 4]}\n  - {species: leafy, position: [20, -4]}\n"
+                       "planting:\n  year: 2027\n  belts:\n    - {line: [[0, -9.9], [0, 9.9]], species: screen, "
+                       "spacing: 0.5}\n";
+    scene *a, *b;
+    film *winter = render_at(tail, 1, "winter", &a), *summer = render_at(tail, 15, "summer", &b);
+    CHECK(winter && summer);
+    if (winter && summer) {
+        size_t n = (size_t)winter->width * winter->height, differ = 0, bad = 0;
+        uint32_t planted = 0, seasonal = 0;
+        for (size_t i = 0; i < n; i++) {
+            uint32_t p = winter->instance_id[i], q = summer->instance_id[i];
+            if (p == q) continue;
+            differ++;
+            int ok = planted_or_seasonal(a, p, &planted, &seasonal) | planted_or_seasonal(b, q, &planted, &seasonal);
+            if (!ok) fprintf(stderr, "pixel %zu: winter %u, summer %u\n", i, p, q);
+            bad += !ok;
+        }
+        uint32_t leafy[2] = {0, 0};
+        for (size_t i = 0; i < n; i++)
+            for (int k = 0; k < 2; k++) {
+                const scene *s = k ? b : a;
+                uint32_t id = (k ? summer : winter)->instance_id[i];
+                leafy[k] += id && s->prototypes[s->instances[id - 1].prototype].species == 2;
+            }
+        CHECK_INT(leafy[0], 0); /* out of leaf */
+        CHECK(leafy[1] > 0);
+        CHECK(differ > 0);
+        CHECK_INT(bad, 0);
+        CHECK(planted > 0 && seasonal > 0);
+        /* the evergreen keeps its number: the existing plants come first, in the same order */
+        CHECK(a->n_instances > 2 && b->n_instances == a->n_instances);
+        CHECK(a->instances[0].prototype == b->instances[0].prototype && !a->instances[0].planted);
+    }
+    film_free(winter), film_free(summer);
+    scene_free(a), scene_free(b);
+}
+
+TEST_LIST(TEST_CASE(bad_plans_refused_at_their_place), TEST_CASE(year_1_winter_and_year_15_summer_differ_in_planted_and_seasonal_plants), TEST_CASE(plants_keep_their_place_and_follow_the_curve),
           TEST_CASE(felling_and_thinning), TEST_CASE(belt_hides_the_mast_once_above_the_sightline))

@@ -440,6 +440,9 @@ static const sylva_param_spec study_params[] = {
      .help = "Pixels per inch of the print (with print_width)."},
     {.name = "spp", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 0, .min = 0, .max = 1 << 20,
      .help = "Samples per pixel (0: the image's spp)."},
+    {.name = "years", .type = SYLVA_P_STRING,
+     .help = "With a planting: section, the years since planting the study is made at, each with its season: "
+             "\"1 winter, 15 summer\" (the default), each into DIR/year_N_SEASON."},
 };
 const host_schema host_schema_study = {
     "study", "The viewpoints, products and frames `sylva study` renders from one build of the scene.",

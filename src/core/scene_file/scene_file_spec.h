@@ -245,6 +245,15 @@ typedef enum study_product { STUDY_EXISTING = 0, STUDY_PROPOSED = 1, STUDY_WIREL
 typedef enum study_frame { STUDY_SINGLE = 0, STUDY_PLANAR_53 = 1, STUDY_CYLINDRICAL_90 = 2 } study_frame;
 #define STUDY_FRAMES 3u
 
+/* A year a study is made at: years since planting and the season's day (docs/mitigation.md). */
+typedef struct study_year {
+    double years;
+    uint32_t day;               /* day of the year (season/phenology.h) */
+    const char *season;         /* as written: "winter", "2027-06-21" */
+} study_year;
+
+#define STUDY_MAX_YEARS 16u
+
 /* The study: section: which viewpoints, products and frames `sylva study` renders, and at what
  * size (docs/study.md). */
 typedef struct study_settings {
@@ -262,6 +271,8 @@ typedef struct study_settings {
     double print_width_mm;      /* 0: no print size */
     double dpi;                 /* pixels per inch of the print */
     uint32_t spp;               /* 0: the image's */
+    study_year *years;          /* with a planting plan: the years the study is made at (study_years.c) */
+    uint32_t n_years;
     uint32_t line, column;      /* of the section (of the file's start when absent) */
 } study_settings;
 

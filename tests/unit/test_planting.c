@@ -70,6 +70,9 @@ TEST(bad_plans_refused_at_their_place)
 {
     CHECK_STR_CONTAINS(refusal("planting:\n  year: 2027\n  trees:\n    - {position: [0, 0], species: oak}\n"),
                        "plan.yaml:11:35: unknown species 'oak' in 'planting.trees[0]'");
+    CHECK_STR_CONTAINS(refusal("planting:\n  year: 2027\n  coordinates: map\n  trees:\n    - {position: [0, 0], "
+                               "species: screen}\n"), "plan.yaml:10:16: 'coordinates: map' gives the plan in the "
+                       "site's CRS, but the scene has no 'site:' section");
     const char *bowtie = refusal("planting:\n  year: 2027\n  blocks:\n"
                                  "    - {polygon: [[0, 0], [10, 5], [10, 0], [0, 5]], species: screen, spacing: 2}\n");
     CHECK_STR_CONTAINS(bowtie, "plan.yaml:11:17");

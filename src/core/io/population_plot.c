@@ -27,17 +27,20 @@ int line_chart_write(const char *path, const line_chart *ch, err_buf *err)
     if (canvas_init(&c, w, h, white, err)) return -1;
     double x_first = n_rows ? ch->x[0] : 0, x_last = n_rows ? ch->x[n_rows - 1] : 1;
     if (x_last <= x_first) x_last = x_first + 1;
-    double max_value = 0;
-    for (size_t i = 0; i < (size_t)n_rows * n_series; i++) max_value = ch->values[i] > max_value ? ch->values[i] : max_value;
+    double max_value = 0, min_value = INFINITY;
+    for (size_t i = 0; i < (size_t)n_rows * n_series; i++)
+        max_value = fmax(max_value, ch->values[i]), min_value = fmin(min_value, ch->values[i]);
     if (!(max_value > 0)) max_value = 1;
     double x_step = population_plot_tick_step(x_last - x_first, 8);
-    double c_step = population_plot_tick_step(max_value, 6);
+    double c_step = population_plot_tick_step(ch->y_fit && max_value > min_value ? max_value - min_value : max_value, 6);
     double c_top = ceil(max_value / c_step) * c_step;
+    double c_bottom = ch->y_fit && max_value > min_value ? floor(min_value / c_step) * c_step : 0;
+    if (!(c_top > c_bottom)) c_top = c_bottom + c_step;
     int px0 = left, px1 = w - right, py0 = h - bottom, py1 = top;
 #define X_OF(v) (px0 + ((double)(v) - x_first) / (x_last - x_first) * (px1 - px0))
-#define Y_OF(n) (py0 - (double)(n) / c_top * (py0 - py1))
+#define Y_OF(n) (py0 - ((double)(n) - c_bottom) / (c_top - c_bottom) * (py0 - py1))
     char label[64];
-    for (double v = 0; v <= c_top + 0.5 * c_step; v += c_step) {
+    for (double v = c_bottom; v <= c_top + 0.5 * c_step; v += c_step) {
         int y = (int)lround(Y_OF(v));
         canvas_rect(&c, px0, y, px1, y, grid);
         snprintf(label, sizeof label, "%.6g", v);

@@ -14,8 +14,8 @@ int population_plot_write(const char *path, const uint32_t *years, const uint32_
                           const char *const *names, uint32_t n_species, err_buf *err);
 
 /* A chart of n_series lines over n_rows points: x[r] (increasing) against values[r * n_series + s],
- * the y axis from 0, series s drawn in canvas_series_color(s) and named names[s] in the legend;
- * markers: a dot at every point. */
+ * the y axis from 0 (y_fit: over the values' range, rounded), series s drawn in
+ * canvas_series_color(s) and named names[s] in the legend; markers: a dot at every point. */
 typedef struct line_chart {
     const char *title, *x_label;
     const double *x, *values;
@@ -23,6 +23,7 @@ typedef struct line_chart {
     const char *const *names;
     uint32_t n_series;
     int markers;
+    int y_fit;
 } line_chart;
 
 /* Writes ch as a PNG at path. Returns 0, or -1 with err set. */

@@ -708,15 +708,16 @@ const host_schema host_schema_trees = {"trees", "Existing trees from a survey fi
 
 /* --- planting ------------------------------------------------------------------------------ */
 const char *const host_stock_sizes[] = {"whip", "feathered", "standard", NULL};
+const char *const host_planting_coordinates[] = {"local", "map", NULL};
 static const sylva_param_spec planting_item_params[] = {
     {.name = "name", .type = SYLVA_P_STRING,
      .help = "The feature's name in messages (default: blocks[i], belts[i], trees[i] or felling[i])."},
     {.name = "polygon", .type = SYLVA_P_GRID, .unit = "m",
-     .help = "A block's or a felling's outline: [[x, y], ...] local metres, at least 3 corners, not closed."},
+     .help = "A block's or a felling's outline: [[x, y], ...], at least 3 corners, not closed."},
     {.name = "line", .type = SYLVA_P_GRID, .unit = "m",
-     .help = "A belt's centre line: [[x, y], ...] local metres, at least 2 points."},
+     .help = "A belt's centre line: [[x, y], ...], at least 2 points."},
     {.name = "position", .type = SYLVA_P_LIST, .min_len = 2, .max_len = 2, .def_list = zero2, .def_len = 2,
-     .unit = "m", .help = "A tree's [x, y], local metres."},
+     .unit = "m", .help = "A tree's [x, y]."},
     {.name = "species", .type = SYLVA_P_STRING,
      .help = "The scene's species, separated by spaces: a block's mix, a belt's sequence along each row, a tree's one."},
     {.name = "shares", .type = SYLVA_P_LIST, .flags = MIN_X | MAX, .min = 0, .max = 1e6, .max_len = PLANTING_MAX_SPECIES,
@@ -737,6 +738,8 @@ static const sylva_param_spec planting_item_params[] = {
 static const sylva_param_spec planting_params[] = {
     {.name = "year", .type = SYLVA_P_REAL, .flags = REQ | MIN | MAX, .min = 0, .max = 10000, .unit = "year",
      .help = "The calendar year of planting; --year N shows the plan N years after it."},
+    {.name = "coordinates", .type = SYLVA_P_ENUM, .def_str = "local", .choices = host_planting_coordinates,
+     .help = "What the plan's points are: local metres, or map coordinates (easting, northing) in the site's CRS."},
     {.name = "seed", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 1, .min = 0, .max = 4294967295.0,
      .help = "Seeds where each plant stands, its species and turn: the same plants in the same places every year."},
     {.name = "full_grown_age", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 60, .min = 0, .max = 10000,

@@ -81,6 +81,7 @@ extern const char *const host_model_up_axes[]; /* model_up order: file, y, z */
 extern const char *const host_study_products[]; /* study_product order */
 extern const char *const host_study_frames[];   /* study_frame order */
 extern const char *const host_stock_sizes[];    /* planting stock: whip, feathered, standard */
+extern const char *const host_planting_coordinates[]; /* planting coordinates: local, map */
 
 /* Image size limit (width and height), pixels. */
 #define HOST_IMAGE_MAX_SIZE 16384

@@ -94,7 +94,9 @@ static int read_points(loader *L, const sylva_params *p, const char *where, plan
         return sf_located(L->err, L->file, v->line, v->column, "%s: '%s' has %u point%s; it needs at least %u",
                           where, shape_key[f->kind], n, n == 1 ? "" : "s", least);
     if (!(f->xy = arena_alloc(L->a, (size_t)n * sizeof *f->xy))) return sf_out_of_memory(L);
-    for (uint32_t i = 0; i < n; i++) f->xy[i][0] = v->list[2 * i], f->xy[i][1] = v->list[2 * i + 1];
+    const double *shift = L->sf->planting.map_coordinates ? L->sf->site.origin : (const double[2]){0, 0};
+    for (uint32_t i = 0; i < n; i++)
+        f->xy[i][0] = v->list[2 * i] - shift[0], f->xy[i][1] = v->list[2 * i + 1] - shift[1];
     f->n_xy = n;
     uint32_t a, b;
     if ((f->kind == PLANTING_BLOCK || f->kind == PLANTING_FELLING) && !ring_crossing((const double (*)[2])f->xy, n, &a, &b))
@@ -205,6 +207,11 @@ int sf_read_planting(loader *L, const ynode_pair *section)
         return -1;
     planting_spec *ps = &L->sf->planting;
     ps->year = sylva_param_real(p, "year");
+    ps->map_coordinates = (int)sylva_param(p, "coordinates")->i;
+    if (ps->map_coordinates && !L->site)
+        return sf_located(L->err, L->file, sylva_param(p, "coordinates")->line, sylva_param(p, "coordinates")->column,
+                          "'coordinates: map' gives the plan in the site's CRS, but the scene has no 'site:' "
+                          "section; add one, or give local metres");
     ps->seed = (uint64_t)sylva_param(p, "seed")->i;
     ps->full_grown_age = sylva_param_real(p, "full_grown_age");
     ps->thinning_year = sylva_param_real(p, "thinning_year");

@@ -146,7 +146,7 @@ typedef enum planting_kind {
 #define PLANTING_MAX_SPECIES 8u
 
 /* One feature of a planting plan, as drawn: inline in the scene file or a feature of a vector
- * file. Coordinates are local metres. */
+ * file. Coordinates are local metres (turned from map coordinates when the plan gives those). */
 typedef struct planting_feature {
     planting_kind kind;
     const char *name;           /* its name, else "blocks[2]" or the file's "FID 7" */
@@ -168,6 +168,7 @@ typedef struct planting_spec {
     planting_feature *features; uint32_t n_features;
     uint32_t n_plants_drawn;    /* blocks, belts and trees (felling aside) */
     double year;                /* the calendar year of planting, as stated */
+    int map_coordinates;        /* 1: written in the site's CRS (local = map - origin), 0: local metres */
     uint64_t seed;              /* places the plants: the same plants in the same places every year */
     double full_grown_age;      /* years: a species' full-grown variant stands at this age */
     double thinning_year;       /* years since planting from which blocks and belts are thinned; 0: never */

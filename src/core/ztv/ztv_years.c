@@ -225,7 +225,7 @@ static int write_chart(const char *dir, const ztv_year_row *rows, uint32_t n, er
     char path[4200];
     snprintf(path, sizeof path, "%s/visible_area.png", dir);
     line_chart ch = {.title = "area seeing the development (km2)", .x_label = "years since planting", .x = x,
-                     .values = values, .n_rows = m, .names = names, .n_series = 2, .markers = 1};
+                     .values = values, .n_rows = m, .names = names, .n_series = 2, .markers = 1, .y_fit = 1};
     return line_chart_write(path, &ch, err);
 }
 

@@ -312,5 +312,54 @@ TEST(year_1_winter_and_year_15_summer_differ_in_planted_and_seasonal_plants)
     scene_free(a), scene_free(b);
 }
 
-TEST_LIST(TEST_CASE(bad_plans_refused_at_their_place), TEST_CASE(year_1_winter_and_year_15_summer_differ_in_planted_and_seasonal_plants), TEST_CASE(plants_keep_their_place_and_follow_the_curve),
+/* The GeoJSON plan below, its belt's south end at northing `south`. */
+static void plan_json(char *json, size_t size, double south)
+{
+    snprintf(json, size, "{\"type\": \"FeatureCollection\", \"crs\": {\"type\": \"name\", \"properties\": "
+             "{\"name\": \"urn:ogc:def:crs:EPSG::32611\"}}, \"features\": ["
+             "{\"type\": \"Feature\", \"id\": 1, \"properties\": {\"species\": \"screen other\", \"shares\": \"3 1\", "
+             "\"spacing\": 2}, \"geometry\": {\"type\": \"Polygon\", \"coordinates\": [[[499940, 5499992], "
+             "[499960, 5499992], [499960, 5500008], [499940, 5500008], [499940, 5499992]]]}},"
+             "{\"type\": \"Feature\", \"id\": 2, \"properties\": {\"species\": \"screen\", \"rows\": 2, "
+             "\"spacing\": 1, \"stock\": \"feathered\"}, \"geometry\": {\"type\": \"LineString\", \"coordinates\": "
+             "[[500000, %.0f], [500000, 5500009]]}},"
+             "{\"type\": \"Feature\", \"id\": 3, \"properties\": {\"species\": \"other\", \"stock_height\": 1.2}, "
+             "\"geometry\": {\"type\": \"Point\", \"coordinates\": [500050, 5500005]}}]}\n", south);
+}
+
+/* A GeoJSON plan in UTM: its polygon a block, its line a belt, its point a tree, each where the
+ * file draws it (less the site's origin), with its attributes; a feature naming an unknown species
+ * is refused at the file key, naming its FID. */
+TEST(plan_from_a_vector_file)
+{
+    char json[4096];
+    plan_json(json, sizeof json, 4999991); /* the belt's south end 500 km off: in another place */
+    CHECK(work_file("plan.geojson", json) != NULL);
+    const char *tail = "site: {crs: \"EPSG:32611\", origin: [500000, 5500000]}\nplanting:\n  year: 2027\n  file: plan.geojson\n";
+    CHECK_STR_CONTAINS(refusal(tail), "plan.yaml:11:9: planting: the belt 'plan.geojson FID 2' lies outside the terrain: its point 0 at local "
+                       "(0.0, -500009.0)");
+    plan_json(json, sizeof json, 5499991);
+    CHECK(work_file("plan.geojson", json) != NULL);
+    err_buf err = {{0}};
+    scene *s = build_at(tail, 0, &err);
+    CHECK(s != NULL);
+    if (!s) fprintf(stderr, "%s\n", err.msg);
+    uint32_t block = 0, belt = 0, tree = 0;
+    for (uint32_t i = 0; s && i < s->n_instances; i++) {
+        double x = s->instances[i].xf.m[0][3], y = s->instances[i].xf.m[1][3];
+        block += x < -19 && x > -61, belt += fabs(x) < 1.5, tree += fabs(x - 50) < 1e-3 && fabs(y - 5) < 1e-3;
+        if (fabs(x - 50) < 1e-3) CHECK_NEAR(instance_height(s, i), 1.2, 1e-3);
+    }
+    CHECK_INT(block, 80); /* the 20 x 16 m polygon holds 10 x 8 nodes 2 m apart */
+    CHECK_INT(belt, 36);
+    CHECK_INT(tree, 1);
+    scene_free(s);
+    /* a feature of an unknown species, refused at the file key with its FID */
+    char *at = strstr(json, "\"species\": \"other\", \"stock_height\"");
+    if (at) memcpy(at, "\"species\": \"oakoo\"", 18);
+    CHECK(work_file("plan.geojson", json) != NULL);
+    CHECK_STR_CONTAINS(refusal(tail), "plan.yaml:11:9: unknown species 'oakoo' in 'plan.geojson FID 3'");
+}
+
+TEST_LIST(TEST_CASE(bad_plans_refused_at_their_place), TEST_CASE(plan_from_a_vector_file), TEST_CASE(year_1_winter_and_year_15_summer_differ_in_planted_and_seasonal_plants), TEST_CASE(plants_keep_their_place_and_follow_the_curve),
           TEST_CASE(felling_and_thinning), TEST_CASE(belt_hides_the_mast_once_above_the_sightline))

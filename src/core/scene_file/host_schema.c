@@ -738,6 +738,12 @@ static const sylva_param_spec planting_item_params[] = {
 static const sylva_param_spec planting_params[] = {
     {.name = "year", .type = SYLVA_P_REAL, .flags = REQ | MIN | MAX, .min = 0, .max = 10000, .unit = "year",
      .help = "The calendar year of planting; --year N shows the plan N years after it."},
+    {.name = "file", .type = SYLVA_P_PATH,
+     .help = "The plan drawn in a vector file GDAL reads (GeoPackage, Shapefile, GeoJSON): polygons are blocks (or "
+             "fellings, with kind: felling), lines belts, points trees; attributes as the items' keys."},
+    {.name = "layer", .type = SYLVA_P_STRING, .help = "The file's layer holding the plan (default: its only one)."},
+    {.name = "crs", .type = SYLVA_P_STRING,
+     .help = "CRS of the file's coordinates, EPSG:NNNN or WKT, in place of the one it states."},
     {.name = "coordinates", .type = SYLVA_P_ENUM, .def_str = "local", .choices = host_planting_coordinates,
      .help = "What the plan's points are: local metres, or map coordinates (easting, northing) in the site's CRS."},
     {.name = "seed", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 1, .min = 0, .max = 4294967295.0,

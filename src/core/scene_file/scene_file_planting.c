@@ -1,6 +1,7 @@
 /* scene_file_planting.c — the planting: section, a planting plan as the designer draws it:
  * woodland blocks (polygons), hedgerows and belts (lines), single trees (points) and fellings
- * (polygons), each with its species, spacing and nursery stock, and the year it is planted.
+ * (polygons), each with its species, spacing and nursery stock, and the year it is planted;
+ * written in the scene file or drawn in a vector file (site/planting_ogr.h).
  * Each fault is refused at its key: an unknown species, a polygon that crosses itself, a
  * spacing or density of 0 (the schema's range), a key that does not belong to the feature's kind. The plants
  * are laid out and grown when the scene is built (scene_build/scene_planting.c); the plan's
@@ -8,9 +9,11 @@
 #include "scene_file/scene_file_loader.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "scene_file/scene_file.h"
+#include "site/planting_ogr.h"
 
 /* The trade's heights of each stock size (host_stock_sizes order), metres. */
 static const double stock_heights[][2] = {{0.6, 0.9}, {1.8, 2.4}, {2.5, 3.0}};
@@ -194,6 +197,120 @@ static int read_feature(loader *L, const sylva_params *p, planting_kind kind, ui
     return 0;
 }
 
+/* A number attribute of a file's feature (NAN when absent), checked to lie in (lo, hi]. */
+static int file_number(loader *L, const sylva_value *file, const char *where, const plan_shape *sh, int field,
+                       double lo, double hi, double *out)
+{
+    const char *text = sh->value[field];
+    *out = NAN;
+    if (!text) return 0;
+    char *end;
+    double v = strtod(text, &end);
+    if (end == text || *end || !(v > lo && v <= hi))
+        return sf_located(L->err, L->file, file->line, file->column, "planting: %s: '%s' is '%s'; give a number in "
+                          "(%g, %g]", where, plan_field_names[field], text, lo, hi);
+    *out = v;
+    return 0;
+}
+
+/* A file feature's species, shares, spacing, rows and stock, from its attributes. */
+static int read_file_attributes(loader *L, const sylva_value *file, const char *where, const plan_shape *sh,
+                                planting_feature *f)
+{
+    if (f->kind == PLANTING_FELLING) return 0;
+    sylva_value species = {.s = sh->value[PLAN_SPECIES], .line = file->line, .column = file->column};
+    if (!species.s)
+        return sf_located(L->err, L->file, file->line, file->column, "planting: %s has no 'species' attribute; "
+                          "give the scene's species, separated by spaces", where);
+    if (read_species(L, &species, where, f)) return -1;
+    if (f->kind == PLANTING_TREE && f->n_species != 1)
+        return sf_located(L->err, L->file, file->line, file->column, "planting: %s: a tree is of one species; '%s' "
+                          "names %u", where, species.s, f->n_species);
+    const char *shares = sh->value[PLAN_SHARES];
+    double sum = 0;
+    for (uint32_t i = 0; i < f->n_species; i++) {
+        char *end = NULL;
+        f->share[i] = shares ? strtod(shares, &end) : 1.0;
+        if (shares && (end == shares || !(f->share[i] > 0)))
+            return sf_located(L->err, L->file, file->line, file->column, "planting: %s: 'shares' is '%s'; give one "
+                              "share above 0 per species, separated by spaces", where, sh->value[PLAN_SHARES]);
+        if (shares) shares = end;
+        sum += f->share[i];
+    }
+    for (uint32_t i = 0; i < f->n_species; i++) f->share[i] /= sum;
+    double spacing, density, rows, row_spacing, stock_height;
+    if (file_number(L, file, where, sh, PLAN_SPACING, 0, 1000, &spacing) ||
+        file_number(L, file, where, sh, PLAN_DENSITY, 0, 100000, &density) ||
+        file_number(L, file, where, sh, PLAN_ROWS, 0, 50, &rows) ||
+        file_number(L, file, where, sh, PLAN_ROW_SPACING, 0, 100, &row_spacing) ||
+        file_number(L, file, where, sh, PLAN_STOCK_HEIGHT, 0, 30, &stock_height))
+        return -1;
+    f->spacing = !isnan(density) ? sqrt(10000.0 / density) : !isnan(spacing) ? spacing : 2.0;
+    f->rows = isnan(rows) ? 1 : (uint32_t)rows;
+    f->row_spacing = isnan(row_spacing) ? 1.5 : row_spacing;
+    int stock = 0;
+    const char *size = sh->value[PLAN_STOCK];
+    while (size && host_stock_sizes[stock] && strcmp(host_stock_sizes[stock], size)) stock++;
+    if (size && !host_stock_sizes[stock])
+        return sf_located(L->err, L->file, file->line, file->column, "planting: %s: 'stock' is '%s'; give whip, "
+                          "feathered or standard, or a stock_height", where, size);
+    if (!isnan(stock_height)) f->stock_height[0] = f->stock_height[1] = stock_height;
+    else memcpy(f->stock_height, stock_heights[stock], sizeof f->stock_height);
+    return 0;
+}
+
+/* One feature of the plan's file into f: its kind from its geometry (and kind attribute). */
+static int read_file_feature(loader *L, const sylva_value *file, const char *shown, const plan_shape *sh,
+                             planting_feature *f)
+{
+    const char *where = sf_arena_printf(L->a, "%s %s", shown, sh->feature);
+    if (!where) return sf_out_of_memory(L);
+    int felling = sh->value[PLAN_KIND] && !strcmp(sh->value[PLAN_KIND], "felling");
+    static const planting_kind by_geometry[] = {PLANTING_TREE, PLANTING_BELT, PLANTING_BLOCK};
+    *f = (planting_feature){.kind = felling ? PLANTING_FELLING : by_geometry[sh->geometry], .file = L->file,
+                            .line = file->line, .column = file->column, .rows = 1,
+                            .name = sh->value[PLAN_NAME] ? sh->value[PLAN_NAME] : where, .xy = sh->xy, .n_xy = sh->n_xy};
+    if (felling && sh->geometry != PLAN_POLYGON)
+        return sf_located(L->err, L->file, file->line, file->column, "planting: %s: a felling is a polygon", where);
+    for (uint32_t k = 0; k < f->n_xy; k++)
+        f->xy[k][0] -= L->sf->site.origin[0], f->xy[k][1] -= L->sf->site.origin[1];
+    uint32_t a = 0, b = 0;
+    if (sh->geometry == PLAN_POLYGON && (f->n_xy < 3 || !ring_crossing((const double (*)[2])f->xy, f->n_xy, &a, &b)))
+        return sf_located(L->err, L->file, file->line, file->column, f->n_xy < 3 ? "planting: %s: the polygon has "
+                          "fewer than 3 corners" : "planting: %s: the polygon crosses itself: its edge from corner %u "
+                          "meets its edge from corner %u; draw the outline once around, without crossing", where, a, b);
+    if (sh->geometry == PLAN_LINE && f->n_xy < 2)
+        return sf_located(L->err, L->file, file->line, file->column, "planting: %s: the line has one point", where);
+    return read_file_attributes(L, file, where, sh, f);
+}
+
+/* The features of the plan's file (planting: {file: ...}), after the written ones. */
+static int read_plan_file(loader *L, const sylva_params *p, const ynode *node, uint32_t n_written)
+{
+    const sylva_value *file = sylva_param(p, "file");
+    const char *shown = ynode_get(node, "file")->text;
+    if (!L->site)
+        return sf_located(L->err, L->file, file->line, file->column, "'planting.file' is drawn in map coordinates, "
+                          "but the scene has no 'site:' section; add one with the site's crs and origin");
+    plan_shape *shapes;
+    uint32_t n;
+    err_buf why = {{0}};
+    if (plan_read_ogr(L->a, file->s, shown, sylva_param(p, "layer")->s, sylva_param(p, "crs")->s,
+                      L->sf->site.crs_wkt, &shapes, &n, &why))
+        return sf_located(L->err, L->file, file->line, file->column, "planting: %s", why.msg);
+    planting_spec *ps = &L->sf->planting;
+    planting_feature *all = arena_alloc(L->a, ((size_t)n_written + n) * sizeof *all);
+    if (!all) return sf_out_of_memory(L);
+    if (n_written) memcpy(all, ps->features, (size_t)n_written * sizeof *all);
+    ps->features = all;
+    for (uint32_t i = 0; i < n; i++) {
+        if (read_file_feature(L, file, shown, &shapes[i], &all[ps->n_features])) return -1;
+        ps->n_plants_drawn += all[ps->n_features].kind != PLANTING_FELLING;
+        ps->n_features++;
+    }
+    return 0;
+}
+
 int sf_read_planting(loader *L, const ynode_pair *section)
 {
     if (!section || !section->value || ynode_is_null(section->value)) return 0;
@@ -219,10 +336,10 @@ int sf_read_planting(loader *L, const ynode_pair *section)
     ps->line = section->key_line, ps->column = section->key_column;
     uint32_t n = 0;
     for (int k = 0; k < PLANTING_KINDS; k++) n += sylva_param(p, kind_keys[k])->len;
-    if (!n)
+    if (!n && !sylva_param(p, "file")->is_set)
         return sf_located(L->err, L->file, section->key_line, section->key_column, "'planting' plants nothing and "
-                          "fells nothing; give blocks:, belts:, trees: or felling:");
-    if (!(ps->features = arena_alloc(L->a, (size_t)n * sizeof *ps->features))) return sf_out_of_memory(L);
+                          "fells nothing; give file:, blocks:, belts:, trees: or felling:");
+    if (!(ps->features = arena_alloc(L->a, (size_t)n * sizeof *ps->features + 1))) return sf_out_of_memory(L);
     for (int k = 0; k < PLANTING_KINDS; k++) {
         const sylva_value *list = sylva_param(p, kind_keys[k]);
         for (uint32_t i = 0; i < list->len; i++) {
@@ -231,5 +348,5 @@ int sf_read_planting(loader *L, const ynode_pair *section)
             ps->n_features++;
         }
     }
-    return 0;
+    return sylva_param(p, "file")->is_set ? read_plan_file(L, p, node, ps->n_features) : 0;
 }

@@ -19,8 +19,7 @@
 #include "scene_build/scene_canopy.h"
 #include "scene_file/scene_file.h"
 #include "work_dir.h"
-#include "ztv/ztv_grid.h"
-#include "ztv/ztv_trace.h"
+#include "ztv_fixture.h"
 
 #define E0 500000.0  /* the site origin, UTM zone 11N */
 #define N0 5500000.0
@@ -303,6 +302,15 @@ static int copy_block(void *user, const ztv_block *b, err_buf *err)
     return 0;
 }
 
+/* The map's arrays for its grid. */
+static void map_alloc(void *user, const ztv_grid *g)
+{
+    map_copy *m = user;
+    size_t n = (size_t)g->nx * g->ny;
+    m->nx = g->nx;
+    for (int k = 0; k < 2; k++) m->visible[k] = calloc(n, sizeof(uint16_t)), m->cls[k] = calloc(n, 1);
+}
+
 /* The map of the scene of text in mode, on threads threads, into *m (arrays the caller frees). */
 static int map_of(const char *text, ztv_mode mode, unsigned threads, map_copy *m)
 {
@@ -311,21 +319,7 @@ static int map_of(const char *text, ztv_mode mode, unsigned threads, map_copy *m
     scene_file *sf = path ? scene_file_load_with(path, NULL, SCENE_FILE_NO_CAMERA, &err) : NULL;
     build_options bo = {.analysis = 1, .quiet = 1};
     scene *s = sf ? scene_build(sf, NULL, &bo, &err) : NULL;
-    ztv_targets t;
-    accel a;
-    int rc = !s || ztv_targets_build(&t, sf, s, 1, &err) ? -1 : 0;
-    if (!rc && accel_build(&a, s, threads, &err)) ztv_targets_free(&t), rc = -1;
-    if (!rc) {
-        ztv_job job = {.scene = s, .accel = &a, .targets = &t, .observer_height = 2, .radius = INFINITY,
-                       .screened = mode, .threads = threads, .quiet = 1};
-        rc = ztv_grid_make(s, &t, 0, INFINITY, &job.grid, &err);
-        size_t n = (size_t)job.grid.nx * job.grid.ny;
-        m->nx = job.grid.nx;
-        for (int k = 0; k < 2; k++) m->visible[k] = calloc(n, sizeof(uint16_t)), m->cls[k] = calloc(n, 1);
-        if (!rc) rc = ztv_trace(&job, copy_block, m, NULL, &err);
-        accel_free(&a);
-        ztv_targets_free(&t);
-    }
+    int rc = s ? ztv_fixture_trace(sf, s, mode, threads, map_alloc, copy_block, m, &err) : -1;
     if (rc) fprintf(stderr, "%s\n", err.msg);
     scene_free(s);
     scene_file_free(sf);

@@ -373,7 +373,7 @@ TEST(host_schemas_are_well_formed)
         CHECK_INT(rc, 0);
         for (uint32_t k = 0; k < s->n_params; k++) CHECK(s->params[k].help && s->params[k].help[0]);
     }
-    CHECK_INT(n, 32);
+    CHECK_INT(n, 34);
     CHECK(host_schema_shape(SHAPE_DISK) == &host_schema_shape_disk);
     /* enum orders the loader relies on */
     CHECK(!strcmp(host_sky_models[SKY_PREETHAM], "preetham"));

@@ -79,6 +79,13 @@ typedef struct cli_option {
     "the plants on season S (spring, summer, autumn, winter) or date YYYY-MM-DD, instead of the scene's "    \
     "season: key"
 
+/* --year N: the scene's planting plan N years after planting (into the build_options bo). */
+#define CLI_OPT_YEAR(bo)                                                                                      \
+    {.names = "--year", .type = CLI_NUMBER, .value = "N", .unit = "years", .target = &(bo).planting_years,     \
+     .low = 0, .high = 10000, .given = &(bo).planting_shown,                                                  \
+     .help = "the planting plan (planting:) N years after planting: its plants grown to their age then and "  \
+             "its fellings made (default: the scene as it stands before the plan)"}
+
 /* A command's table and the text around it in its help. */
 typedef struct cli_command_spec {
     const char *name;          /* "render" */

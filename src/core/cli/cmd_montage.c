@@ -39,6 +39,7 @@ int cmd_montage(int argc, char **argv)
         CLI_OPT_WHOLE("--spp", "N", mo.spp, 1, 1u << 20, "samples per pixel (default: the scene's)"),
         CLI_OPT_WHOLE("--threads", "N", bo.threads, 1, 1024, "threads for every phase (default: one per core)"),
         CLI_OPT_TEXT("--season", "S", season, CLI_HELP_SEASON),
+        CLI_OPT_YEAR(bo),
         CLI_OPTS_SCENE_COMMON(bo),
     };
     const cli_command_spec spec = {"montage", "SCENE", montage_about, NULL, options, sizeof options / sizeof *options,

@@ -118,6 +118,7 @@ int cmd_probe(int argc, char **argv)
     const cli_option options[] = {
         CLI_OPT_FLAG("--local", local, "E N are local metres even when the scene has a site"),
         CLI_OPT_NUMBER("--radius", "R", "metres", radius, 0, 1e6, 0, "plants within R metres of the point (default 10)"),
+        CLI_OPT_YEAR(bo),
         CLI_OPTS_SCENE_COMMON(bo),
     };
     probe_operands ops = {0};

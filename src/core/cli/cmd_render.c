@@ -79,6 +79,7 @@ static int render_run(cli_mpi *m, int argc, char **argv)
                      "is on (the view POV-Ray's export gives)"),
         CLI_OPT_TEXT("--viewpoint", "NAME", viewpoint, CLI_HELP_VIEWPOINT),
         CLI_OPT_TEXT("--season", "S", season, CLI_HELP_SEASON),
+        CLI_OPT_YEAR(bo),
         CLI_OPT_CHOICE("--ground", ground, ground_names, "the terrain plugin's levels of detail around the camera "
                        "(default) or around the development, one ground for every viewpoint, as `sylva study` "
                        "renders it"),

@@ -2,9 +2,12 @@
  * development, with it, and its wireline) in every frame asked for, and the study's ZTV, from one
  * build of the scene (study/study_run.h, docs/study.md). Under mpirun each rank builds the scene and renders whole
  * images: every N-th viewpoint-frame to render. */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
 
 #include "cli/cli_mpi.h"
 #include "cli/cli_options.h"
@@ -66,6 +69,39 @@ static int study_map_ztv(void *user, const scene_file *sf, const scene *s, const
     int rc = ztv_study_run(sf, &surveyed.view, &zo, parts, &own, err);
     for (int p = 0; p < PHASE_COUNT; p++) phase_add(times, (job_phase)p, own.seconds[p]);
     scene_surveyed_free(&surveyed);
+    return rc;
+}
+
+/* One study of sf into o->dir. */
+static int study_once(scene_file *sf, const plugin_registry *reg, const study_options *o, cli_parts *parts,
+                      const cli_mpi *m)
+{
+    err_buf err = {{0}};
+    study_report rep;
+    if (study_run(sf, reg, o, &parts->parts, &rep, &err)) return cli_parts_fail(parts, &err);
+    if (!o->build.quiet) report(&rep, m->ranks);
+    return EXIT_OK;
+}
+
+/* A study of a planting plan: one study at each of study.years, each in its season, into
+ * DIR/year_N_SEASON. */
+static int study_years(scene_file *sf, const plugin_registry *reg, const study_options *o, cli_parts *parts,
+                       const cli_mpi *m)
+{
+    if (!m->rank && mkdir(o->dir, 0777) && errno != EEXIST)
+        return cli_failf("study", ERR_OUTPUT, "cannot make the folder %s: %s", o->dir, strerror(errno));
+    int rc = EXIT_OK;
+    for (uint32_t y = 0; y < sf->study.n_years && !rc; y++) {
+        const study_year *year = &sf->study.years[y];
+        char dir[4200];
+        snprintf(dir, sizeof dir, "%s/year_%g_%s", o->dir, year->years, year->season);
+        study_options at = *o;
+        at.dir = dir;
+        at.build.planting_shown = 1, at.build.planting_years = year->years;
+        sf->season.day = year->day, sf->season.text = year->season;
+        if (!o->build.quiet) fprintf(stderr, "study: year %g after planting, %s\n", year->years, year->season);
+        rc = study_once(sf, reg, &at, parts, m);
+    }
     return rc;
 }
 
@@ -132,9 +168,8 @@ static int study_main(cli_mpi *m, int argc, char **argv)
                          .n_inputs = points ? 1 : 0};
     int rc = cli_scene_open(&cs, "study", scene_path, &use, &o.build);
     if (!rc && points && scene_file_read_points(cs.sf, points, points_layer, &err)) rc = cli_fail(NULL, &err, ERR_INPUT);
-    study_report rep;
-    if (!rc && study_run(cs.sf, cs.reg, &o, &parts.parts, &rep, &err)) rc = cli_parts_fail(&parts, &err);
-    if (!rc && !o.build.quiet) report(&rep, m->ranks);
+    if (!rc && cs.sf->study.n_years) rc = study_years(cs.sf, cs.reg, &o, &parts, m);
+    else if (!rc) rc = study_once(cs.sf, cs.reg, &o, &parts, m);
     if (!rc && !m->rank) printf("%s\n", o.dir);
     cli_scene_close(&cs);
     return rc;

@@ -17,6 +17,12 @@
 #include "cli/commands.h"
 #include "ztv/ztv_raster.h"
 #include "ztv/ztv_study.h"
+#include "ztv/ztv_years.h"
+
+#include <errno.h>
+#include <sys/stat.h>
+
+#define ZTV_YEARS_MAX 64 /* years in one --years list */
 
 static const char ztv_about[] =
     "Maps where SCENE's development can be seen from (a zone of theoretical visibility):\n"
@@ -43,9 +49,80 @@ static const char ztv_epilogue[] =
 static const char *const screening_names[] = {"none", "vegetation", "all", "canopy", NULL}; /* ztv_mode's order */
 static const char *const ground_names[] = {"surveyed", "refined", NULL};
 
+/* "1,5,15,30" into years, increasing; -1 after printing why. */
+static int parse_years(const char *text, double *years, uint32_t *n)
+{
+    *n = 0;
+    for (const char *p = text; *p;) {
+        char *end;
+        errno = 0;
+        double y = strtod(p, &end);
+        if (end == p || errno || !(y >= 0 && y <= 10000) || (*n && y <= years[*n - 1]) || *n == ZTV_YEARS_MAX ||
+            (*end && *end != ',')) {
+            fprintf(stderr, "sylva ztv: --years '%s': give at most %u years since planting, increasing, between 0 "
+                    "and 10000, separated by commas (1,5,15,30)\n", text, ZTV_YEARS_MAX);
+            return -1;
+        }
+        years[(*n)++] = y;
+        p = *end ? end + 1 : end;
+    }
+    if (!*n) {
+        fprintf(stderr, "sylva ztv: --years: give the years since planting, separated by commas (1,5,15,30)\n");
+        return -1;
+    }
+    return 0;
+}
+
+/* One map into dir: the scene built (at the planting year bo says) and traced. */
+static int ztv_one(cli_mpi *m, const char *scene_path, const cli_scene_use *use, const build_options *bo,
+                   ztv_study_options o, const char *dir)
+{
+    err_buf err = {{0}};
+    cli_scene cs;
+    cli_parts parts;
+    cli_parts_of(&parts, m);
+    o.dir = dir;
+    int rc = cli_scene_open(&cs, "ztv", scene_path, use, bo);
+    if (!rc && ztv_study_run(cs.sf, cs.scene, &o, &parts.parts, &cs.times, &err)) rc = cli_parts_fail(&parts, &err);
+    cli_scene_close(&cs);
+    return rc;
+}
+
+/* --years: a map before the plan (DIR/before) and one each year (DIR/year_N), then what the planting
+ * hides in each year and the visible area against the years (ztv_years.h). */
+static int ztv_years_run(cli_mpi *m, const char *scene_path, const cli_scene_use *use, build_options bo,
+                         const ztv_study_options *o, const char *list)
+{
+    double years[ZTV_YEARS_MAX];
+    uint32_t n;
+    if (parse_years(list, years, &n)) return EXIT_USAGE;
+    if (!m->rank && mkdir(o->dir, 0777) && errno != EEXIST)
+        return cli_failf("ztv", ERR_OUTPUT, "cannot make the folder %s: %s", o->dir, strerror(errno));
+    ztv_year_row rows[ZTV_YEARS_MAX + 1];
+    static char dirs[ZTV_YEARS_MAX + 1][4200];
+    int rc = EXIT_OK;
+    for (uint32_t r = 0; r <= n && !rc; r++) {
+        rows[r] = (ztv_year_row){.year = r ? years[r - 1] : -1, .dir = dirs[r]};
+        if (r) snprintf(dirs[r], sizeof dirs[r], "%s/year_%g", o->dir, years[r - 1]);
+        else snprintf(dirs[r], sizeof dirs[r], "%s/before", o->dir);
+        bo.planting_shown = r > 0, bo.planting_years = r ? years[r - 1] : 0;
+        rc = ztv_one(m, scene_path, use, &bo, *o, dirs[r]);
+    }
+    err_buf err = {{0}};
+    const char *mode = o->screening == ZTV_ALL ? "all" : "vegetation";
+    if (!rc && !m->rank && ztv_years_write(o->dir, mode, rows, n + 1, &err)) rc = cli_fail("ztv", &err, ERR_OUTPUT);
+    for (uint32_t r = 0; !rc && !m->rank && r <= n; r++) {
+        if (r) printf("year %g: seen from %.6g km2, hidden by the planting from %.6g km2 (partly from %.6g km2)\n",
+                      rows[r].year, rows[r].visible_km2, rows[r].hidden_km2, rows[r].partly_km2);
+        else printf("before the planting: seen from %.6g km2\n", rows[r].visible_km2);
+    }
+    if (!rc && !m->rank) printf("%s\n", o->dir);
+    return rc;
+}
+
 static int ztv_run(cli_mpi *m, int argc, char **argv)
 {
-    const char *scene_path = NULL, *season = NULL;
+    const char *scene_path = NULL, *season = NULL, *years = NULL;
     ztv_study_options o = {.radius = NAN, .cell = NAN, .eye = NAN, .screening = -1};
     build_options bo = {.analysis = 1}; /* the ground as surveyed, whatever the camera */
     int refined = 0;
@@ -65,6 +142,11 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
         CLI_OPT_FLAG("--sightlines", o.sightlines, "every pair by its sightline, bare earth too, without the "
                      "bare-earth sweep (slower; the same maps)"),
         CLI_OPT_TEXT("--season", "S", season, CLI_HELP_SEASON),
+        CLI_OPT_YEAR(bo),
+        CLI_OPT_TEXT("--years", "LIST", years, "maps before the planting plan and at each of LIST's years since "
+                     "planting (1,5,15,30) in DIR/before and DIR/year_N, what the planting hides each year "
+                     "(ztv_hidden_by_planting.tif, .png) and the area seeing the development against the years "
+                     "(DIR/visible_area.csv, .png)"),
         CLI_OPT_WHOLE("--threads", "N", bo.threads, 1, 1024, "threads for every phase (default: one per core, "
                       "shared out between the ranks of an MPI job on one machine); the maps do not depend on it"),
         CLI_OPTS_SCENE_COMMON(bo),
@@ -80,15 +162,19 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
     if (m->rank) bo.quiet = 1;
     o.quiet = bo.quiet;
 
-    err_buf err = {{0}};
-    cli_scene cs;
-    cli_parts parts;
-    cli_parts_of(&parts, m);
     cli_scene_use use = {.season = season, .no_camera = 1, .check_outputs = 1}; /* the folder's files */
-    int rc = cli_scene_open(&cs, "ztv", scene_path, &use, &bo);
-    if (!rc && ztv_study_run(cs.sf, cs.scene, &o, &parts.parts, &cs.times, &err)) rc = cli_parts_fail(&parts, &err);
+    if (years && bo.planting_shown) {
+        fprintf(stderr, "sylva ztv: give --year N or --years LIST, not both\n");
+        return EXIT_USAGE;
+    }
+    if (years && (o.screening == ZTV_BARE || o.screening == ZTV_CANOPY)) {
+        fprintf(stderr, "sylva ztv: --years maps what the planting hides, which bare earth and the canopy "
+                "surface do not hold; give --screening vegetation or all\n");
+        return EXIT_USAGE;
+    }
+    if (years) return ztv_years_run(m, scene_path, &use, bo, &o, years);
+    int rc = ztv_one(m, scene_path, &use, &bo, o, o.dir);
     if (!rc && !m->rank) printf("%s\n", o.dir);
-    cli_scene_close(&cs);
     return rc;
 }
 

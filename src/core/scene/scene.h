@@ -56,6 +56,8 @@ typedef struct instance {
     uint32_t prototype;
     xform3x4 xf;              /* prototype frame → world */
     int development;          /* 1: new planting, part of the development (plants: development: true) */
+    uint32_t planted;         /* 0, or the plant of the planting plan it is + 1: the same plant
+                                 has the same number whatever the year (scene_build/scene_planting.h) */
 } instance;
 
 /* A mesh that several objects share: an imported model file or a part of a group. Objects

@@ -16,6 +16,9 @@ typedef struct build_options {
                         development objects' mean position, else the ztv targets', else the
                         terrain's centre) instead of the camera: a refined ground that is the same
                         whatever the camera (`ztv --ground refined`) */
+    int planting_shown; /* 1: the planting plan planted and grown planting_years after its year
+                        (--year); 0: the scene as it stands before the plan (nothing felled) */
+    double planting_years; /* years since planting (>= 0) */
     unsigned threads; /* threads for the tree variants and the plugins' workers; 0: one per processor */
     phase_times *times; /* may be NULL: where the terrain, tree variant and ecology times add up */
 } build_options;

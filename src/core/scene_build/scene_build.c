@@ -18,6 +18,7 @@
 #include "season/scene_season.h"
 #include "season/scene_spring.h"
 #include "scene_build/scene_tree_variants.h"
+#include "scene_build/scene_planting.h"
 #include "scene_build/scene_trees.h"
 #include "scene_build/shapes.h"
 #include "site/terrain_extent.h"
@@ -333,6 +334,7 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
         scene_ground_camera(s, sf, err) ||
         build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) ||
         scene_build_trees(s, sf, opt, err) || build_woodland(s, sf, plugins, opt, &out, err) ||
+        scene_build_planting(s, sf, opt, err) ||
         scene_build_objects(s, sf, err) ||
         apply_season(s, sf, err)) {
         scene_free(s);

@@ -28,14 +28,10 @@ static void tally_stretch(const scene *s, const tree_spec *t, trees_tally *tally
     if (factor > tally->largest_factor) tally->largest_factor = factor, tally->most_stretched = t;
 }
 
-/* One tree as an instance; 1 when it stands outside the terrain (left out). */
-static int place_tree(scene *s, const tree_spec *t, int development, trees_tally *tally, err_buf *err)
+int scene_place_sized_tree(scene *s, const tree_spec *t, int development, err_buf *err)
 {
     double z = 0;
-    if (s->terrain && scene_terrain_height(s, t->position[0], t->position[1], &z)) {
-        if (!tally->outside++) tally->first_outside = t;
-        return 0;
-    }
+    if (s->terrain && scene_terrain_height(s, t->position[0], t->position[1], &z)) return 1;
     const species *p = &s->species[t->species];
     if (!p->n_variants) return err_set(err, "%s: species '%s' has no model", t->feature, p->name);
     uint32_t v = t->age > 0 ? scene_variant_for_age(s, t->species, t->age) : scene_variant_nearest_height(s, t->species, t->height);
@@ -46,12 +42,20 @@ static int place_tree(scene *s, const tree_spec *t, int development, trees_tally
                        t->feature, p->name, v, t->height);
     double sv, sh;
     plant_scales(pr, t->height, t->crown, &sv, &sh);
-    tally_stretch(s, t, tally);
     xform3x4 xf = xf_trs(v3((float)t->position[0], (float)t->position[1], (float)z), v3(0, 0, (float)t->rotation_deg),
                          v3((float)sh, (float)sh, (float)sv));
     if (scene_add_instance(s, proto, &xf, err) < 0) return -1;
     s->instances[s->n_instances - 1].development = development;
     return 0;
+}
+
+/* One tree as an instance; 0 also when it stands outside the terrain (left out, counted). */
+static int place_tree(scene *s, const tree_spec *t, int development, trees_tally *tally, err_buf *err)
+{
+    int rc = scene_place_sized_tree(s, t, development, err);
+    if (rc == 1 && !tally->outside++) tally->first_outside = t;
+    if (!rc) tally_stretch(s, t, tally);
+    return rc < 0 ? -1 : 0;
 }
 
 static void warn(const scene *s, const scene_file *sf, const trees_tally *tally)

@@ -16,4 +16,11 @@
  * 0, or -1 with err set. */
 int scene_build_trees(scene *s, const scene_file *sf, const build_options *opt, err_buf *err);
 
+/* One plant of species t->species standing on the terrain at t->position, of the variant its
+ * normalised age picks (t->age > 0) or else the one nearest its height, scaled to be t->height
+ * tall (and t->crown across when above 0), turned by t->rotation_deg: a surveyed tree, and a
+ * planting plan's plant at its year (scene_planting.c). Returns 0 placed, 1 when it stands
+ * outside the terrain (not placed), -1 with err set. */
+int scene_place_sized_tree(scene *s, const tree_spec *t, int development, err_buf *err);
+
 #endif

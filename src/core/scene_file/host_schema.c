@@ -22,7 +22,7 @@
 const char *const host_sections[] = {"image",   "site",    "camera",  "sun",     "sky",     "materials",
                                      "terrain", "species", "plants",  "ecology", "groups",  "objects",
                                      "earth",   "viewpoints", "ztv",     "photo",   "ground_cover", "season",  "snow",
-                                     "landcover", "trees", "canopy", "study", NULL};
+                                     "landcover", "trees", "canopy", "study", "planting", NULL};
 
 const char *const host_shape_names[] = {"mesh", "box", "sphere", "quad", "disk", NULL};
 const char *const host_sky_models[] = {"none", "constant", "preetham", "physical", NULL};
@@ -444,6 +444,9 @@ static const sylva_param_spec study_params[] = {
     {.name = "inner_edges", .type = SYLVA_P_BOOL, .def = 1,
      .help = "Whether the wireline draws the development's inner edges (yellow) inside its outline (red, the "
              "silhouette); false: the outline alone, as for a lattice tower seen as one shape."},
+    {.name = "years", .type = SYLVA_P_STRING,
+     .help = "With a planting: section, the years since planting the study is made at, each with its season: "
+             "\"1 winter, 15 summer\" (the default), each into DIR/year_N_SEASON."},
 };
 const host_schema host_schema_study = {
     "study", "The viewpoints, products and frames `sylva study` renders from one build of the scene.",
@@ -707,6 +710,74 @@ static const sylva_param_spec trees_params[] = {
 const host_schema host_schema_trees = {"trees", "Existing trees from a survey file.", trees_params,
                                        COUNT(trees_params)};
 
+/* --- planting ------------------------------------------------------------------------------ */
+const char *const host_stock_sizes[] = {"whip", "feathered", "standard", NULL};
+const char *const host_planting_coordinates[] = {"local", "map", NULL};
+static const sylva_param_spec planting_item_params[] = {
+    {.name = "name", .type = SYLVA_P_STRING,
+     .help = "The feature's name in messages (default: blocks[i], belts[i], trees[i] or felling[i])."},
+    {.name = "polygon", .type = SYLVA_P_GRID, .unit = "m",
+     .help = "A block's or a felling's outline: [[x, y], ...], at least 3 corners, not closed."},
+    {.name = "line", .type = SYLVA_P_GRID, .unit = "m",
+     .help = "A belt's centre line: [[x, y], ...], at least 2 points."},
+    {.name = "position", .type = SYLVA_P_LIST, .min_len = 2, .max_len = 2, .def_list = zero2, .def_len = 2,
+     .unit = "m", .help = "A tree's [x, y]."},
+    {.name = "species", .type = SYLVA_P_STRING,
+     .help = "The scene's species, separated by spaces: a block's mix, a belt's sequence along each row, a tree's one."},
+    {.name = "shares", .type = SYLVA_P_LIST, .flags = MIN_X | MAX, .min = 0, .max = 1e6, .max_len = PLANTING_MAX_SPECIES,
+     .help = "A block's share of each species, in the order of species (default: equal shares)."},
+    {.name = "spacing", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 2, .min = 0, .max = 1000, .unit = "m",
+     .help = "Metres between plants: a block's square grid, a belt's plants along a row."},
+    {.name = "density", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 2500, .min = 0, .max = 100000, .unit = "1/ha",
+     .help = "A block's plants per hectare, in place of spacing."},
+    {.name = "rows", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 1, .min = 1, .max = 50,
+     .help = "A belt's rows, side by side along its line, staggered."},
+    {.name = "row_spacing", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 1.5, .min = 0, .max = 100, .unit = "m",
+     .help = "Metres between a belt's rows."},
+    {.name = "stock", .type = SYLVA_P_ENUM, .def_str = "whip", .choices = host_stock_sizes,
+     .help = "The nursery stock planted: whip (0.6-0.9 m), feathered (1.8-2.4 m) or standard (2.5-3 m)."},
+    {.name = "stock_height", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 0.75, .min = 0, .max = 30, .unit = "m",
+     .help = "The stock's height at planting, in place of stock."},
+};
+static const sylva_param_spec planting_params[] = {
+    {.name = "year", .type = SYLVA_P_REAL, .flags = REQ | MIN | MAX, .min = 0, .max = 10000, .unit = "year",
+     .help = "The calendar year of planting; --year N shows the plan N years after it."},
+    {.name = "file", .type = SYLVA_P_PATH,
+     .help = "The plan drawn in a vector file GDAL reads (GeoPackage, Shapefile, GeoJSON): polygons are blocks (or "
+             "fellings, with kind: felling), lines belts, points trees; attributes as the items' keys."},
+    {.name = "layer", .type = SYLVA_P_STRING, .help = "The file's layer holding the plan (default: its only one)."},
+    {.name = "crs", .type = SYLVA_P_STRING,
+     .help = "CRS of the file's coordinates, EPSG:NNNN or WKT, in place of the one it states."},
+    {.name = "coordinates", .type = SYLVA_P_ENUM, .def_str = "local", .choices = host_planting_coordinates,
+     .help = "What the plan's points are: local metres, or map coordinates (easting, northing) in the site's CRS."},
+    {.name = "seed", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 1, .min = 0, .max = 4294967295.0,
+     .help = "Seeds where each plant stands, its species and turn: the same plants in the same places every year."},
+    {.name = "full_grown_age", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 60, .min = 0, .max = 10000,
+     .unit = "years", .help = "Age at which a planted species' full-grown variant stands: the time scale of its growth curve."},
+    {.name = "thinning_year", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = 0, .max = 10000,
+     .unit = "years", .help = "Years after planting at which blocks and belts are thinned (0: never)."},
+    {.name = "thinning_keep", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 0.5, .min = 0, .max = 1,
+     .help = "The share of a block's or belt's plants the thinning keeps."},
+    {.name = "blocks", .type = SYLVA_P_GROUP_LIST, .max_len = 100000, .group = planting_item_params,
+     .n_group = COUNT(planting_item_params),
+     .help = "Woodland blocks: {polygon, species, shares, spacing or density, stock}."},
+    {.name = "belts", .type = SYLVA_P_GROUP_LIST, .max_len = 100000, .group = planting_item_params,
+     .n_group = COUNT(planting_item_params),
+     .help = "Hedgerows and belts: {line, species (the sequence), rows, row_spacing, spacing, stock}."},
+    {.name = "trees", .type = SYLVA_P_GROUP_LIST, .max_len = 100000, .group = planting_item_params,
+     .n_group = COUNT(planting_item_params),
+     .help = "Single trees: {position, species, stock}."},
+    {.name = "felling", .type = SYLVA_P_GROUP_LIST, .max_len = 100000, .group = planting_item_params,
+     .n_group = COUNT(planting_item_params),
+     .help = "Polygons whose existing vegetation is removed: {polygon}."},
+};
+const host_schema host_schema_planting = {
+    "planting", "A planting plan: blocks, belts and trees planted in a stated year, and the vegetation felled.",
+    planting_params, COUNT(planting_params)};
+const host_schema host_schema_planting_item = {
+    "planting item", "One block, belt, tree or felling of a planting plan.", planting_item_params,
+    COUNT(planting_item_params)};
+
 /* --- objects -------------------------------------------------------------------------------- */
 /* Keys every kind of object has: its name, where it stands and how it is turned, whether it is
  * part of the development, and the CSV layout that places it many times. */
@@ -860,7 +931,8 @@ const host_schema *host_schema_at(uint32_t i)
         &host_schema_canopy,
         &host_schema_material,     &host_schema_terrain,
         &host_schema_species,      &host_schema_phenology,    &host_schema_blossom,      &host_schema_plant,
-        &host_schema_plants_file,  &host_schema_trees,        &host_schema_ecology,
+        &host_schema_plants_file,  &host_schema_trees,        &host_schema_planting,     &host_schema_planting_item,
+        &host_schema_ecology,
         &host_schema_object,       &host_schema_object_model, &host_schema_object_group,
         &host_schema_shape_box,    &host_schema_shape_sphere,
         &host_schema_shape_quad,   &host_schema_shape_disk,   &host_schema_shape_mesh};

@@ -47,6 +47,8 @@ extern const host_schema host_schema_blossom;      /* its blossom: block */
 extern const host_schema host_schema_plant;        /* one item of plants: */
 extern const host_schema host_schema_plants_file;  /* plants: {file: ...} */
 extern const host_schema host_schema_trees;        /* trees: a survey's trees */
+extern const host_schema host_schema_planting;     /* planting: a planting plan */
+extern const host_schema host_schema_planting_item; /* one block, belt, tree or felling of it */
 extern const host_schema host_schema_object;       /* one item of objects: (without shape keys) */
 extern const host_schema host_schema_object_model; /* one item of objects: with model: */
 extern const host_schema host_schema_object_group; /* one item of objects: with group: */
@@ -78,6 +80,8 @@ extern const char *const host_material_types[];
 extern const char *const host_model_up_axes[]; /* model_up order: file, y, z */
 extern const char *const host_study_products[]; /* study_product order */
 extern const char *const host_study_frames[];   /* study_frame order */
+extern const char *const host_stock_sizes[];    /* planting stock: whip, feathered, standard */
+extern const char *const host_planting_coordinates[]; /* planting coordinates: local, map */
 
 /* Image size limit (width and height), pixels. */
 #define HOST_IMAGE_MAX_SIZE 16384

@@ -9,7 +9,7 @@
  * beyond the registry's descriptor lookup runs.
  *
  * Sections are read in a fixed order: image, site, camera, sun, sky, materials, ecology,
- * terrain, species (with includes), plants, trees, groups, objects, earth, then ztv, ground cover,
+ * terrain, species (with includes), plants, trees, planting, groups, objects, earth, then ztv, ground cover,
  * snow, season, photo, landcover, canopy and study — the site before every position, materials
  * before their users, the ecology before the species blocks it defines, species before plants,
  * the earth after the site (its default follows it), the study after the viewpoints and the
@@ -95,6 +95,7 @@ static int load(loader *L, const char *path)
         sf_read_species(L, ynode_get(L->root, "species")) ||
         sf_read_plants(L, ynode_get(L->root, "plants")) ||
         sf_read_trees(L, ynode_get_pair(L->root, "trees")) ||
+        sf_read_planting(L, ynode_get_pair(L->root, "planting")) ||
         sf_read_groups(L, ynode_get(L->root, "groups")) ||
         sf_read_objects(L, ynode_get(L->root, "objects")) || sf_read_earth(L) || sf_read_ztv(L) ||
         sf_read_ground_cover(L) || sf_read_snow(L) || sf_read_season(L) ||

@@ -164,6 +164,10 @@ int sf_read_terrain(loader *L, const ynode *node, uint32_t line, uint32_t column
 int sf_read_species(loader *L, const ynode *node);
 int sf_read_plants(loader *L, const ynode *node);
 int sf_read_trees(loader *L, const ynode_pair *section); /* scene_file_trees.c; NULL: none */
+int sf_read_planting(loader *L, const ynode_pair *section); /* scene_file_planting.c; NULL: none */
+/* study.years (v: the key's value) into the study's years; with a planting plan and no key, year 1
+ * in winter and year 15 in summer (scene_file_study_years.c). */
+int sf_read_study_years(loader *L, const sylva_value *v);
 int sf_read_groups(loader *L, const ynode *node);
 int sf_read_objects(loader *L, const ynode *node);
 int sf_read_ztv(loader *L); /* after the objects: its targets name their developments */

@@ -134,6 +134,48 @@ typedef struct trees_spec {
     uint32_t line, column;    /* of the file key */
 } trees_spec;
 
+/* What a feature of a planting plan is (the planting: section, docs/mitigation.md). */
+typedef enum planting_kind {
+    PLANTING_BLOCK = 0,   /* a polygon planted on a grid: a woodland block */
+    PLANTING_BELT,        /* rows along a line: a hedgerow, shelter or screening belt */
+    PLANTING_TREE,        /* one tree at a point */
+    PLANTING_FELLING,     /* a polygon whose existing vegetation is removed */
+    PLANTING_KINDS
+} planting_kind;
+
+#define PLANTING_MAX_SPECIES 8u
+
+/* One feature of a planting plan, as drawn: inline in the scene file or a feature of a vector
+ * file. Coordinates are local metres (turned from map coordinates when the plan gives those). */
+typedef struct planting_feature {
+    planting_kind kind;
+    const char *name;           /* its name, else "blocks[2]" or the file's "FID 7" */
+    double (*xy)[2]; uint32_t n_xy; /* polygon ring (not closed), line, or the tree's point */
+    uint32_t species[PLANTING_MAX_SPECIES]; /* blocks: the mix; belts: the sequence along a row */
+    double share[PLANTING_MAX_SPECIES];     /* blocks: each species' share, summing to 1 */
+    uint32_t n_species;
+    double spacing;             /* metres between plants: a block's grid, a belt's row */
+    uint32_t rows;              /* belts: rows side by side */
+    double row_spacing;         /* belts: metres between rows */
+    double stock_height[2];     /* the nursery stock's range of heights at planting, metres */
+    const char *file;           /* where it is written: the scene file or the vector file */
+    uint32_t line, column;      /* in the scene file (of the file key for a file's feature) */
+} planting_feature;
+
+/* A planting plan (the planting: section): what is planted and felled, when, and the rule the
+ * plants grow by. */
+typedef struct planting_spec {
+    planting_feature *features; uint32_t n_features;
+    uint32_t n_plants_drawn;    /* blocks, belts and trees (felling aside) */
+    double year;                /* the calendar year of planting, as stated */
+    int map_coordinates;        /* 1: written in the site's CRS (local = map - origin), 0: local metres */
+    uint64_t seed;              /* places the plants: the same plants in the same places every year */
+    double full_grown_age;      /* years: a species' full-grown variant stands at this age */
+    double thinning_year;       /* years since planting from which blocks and belts are thinned; 0: never */
+    double thinning_keep;       /* the share of a block's or belt's plants kept by thinning */
+    uint32_t line, column;      /* of the section */
+} planting_spec;
+
 typedef enum terrain_source { TERRAIN_NONE = 0, TERRAIN_GRID = 1, TERRAIN_PLUGIN = 2 } terrain_source;
 
 typedef struct terrain_spec {
@@ -208,6 +250,15 @@ typedef enum study_product { STUDY_EXISTING = 0, STUDY_PROPOSED = 1, STUDY_WIREL
 typedef enum study_frame { STUDY_SINGLE = 0, STUDY_PLANAR_53 = 1, STUDY_CYLINDRICAL_90 = 2 } study_frame;
 #define STUDY_FRAMES 3u
 
+/* A year a study is made at: years since planting and the season's day (docs/mitigation.md). */
+typedef struct study_year {
+    double years;
+    uint32_t day;               /* day of the year (season/phenology.h) */
+    const char *season;         /* as written: "winter", "2027-06-21" */
+} study_year;
+
+#define STUDY_MAX_YEARS 16u
+
 /* The study: section: which viewpoints, products and frames `sylva study` renders, and at what
  * size (docs/study.md). */
 typedef struct study_settings {
@@ -226,6 +277,8 @@ typedef struct study_settings {
     double dpi;                 /* pixels per inch of the print */
     uint32_t spp;               /* 0: the image's */
     int inner_edges;            /* 1: the wireline draws inner edges inside the silhouette */
+    study_year *years;          /* with a planting plan: the years the study is made at (study_years.c) */
+    uint32_t n_years;
     uint32_t line, column;      /* of the section (of the file's start when absent) */
 } study_settings;
 
@@ -290,6 +343,7 @@ typedef struct scene_file {
     const char *plants_file;    /* plants: {file: F}: a saved ecology run (resolved), or NULL */
     uint32_t plants_file_line, plants_file_column;
     trees_spec trees;           /* the trees: section (n_trees 0 without one) */
+    planting_spec planting;     /* the planting: section (n_features 0 without one) */
     ecology_spec ecology;
     group_spec *groups; uint32_t n_groups;
     object_spec *objects; uint32_t n_objects; /* layouts expanded: one per CSV row */

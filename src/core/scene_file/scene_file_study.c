@@ -148,6 +148,7 @@ int sf_read_study(loader *L)
         if (sf_read_points(L, points->s, written->text, st->points_layer, st->eye_height))
             return err_locate(L->err, L->file, points->line, points->column);
     }
+    if (sf_read_study_years(L, sylva_param(p, "years"))) return -1;
     return read_choices(L, section, "products", "product", host_study_products, &st->products) ||
            read_choices(L, section, "frames", "frame", host_study_frames, &st->frames) ||
            read_viewpoint_names(L, section);

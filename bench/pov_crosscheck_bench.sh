@@ -46,7 +46,8 @@ for scene in "${scenes[@]}"; do
   status=$?
   set -e
   load=$(awk '{print $1}' /proc/loadavg)
-  read -r wall user sys <"$workdir/$name.time" || true
+  # the last line: /usr/bin/time puts "Command exited with non-zero status N" before it
+  read -r wall user sys < <(tail -1 "$workdir/$name.time") || true
   m="$out/metrics.json"
   if [ ! -s "$m" ]; then
     echo "$name: crosscheck failed (exit $status); see $workdir/$name.log" >&2
@@ -55,7 +56,7 @@ for scene in "${scenes[@]}"; do
   bytes=$(find "$out" -maxdepth 1 -name "$name*" ! -name "*-povray*" ! -name "*-noair*" -printf '%s\n' |
           awk '{s += $1} END {print s}')
   cover=$(field "$m" povray_coverage_cpu_seconds)
-  printf '%-16s %9.1f %9.1f %9s %9s %9s %9.1f %9.1f %9.1f %9.1f  %s, %s\n' "$name" "$(field "$m" export_seconds)" \
+  printf '%-16s %9.1f %9.1f %9.1f %9.1f %9.1f %9.1f %9.1f %9.1f %9.1f  %s, %s\n' "$name" "$(field "$m" export_seconds)" \
     "$(awk -v b="$bytes" 'BEGIN {print b / 1e6}')" "$(field "$m" povray_parse_cpu_seconds)" \
     "$(field "$m" povray_trace_cpu_seconds)" "$cover" "$(field "$m" sylva_bvh_seconds)" \
     "$(field "$m" sylva_render_seconds)" "$wall" "$(awk -v u="$user" -v s="$sys" 'BEGIN {print u + s}')" \

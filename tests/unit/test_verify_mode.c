@@ -1,7 +1,8 @@
 /* test_verify_mode.c — the verification mode takes POV-Ray's samples (pixel centre plus a
  * regular R x R grid, equally weighted, no jitter) and fills the coverage and class layers the
  * cross-check compares: one pixel looking straight down on a quad whose edge crosses the pixel
- * at 60 % of its width. */
+ * at 60 % of its width; and shades a triangle whose three normals are one vector by its
+ * geometric normal, as POV-Ray does. */
 #include <math.h>
 
 #include "harness.h"
@@ -78,4 +79,32 @@ TEST(sky_pixel_class)
     scene_free(s);
 }
 
-TEST_LIST(TEST_CASE(samples_are_povray_method_1), TEST_CASE(sky_pixel_class))
+/* A triangle whose three normals are one vector is shaded by its geometric normal, as POV-Ray
+ * shades a mesh2 triangle with three equal normals: a quad tilted 30 degrees about y with its
+ * normals straight up, under a sun straight overhead, gets cos 30 (not 1) of the sun; with
+ * normals that differ it keeps the interpolated one. */
+TEST(one_normal_is_the_geometric_one)
+{
+    for (int differ = 0; differ < 2; differ++) {
+        scene *s = edge_scene();
+        mesh *m = s->objects[0].mesh;
+        double t = 30 * M_PI / 180;
+        for (uint32_t v = 0; v < m->nv; v++) {
+            m->pos[v * 3 + 2] = (float)(tan(t) * m->pos[v * 3]); /* z = x tan 30 */
+            m->nrm[v * 3] = 0, m->nrm[v * 3 + 1] = 0, m->nrm[v * 3 + 2] = 1;
+        }
+        if (differ) m->nrm[0] = 1e-3f; /* one corner's normal slightly off: smooth again */
+        s->sun = (sun_settings){.enabled = 1, .direction = {0, 0, 1}, .irradiance = 1, .color = {1, 1, 1}};
+        s->sky.ambient[0] = s->sky.ambient[1] = s->sky.ambient[2] = 0;
+        render_options ro = {.threads = 1, .verify = 1, .quiet = 1, .spp = 1};
+        err_buf err = {{0}};
+        film *f = render_scene(s, &ro, NULL, &err);
+        CHECK(f != NULL);
+        if (f) CHECK_NEAR(f->rgb[0], differ ? 1.0 : cos(t), 2e-3);
+        film_free(f);
+        scene_free(s);
+    }
+}
+
+TEST_LIST(TEST_CASE(samples_are_povray_method_1), TEST_CASE(sky_pixel_class),
+          TEST_CASE(one_normal_is_the_geometric_one))

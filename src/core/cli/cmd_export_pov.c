@@ -10,6 +10,7 @@
 #include "cli/cli_scene.h"
 #include "cli/cli_status.h"
 #include "cli/commands.h"
+#include "geometry/cutout_outline.h"
 #include "pov/pov_export_run.h"
 
 static const char export_pov_about[] =
@@ -34,6 +35,8 @@ int cmd_export_pov(int argc, char **argv)
     build_options bo = {0};
     uint64_t variant = 0;
     int variant_given = 0;
+    int leaves = LEAF_MODE_MASK;
+    static const char *const leaf_names[] = {"auto", "mask", "outline", NULL};
     const cli_option options[] = {
         CLI_OPT_PATH("-o, --output", "FILE", out, "OUT.pov (default: the scene's name with .pov in the current "
                      "folder); with --species also OUT.inc alone"),
@@ -45,6 +48,8 @@ int cmd_export_pov(int argc, char **argv)
                      "side by side"),
         {.names = "--variant", .type = CLI_WHOLE, .value = "K", .target = &variant, .target_size = sizeof variant,
          .max = 1u << 20, .given = &variant_given, .help = "with --species: variant K only (0 is the youngest)"},
+        CLI_OPT_CHOICE("--leaves", leaves, leaf_names, "alpha-masked leaves as their masks (default) or as opaque "
+                       "outline polygons, as `sylva crosscheck --leaves` draws them; auto as crosscheck's"),
         CLI_OPT_TEXT("--viewpoint", "NAME", viewpoint, CLI_HELP_VIEWPOINT),
         CLI_OPT_TEXT("--season", "S", season, CLI_HELP_SEASON),
         CLI_OPTS_SCENE_COMMON(bo),
@@ -84,6 +89,8 @@ int cmd_export_pov(int argc, char **argv)
     pov_export_request req = {.scene = po, .out = out, .source = scene_path, .species = species_name,
                               .variant = variant_given ? (int32_t)variant : -1, .quiet = bo.quiet,
                               .scene_seconds = cs.seconds};
+    cutout_outline_stats ls;
+    if (!rc && cutout_outline_apply(cs.scene, (leaf_mode)leaves, &ls, &err) < 0) rc = cli_fail("export-pov", &err, ERR_INTERNAL);
     if (!rc && pov_export_run(cs.scene, &req, &err)) rc = cli_fail("export-pov", &err, ERR_INTERNAL);
     if (!rc) printf("%s\n", out);
     cli_scene_close(&cs);

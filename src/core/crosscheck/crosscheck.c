@@ -147,8 +147,8 @@ static int air_free_alpha(const povray_job *fogged, crosscheck_result *r, const 
     job.output = out;
     job.log = log;
     job.no_air = 1;
-    povray_result res;
-    if (povray_render(&job, &res, err)) return -1;
+    povray_result *res = &r->povray_coverage;
+    if (povray_render(&job, res, err)) return -1;
     snprintf(path, sizeof path, "%s/%s", fogged->folder, out);
     image_f32 bare = {0};
     int rc = image_read(path, &bare, err);
@@ -157,7 +157,7 @@ static int air_free_alpha(const povray_job *fogged, crosscheck_result *r, const 
     if (!rc) {
         size_t n = (size_t)img->width * img->height;
         for (size_t i = 0; i < n; i++) img->pixels[i * img->channels + 3] = bare.pixels[i * bare.channels + 3];
-        r->povray.wall_seconds += res.wall_seconds;
+        r->povray.wall_seconds += res->wall_seconds;
     }
     image_free(&bare);
     return rc;

@@ -30,6 +30,9 @@ typedef struct crosscheck_options {
                                      must be an export for the same size, e.g. edited by hand) */
     const char *source;           /* the scene file's path: names the export, goes in reports */
     int quiet;                    /* no progress output */
+    uint64_t outline_cutouts;     /* > 0: the scene's cut-out triangles were drawn as outlines
+                                     (geometry/cutout_outline.h), this many of them, */
+    uint64_t outline_triangles;   /* ... by this many opaque triangles */
     crosscheck_thresholds thresholds;
 } crosscheck_options;
 
@@ -51,6 +54,7 @@ typedef struct crosscheck_result {
                                      POV-Ray's straight rays cannot; sylva rendered it flat here */
     double sylva_bvh_seconds, sylva_render_seconds, export_seconds;
     povray_result povray;
+    povray_result povray_coverage; /* the second render for the alpha alone, when the scene has air */
 
     int pass_coverage, pass_mae, pass_over, pass_classes;
     int pass;                     /* every check holds */

@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 
 #include "util/progress.h"
@@ -63,6 +64,18 @@ static double logged_seconds(const char *log, const char *label)
     return end == open + 1 ? -1.0 : v;
 }
 
+/* ... followed by "  using 2 thread(s) with 0.061 CPU-seconds total" */
+static double logged_cpu_seconds(const char *log, const char *label)
+{
+    const char *p = log ? strstr(log, label) : NULL;
+    const char *with = p ? strstr(p, " with ") : NULL;
+    const char *cpu = with ? strstr(with, "CPU-seconds") : NULL;
+    if (!cpu || cpu - with > 40) return -1.0;
+    char *end;
+    double v = strtod(with + 6, &end);
+    return end == with + 6 ? -1.0 : v;
+}
+
 /* Copies up to n bytes of the log's lines that report errors into out. */
 static void error_lines(const char *log, char *out, size_t n)
 {
@@ -110,7 +123,10 @@ int povray_render(const povray_job *job, povray_result *res, err_buf *err)
     for (char *tok = strtok(aa, " "); tok && argc < 16; tok = strtok(NULL, " ")) argv[argc++] = tok;
     argv[argc++] = "+UA";
     argv[argc++] = "Declare=Sylva_sky_transmit=1";
-    if (job->no_air) argv[argc++] = "Declare=Sylva_no_air=1";
+    if (job->no_air) {
+        argv[argc++] = "Declare=Sylva_no_air=1";
+        argv[argc++] = "Declare=Sylva_coverage_only=1";
+    }
     argv[argc++] = "-D";
     argv[argc++] = "-P";
     if (job->threads) argv[argc++] = threads;
@@ -137,7 +153,8 @@ int povray_render(const povray_job *job, povray_result *res, err_buf *err)
         return err_set(err, "cannot start POV-Ray ('%s' in %s): %s", exe, job->folder, strerror(rc));
     }
     int status = 0;
-    while (waitpid(pid, &status, 0) < 0) {
+    struct rusage usage = {0};
+    while (wait4(pid, &status, 0, &usage) < 0) {
         if (errno != EINTR) return err_set(err, "lost track of POV-Ray (pid %ld): %s", (long)pid, strerror(errno));
     }
     res->wall_seconds = progress_now() - t0;
@@ -145,6 +162,10 @@ int povray_render(const povray_job *job, povray_result *res, err_buf *err)
     res->parse_seconds = logged_seconds(log, "Parse Time:");
     res->bounding_seconds = logged_seconds(log, "Bounding Time:");
     res->trace_seconds = logged_seconds(log, "Trace Time:");
+    res->parse_cpu_seconds = logged_cpu_seconds(log, "Parse Time:");
+    res->trace_cpu_seconds = logged_cpu_seconds(log, "Trace Time:");
+    res->cpu_seconds = (double)usage.ru_utime.tv_sec + 1e-6 * usage.ru_utime.tv_usec +
+                       (double)usage.ru_stime.tv_sec + 1e-6 * usage.ru_stime.tv_usec;
     if (WIFSIGNALED(status)) {
         free(log);
         res->exit_status = 128 + WTERMSIG(status);

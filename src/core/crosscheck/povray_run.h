@@ -22,7 +22,8 @@ typedef struct povray_job {
     const char *executable; /* NULL: $SYLVA_POVRAY, else "povray" */
     uint32_t width, height, spp;
     unsigned threads;       /* render threads; 0: POV-Ray's default (one per core) */
-    int no_air;             /* 1: declare Sylva_no_air=1 (the export's fog left out) */
+    int no_air;             /* 1: declare Sylva_no_air=1 and Sylva_coverage_only=1 (the export's fog
+                               and sun left out: a render for its alpha alone) */
 } povray_job;
 
 typedef struct povray_result {
@@ -30,6 +31,9 @@ typedef struct povray_result {
     double parse_seconds;   /* POV-Ray's own figures from its log; -1 when not found */
     double bounding_seconds;
     double trace_seconds;
+    double parse_cpu_seconds; /* the CPU time POV-Ray's log gives for parsing and tracing; -1 */
+    double trace_cpu_seconds; /* when not found */
+    double cpu_seconds;     /* the process's user and system time */
     int exit_status;        /* POV-Ray's exit status */
 } povray_result;
 

@@ -533,7 +533,9 @@ static void write_sun(pov_file *pf, const scene *s, const light_summary *l, cons
     pov_append_vec3f(col, l->sun_irradiance.x, l->sun_irradiance.y, l->sun_irradiance.z, NULL);
     pov_printf(pf, "// The sun: azimuth %g deg, elevation %g deg, as a point-like (parallel) light beyond the\n"
                    "// scene; its colour is the irradiance on a surface facing it (sun.irradiance x sun.color).\n"
-                   "light_source {\n  %s\n  color rgb %s\n  parallel\n  point_at %s\n}\n\n",
+                   "// Declare Sylva_coverage_only=1 to leave it out when only the alpha channel is wanted\n"
+                   "// (its shadow rays through alpha-masked leaves are most of POV-Ray's work).\n"
+                   "#ifndef (Sylva_coverage_only)\nlight_source {\n  %s\n  color rgb %s\n  parallel\n  point_at %s\n}\n#end\n\n",
                s->sun.azimuth_deg, s->sun.elevation_deg, loc, col, pt);
 }
 

@@ -207,6 +207,8 @@ void accel_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h)
     }
     h->ng = v3_norm(ng);
     h->ns = v3_norm(ns);
+    h->one_normal = !memcmp(m->nrm + k[0] * 3, m->nrm + k[1] * 3, 3 * sizeof(float)) &&
+                    !memcmp(m->nrm + k[0] * 3, m->nrm + k[2] * 3, 3 * sizeof(float));
     if (!(v3_dot(h->ns, h->ns) > 0.5f)) h->ns = h->ng;
     h->t = rh->ray.tfar;
     /* The point from the barycentrics rather than origin + t direction: it lies on the triangle

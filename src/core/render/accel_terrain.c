@@ -3,6 +3,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "geometry/cutout.h"
 #include "geometry/terrain_mesh.h"
@@ -259,6 +260,7 @@ void accel_terrain_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h
     h->ng = v3_norm(v3_cross(v3_sub(p1, p0), v3_sub(p2, p0)));
     h->ns = v3_norm(v3_add(v3_add(v3_scale(vec_of(n[0]), fw), v3_scale(vec_of(n[1]), fu)), v3_scale(vec_of(n[2]), fv)));
     if (!(v3_dot(h->ns, h->ns) > 0.5f)) h->ns = h->ng;
+    h->one_normal = !memcmp(n[0], n[1], sizeof n[0]) && !memcmp(n[0], n[2], sizeof n[0]);
     h->t = rh->ray.tfar;
     h->p = v3_add(v3_add(v3_scale(p0, fw), v3_scale(p1, fu)), v3_scale(p2, fv));
     h->u = fw * uv[0][0] + fu * uv[1][0] + fv * uv[2][0];

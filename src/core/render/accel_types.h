@@ -89,6 +89,8 @@ typedef struct hit_info {
     vec3 p;                    /* world position */
     vec3 ng;                   /* unit geometric normal, world */
     vec3 ns;                   /* unit shading normal, world */
+    int one_normal;            /* 1: the triangle's three normals are one vector (POV-Ray then shades
+                                  it by its geometric normal; the verification mode does alike) */
     float u, v;                /* texture coordinates */
     const material *mat;
     vec3 albedo;               /* material albedo times texture colour */

@@ -57,7 +57,11 @@ static void verify_pixel(const render_ctx *ctx, uint32_t x, uint32_t y, uint32_t
             accel_shade(a, &rh[i], &h);
             dist[i] = v3_len(v3_sub(h.p, ctx->camera.origin));
             vec3 wo = v3(-rh[i].ray.dir_x, -rh[i].ray.dir_y, -rh[i].ray.dir_z);
-            vec3 nrm = v3_dot(h.ns, wo) < 0.0f ? v3_scale(h.ns, -1.0f) : h.ns;
+            /* a triangle whose three normals are one vector POV-Ray shades by its geometric
+             * normal (a strip of the terrain's apron: normals straight up, sloping along the
+             * edge) */
+            vec3 ns = h.one_normal ? h.ng : h.ns;
+            vec3 nrm = v3_dot(ns, wo) < 0.0f ? v3_scale(ns, -1.0f) : ns;
             vec3 ng = v3_dot(h.ng, wo) < 0.0f ? v3_scale(h.ng, -1.0f) : h.ng;
             albedo[i] = h.albedo;
             float c = v3_dot(nrm, l->sun_dir);

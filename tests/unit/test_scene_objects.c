@@ -348,8 +348,9 @@ TEST(pov_export_declares_a_model_once)
     size_t n = fp ? fread(inc, 1, sizeof inc - 1, fp) : 0;
     inc[n] = 0;
     if (fp) fclose(fp);
-    CHECK_INT(count(inc, "= mesh2"), 1);
-    CHECK_INT(count(inc, "#declare D0_Tet_stl = mesh2"), 1);
+    /* one declaration: a mesh2, or a union of its smooth and its flat triangles' mesh2 */
+    CHECK_INT(count(inc, "#declare D0_Tet_stl = "), 1);
+    CHECK(count(inc, "mesh2 {") >= 1 && count(inc, "mesh2 {") <= 2);
     CHECK_INT(count(inc, "= object { D0_Tet_stl matrix <"), 20);
     scene_free(s);
 }

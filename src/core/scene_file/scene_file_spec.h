@@ -196,9 +196,12 @@ typedef struct photo_settings {
 } photo_settings;
 
 /* What a study renders from each viewpoint (`sylva study`, docs/study.md): the view without the
- * development, with it, and the development's outline over the view without it. */
-typedef enum study_product { STUDY_EXISTING = 0, STUDY_PROPOSED = 1, STUDY_WIRELINE = 2 } study_product;
-#define STUDY_PRODUCTS 3u
+ * development, with it, the development's outline over the view without it, and the sheet that
+ * sets the three out with the viewpoint's facts and a location map (sheet/sheet.h). */
+typedef enum study_product {
+    STUDY_EXISTING = 0, STUDY_PROPOSED = 1, STUDY_WIRELINE = 2, STUDY_SHEET = 3
+} study_product;
+#define STUDY_PRODUCTS 4u
 /* The frames a study renders each product in: a 50 mm lens on a full-frame sensor, a 53.5 degree
  * planar view and a 90 degree cylindrical panorama (study/study_frames.h). */
 typedef enum study_frame { STUDY_SINGLE = 0, STUDY_PLANAR_53 = 1, STUDY_CYLINDRICAL_90 = 2 } study_frame;

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sheet/page_hillshade.h"
 #include "ztv/ztv_summary.h"
 
 struct ztv_map {
@@ -129,31 +130,10 @@ static void hatch(canvas *c, int x0, int y0, int x1, int y1)
 
 /* --- hillshade -------------------------------------------------------------------------------- */
 
-/* Grey of map pixel (u, v): the cosine between the ground's normal and a sun in the north-west
- * 45 degrees up, from central differences on the reduced grid (one-sided at edges and beside
- * cells without ground). */
+/* Grey of map pixel (u, v): the page's hillshade of the reduced grid (sheet/page_hillshade.h). */
 static uint8_t hillshade(const ztv_map *m, uint32_t u, uint32_t v)
 {
-    const float *z = m->ground;
-    size_t k = (size_t)v * m->w + u;
-    double spacing = m->info->grid.cell * m->step;
-    double zc = z[k];
-    double zw = u > 0 && isfinite(z[k - 1]) ? z[k - 1] : zc;
-    double ze = u + 1 < m->w && isfinite(z[k + 1]) ? z[k + 1] : zc;
-    double zn = v > 0 && isfinite(z[k - m->w]) ? z[k - m->w] : zc;
-    double zs = v + 1 < m->h && isfinite(z[k + m->w]) ? z[k + m->w] : zc;
-    double nw = (u > 0 && isfinite(z[k - 1])) + (u + 1 < m->w && isfinite(z[k + 1]));
-    double nn = (v > 0 && isfinite(z[k - m->w])) + (v + 1 < m->h && isfinite(z[k + m->w]));
-    double dzdx = nw > 0 ? (ze - zw) / (nw * spacing) : 0; /* east */
-    double dzdy = nn > 0 ? (zn - zs) / (nn * spacing) : 0; /* north */
-    double len = sqrt(dzdx * dzdx + dzdy * dzdy + 1);
-    const double s = sqrt(0.5), sun[3] = {-0.5, 0.5, s}; /* azimuth 315, altitude 45 */
-    double lit = (-dzdx * sun[0] - dzdy * sun[1] + sun[2]) / len;
-    if (lit < 0) lit = 0;
-    /* level ground (lit = sqrt 1/2) comes out ZTV_MAP_FLAT_GREY; fully lit 255 */
-    double grey = ZTV_MAP_FLAT_GREY + (lit - s) * (255 - ZTV_MAP_FLAT_GREY) / (1 - s);
-    if (lit < s) grey = 70 + lit / s * (ZTV_MAP_FLAT_GREY - 70);
-    return (uint8_t)lround(grey);
+    return page_hillshade(m->ground, m->w, m->h, m->info->grid.cell * m->step, u, v);
 }
 
 /* --- what a map shows ------------------------------------------------------------------------- */

@@ -12,12 +12,13 @@
 #include <stdint.h>
 
 #include "io/raster_canvas.h"
+#include "sheet/page_hillshade.h"
 #include "util/err.h"
 #include "ztv/ztv_raster.h"
 
 #define ZTV_MAP_MAX_PIXELS 1600u /* map pixels on the grid's long side, at most */
 #define ZTV_MAP_MIN_PIXELS 1000u /* a smaller grid is enlarged to this on its long side */
-#define ZTV_MAP_FLAT_GREY 207    /* the hillshade of level ground */
+#define ZTV_MAP_FLAT_GREY HILLSHADE_FLAT_GREY /* the hillshade of level ground */
 #define ZTV_MAP_OPACITY 0.65     /* of the colour bands over the hillshade */
 
 typedef struct ztv_map ztv_map;

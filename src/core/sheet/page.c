@@ -63,21 +63,25 @@ static int write_png(const page_size *size, page_draw_fn draw, void *ctx, FILE *
     return rc;
 }
 
+int page_write_streams(const page_size *size, page_draw_fn draw, void *ctx, FILE *pdf, FILE *png, err_buf *err)
+{
+    if (pdf && write_pdf(size, draw, ctx, pdf, err)) return -1;
+    return png ? write_png(size, draw, ctx, png, err) : 0;
+}
+
 int page_write(const page_size *size, page_draw_fn draw, void *ctx, const char *pdf_path, const char *png_path,
                err_buf *err)
 {
     atomic_file af[2] = {{.fd = -1, .slot = -1}, {.fd = -1, .slot = -1}};
+    FILE *f[2] = {NULL, NULL};
     int n = 0, rc = 0;
-    if (pdf_path) {
-        FILE *f = atomic_file_open_stream(&af[n], pdf_path, err);
-        rc = !f || write_pdf(size, draw, ctx, f, err);
-        n++;
+    const char *paths[2] = {pdf_path, png_path};
+    for (int k = 0; k < 2 && !rc; k++) {
+        if (!paths[k]) continue;
+        if (!(f[k] = atomic_file_open_stream(&af[n], paths[k], err))) rc = -1;
+        else n++;
     }
-    if (!rc && png_path) {
-        FILE *f = atomic_file_open_stream(&af[n], png_path, err);
-        rc = !f || write_png(size, draw, ctx, f, err);
-        n++;
-    }
+    if (!rc) rc = page_write_streams(size, draw, ctx, f[0], f[1], err);
     if (rc) {
         for (int k = 0; k < n; k++) atomic_file_abort(&af[k]);
         return -1;

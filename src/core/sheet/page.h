@@ -9,6 +9,7 @@
 #define SYLVA_PAGE_H
 
 #include <cairo.h>
+#include <stdio.h>
 
 #include "util/err.h"
 
@@ -23,6 +24,10 @@ typedef int (*page_draw_fn)(cairo_t *cr, const page_size *size, void *ctx, err_b
 
 /* The pixels of the page's PNG along a side of mm millimetres at dpi (rounded, at least 1). */
 int page_pixels(double mm, double dpi);
+
+/* Draws the page into the open streams pdf and png (either may be NULL); the caller owns and
+ * closes them. Returns 0, or -1 with err set. */
+int page_write_streams(const page_size *size, page_draw_fn draw, void *ctx, FILE *pdf, FILE *png, err_buf *err);
 
 /* Draws the page into pdf_path and png_path (either may be NULL). Returns 0, or -1 with err set
  * and nothing written. */

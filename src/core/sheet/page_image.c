@@ -43,28 +43,51 @@ static void resample_row(const page_picture *p, int dw, int dh, int y, uint32_t 
     }
 }
 
+cairo_surface_t *page_surface_rgb(const uint8_t *rgb, int w, int h)
+{
+    cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h); /* owned by the caller */
+    if (cairo_surface_status(s)) {
+        cairo_surface_destroy(s);
+        return NULL;
+    }
+    cairo_surface_flush(s);
+    unsigned char *data = cairo_image_surface_get_data(s);
+    int stride = cairo_image_surface_get_stride(s);
+    for (int v = 0; rgb && v < h; v++) {
+        uint32_t *row = (uint32_t *)(void *)(data + (size_t)v * stride);
+        for (int u = 0; u < w; u++) {
+            const uint8_t *p = rgb + 3 * ((size_t)v * w + u);
+            row[u] = 0xff000000u | (uint32_t)p[0] << 16 | (uint32_t)p[1] << 8 | p[2];
+        }
+    }
+    cairo_surface_mark_dirty(s);
+    return s;
+}
+
+void page_paint(cairo_t *cr, cairo_surface_t *s, double x, double y, double w, double h, cairo_filter_t filter)
+{
+    cairo_save(cr);
+    cairo_rectangle(cr, x, y, w, h);
+    cairo_clip(cr);
+    cairo_translate(cr, x, y);
+    cairo_scale(cr, w / cairo_image_surface_get_width(s), h / cairo_image_surface_get_height(s));
+    cairo_set_source_surface(cr, s, 0, 0);
+    cairo_pattern_set_filter(cairo_get_source(cr), filter);
+    cairo_paint(cr);
+    cairo_restore(cr);
+}
+
 int page_image(cairo_t *cr, const page_picture *p, double x, double y, double w, double h, double dpi, err_buf *err)
 {
     int dw = page_pixels(w, dpi), dh = page_pixels(h, dpi);
-    cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, dw, dh); /* owned here */
-    if (cairo_surface_status(s)) {
-        cairo_surface_destroy(s);
-        return err_nomem(err, "out of memory for a %dx%d picture on the page", dw, dh);
-    }
+    cairo_surface_t *s = page_surface_rgb(NULL, dw, dh); /* owned here */
+    if (!s) return err_nomem(err, "out of memory for a %dx%d picture on the page", dw, dh);
     cairo_surface_flush(s);
     unsigned char *data = cairo_image_surface_get_data(s);
     int stride = cairo_image_surface_get_stride(s);
     for (int r = 0; r < dh; r++) resample_row(p, dw, dh, r, (uint32_t *)(void *)(data + (size_t)r * stride));
     cairo_surface_mark_dirty(s);
-    cairo_save(cr);
-    cairo_rectangle(cr, x, y, w, h);
-    cairo_clip(cr);
-    cairo_translate(cr, x, y);
-    cairo_scale(cr, w / dw, h / dh);
-    cairo_set_source_surface(cr, s, 0, 0);
-    cairo_pattern_set_filter(cairo_get_source(cr), CAIRO_FILTER_GOOD);
-    cairo_paint(cr);
-    cairo_restore(cr);
+    page_paint(cr, s, x, y, w, h, CAIRO_FILTER_GOOD);
     cairo_surface_destroy(s);
     return 0;
 }

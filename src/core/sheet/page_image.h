@@ -19,4 +19,12 @@ typedef struct page_picture {
  * set (out of memory). */
 int page_image(cairo_t *cr, const page_picture *p, double x, double y, double w, double h, double dpi, err_buf *err);
 
+/* A cairo image of w x h pixels from 8-bit sRGB (3 a pixel, row 0 at the top): owned by the
+ * caller (cairo_surface_destroy); NULL when out of memory. */
+cairo_surface_t *page_surface_rgb(const uint8_t *rgb, int w, int h);
+
+/* Paints image s stretched over the rectangle (x, y, w, h) millimetres with filter (NEAREST:
+ * each pixel a sharp block). */
+void page_paint(cairo_t *cr, cairo_surface_t *s, double x, double y, double w, double h, cairo_filter_t filter);
+
 #endif

@@ -7,6 +7,7 @@
 
 #include "sheet/page.h"
 #include "sheet/page_hillshade.h"
+#include "sheet/page_image.h"
 #include "sheet/page_marks.h"
 #include "sheet/page_text.h"
 
@@ -42,11 +43,10 @@ static int draw_ground(cairo_t *cr, const scene *s, const map_window *m, double 
                        err_buf *err)
 {
     int pw = page_pixels(w, dpi), ph = page_pixels(h, dpi);
-    float *z = malloc((size_t)pw * ph * sizeof *z); /* owned here */
-    cairo_surface_t *img = cairo_image_surface_create(CAIRO_FORMAT_RGB24, pw, ph); /* owned here */
-    if (!z || cairo_surface_status(img)) {
-        free(z);
-        cairo_surface_destroy(img);
+    float *z = malloc((size_t)pw * ph * sizeof *z);       /* owned here */
+    uint8_t *rgb = malloc((size_t)pw * ph * 3);          /* owned here */
+    if (!z || !rgb) {
+        free(z), free(rgb);
         return err_nomem(err, "out of memory for the location map");
     }
     double step = (m->x1 - m->x0) / pw;
@@ -56,27 +56,17 @@ static int draw_ground(cairo_t *cr, const scene *s, const map_window *m, double 
             int off = scene_surveyed_height(s, m->x0 + (u + 0.5) * step, m->y1 - (v + 0.5) * step, &gz);
             z[(size_t)v * pw + u] = off ? NAN : (float)gz;
         }
-    cairo_surface_flush(img);
-    unsigned char *data = cairo_image_surface_get_data(img);
-    int stride = cairo_image_surface_get_stride(img);
-    for (int v = 0; v < ph; v++) {
-        uint32_t *row = (uint32_t *)(void *)(data + (size_t)v * stride);
-        for (int u = 0; u < pw; u++) {
-            uint32_t g = isfinite(z[(size_t)v * pw + u]) ? page_hillshade(z, (uint32_t)pw, (uint32_t)ph, step, (uint32_t)u,
-                                                                          (uint32_t)v)
-                                                         : 0;
-            row[u] = g ? 0xff000000u | g << 16 | g << 8 | g : 0xff3c465au;
-        }
+    static const uint8_t no_ground[3] = {60, 70, 90};
+    for (size_t k = 0; k < (size_t)pw * ph; k++) {
+        uint8_t g = isfinite(z[k]) ? page_hillshade(z, (uint32_t)pw, (uint32_t)ph, step, (uint32_t)(k % pw),
+                                                    (uint32_t)(k / pw)) : 0;
+        for (int c = 0; c < 3; c++) rgb[3 * k + c] = isfinite(z[k]) ? g : no_ground[c];
     }
-    cairo_surface_mark_dirty(img);
-    cairo_save(cr);
-    cairo_translate(cr, m->px, m->py);
-    cairo_scale(cr, w / pw, h / ph);
-    cairo_set_source_surface(cr, img, 0, 0);
-    cairo_paint(cr);
-    cairo_restore(cr);
+    cairo_surface_t *img = page_surface_rgb(rgb, pw, ph); /* owned here */
+    free(z), free(rgb);
+    if (!img) return err_nomem(err, "out of memory for the location map");
+    page_paint(cr, img, m->px, m->py, w, h, CAIRO_FILTER_GOOD);
     cairo_surface_destroy(img);
-    free(z);
     return 0;
 }
 

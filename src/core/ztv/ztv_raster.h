@@ -91,6 +91,15 @@ typedef struct ztv_info {
                                             * (the centre of its targets) */
     const double (*target_xy)[2];          /* n_targets: local horizontal positions */
     const uint32_t *target_development;    /* n_targets: development index */
+    /* for the maps' title block and marks (ztv_map.h); any may be NULL or 0 */
+    const char *project;                   /* the scene file's name */
+    const char *dtm;                       /* the DTM's file name */
+    const char *date;                      /* the day the map is made, "YYYY-MM-DD" */
+    const double *target_heights;          /* metres above the ground, n_target_heights */
+    uint32_t n_target_heights;
+    uint32_t n_viewpoints;                 /* the scene's viewpoints, numbered from 1 in order */
+    const char *const *viewpoint_names;
+    const double (*viewpoint_xy)[2];       /* local horizontal positions */
 } ztv_info;
 
 #endif

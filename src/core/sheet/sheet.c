@@ -15,6 +15,8 @@
 #define CAPTION_H 4.5
 #define FOOT_H 9.0
 #define RIGHT_MIN 140.0 /* the right column, for the map and the table */
+#define WIDE_ASPECT 0.45 /* a frame less high than this for its width is laid out as a panorama */
+#define SIDE_WIDE 128.0  /* a panorama's existing view and wireline, wide */
 
 page_size sheet_page_size(double print_width_mm, double dpi)
 {
@@ -32,6 +34,14 @@ static sheet_panels panels_of(double aspect)
     double main = fmin(left, (avail_h + 0.5 * GAP * aspect) / (1.5 * aspect));
     sheet_panels p = {.main_mm = main, .side_mm = 0.5 * (main - GAP)};
     p.height_main_mm = main * aspect, p.height_side_mm = p.side_mm * aspect;
+    return p;
+}
+
+/* A panorama's panels: the proposed view across the page, the two others SIDE_WIDE wide. */
+static sheet_panels wide_panels_of(double aspect)
+{
+    sheet_panels p = {.main_mm = SHEET_A3_WIDTH - 2 * MARGIN, .side_mm = SIDE_WIDE};
+    p.height_main_mm = p.main_mm * aspect, p.height_side_mm = p.side_mm * aspect;
     return p;
 }
 
@@ -111,6 +121,45 @@ static void draw_foot(cairo_t *cr, const sheet *sh)
     page_text(cr, MARGIN, SHEET_A3_HEIGHT - MARGIN - FOOT_H + 2, SHEET_A3_WIDTH - 2 * MARGIN, &f, note, 0);
 }
 
+/* A frame taller than a panorama: the proposed view large at the left, the existing view and the
+ * wireline under it, the map and the table in the right column. */
+static int draw_upright(cairo_t *cr, const sheet *sh, const sheet_panels *p, double scale, double dpi, err_buf *err)
+{
+    double x = MARGIN, y = MARGIN + TITLE_H;
+    if (draw_panel(cr, &sh->proposed, "Proposed view", x, y, p->main_mm, p->height_main_mm, dpi, err)) return -1;
+    y += CAPTION_H + p->height_main_mm + GAP;
+    if (draw_panel(cr, &sh->existing, "Existing view", x, y, p->side_mm, p->height_side_mm, dpi, err) ||
+        draw_panel(cr, &sh->wireline, "Wireline", x + p->side_mm + GAP, y, p->side_mm, p->height_side_mm, dpi, err))
+        return -1;
+    double rx = MARGIN + p->main_mm + GAP, rw = SHEET_A3_WIDTH - MARGIN - rx, ry = MARGIN + TITLE_H;
+    double map_h = fmin(rw * 0.72, 0.42 * (SHEET_A3_HEIGHT - ry));
+    page_font cap = {.size_pt = 8, .bold = 1};
+    page_text(cr, rx, ry, 0, &cap, "Location", 0);
+    if (sheet_map_draw(cr, sh->s, sh->sf, &sh->view, sh->eye, rx, ry + CAPTION_H, rw, map_h, dpi, err)) return -1;
+    draw_table(cr, sh, p, scale, rx, ry + CAPTION_H + map_h + 3, rw);
+    return 0;
+}
+
+/* A panorama: the proposed view across the page, under it the existing view over the wireline,
+ * the map and the table side by side. */
+static int draw_wide(cairo_t *cr, const sheet *sh, const sheet_panels *p, double scale, double dpi, err_buf *err)
+{
+    double x = MARGIN, y = MARGIN + TITLE_H;
+    if (draw_panel(cr, &sh->proposed, "Proposed view", x, y, p->main_mm, p->height_main_mm, dpi, err)) return -1;
+    y += CAPTION_H + p->height_main_mm + GAP;
+    if (draw_panel(cr, &sh->existing, "Existing view", x, y, p->side_mm, p->height_side_mm, dpi, err) ||
+        draw_panel(cr, &sh->wireline, "Wireline", x, y + CAPTION_H + p->height_side_mm + GAP, p->side_mm,
+                   p->height_side_mm, dpi, err))
+        return -1;
+    double mx = x + p->side_mm + GAP, mh = SHEET_A3_HEIGHT - MARGIN - FOOT_H - y - CAPTION_H, mw = fmin(mh * 1.1, 110);
+    page_font cap = {.size_pt = 8, .bold = 1};
+    page_text(cr, mx, y, 0, &cap, "Location", 0);
+    if (sheet_map_draw(cr, sh->s, sh->sf, &sh->view, sh->eye, mx, y + CAPTION_H, mw, mh, dpi, err)) return -1;
+    double tx = mx + mw + GAP;
+    draw_table(cr, sh, p, scale, tx, y, SHEET_A3_WIDTH - MARGIN - tx);
+    return 0;
+}
+
 static int draw_sheet(cairo_t *cr, const page_size *size, void *ctx, err_buf *err)
 {
     const draw_ctx *d = ctx;
@@ -120,20 +169,10 @@ static int draw_sheet(cairo_t *cr, const page_size *size, void *ctx, err_buf *er
     cairo_paint(cr);
     double dpi = size->dpi * d->scale; /* pixels per laid-out inch */
     double aspect = (double)sh->view.height / sh->view.width;
-    sheet_panels p = panels_of(aspect);
+    int wide = aspect < WIDE_ASPECT;
+    sheet_panels p = wide ? wide_panels_of(aspect) : panels_of(aspect);
     draw_title(cr, sh);
-    double x = MARGIN, y = MARGIN + TITLE_H;
-    if (draw_panel(cr, &sh->proposed, "Proposed view", x, y, p.main_mm, p.height_main_mm, dpi, err)) return -1;
-    y += CAPTION_H + p.height_main_mm + GAP;
-    if (draw_panel(cr, &sh->existing, "Existing view", x, y, p.side_mm, p.height_side_mm, dpi, err) ||
-        draw_panel(cr, &sh->wireline, "Wireline", x + p.side_mm + GAP, y, p.side_mm, p.height_side_mm, dpi, err))
-        return -1;
-    double rx = MARGIN + p.main_mm + GAP, rw = SHEET_A3_WIDTH - MARGIN - rx, ry = MARGIN + TITLE_H;
-    double map_h = fmin(rw * 0.72, 0.42 * (SHEET_A3_HEIGHT - ry));
-    page_font cap = {.size_pt = 8, .bold = 1};
-    page_text(cr, rx, ry, 0, &cap, "Location", 0);
-    if (sheet_map_draw(cr, sh->s, sh->sf, &sh->view, sh->eye, rx, ry + CAPTION_H, rw, map_h, dpi, err)) return -1;
-    draw_table(cr, sh, &p, d->scale, rx, ry + CAPTION_H + map_h + 3, rw);
+    if (wide ? draw_wide(cr, sh, &p, d->scale, dpi, err) : draw_upright(cr, sh, &p, d->scale, dpi, err)) return -1;
     draw_foot(cr, sh);
     return 0;
 }

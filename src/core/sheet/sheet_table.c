@@ -103,9 +103,10 @@ static void fit_row(table *t, const sheet *sh)
         "NOT whole: it spans %s; the frame holds \u00b1%.1f\u00b0 \u00d7 \u00b1%.1f\u00b0. The view is the viewpoint's, "
         "pitched %.1f\u00b0 %s, not tilted further; %s%s", span, 0.5 * v->hfov_deg, 0.5 * v->vfov_deg,
         fabs(v->pitch_deg), v->pitch_deg >= 0 ? "up" : "down",
-        sh->wider_frames ? "the study's wider frames show more: " : "render the study's cylindrical_90 frame for a "
-                                                                    "panorama",
-        sh->wider_frames ? sh->wider_frames : "");
+        v->cylindrical      ? "the panorama is the study's widest frame"
+        : sh->wider_frames ? "the study's other frames may show more: "
+                           : "render the study's cylindrical_90 frame for a panorama",
+        !v->cylindrical && sh->wider_frames ? sh->wider_frames : "");
 }
 
 static void check_rows(table *t, const sheet *sh)

@@ -18,7 +18,4 @@
  * terrain section stating the distance in km. Nothing is checked without a site or terrain. */
 int terrain_near_site(const scene *s, const scene_file *sf, err_buf *err);
 
-/* The DTM the terrain's plugin block names (its `dtm` path, resolved), or NULL. */
-const char *terrain_dtm_path(const terrain_spec *t);
-
 #endif

@@ -49,6 +49,9 @@ int scene_file_read_points(scene_file *sf, const char *path, const char *layer, 
  * `development`, else of the ztv: section's targets. 0, or -1 when the scene names neither. */
 int scene_file_development_place(const scene_file *sf, double at[2]);
 
+/* The DTM the terrain's plugin block names (its `dtm` path, resolved), or NULL. */
+const char *scene_file_dtm_path(const scene_file *sf);
+
 /* Index of a material or species by name, or -1 (a hash lookup). */
 int scene_file_material_index(const scene_file *sf, const char *name);
 int scene_file_species_index(const scene_file *sf, const char *name);

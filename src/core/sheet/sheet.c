@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "sheet/page_text.h"
+#include "page/page_text.h"
 #include "sheet/sheet_map.h"
 #include "sheet/sheet_table.h"
 

@@ -18,26 +18,9 @@
 #ifndef SYLVA_SHEET_H
 #define SYLVA_SHEET_H
 
-#include "scene/scene.h"
-#include "scene_file/scene_file.h"
-#include "sheet/page.h"
-#include "sheet/page_image.h"
-#include "sheet/sheet_view.h"
+#include "page/page.h"
+#include "sheet/sheet_content.h"
 #include "util/err.h"
-
-#define SHEET_A3_WIDTH 420.0
-#define SHEET_A3_HEIGHT 297.0
-
-typedef struct sheet {
-    const scene *s;
-    const scene_file *sf;
-    sheet_view view;
-    double eye[2];                          /* the viewpoint, local metres */
-    page_picture existing, proposed, wireline; /* rgb NULL: not on the sheet */
-    uint32_t spp;                           /* samples per pixel rendered with */
-    const char *wider_frames;               /* the study's other frames ("cylindrical_90"), or NULL */
-    page_size page;
-} sheet;
 
 /* The page of a sheet print_width_mm wide (0: A3 landscape) at dpi. */
 page_size sheet_page_size(double print_width_mm, double dpi);

@@ -5,11 +5,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "sheet/page.h"
-#include "sheet/page_hillshade.h"
-#include "sheet/page_image.h"
-#include "sheet/page_marks.h"
-#include "sheet/page_text.h"
+#include "page/page.h"
+#include "page/page_hillshade.h"
+#include "page/page_image.h"
+#include "page/page_marks.h"
+#include "page/page_text.h"
 
 #define DEG (M_PI / 180.0)
 

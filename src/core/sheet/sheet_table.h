@@ -9,7 +9,7 @@
 
 #include <stddef.h>
 
-#include "sheet/sheet.h"
+#include "sheet/sheet_content.h"
 
 #define SHEET_ROWS_MAX 32
 #define SHEET_TEXT_MAX 320

@@ -21,7 +21,7 @@
 #include "render/render.h"
 #include "scene/scene.h"
 #include "scene_file/scene_file.h"
-#include "sheet/page.h"
+#include "page/page.h"
 #include "study/study_manifest.h"
 #include "util/err.h"
 #include "util/phase_times.h"

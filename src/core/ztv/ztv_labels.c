@@ -5,7 +5,6 @@
 #include <string.h>
 #include <time.h>
 
-#include "scene_build/terrain_site.h"
 
 static void today(char out[16])
 {
@@ -39,7 +38,7 @@ int ztv_labels_fill(ztv_labels *l, const scene_file *sf, ztv_info *info, err_buf
         l->xy[k][0] = v->camera.position[0], l->xy[k][1] = v->camera.position[1];
     }
     info->project = base_name(sf->path);
-    info->dtm = base_name(terrain_dtm_path(&sf->terrain));
+    info->dtm = base_name(scene_file_dtm_path(sf));
     info->date = l->date;
     info->target_heights = sf->ztv.n_targets ? NULL : sf->ztv.target_heights;
     info->n_target_heights = sf->ztv.n_targets ? 0 : sf->ztv.n_target_heights;

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "sheet/page_hillshade.h"
+#include "page/page_hillshade.h"
 #include "ztv/ztv_summary.h"
 
 
@@ -113,7 +113,7 @@ static void blend(const uint8_t under[3], const uint8_t over[3], double opacity,
 
 /* --- hillshade -------------------------------------------------------------------------------- */
 
-/* Grey of map pixel (u, v): the page's hillshade of the reduced grid (sheet/page_hillshade.h). */
+/* Grey of map pixel (u, v): the page's hillshade of the reduced grid (page/page.hillshade.h). */
 static uint8_t hillshade(const ztv_map *m, uint32_t u, uint32_t v)
 {
     return page_hillshade(m->ground, m->w, m->h, m->info->grid.cell * m->step, u, v);

@@ -1,7 +1,7 @@
 /* ztv_map.h — the visibility maps as pages for a reader (docs/ztv.md, "Maps"): a reduced copy of
  * the grid kept as the blocks of rows arrive (at most ZTV_MAP_MAX_PIXELS on the long side, the
  * cell nearest each pixel's centre), drawn at the end on an A3 landscape page (ztv_map_page.c,
- * with sheet/page.h: a vector PDF and a PNG at ZTV_MAP_DPI) as a hillshade of the terrain (sun from
+ * with page/page.h: a vector PDF and a PNG at ZTV_MAP_DPI) as a hillshade of the terrain (sun from
  * the north-west, 45 degrees up) under half-transparent colour bands, with the viewpoints plotted
  * and numbered, distance rings round the development, the radius, frame coordinates along the
  * edges, each development's outline and name at its structures, "no terrain" past the DTM's edge,
@@ -16,7 +16,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "sheet/page_hillshade.h"
+#include "page/page_hillshade.h"
 #include "util/err.h"
 #include "ztv/ztv_raster.h"
 

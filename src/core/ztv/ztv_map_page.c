@@ -1,14 +1,15 @@
 /* ztv_map_page.c — a visibility map's page: the map picture, its marks, legend and title block,
- * drawn with the sheets' page layer (sheet/page.h) in millimetres on A3 landscape (ztv_map.h). */
+ * drawn with the sheets' page layer (page/page.h) in millimetres on A3 landscape (ztv_map.h). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "sheet/page.h"
-#include "sheet/page_image.h"
-#include "sheet/page_marks.h"
-#include "sheet/page_text.h"
+#include "page/page.h"
+#include "page/page_image.h"
+#include "page/page_marks.h"
+#include "page/page_text.h"
+#include "ztv/ztv_map.h"
 #include "ztv/ztv_map_style.h"
 #include "ztv/ztv_summary.h"
 

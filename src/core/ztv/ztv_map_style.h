@@ -8,7 +8,7 @@
 #include <stdio.h>
 
 #include "util/err.h"
-#include "ztv/ztv_map.h"
+#include "ztv/ztv_raster.h"
 
 struct ztv_map {
     const ztv_info *info;               /* borrowed */
@@ -37,17 +37,17 @@ typedef struct map_style {
     ztv_mode mode;
     /* The colour of map pixel k: 0 leaves the hillshade, 1 lays rgb over it, 2 paints rgb, 3
      * marks it as not computed. */
-    int (*colour)(const ztv_map *m, const struct map_style *st, size_t k, uint8_t rgb[3]);
+    int (*colour)(const struct ztv_map *m, const struct map_style *st, size_t k, uint8_t rgb[3]);
 } map_style;
 
 /* The colour of every map pixel as st shows it (w * h RGB triples into rgb). */
-void ztv_map_colours(const ztv_map *m, const map_style *st, uint8_t *rgb);
+void ztv_map_colours(const struct ztv_map *m, const map_style *st, uint8_t *rgb);
 
 /* The legend swatch's colour of item it (an overlay over level ground). */
 void ztv_map_swatch(const legend_item *it, uint8_t rgb[3]);
 
 /* Draws m as st shows it on a page (ztv_map.h) into png and pdf (open streams; either may be
  * NULL). Returns 0, or -1 with err set. */
-int ztv_map_page(const ztv_map *m, const map_style *st, FILE *png, FILE *pdf, err_buf *err);
+int ztv_map_page(const struct ztv_map *m, const map_style *st, FILE *png, FILE *pdf, err_buf *err);
 
 #endif

@@ -1,5 +1,5 @@
 /* page.c — one drawing written as a PDF page and as a PNG (page.h). */
-#include "sheet/page.h"
+#include "page/page.h"
 
 #include <cairo-pdf.h>
 #include <math.h>

@@ -1,5 +1,5 @@
 /* page_text.c — pango layouts on a cairo page in millimetres (page_text.h). */
-#include "sheet/page_text.h"
+#include "page/page_text.h"
 
 #include <pango/pangocairo.h>
 

@@ -1,5 +1,5 @@
 /* page_hillshade.c — a hillshade's grey from a grid of heights (page_hillshade.h). */
-#include "sheet/page_hillshade.h"
+#include "page/page_hillshade.h"
 
 #include <math.h>
 #include <stddef.h>

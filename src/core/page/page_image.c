@@ -1,10 +1,10 @@
 /* page_image.c — a picture resampled to its print pixels and painted (page_image.h). */
-#include "sheet/page_image.h"
+#include "page/page_image.h"
 
 #include <math.h>
 #include <stdlib.h>
 
-#include "sheet/page.h"
+#include "page/page.h"
 
 /* The weights of source pixels [*first, *first + n) under destination pixel d of dn along a side of
  * sn source pixels: the overlap of [d, d+1) * sn / dn with each. */

@@ -1,10 +1,10 @@
 /* page_marks.c — north arrow and scale bar (page_marks.h). */
-#include "sheet/page_marks.h"
+#include "page/page_marks.h"
 
 #include <math.h>
 #include <stdio.h>
 
-#include "sheet/page_text.h"
+#include "page/page_text.h"
 
 void page_north_arrow(cairo_t *cr, double x, double y, double size)
 {

@@ -17,6 +17,9 @@ packages=(
   libassimp-dev          # 3-D model import (OBJ, glTF, PLY, STL, FBX, COLLADA, 3DS)
   libgsl-dev             # photomontage camera match: nonlinear least squares (multifit_nlinear)
   libimage-exiftool-perl # exiftool: the EXIF tests compare what sylva reads with what it reports
+  libcairo2-dev libpango1.0-dev  # study sheets and ZTV maps: vector PDF and PNG, real fonts
+  fonts-dejavu-core      # the sheets' and maps' typeface
+  poppler-utils          # pdfinfo, pdfimages, pdftotext: the sheet tests read the PDFs back
   libopenmpi-dev openmpi-bin  # MPI: render and ztv split between ranks (docs/mpi.md); optional
   chromium fonts-dejavu-core  # the study's index.html opened headless by its test (cli.study_index)
 )

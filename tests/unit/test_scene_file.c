@@ -380,7 +380,8 @@ TEST(host_schemas_are_well_formed)
     CHECK(!strcmp(host_shape_names[SHAPE_SPHERE], "sphere"));
     CHECK(!strcmp(host_material_types[SYLVA_BSDF_LEAF - 1], "leaf"));
     CHECK(!strcmp(host_model_up_axes[1], "y") && !strcmp(host_model_up_axes[2], "z")); /* MODEL_UP_Y, _Z */
-    CHECK(!strcmp(host_study_products[STUDY_WIRELINE], "wireline") && !strcmp(host_study_products[STUDY_ZTV], "ztv") && !host_study_products[STUDY_ZTV + 1]);
+    CHECK(!strcmp(host_study_products[STUDY_WIRELINE], "wireline") && !strcmp(host_study_products[STUDY_SHEET], "sheet") &&
+          !strcmp(host_study_products[STUDY_ZTV], "ztv") && !host_study_products[STUDY_ZTV + 1]);
     CHECK(!strcmp(host_study_frames[STUDY_CYLINDRICAL_90], "cylindrical_90") && !host_study_frames[STUDY_FRAMES]);
 }
 

@@ -21,6 +21,7 @@
 #include "harness.h"
 #include "io/image_io.h"
 #include "work_dir.h"
+#include "ztv/ztv_map.h"
 #include "ztv/ztv_output.h"
 #include "ztv/ztv_summary.h"
 
@@ -321,50 +322,160 @@ static int has_colour(const image_f32 *img, uint32_t x_from, const int want[3])
     return 0;
 }
 
+/* The page pixel of local point (gx, gy) on a map of info (ztv_map.h's layout, ZTV_MAP_DPI). */
+static void page_px(const ztv_info *info, double gx, double gy, uint32_t *x, uint32_t *y)
+{
+    ztv_map_layout l = ztv_map_layout_of(info);
+    double k = ZTV_MAP_DPI / 25.4;
+    *x = (uint32_t)floor((l.x + (gx - l.west) * l.mm_per_m) * k);
+    *y = (uint32_t)floor((l.y + (l.north - gy) * l.mm_per_m) * k);
+}
+
+/* The page pixel of cell (i, j)'s centre. */
+static void cell_px(const ztv_info *info, int i, int j, uint32_t *x, uint32_t *y)
+{
+    page_px(info, info->grid.x0 + i * info->grid.cell, info->grid.y0 - j * info->grid.cell, x, y);
+}
+
 TEST(maps)
 {
     pattern p;
     make_pattern(&p);
+    static const ztv_viewpoint vp[1] = {{.name = "hill", .number = 1, .xy = {105, 75}}};
+    p.info.study_views = vp, p.info.n_study_views = 1;
     const char *dir = fresh_dir("maps");
     err_buf err = {{0}};
     CHECK_INT(write_all(&p, dir, &err), 0);
     const char *names_png[] = {"ztv_bare.png", "ztv_vegetation.png", "ztv_hidden_vegetation.png",
                                "ztv_cumulative_bare.png", "ztv_cumulative_vegetation.png"};
+    ztv_map_layout l = ztv_map_layout_of(&p.info);
+    uint32_t panel_x = (uint32_t)((l.x + l.w + 10) * ZTV_MAP_DPI / 25.4);
     for (size_t i = 0; i < sizeof names_png / sizeof names_png[0]; i++) {
         char path[1300];
         snprintf(path, sizeof path, "%s/%s", dir, names_png[i]);
         image_f32 img = {0};
         CHECK_INT(image_read(path, &img, &err), 0);
-        /* 20 x 15 cells enlarged to 1000 x 750 pixels, framed by margins of 20 and the
-         * 400-pixel legend */
-        CHECK_INT(img.width, 20 + 1000 + 20 + 400 + 20);
-        CHECK(img.height >= 81 + 750 + 20);
+        /* A3 landscape at 150 dpi */
+        CHECK_INT(img.width, 2480);
+        CHECK_INT(img.height, 1754);
+        snprintf(path + strlen(path) - 3, 4, "pdf");
+        CHECK(access(path, R_OK) == 0);
+        int rgb[3];
+        uint32_t x, y;
+        if (img.pixels) { /* the viewpoint: a red dot beside its number, at its place */
+            page_px(&p.info, vp[0].xy[0], vp[0].xy[1], &x, &y);
+            png_rgb(&img, x - (uint32_t)(1.3 * ZTV_MAP_DPI / 25.4), y, rgb);
+            CHECK(abs(rgb[0] - 204) <= 2 && abs(rgb[1] - 13) <= 2 && abs(rgb[2] - 13) <= 2);
+        }
         if (i == 0 && img.pixels) {
             /* the legend's swatches: 100 % (120, 0, 50) and 1-25 % (255, 230, 80) at opacity 0.65
              * over level ground's grey 207 */
-            CHECK(has_colour(&img, 1040, (const int[3]){150, 72, 105}));
-            CHECK(has_colour(&img, 1040, (const int[3]){238, 222, 124}));
+            CHECK(has_colour(&img, panel_x, (const int[3]){150, 72, 105}));
+            CHECK(has_colour(&img, panel_x, (const int[3]){238, 222, 124}));
             /* the map: cell (5, 1) sees every target, cell (1, 1) none, column 0 is not computed */
-            int rgb[3];
-            png_rgb(&img, 20 + 5 * 50 + 25, 81 + 50 + 25, rgb);
+            cell_px(&p.info, 5, 1, &x, &y);
+            png_rgb(&img, x, y, rgb);
             CHECK(rgb[0] > rgb[1] + 50);
-            png_rgb(&img, 20 + 1 * 50 + 25, 81 + 50 + 25, rgb);
+            cell_px(&p.info, 1, 1, &x, &y);
+            png_rgb(&img, x, y, rgb);
             CHECK(abs(rgb[0] - rgb[1]) < 4 && abs(rgb[1] - rgb[2]) < 4);
-            png_rgb(&img, 20 + 25, 81 + 50 + 27, rgb); /* light grey between the hatching */
+            cell_px(&p.info, 0, 3, &x, &y);
+            png_rgb(&img, x, y, rgb);
             CHECK_INT(rgb[0], 242);
-            png_rgb(&img, 20 + 25, 81 + 50 + 24, rgb); /* on the hatching */
-            CHECK_INT(rgb[0], 185);
         }
         if (i == 2 && img.pixels) {
             /* fully hidden (25, 80, 200), partly hidden (110, 190, 240) */
-            CHECK(has_colour(&img, 1040, (const int[3]){89, 124, 202}));
-            int rgb[3];
-            png_rgb(&img, 20 + 9 * 50 + 25, 81 + 10 * 50 + 25, rgb); /* all hidden */
+            CHECK(has_colour(&img, panel_x, (const int[3]){89, 124, 202}));
+            cell_px(&p.info, 9, 10, &x, &y);
+            png_rgb(&img, x, y, rgb); /* all hidden */
             CHECK(rgb[2] > rgb[0] + 60);
         }
         image_free(&img);
     }
     free_pattern(&p);
+}
+
+/* The bare-earth map of info's whole grid given as one block (layer, ground), written into a
+ * fresh folder `name` and read back into img. */
+static void write_bare_map(const ztv_info *info, ztv_layer *layer, float *ground, const char *name, image_f32 *img)
+{
+    const char *dir = fresh_dir(name);
+    err_buf err = {{0}};
+    ztv_output *o = ztv_output_open(dir, info, &err);
+    CHECK(o != NULL);
+    ztv_block b = {.j0 = 0, .rows = info->grid.ny, .ground = ground, .layer = {layer, NULL, NULL}};
+    CHECK_INT(o ? ztv_output_block(o, &b, &err) : -1, 0);
+    CHECK_INT(o ? ztv_output_finish(o, &err) : -1, 0);
+    ztv_output_free(o);
+    char path[1300];
+    snprintf(path, sizeof path, "%s/ztv_bare.png", dir);
+    CHECK_INT(image_read(path, img, &err), 0);
+}
+
+/* The darkest red channel among the pixels within 3 of (x, y). */
+static int darkest_near(const image_f32 *img, uint32_t x, uint32_t y)
+{
+    int least = 255;
+    for (uint32_t v = y - 3; v <= y + 3; v++)
+        for (uint32_t u = x - 3; u <= x + 3; u++) {
+            int rgb[3];
+            png_rgb(img, u, v, rgb);
+            if (rgb[0] < least) least = rgb[0];
+        }
+    return least;
+}
+
+/* A 5 x 5 km map of one target in the middle, radius 2 km, whose terrain ends 1.5 km east of the
+ * target: the 1 km ring at 1 km, the radius at 2 km, "no terrain" past the edge. */
+TEST(map_rings_and_no_terrain)
+{
+    enum { N = 100 };
+    size_t n = (size_t)N * N;
+    uint8_t *cls = malloc(n);                                           /* each freed at the end */
+    uint16_t *visible = calloc(n, sizeof *visible);
+    uint32_t *devs = calloc(n, sizeof *devs);
+    float *ground = calloc(n, sizeof *ground), *fraction = calloc(n, sizeof *fraction);
+    for (size_t k = 0; k < n; k++) {
+        int past = (int)(k % N) * 50 + 25 > 4000; /* x past 4000 m */
+        visible[k] = !past, fraction[k] = (float)!past, devs[k] = !past;
+        cls[k] = past ? ZTV_NO_TERRAIN : ZTV_OPEN;
+        ground[k] = past ? NAN : 0;
+    }
+    static const double xy[1][2] = {{2500, 2500}};
+    static const uint32_t tdev[1] = {0};
+    ztv_info info = {.grid = {N, N, 25, 4975, 50}, .computed = {1, 0, 0}, .observer_height = 2, .radius = 2000,
+                     .n_targets = 1, .n_developments = 1, .development_xy = xy, .target_xy = xy,
+                     .target_development = tdev};
+    ztv_layer layer = {visible, fraction, cls, devs};
+    image_f32 img = {0};
+    write_bare_map(&info, &layer, ground, "rings", &img);
+    uint32_t x, y;
+    for (int dir_k = 0; img.pixels && dir_k < 2; dir_k++) { /* north and south of the target */
+        double sign = dir_k ? -1 : 1;
+        page_px(&info, 2500, 2500 + sign * 1000, &x, &y);
+        CHECK(darkest_near(&img, x, y) < 110); /* the 1 km ring */
+        page_px(&info, 2500, 2500 + sign * 2000, &x, &y);
+        CHECK(darkest_near(&img, x, y) < 110); /* the radius */
+        page_px(&info, 2500 - 300, 2500 + sign * 1500, &x, &y);
+        CHECK(darkest_near(&img, x, y) > 120); /* between them: the map's colour */
+    }
+    if (img.pixels) { /* past the DTM: no terrain's colour, and the words in white there */
+        int rgb[3];
+        page_px(&info, 4800, 300, &x, &y);
+        png_rgb(&img, x, y, rgb);
+        CHECK(abs(rgb[0] - 60) <= 1 && abs(rgb[1] - 70) <= 1 && abs(rgb[2] - 90) <= 1);
+        uint32_t x0, y0, x1, y1, white = 0;
+        page_px(&info, 4000, 5000, &x0, &y0);
+        page_px(&info, 5000, 0, &x1, &y1);
+        for (uint32_t v = y0 + 2; v < y1 - 2; v++)
+            for (uint32_t u = x0 + 4; u < x1 - 8; u++) {
+                png_rgb(&img, u, v, rgb);
+                white += rgb[0] > 240 && rgb[1] > 240 && rgb[2] > 240;
+            }
+        CHECK(white > 20);
+    }
+    image_free(&img);
+    free(ground), free(fraction), free(visible), free(cls), free(devs);
 }
 
 /* Whole file contents; *size set. NULL when unreadable. */
@@ -631,15 +742,17 @@ TEST(local_long_grid_many_developments)
     CHECK_STR_CONTAINS(json, "\"E\": {\"cells\": 26400, \"km2\": 16.5}");
     CHECK(json && !strstr(json, "\"screening\": {\n"));
     free(json);
-    /* one cell in 3 x 3: 1,100 x 14 map pixels, not enlarged */
+    /* one cell in 3 x 3: 1,100 x 14 map pixels on an A3 page at 150 dpi */
     const char *maps[2] = {"ztv_bare.png", "ztv_cumulative_bare.png"};
+    ztv_map_layout lay = ztv_map_layout_of(&info);
+    uint32_t panel_x = (uint32_t)((lay.x + lay.w + 10) * ZTV_MAP_DPI / 25.4);
     for (int i = 0; i < 2; i++) {
         snprintf(path, sizeof path, "%s/%s", dir, maps[i]);
         image_f32 img = {0};
         CHECK_INT(image_read(path, &img, &err), 0);
-        CHECK_INT(img.width, 20 + 1100 + 20 + 400 + 20);
+        CHECK_INT(img.width, 2480);
         /* the cumulative legend counts developments: 5 in dark red (205, 35, 35) over grey */
-        if (i == 1 && img.pixels) CHECK(has_colour(&img, 1140, (const int[3]){206, 95, 95}));
+        if (i == 1 && img.pixels) CHECK(has_colour(&img, panel_x, (const int[3]){206, 95, 95}));
         image_free(&img);
     }
     snprintf(path, sizeof path, "%s/ztv_hidden_bare.png", dir);
@@ -647,14 +760,12 @@ TEST(local_long_grid_many_developments)
     free(ground), free(fraction), free(visible), free(cls), free(devs);
 }
 
-static void png_rgb(const image_f32 *img, uint32_t x, uint32_t y, int rgb[3]);
-
-/* A grid drawn one cell in 3 x 3 shows the cell nearest each pixel's centre: on a 3,300 x 6 grid
+/* A grid drawn one cell in 3 x 3 shows the cell nearest each pixel's centre: on a 3,300 x 600 grid
  * of level ground where only every third column from column 1 sees everything, every map pixel
  * is the 100 % colour. */
 TEST(reduced_map_takes_the_nearest_cell)
 {
-    enum { W = 3300, H = 6 };
+    enum { W = 3300, H = 600 };
     size_t n = (size_t)W * H;
     float *ground = calloc(n, sizeof *ground), *fraction = malloc(n * sizeof *fraction);
     uint16_t *visible = malloc(n * sizeof *visible);
@@ -666,27 +777,20 @@ TEST(reduced_map_takes_the_nearest_cell)
     }
     double xy[1][2] = {{-1e6, 0}}; /* off the map: no marker over the pixels looked at */
     uint32_t tdev[1] = {0};
-    ztv_info info = {.grid = {W, H, 0.5, -0.5, 1}, .computed = {1, 0, 0}, .observer_height = 2,
+    ztv_info info = {.grid = {W, H, 0.5, H - 0.5, 1}, .computed = {1, 0, 0}, .observer_height = 2,
                      .radius = INFINITY, .n_targets = 1, .n_developments = 1,
                      .development_xy = (const double (*)[2])xy, .target_xy = (const double (*)[2])xy,
                      .target_development = tdev};
-    const char *dir = fresh_dir("nearest");
-    err_buf err = {{0}};
-    ztv_output *o = ztv_output_open(dir, &info, &err);
-    CHECK(o != NULL);
-    ztv_layer l = {visible, fraction, cls, devs};
-    ztv_block b = {.j0 = 0, .rows = H, .ground = ground, .layer = {&l, NULL, NULL}};
-    CHECK_INT(ztv_output_block(o, &b, &err), 0);
-    CHECK_INT(ztv_output_finish(o, &err), 0);
-    ztv_output_free(o);
-    char path[1300];
-    snprintf(path, sizeof path, "%s/ztv_bare.png", dir);
+    ztv_layer layer = {visible, fraction, cls, devs};
     image_f32 img = {0};
-    CHECK_INT(image_read(path, &img, &err), 0);
-    CHECK_INT(img.width, 20 + 1100 + 20 + 400 + 20);
-    for (uint32_t x = 20; img.pixels && x < 20 + 1100; x += 37) {
+    write_bare_map(&info, &layer, ground, "nearest", &img);
+    /* every map pixel samples a seen cell (the cell nearest its centre: 3 u + 1), so the whole row
+     * across the map's middle is the 100 % colour */
+    for (double gx = 20; img.pixels && gx < W - 20; gx += 37) {
         int rgb[3];
-        png_rgb(&img, x, 81, rgb);
+        uint32_t x, y;
+        page_px(&info, gx, H / 2.0, &x, &y);
+        png_rgb(&img, x, y, rgb);
         CHECK(abs(rgb[0] - 150) <= 1 && abs(rgb[1] - 72) <= 1 && abs(rgb[2] - 105) <= 1);
     }
     image_free(&img);
@@ -694,6 +798,6 @@ TEST(reduced_map_takes_the_nearest_cell)
 }
 
 TEST_LIST(TEST_CASE(band_boundaries), TEST_CASE(reduced_map_takes_the_nearest_cell), TEST_CASE(local_long_grid_many_developments),
-          TEST_CASE(geotiff_reads_back), TEST_CASE(summary_areas), TEST_CASE(maps),
+          TEST_CASE(geotiff_reads_back), TEST_CASE(summary_areas), TEST_CASE(maps), TEST_CASE(map_rings_and_no_terrain),
           TEST_CASE(same_bytes_whatever_the_blocks), TEST_CASE(unfinished_leaves_nothing), TEST_CASE(signal_leaves_nothing), TEST_CASE(planted_link_not_followed),
           TEST_CASE(blocks_out_of_order), TEST_CASE(bad_folder_and_info))

@@ -26,7 +26,8 @@ static const char study_about[] =
     "50 mm on a full-frame sensor; planar_53; cylindrical_90), the existing view (without\n"
     "the development), the proposed view (with it) and the wireline (the development's\n"
     "outline over the existing view), as DIR/VIEWPOINT/PRODUCT_FRAME.png and .exr with a\n"
-    ".manifest record each. A rerun keeps every product whose files are there and whose record\n"
+    ".manifest record each; and when asked, the sheet (the three views on one printed page with\n"
+    "the viewpoint's facts and a location map) as DIR/VIEWPOINT/sheet_FRAME.pdf and .png. A rerun keeps every product whose files are there and whose record\n"
     "matches, so an interrupted study goes on where it stopped. The proposed view is byte for\n"
     "byte `sylva render --viewpoint NAME --size WxH` of the same viewpoint, with the ground\n"
     "refined around the development rather than the camera. With a ztv: section (or the\n"
@@ -123,8 +124,8 @@ static int study_main(cli_mpi *m, int argc, char **argv)
         CLI_OPT_TEXT("--only", "LIST", o.names.only, "render only these viewpoints of the study (the rest are "
                      "left as they are)"),
         CLI_OPT_TEXT("--rank", "LIST", o.names.rank, "render these viewpoints first, in this order"),
-        CLI_OPT_TEXT("--products", "LIST", o.products, "existing, proposed, wireline, ztv (default: the study's, "
-                     "else the first three, and ztv when the scene has a ztv: section)"),
+        CLI_OPT_TEXT("--products", "LIST", o.products, "existing, proposed, wireline, sheet, ztv (default: the "
+                     "study's, else the first three, and ztv when the scene has a ztv: section)"),
         CLI_OPT_TEXT("--frames", "LIST", o.frames, "single, planar_53, cylindrical_90 (default: the study's, else "
                      "single)"),
         CLI_OPT_SIZE("--size", o.size[0], o.size[1], "every frame at WxH pixels (overrides study: size and "
@@ -134,7 +135,7 @@ static int study_main(cli_mpi *m, int argc, char **argv)
         CLI_OPT_NUMBER("--print-width", "MM", "millimetres", o.print_width_mm, 0, 10000, CLI_OPEN_LOW,
                        "frames print_width / 25.4 * dpi pixels wide, each as high as its page"),
         CLI_OPT_NUMBER("--dpi", "N", "pixels per inch", o.dpi, 0, 10000, CLI_OPEN_LOW, "pixels per inch of the "
-                       "print (default: the study's, else 300)"),
+                       "print and of the sheets (default: the study's, else 300)"),
         CLI_OPT_WHOLE("--spp", "N", o.spp, 1, 1u << 20, "samples per pixel (default: the study's, else image.spp)"),
         CLI_OPT_FLAG("--force", o.force, "render every product, even those up to date"),
         CLI_OPT_TEXT("--season", "S", season, CLI_HELP_SEASON),

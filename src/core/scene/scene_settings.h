@@ -62,6 +62,8 @@ typedef struct sun_settings {
     double color[3];        /* linear RGB tint, multiplied with irradiance */
     double angular_diameter_deg;
     char date_time_utc[32]; /* "2026-06-21T13:30:00Z" when placed by date_time, else "" */
+    char date_time_local[48]; /* date_time as given, the local time with its UTC offset
+                               * ("2026-06-21T14:30:00+01:00"), else "" */
     double latitude_deg, longitude_deg; /* where date_time placed it (site origin or given) */
 } sun_settings;
 

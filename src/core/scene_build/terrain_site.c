@@ -5,15 +5,6 @@
 #include <stdio.h>
 #include <string.h>
 
-/* The DTM the terrain's plugin block names (its `dtm` path), or NULL. */
-static const char *dtm_path(const terrain_spec *t)
-{
-    for (uint32_t i = 0; t->params && i < t->params->n; i++)
-        if (!strcmp(t->params->spec[i].name, "dtm") && t->params->spec[i].type == SYLVA_P_PATH)
-            return t->params->values[i].s;
-    return NULL;
-}
-
 int terrain_near_site(const scene *s, const scene_file *sf, err_buf *err)
 {
     const sylva_heightfield *t = s->terrain;
@@ -23,7 +14,7 @@ int terrain_near_site(const scene *s, const scene_file *sf, err_buf *err)
     double distance = hypot(gap_x, gap_y), size = fmax(x1 - x0, y1 - y0);
     if (distance <= TERRAIN_SITE_REACH_M + size) return 0; /* NaN extents are the plugin's to refuse */
     const double *o = sf->site.origin;
-    const char *dtm = dtm_path(&sf->terrain);
+    const char *dtm = scene_file_dtm_path(sf);
     char what[1200];
     if (dtm) snprintf(what, sizeof what, "the DTM '%s'", dtm);
     else snprintf(what, sizeof what, "the terrain");

@@ -406,7 +406,7 @@ const host_schema host_schema_photo = {"photo", "The photograph of a photomontag
                                        COUNT(photo_params)};
 
 /* --- study -------------------------------------------------------------------------------- */
-const char *const host_study_products[] = {"existing", "proposed", "wireline", "ztv", NULL};
+const char *const host_study_products[] = {"existing", "proposed", "wireline", "sheet", "ztv", NULL};
 const char *const host_study_frames[] = {"single", "planar_53", "cylindrical_90", NULL};
 static const double no_size[2] = {0, 0};
 static const sylva_param_spec study_params[] = {
@@ -423,7 +423,8 @@ static const sylva_param_spec study_params[] = {
      .help = "Eye height above the ground of a point that gives no height_above_ground."},
     {.name = "products", .type = SYLVA_P_STRING, .def_str = "existing proposed wireline",
      .help = "What each viewpoint gives: existing (the view without the development), proposed (with it), "
-             "wireline (the development's outline over the existing view); and once for the study, ztv (its "
+             "wireline (the development's outline over the existing view), sheet (the three on one page with "
+             "the viewpoint's facts and a location map, PDF and PNG); and once for the study, ztv (its "
              "visibility map, made anyway when the scene has a ztv: section); a list or names separated by "
              "spaces or commas."},
     {.name = "frames", .type = SYLVA_P_STRING, .def_str = "single",
@@ -435,10 +436,11 @@ static const sylva_param_spec study_params[] = {
      .help = "[width, height] of every frame in pixels, or [width, 0] for each frame's own height (default: a "
              "width from print_width and dpi, else the image's width, and each frame's own height for it)."},
     {.name = "print_width", .type = SYLVA_P_REAL, .flags = MIN | MAX, .def = 0, .min = 0, .max = 10000, .unit = "mm",
-     .help = "Width of the printed frame: the frame is print_width / 25.4 * dpi pixels wide (0: no print "
-             "size; A3 landscape is 420)."},
+     .help = "Width of the printed frame: the frame is print_width / 25.4 * dpi pixels wide, and the "
+             "sheet's page is as wide, in A-series proportions (0: no print size; the sheet A3 landscape, "
+             "420)."},
     {.name = "dpi", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 300, .min = 0, .max = 10000,
-     .help = "Pixels per inch of the print (with print_width)."},
+     .help = "Pixels per inch of the print (with print_width) and of the sheet's page and pictures."},
     {.name = "spp", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 0, .min = 0, .max = 1 << 20,
      .help = "Samples per pixel (0: the image's spp)."},
     {.name = "inner_edges", .type = SYLVA_P_BOOL, .def = 1,

@@ -45,9 +45,17 @@ int scene_file_use_season(scene_file *sf, const char *text, err_buf *err);
  * line and column. */
 int scene_file_read_points(scene_file *sf, const char *path, const char *layer, err_buf *err);
 
+/* A viewpoint's number on the study's sheets, maps, layers and index: its place among the
+ * scene's viewpoints, then the points file's, from 1 (the same whatever order a study renders
+ * them in); 0 for a viewpoint of neither list. */
+uint32_t scene_file_viewpoint_number(const scene_file *sf, const scene_viewpoint *v);
+
 /* Where the development stands (local x, y): the mean position of the objects marked
  * `development`, else of the ztv: section's targets. 0, or -1 when the scene names neither. */
 int scene_file_development_place(const scene_file *sf, double at[2]);
+
+/* The DTM the terrain's plugin block names (its `dtm` path, resolved), or NULL. */
+const char *scene_file_dtm_path(const scene_file *sf);
 
 /* Index of a material or species by name, or -1 (a hash lookup). */
 int scene_file_material_index(const scene_file *sf, const char *name);

@@ -171,3 +171,11 @@ int scene_file_read_points(scene_file *sf, const char *path, const char *layer, 
     site_frame_free(L.site);
     return rc ? err_default(err, ERR_INPUT) : 0;
 }
+
+uint32_t scene_file_viewpoint_number(const scene_file *sf, const scene_viewpoint *v)
+{
+    if (v >= sf->viewpoints && v < sf->viewpoints + sf->n_viewpoints) return (uint32_t)(v - sf->viewpoints) + 1;
+    if (v >= sf->study.points && v < sf->study.points + sf->study.n_points)
+        return sf->n_viewpoints + (uint32_t)(v - sf->study.points) + 1;
+    return 0;
+}

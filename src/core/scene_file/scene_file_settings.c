@@ -317,7 +317,7 @@ static int sun_place_by_date(loader *L, const sylva_params *p, sun_settings *s)
     const sylva_value *dt = sylva_param(p, "date_time"), *lat = sylva_param(p, "latitude"),
                       *lon = sylva_param(p, "longitude");
     const sylva_value *given = lat->is_set ? lat : lon->is_set ? lon : NULL;
-    s->date_time_utc[0] = 0;
+    s->date_time_utc[0] = 0, s->date_time_local[0] = 0;
     if (!dt->is_set) {
         if (given)
             return sf_located(L->err, L->file, given->line, given->column,
@@ -366,6 +366,7 @@ static int sun_place_by_date(loader *L, const sylva_params *p, sun_settings *s)
     s->latitude_deg = place[1], s->longitude_deg = place[0];
     snprintf(s->date_time_utc, sizeof s->date_time_utc, "%04d-%02d-%02dT%02d:%02d:%02dZ", t.year,
              t.month, t.day, t.hour, t.minute, (int)t.second);
+    snprintf(s->date_time_local, sizeof s->date_time_local, "%s", dt->s);
     return 0;
 }
 

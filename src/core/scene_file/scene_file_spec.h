@@ -239,9 +239,12 @@ typedef struct photo_settings {
 } photo_settings;
 
 /* What a study renders from each viewpoint (`sylva study`, docs/study.md): the view without the
- * development, with it, and the development's outline over the view without it. */
-typedef enum study_product { STUDY_EXISTING = 0, STUDY_PROPOSED = 1, STUDY_WIRELINE = 2 } study_product;
-#define STUDY_PRODUCTS 3u /* the products of each viewpoint */
+ * development, with it, the development's outline over the view without it, and the sheet that
+ * sets the three out with the viewpoint's facts and a location map (sheet/sheet.h). */
+typedef enum study_product {
+    STUDY_EXISTING = 0, STUDY_PROPOSED = 1, STUDY_WIRELINE = 2, STUDY_SHEET = 3
+} study_product;
+#define STUDY_PRODUCTS 4u /* the products of each viewpoint */
 /* The study's own product, made once for every viewpoint: its visibility map (docs/study.md, "The
  * ZTV"), named `ztv` after the products of each viewpoint. */
 #define STUDY_ZTV STUDY_PRODUCTS

@@ -24,6 +24,15 @@ int sf_development_index(loader *L, const char *name, const char *file, uint32_t
     return (int)sf->n_developments++;
 }
 
+const char *scene_file_dtm_path(const scene_file *sf)
+{
+    const terrain_spec *t = &sf->terrain;
+    for (uint32_t i = 0; t->params && i < t->params->n; i++)
+        if (!strcmp(t->params->spec[i].name, "dtm") && t->params->spec[i].type == SYLVA_P_PATH)
+            return t->params->values[i].s;
+    return NULL;
+}
+
 int scene_file_development_place(const scene_file *sf, double at[2])
 {
     double sum[2] = {0, 0};

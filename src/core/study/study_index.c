@@ -315,7 +315,7 @@ int study_index_write(const scene_file *sf, const study_views *views, const char
     index_view *iv = calloc(views->n ? views->n : 1, sizeof *iv); /* owned here */
     if (!iv) return err_nomem(err, "out of memory for the study's index");
     for (uint32_t k = 0; k < views->n; k++) {
-        iv[k] = (index_view){.v = views->views[k], .number = k + 1,
+        iv[k] = (index_view){.v = views->views[k], .number = scene_file_viewpoint_number(sf, views->views[k]),
                              .e = origin[0] + views->views[k]->camera.position[0],
                              .n = origin[1] + views->views[k]->camera.position[1]};
         nearest_structure(sf, &iv[k]);

@@ -13,6 +13,7 @@
 #include "scene/scene_mark.h"
 #include "scene_build/scene_ground.h"
 #include "scene_file/host_schema.h"
+#include "sheet/sheet.h"
 #include "study/study_frames.h"
 
 int study_job_path(const study_job *j, int p, const char *ext, char out[STUDY_PATH_MAX], err_buf *err)
@@ -33,42 +34,79 @@ static int view_error(const scene_viewpoint *v, const scene_file *sf, err_buf *e
     return err_at(err, ERR_INPUT, file, line, column, "viewpoint '%s': %s", v->name, what);
 }
 
-/* The wireline of the development in `full` over the existing view `bg`, exposed at ev. */
-static int write_wireline(const scene *s, const study_job *j, const film *full, const film *bg, double ev,
-                          int inner_edges, const char *png, const char *exr, err_buf *err)
+const char *study_product_ext(int p)
+{
+    return p == STUDY_SHEET ? "pdf" : "exr";
+}
+
+/* The wireline of the development in `full` over the existing view `bg` exposed at ev, as 8-bit
+ * sRGB pixels (owned by the caller), or NULL with err set. */
+static uint8_t *wireline_pixels(const scene *s, const study_job *j, const film *full, const film *bg, double ev,
+                                int inner_edges, err_buf *err)
 {
     static const uint8_t red[3] = {255, 0, 0}, yellow[3] = {255, 220, 0};
     camera cam;
     camera_init(&cam, &s->camera, j->size[0], j->size[1]);
     wireline wl = {0};
-    uint8_t *px = film_tonemap(bg, s->image.tone, ev); /* owned here */
-    if (!px) return err_nomem(err, "out of memory tone-mapping the wireline");
-    int rc = wireline_find(&wl, full, s, &cam, err);
-    if (!rc) {
-        wireline_draw(&wl, px, red, inner_edges ? yellow : NULL);
-        film layers = *bg; /* the existing view's layers, borrowed, with the proposed view's development */
-        layers.development = full->development, layers.development_rgb = full->development_rgb;
-        rc = film_write_pair_pixels(&layers, &s->site, ev, px, png, exr, err);
+    uint8_t *px = film_tonemap(bg, s->image.tone, ev); /* owned by the caller */
+    if (!px) return err_nomem(err, "out of memory tone-mapping the wireline"), NULL;
+    if (wireline_find(&wl, full, s, &cam, err)) {
+        free(px);
+        return NULL;
     }
+    wireline_draw(&wl, px, red, inner_edges ? yellow : NULL);
     wireline_free(&wl);
+    return px;
+}
+
+static int write_wireline(const scene *s, const study_job *j, const film *full, const film *bg, double ev,
+                          int inner_edges, const char *png, const char *exr, err_buf *err)
+{
+    uint8_t *px = wireline_pixels(s, j, full, bg, ev, inner_edges, err); /* owned here */
+    if (!px) return -1;
+    film layers = *bg; /* the existing view's layers, borrowed, with the proposed view's development */
+    layers.development = full->development, layers.development_rgb = full->development_rgb;
+    int rc = film_write_pair_pixels(&layers, &s->site, ev, px, png, exr, err);
     free(px);
+    return rc;
+}
+
+/* The sheet of j (sheet/sheet.h): its three pictures from the renders, its facts from the scene. */
+static int write_sheet(const scene *s, const scene_file *sf, const study_job *j, const film *full, const film *bg,
+                       double ev, uint32_t spp, const char *png, const char *pdf, err_buf *err)
+{
+    sheet sh = {.s = s, .sf = sf, .eye = {s->camera.position[0], s->camera.position[1]}, .spp = spp,
+                .wider_frames = j->other_frames[0] ? j->other_frames : NULL, .page = j->page};
+    sheet_view_of(s, sf, j->view, &s->camera, study_frame_of(j->frame)->name, j->size[0], j->size[1], &sh.view);
+    uint8_t *existing = film_tonemap(bg, s->image.tone, ev), *proposed = film_tonemap(full, s->image.tone, ev);
+    uint8_t *wire = existing && proposed ? wireline_pixels(s, j, full, bg, ev, sf->study.inner_edges, err) : NULL; /* all three owned here */
+    int rc = -1;
+    if (!existing || !proposed) err_nomem(err, "out of memory for the sheet's pictures");
+    if (wire) {
+        sh.existing = (page_picture){j->size[0], j->size[1], existing};
+        sh.proposed = (page_picture){j->size[0], j->size[1], proposed};
+        sh.wireline = (page_picture){j->size[0], j->size[1], wire};
+        rc = sheet_write(&sh, pdf, png, err);
+    }
+    free(existing), free(proposed), free(wire);
     return rc;
 }
 
 /* Every product of j written from the renders, each with its record after its files. */
 static int write_products(const scene *s, const scene_file *sf, const study_job *j, const film *full, const film *bg,
-                          err_buf *err)
+                          uint32_t spp, err_buf *err)
 {
     double ev = render_still_exposure(s, full);
     char png[STUDY_PATH_MAX], exr[STUDY_PATH_MAX], record[STUDY_PATH_MAX];
     for (int p = 0; p < (int)STUDY_PRODUCTS; p++) {
         if (!(j->todo & 1u << p)) continue;
-        if (study_job_path(j, p, "png", png, err) || study_job_path(j, p, "exr", exr, err) ||
+        if (study_job_path(j, p, "png", png, err) || study_job_path(j, p, study_product_ext(p), exr, err) ||
             study_job_path(j, p, "manifest", record, err))
             return -1;
         int rc = p == STUDY_PROPOSED ? film_write_pair(full, &s->site, s->image.tone, ev, png, exr, err)
                  : p == STUDY_EXISTING ? film_write_pair(bg, &s->site, s->image.tone, ev, png, exr, err)
-                                       : write_wireline(s, j, full, bg, ev, sf->study.inner_edges, png, exr, err);
+                 : p == STUDY_WIRELINE ? write_wireline(s, j, full, bg, ev, sf->study.inner_edges, png, exr, err)
+                                       : write_sheet(s, sf, j, full, bg, ev, spp, png, exr, err);
         if (rc || study_manifest_write(record, j->record[p], err)) return err_default(err, ERR_OUTPUT);
     }
     return 0;
@@ -88,13 +126,13 @@ static int render_pair(scene *s, const study_job *j, const render_options *ro, p
         phase_add(times, PHASE_RENDER, st.render_seconds);
         ++*renders;
     }
-    if (*full && (j->todo & (1u << STUDY_EXISTING | 1u << STUDY_WIRELINE))) {
+    if (*full && (j->todo & STUDY_NEEDS_PAIR)) {
         render_options without = *ro;
         without.leave_out |= ACCEL_MASK_DEVELOPMENT;
         if ((*bg = render_setup_run(rs, &without, &st, err))) phase_add(times, PHASE_RENDER, st.render_seconds), ++*renders;
     }
     render_setup_free(rs);
-    int failed = !*full || (!*bg && (j->todo & (1u << STUDY_EXISTING | 1u << STUDY_WIRELINE)));
+    int failed = !*full || (!*bg && (j->todo & STUDY_NEEDS_PAIR));
     return failed ? err_default(err, ERR_INTERNAL) : 0;
 }
 
@@ -114,7 +152,7 @@ int study_job_run(scene *s, const scene_file *sf, const study_job *j, const rend
     int rc = scene_view_prepare(s, &sf->ground_cover, &view, times, err);
     if (!rc) rc = render_pair(s, j, ro, times, &full, &bg, renders, err);
     phase_mark t_out = phase_start();
-    if (!rc) rc = write_products(s, sf, j, full, bg, err);
+    if (!rc) rc = write_products(s, sf, j, full, bg, ro->spp, err);
     phase_stop(times, PHASE_OUTPUT, t_out);
     film_free(full);
     film_free(bg);

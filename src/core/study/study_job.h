@@ -21,6 +21,7 @@
 #include "render/render.h"
 #include "scene/scene.h"
 #include "scene_file/scene_file.h"
+#include "page/page.h"
 #include "study/study_manifest.h"
 #include "util/err.h"
 #include "util/phase_times.h"
@@ -36,11 +37,19 @@ typedef struct study_job {
     int part;                        /* the part of the run that renders it (util/run_parts.h) */
     char record[STUDY_PRODUCTS][STUDY_MANIFEST_MAX]; /* each product's record (study_manifest.h) */
     char folder[STUDY_PATH_MAX];     /* DIR/VIEWPOINT */
+    page_size page;                  /* the sheet's page (sheet/sheet.h) */
+    char other_frames[64];           /* the study's frames but this one, for the sheet; "" when none */
 } study_job;
 
 /* The file of product p of j with extension ext ("png", "exr", "manifest"): FOLDER/PRODUCT_FRAME.EXT.
  * Returns 0, or -1 with err set when it does not fit. */
 int study_job_path(const study_job *j, int p, const char *ext, char out[STUDY_PATH_MAX], err_buf *err);
+
+/* The extension of product p's second file beside its PNG: "exr", or "pdf" for the sheet. */
+const char *study_product_ext(int p);
+
+/* The products of `todo` that need the view without the development rendered. */
+#define STUDY_NEEDS_PAIR (1u << STUDY_EXISTING | 1u << STUDY_WIRELINE | 1u << STUDY_SHEET)
 
 /* Checks that j's camera can be placed over s's ground (its eye height above the terrain), so that
  * a viewpoint off the terrain is refused before any image is rendered. Returns 0, or -1 with err

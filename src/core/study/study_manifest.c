@@ -28,7 +28,8 @@ void study_manifest_text(const study_record *r, char out[STUDY_MANIFEST_MAX])
                      "size %u %u\nspp %u\nseed %llu\nseason_day %u\n",
                      SYLVA_VERSION, (unsigned long long)r->scene_digest, r->viewpoint, r->product, r->frame, r->width,
                      r->height, r->spp, (unsigned long long)r->seed, r->season_day);
-    if (n > 0 && n < STUDY_MANIFEST_MAX) camera_text(r->camera, out + n, STUDY_MANIFEST_MAX - (size_t)n);
+    if (n > 0 && n < STUDY_MANIFEST_MAX) n += camera_text(r->camera, out + n, STUDY_MANIFEST_MAX - (size_t)n);
+    if (r->extra && n > 0 && n < STUDY_MANIFEST_MAX) snprintf(out + n, STUDY_MANIFEST_MAX - (size_t)n, "%s", r->extra);
 }
 
 static int regular_file(const char *path)

@@ -28,6 +28,7 @@ typedef struct study_record {
     uint32_t width, height, spp;   /* spp: the samples per pixel rendered with */
     uint64_t seed;
     uint32_t season_day;           /* the day the plants are shown on (--season may change it) */
+    const char *extra;             /* more lines the product depends on (a sheet's page), or NULL */
 } study_record;
 
 /* The record's text into out (STUDY_MANIFEST_MAX bytes). */

@@ -8,6 +8,7 @@
 #include "io/output_folder.h"
 #include "scene_build/scene_build.h"
 #include "scene_file/host_schema.h"
+#include "sheet/sheet.h"
 #include "study/study_frames.h"
 #include "study/study_index.h"
 #include "study/study_job.h"
@@ -94,6 +95,20 @@ static int plan_settings(const scene_file *sf, const study_options *o, study_pla
     return 0;
 }
 
+/* The sheet's page and the study's other frames, and their lines in the sheet's record. */
+static void plan_sheet(const study_plan *p, int f, study_job *j, char *extra, size_t n)
+{
+    j->page = sheet_page_size(p->sizing.print_width_mm, p->sizing.dpi);
+    size_t used = 0;
+    j->other_frames[0] = '\0';
+    for (int k = 0; k < (int)STUDY_FRAMES; k++)
+        if (k != f && p->frames & 1u << k && used < sizeof j->other_frames)
+            used += (size_t)snprintf(j->other_frames + used, sizeof j->other_frames - used, "%s%s", used ? ", " : "",
+                                     study_frame_of(k)->name);
+    snprintf(extra, n, "page %.17g %.17g %.17g\nframes %s\n", j->page.width_mm, j->page.height_mm, j->page.dpi,
+             j->other_frames);
+}
+
 /* Job j of viewpoint v in frame f: its camera, size, folder, records, and what is left to render. */
 static int plan_job(const scene_file *sf, const study_options *o, const study_plan *p, const scene_viewpoint *v,
                     int f, study_job *j, err_buf *err)
@@ -107,18 +122,20 @@ static int plan_job(const scene_file *sf, const study_options *o, const study_pl
                         HOST_IMAGE_MAX_SIZE);
     int n = snprintf(j->folder, sizeof j->folder, "%s/%s", o->dir, v->name);
     if (n < 0 || (size_t)n >= sizeof j->folder) return err_fail(err, ERR_USAGE, "%s: the path is too long", o->dir);
+    char sheet_lines[256];
+    plan_sheet(p, f, j, sheet_lines, sizeof sheet_lines);
     for (int k = 0; k < (int)STUDY_PRODUCTS; k++) {
         if (!(p->products & 1u << k)) continue;
         study_record r = {.scene_digest = sf->digest, .viewpoint = v->name, .camera = &j->camera,
                           .product = host_study_products[k], .frame = study_frame_of(f)->name, .width = j->size[0],
                           .height = j->size[1], .spp = p->spp, .seed = sf->image.seed,
-                          .season_day = sf->season.day};
+                          .season_day = sf->season.day, .extra = k == STUDY_SHEET ? sheet_lines : NULL};
         study_manifest_text(&r, j->record[k]);
         if (k == STUDY_WIRELINE) /* what the wireline draws, in its record alone */
             snprintf(j->record[k] + strlen(j->record[k]), STUDY_MANIFEST_MAX - strlen(j->record[k]),
                      "inner_edges %d\n", sf->study.inner_edges);
         char png[STUDY_PATH_MAX], exr[STUDY_PATH_MAX], record[STUDY_PATH_MAX];
-        if (study_job_path(j, k, "png", png, err) || study_job_path(j, k, "exr", exr, err) ||
+        if (study_job_path(j, k, "png", png, err) || study_job_path(j, k, study_product_ext(k), exr, err) ||
             study_job_path(j, k, "manifest", record, err))
             return -1;
         if (o->force || !study_manifest_current(record, j->record[k], png, exr)) j->todo |= 1u << k;
@@ -148,7 +165,7 @@ static int plan_jobs(const scene_file *sf, const study_options *o, study_plan *p
 /* The samples job j traces: its frame's pixels times spp, twice with the existing view or wireline. */
 static uint64_t job_work(const study_plan *p, const study_job *j)
 {
-    int pair = (j->todo & (1u << STUDY_EXISTING | 1u << STUDY_WIRELINE)) != 0;
+    int pair = (j->todo & STUDY_NEEDS_PAIR) != 0;
     return (uint64_t)j->size[0] * j->size[1] * p->spp * (pair ? 2u : 1u);
 }
 

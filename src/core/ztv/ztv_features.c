@@ -38,7 +38,7 @@ static int gather_viewpoints(ztv_features *f, const scene_file *sf, const scene 
     for (uint32_t i = 0; i < n; i++) {
         const scene_viewpoint *v = views ? views[i]
                                  : i < sf->n_viewpoints ? &sf->viewpoints[i] : &sf->study.points[i - sf->n_viewpoints];
-        f->viewpoints[f->n_viewpoints++] = viewpoint_of(v, i + 1, s);
+        f->viewpoints[f->n_viewpoints++] = viewpoint_of(v, scene_file_viewpoint_number(sf, v), s);
     }
     return 0;
 }

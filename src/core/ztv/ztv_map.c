@@ -2,24 +2,16 @@
  * frame (title, map, legend panel with scale bar, north arrow and CRS). Nothing here depends on
  * the full grid's size but the reduction step. */
 #include "ztv/ztv_map.h"
+#include "ztv/ztv_map_style.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "page/page_hillshade.h"
 #include "ztv/ztv_summary.h"
 
-struct ztv_map {
-    const ztv_info *info;               /* borrowed */
-    uint32_t step;                      /* grid cells per map pixel along each axis */
-    uint32_t w, h;                      /* map pixels */
-    float *ground;                      /* w * h local heights, NAN where not computed; owned */
-    float *fraction[ZTV_MODES];         /* w * h per computed mode; owned */
-    uint8_t *cls[ZTV_MODES];            /* w * h ztv_class per computed mode; owned */
-    uint32_t *developments[ZTV_MODES];  /* w * h development bits per computed mode; owned */
-    uint64_t class_pixels[ZTV_MODES][ZTV_CLASSES]; /* map pixels by class */
-};
 
 /* --- the reduced grid ------------------------------------------------------------------------ */
 
@@ -99,7 +91,7 @@ static const uint8_t band_rgb[ZTV_BANDS][3] = {
     {255, 230, 80}, {254, 170, 50}, {240, 100, 30}, {205, 30, 30}, {120, 0, 50}};
 static const uint8_t crown_rgb[3] = {30, 100, 45};
 static const uint8_t object_rgb[3] = {115, 85, 160};
-static const uint8_t outside_rgb[3] = {242, 242, 242}, hatch_rgb[3] = {185, 185, 185};
+static const uint8_t outside_rgb[3] = {242, 242, 242};
 static const uint8_t no_terrain_rgb[3] = {60, 70, 90};
 static const uint8_t hidden_rgb[3] = {25, 80, 200};
 static const uint8_t partly_hidden_rgb[3] = {110, 190, 240};
@@ -113,69 +105,22 @@ static const uint8_t combination_rgb[8][3] = {{0, 0, 0},      {40, 110, 220}, {2
 static const uint8_t count_rgb[COUNT_CLASSES][3] = {{255, 225, 120}, {254, 190, 80}, {250, 145, 50},
                                                     {235, 90, 35},   {205, 35, 35},  {150, 0, 50},
                                                     {80, 0, 70}};
-static const uint8_t black[3] = {0, 0, 0}, white[3] = {255, 255, 255}, frame_grey[3] = {90, 90, 90};
 
 static void blend(const uint8_t under[3], const uint8_t over[3], double opacity, uint8_t out[3])
 {
     for (int c = 0; c < 3; c++) out[c] = (uint8_t)lround((1 - opacity) * under[c] + opacity * over[c]);
 }
 
-/* Light grey with grey diagonals: what was not computed, on the map and in the legend. */
-static void hatch(canvas *c, int x0, int y0, int x1, int y1)
-{
-    for (int y = y0; y <= y1; y++)
-        for (int x = x0; x <= x1; x++) canvas_pixel(c, x, y, (x + y) % 8 < 2 ? hatch_rgb : outside_rgb);
-}
-
 /* --- hillshade -------------------------------------------------------------------------------- */
 
-/* Grey of map pixel (u, v): the cosine between the ground's normal and a sun in the north-west
- * 45 degrees up, from central differences on the reduced grid (one-sided at edges and beside
- * cells without ground). */
+/* Grey of map pixel (u, v): the page's hillshade of the reduced grid (page/page.hillshade.h). */
 static uint8_t hillshade(const ztv_map *m, uint32_t u, uint32_t v)
 {
-    const float *z = m->ground;
-    size_t k = (size_t)v * m->w + u;
-    double spacing = m->info->grid.cell * m->step;
-    double zc = z[k];
-    double zw = u > 0 && isfinite(z[k - 1]) ? z[k - 1] : zc;
-    double ze = u + 1 < m->w && isfinite(z[k + 1]) ? z[k + 1] : zc;
-    double zn = v > 0 && isfinite(z[k - m->w]) ? z[k - m->w] : zc;
-    double zs = v + 1 < m->h && isfinite(z[k + m->w]) ? z[k + m->w] : zc;
-    double nw = (u > 0 && isfinite(z[k - 1])) + (u + 1 < m->w && isfinite(z[k + 1]));
-    double nn = (v > 0 && isfinite(z[k - m->w])) + (v + 1 < m->h && isfinite(z[k + m->w]));
-    double dzdx = nw > 0 ? (ze - zw) / (nw * spacing) : 0; /* east */
-    double dzdy = nn > 0 ? (zn - zs) / (nn * spacing) : 0; /* north */
-    double len = sqrt(dzdx * dzdx + dzdy * dzdy + 1);
-    const double s = sqrt(0.5), sun[3] = {-0.5, 0.5, s}; /* azimuth 315, altitude 45 */
-    double lit = (-dzdx * sun[0] - dzdy * sun[1] + sun[2]) / len;
-    if (lit < 0) lit = 0;
-    /* level ground (lit = sqrt 1/2) comes out ZTV_MAP_FLAT_GREY; fully lit 255 */
-    double grey = ZTV_MAP_FLAT_GREY + (lit - s) * (255 - ZTV_MAP_FLAT_GREY) / (1 - s);
-    if (lit < s) grey = 70 + lit / s * (ZTV_MAP_FLAT_GREY - 70);
-    return (uint8_t)lround(grey);
+    return page_hillshade(m->ground, m->w, m->h, m->info->grid.cell * m->step, u, v);
 }
 
 /* --- what a map shows ------------------------------------------------------------------------- */
 
-typedef struct legend_item {
-    uint8_t rgb[3];
-    int overlay;        /* 1: drawn half-transparent over the hillshade; 2: hatched (not computed) */
-    char label[96];
-} legend_item;
-
-#define MAX_ITEMS 16
-
-typedef struct map_style {
-    char title[128];
-    char legend_title[96];
-    legend_item item[MAX_ITEMS];
-    int n_items;
-    ztv_mode mode;
-    /* The colour of map pixel k: 0 leaves the hillshade, 1 lays rgb over it, 2 paints rgb, 3
-     * hatches it as not computed. */
-    int (*colour)(const ztv_map *m, const struct map_style *st, size_t k, uint8_t rgb[3]);
-} map_style;
 
 static void add_item(map_style *st, const uint8_t rgb[3], int overlay, const char *label)
 {
@@ -254,191 +199,14 @@ static int cumulative_colour(const ztv_map *m, const map_style *st, size_t k, ui
     return 1;
 }
 
-/* --- the frame -------------------------------------------------------------------------------- */
-
-enum { MARGIN = 20, TITLE_SCALE = 3, TEXT_SCALE = 2, PANEL_W = 400, LINE = 20, SWATCH_W = 34,
-       SWATCH_H = 20, MARKER_R = 7, TARGET_R = 4 };
-#define TOP (MARGIN + 7 * TITLE_SCALE + 10 + 7 * TEXT_SCALE + 16)
-
-typedef struct frame {
-    double zoom;          /* canvas pixels per map pixel */
-    int map_x, map_y;     /* the map's top-left corner on the canvas */
-    int map_w, map_h;     /* its size on the canvas */
-    int panel_x;
-    double metres_per_px; /* on the canvas */
-} frame;
-
-static frame frame_of(const ztv_map *m)
+void ztv_map_swatch(const legend_item *it, uint8_t rgb[3])
 {
-    frame f;
-    uint32_t longest = m->w > m->h ? m->w : m->h;
-    f.zoom = longest < ZTV_MAP_MIN_PIXELS ? (double)ZTV_MAP_MIN_PIXELS / longest : 1;
-    f.map_x = MARGIN, f.map_y = TOP;
-    f.map_w = (int)lround(m->w * f.zoom), f.map_h = (int)lround(m->h * f.zoom);
-    f.panel_x = MARGIN + f.map_w + MARGIN;
-    f.metres_per_px = m->info->grid.cell * m->step / f.zoom;
-    return f;
+    const uint8_t flat[3] = {ZTV_MAP_FLAT_GREY, ZTV_MAP_FLAT_GREY, ZTV_MAP_FLAT_GREY};
+    if (it->overlay == 1) blend(flat, it->rgb, ZTV_MAP_OPACITY, rgb);
+    else memcpy(rgb, it->rgb, 3);
 }
 
-/* Text in the panel's width, broken at spaces; returns the y below it. c NULL: measures only. */
-static int wrapped_text(canvas *c, int x, int y, int width, const char *text, const uint8_t rgb[3])
-{
-    int per_line = (width + 1) / (6 * TEXT_SCALE);
-    char line[256];
-    const char *p = text;
-    while (*p) {
-        int n = (int)strlen(p);
-        if (n > per_line) {
-            n = per_line;
-            while (n > 0 && p[n] != ' ') n--;
-            if (n == 0) n = per_line; /* one word longer than the line: cut it */
-        }
-        if (n > (int)sizeof line - 1) n = (int)sizeof line - 1;
-        memcpy(line, p, (size_t)n);
-        line[n] = '\0';
-        if (c) canvas_text(c, x, y, line, TEXT_SCALE, rgb);
-        y += LINE;
-        p += n;
-        while (*p == ' ') p++;
-    }
-    return y;
-}
-
-/* Text with a white halo, legible over any ground. */
-static void halo_text(canvas *c, int x, int y, const char *text)
-{
-    for (int dy = -2; dy <= 2; dy++)
-        for (int dx = -2; dx <= 2; dx++)
-            if (dx || dy) canvas_text(c, x + dx, y + dy, text, TEXT_SCALE, white);
-    canvas_text(c, x, y, text, TEXT_SCALE, black);
-}
-
-static void development_marker(canvas *c, double x, double y)
-{
-    canvas_disc(c, x, y, MARKER_R, black);
-    canvas_disc(c, x, y, MARKER_R - 2, white);
-    canvas_disc(c, x, y, 2.5, black);
-}
-
-static void filled_triangle(canvas *c, const double p[3][2], const uint8_t rgb[3])
-{
-    double ymin = fmin(p[0][1], fmin(p[1][1], p[2][1])), ymax = fmax(p[0][1], fmax(p[1][1], p[2][1]));
-    for (int y = (int)floor(ymin); y <= (int)ceil(ymax); y++) {
-        double yc = y + 0.5, lo = INFINITY, hi = -INFINITY;
-        for (int e = 0; e < 3; e++) {
-            const double *a = p[e], *b = p[(e + 1) % 3];
-            if ((yc < a[1]) == (yc < b[1])) continue;
-            double x = a[0] + (yc - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
-            lo = fmin(lo, x), hi = fmax(hi, x);
-        }
-        if (lo <= hi) canvas_rect(c, (int)lround(lo), y, (int)lround(hi) - 1, y, rgb);
-    }
-}
-
-/* "2 km", "500 m", "1.5 km": a length for a label. */
-static void length_text(double metres, char *out, size_t n)
-{
-    if (metres >= 1000) snprintf(out, n, "%g km", metres / 1000);
-    else snprintf(out, n, "%g m", metres);
-}
-
-/* The longest round length (1, 2 or 5 times a power of ten) that fits in max_px. */
-static double round_length(double metres_per_px, double max_px)
-{
-    double most = metres_per_px * max_px, best = 0;
-    for (double decade = pow(10, floor(log10(most))) / 10; decade <= most; decade *= 10)
-        for (int i = 0; i < 3; i++) {
-            double len = decade * (i == 0 ? 1 : i == 1 ? 2 : 5);
-            if (len <= most) best = len;
-        }
-    return best;
-}
-
-/* The scale bar at (x, y): two halves, black and white, "0", the middle and the length below. */
-static int scale_bar(canvas *c, int x, int y, double metres_per_px)
-{
-    double len = round_length(metres_per_px, PANEL_W - 60);
-    int px = (int)lround(len / metres_per_px);
-    if (c) {
-        canvas_rect(c, x, y, x + px, y + 9, black);
-        canvas_rect(c, x + px / 2 + 1, y + 1, x + px - 1, y + 8, white);
-        char text[32];
-        canvas_text(c, x - 5, y + 14, "0", TEXT_SCALE, black);
-        length_text(len, text, sizeof text);
-        canvas_text(c, x + px - canvas_text_width(text, TEXT_SCALE) / 2, y + 14, text, TEXT_SCALE, black);
-    }
-    return y + 14 + LINE;
-}
-
-static void north_arrow(canvas *c, int x, int y)
-{
-    canvas_text(c, x - 5, y, "N", TEXT_SCALE, black);
-    const double tip[3][2] = {{x, y + 18}, {x - 9, y + 46}, {x, y + 39}};
-    const double right[3][2] = {{x, y + 18}, {x + 9, y + 46}, {x, y + 39}};
-    filled_triangle(c, tip, black);
-    filled_triangle(c, right, frame_grey);
-}
-
-/* The legend panel from y; returns the y below it. c NULL: measures only. */
-static int draw_panel(canvas *c, const ztv_map *m, const map_style *st, const frame *f)
-{
-    const ztv_info *info = m->info;
-    int x = f->panel_x, y = f->map_y, width = PANEL_W;
-    char text[512];
-    y = wrapped_text(c, x, y, width, st->legend_title, black) + 6;
-    uint8_t flat[3] = {ZTV_MAP_FLAT_GREY, ZTV_MAP_FLAT_GREY, ZTV_MAP_FLAT_GREY};
-    for (int i = 0; i < st->n_items; i++) {
-        const legend_item *it = &st->item[i];
-        int text_x = x + SWATCH_W + 12;
-        if (c) {
-            uint8_t rgb[3];
-            if (it->overlay == 1) blend(flat, it->rgb, ZTV_MAP_OPACITY, rgb);
-            else memcpy(rgb, it->rgb, 3);
-            canvas_rect(c, x, y, x + SWATCH_W - 1, y + SWATCH_H - 1, frame_grey);
-            if (it->overlay == 2) hatch(c, x + 1, y + 1, x + SWATCH_W - 2, y + SWATCH_H - 2);
-            else canvas_rect(c, x + 1, y + 1, x + SWATCH_W - 2, y + SWATCH_H - 2, rgb);
-        }
-        int below = wrapped_text(c, text_x, y + 3, width - (text_x - x), it->label, black);
-        y = (below > y + SWATCH_H + 6 ? below : y + SWATCH_H + 6);
-    }
-    if (c) development_marker(c, x + SWATCH_W / 2.0, y + SWATCH_H / 2.0);
-    y = wrapped_text(c, x + SWATCH_W + 12, y + 3, width - SWATCH_W - 12,
-                     info->n_developments > 1 ? "developments" : "the development", black) + 6;
-    if (c && info->target_xy) {
-        canvas_disc(c, x + SWATCH_W / 2.0, y + SWATCH_H / 2.0, TARGET_R, white);
-        canvas_disc(c, x + SWATCH_W / 2.0, y + SWATCH_H / 2.0, TARGET_R - 1, black);
-    }
-    if (info->target_xy) y = wrapped_text(c, x + SWATCH_W + 12, y + 3, width - SWATCH_W - 12, "targets", black) + 6;
-    y += 8;
-    snprintf(text, sizeof text, "observer %g m above ground", info->observer_height);
-    y = wrapped_text(c, x, y, width, text, black);
-    if (isfinite(info->radius)) {
-        char radius[64];
-        length_text(info->radius, radius, sizeof radius);
-        snprintf(text, sizeof text, "radius %s from the targets", radius);
-        y = wrapped_text(c, x, y, width, text, black);
-    }
-    snprintf(text, sizeof text, "%u targets", info->n_targets);
-    y = wrapped_text(c, x, y, width, text, black);
-    if (info->curvature) snprintf(text, sizeof text, "earth curvature, refraction k = %g", info->refraction);
-    else snprintf(text, sizeof text, "no earth curvature");
-    y = wrapped_text(c, x, y, width, text, black) + 14;
-    y = scale_bar(c, x + 6, y, f->metres_per_px) + 10;
-    if (c) north_arrow(c, x + 12, y);
-    y += 58;
-    snprintf(text, sizeof text, "crs: %s", info->crs_name ? info->crs_name : info->crs_wkt ? "unnamed" : "local metres");
-    y = wrapped_text(c, x, y, width, text, black);
-    snprintf(text, sizeof text, "grid %u x %u cells of %g m", info->grid.nx, info->grid.ny, info->grid.cell);
-    y = wrapped_text(c, x, y, width, text, black);
-    if (m->step > 1) {
-        snprintf(text, sizeof text, "drawn: one cell in %u x %u", m->step, m->step);
-        y = wrapped_text(c, x, y, width, text, black);
-    }
-    return y;
-}
-
-/* The colour of every map pixel (RGB, and 1 in hatched where it is not computed). */
-static void map_colours(const ztv_map *m, const map_style *st, uint8_t *rgb, uint8_t *hatched)
+void ztv_map_colours(const ztv_map *m, const map_style *st, uint8_t *rgb)
 {
     for (uint32_t v = 0; v < m->h; v++)
         for (uint32_t u = 0; u < m->w; u++) {
@@ -446,8 +214,10 @@ static void map_colours(const ztv_map *m, const map_style *st, uint8_t *rgb, uin
             uint8_t *out = rgb + 3 * k, over[3];
             int drawn = isfinite(m->ground[k]) || m->cls[st->mode][k] == ZTV_NO_TERRAIN;
             int how = drawn ? st->colour(m, st, k, over) : 3;
-            hatched[k] = how == 3;
-            if (how == 3) continue;
+            if (how == 3) { /* not computed */
+                memcpy(out, outside_rgb, 3);
+                continue;
+            }
             if (how == 2) { /* opaque: no hillshade under it (none past the terrain's edge) */
                 memcpy(out, over, 3);
                 continue;
@@ -455,77 +225,6 @@ static void map_colours(const ztv_map *m, const map_style *st, uint8_t *rgb, uin
             memset(out, hillshade(m, u, v), 3);
             if (how == 1) blend(out, over, ZTV_MAP_OPACITY, out);
         }
-}
-
-static int draw_map(const ztv_map *m, const map_style *st, canvas *c, err_buf *err)
-{
-    const ztv_info *info = m->info;
-    frame f = frame_of(m);
-    int panel_bottom = draw_panel(NULL, m, st, &f);
-    int map_bottom = f.map_y + f.map_h, map_right = f.map_x + f.map_w;
-    uint32_t width = (uint32_t)f.panel_x + PANEL_W + MARGIN;
-    uint32_t height = (uint32_t)(panel_bottom > map_bottom ? panel_bottom : map_bottom) + MARGIN;
-    size_t n = (size_t)m->w * m->h;
-    uint8_t *rgb = malloc(n * 4); /* n RGB triples, then n hatched flags; freed below */
-    if (!rgb) return err_nomem(err, "out of memory drawing a %u x %u map", m->w, m->h);
-    if (canvas_init(c, width, height, white, err)) {
-        free(rgb);
-        return -1;
-    }
-    map_colours(m, st, rgb, rgb + 3 * n);
-    canvas_text(c, MARGIN, MARGIN, st->title, TITLE_SCALE, black);
-    char subtitle[256];
-    snprintf(subtitle, sizeof subtitle, "observer %g m above ground, %u target%s%s", info->observer_height,
-             info->n_targets, info->n_targets == 1 ? "" : "s",
-             info->n_developments > 1 ? ", several developments" : "");
-    canvas_text(c, MARGIN, MARGIN + 7 * TITLE_SCALE + 10, subtitle, TEXT_SCALE, frame_grey);
-    /* the map, each canvas pixel the map pixel under its centre */
-    for (int y = 0; y < f.map_h; y++) {
-        uint32_t v = (uint32_t)((y + 0.5) / f.zoom);
-        if (v >= m->h) v = m->h - 1;
-        for (int x = 0; x < f.map_w; x++) {
-            uint32_t u = (uint32_t)((x + 0.5) / f.zoom);
-            if (u >= m->w) u = m->w - 1;
-            size_t k = (size_t)v * m->w + u;
-            int cx = f.map_x + x, cy = f.map_y + y;
-            if (rgb[3 * n + k]) hatch(c, cx, cy, cx, cy);
-            else canvas_pixel(c, cx, cy, rgb + 3 * k);
-        }
-    }
-    free(rgb);
-    canvas_rect(c, f.map_x - 1, f.map_y - 1, map_right, f.map_y - 1, frame_grey);
-    canvas_rect(c, f.map_x - 1, map_bottom, map_right, map_bottom, frame_grey);
-    canvas_rect(c, f.map_x - 1, f.map_y - 1, f.map_x - 1, map_bottom, frame_grey);
-    canvas_rect(c, map_right, f.map_y - 1, map_right, map_bottom, frame_grey);
-    double px_per_m = 1.0 / f.metres_per_px;
-    double west = info->grid.x0 - 0.5 * info->grid.cell, north = info->grid.y0 + 0.5 * info->grid.cell;
-    /* the targets' positions, a dot each (a turbine's hub and blade tips make one), inside the map */
-    for (int pass = 0; pass < 2 && info->target_xy; pass++)
-        for (uint32_t t = 0; t < info->n_targets; t++) {
-            double x = f.map_x + (info->target_xy[t][0] - west) * px_per_m;
-            double y = f.map_y + (north - info->target_xy[t][1]) * px_per_m;
-            if (x < f.map_x || x > map_right || y < f.map_y || y > map_bottom) continue;
-            canvas_disc(c, x, y, pass ? TARGET_R - 1 : TARGET_R, pass ? black : white);
-        }
-    /* the developments, named when few */
-    for (uint32_t d = 0; d < info->n_developments && info->development_xy; d++) {
-        double x = f.map_x + (info->development_xy[d][0] - west) * px_per_m;
-        double y = f.map_y + (north - info->development_xy[d][1]) * px_per_m;
-        development_marker(c, x, y);
-    }
-    for (uint32_t d = 0; d < info->n_developments && info->development_xy && info->development_names &&
-                         info->n_developments <= 12; d++) {
-        const char *name = info->development_names[d];
-        if (!name || !*name) continue;
-        double x = f.map_x + (info->development_xy[d][0] - west) * px_per_m;
-        double y = f.map_y + (north - info->development_xy[d][1]) * px_per_m;
-        int tw = canvas_text_width(name, TEXT_SCALE);
-        int tx = (int)lround(x) + MARKER_R + 5;
-        if (tx + tw > map_right) tx = (int)lround(x) - MARKER_R - 5 - tw;
-        halo_text(c, tx, (int)lround(y) - 7, name);
-    }
-    draw_panel(c, m, st, &f);
-    return 0;
 }
 
 /* --- the three maps --------------------------------------------------------------------------- */
@@ -543,9 +242,8 @@ static int mode_missing(const ztv_map *m, ztv_mode mode, err_buf *err)
     return err_fail(err, ERR_INTERNAL, "the visibility map has no %s results to draw", ztv_mode_name(mode));
 }
 
-int ztv_map_draw_mode(const ztv_map *m, ztv_mode mode, canvas *out, err_buf *err)
+int ztv_map_write_mode(const ztv_map *m, ztv_mode mode, FILE *png, FILE *pdf, err_buf *err)
 {
-    memset(out, 0, sizeof *out);
     if (mode_missing(m, mode, err)) return -1;
     map_style st = {.mode = mode, .colour = fraction_colour};
     snprintf(st.title, sizeof st.title, "zone of theoretical visibility: %s", mode_title(mode));
@@ -559,12 +257,11 @@ int ztv_map_draw_mode(const ztv_map *m, ztv_mode mode, canvas *out, err_buf *err
     uint8_t flat[3] = {ZTV_MAP_FLAT_GREY, ZTV_MAP_FLAT_GREY, ZTV_MAP_FLAT_GREY};
     add_item(&st, flat, 0, "0 % (not visible)");
     add_class_items(m, &st, mode);
-    return draw_map(m, &st, out, err);
+    return ztv_map_page(m, &st, png, pdf, err);
 }
 
-int ztv_map_draw_hidden(const ztv_map *m, ztv_mode mode, canvas *out, err_buf *err)
+int ztv_map_write_hidden(const ztv_map *m, ztv_mode mode, FILE *png, FILE *pdf, err_buf *err)
 {
-    memset(out, 0, sizeof *out);
     if (mode_missing(m, ZTV_BARE, err) || mode_missing(m, mode, err)) return -1;
     map_style st = {.mode = mode, .colour = hidden_colour};
     snprintf(st.title, sizeof st.title, "visibility hidden by screening: %s", mode_title(mode));
@@ -575,7 +272,7 @@ int ztv_map_draw_hidden(const ztv_map *m, ztv_mode mode, canvas *out, err_buf *e
     uint8_t flat[3] = {ZTV_MAP_FLAT_GREY, ZTV_MAP_FLAT_GREY, ZTV_MAP_FLAT_GREY};
     add_item(&st, flat, 0, "not visible on bare earth");
     add_class_items(m, &st, mode);
-    return draw_map(m, &st, out, err);
+    return ztv_map_page(m, &st, png, pdf, err);
 }
 
 /* "A only", "A + B": the developments of a combination of bits. */
@@ -593,9 +290,8 @@ static void combination_label(const ztv_info *info, uint32_t bits, char *out, si
     if (popcount(bits) == 1 && used + 6 < n) strcat(out, " only");
 }
 
-int ztv_map_draw_cumulative(const ztv_map *m, ztv_mode mode, canvas *out, err_buf *err)
+int ztv_map_write_cumulative(const ztv_map *m, ztv_mode mode, FILE *png, FILE *pdf, err_buf *err)
 {
-    memset(out, 0, sizeof *out);
     if (mode_missing(m, mode, err)) return -1;
     map_style st = {.mode = mode, .colour = cumulative_colour};
     uint32_t n = m->info->n_developments;
@@ -620,5 +316,5 @@ int ztv_map_draw_cumulative(const ztv_map *m, ztv_mode mode, canvas *out, err_bu
     uint8_t flat[3] = {ZTV_MAP_FLAT_GREY, ZTV_MAP_FLAT_GREY, ZTV_MAP_FLAT_GREY};
     add_item(&st, flat, 0, "none");
     add_class_items(m, &st, mode);
-    return draw_map(m, &st, out, err);
+    return ztv_map_page(m, &st, png, pdf, err);
 }

@@ -10,15 +10,14 @@
 #include <sys/stat.h>
 
 #include "io/atomic_file.h"
-#include "io/raster_canvas.h"
 #include "ztv/ztv_geotiff.h"
 #include "ztv/ztv_layers.h"
 #include "ztv/ztv_map.h"
 #include "ztv/ztv_qml.h"
 #include "ztv/ztv_summary.h"
 
-#define MAX_FILES 24 /* pictures and tables: 3 modes, 2 hidden, 3 cumulative, 2 summaries, the
-                     * GeoPackage, its 3 styles and a style per mode */
+#define MAX_FILES 32 /* pictures (PNG and PDF each) and tables: 3 modes, 2 hidden, 3 cumulative, 2
+                     * summaries, the GeoPackage, its 3 styles and a style per mode */
 
 struct ztv_output {
     const ztv_info *info;            /* borrowed */
@@ -220,23 +219,21 @@ fail:
 
 /* --- the end ---------------------------------------------------------------------------------- */
 
-typedef int (*draw_fn)(const ztv_map *, ztv_mode, canvas *, err_buf *);
+typedef int (*draw_fn)(const ztv_map *, ztv_mode, FILE *png, FILE *pdf, err_buf *);
 
-/* Draws one map and writes it as a PNG into a new temporary, kept for the renaming. */
+/* Draws one map and writes it as a PNG and a PDF into new temporaries, kept for the renaming. */
 static int write_picture(ztv_output *o, draw_fn draw, int m, const char *prefix, err_buf *err)
 {
-    char path[ATOMIC_PATH_MAX];
-    file_path(o, prefix, m, ".png", path, sizeof path);
-    canvas c;
-    if (draw(o->map, (ztv_mode)m, &c, err)) return err_prefix(err, "%s: ", path);
-    atomic_file *af = &o->files[o->n_files];
-    int rc = atomic_file_open_stream(af, path, err) ? 0 : -1;
-    if (!rc) {
-        o->n_files++;
-        rc = canvas_write_png_into(&c, af, err);
-    }
-    canvas_free(&c);
-    return rc;
+    char png[ATOMIC_PATH_MAX], pdf[ATOMIC_PATH_MAX];
+    file_path(o, prefix, m, ".png", png, sizeof png);
+    file_path(o, prefix, m, ".pdf", pdf, sizeof pdf);
+    FILE *f_png = atomic_file_open_stream(&o->files[o->n_files], png, err);
+    if (!f_png) return -1;
+    o->n_files++;
+    FILE *f_pdf = atomic_file_open_stream(&o->files[o->n_files], pdf, err);
+    if (!f_pdf) return -1;
+    o->n_files++;
+    return draw(o->map, (ztv_mode)m, f_png, f_pdf, err) ? err_prefix(err, "%s: ", png) : 0;
 }
 
 typedef int (*table_fn)(const ztv_summary *, FILE *, err_buf *);
@@ -303,9 +300,9 @@ int ztv_output_finish(ztv_output *o, err_buf *err)
     }
     for (int m = 0; m < ZTV_MODES; m++) {
         if (!info->computed[m]) continue;
-        if (write_picture(o, ztv_map_draw_mode, m, "ztv_", err)) return -1;
-        if (screened(info, m) && write_picture(o, ztv_map_draw_hidden, m, "ztv_hidden_", err)) return -1;
-        if (info->n_developments > 1 && write_picture(o, ztv_map_draw_cumulative, m, "ztv_cumulative_", err))
+        if (write_picture(o, ztv_map_write_mode, m, "ztv_", err)) return -1;
+        if (screened(info, m) && write_picture(o, ztv_map_write_hidden, m, "ztv_hidden_", err)) return -1;
+        if (info->n_developments > 1 && write_picture(o, ztv_map_write_cumulative, m, "ztv_cumulative_", err))
             return -1;
     }
     if (write_table(o, ztv_summary_write_csv, "ztv_summary.csv", err) ||

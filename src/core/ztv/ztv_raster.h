@@ -74,7 +74,7 @@ typedef struct ztv_block {
 /* A viewpoint of the study, as the GeoPackage beside the map lists it (ztv/ztv_layers.h). */
 typedef struct ztv_viewpoint {
     const char *name;            /* borrowed from the scene file */
-    uint32_t number;             /* 1, 2, ...: its place in the study's order */
+    uint32_t number;             /* 1, 2, ...: scene_file_viewpoint_number, as the sheets number it */
     double xy[2];                /* local horizontal position */
     double eye_height;           /* metres above the ground */
     double heading;              /* degrees clockwise from grid north, 0 to 360; NAN: straight up or down */
@@ -109,11 +109,17 @@ typedef struct ztv_info {
                                             * (the centre of its targets) */
     const double (*target_xy)[2];          /* n_targets: local horizontal positions */
     const uint32_t *target_development;    /* n_targets: development index */
-    const ztv_viewpoint *study_views;      /* n_study_views, the study's viewpoints in its order, as
-                                            * the GeoPackage lists them (may be 0) */
+    const ztv_viewpoint *study_views;      /* n_study_views, the viewpoints the maps mark and the
+                                            * GeoPackage lists, in the study's order (may be 0) */
     uint32_t n_study_views;
     const ztv_structure *structures;       /* n_structures (may be 0: targets given by hand) */
     uint32_t n_structures;
+    /* for the maps' title block and marks (ztv_map.h); any may be NULL or 0 */
+    const char *project;                   /* the scene file's name */
+    const char *dtm;                       /* the DTM's file name */
+    const char *date;                      /* the day the map is made, "YYYY-MM-DD" */
+    const double *target_heights;          /* metres above the ground, n_target_heights */
+    uint32_t n_target_heights;
 } ztv_info;
 
 #endif

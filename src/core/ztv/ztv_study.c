@@ -14,6 +14,7 @@
 #include "scene_file/scene_file.h"
 #include "ztv/ztv_features.h"
 #include "ztv/ztv_grid.h"
+#include "ztv/ztv_labels.h"
 #include "ztv/ztv_output.h"
 #include "ztv/ztv_trace.h"
 
@@ -112,7 +113,8 @@ static void describe_ground(const scene *sc, const ztv_grid *g, const run_parts 
 /* Part 0 opens the output (the folder created when missing) for the job's grid and targets,
  * described in *info, which the caller keeps until the output is freed (ztv_output.h). */
 static int open_output(const scene_file *sf, const scene *sc, const ztv_job *job, const ztv_study_options *o,
-                       const char *ground, ztv_features *features, ztv_info *info, ztv_output **out, err_buf *err)
+                       const char *ground, ztv_features *features, ztv_info *info, ztv_labels *labels,
+                       ztv_output **out, err_buf *err)
 {
     const ztv_targets *t = job->targets;
     if (ztv_features_gather(features, sf, sc, o->views, o->n_views, err)) return err_default(err, ERR_NOMEM);
@@ -127,6 +129,7 @@ static int open_output(const scene_file *sf, const scene *sc, const ztv_job *job
     if (sf->site.crs_wkt) memcpy(info->origin, sf->site.origin, sizeof info->origin);
     info->computed[ZTV_BARE] = 1;
     info->computed[job->screened] = 1;
+    ztv_labels_fill(labels, sf, info);
     if (output_folder_make(o->dir, err) || !(*out = ztv_output_open(o->dir, info, err)))
         return err_default(err, ERR_OUTPUT);
     return 0;
@@ -183,6 +186,7 @@ int ztv_study_run(const scene_file *sf, const scene *sc, const ztv_study_options
     ztv_output *out = NULL;
     ztv_info info; /* what out describes; lives as long as out */
     ztv_features features = {0}; /* the viewpoints and structures info points to */
+    ztv_labels labels = {0}; /* the names info points at */
     ztv_job job = {.scene = sc, .accel = &acc, .targets = &targets, .observer_height = o.eye, .radius = o.radius,
                    .screened = (ztv_mode)o.screening, .earth = o.flat_earth ? NULL : &sc->earth,
                    .threads = o.threads, .quiet = o.quiet, .part = (uint32_t)parts->part,
@@ -209,7 +213,7 @@ int ztv_study_run(const scene_file *sf, const scene *sc, const ztv_study_options
     phase_stop(times, PHASE_BVH, t_phase);
     char ground[256];
     describe_ground(sc, &job.grid, parts, o.quiet, ground, sizeof ground);
-    if (!parts->part && open_output(sf, sc, &job, &o, ground, &features, &info, &out, err)) goto done; /* part 0 alone writes */
+    if (!parts->part && open_output(sf, sc, &job, &o, ground, &features, &info, &labels, &out, err)) goto done; /* part 0 alone writes */
     rc = trace_and_write(&job, parts, out, times, o.quiet, err);
 done:
     ztv_output_free(out);

@@ -1,0 +1,132 @@
+/* sheet_table.c — the text of a sheet's table (sheet_table.h). */
+#include "sheet/sheet_table.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#define DEG (M_PI / 180.0)
+
+double sheet_viewing_distance(double width_mm, double hfov_deg, int cylindrical)
+{
+    return cylindrical ? width_mm / (hfov_deg * DEG) : 0.5 * width_mm / tan(0.5 * hfov_deg * DEG);
+}
+
+typedef struct table {
+    sheet_row *rows;
+    uint32_t n;
+} table;
+
+static void row(table *t, const char *label, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+static void row(table *t, const char *label, const char *fmt, ...)
+{
+    if (t->n >= SHEET_ROWS_MAX) return;
+    sheet_row *r = &t->rows[t->n++];
+    snprintf(r->label, sizeof r->label, "%s", label);
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(r->text, sizeof r->text, fmt, ap);
+    va_end(ap);
+}
+
+static void place_rows(table *t, const sheet_view *v)
+{
+    row(t, "Viewpoint", "%u  %s", v->number, v->name);
+    if (v->crs_name) row(t, "Grid reference", "E %.1f  N %.1f  (%s)", v->easting, v->northing, v->crs_name);
+    else row(t, "Grid reference", "x %.1f  y %.1f  (local metres: the scene has no site)", v->easting, v->northing);
+    if (isfinite(v->ground_level)) row(t, "Ground level", "%.1f m", v->ground_level);
+    else row(t, "Ground level", "off the surveyed terrain");
+    row(t, "Eye height", "%.2f m above ground", v->eye_height);
+    row(t, "View direction", "%.1f\u00b0 from grid north, pitch %.1f\u00b0 %s", v->heading_deg, fabs(v->pitch_deg),
+        v->pitch_deg >= 0 ? "up" : "down");
+    if (v->nearest)
+        row(t, "Nearest development", "%s (%s): %.0f m at bearing %.1f\u00b0; %u structure%s", v->nearest,
+            v->development ? v->development : "development", v->distance_m, v->bearing_deg, v->structures,
+            v->structures == 1 ? "" : "s");
+    else row(t, "Nearest development", "none marked in the scene");
+}
+
+static void time_rows(table *t, const sheet_view *v)
+{
+    if (v->local_time[0]) row(t, "Date and local time", "%s", v->local_time);
+    else row(t, "Date and local time", "not given: the scene places the sun by azimuth and elevation alone");
+    row(t, "Sun", "azimuth %.1f\u00b0, elevation %.1f\u00b0", v->sun_azimuth_deg, v->sun_elevation_deg);
+}
+
+static void lens_rows(table *t, const sheet *sh)
+{
+    const sheet_view *v = &sh->view;
+    row(t, "Camera", "sylva %s path tracer; a rendered view, no photograph", SYLVA_VERSION);
+    if (v->cylindrical) {
+        row(t, "Projection", "cylindrical panorama (%s)", v->frame);
+        row(t, "Lens (focal length)", "none: a cylindrical projection %.1f\u00b0 across", v->hfov_deg);
+        row(t, "Sensor width", "none (cylindrical)");
+        row(t, "35 mm equivalent", "none (cylindrical)");
+    } else {
+        row(t, "Projection", "planar, rectilinear (%s)", v->frame);
+        row(t, "Lens (focal length)", "%.1f mm", v->focal_mm);
+        row(t, "Sensor width", "%.1f mm", v->sensor_mm);
+        row(t, "35 mm equivalent", "%.1f mm", v->focal35_mm);
+    }
+    row(t, "Horizontal field of view", "%.2f\u00b0", v->hfov_deg);
+    row(t, "Vertical field of view", "%.2f\u00b0", v->vfov_deg);
+    row(t, "Render", "%u \u00d7 %u pixels, %u samples a pixel", v->width, v->height, sh->spp);
+    row(t, "Visualisation type", "Type 2 (TGN 06/19): a 3D model view and wireline, no photograph");
+}
+
+static void print_rows(table *t, const sheet *sh, const sheet_panels *p, double k)
+{
+    const sheet_view *v = &sh->view;
+    const page_size *pg = &sh->page;
+    int a3 = fabs(pg->width_mm - SHEET_A3_WIDTH) < 0.05 && fabs(pg->height_mm - SHEET_A3_HEIGHT) < 0.05;
+    row(t, "Print size", "%s%.0f \u00d7 %.0f mm at %.0f dpi; print at 100%%, not fitted to the paper",
+        a3 ? "A3 landscape, " : "", pg->width_mm, pg->height_mm, pg->dpi);
+    row(t, "Proposed view printed", "%.0f \u00d7 %.0f mm; view it from %.0f mm", p->main_mm * k, p->height_main_mm * k,
+        sheet_viewing_distance(p->main_mm * k, v->hfov_deg, v->cylindrical));
+    row(t, "Existing view, wireline", "%.0f \u00d7 %.0f mm each; view them from %.0f mm", p->side_mm * k,
+        p->height_side_mm * k, sheet_viewing_distance(p->side_mm * k, v->hfov_deg, v->cylindrical));
+}
+
+static void fit_row(table *t, const sheet *sh)
+{
+    const sheet_view *v = &sh->view;
+    if (!v->structures) return;
+    char span[160];
+    snprintf(span, sizeof span, "%.1f\u00b0 to %.1f\u00b0 across and %.1f\u00b0 to %.1f\u00b0 up from the view's centre",
+             v->dev_left_deg, v->dev_right_deg, v->dev_low_deg, v->dev_high_deg);
+    if (v->development_fits) {
+        row(t, "Development in frame", "whole: %s", span);
+        return;
+    }
+    row(t, "Development in frame",
+        "NOT whole: it spans %s; the frame holds \u00b1%.1f\u00b0 \u00d7 \u00b1%.1f\u00b0. The view is the viewpoint's, "
+        "pitched %.1f\u00b0 %s, not tilted further; %s%s", span, 0.5 * v->hfov_deg, 0.5 * v->vfov_deg,
+        fabs(v->pitch_deg), v->pitch_deg >= 0 ? "up" : "down",
+        v->cylindrical      ? "the panorama is the study's widest frame"
+        : sh->wider_frames ? "the study's other frames may show more: "
+                           : "render the study's cylindrical_90 frame for a panorama",
+        !v->cylindrical && sh->wider_frames ? sh->wider_frames : "");
+}
+
+static void check_rows(table *t, const sheet *sh)
+{
+    const scene *s = sh->s;
+    if (s->earth.curvature)
+        row(t, "Earth curvature", "on, refraction k = %.2f, radius %.0f km", s->earth.refraction, s->earth.radius / 1000);
+    else row(t, "Earth curvature", "off (a flat Earth)");
+    row(t, "Camera match", "none: no photograph was matched, so there are no residuals");
+    row(t, "POV-Ray cross-check", "not run");
+}
+
+uint32_t sheet_table(const sheet *sh, const sheet_panels *p, double scale, sheet_row rows[SHEET_ROWS_MAX])
+{
+    table t = {rows, 0};
+    place_rows(&t, &sh->view);
+    time_rows(&t, &sh->view);
+    lens_rows(&t, sh);
+    print_rows(&t, sh, p, scale);
+    fit_row(&t, sh);
+    check_rows(&t, sh);
+    return t.n;
+}

@@ -1,0 +1,36 @@
+/* sheet_table.h — the rows of a sheet's table of facts, as label and text (sheet.h): the
+ * viewpoint, grid reference, ground level, eye height, view direction, nearest development with
+ * its distance and bearing, date and local time, sun, camera, projection, focal length, sensor
+ * width, 35 mm equivalent, fields of view, render size, visualisation Type, print size, each
+ * panel's printed size and viewing distance, the development in the frame, Earth curvature, the
+ * camera match and the POV-Ray cross-check. */
+#ifndef SYLVA_SHEET_TABLE_H
+#define SYLVA_SHEET_TABLE_H
+
+#include <stddef.h>
+
+#include "sheet/sheet_content.h"
+
+#define SHEET_ROWS_MAX 32
+#define SHEET_TEXT_MAX 320
+
+typedef struct sheet_row {
+    char label[48];
+    char text[SHEET_TEXT_MAX];
+} sheet_row;
+
+/* The printed panels: the proposed view main_mm wide, the two others side_mm wide. */
+typedef struct sheet_panels {
+    double main_mm, side_mm, height_main_mm, height_side_mm;
+} sheet_panels;
+
+/* The distance in millimetres from which a picture of horizontal field hfov_deg printed width_mm
+ * wide shows the view at its true size: planar (width / 2) / tan(hfov / 2); a cylindrical
+ * panorama the radius of the cylinder it wraps, width / hfov in radians. */
+double sheet_viewing_distance(double width_mm, double hfov_deg, int cylindrical);
+
+/* Fills rows with sh's table for panels p (with the page's scale, millimetres printed per
+ * millimetre laid out). Returns the number of rows. */
+uint32_t sheet_table(const sheet *sh, const sheet_panels *p, double scale, sheet_row rows[SHEET_ROWS_MAX]);
+
+#endif

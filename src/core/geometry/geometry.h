@@ -7,6 +7,8 @@
  *   water_surface.h   the water over the terrain: its rectangle and its mesh
  *   cutout.h          alpha cut-outs: which materials and triangles, the alpha test, the split
  *                     of a mesh into opaque and cut-out triangles
+ *   cutout_outline.h  a cut-out texture's leaf as one opaque polygon, laid over its triangles
+ *                     (the cross-check's leaves drawn as outlines)
  *   texture_lookup.h  the nearest texel of a texture, sRGB decoding
  *   light_summary.h   the sun and the sky, with the ambient term and the sky's mean radiance
  *   sky_preetham.h    the Preetham daylight sky model the light summary evaluates
@@ -35,6 +37,7 @@
 #include "geometry/camera_project.h"
 #include "geometry/crown_hull.h"
 #include "geometry/cutout.h"
+#include "geometry/cutout_outline.h"
 #include "geometry/ground_cover.h"
 #include "geometry/ground_cover_models.h"
 #include "geometry/ground_cover_place.h"

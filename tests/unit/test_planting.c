@@ -113,11 +113,15 @@ TEST(plants_keep_their_place_and_follow_the_curve)
         const instance *p = &a->instances[i], *q = &b->instances[i];
         CHECK_INT(p->planted, i + 1);
         CHECK_INT(q->planted, p->planted);
-        CHECK_INT(a->prototypes[p->prototype].species, b->prototypes[q->prototype].species);
+        /* year 1 a young plant, year 15 its species' model: the same species */
+        CHECK_INT(scene_plant_species(a, a->prototypes[p->prototype].species),
+                  scene_plant_species(b, b->prototypes[q->prototype].species));
+        CHECK(a->species[a->prototypes[p->prototype].species].young_stock_of != 0);
+        CHECK_INT(b->species[b->prototypes[q->prototype].species].young_stock_of, 0);
         CHECK_NEAR(p->xf.m[0][3], q->xf.m[0][3], 1e-6);
         CHECK_NEAR(p->xf.m[1][3], q->xf.m[1][3], 1e-6);
         CHECK_NEAR(p->xf.m[0][0] / p->xf.m[2][2], q->xf.m[0][0] / q->xf.m[2][2], 1e-5); /* the same turn */
-        uint32_t sp = a->prototypes[p->prototype].species;
+        uint32_t sp = scene_plant_species(a, a->prototypes[p->prototype].species);
         double full = sp == 0 ? 12 : 3, h1 = instance_height(a, i), h15 = instance_height(b, i);
         /* the stock's age from its height, then 14 years more: 14 / 60 of the full height */
         double stock = h1 - full / 60;
@@ -242,6 +246,64 @@ TEST(belt_hides_the_mast_once_above_the_sightline)
     }
 }
 
+/* A young plant (planting_stock.h) is its stock's form, no taller than the curve's height: a
+ * whip in its first year a stem with a few short shoots (nothing farther than 15 % of its height
+ * from its stem, no triangle above its leader's tip) and its guard; the same young plants from
+ * two builds; the model itself from the end of the establishment years. */
+TEST(young_plants_are_their_stock)
+{
+    const char *plan = "planting:\n  year: 2027\n  belts:\n    - {line: [[0, -9], [0, 9]], species: screen, spacing: 1}\n";
+    err_buf err = {{0}};
+    scene *a = build_at(plan, 1, &err), *again = build_at(plan, 1, &err), *grown = build_at(plan, 8, &err);
+    CHECK(a && again && grown);
+    if (a && again && grown) {
+        CHECK_INT(a->n_prototypes, again->n_prototypes);
+        for (uint32_t p = 0; p < a->n_prototypes && p < again->n_prototypes; p++) {
+            const mesh *m = a->prototypes[p].mesh, *n = again->prototypes[p].mesh;
+            CHECK(m->nv == n->nv && m->nt == n->nt && !memcmp(m->pos, n->pos, 3 * sizeof(float) * m->nv));
+            if (!a->species[a->prototypes[p].species].young_stock_of) continue;
+            float lo[3], hi[3];
+            mesh_bounds(m, lo, hi);
+            double h = a->prototypes[p].height;
+            CHECK(hi[2] <= h + 1e-4 && hi[2] > 0.99 * h);
+            CHECK(fmax(fmax(-lo[0], hi[0]), fmax(-lo[1], hi[1])) < 0.15 * h);
+        }
+        for (uint32_t i = 0; i < grown->n_instances; i++)
+            CHECK_INT(grown->species[grown->prototypes[grown->instances[i].prototype].species].young_stock_of, 0);
+    } else {
+        fprintf(stderr, "%s\n", err.msg);
+    }
+    scene_free(a), scene_free(again), scene_free(grown);
+}
+
+/* A belt of young plants screens as little as their stems, shoots and leaves do: the sightlines
+ * to a target 0.5 m up pass the belt of 12 m boxes planted as whips 1.25 to 1.9 m up, below the
+ * plants' tops at year 6 (1.8-2.1 m); most of them pass between the young plants, and at year 10,
+ * when the plants are the boxes 2.6 m tall and more, none does. */
+TEST(young_belt_is_see_through_in_the_map)
+{
+    const char *tail = "ztv: {targets: [{position: [100, 0], height_above_ground: 0.5}]}\n"
+                       "planting:\n  year: 2027\n  belts:\n    - {line: [[0, -9.9], [0, 9.9]], species: screen, "
+                       "spacing: 0.25, rows: 2, row_spacing: 0.2}\n";
+    for (int y = 0; y < 2; y++) {
+        sight_map m = {0};
+        CHECK_INT(map_at(tail, y ? 10 : 6, &m), 0);
+        uint32_t cells = 0, seeing = 0;
+        for (uint32_t j = 0; m.visible && j < m.ny; j++)
+            for (uint32_t i = 0; i < m.nx; i++) {
+                size_t k = (size_t)j * m.nx + i;
+                double x = -100 + 5.0 * i;
+                if (x > -20 || m.cls[k] != ZTV_OPEN) continue;
+                cells++, seeing += m.visible[k] > 0;
+            }
+        CHECK(cells > 20);
+        if (y) CHECK_INT(seeing, 0);
+        else CHECK(seeing > cells / 2);
+        fprintf(stderr, "year %d: %u of %u observers see the target\n", y ? 10 : 6, seeing, cells);
+        free(m.visible), free(m.cls);
+    }
+}
+
 static film *render_at(const char *tail, double year, const char *season, scene **out)
 {
     err_buf err = {{0}};
@@ -362,4 +424,5 @@ TEST(plan_from_a_vector_file)
 }
 
 TEST_LIST(TEST_CASE(bad_plans_refused_at_their_place), TEST_CASE(plan_from_a_vector_file), TEST_CASE(year_1_winter_and_year_15_summer_differ_in_planted_and_seasonal_plants), TEST_CASE(plants_keep_their_place_and_follow_the_curve),
-          TEST_CASE(felling_and_thinning), TEST_CASE(belt_hides_the_mast_once_above_the_sightline))
+          TEST_CASE(felling_and_thinning), TEST_CASE(belt_hides_the_mast_once_above_the_sightline),
+          TEST_CASE(young_plants_are_their_stock), TEST_CASE(young_belt_is_see_through_in_the_map))

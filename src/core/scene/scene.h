@@ -50,6 +50,8 @@ typedef struct species {
     uint32_t n_variants;
     int ground_cover;         /* 1: grass and herbs placed around the camera (ground_cover_place.h),
                                  not plants of the scene: no canopy, no crown proxy */
+    uint32_t young_stock_of;  /* 0, or 1 + the species whose planted young stock this one draws
+                                 (scene_build/planting_stock.h): the same plants, young; same name */
 } species;
 
 typedef struct instance {
@@ -90,6 +92,9 @@ typedef struct scene {
     earth_settings earth;
     snow_settings snow;         /* snow on the procedural ground (geometry/ground_cover.h) */
     uint32_t season_day;        /* the day of the year shown (season/phenology.h); 0: not given */
+    int planting_shown;         /* 1: the planting plan stands planting_years after its year
+                                   (scene_build/scene_planting.h); 0: not shown, or none */
+    double planting_years, planting_year; /* years since planting shown; the plan's calendar year */
 
     sylva_heightfield *terrain; /* owned (with its z and material arrays), or NULL: the ground
                                    as rendered, refined around the camera */
@@ -157,6 +162,12 @@ static inline int scene_instance_is_ground_cover(const scene *s, uint32_t i)
 {
     uint32_t sp = s->prototypes[s->instances[i].prototype].species;
     return sp < s->n_species && s->species[sp].ground_cover;
+}
+
+/* The species a plant of species sp is: sp itself, or the species whose young stock sp draws. */
+static inline uint32_t scene_plant_species(const scene *s, uint32_t sp)
+{
+    return sp < s->n_species && s->species[sp].young_stock_of ? s->species[sp].young_stock_of - 1 : sp;
 }
 
 /* The transform of a plant: translate to p, rotate by rot_deg about +Z, scale uniformly. */

@@ -301,7 +301,8 @@ static int build_woodland(scene *s, const scene_file *sf, const plugin_registry 
 
 /* The season on the scene file's day, species by species (scene species i is scene-file species i;
  * ground cover and the flowers come after them): blossom first, while the leaves it grows from are
- * all there, then leaf fall and autumn colour, then spring's fresh leaves. */
+ * all there, then leaf fall and autumn colour, then spring's fresh leaves; a planting plan's young
+ * plants as their species. */
 static int apply_season(scene *s, const scene_file *sf, err_buf *err)
 {
     const uint32_t day = sf->season.day;
@@ -312,6 +313,14 @@ static int apply_season(scene *s, const scene_file *sf, err_buf *err)
         if (scene_apply_season(s, i, &sf->species[i].phenology, day, err)) return -1;
     for (uint32_t i = 0; i < sf->n_species && i < s->n_species; i++)
         if (scene_apply_fresh_leaves(s, i, &sf->species[i].phenology, day, err)) return -1;
+    /* a planting plan's young plants follow their species' year (they do not flower yet) */
+    for (uint32_t i = sf->n_species; i < s->n_species; i++) {
+        uint32_t of = scene_plant_species(s, i);
+        if (of == i || of >= sf->n_species) continue;
+        if (scene_apply_season(s, i, &sf->species[of].phenology, day, err) ||
+            scene_apply_fresh_leaves(s, i, &sf->species[of].phenology, day, err))
+            return -1;
+    }
     return 0;
 }
 

@@ -7,6 +7,7 @@
 
 #include "scene_build/planting_growth.h"
 #include "scene_build/planting_layout.h"
+#include "scene_build/planting_stock.h"
 #include "scene_build/scene_trees.h"
 #include "site/terrain_extent.h"
 
@@ -60,9 +61,20 @@ typedef struct planting_tally {
     double lowest, tallest;
 } planting_tally;
 
-/* Plant p (number id in the plan) at its age after `years`. */
+/* A young plant: young prototype proto standing at t's place, scaled to t's height. Returns as
+ * scene_place_sized_tree does. */
+static int place_young(scene *s, uint32_t proto, const tree_spec *t, err_buf *err)
+{
+    double z = 0;
+    if (s->terrain && scene_terrain_height(s, t->position[0], t->position[1], &z)) return 1;
+    double p[3] = {t->position[0], t->position[1], z};
+    xform3x4 xf = plant_transform(p, t->rotation_deg, t->height / s->prototypes[proto].height);
+    return scene_add_instance(s, proto, &xf, err) < 0 ? -1 : 0;
+}
+
+/* Plant p (number id in the plan) at its age after `years`: young, or its species' model. */
 static int plant_one(scene *s, const scene_file *sf, const planted_plant *p, uint32_t id, double years,
-                     planting_tally *tally, err_buf *err)
+                     const planting_young *young, planting_tally *tally, err_buf *err)
 {
     const planting_spec *plan = &sf->planting;
     const planting_feature *f = &plan->features[p->feature];
@@ -82,7 +94,8 @@ static int plant_one(scene *s, const scene_file *sf, const planted_plant *p, uin
                    .height = planting_height_at(s, p->species, plan->full_grown_age, age),
                    .age = fmax(1e-9, fmin(1.0, age / plan->full_grown_age)), .rotation_deg = p->rotation_deg,
                    .feature = f->name};
-    int rc = scene_place_sized_tree(s, &t, 0, err);
+    int64_t proto = planting_young_prototype(young, p, id);
+    int rc = proto >= 0 ? place_young(s, (uint32_t)proto, &t, err) : scene_place_sized_tree(s, &t, 0, err);
     if (rc < 0) return err_prefix(err, "planting: ");
     if (rc == 1) {
         tally->outside++;
@@ -108,18 +121,24 @@ int scene_build_planting(scene *s, const scene_file *sf, const build_options *op
                     "shows it N years after planting)\n", plan->year);
         return 0;
     }
+    s->planting_shown = 1, s->planting_years = opt->planting_years, s->planting_year = plan->year;
     uint32_t felled = fell(s, plan), n = 0;
     planted_plant *plants = planting_layout_new(plan, PLANTING_MAX_PLANTS, &n, err); /* owned here */
     if (!plants) return err_prefix(err, "planting: ");
     planting_tally tally = {.lowest = INFINITY, .tallest = 0};
-    int rc = 0;
-    for (uint32_t i = 0; i < n && !rc; i++) rc = plant_one(s, sf, &plants[i], i, opt->planting_years, &tally, err);
+    planting_young young; /* its arrays owned here */
+    int rc = planting_young_build(s, plan, plants, n, opt->planting_years, &young, err);
+    for (uint32_t i = 0; i < n && !rc; i++)
+        rc = plant_one(s, sf, &plants[i], i, opt->planting_years, &young, &tally, err);
+    planting_young_release(&young);
     free(plants);
     if (rc) return -1;
     if (!opt->quiet) {
         fprintf(stderr, "planting: year %g after planting (%.0f): %u plants", opt->planting_years,
                 plan->year + floor(opt->planting_years), tally.placed);
         if (tally.placed) fprintf(stderr, ", %.2f-%.2f m tall", tally.lowest, tally.tallest);
+        if (tally.placed && opt->planting_years < PLANTING_ESTABLISHMENT_YEARS)
+            fprintf(stderr, ", young (as the nursery stock grows, until year %g)", PLANTING_ESTABLISHMENT_YEARS);
         if (tally.thinned) fprintf(stderr, ", %u thinned", tally.thinned);
         if (tally.outside) fprintf(stderr, ", %u past the terrain's edge left out", tally.outside);
         fprintf(stderr, "; %u existing plants felled\n", felled);

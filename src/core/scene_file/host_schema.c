@@ -739,7 +739,7 @@ static const sylva_param_spec planting_item_params[] = {
     {.name = "stock", .type = SYLVA_P_ENUM, .def_str = "whip", .choices = host_stock_sizes,
      .help = "The nursery stock planted: whip (0.6-0.9 m), feathered (1.8-2.4 m) or standard (2.5-3 m)."},
     {.name = "stock_height", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 0.75, .min = 0, .max = 30, .unit = "m",
-     .help = "The stock's height at planting, in place of stock."},
+     .help = "The stock's height at planting, in place of stock (its form then the nearest size's: a whip up to 1.35 m, a feathered tree up to 2.45 m, a standard above, unless stock is given)."},
 };
 static const sylva_param_spec planting_params[] = {
     {.name = "year", .type = SYLVA_P_REAL, .flags = REQ | MIN | MAX, .min = 0, .max = 10000, .unit = "year",

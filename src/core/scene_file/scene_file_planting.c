@@ -149,12 +149,24 @@ static int read_mix(loader *L, const sylva_params *p, const char *where, plantin
     return 0;
 }
 
+/* The form of a stock given by its height alone: the trade's size it is nearest (a whip up to
+ * 1.35 m, a feathered tree up to 2.45 m, a standard above). */
+static planting_stock_form form_of_height(double h)
+{
+    return h <= 1.35 ? STOCK_WHIP : h <= 2.45 ? STOCK_FEATHERED : STOCK_STANDARD;
+}
+
 /* The nursery stock: the trade's size, or a height. */
 static void read_stock(const sylva_params *p, planting_feature *f)
 {
-    const sylva_value *height = sylva_param(p, "stock_height");
-    if (height->is_set) f->stock_height[0] = f->stock_height[1] = height->r;
-    else memcpy(f->stock_height, stock_heights[sylva_param(p, "stock")->i], sizeof f->stock_height);
+    const sylva_value *height = sylva_param(p, "stock_height"), *size = sylva_param(p, "stock");
+    f->stock = (planting_stock_form)size->i;
+    if (height->is_set) {
+        f->stock_height[0] = f->stock_height[1] = height->r;
+        if (!size->is_set) f->stock = form_of_height(height->r);
+    } else {
+        memcpy(f->stock_height, stock_heights[size->i], sizeof f->stock_height);
+    }
 }
 
 /* Keys of the planting kinds that are not the feature's own (felling takes polygon and name). */
@@ -254,8 +266,10 @@ static int read_file_attributes(loader *L, const sylva_value *file, const char *
     if (size && !host_stock_sizes[stock])
         return sf_located(L->err, L->file, file->line, file->column, "planting: %s: 'stock' is '%s'; give whip, "
                           "feathered or standard, or a stock_height", where, size);
+    f->stock = (planting_stock_form)stock;
     if (!isnan(stock_height)) f->stock_height[0] = f->stock_height[1] = stock_height;
     else memcpy(f->stock_height, stock_heights[stock], sizeof f->stock_height);
+    if (!isnan(stock_height) && !size) f->stock = form_of_height(stock_height);
     return 0;
 }
 

@@ -145,6 +145,14 @@ typedef enum planting_kind {
 
 #define PLANTING_MAX_SPECIES 8u
 
+/* The nursery stock a feature is planted as (host_stock_sizes order): the young plant's form
+ * (scene_build/planting_stock.h). */
+typedef enum planting_stock_form {
+    STOCK_WHIP = 0,       /* a single unbranched stem, 0.6-0.9 m */
+    STOCK_FEATHERED,      /* a leader with side shoots down most of its height, 1.8-2.4 m */
+    STOCK_STANDARD        /* a clear stem of 1.8 m under a small crown, 2.5-3 m */
+} planting_stock_form;
+
 /* One feature of a planting plan, as drawn: inline in the scene file or a feature of a vector
  * file. Coordinates are local metres (turned from map coordinates when the plan gives those). */
 typedef struct planting_feature {
@@ -158,6 +166,7 @@ typedef struct planting_feature {
     uint32_t rows;              /* belts: rows side by side */
     double row_spacing;         /* belts: metres between rows */
     double stock_height[2];     /* the nursery stock's range of heights at planting, metres */
+    planting_stock_form stock;  /* its form: the size given, else the one of the height given */
     const char *file;           /* where it is written: the scene file or the vector file */
     uint32_t line, column;      /* in the scene file (of the file key for a file's feature) */
 } planting_feature;

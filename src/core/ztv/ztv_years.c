@@ -13,9 +13,9 @@
 #include <gdal.h>
 
 #include "io/atomic_file.h"
-#include "io/population_plot.h"
 #include "io/raster_canvas.h"
 #include "ztv/ztv_raster.h"
+#include "ztv/ztv_years_chart.h"
 
 int ztv_years_visible_area(const char *summary_csv, const char *mode, double *km2, err_buf *err)
 {
@@ -215,18 +215,15 @@ static int write_table(const char *dir, const ztv_year_row *rows, uint32_t n, er
 
 static int write_chart(const char *dir, const ztv_year_row *rows, uint32_t n, err_buf *err)
 {
-    double x[256], values[2 * 256];
+    double year[256], visible[256], hidden[256], partly[256];
     uint32_t m = 0;
-    for (uint32_t r = 1; r < n && m < 256; r++, m++) {
-        x[m] = rows[r].year;
-        values[2 * m] = rows[r].visible_km2, values[2 * m + 1] = rows[0].visible_km2;
-    }
-    static const char *const names[] = {"with the planting", "before the planting"};
+    for (uint32_t r = 1; r < n && m < 256; r++, m++)
+        year[m] = rows[r].year, visible[m] = rows[r].visible_km2, hidden[m] = rows[r].hidden_km2,
+        partly[m] = rows[r].partly_km2;
+    ztv_years_areas a = {year, visible, hidden, partly, m, rows[0].visible_km2};
     char path[4200];
     snprintf(path, sizeof path, "%s/visible_area.png", dir);
-    line_chart ch = {.title = "area seeing the development (km2)", .x_label = "years since planting", .x = x,
-                     .values = values, .n_rows = m, .names = names, .n_series = 2, .markers = 1, .y_fit = 1};
-    return line_chart_write(path, &ch, err);
+    return ztv_years_chart_write(path, &a, err);
 }
 
 int ztv_years_write(const char *dir, const char *mode, ztv_year_row *rows, uint32_t n, err_buf *err)

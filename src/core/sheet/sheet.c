@@ -54,7 +54,11 @@ static void draw_title(cairo_t *cr, const sheet *sh)
 {
     const sheet_view *v = &sh->view;
     char title[256], project[512];
-    snprintf(title, sizeof title, "Viewpoint %u: %s", v->number, v->name);
+    char planting[160];
+    if (sheet_planting_text(sh, planting, sizeof planting))
+        snprintf(title, sizeof title, "Viewpoint %u: %s \u2014 %s", v->number, v->name, planting);
+    else
+        snprintf(title, sizeof title, "Viewpoint %u: %s", v->number, v->name);
     page_font big = {.size_pt = 16, .bold = 1};
     page_text(cr, MARGIN, MARGIN, 0, &big, title, 0);
     page_font small = {.size_pt = 8, .rgb = {0.25, 0.25, 0.25}};

@@ -47,6 +47,27 @@ static void place_rows(table *t, const sheet_view *v)
     else row(t, "Nearest development", "none marked in the scene");
 }
 
+int sheet_planting_text(const sheet *sh, char *out, size_t n)
+{
+    const scene *s = sh->s;
+    out[0] = 0;
+    if (!s->planting_shown) return 0;
+    snprintf(out, n, "year %g after planting (%.0f), %s", s->planting_years, s->planting_year + floor(s->planting_years),
+             sh->sf->season.text ? sh->sf->season.text : "summer");
+    return 1;
+}
+
+/* The planting plan the view shows: its year since planting and season, or that it is not shown. */
+static void planting_row(table *t, const sheet *sh)
+{
+    char text[160];
+    if (sheet_planting_text(sh, text, sizeof text))
+        row(t, "Mitigation planting", "the plan of %.0f at %s (day %u of the year)", sh->s->planting_year, text,
+            sh->s->season_day);
+    else if (sh->sf->planting.n_features)
+        row(t, "Mitigation planting", "not shown: the site before the plan of %.0f", sh->sf->planting.year);
+}
+
 static void time_rows(table *t, const sheet_view *v)
 {
     if (v->local_time[0]) row(t, "Date and local time", "%s", v->local_time);
@@ -124,6 +145,7 @@ uint32_t sheet_table(const sheet *sh, const sheet_panels *p, double scale, sheet
     table t = {rows, 0};
     place_rows(&t, &sh->view);
     time_rows(&t, &sh->view);
+    planting_row(&t, sh);
     lens_rows(&t, sh);
     print_rows(&t, sh, p, scale);
     fit_row(&t, sh);

@@ -3,7 +3,8 @@
  * its distance and bearing, date and local time, sun, camera, projection, focal length, sensor
  * width, 35 mm equivalent, fields of view, render size, visualisation Type, print size, each
  * panel's printed size and viewing distance, the development in the frame, Earth curvature, the
- * camera match and the POV-Ray cross-check. */
+ * camera match and the POV-Ray cross-check; with a planting plan, the year since planting and
+ * the season the view shows. */
 #ifndef SYLVA_SHEET_TABLE_H
 #define SYLVA_SHEET_TABLE_H
 
@@ -28,6 +29,10 @@ typedef struct sheet_panels {
  * wide shows the view at its true size: planar (width / 2) / tan(hfov / 2); a cylindrical
  * panorama the radius of the cylinder it wraps, width / hfov in radians. */
 double sheet_viewing_distance(double width_mm, double hfov_deg, int cylindrical);
+
+/* The planting year and season sh shows ("year 15 after planting (2042), summer") into out;
+ * 0 when its scene has no planting plan shown (out ""). */
+int sheet_planting_text(const sheet *sh, char *out, size_t n);
 
 /* Fills rows with sh's table for panels p (with the page's scale, millimetres printed per
  * millimetre laid out). Returns the number of rows. */

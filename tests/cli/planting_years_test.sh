@@ -3,7 +3,7 @@
 # a planted tree's height at --year N is the height of its species' age variant at the matching
 # age (the row of `sylva tree-stats` for that age, within 5 %), the same tree stands in the same place every year, and
 # `sylva ztv --years` writes each year's maps, what the planting hides and the visible area
-# against the years (a chart on a page of 190 x 95 mm at 200 dpi): nothing hidden at year 1 (whips
+# against the years (a chart on a page of 190 x 105 mm at 200 dpi): nothing hidden at year 1 (whips
 # below every sightline), the mast hidden from
 # some place by year 30, and the visible area never growing from one year to the next.
 set -uo pipefail
@@ -33,7 +33,7 @@ for f in before/ztv_summary.csv year_1/ztv_vegetation.tif year_1/ztv_hidden_by_p
          visible_area.csv visible_area.png; do
   [ -s "$out/ztv/$f" ] || fail "no $f"
 done
-file "$out/ztv/visible_area.png" | grep -q "1496 x 748" ||
+file "$out/ztv/visible_area.png" | grep -q "1496 x 827" ||
   fail "visible_area.png is not the 190 x 95 mm page at 200 dpi: $(file "$out/ztv/visible_area.png")"
 cat "$out/ztv/visible_area.csv"
 awk -F, 'NR == 3 && $3 != 0 {exit 1}' "$out/ztv/visible_area.csv" || fail "year 1 hides the mast from somewhere"

@@ -10,10 +10,11 @@
 #include "page/page_text.h"
 
 #define CHART_WIDTH 190.0  /* millimetres */
-#define CHART_HEIGHT 95.0
+#define CHART_HEIGHT 105.0
 #define CHART_DPI 200.0
 #define PANEL_TOP 22.0     /* the plotting area's top, below the titles */
 #define PANEL_BOTTOM 78.0  /* its bottom: the x axis */
+#define KEY_TOP 90.0       /* the legends' and notes' first line, under the axis's label */
 
 static const double ink[3] = {0.1, 0.1, 0.1}, grid_grey[3] = {0.85, 0.85, 0.85};
 static const double with_plan[3] = {0.1, 0.32, 0.75}, before_plan[3] = {0.45, 0.45, 0.45};
@@ -39,9 +40,18 @@ static double axis_top(double most, double *step)
 
 static void set_rgb(cairo_t *cr, const double c[3]) { cairo_set_source_rgb(cr, c[0], c[1], c[2]); }
 
-/* Gridlines, ticks and their numbers on both axes, the axes' labels. */
-static void draw_axes(cairo_t *cr, const panel *p, double xstep, double ystep, int ydigits, const char *ylabel)
+/* The decimals that write every multiple of step exactly (up to 6). */
+static int step_digits(double step)
 {
+    int d = 0;
+    for (double k = step; d < 6 && fabs(k - round(k)) > 1e-6 * k; k *= 10) d++;
+    return d;
+}
+
+/* Gridlines, ticks and their numbers on both axes, the axes' labels. */
+static void draw_axes(cairo_t *cr, const panel *p, double xstep, double ystep, const char *ylabel)
+{
+    int ydigits = step_digits(ystep);
     page_font num = {.size_pt = 7, .align = PAGE_RIGHT, .rgb = {0.2, 0.2, 0.2}}, lab = {.size_pt = 7.5};
     char text[64];
     cairo_set_line_width(cr, 0.15);
@@ -102,17 +112,17 @@ static void draw_visible(cairo_t *cr, const ztv_years_areas *a, double xmax, dou
     for (uint32_t r = 0; r < a->n; r++) before[r] = a->before_km2, most = fmax(most, a->visible_km2[r]);
     double step, top = axis_top(most, &step);
     panel p = {.left = 20, .right = 92, .top = PANEL_TOP, .bottom = PANEL_BOTTOM, .xmax = xmax, .ymax = top};
-    draw_axes(cr, &p, xstep, step, step < 1 ? 1 : 0, "area seeing the development (km\u00b2)");
+    draw_axes(cr, &p, xstep, step, "area seeing the development (km\u00b2)");
     draw_series(cr, &p, a->year, a->n, before, before_plan, 1);
     draw_series(cr, &p, a->year, a->n, a->visible_km2, with_plan, 0);
     char text[160];
     double fall = a->before_km2 - a->visible_km2[a->n - 1];
-    snprintf(text, sizeof text, "year %g: %.4f km\u00b2 less than before the planting (%.3f %%)", a->year[a->n - 1],
+    snprintf(text, sizeof text, "year %g: %.4g km\u00b2 less than before the planting (%.2g %%)", a->year[a->n - 1],
              fall, a->before_km2 > 0 ? 100 * fall / a->before_km2 : 0);
     page_font note = {.size_pt = 6.5, .rgb = {0.25, 0.25, 0.25}};
-    page_text(cr, p.left + 2, py(&p, 0.62 * top), p.right - p.left - 4, &note, text, 0);
-    legend(cr, p.left + 2, p.bottom - 10, before_plan, 1, "before the planting");
-    legend(cr, p.left + 2, p.bottom - 6, with_plan, 0, "with the planting");
+    legend(cr, p.left - 12, KEY_TOP, before_plan, 1, "before the planting");
+    legend(cr, p.left + 30, KEY_TOP, with_plan, 0, "with the planting");
+    page_text(cr, p.left - 12, KEY_TOP + 4.5, 0, &note, text, 0);
 }
 
 /* The right panel: the area where the planting hides all or part of what was seen, hectares. */
@@ -125,11 +135,11 @@ static void draw_hidden(cairo_t *cr, const ztv_years_areas *a, double xmax, doub
     }
     double step, top = axis_top(most, &step);
     panel p = {.left = 118, .right = 184, .top = PANEL_TOP, .bottom = PANEL_BOTTOM, .xmax = xmax, .ymax = top};
-    draw_axes(cr, &p, xstep, step, step < 0.1 ? 2 : step < 1 ? 1 : 0, "area where the planting hides it (ha)");
+    draw_axes(cr, &p, xstep, step, "area where the planting hides it (ha)");
     draw_series(cr, &p, a->year, a->n, part, hidden_part, 0);
     draw_series(cr, &p, a->year, a->n, all, hidden_all, 0);
-    legend(cr, p.left + 2, p.top + 1, hidden_all, 0, "every target seen before hidden");
-    legend(cr, p.left + 2, p.top + 5, hidden_part, 0, "some of them hidden");
+    legend(cr, p.left - 12, KEY_TOP, hidden_all, 0, "every target seen before hidden");
+    legend(cr, p.left - 12, KEY_TOP + 4.5, hidden_part, 0, "some of them hidden");
 }
 
 static int draw_chart(cairo_t *cr, const page_size *size, void *ctx, err_buf *err)

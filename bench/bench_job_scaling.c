@@ -68,7 +68,7 @@ static int run_job(const char *path, const plugin_registry *reg, uint32_t w, uin
     ph->seconds[PHASE_SCENE_OTHER] = build.seconds[PHASE_SCENE_OTHER];
     ph->cpu[PHASE_SCENE_OTHER] = build.cpu[PHASE_SCENE_OTHER];
     ph->thread_cpu[PHASE_SCENE_OTHER] = build.thread_cpu[PHASE_SCENE_OTHER];
-    if (ground_cover_add(s, &sf->ground_cover, w, h, NULL, &err)) goto done;
+    if (ground_cover_add(s, &sf->ground_cover, w, h, 0, NULL, &err)) goto done;
     t = phase_stop(&run->phases, PHASE_GROUND_COVER, t);
     render_options ro = {.quiet = 1, .threads = threads, .spp = spp, .width = w, .height = h};
     render_stats st;

@@ -70,9 +70,9 @@ TEST(placement_follows_the_ground)
     if (!a || !b) goto done;
     err_buf err = {{0}};
     ground_cover_report ra, rb;
-    CHECK_INT(ground_cover_add(a, &cover, 320, 180, &ra, &err), 0);
-    CHECK_INT(ground_cover_add(b, &cover, 320, 180, &rb, &err), 0);
-    /* the same tufts, to the bit */
+    CHECK_INT(ground_cover_add(a, &cover, 320, 180, 0, &ra, &err), 0);
+    CHECK_INT(ground_cover_add(b, &cover, 320, 180, 1, &rb, &err), 0);
+    /* the same tufts, to the bit, on one thread as on one per processor */
     CHECK(ra.instances > 1000);
     CHECK_INT(ra.instances, rb.instances);
     CHECK_INT(a->n_instances, b->n_instances);
@@ -112,10 +112,10 @@ TEST(no_tufts_where_snow_lies)
     half->snow = again->snow = (snow_settings){1, 0.5, -HUGE_VAL};
     err_buf err = {{0}};
     ground_cover_report r_open, r_closed, r_half, r_again;
-    CHECK_INT(ground_cover_add(open, &cover, 320, 180, &r_open, &err), 0);
-    CHECK_INT(ground_cover_add(closed, &cover, 320, 180, &r_closed, &err), 0);
-    CHECK_INT(ground_cover_add(half, &cover, 320, 180, &r_half, &err), 0);
-    CHECK_INT(ground_cover_add(again, &cover, 320, 180, &r_again, &err), 0);
+    CHECK_INT(ground_cover_add(open, &cover, 320, 180, 0, &r_open, &err), 0);
+    CHECK_INT(ground_cover_add(closed, &cover, 320, 180, 0, &r_closed, &err), 0);
+    CHECK_INT(ground_cover_add(half, &cover, 320, 180, 0, &r_half, &err), 0);
+    CHECK_INT(ground_cover_add(again, &cover, 320, 180, 0, &r_again, &err), 0);
     fprintf(stderr, "tufts: %u without snow, %u under a closed cover, %u under half a cover\n", r_open.instances,
             r_closed.instances, r_half.instances);
     CHECK(r_open.instances > 1000);
@@ -141,13 +141,13 @@ TEST(count_kept_to_the_cap)
     ground_cover_settings capped = cover;
     capped.max_instances = 500;
     ground_cover_report rep;
-    CHECK_INT(ground_cover_add(s, &capped, 320, 180, &rep, &err), 0);
+    CHECK_INT(ground_cover_add(s, &capped, 320, 180, 0, &rep, &err), 0);
     CHECK(rep.instances > 0 && rep.instances <= 500);
     CHECK_INT(rep.capped, 1);
     CHECK(rep.radius < rep.pixel_radius);
     ground_cover_settings disabled = cover;
     disabled.enabled = 0;
-    CHECK_INT(ground_cover_add(off, &disabled, 320, 180, &rep, &err), 0);
+    CHECK_INT(ground_cover_add(off, &disabled, 320, 180, 0, &rep, &err), 0);
     CHECK_INT(rep.instances, 0);
     CHECK_INT(off->n_instances, 0);
     CHECK_INT(off->n_species, 0);

@@ -43,7 +43,9 @@ int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const 
         int rc = cli_outputs_check(cmd, c->sf, use->inputs, use->n_inputs, use->outputs, use->n_outputs);
         if (rc) return rc;
     }
-    if (scene_view_prepare(c->scene, &c->sf->ground_cover, &use->view, &c->times, &err)) return cli_fail(cmd, &err, ERR_INTERNAL);
+    scene_view view = use->view;
+    if (!view.threads) view.threads = bo.threads;
+    if (scene_view_prepare(c->scene, &c->sf->ground_cover, &view, &c->times, &err)) return cli_fail(cmd, &err, ERR_INTERNAL);
     return EXIT_OK;
 }
 

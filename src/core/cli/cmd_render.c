@@ -69,7 +69,7 @@ static int render_run(cli_mpi *m, int argc, char **argv)
                      ".png in the current folder)"),
         CLI_OPT_WHOLE("--spp", "N", ro.spp, 1, 1u << 20, "samples per pixel (overrides image.spp)"),
         CLI_OPT_SIZE("--size", ro.width, ro.height, "image size in pixels (overrides image.width/height)"),
-        CLI_OPT_WHOLE("--threads", "N", bo.threads, 1, 1024, "threads for every phase: tree variants, ecology, "
+        CLI_OPT_WHOLE("--threads", "N", bo.threads, 1, 1024, "threads for every phase: tree variants, ecology, ground cover, "
                       "BVH and pixels (default: one per core); the image does not depend on it"),
         {.names = "--seed", .type = CLI_WHOLE, .value = "N", .target = &ro.seed, .target_size = sizeof ro.seed,
          .max = UINT64_MAX, .given = &ro.seed_set, .help = "random seed (overrides image.seed)"},

@@ -9,6 +9,7 @@
 #include "scene/heightfield.h"
 #include "scene/scene.h"
 #include "util/rng.h"
+#include "util/task_pool.h"
 
 #define CELLS_PER_BLOCK 32     /* candidates are visited in blocks this many cells a side */
 #define TUFT_REACH 0.6         /* metres: a tuft's size round its base, for the frustum test */
@@ -46,23 +47,61 @@ static int in_view(const cover_view *v, const double p[3], double reach)
            fabs(y) <= v->tan_v * f + reach * sqrt(1 + v->tan_v * v->tan_v);
 }
 
-/* What one pass over the candidates does with those it keeps. */
+/* A tuft a candidate kept: its prototype and where it stands. */
+typedef struct tuft {
+    uint32_t prototype;
+    xform3x4 xf;
+} tuft;
+
+/* The tufts of one block, in the order its cells are visited. */
+typedef struct block_tufts {
+    tuft *t;          /* owned by the pass (pass_free) */
+    uint32_t n, cap;
+    int out_of_memory;
+} block_tufts;
+
+/* A block of CELLS_PER_BLOCK x CELLS_PER_BLOCK candidates that may show in the view. */
+typedef struct cover_block {
+    int64_t bx, by;
+} cover_block;
+
+/* What one pass over the candidates does with those it keeps. The blocks are shared out between
+ * threads; each writes only its own histogram (count) or its block's tufts (place), and the
+ * tufts join the scene afterwards in block order, so the result never depends on the threads. */
 typedef struct cover_pass {
-    scene *s;
+    const scene *s;
     const ground_cover_map *ground;
     const cover_view *view;
     const ground_cover_models *models;
     uint64_t seed;
     double cell;               /* metres */
     double radius;             /* metres */
-    int place;                 /* 0: count into histogram (no fade); 1: add the instances */
-    uint64_t *histogram;       /* count pass: tufts per metre of distance, radius + 1 long */
-    uint32_t max_instances;
-    uint32_t placed;
+    int place;                 /* 0: count into the histograms (no fade); 1: keep the tufts */
+    cover_block *blocks;       /* the blocks in view, owned by the pass */
+    uint32_t n_blocks;
+    uint64_t *histograms;      /* count pass: tufts per metre of distance, one row per worker */
+    size_t histogram_len;      /* radius + 2 */
+    block_tufts *tufts;        /* place pass: one per block, owned by the pass */
 } cover_pass;
 
-/* Candidate (ix, iy): its jittered point, whether it is kept, and what stands there. */
-static int visit_cell(cover_pass *c, int64_t ix, int64_t iy, err_buf *err)
+static void keep_tuft(block_tufts *b, uint32_t proto, const xform3x4 *xf)
+{
+    if (b->out_of_memory) return;
+    if (b->n == b->cap) {
+        uint32_t cap = b->cap ? 2 * b->cap : 64;
+        tuft *t = realloc(b->t, (size_t)cap * sizeof *t);
+        if (!t) {
+            b->out_of_memory = 1;
+            return;
+        }
+        b->t = t, b->cap = cap;
+    }
+    b->t[b->n++] = (tuft){proto, *xf};
+}
+
+/* Candidate (ix, iy) of block k, for worker w: its jittered point, whether it is kept, and what
+ * stands there. */
+static void visit_cell(cover_pass *c, unsigned w, uint32_t k, int64_t ix, int64_t iy)
 {
     sylva_rng r;
     rng_stream(&r, c->seed, "ground cover", ((uint64_t)(uint32_t)ix << 32) | (uint32_t)iy);
@@ -70,47 +109,56 @@ static int visit_cell(cover_pass *c, int64_t ix, int64_t iy, err_buf *err)
     double keep = rng_next_double(&r), pick = rng_next_double(&r), turn = rng_next_double(&r),
            size = rng_next_double(&r);
     double dx = p[0] - c->view->eye[0], dy = p[1] - c->view->eye[1];
-    if (dx * dx + dy * dy > c->radius * c->radius) return 0;
-    if (heightfield_surface_height(c->s->terrain, p[0], p[1], &p[2])) return 0;
+    if (dx * dx + dy * dy > c->radius * c->radius) return;
+    if (heightfield_surface_height(c->s->terrain, p[0], p[1], &p[2])) return;
     double dz = p[2] - c->view->eye[2], d = sqrt(dx * dx + dy * dy + dz * dz);
-    if (d > c->radius) return 0;
+    if (d > c->radius) return;
     double mid[3] = {p[0], p[1], p[2] + 0.2};
-    if (!in_view(c->view, mid, TUFT_REACH)) return 0;
-    float w[GROUND_KINDS];
+    if (!in_view(c->view, mid, TUFT_REACH)) return;
+    float wk[GROUND_KINDS];
     double n[3];
-    ground_cover_weights(c->ground, p[0], p[1], w);
-    if (heightfield_normal(c->s->terrain, p[0], p[1], n)) return 0;
-    double share = ground_cover_density(w, n) * land_cover_herb_share(c->s->land_cover, p[0], p[1]);
+    ground_cover_weights(c->ground, p[0], p[1], wk);
+    if (heightfield_normal(c->s->terrain, p[0], p[1], n)) return;
+    double share = ground_cover_density(wk, n) * land_cover_herb_share(c->s->land_cover, p[0], p[1]);
     if (c->place) {
         double t = (d / c->radius - FADE_START) / (1.0 - FADE_START);
         if (t > 0) share *= t >= 1 ? 0 : 1.0 - t * t * (3.0 - 2.0 * t);
     }
-    if (!(keep < share)) return 0;
+    if (!(keep < share)) return;
     if (!c->place) {
-        c->histogram[(size_t)d]++;
-        return 0;
+        c->histograms[w * c->histogram_len + (size_t)d]++;
+        return;
     }
-    if (c->placed >= c->max_instances) return 0; /* kept by the radius fit; never reached */
     /* a herb for one tuft in ten on meadow, for one in two on the forest floor */
-    double herb_share = 0.1 + 0.4 * w[GROUND_FOREST_FLOOR];
+    double herb_share = 0.1 + 0.4 * wk[GROUND_FOREST_FLOOR];
     uint32_t proto = pick < herb_share
                          ? c->models->herb_first + (uint32_t)(pick / herb_share * GROUND_COVER_HERB_VARIANTS)
                          : c->models->grass_first +
                                (uint32_t)((pick - herb_share) / (1.0 - herb_share) * GROUND_COVER_GRASS_VARIANTS);
     p[2] -= 0.01; /* the base a centimetre into the ground, so that no tuft floats over a facet */
     xform3x4 xf = plant_transform(p, 360.0 * turn, 0.7 + 0.6 * size);
-    if (scene_add_instance(c->s, proto, &xf, err) < 0) return -1;
-    c->placed++;
-    return 0;
+    keep_tuft(&c->tufts[k], proto, &xf);
 }
 
-/* Every candidate within c->radius of the eye whose block may show in the view. */
-static int visit_all(cover_pass *c, err_buf *err)
+/* task_pool task: every candidate of block k. */
+static void visit_block(void *ctx, unsigned worker, uint32_t k)
+{
+    cover_pass *c = ctx;
+    const cover_block *b = &c->blocks[k];
+    for (int64_t iy = b->by * CELLS_PER_BLOCK; iy < (b->by + 1) * CELLS_PER_BLOCK; iy++)
+        for (int64_t ix = b->bx * CELLS_PER_BLOCK; ix < (b->bx + 1) * CELLS_PER_BLOCK; ix++)
+            visit_cell(c, worker, k, ix, iy);
+}
+
+/* The blocks within c->radius of the eye that may show in the view, into c->blocks in row
+ * order. Returns 0, or -1 with err set (out of memory). */
+static int find_blocks(cover_pass *c, err_buf *err)
 {
     const double block = CELLS_PER_BLOCK * c->cell, half_diagonal = block * M_SQRT1_2;
     const double *eye = c->view->eye;
     int64_t b0x = (int64_t)floor((eye[0] - c->radius) / block), b1x = (int64_t)floor((eye[0] + c->radius) / block);
     int64_t b0y = (int64_t)floor((eye[1] - c->radius) / block), b1y = (int64_t)floor((eye[1] + c->radius) / block);
+    uint32_t cap = 0;
     for (int64_t by = b0y; by <= b1y; by++)
         for (int64_t bx = b0x; bx <= b1x; bx++) {
             double centre[3] = {(bx + 0.5) * block, (by + 0.5) * block, 0};
@@ -119,14 +167,60 @@ static int visit_all(cover_pass *c, err_buf *err)
             centre[2] = heightfield_height_clamped(c->s->terrain, centre[0], centre[1]);
             /* the ground within the block may climb or fall by its half-diagonal (45 degrees) */
             if (!in_view(c->view, centre, 2.0 * half_diagonal + TUFT_REACH + 1.0)) continue;
-            for (int64_t iy = by * CELLS_PER_BLOCK; iy < (by + 1) * CELLS_PER_BLOCK; iy++)
-                for (int64_t ix = bx * CELLS_PER_BLOCK; ix < (bx + 1) * CELLS_PER_BLOCK; ix++)
-                    if (visit_cell(c, ix, iy, err)) return -1;
+            if (c->n_blocks == cap) {
+                cap = cap ? 2 * cap : 256;
+                cover_block *more = realloc(c->blocks, (size_t)cap * sizeof *more);
+                if (!more) return err_nomem(err, "out of memory for the ground cover's blocks");
+                c->blocks = more;
+            }
+            c->blocks[c->n_blocks++] = (cover_block){bx, by};
         }
     return 0;
 }
 
-int ground_cover_add(scene *s, const ground_cover_settings *gc, uint32_t width, uint32_t height,
+static void pass_free(cover_pass *c)
+{
+    for (uint32_t k = 0; c->tufts && k < c->n_blocks; k++) free(c->tufts[k].t);
+    free(c->tufts);
+    free(c->histograms);
+    free(c->blocks);
+}
+
+/* The count: tufts per metre of distance without the fade, summed over the workers into
+ * histogram (radius + 2 long). Returns 0, or -1 with err set. */
+static int count_tufts(cover_pass *c, unsigned threads, uint64_t *histogram, err_buf *err)
+{
+    if (!threads) threads = task_pool_default_threads();
+    c->histogram_len = (size_t)c->radius + 2;
+    c->histograms = calloc((size_t)threads * c->histogram_len, sizeof *c->histograms);
+    if (!c->histograms) return err_nomem(err, "out of memory for the ground cover");
+    c->place = 0;
+    task_pool_run(threads, c->n_blocks, visit_block, c);
+    for (unsigned w = 0; w < threads; w++)
+        for (size_t i = 0; i < c->histogram_len; i++) histogram[i] += c->histograms[w * c->histogram_len + i];
+    return 0;
+}
+
+/* The tufts kept within c->radius, added to the scene in block order, at most max of them.
+ * Returns 0, or -1 with err set. */
+static int place_tufts(cover_pass *c, unsigned threads, uint32_t max, scene *s, err_buf *err)
+{
+    c->tufts = calloc(c->n_blocks ? c->n_blocks : 1, sizeof *c->tufts);
+    if (!c->tufts) return err_nomem(err, "out of memory for the ground cover");
+    c->place = 1;
+    task_pool_run(threads, c->n_blocks, visit_block, c);
+    uint32_t placed = 0;
+    for (uint32_t k = 0; k < c->n_blocks; k++) {
+        const block_tufts *b = &c->tufts[k];
+        if (b->out_of_memory) return err_nomem(err, "out of memory for the ground cover's tufts");
+        /* the count keeps the total within max; the check only guards the scene */
+        for (uint32_t i = 0; i < b->n && placed < max; i++, placed++)
+            if (scene_add_instance(s, b->t[i].prototype, &b->t[i].xf, err) < 0) return -1;
+    }
+    return 0;
+}
+
+int ground_cover_add(scene *s, const ground_cover_settings *gc, uint32_t width, uint32_t height, unsigned threads,
                      ground_cover_report *rep, err_buf *err)
 {
     ground_cover_report local = {0};
@@ -161,18 +255,18 @@ int ground_cover_add(scene *s, const ground_cover_settings *gc, uint32_t width, 
     if (!ground) return err->msg[0] ? -1 : 0; /* a terrain of scene materials: no cover */
     uint32_t first_instance = s->n_instances;
     cover_pass c = {.s = s, .ground = ground, .view = &v, .models = &models, .seed = s->image.seed,
-                    .cell = 1.0 / sqrt(gc->density), .radius = radius, .max_instances = gc->max_instances};
+                    .cell = 1.0 / sqrt(gc->density), .radius = radius};
     int rc = -1;
     /* count what the radius holds, metre by metre, and shrink it to the cap */
-    c.histogram = calloc((size_t)radius + 2, sizeof *c.histogram);
-    if (!c.histogram) {
+    uint64_t *histogram = calloc((size_t)radius + 2, sizeof *histogram); /* owned here */
+    if (!histogram) {
         err_nomem(err, "out of memory for the ground cover");
         goto done;
     }
-    if (visit_all(&c, err)) goto done;
+    if (find_blocks(&c, err) || count_tufts(&c, threads, histogram, err)) goto done;
     uint64_t total = 0;
     size_t fits = 0;
-    while (fits <= (size_t)radius && total + c.histogram[fits] <= gc->max_instances) total += c.histogram[fits++];
+    while (fits <= (size_t)radius && total + histogram[fits] <= gc->max_instances) total += histogram[fits++];
     if (fits <= (size_t)radius) c.radius = (double)fits, rep->capped = 1;
     rep->radius = c.radius;
     if (!total) {
@@ -180,13 +274,14 @@ int ground_cover_add(scene *s, const ground_cover_settings *gc, uint32_t width, 
         goto done;
     }
     /* the prototypes, then the tufts: each one a candidate the count kept */
-    if (ground_cover_models_add(s, s->image.seed, &models, err)) goto done;
-    c.place = 1;
-    if (visit_all(&c, err)) goto done;
+    if (ground_cover_models_add(s, s->image.seed, &models, err) ||
+        place_tufts(&c, threads, gc->max_instances, s, err))
+        goto done;
     rep->instances = s->n_instances - first_instance;
     rc = 0;
 done:
-    free(c.histogram);
+    free(histogram);
+    pass_free(&c);
     ground_cover_map_free(ground);
     return rc;
 }

@@ -36,10 +36,11 @@ typedef struct ground_cover_report {
  * (n[2] = cos slope), in [0, 1]. */
 double ground_cover_density(const float w[GROUND_KINDS], const double n[3]);
 
-/* Adds the ground cover for s's camera and an image width x height pixels. Nothing when gc is
- * disabled, its density or max_instances is 0, or s has no terrain. Returns 0, or -1 with err
- * set (out of memory). rep may be NULL. */
-int ground_cover_add(scene *s, const ground_cover_settings *gc, uint32_t width, uint32_t height,
+/* Adds the ground cover for s's camera and an image width x height pixels, the candidates
+ * shared out between up to `threads` threads (0: one per processor; the tufts are the same for
+ * any count). Nothing when gc is disabled, its density or max_instances is 0, or s has no
+ * terrain. Returns 0, or -1 with err set (out of memory). rep may be NULL. */
+int ground_cover_add(scene *s, const ground_cover_settings *gc, uint32_t width, uint32_t height, unsigned threads,
                      ground_cover_report *rep, err_buf *err);
 
 #endif

@@ -12,7 +12,7 @@ int scene_view_prepare(scene *s, const ground_cover_settings *gc, const scene_vi
     if (!width || !height) width = s->image.width, height = s->image.height;
     ground_cover_report rep;
     phase_mark t0 = phase_start();
-    if (ground_cover_add(s, gc, width, height, &rep, err)) return err_default(err, ERR_INTERNAL);
+    if (ground_cover_add(s, gc, width, height, v->threads, &rep, err)) return err_default(err, ERR_INTERNAL);
     phase_stop(times, PHASE_GROUND_COVER, t0);
     if (!v->quiet && rep.instances)
         fprintf(stderr, "ground cover: %u tufts within %.0f m (a blade spans a pixel at %.0f m)%s\n", rep.instances,

@@ -16,6 +16,7 @@ typedef struct scene_view {
     int picture;            /* 1: the scene is drawn from its camera; 0: no step is taken */
     uint32_t width, height; /* the picture's size in pixels; 0: the scene's image size */
     int quiet;              /* 1: no information line on stderr */
+    unsigned threads;       /* threads for the steps that share out work; 0: one per processor */
 } scene_view;
 
 /* Takes the steps v asks for on s (gc: the scene file's ground cover), adding their times to

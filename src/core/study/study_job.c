@@ -15,6 +15,7 @@
 #include "scene_file/host_schema.h"
 #include "sheet/sheet.h"
 #include "study/study_frames.h"
+#include "util/task_pool.h"
 
 int study_job_path(const study_job *j, int p, const char *ext, char out[STUDY_PATH_MAX], err_buf *err)
 {
@@ -92,23 +93,54 @@ static int write_sheet(const scene *s, const scene_file *sf, const study_job *j,
     return rc;
 }
 
-/* Every product of j written from the renders, each with its record after its files. */
-static int write_products(const scene *s, const scene_file *sf, const study_job *j, const film *full, const film *bg,
-                          uint32_t spp, err_buf *err)
+/* The products of one job being written, one task each (task_pool.h): each task writes its
+ * own files and its own slot of errs and rc. */
+typedef struct product_writes {
+    const scene *s;
+    const scene_file *sf;
+    const study_job *j;
+    const film *full, *bg;
+    uint32_t spp;
+    double ev;
+    uint32_t n, product[STUDY_PRODUCTS];
+    err_buf errs[STUDY_PRODUCTS];
+    int rc[STUDY_PRODUCTS];
+} product_writes;
+
+/* task_pool task: product w->product[i] written, then its record. */
+static void write_product(void *ctx, unsigned worker, uint32_t i)
 {
-    double ev = render_still_exposure(s, full);
+    (void)worker;
+    product_writes *w = ctx;
+    const scene *s = w->s;
+    const study_job *j = w->j;
+    int p = (int)w->product[i];
+    err_buf *err = &w->errs[i];
     char png[STUDY_PATH_MAX], exr[STUDY_PATH_MAX], record[STUDY_PATH_MAX];
-    for (int p = 0; p < (int)STUDY_PRODUCTS; p++) {
-        if (!(j->todo & 1u << p)) continue;
-        if (study_job_path(j, p, "png", png, err) || study_job_path(j, p, study_product_ext(p), exr, err) ||
-            study_job_path(j, p, "manifest", record, err))
-            return -1;
-        int rc = p == STUDY_PROPOSED ? film_write_pair(full, &s->site, s->image.tone, ev, png, exr, err)
-                 : p == STUDY_EXISTING ? film_write_pair(bg, &s->site, s->image.tone, ev, png, exr, err)
-                 : p == STUDY_WIRELINE ? write_wireline(s, j, full, bg, ev, sf->study.inner_edges, png, exr, err)
-                                       : write_sheet(s, sf, j, full, bg, ev, spp, png, exr, err);
-        if (rc || study_manifest_write(record, j->record[p], err)) return err_default(err, ERR_OUTPUT);
-    }
+    int rc = study_job_path(j, p, "png", png, err) || study_job_path(j, p, study_product_ext(p), exr, err) ||
+             study_job_path(j, p, "manifest", record, err);
+    if (!rc)
+        rc = p == STUDY_PROPOSED ? film_write_pair(w->full, &s->site, s->image.tone, w->ev, png, exr, err)
+             : p == STUDY_EXISTING ? film_write_pair(w->bg, &s->site, s->image.tone, w->ev, png, exr, err)
+             : p == STUDY_WIRELINE ? write_wireline(s, j, w->full, w->bg, w->ev, w->sf->study.inner_edges, png, exr, err)
+                                   : write_sheet(s, w->sf, j, w->full, w->bg, w->ev, w->spp, png, exr, err);
+    if (!rc) rc = study_manifest_write(record, j->record[p], err);
+    w->rc[i] = rc ? err_default(err, ERR_OUTPUT) : 0;
+}
+
+/* Every product of j written from the renders, each with its record after its files, the
+ * products side by side on up to `threads` threads (they share nothing but the renders they
+ * read). The first failure in product order is the one told. */
+static int write_products(const scene *s, const scene_file *sf, const study_job *j, const film *full, const film *bg,
+                          uint32_t spp, unsigned threads, err_buf *err)
+{
+    product_writes w = {.s = s, .sf = sf, .j = j, .full = full, .bg = bg, .spp = spp,
+                        .ev = render_still_exposure(s, full)};
+    for (uint32_t p = 0; p < STUDY_PRODUCTS; p++)
+        if (j->todo & 1u << p) w.product[w.n++] = p;
+    task_pool_run(threads, w.n, write_product, &w);
+    for (uint32_t i = 0; i < w.n; i++)
+        if (w.rc[i]) return *err = w.errs[i], -1;
     return 0;
 }
 
@@ -147,12 +179,13 @@ int study_job_run(scene *s, const scene_file *sf, const study_job *j, const rend
 {
     if (study_job_place(s, sf, j, err)) return -1;
     scene_mark mark = scene_mark_take(s);
-    const scene_view view = {.picture = 1, .width = j->size[0], .height = j->size[1], .quiet = 1};
+    const scene_view view = {.picture = 1, .width = j->size[0], .height = j->size[1], .quiet = 1,
+                            .threads = ro->threads};
     film *full = NULL, *bg = NULL;
     int rc = scene_view_prepare(s, &sf->ground_cover, &view, times, err);
     if (!rc) rc = render_pair(s, j, ro, times, &full, &bg, renders, err);
     phase_mark t_out = phase_start();
-    if (!rc) rc = write_products(s, sf, j, full, bg, ro->spp, err);
+    if (!rc) rc = write_products(s, sf, j, full, bg, ro->spp, ro->threads, err);
     phase_stop(times, PHASE_OUTPUT, t_out);
     film_free(full);
     film_free(bg);

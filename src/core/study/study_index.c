@@ -14,7 +14,8 @@
 #include "study/study_frames.h"
 #include "util/html_text.h"
 
-#define MARK_RADIUS 11 /* pixels of a viewpoint's mark on the map */
+#define MARK_RADIUS 11 /* pixels of a viewpoint's mark on the key map, at least */
+#define MARKS_ACROSS 110.0 /* a mark on the map picture: its width over this, so it shows as on the key map */
 
 /* The products whose PNG is a view (PRODUCT_FRAME.png), in the order the page lists them. */
 static const study_product views_rendered[] = {STUDY_EXISTING, STUDY_PROPOSED, STUDY_WIRELINE};
@@ -145,9 +146,10 @@ static void put_map_picture(FILE *f, const char *dir, const index_map *m, const 
                "<image href=\"", m->width, m->height, m->width);
     put_url(f, m->picture);
     fprintf(f, "\" x=\"0\" y=\"0\" width=\"%u\" height=\"%u\"/>\n", m->width, m->height);
+    double r = fmax(MARK_RADIUS, m->width / MARKS_ACROSS);
     for (uint32_t k = 0; k < n; k++) {
         double x = (views[k].e - m->c) / m->a + 0.5, y = (views[k].n - m->f) / m->e + 0.5;
-        if (x >= 0 && y >= 0 && x <= m->width && y <= m->height) put_mark(f, dir, &views[k], x, y, MARK_RADIUS);
+        if (x >= 0 && y >= 0 && x <= m->width && y <= m->height) put_mark(f, dir, &views[k], x, y, r);
     }
     fputs("</svg>\n", f);
 }

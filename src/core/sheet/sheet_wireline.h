@@ -9,8 +9,8 @@
 
 #include "render/wireline_trace.h"
 
-#define SHEET_OUTLINE_MM 0.35 /* the outline's stroke, red */
-#define SHEET_EDGE_MM 0.18    /* the inner edges' stroke, yellow */
+#define SHEET_OUTLINE_MM 0.2  /* the outline's stroke, red */
+#define SHEET_EDGE_MM 0.12    /* the inner edges' stroke, yellow */
 
 /* Strokes p over the rectangle (x, y, w, h) millimetres that shows its picture: the inner edges,
  * then the outline over them, clipped to the rectangle; an outline's stretch along the picture's

@@ -222,6 +222,30 @@ static int hull_path(cairo_t *cr, const ztv_info *info, const ztv_map_layout *l,
     return 1;
 }
 
+/* Takes the current path (lines) in the placer as marks of radius r every r along it, so that
+ * labels keep off the stroke. */
+static void take_outline(cairo_t *cr, page_placer *pl, double r)
+{
+    cairo_path_t *path = cairo_copy_path_flat(cr); /* owned here */
+    double first[2] = {0, 0}, at[2] = {0, 0};
+    for (int i = 0; i < path->num_data; i += path->data[i].header.length) {
+        const cairo_path_data_t *d = &path->data[i];
+        double to[2] = {first[0], first[1]};
+        if (d->header.type == CAIRO_PATH_MOVE_TO) {
+            first[0] = at[0] = d[1].point.x, first[1] = at[1] = d[1].point.y;
+            continue;
+        }
+        if (d->header.type == CAIRO_PATH_LINE_TO) to[0] = d[1].point.x, to[1] = d[1].point.y;
+        else if (d->header.type != CAIRO_PATH_CLOSE_PATH) continue;
+        double len = hypot(to[0] - at[0], to[1] - at[1]);
+        int steps = (int)ceil(len / r);
+        for (int k = 0; k <= steps; k++)
+            page_placer_mark(pl, at[0] + (to[0] - at[0]) * k / fmax(steps, 1), at[1] + (to[1] - at[1]) * k / fmax(steps, 1), r);
+        at[0] = to[0], at[1] = to[1];
+    }
+    cairo_path_destroy(path);
+}
+
 /* Each development: the outline round its structures, each structure a dark dot (each target
  * when the map was given targets alone). The marks are taken in the labels' placer. */
 static void draw_developments(cairo_t *cr, const ztv_info *info, const ztv_map_layout *l, map_labels *ml)
@@ -233,7 +257,9 @@ static void draw_developments(cairo_t *cr, const ztv_info *info, const ztv_map_l
         cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
         cairo_set_source_rgba(cr, 0.45, 0.15, 0.65, 0.9);
         cairo_set_line_width(cr, 2.2); /* the outline stands a millimetre round the structures */
-        cairo_stroke(cr);
+        cairo_stroke_preserve(cr);
+        take_outline(cr, &ml->placer, 1.1);
+        cairo_new_path(cr);
         if (info->n_structures) continue;
         for (uint32_t t = 0; t < info->n_targets; t++) {
             if (info->target_development[t] != d) continue;

@@ -68,8 +68,9 @@ static void ring_centre(const ztv_info *info, double c[2])
     c[0] /= info->n_targets, c[1] /= info->n_targets;
 }
 
-/* Distance rings round the development: 1, 2, 5, 10, 20, 50 km... inside the radius, labelled. */
-static void draw_rings(cairo_t *cr, const ztv_info *info, const ztv_map_layout *l)
+/* Distance rings round the development: 1, 2, 5, 10, 20, 50 km... inside the radius, labelled
+ * (each label taken in pl, for the names to keep off). */
+static void draw_rings(cairo_t *cr, const ztv_info *info, const ztv_map_layout *l, page_placer *pl)
 {
     if (!info->target_xy || !info->n_targets) return;
     double c[2], x, y;
@@ -87,6 +88,9 @@ static void draw_rings(cairo_t *cr, const ztv_info *info, const ztv_map_layout *
         cairo_stroke(cr);
         char text[32];
         page_length_text(steps[k], text, sizeof text);
+        double tw, th;
+        page_text_size(cr, &f, text, &tw, &th);
+        page_placer_take(pl, (page_box){x - tw / 2, y - r - 1.6, x + tw / 2, y - r - 1.6 + th});
         page_text(cr, x, y - r - 1.6, 0, &f, text, 0);
     }
 }
@@ -448,12 +452,15 @@ static int draw_page(cairo_t *cr, const page_size *size, void *ctx, err_buf *err
     cairo_save(cr);
     cairo_rectangle(cr, l.x, l.y, l.w, l.h);
     cairo_clip(cr);
-    draw_rings(cr, info, &l);
+    map_labels *ml = calloc(1, sizeof *ml); /* owned here */
+    if (!ml) {
+        cairo_restore(cr);
+        return err_nomem(err, "out of memory placing a map's labels");
+    }
+    page_placer_init(&ml->placer, (page_box){l.x, l.y, l.x + l.w, l.y + l.h});
+    draw_rings(cr, info, &l, &ml->placer);
     draw_radius(cr, info, &l);
     label_no_terrain(cr, c->m, c->st, &l);
-    map_labels *ml = calloc(1, sizeof *ml); /* owned here */
-    if (!ml) return err_nomem(err, "out of memory placing a map's labels");
-    page_placer_init(&ml->placer, (page_box){l.x, l.y, l.x + l.w, l.y + l.h});
     draw_developments(cr, info, &l, ml);
     draw_viewpoints(cr, info, &l, ml);
     label_viewpoints(cr, info, &l, ml);

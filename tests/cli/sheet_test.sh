@@ -10,6 +10,8 @@
 #   page       the PDF's page is A3 landscape (420 x 297 mm), the PNG 420 and 297 mm at the dpi, and
 #              every picture in the PDF is embedded at the dpi; the proposed view's pixels span the
 #              printed width the sheet states;
+#   wireline   the wireline is stroked as vector paths (a red path of several segments in the PDF's
+#              content), not embedded as a picture;
 #   panorama   the cylindrical frame's sheet gives no focal length and 90.00 degrees across;
 #   print      --print-width 297 makes an A4 landscape page;
 #   resume     a rerun writes nothing; a changed dpi writes the sheets anew and keeps the views.
@@ -62,6 +64,24 @@ printed=$(grep -oE "Proposed view printed +[0-9]+" "$out/single.txt" | grep -oE 
 main_px=$(pdfimages -list "$d/sheet_single.pdf" | awk 'NR == 3 { print $4 }')
 python3 -c "import sys; sys.exit(abs($main_px / 100 * 25.4 - $printed) > 1)" \
   || fail "the proposed view is $main_px pixels at 100 dpi, not the $printed mm the sheet states"
+
+# the wireline as vector paths: in the page's content, a red stroke (the outline) made of a closed
+# path of several segments, over the existing view's picture
+python3 - "$d/sheet_single.pdf" <<'PY' || fail "sheet_single.pdf holds no vector outline for the wireline"
+import re, sys, zlib
+pdf = open(sys.argv[1], "rb").read()
+content = b""
+for m in re.finditer(rb"stream\r?\n(.*?)\r?\nendstream", pdf, re.S):
+    try: content += zlib.decompress(m.group(1)) + b"\n"
+    except zlib.error: pass
+best = 0
+for m in re.finditer(rb"1 0 0 RG", content):
+    end = content.find(b" S", m.end())
+    ops = re.findall(rb"[0-9.-]+ [0-9.-]+ ([ml])\b", content[m.end():end if end > 0 else None])
+    best = max(best, len(ops))
+print("the wireline's outline: %d path points stroked in red" % best)
+sys.exit(0 if best >= 4 else 1)
+PY
 
 # the panorama
 pdftotext -layout "$d/sheet_cylindrical_90.pdf" "$out/pano.txt" || fail "no cylindrical sheet"

@@ -2,8 +2,9 @@
 # study_index_test.sh SYLVA SCENE — the study's index.html (tests/scenes/study/hill_study.yaml):
 # it needs no network (no script, no file from elsewhere), every link and picture in it is a
 # file of the study, each viewpoint's row lists its images and sheets there are, the marks stand
-# where the map's world file places the viewpoints, and headless Chromium draws it (a screenshot
-# that is not blank). Without chromium the test is skipped (exit 77).
+# where the map's world file places the viewpoints (the study's own world file puts a mark on the
+# viewpoint's dot of the map page; a world file put by hand moves them), and headless Chromium draws
+# it (a screenshot that is not blank). Without chromium the test is skipped (exit 77).
 set -uo pipefail
 sylva=$1 scene=$2
 browser=$(command -v chromium || command -v chromium-browser || command -v google-chrome || true)
@@ -60,9 +61,25 @@ for v in south_west south south_east; do
 done
 grep -q '<td>mast</td><td>115</td><td>0.0</td>' "$index" || fail "south's nearest structure, distance, bearing"
 
+# the map page's own world file (ztv_vegetation.pgw, written by the study) places each mark on the
+# picture: south_west's mark stands on the red dot the page draws for it
+map=$(ls "$out"/s/ztv/ztv_vegetation.png)
+[ -f "${map%.png}.pgw" ] || fail "the study wrote no world file beside $map"
+grep -q '<image href="ztv/ztv_vegetation.png"' "$index" || fail "the index does not show the map page under its marks"
+read -r cx cy < <(sed -n 's/.*<title>south_west<\/title><circle cx="\([0-9.]*\)" cy="\([0-9.]*\)".*/\1 \2/p' "$index")
+[ -n "${cx:-}" ] || fail "no mark for south_west on the map picture"
+if [ -n "${cx:-}" ] && command -v oiiotool >/dev/null; then
+  # the 13 x 13 pixels round the mark's centre: most of them the page's red dot (a 2 mm disc)
+  oiiotool "$map" --cut "13x13+$((${cx%.*} - 6))+$((${cy%.*} - 6))" -o "$out/mark.ppm" 2>/dev/null ||
+    fail "oiiotool cannot cut $map"
+  red=$(python3 -c 'import sys; d = open(sys.argv[1], "rb").read()[-13 * 13 * 3:]
+print(sum(d[k] > 150 and d[k + 1] < 90 and d[k + 2] < 90 for k in range(0, len(d), 3)))' "$out/mark.ppm")
+  echo "south_west's mark at ($cx, $cy): ${red:-0} of 169 pixels round it the page's red dot"
+  [ "${red:-0}" -ge 40 ] || fail "south_west's mark at ($cx, $cy) is not on its dot on the map picture"
+fi
+
 # a sheet appears in its viewpoint's row; a world file places the marks on the map picture
 : >"$out/s/south/sheet_single.pdf"
-map=$(ls "$out"/s/ztv/ztv_vegetation.png)
 printf '1\n0\n0\n-1\n440000\n3760300\n' >"${map%.png}.pgw"
 study
 grep -q 'href="south/sheet_single.pdf"' "$index" || fail "the sheet of south is not linked"

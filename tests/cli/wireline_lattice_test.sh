@@ -3,7 +3,8 @@
 # lattice tower (../shared/data/models/pylon/gazebo-radio-tower, the mast of
 # scenes/engabreen_montage.yaml) seen whole, 120 m away, in a study's wireline product: its
 # outline (red) is one closed contour, where the members' own edges (yellow, inside it) are many
-# pieces, and with `study: {inner_edges: false}` the outline is drawn alone. Skipped (exit 77)
+# pieces, and with `study: {inner_edges: false}` the outline is drawn alone; on the sheet the
+# outline is one closed vector path, the edges vector paths too. Skipped (exit 77)
 # without the shared data or oiiotool.
 set -uo pipefail
 sylva=$1
@@ -85,5 +86,36 @@ PY
   [ $v = west ] && west_outline_px=$outline_px
 done
 
-[ $fails -eq 0 ] && echo "wireline of the lattice tower: one closed contour per view"
+# on the sheet the wireline is vector paths: the outline one closed red path (one "h" in the stroke
+# that sets red), the members' edges yellow paths
+"$sylva" study "$out/lattice.yaml" -o "$out/sheet" --products sheet --only west --dpi 50 -q >/dev/null 2>&1 ||
+  fail "study --products sheet exited with $?"
+pdf=$out/sheet/west/sheet_single.pdf
+if [ -f "$pdf" ]; then
+  paths=$(python3 - "$pdf" <<'PY'
+import re, sys, zlib
+pdf = open(sys.argv[1], "rb").read()
+content = b""
+for m in re.finditer(rb"stream\r?\n(.*?)\r?\nendstream", pdf, re.S):
+    try: content += zlib.decompress(m.group(1)) + b"\n"
+    except zlib.error: pass
+def stroke(colour):  # the path stroked after colour is set: its closed subpaths and its points
+    m = re.search(colour, content)
+    if not m: return 0, 0
+    end = content.find(b" S", m.end())
+    body = content[m.end():end if end > 0 else None]
+    return len(re.findall(rb"\bh\b", body)), len(re.findall(rb"[0-9.-]+ [0-9.-]+ [ml]\b", body))
+print(*stroke(rb"1 0 0 RG"), *stroke(rb"1 0\.86 0 RG"))
+PY
+)
+  read -r closed points edge_closed edge_points <<<"$paths"
+  echo "sheet: outline $closed closed path(s) of $points points; inner edges $edge_points points"
+  [ "$closed" = 1 ] || fail "the sheet's outline is $closed closed paths, not one"
+  [ "${points:-0}" -ge 8 ] || fail "the sheet's outline has ${points:-0} points"
+  [ "${edge_points:-0}" -ge 4 ] || fail "the sheet's inner edges have ${edge_points:-0} points"
+else
+  fail "no sheet_single.pdf"
+fi
+
+[ $fails -eq 0 ] && echo "wireline of the lattice tower: one closed contour per view, on the sheet one closed path"
 exit $((fails > 0))

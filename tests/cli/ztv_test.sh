@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # ztv_test.sh SYLVA SCENE — `sylva ztv` end to end on tests/scenes/ztv/small_site.yaml: the files
-# it promises appear (GeoTIFFs on the site's CRS, maps as PNG and PDF, summary) and nothing else; the summary
+# it promises appear (GeoTIFFs on the site's CRS, maps as PNG with its world file and PDF, summary) and nothing else; the summary
 # finds the area the trees and the barn hide and the cells inside them; the maps and GeoTIFFs
 # are byte for byte the same from one thread and from two; a second run replaces the files.
 set -uo pipefail
@@ -12,7 +12,7 @@ fail() { echo "FAIL: $*" >&2; fails=$((fails + 1)); }
 
 "$sylva" ztv "$scene" -o "$out/a" --threads 1 -q >/dev/null || fail "ztv exited with $?"
 "$sylva" ztv "$scene" -o "$out/b" --threads 2 -q >/dev/null || fail "ztv --threads 2 exited with $?"
-want="ztv_all.pdf ztv_all.png ztv_all.qml ztv_all.tif ztv_bare.pdf ztv_bare.png ztv_bare.qml ztv_bare.tif ztv_developments.qml ztv_distance_rings.qml ztv_hidden_all.pdf ztv_hidden_all.png ztv_hidden_all.tif ztv_layers.gpkg ztv_summary.csv ztv_summary.json ztv_viewpoints.qml"
+want="ztv_all.pdf ztv_all.pgw ztv_all.png ztv_all.qml ztv_all.tif ztv_bare.pdf ztv_bare.pgw ztv_bare.png ztv_bare.qml ztv_bare.tif ztv_developments.qml ztv_distance_rings.qml ztv_hidden_all.pdf ztv_hidden_all.pgw ztv_hidden_all.png ztv_hidden_all.tif ztv_layers.gpkg ztv_summary.csv ztv_summary.json ztv_viewpoints.qml"
 got=$(cd "$out/a" && ls -A | tr '\n' ' ' | sed 's/ $//')
 [ "$got" = "$want" ] || fail "files: '$got', expected '$want'"
 for f in $want; do

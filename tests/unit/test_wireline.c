@@ -1,7 +1,9 @@
 /* test_wireline.c — the development's wireline (render/wireline.h) on a rendered box: every
  * wireline pixel lies within a pixel of one of the box's visible edges as the camera projects
  * them, every visible edge is drawn along its length and painted, and a box that is not the
- * development has none; an open frame is outlined as one silhouette. */
+ * development has none; an open frame is outlined as one silhouette, traced as one closed
+ * polyline (render/wireline_trace.h), and hand-made silhouettes trace into the polylines they
+ * should. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -12,6 +14,7 @@
 #include "render/camera.h"
 #include "render/render.h"
 #include "render/wireline.h"
+#include "render/wireline_trace.h"
 #include "scene_fixture.h"
 #include "work_dir.h"
 
@@ -202,6 +205,8 @@ static int pieces(const wireline *w, wireline_kind k)
     return count;
 }
 
+static int traced_outlines = -1; /* the closed outlines wireline_trace found in the last frame */
+
 static void frame_contours(const char *extra, int *outline, uint64_t *outline_px, uint64_t *inner_px)
 {
     char text[2048];
@@ -218,6 +223,9 @@ static void frame_contours(const char *extra, int *outline, uint64_t *outline_px
     if (f) camera_init(&c, &s->camera, f->width, f->height);
     if (f && !wireline_find(&w, f, s, &c, &err))
         *outline = pieces(&w, WIRELINE_OUTLINE), *outline_px = w.outline, *inner_px = w.inner;
+    wireline_paths p;
+    traced_outlines = w.edge && !wireline_trace(&p, &w, 1, &err) ? (int)p.n_outlines : -1;
+    if (w.edge) wireline_paths_free(&p);
     wireline_free(&w);
     film_free(f);
     scene_free(s);
@@ -235,6 +243,7 @@ TEST(an_open_frame_is_outlined_as_one_silhouette)
     printf("frame: outline %d contour(s), %llu pixels; inner edges %llu pixels\n", outline,
            (unsigned long long)outline_px, (unsigned long long)inner_px);
     CHECK_INT(outline, 1);
+    CHECK_INT(traced_outlines, 1);
     CHECK(outline_px > 200 && outline_px < 320);
     CHECK(inner_px > 250);
     frame_contours("  - {name: block, shape: box, size: [0.5, 0.5, 0.5], position: [0, -10, 4.33]}\n", &outline,
@@ -244,5 +253,97 @@ TEST(an_open_frame_is_outlined_as_one_silhouette)
     CHECK(blocked_px > outline_px + 60);
 }
 
-TEST_LIST(TEST_CASE(wireline_lies_on_the_box_edges), TEST_CASE(a_box_that_is_not_the_development_has_no_wireline),
+/* A hand-made wireline of w x h pixels: the silhouette the rectangles [x0, x1] x [y0, y1] of
+ * pixels (inclusive), an inner edge along row `row` from column c0 to c1 (none when c1 < c0). */
+static void hand_made(wireline *w, uint32_t wd, uint32_t ht, const int (*rect)[4], int n_rect, int row, int c0, int c1)
+{
+    memset(w, 0, sizeof *w);
+    w->width = wd, w->height = ht;
+    w->edge = calloc((size_t)wd * ht, 1), w->inside = calloc((size_t)wd * ht, 1);
+    for (int r = 0; r < n_rect; r++)
+        for (int y = rect[r][2]; y <= rect[r][3]; y++)
+            for (int x = rect[r][0]; x <= rect[r][1]; x++) w->inside[(size_t)y * wd + x] = 1;
+    w->outline = 1;
+    for (int x = c0; x <= c1; x++) w->edge[(size_t)row * wd + x] = WIRELINE_EDGE, w->inner++;
+}
+
+static double ring_area(const wireline_paths *p, const wireline_polyline *l)
+{
+    double a = 0;
+    for (uint32_t k = 0; k < l->n; k++) {
+        const double *u = p->points[l->first + k], *v = p->points[l->first + (k + 1) % l->n];
+        a += u[0] * v[1] - v[0] * u[1];
+    }
+    return fabs(a) / 2;
+}
+
+/* Two parts, the second running out of the picture's right edge: two closed outlines round them,
+ * each within the tolerance of the pixels' boundary (the marching squares cut each corner by
+ * half a pixel), the stretch along the edge said to be on the frame; an inner edge along a row is
+ * one straight polyline through its pixels' centres; the same wireline traces the same. */
+TEST(hand_made_silhouettes_trace_into_their_outlines)
+{
+    static const int rect[2][4] = {{2, 7, 2, 8}, {12, 19, 3, 5}};
+    wireline w;
+    hand_made(&w, 20, 12, rect, 2, 5, 3, 6);
+    err_buf err = {{0}};
+    wireline_paths p, again;
+    CHECK_INT(wireline_trace(&p, &w, 1, &err), 0);
+    CHECK_INT(p.n_outlines, 2);
+    CHECK_INT(p.n_lines, 3);
+    for (uint32_t k = 0; k < p.n_lines && k < 3; k++) {
+        const wireline_polyline *l = &p.lines[k];
+        if (k < 2) {
+            CHECK(l->closed && l->kind == WIRELINE_OUTLINE);
+            double x0 = rect[k][0], x1 = rect[k][1] + 1, y0 = rect[k][2], y1 = rect[k][3] + 1;
+            CHECK_NEAR(ring_area(&p, l), (x1 - x0) * (y1 - y0) - 4 * 0.125, 0.3);
+            for (uint32_t i = 0; i < l->n; i++) {
+                const double *q = p.points[l->first + i];
+                double d = fmin(fmin(fabs(q[0] - x0), fabs(q[0] - x1)), fmin(fabs(q[1] - y0), fabs(q[1] - y1)));
+                CHECK(d <= 0.5 + 1e-9);
+            }
+        } else {
+            CHECK(!l->closed && l->kind == WIRELINE_EDGE);
+            CHECK_INT(l->n, 2);
+            if (l->n == 2) {
+                CHECK_NEAR(p.points[l->first][0], 3.5, 1e-9);
+                CHECK_NEAR(p.points[l->first + 1][0], 6.5, 1e-9);
+                CHECK_NEAR(p.points[l->first][1], 5.5, 1e-9);
+            }
+        }
+    }
+    int on_frame = 0;
+    if (p.n_lines >= 2)
+        for (uint32_t i = 0; i < p.lines[1].n; i++)
+            on_frame += wireline_on_frame(&p, p.points[p.lines[1].first + i],
+                                          p.points[p.lines[1].first + (i + 1) % p.lines[1].n]);
+    CHECK_INT(on_frame, 1);
+    CHECK_INT(wireline_trace(&again, &w, 1, &err), 0);
+    CHECK(again.n_points == p.n_points && !memcmp(again.points, p.points, p.n_points * sizeof *p.points));
+    wireline_paths_free(&again);
+    CHECK_INT(wireline_trace(&again, &w, 0, &err), 0); /* the outline alone */
+    CHECK_INT(again.n_lines, 2);
+    wireline_paths_free(&again);
+    wireline_paths_free(&p);
+    wireline_free(&w);
+}
+
+/* Two parts touching at a corner only are one piece of the silhouette (its holes are filled
+ * through side-by-side pixels, so its pieces join at corners): one outline round both. */
+TEST(parts_touching_at_a_corner_are_one_outline)
+{
+    static const int rect[2][4] = {{2, 4, 2, 4}, {5, 7, 5, 7}};
+    wireline w;
+    hand_made(&w, 10, 10, rect, 2, 0, 1, 0);
+    err_buf err = {{0}};
+    wireline_paths p;
+    CHECK_INT(wireline_trace(&p, &w, 1, &err), 0);
+    CHECK_INT(p.n_outlines, 1);
+    CHECK_NEAR(p.n_lines ? ring_area(&p, &p.lines[0]) : 0, 17.5, 0.5); /* 2 x 9, 6 corners cut, the saddle's cell */
+    wireline_paths_free(&p);
+    wireline_free(&w);
+}
+
+TEST_LIST(TEST_CASE(hand_made_silhouettes_trace_into_their_outlines), TEST_CASE(parts_touching_at_a_corner_are_one_outline),
+          TEST_CASE(wireline_lies_on_the_box_edges), TEST_CASE(a_box_that_is_not_the_development_has_no_wireline),
           TEST_CASE(an_open_frame_is_outlined_as_one_silhouette))

@@ -1,7 +1,8 @@
 /* test_ztv_output.c — the visibility map's files from hand-made blocks of rows: the GeoTIFFs
  * read back through GDAL with the grid's geotransform, the CRS, the band values and nodata; the
  * summary's areas are the exact counts of the hand-made pattern and add up to the grid; the
- * maps are PNGs of the documented size whose legend shows the band colours; an unfinished
+ * maps are PNGs of the documented size whose legend shows the band colours, whose structures are
+ * dots at their places and whose world files place a viewpoint on its pixel; an unfinished
  * output leaves nothing; a planted link is replaced, not written through; blocks out of order
  * or incomplete are refused.
  *
@@ -342,7 +343,10 @@ TEST(maps)
     pattern p;
     make_pattern(&p);
     static const ztv_viewpoint vp[1] = {{.name = "hill", .number = 1, .xy = {105, 75}}};
+    static const ztv_structure st[2] = {{.name = "K1", .development = "T1", .xy = {55, 100}},
+                                        {.name = "K2", .development = "T2", .xy = {155, 40}}};
     p.info.study_views = vp, p.info.n_study_views = 1;
+    p.info.structures = st, p.info.n_structures = 2;
     const char *dir = fresh_dir("maps");
     err_buf err = {{0}};
     CHECK_INT(write_all(&p, dir, &err), 0);
@@ -366,6 +370,28 @@ TEST(maps)
             page_px(&p.info, vp[0].xy[0], vp[0].xy[1], &x, &y);
             png_rgb(&img, x - (uint32_t)(1.3 * ZTV_MAP_DPI / 25.4), y, rgb);
             CHECK(abs(rgb[0] - 204) <= 2 && abs(rgb[1] - 13) <= 2 && abs(rgb[2] - 13) <= 2);
+            for (int k = 0; k < 2; k++) { /* each structure: a dark dot at its place */
+                page_px(&p.info, st[k].xy[0], st[k].xy[1], &x, &y);
+                png_rgb(&img, x, y, rgb);
+                CHECK(rgb[0] < 50 && rgb[1] < 50 && rgb[2] < 50);
+            }
+            /* the world file beside the PNG puts the viewpoint on its pixel */
+            char pgw[1300];
+            snprintf(pgw, sizeof pgw, "%s/%.*spgw", dir, (int)strlen(names_png[i]) - 3, names_png[i]);
+            FILE *f = fopen(pgw, "r");
+            double w[6] = {0};
+            int got = 0;
+            while (f && got < 6 && fscanf(f, "%lf", &w[got]) == 1) got++;
+            if (f) fclose(f);
+            CHECK_INT(got, 6);
+            CHECK(w[1] == 0 && w[2] == 0 && w[3] == -w[0] && w[0] > 0);
+            if (got == 6 && w[0] > 0) {
+                double col = (p.info.origin[0] + vp[0].xy[0] - w[4]) / w[0];
+                double row = (p.info.origin[1] + vp[0].xy[1] - w[5]) / w[3];
+                page_px(&p.info, vp[0].xy[0], vp[0].xy[1], &x, &y);
+                CHECK_NEAR(col + 0.5, x + 0.5, 1.0);
+                CHECK_NEAR(row + 0.5, y + 0.5, 1.0);
+            }
         }
         if (i == 0 && img.pixels) {
             /* the legend's swatches: 100 % (120, 0, 50) and 1-25 % (255, 230, 80) at opacity 0.65

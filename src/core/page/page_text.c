@@ -60,9 +60,16 @@ double page_text(cairo_t *cr, double x, double y, double width, const page_font 
 
 double page_text_width(cairo_t *cr, const page_font *f, const char *text)
 {
+    double w, h;
+    page_text_size(cr, f, text, &w, &h);
+    return w;
+}
+
+void page_text_size(cairo_t *cr, const page_font *f, const char *text, double *w, double *h)
+{
     PangoLayout *l = layout_of(cr, f, text, 0, 0); /* owned here */
     int pw, ph;
     pango_layout_get_size(l, &pw, &ph);
     g_object_unref(l);
-    return (double)pw / PANGO_SCALE;
+    *w = (double)pw / PANGO_SCALE, *h = (double)ph / PANGO_SCALE;
 }

@@ -27,4 +27,7 @@ double page_text(cairo_t *cr, double x, double y, double width, const page_font 
 /* The width in millimetres text would take, unwrapped. */
 double page_text_width(cairo_t *cr, const page_font *f, const char *text);
 
+/* The width and height in millimetres text would take, unwrapped (as page_text sets it). */
+void page_text_size(cairo_t *cr, const page_font *f, const char *text, double *w, double *h);
+
 #endif

@@ -135,13 +135,13 @@ int wireline_find(wireline *w, const film *f, const scene *s, const camera *c, e
     memset(w, 0, sizeof *w);
     size_t n = (size_t)f->width * f->height;
     w->edge = calloc(n ? n : 1, 1);
-    uint8_t *inside = calloc(n ? n : 1, 1); /* owned here: the silhouette */
+    uint8_t *inside = w->inside = calloc(n ? n : 1, 1); /* the silhouette, owned by w */
     if (!w->edge || !inside) {
-        free(inside), wireline_free(w);
+        wireline_free(w);
         return err_nomem(err, "out of memory for a %ux%u wireline", f->width, f->height);
     }
     if (silhouette(f, s, inside, err)) {
-        free(inside), wireline_free(w);
+        wireline_free(w);
         return -1;
     }
     w->width = f->width, w->height = f->height;
@@ -154,13 +154,13 @@ int wireline_find(wireline *w, const film *f, const scene *s, const camera *c, e
             w->edge[k] = (uint8_t)kind;
             w->outline += kind == WIRELINE_OUTLINE, w->inner += kind == WIRELINE_EDGE;
         }
-    free(inside);
     return 0;
 }
 
 void wireline_free(wireline *w)
 {
     free(w->edge);
+    free(w->inside);
     memset(w, 0, sizeof *w);
 }
 

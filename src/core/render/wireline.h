@@ -17,7 +17,10 @@
  * behind the terrain or a tree has no pixels. A line is one pixel wide, on the development's
  * side of the edge, so it lies within a pixel of the edge's true position.
  *
- * Ownership: wireline_find allocates w->edge; wireline_free releases it.
+ * The silhouette itself is kept beside the lines (w->inside), for render/wireline_trace.h to trace
+ * its outline as vector paths.
+ *
+ * Ownership: wireline_find allocates w->edge and w->inside; wireline_free releases them.
  */
 #ifndef SYLVA_WIRELINE_H
 #define SYLVA_WIRELINE_H
@@ -39,6 +42,7 @@ typedef enum wireline_kind { WIRELINE_NONE = 0, WIRELINE_OUTLINE = 1, WIRELINE_E
 typedef struct wireline {
     uint32_t width, height;
     uint8_t *edge;           /* width * height wireline_kinds, row 0 at the top; owned */
+    uint8_t *inside;         /* width * height: 1 inside the silhouette; owned */
     uint64_t outline, inner; /* pixels of each kind */
 } wireline;
 

@@ -8,6 +8,7 @@
 #include "page/page_text.h"
 #include "sheet/sheet_map.h"
 #include "sheet/sheet_table.h"
+#include "sheet/sheet_wireline.h"
 
 #define MARGIN 10.0     /* laid-out millimetres, A3 */
 #define GAP 6.0
@@ -97,6 +98,16 @@ static int draw_panel(cairo_t *cr, const page_picture *p, const char *caption, d
     return 0;
 }
 
+/* The wireline's panel: the existing view with the wireline stroked over it (sheet_wireline.h). */
+static int draw_wireline(cairo_t *cr, const sheet *sh, double x, double y, double w, double h, double dpi,
+                         err_buf *err)
+{
+    page_picture none = {0};
+    if (draw_panel(cr, sh->wireline ? &sh->existing : &none, "Wireline", x, y, w, h, dpi, err)) return -1;
+    sheet_wireline_draw(cr, sh->wireline, x, y + CAPTION_H, w, h);
+    return 0;
+}
+
 static double draw_table(cairo_t *cr, const sheet *sh, const sheet_panels *p, double scale, double x, double y,
                          double w)
 {
@@ -133,7 +144,7 @@ static int draw_upright(cairo_t *cr, const sheet *sh, const sheet_panels *p, dou
     if (draw_panel(cr, &sh->proposed, "Proposed view", x, y, p->main_mm, p->height_main_mm, dpi, err)) return -1;
     y += CAPTION_H + p->height_main_mm + GAP;
     if (draw_panel(cr, &sh->existing, "Existing view", x, y, p->side_mm, p->height_side_mm, dpi, err) ||
-        draw_panel(cr, &sh->wireline, "Wireline", x + p->side_mm + GAP, y, p->side_mm, p->height_side_mm, dpi, err))
+        draw_wireline(cr, sh, x + p->side_mm + GAP, y, p->side_mm, p->height_side_mm, dpi, err))
         return -1;
     double rx = MARGIN + p->main_mm + GAP, rw = SHEET_A3_WIDTH - MARGIN - rx, ry = MARGIN + TITLE_H;
     double map_h = fmin(rw * 0.72, 0.42 * (SHEET_A3_HEIGHT - ry));
@@ -152,8 +163,7 @@ static int draw_wide(cairo_t *cr, const sheet *sh, const sheet_panels *p, double
     if (draw_panel(cr, &sh->proposed, "Proposed view", x, y, p->main_mm, p->height_main_mm, dpi, err)) return -1;
     y += CAPTION_H + p->height_main_mm + GAP;
     if (draw_panel(cr, &sh->existing, "Existing view", x, y, p->side_mm, p->height_side_mm, dpi, err) ||
-        draw_panel(cr, &sh->wireline, "Wireline", x, y + CAPTION_H + p->height_side_mm + GAP, p->side_mm,
-                   p->height_side_mm, dpi, err))
+        draw_wireline(cr, sh, x, y + CAPTION_H + p->height_side_mm + GAP, p->side_mm, p->height_side_mm, dpi, err))
         return -1;
     double mx = x + p->side_mm + GAP, mh = SHEET_A3_HEIGHT - MARGIN - FOOT_H - y - CAPTION_H, mw = fmin(mh * 1.1, 110);
     page_font cap = {.size_pt = 8, .bold = 1};

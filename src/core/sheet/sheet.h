@@ -12,9 +12,10 @@
  *   cross-check: not run within a study), and a note when the frame does not hold the whole
  *   development, saying what the study did.
  *
- * The page is laid out at A3 (420 x 297 mm) and scaled to the print width. The wireline is the
- * wireline product's raster (render/wireline.h finds it in the rendered pixels; there is no
- * vector geometry of it). Nothing is kept: the caller owns every field. */
+ * The page is laid out at A3 (420 x 297 mm) and scaled to the print width. The wireline is drawn
+ * as vector strokes over the existing view (sheet_wireline.h): the outline and inner edges that
+ * render/wireline.h finds in the rendered pixels, traced into polylines. Nothing is kept: the
+ * caller owns every field. */
 #ifndef SYLVA_SHEET_H
 #define SYLVA_SHEET_H
 

@@ -9,6 +9,7 @@
 #include "page/page_hillshade.h"
 #include "page/page_image.h"
 #include "page/page_marks.h"
+#include "page/page_placer.h"
 #include "page/page_text.h"
 
 #define DEG (M_PI / 180.0)
@@ -91,17 +92,26 @@ static void draw_wedge(cairo_t *cr, const map_window *m, const sheet_view *v, co
     cairo_stroke(cr);
 }
 
-static void draw_structures(cairo_t *cr, const scene_file *sf, const map_window *m)
+/* The development's structures as dots, their names beside them clear of one another, of the
+ * viewpoint and of the map's north arrow and scale bar (pl holds those). */
+static void draw_structures(cairo_t *cr, const scene_file *sf, const map_window *m, page_placer *pl)
 {
     page_font f = {.size_pt = 5.5, .halo = 0.35, .rgb = {0.3, 0.1, 0.45}};
-    for (uint32_t k = 0; k < sf->n_objects; k++) {
-        const object_spec *o = &sf->objects[k];
-        if (!o->development) continue;
-        double x, y;
-        page_xy(m, o->position[0], o->position[1], &x, &y);
-        page_dot(cr, x, y, 0.9, (const double[3]){0.45, 0.15, 0.65});
-        if (o->name) page_text(cr, x + 1.2, y - 1.0, 0, &f, o->name, 0);
-    }
+    for (int pass = 0; pass < 2; pass++)
+        for (uint32_t k = 0; k < sf->n_objects; k++) {
+            const object_spec *o = &sf->objects[k];
+            if (!o->development) continue;
+            double x, y, w, h;
+            page_xy(m, o->position[0], o->position[1], &x, &y);
+            if (!pass) {
+                page_dot(cr, x, y, 0.9, (const double[3]){0.45, 0.15, 0.65});
+                page_placer_mark(pl, x, y, 0.9);
+            } else if (o->name) {
+                page_text_size(cr, &f, o->name, &w, &h);
+                page_box b = page_placer_put(pl, x, y, 0.9, 0.3, w, h);
+                page_text(cr, b.x0, b.y0, 0, &f, o->name, 0);
+            }
+        }
 }
 
 static void draw_viewpoint(cairo_t *cr, const map_window *m, const sheet_view *v, const double eye[2])
@@ -125,7 +135,15 @@ int sheet_map_draw(cairo_t *cr, const scene *s, const scene_file *sf, const shee
     int rc = draw_ground(cr, s, &m, w, h, dpi, err);
     if (!rc) {
         draw_wedge(cr, &m, v, eye);
-        draw_structures(cr, sf, &m);
+        page_placer pl; /* owned here */
+        page_placer_init(&pl, (page_box){x, y, x + w, y + h});
+        page_placer_take(&pl, (page_box){x + w - 10, y, x + w, y + 14});              /* the north arrow */
+        page_placer_take(&pl, (page_box){x, y + h - 10, x + 6 + 0.4 * w, y + h});     /* the scale bar */
+        double ex, ey;
+        page_xy(&m, eye[0], eye[1], &ex, &ey);
+        page_placer_mark(&pl, ex, ey, 1.8);
+        draw_structures(cr, sf, &m, &pl);
+        page_placer_free(&pl);
         draw_viewpoint(cr, &m, v, eye);
         page_north_arrow(cr, x + w - 5, y + 11, 7);
         page_scale_bar(cr, x + 3, y + h - 6, 0.4 * w, m.mm_per_m);

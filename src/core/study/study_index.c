@@ -14,7 +14,12 @@
 #include "study/study_frames.h"
 #include "util/html_text.h"
 
-#define MARK_RADIUS 11 /* pixels of a viewpoint's mark on the map */
+#define MARK_RADIUS 11 /* pixels of a viewpoint's mark on the key map */
+/* On the map page (ztv/ztv_map.h: A3 landscape, 420 mm across), a viewpoint is a numbered red dot
+ * 2 mm across with a white rim to 2.2 mm: the page's mark is a ring just round it, its number
+ * the page's own. */
+#define MAP_PAGE_MM 420.0
+#define MAP_DOT_RING_MM 2.3
 
 /* The products whose PNG is a view (PRODUCT_FRAME.png), in the order the page lists them. */
 static const study_product views_rendered[] = {STUDY_EXISTING, STUDY_PROPOSED, STUDY_WIRELINE};
@@ -125,8 +130,9 @@ static int first_file(const char *dir, const index_view *iv, char *out, size_t n
     return -1;
 }
 
-/* A numbered mark at (x, y) in the SVG's units, linked to the viewpoint's first file (or its row). */
-static void put_mark(FILE *f, const char *dir, const index_view *iv, double x, double y, double r)
+/* A mark at (x, y) in the SVG's units, linked to the viewpoint's first file (or its row): a numbered
+ * disc, or (ring 1) a ring round the number the picture shows. */
+static void put_mark(FILE *f, const char *dir, const index_view *iv, double x, double y, double r, int ring)
 {
     char target[ATOMIC_PATH_MAX];
     fputs("<a href=\"", f);
@@ -134,9 +140,11 @@ static void put_mark(FILE *f, const char *dir, const index_view *iv, double x, d
     else fprintf(f, "#vp%u", iv->number);
     fprintf(f, "\"><title>");
     html_text(f, iv->v->name);
-    fprintf(f, "</title><circle cx=\"%.1f\" cy=\"%.1f\" r=\"%.1f\" class=\"mark\"/>"
-               "<text x=\"%.1f\" y=\"%.1f\" font-size=\"%.1f\" class=\"num\">%u</text></a>\n",
-            x, y, r, x, y + 0.35 * r, r * 1.1, iv->number);
+    fprintf(f, "</title><circle cx=\"%.1f\" cy=\"%.1f\" r=\"%.1f\" class=\"%s\"/>", x, y, r, ring ? "ring" : "mark");
+    if (!ring)
+        fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"%.1f\" class=\"num\">%u</text>", x, y + 0.35 * r, r * 1.1,
+                iv->number);
+    fputs("</a>\n", f);
 }
 
 static void put_map_picture(FILE *f, const char *dir, const index_map *m, const index_view *views, uint32_t n)
@@ -145,11 +153,23 @@ static void put_map_picture(FILE *f, const char *dir, const index_map *m, const 
                "<image href=\"", m->width, m->height, m->width);
     put_url(f, m->picture);
     fprintf(f, "\" x=\"0\" y=\"0\" width=\"%u\" height=\"%u\"/>\n", m->width, m->height);
+    double r = MAP_DOT_RING_MM * m->width / MAP_PAGE_MM;
     for (uint32_t k = 0; k < n; k++) {
         double x = (views[k].e - m->c) / m->a + 0.5, y = (views[k].n - m->f) / m->e + 0.5;
-        if (x >= 0 && y >= 0 && x <= m->width && y <= m->height) put_mark(f, dir, &views[k], x, y, MARK_RADIUS);
+        if (x >= 0 && y >= 0 && x <= m->width && y <= m->height) put_mark(f, dir, &views[k], x, y, r, 1);
     }
     fputs("</svg>\n", f);
+    char pdf[sizeof m->picture];
+    snprintf(pdf, sizeof pdf, "%.*spdf", (int)strlen(m->picture) - 3, m->picture);
+    fputs("<p>The map page at full size: <a href=\"", f);
+    put_url(f, m->picture);
+    fputs("\">PNG</a>", f);
+    if (is_file(dir, pdf)) {
+        fputs(", <a href=\"", f);
+        put_url(f, pdf);
+        fputs("\">PDF</a>", f);
+    }
+    fputs(" (A3). Each ringed viewpoint links to its sheet, else to its first view.</p>\n", f);
 }
 
 /* A scale bar of a round length near `about` metres (1, 2 or 5 times a power of ten) in the key
@@ -193,7 +213,7 @@ static void put_key_map(FILE *f, const scene_file *sf, const char *dir, const do
         html_text(f, sf->objects[k].name);
         fputs("</text>\n", f);
     }
-    for (uint32_t k = 0; k < n; k++) put_mark(f, dir, &views[k], PX(views[k].e), PY(views[k].n), r);
+    for (uint32_t k = 0; k < n; k++) put_mark(f, dir, &views[k], PX(views[k].e), PY(views[k].n), r, 0);
     put_scale_bar(f, size / 4, scale);
 #undef PX
 #undef PY
@@ -254,7 +274,8 @@ static const char style[] =
     ".map{max-width:100%;height:auto;border:1px solid #999}\n"
     ".mark{fill:#fff;stroke:#000;stroke-width:2}.num{text-anchor:middle;font-weight:bold;fill:#000}\n"
     ".name{font-size:12px;fill:#000}\n"
-    "a:hover .mark{fill:#ffd400}\n"
+    ".ring{fill:#ffd400;fill-opacity:0;stroke:#ffd400;stroke-width:4}\n"
+    "a:hover .mark{fill:#ffd400}a:hover .ring{fill-opacity:0.6}\n"
     "table{border-collapse:collapse;margin-top:12px}td,th{border:1px solid #bbb;padding:4px 8px;text-align:left}\n"
     "th{background:#eee}tr:target{background:#fff3b0}\n"
     "</style>\n";

@@ -6,9 +6,11 @@
  * sheet_FRAME.pdf and .png, images PRODUCT_FRAME.png). It lists what is on disk when it is
  * written, so it is written last, by every run; a file that already says the same is left as is.
  *
- * The marks stand on the map picture DIR/ztv/ztv_MODE.png (the screened mode's, else bare
- * earth's) where its world file ztv_MODE.pgw (the map coordinates of its pixels) places them;
- * without one, on a key map of the viewpoints and structures the page draws itself (SVG). */
+ * The marks stand on the map page's picture DIR/ztv/ztv_MODE.png (the screened mode's, else bare
+ * earth's) where its world file ztv_MODE.pgw (the map coordinates of its pixels, written by the
+ * map beside it, ztv/ztv_map.h) places them, each a ring round the page's own numbered dot, the
+ * page's PNG and PDF linked under it; without one, on a key map of the viewpoints and structures
+ * the page draws itself (SVG). */
 #ifndef SYLVA_STUDY_INDEX_H
 #define SYLVA_STUDY_INDEX_H
 

@@ -10,6 +10,7 @@
 #include "render/camera.h"
 #include "render/render_still.h"
 #include "render/wireline.h"
+#include "render/wireline_trace.h"
 #include "scene/scene_mark.h"
 #include "scene_build/scene_ground.h"
 #include "scene_file/host_schema.h"
@@ -40,18 +41,25 @@ const char *study_product_ext(int p)
     return p == STUDY_SHEET ? "pdf" : "exr";
 }
 
+/* The wireline of the development in `full`, found through the job's camera (wl then owned by the
+ * caller: wireline_free). Returns 0, or -1 with err set. */
+static int find_wireline(const scene *s, const study_job *j, const film *full, wireline *wl, err_buf *err)
+{
+    camera cam;
+    camera_init(&cam, &s->camera, j->size[0], j->size[1]);
+    return wireline_find(wl, full, s, &cam, err);
+}
+
 /* The wireline of the development in `full` over the existing view `bg` exposed at ev, as 8-bit
  * sRGB pixels (owned by the caller), or NULL with err set. */
 static uint8_t *wireline_pixels(const scene *s, const study_job *j, const film *full, const film *bg, double ev,
                                 int inner_edges, err_buf *err)
 {
     static const uint8_t red[3] = {255, 0, 0}, yellow[3] = {255, 220, 0};
-    camera cam;
-    camera_init(&cam, &s->camera, j->size[0], j->size[1]);
     wireline wl = {0};
     uint8_t *px = film_tonemap(bg, s->image.tone, ev); /* owned by the caller */
     if (!px) return err_nomem(err, "out of memory tone-mapping the wireline"), NULL;
-    if (wireline_find(&wl, full, s, &cam, err)) {
+    if (find_wireline(s, j, full, &wl, err)) {
         free(px);
         return NULL;
     }
@@ -72,24 +80,31 @@ static int write_wireline(const scene *s, const study_job *j, const film *full, 
     return rc;
 }
 
-/* The sheet of j (sheet/sheet.h): its three pictures from the renders, its facts from the scene. */
+/* The sheet of j (sheet/sheet.h): its two pictures from the renders, the wireline traced from the
+ * proposed render's pixels, its facts from the scene. */
 static int write_sheet(const scene *s, const scene_file *sf, const study_job *j, const film *full, const film *bg,
                        double ev, uint32_t spp, const char *png, const char *pdf, err_buf *err)
 {
     sheet sh = {.s = s, .sf = sf, .eye = {s->camera.position[0], s->camera.position[1]}, .spp = spp,
                 .wider_frames = j->other_frames[0] ? j->other_frames : NULL, .page = j->page};
     sheet_view_of(s, sf, j->view, &s->camera, study_frame_of(j->frame)->name, j->size[0], j->size[1], &sh.view);
-    uint8_t *existing = film_tonemap(bg, s->image.tone, ev), *proposed = film_tonemap(full, s->image.tone, ev);
-    uint8_t *wire = existing && proposed ? wireline_pixels(s, j, full, bg, ev, sf->study.inner_edges, err) : NULL; /* all three owned here */
+    uint8_t *existing = film_tonemap(bg, s->image.tone, ev), *proposed = film_tonemap(full, s->image.tone, ev); /* owned here */
+    wireline wl = {0};
+    wireline_paths paths = {0}; /* owned here */
     int rc = -1;
     if (!existing || !proposed) err_nomem(err, "out of memory for the sheet's pictures");
-    if (wire) {
+    else if (!find_wireline(s, j, full, &wl, err)) {
+        rc = wireline_trace(&paths, &wl, sf->study.inner_edges, err);
+        wireline_free(&wl);
+    }
+    if (!rc) {
         sh.existing = (page_picture){j->size[0], j->size[1], existing};
         sh.proposed = (page_picture){j->size[0], j->size[1], proposed};
-        sh.wireline = (page_picture){j->size[0], j->size[1], wire};
+        sh.wireline = &paths;
         rc = sheet_write(&sh, pdf, png, err);
     }
-    free(existing), free(proposed), free(wire);
+    wireline_paths_free(&paths);
+    free(existing), free(proposed);
     return rc;
 }
 

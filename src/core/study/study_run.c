@@ -131,7 +131,7 @@ static int plan_job(const scene_file *sf, const study_options *o, const study_pl
                           .height = j->size[1], .spp = p->spp, .seed = sf->image.seed,
                           .season_day = sf->season.day, .extra = k == STUDY_SHEET ? sheet_lines : NULL};
         study_manifest_text(&r, j->record[k]);
-        if (k == STUDY_WIRELINE) /* what the wireline draws, in its record alone */
+        if (k == STUDY_WIRELINE || k == STUDY_SHEET) /* what the wireline draws, in the records that draw it */
             snprintf(j->record[k] + strlen(j->record[k]), STUDY_MANIFEST_MAX - strlen(j->record[k]),
                      "inner_edges %d\n", sf->study.inner_edges);
         char png[STUDY_PATH_MAX], exr[STUDY_PATH_MAX], record[STUDY_PATH_MAX];

@@ -4,9 +4,11 @@
  * with page/page.h: a vector PDF and a PNG at ZTV_MAP_DPI) as a hillshade of the terrain (sun from
  * the north-west, 45 degrees up) under half-transparent colour bands, with the viewpoints plotted
  * and numbered, distance rings round the development, the radius, frame coordinates along the
- * edges, each development's outline and name at its structures, "no terrain" past the DTM's edge,
+ * edges, each development's outline and name and its structures marked and named (page/page_placer.h
+ * keeps the names clear of one another), "no terrain" past the DTM's edge,
  * a legend, a scale bar, a north arrow and a title block (project, DTM, date, observer and target
- * heights, curvature, CRS).
+ * heights, curvature, CRS). Beside each PNG its world file (ztv_map_world_file) places the page's
+ * pixels in the site's CRS.
  *
  * Ownership: ztv_map_new returns a map that ztv_map_free releases; it keeps info, which must
  * outlive it. Each write draws into streams the caller owns. */
@@ -50,5 +52,11 @@ typedef struct ztv_map_layout {
 #define ZTV_PAGE_WIDTH 420.0
 #define ZTV_PAGE_HEIGHT 297.0
 ztv_map_layout ztv_map_layout_of(const ztv_info *info);
+
+/* The six numbers of the page PNG's world file (ztv_MODE.pgw, ESRI's order: A, D, B, E, C, F), so
+ * that map easting = A col + C and northing = E row + F at the centre of pixel (col, row): with
+ * p = ZTV_MAP_DPI / 25.4 pixels a millimetre, A = 1 / (p mm_per_m), E = -A, C = origin east + west +
+ * (0.5 / p - x) / mm_per_m and F = origin north + north - (0.5 / p - y) / mm_per_m. */
+void ztv_map_world_file(const ztv_info *info, double out[6]);
 
 #endif

@@ -8,6 +8,7 @@
 #include "page/page.h"
 #include "page/page_image.h"
 #include "page/page_marks.h"
+#include "page/page_placer.h"
 #include "page/page_text.h"
 #include "ztv/ztv_map.h"
 #include "ztv/ztv_map_style.h"
@@ -18,6 +19,8 @@
 #define EDGE_LABEL 5.0   /* the frame coordinates' strip above and left of the map */
 #define PANEL_W 112.0
 #define RINGS_MAX 8
+#define ZTV_VIEWPOINT_MARK_MM 2.0  /* a viewpoint's dot, radius */
+#define ZTV_STRUCTURE_MARK_MM 0.9  /* a structure's dot, radius */
 
 ztv_map_layout ztv_map_layout_of(const ztv_info *info)
 {
@@ -28,6 +31,15 @@ ztv_map_layout ztv_map_layout_of(const ztv_info *info)
     double gw = g->nx * g->cell, gh = g->ny * g->cell;
     double s = fmin(most_w / gw, most_h / gh);
     return (ztv_map_layout){x, y, gw * s, gh * s, s, g->x0 - 0.5 * g->cell, g->y0 + 0.5 * g->cell};
+}
+
+void ztv_map_world_file(const ztv_info *info, double out[6])
+{
+    ztv_map_layout l = ztv_map_layout_of(info);
+    double p = ZTV_MAP_DPI / 25.4, a = 1.0 / (p * l.mm_per_m);
+    out[0] = a, out[1] = 0, out[2] = 0, out[3] = -a;
+    out[4] = info->origin[0] + l.west + (0.5 / p - l.x) / l.mm_per_m;
+    out[5] = info->origin[1] + l.north - (0.5 / p - l.y) / l.mm_per_m;
 }
 
 static void to_page(const ztv_map_layout *l, double gx, double gy, double *x, double *y)
@@ -56,8 +68,9 @@ static void ring_centre(const ztv_info *info, double c[2])
     c[0] /= info->n_targets, c[1] /= info->n_targets;
 }
 
-/* Distance rings round the development: 1, 2, 5, 10, 20, 50 km... inside the radius, labelled. */
-static void draw_rings(cairo_t *cr, const ztv_info *info, const ztv_map_layout *l)
+/* Distance rings round the development: 1, 2, 5, 10, 20, 50 km... inside the radius, labelled
+ * (each label taken in pl, for the names to keep off). */
+static void draw_rings(cairo_t *cr, const ztv_info *info, const ztv_map_layout *l, page_placer *pl)
 {
     if (!info->target_xy || !info->n_targets) return;
     double c[2], x, y;
@@ -75,6 +88,9 @@ static void draw_rings(cairo_t *cr, const ztv_info *info, const ztv_map_layout *
         cairo_stroke(cr);
         char text[32];
         page_length_text(steps[k], text, sizeof text);
+        double tw, th;
+        page_text_size(cr, &f, text, &tw, &th);
+        page_placer_take(pl, (page_box){x - tw / 2, y - r - 1.6, x + tw / 2, y - r - 1.6 + th});
         page_text(cr, x, y - r - 1.6, 0, &f, text, 0);
     }
 }
@@ -145,71 +161,171 @@ static void draw_edges(cairo_t *cr, const ztv_info *info, const ztv_map_layout *
     cairo_stroke(cr);
 }
 
-/* Each development: the outline round its structures (their convex hull), its structures as
- * dots and its name beside them. */
-static void draw_developments(cairo_t *cr, const ztv_info *info, const ztv_map_layout *l)
+/* The labels of a map, set last over everything else: the text, its font and its box. */
+#define LABELS_MAX 512
+typedef struct map_labels {
+    page_placer placer;
+    uint32_t n;
+    struct {
+        const char *text;
+        page_font font;
+        page_box box;
+    } at[LABELS_MAX];
+} map_labels;
+
+/* Places text in font beside the mark of radius r at (x, y). */
+static void place_label(cairo_t *cr, map_labels *ml, const char *text, const page_font *f, double x, double y,
+                        double r, double gap)
+{
+    if (!text || !*text || ml->n == LABELS_MAX) return;
+    double w, h;
+    page_text_size(cr, f, text, &w, &h);
+    ml->at[ml->n].text = text, ml->at[ml->n].font = *f;
+    ml->at[ml->n].box = page_placer_put(&ml->placer, x, y, r, gap, w, h);
+    ml->n++;
+}
+
+static void draw_labels(cairo_t *cr, const map_labels *ml)
+{
+    for (uint32_t k = 0; k < ml->n; k++) {
+        page_font f = ml->at[k].font;
+        f.align = PAGE_LEFT;
+        page_text(cr, ml->at[k].box.x0, ml->at[k].box.y0, 0, &f, ml->at[k].text, 0);
+    }
+}
+
+/* The outline round development d's targets (their convex hull, by gift wrapping) as a path;
+ * its bounds on the page in box. 0 when d has no target. */
+static int hull_path(cairo_t *cr, const ztv_info *info, const ztv_map_layout *l, uint32_t d, page_box *box)
+{
+    uint32_t first = UINT32_MAX, n = 0;
+    for (uint32_t t = 0; t < info->n_targets; t++)
+        if (info->target_development[t] == d && (first == UINT32_MAX || info->target_xy[t][0] < info->target_xy[first][0]))
+            first = t;
+    if (first == UINT32_MAX) return 0;
+    *box = (page_box){INFINITY, INFINITY, -INFINITY, -INFINITY};
+    uint32_t at = first;
+    cairo_new_path(cr);
+    do {
+        double x, y;
+        to_page(l, info->target_xy[at][0], info->target_xy[at][1], &x, &y);
+        if (n++) cairo_line_to(cr, x, y);
+        else cairo_move_to(cr, x, y);
+        box->x0 = fmin(box->x0, x), box->y0 = fmin(box->y0, y), box->x1 = fmax(box->x1, x), box->y1 = fmax(box->y1, y);
+        uint32_t next = at;
+        for (uint32_t t = 0; t < info->n_targets; t++) {
+            if (info->target_development[t] != d || t == at) continue;
+            const double *a = info->target_xy[at], *b = info->target_xy[next], *c = info->target_xy[t];
+            double cross = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+            double ab = hypot(b[0] - a[0], b[1] - a[1]), ac = hypot(c[0] - a[0], c[1] - a[1]);
+            if (next == at || cross < 0 || (cross == 0 && ac > ab)) next = t;
+        }
+        at = next;
+    } while (at != first && n <= info->n_targets);
+    cairo_close_path(cr);
+    return 1;
+}
+
+/* Takes the current path (lines) in the placer as marks of radius r every r along it, so that
+ * labels keep off the stroke. */
+static void take_outline(cairo_t *cr, page_placer *pl, double r)
+{
+    cairo_path_t *path = cairo_copy_path_flat(cr); /* owned here */
+    double first[2] = {0, 0}, at[2] = {0, 0};
+    for (int i = 0; i < path->num_data; i += path->data[i].header.length) {
+        const cairo_path_data_t *d = &path->data[i];
+        double to[2] = {first[0], first[1]};
+        if (d->header.type == CAIRO_PATH_MOVE_TO) {
+            first[0] = at[0] = d[1].point.x, first[1] = at[1] = d[1].point.y;
+            continue;
+        }
+        if (d->header.type == CAIRO_PATH_LINE_TO) to[0] = d[1].point.x, to[1] = d[1].point.y;
+        else if (d->header.type != CAIRO_PATH_CLOSE_PATH) continue;
+        double len = hypot(to[0] - at[0], to[1] - at[1]);
+        int steps = (int)ceil(len / r);
+        for (int k = 0; k <= steps; k++)
+            page_placer_mark(pl, at[0] + (to[0] - at[0]) * k / fmax(steps, 1), at[1] + (to[1] - at[1]) * k / fmax(steps, 1), r);
+        at[0] = to[0], at[1] = to[1];
+    }
+    cairo_path_destroy(path);
+}
+
+/* Each development: the outline round its structures, each structure a dark dot (each target
+ * when the map was given targets alone). The marks are taken in the labels' placer. */
+static void draw_developments(cairo_t *cr, const ztv_info *info, const ztv_map_layout *l, map_labels *ml)
 {
     if (!info->target_xy) return;
-    page_font f = {.size_pt = 7.5, .bold = 1, .halo = 0.5, .rgb = {0.3, 0.05, 0.4}};
     for (uint32_t d = 0; d < info->n_developments; d++) {
-        /* gift wrapping over the development's targets */
-        uint32_t first = UINT32_MAX, n = 0;
-        for (uint32_t t = 0; t < info->n_targets; t++)
-            if (info->target_development[t] == d && (first == UINT32_MAX || info->target_xy[t][0] < info->target_xy[first][0]))
-                first = t;
-        if (first == UINT32_MAX) continue;
-        uint32_t at = first;
-        cairo_new_path(cr);
-        do {
-            double x, y;
-            to_page(l, info->target_xy[at][0], info->target_xy[at][1], &x, &y);
-            if (n++) cairo_line_to(cr, x, y);
-            else cairo_move_to(cr, x, y);
-            uint32_t next = at;
-            for (uint32_t t = 0; t < info->n_targets; t++) {
-                if (info->target_development[t] != d || t == at) continue;
-                const double *a = info->target_xy[at], *b = info->target_xy[next], *c = info->target_xy[t];
-                double cross = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-                double ab = hypot(b[0] - a[0], b[1] - a[1]), ac = hypot(c[0] - a[0], c[1] - a[1]);
-                if (next == at || cross < 0 || (cross == 0 && ac > ab)) next = t;
-            }
-            at = next;
-        } while (at != first && n <= info->n_targets);
-        cairo_close_path(cr);
+        page_box box;
+        if (!hull_path(cr, info, l, d, &box)) continue;
         cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
         cairo_set_source_rgba(cr, 0.45, 0.15, 0.65, 0.9);
         cairo_set_line_width(cr, 2.2); /* the outline stands a millimetre round the structures */
-        cairo_stroke(cr);
+        cairo_stroke_preserve(cr);
+        take_outline(cr, &ml->placer, 1.1);
+        cairo_new_path(cr);
+        if (info->n_structures) continue;
         for (uint32_t t = 0; t < info->n_targets; t++) {
             if (info->target_development[t] != d) continue;
             double x, y;
             to_page(l, info->target_xy[t][0], info->target_xy[t][1], &x, &y);
-            page_dot(cr, x, y, 0.8, (const double[3]){0.1, 0.1, 0.1});
+            page_dot(cr, x, y, ZTV_STRUCTURE_MARK_MM, (const double[3]){0.1, 0.1, 0.1});
+            page_placer_mark(&ml->placer, x, y, ZTV_STRUCTURE_MARK_MM);
         }
-        if (!info->development_names || !info->development_names[d] || !info->development_xy) continue;
+    }
+    for (uint32_t k = 0; k < info->n_structures; k++) {
         double x, y;
-        to_page(l, info->development_xy[d][0], info->development_xy[d][1], &x, &y);
-        page_text(cr, x, y + 2.5, 0, &(page_font){.size_pt = f.size_pt, .bold = 1, .halo = 0.5, .align = PAGE_CENTRE,
-                                                   .rgb = {0.3, 0.05, 0.4}},
-                  info->development_names[d], 0);
+        to_page(l, info->structures[k].xy[0], info->structures[k].xy[1], &x, &y);
+        page_dot(cr, x, y, ZTV_STRUCTURE_MARK_MM, (const double[3]){0.1, 0.1, 0.1});
+        page_placer_mark(&ml->placer, x, y, ZTV_STRUCTURE_MARK_MM);
     }
 }
 
-/* The viewpoints: a red dot numbered, and the name beside it. */
-static void draw_viewpoints(cairo_t *cr, const ztv_info *info, const ztv_map_layout *l)
+/* The names: each development's beside its outline, then each structure's beside its dot. */
+static void label_developments(cairo_t *cr, const ztv_info *info, const ztv_map_layout *l, map_labels *ml)
+{
+    page_font dev = {.size_pt = 7.5, .bold = 1, .halo = 0.5, .rgb = {0.3, 0.05, 0.4}};
+    page_font name = {.size_pt = 6.5, .halo = 0.45, .rgb = {0.1, 0.1, 0.1}};
+    for (uint32_t d = 0; info->target_xy && info->development_names && d < info->n_developments; d++) {
+        page_box box;
+        if (!hull_path(cr, info, l, d, &box)) continue;
+        cairo_new_path(cr);
+        double r = 0.5 * fmax(box.x1 - box.x0, box.y1 - box.y0) + 1.1; /* past the outline's stroke */
+        place_label(cr, ml, info->development_names[d], &dev, 0.5 * (box.x0 + box.x1), 0.5 * (box.y0 + box.y1), r, 0.6);
+    }
+    for (uint32_t k = 0; k < info->n_structures; k++) {
+        double x, y;
+        to_page(l, info->structures[k].xy[0], info->structures[k].xy[1], &x, &y);
+        place_label(cr, ml, info->structures[k].name, &name, x, y, ZTV_STRUCTURE_MARK_MM, 0.5);
+    }
+}
+
+/* The viewpoints: a red dot numbered (its name among the labels, beside it). */
+static void draw_viewpoints(cairo_t *cr, const ztv_info *info, const ztv_map_layout *l, map_labels *ml)
 {
     page_font num = {.size_pt = 6, .bold = 1, .align = PAGE_CENTRE, .rgb = {1, 1, 1}};
+    for (uint32_t v = 0; v < info->n_study_views; v++) {
+        const ztv_viewpoint *vp = &info->study_views[v];
+        double x, y;
+        to_page(l, vp->xy[0], vp->xy[1], &x, &y);
+        if (x < l->x || x > l->x + l->w || y < l->y || y > l->y + l->h) continue;
+        page_dot(cr, x, y, ZTV_VIEWPOINT_MARK_MM, (const double[3]){0.8, 0.05, 0.05});
+        page_placer_mark(&ml->placer, x, y, ZTV_VIEWPOINT_MARK_MM);
+        char text[16];
+        snprintf(text, sizeof text, "%u", vp->number);
+        page_text(cr, x, y - 1.25, 0, &num, text, 0);
+    }
+}
+
+static void label_viewpoints(cairo_t *cr, const ztv_info *info, const ztv_map_layout *l, map_labels *ml)
+{
     page_font name = {.size_pt = 6.5, .halo = 0.45, .rgb = {0.55, 0, 0}};
     for (uint32_t v = 0; v < info->n_study_views; v++) {
         const ztv_viewpoint *vp = &info->study_views[v];
         double x, y;
         to_page(l, vp->xy[0], vp->xy[1], &x, &y);
         if (x < l->x || x > l->x + l->w || y < l->y || y > l->y + l->h) continue;
-        page_dot(cr, x, y, 2.0, (const double[3]){0.8, 0.05, 0.05});
-        char text[16];
-        snprintf(text, sizeof text, "%u", vp->number);
-        page_text(cr, x, y - 1.25, 0, &num, text, 0);
-        if (vp->name) page_text(cr, x + 2.6, y - 1.3, 0, &name, vp->name, 0);
+        place_label(cr, ml, vp->name, &name, x, y, ZTV_VIEWPOINT_MARK_MM, 0.6);
     }
 }
 
@@ -259,13 +375,15 @@ static void draw_panel(cairo_t *cr, const ztv_map *m, const map_style *st, const
         y += fmax(page_text(cr, x + 10, y + 0.4, w - 10, &text, st->item[i].label, 0), 4) + 1.2;
     }
     y += 1;
-    page_dot(cr, x + 4, y + 2, 2.0, (const double[3]){0.8, 0.05, 0.05});
+    page_dot(cr, x + 4, y + 2, ZTV_VIEWPOINT_MARK_MM, (const double[3]){0.8, 0.05, 0.05});
     y += fmax(page_text(cr, x + 10, y + 0.4, w - 10, &text, "viewpoint, numbered as in the study", 0), 4) + 1.2;
     cairo_rectangle(cr, x + 0.8, y + 0.6, 6.4, 2.8);
     cairo_set_source_rgb(cr, 0.45, 0.15, 0.65);
     cairo_set_line_width(cr, 1.0);
     cairo_stroke(cr);
-    y += fmax(page_text(cr, x + 10, y + 0.4, w - 10, &text, "development: its structures and their outline", 0), 4) + 1.2;
+    page_dot(cr, x + 4, y + 2, ZTV_STRUCTURE_MARK_MM, (const double[3]){0.1, 0.1, 0.1});
+    y += fmax(page_text(cr, x + 10, y + 0.4, w - 10, &text, "development: its outline, and each structure named", 0),
+              4) + 1.2;
     cairo_new_path(cr);
     cairo_move_to(cr, x, y + 2), cairo_line_to(cr, x + 8, y + 2);
     cairo_set_source_rgb(cr, 0.15, 0.15, 0.15);
@@ -334,11 +452,22 @@ static int draw_page(cairo_t *cr, const page_size *size, void *ctx, err_buf *err
     cairo_save(cr);
     cairo_rectangle(cr, l.x, l.y, l.w, l.h);
     cairo_clip(cr);
-    draw_rings(cr, info, &l);
+    map_labels *ml = calloc(1, sizeof *ml); /* owned here */
+    if (!ml) {
+        cairo_restore(cr);
+        return err_nomem(err, "out of memory placing a map's labels");
+    }
+    page_placer_init(&ml->placer, (page_box){l.x, l.y, l.x + l.w, l.y + l.h});
+    draw_rings(cr, info, &l, &ml->placer);
     draw_radius(cr, info, &l);
     label_no_terrain(cr, c->m, c->st, &l);
-    draw_developments(cr, info, &l);
-    draw_viewpoints(cr, info, &l);
+    draw_developments(cr, info, &l, ml);
+    draw_viewpoints(cr, info, &l, ml);
+    label_viewpoints(cr, info, &l, ml);
+    label_developments(cr, info, &l, ml);
+    draw_labels(cr, ml);
+    page_placer_free(&ml->placer);
+    free(ml);
     cairo_restore(cr);
     draw_edges(cr, info, &l);
     draw_panel(cr, c->m, c->st, &l);

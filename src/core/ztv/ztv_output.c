@@ -16,8 +16,8 @@
 #include "ztv/ztv_qml.h"
 #include "ztv/ztv_summary.h"
 
-#define MAX_FILES 32 /* pictures (PNG and PDF each) and tables: 3 modes, 2 hidden, 3 cumulative, 2
-                     * summaries, the GeoPackage, its 3 styles and a style per mode */
+#define MAX_FILES 48 /* pictures (PNG, its world file and PDF each) and tables: 4 modes, 3 hidden, 4
+                     * cumulative, 2 summaries, the GeoPackage, its 3 styles and a style per mode */
 
 struct ztv_output {
     const ztv_info *info;            /* borrowed */
@@ -221,12 +221,29 @@ fail:
 
 typedef int (*draw_fn)(const ztv_map *, ztv_mode, FILE *png, FILE *pdf, err_buf *);
 
-/* Draws one map and writes it as a PNG and a PDF into new temporaries, kept for the renaming. */
+/* The PNG's world file (ztv_map.h), that a GIS places the page by. */
+static int write_world_file(ztv_output *o, const char *prefix, int m, err_buf *err)
+{
+    char path[ATOMIC_PATH_MAX];
+    file_path(o, prefix, m, ".pgw", path, sizeof path);
+    FILE *f = atomic_file_open_stream(&o->files[o->n_files], path, err);
+    if (!f) return -1;
+    o->n_files++;
+    double w[6];
+    ztv_map_world_file(o->info, w);
+    int bad = 0;
+    for (int k = 0; k < 6; k++) bad |= fprintf(f, "%.10f\n", w[k]) < 0;
+    return bad ? err_fail(err, ERR_OUTPUT, "%s: cannot write the world file", path) : 0;
+}
+
+/* Draws one map and writes it as a PNG with its world file and a PDF into new temporaries, kept
+ * for the renaming. */
 static int write_picture(ztv_output *o, draw_fn draw, int m, const char *prefix, err_buf *err)
 {
     char png[ATOMIC_PATH_MAX], pdf[ATOMIC_PATH_MAX];
     file_path(o, prefix, m, ".png", png, sizeof png);
     file_path(o, prefix, m, ".pdf", pdf, sizeof pdf);
+    if (write_world_file(o, prefix, m, err)) return -1;
     FILE *f_png = atomic_file_open_stream(&o->files[o->n_files], png, err);
     if (!f_png) return -1;
     o->n_files++;

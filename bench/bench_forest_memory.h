@@ -109,7 +109,7 @@ static inline int bench_forest_stages(scene *s, uint32_t n, unsigned threads, ui
     bench_stage(log, "scene instance records", f->instances_mib = bench_rss_mib() - base, n, more);
     double t0 = progress_now();
     accel acc;
-    if (accel_build_open(&acc, s, threads, err)) return -1;
+    if (accel_build_open(&acc, s, threads, NULL, err)) return -1;
     f->embree_mib = bench_rss_mib() - base, f->embree_s = progress_now() - t0;
     snprintf(more, sizeof more, "  (%.2f s)", f->embree_s);
     bench_stage(log, "+ Embree instances (and prototypes' BVHs)", f->embree_mib, n, more);

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# crosscheck_test.sh SYLVA SCENE OUTDIR CASE — one cross-check test (tests/crosscheck/CMakeLists.txt).
+# crosscheck_test.sh SYLVA SCENE OUTDIR CASE [OPTION...] — one cross-check test
+# (tests/crosscheck/CMakeLists.txt). OPTIONs (e.g. --year 15) go to both export-pov and crosscheck.
 #   agree            `sylva crosscheck SCENE` passes (exit 0) and writes its report
 #   mirror_camera    the export's camera is mirrored (right x instead of right -x)
 #   move_object      the export's first object moves 0.3 m along x
@@ -8,11 +9,15 @@
 #   shadowless_sun   the export's sun casts no shadows
 #   thin_fog         the export's fog (the physical sky's air) reaches twice as far
 #   broken_pov       the export ends in a syntax error
+#   before_plan      the export is of the scene before its planting plan (OPTIONs without --year)
+#   year_1           the export is of the planting plan 1 year after planting (--year 1)
 # Every case but agree edits only the POV-Ray side (the export), then runs the cross-check on
 # the edited scene: it must report disagreement (exit 5), or for broken_pov POV-Ray's failure
 # (exit 4, with POV-Ray's error line in the message).
 set -euo pipefail
 sylva=$1 scene=$2 outdir=$3 case=$4
+shift 4
+options=("$@")
 povray=${SYLVA_POVRAY:-povray}
 if ! command -v "$povray" >/dev/null; then
   echo "POV-Ray ($povray) is not installed: skipped" >&2
@@ -24,7 +29,7 @@ rm -rf "$dir"
 mkdir -p "$dir"
 
 if [ "$case" = agree ]; then
-  "$sylva" crosscheck "$scene" -o "$dir" --quiet
+  "$sylva" crosscheck "$scene" -o "$dir" --quiet "${options[@]}"
   for f in report.html metrics.json sylva.png povray.png difference.png classes.png; do
     [ -s "$dir/$f" ] || { echo "missing $dir/$f" >&2; exit 1; }
   done
@@ -32,7 +37,30 @@ if [ "$case" = agree ]; then
   exit 0
 fi
 
-"$sylva" export-pov "$scene" -o "$dir/$name.pov" --quiet >/dev/null
+# before_plan and year_1 export the scene as it stands at another time: the options with
+# --year N left out, or with N replaced by 1.
+export_options=()
+for ((i = 0; i < ${#options[@]}; i++)); do
+  if [ "${options[i]}" = --year ] && { [ "$case" = before_plan ] || [ "$case" = year_1 ]; }; then
+    i=$((i + 1))
+    [ "$case" = year_1 ] && export_options+=(--year 1)
+    continue
+  fi
+  export_options+=("${options[i]}")
+done
+if [ "$case" = before_plan ] || [ "$case" = year_1 ]; then
+  if [ "${export_options[*]}" = "${options[*]}" ]; then
+    echo "$case needs the test's options to hold --year N" >&2
+    exit 2
+  fi
+  "$sylva" export-pov "$scene" -o "$dir/unperturbed.pov" --quiet "${options[@]}" >/dev/null
+  "$sylva" export-pov "$scene" -o "$dir/$name.pov" --quiet "${export_options[@]}" >/dev/null
+  if cmp -s "$dir/${name}_plants.inc" "$dir/unperturbed_plants.inc"; then
+    echo "the export for $case places the same plants as the test's year" >&2
+    exit 1
+  fi
+else
+"$sylva" export-pov "$scene" -o "$dir/$name.pov" --quiet "${options[@]}" >/dev/null
 case "$case" in
   mirror_camera)   file="$dir/$name.pov";        edit='s/^  right -x \*/  right x */' ;;
   move_object)     file="$dir/$name.pov";        edit='0,/^object { O[0-9]/s/^\(object { O[0-9][A-Za-z0-9_]*\) }/\1 translate <0.3, 0, 0> }/' ;;
@@ -50,8 +78,9 @@ if cmp -s "$file" "$dir/unperturbed"; then
   echo "the $case edit changed nothing in $file" >&2
   exit 1
 fi
+fi
 set +e
-"$sylva" crosscheck "$scene" -o "$dir" --pov "$dir/$name.pov" --quiet 2>"$dir/stderr.txt"
+"$sylva" crosscheck "$scene" -o "$dir" --pov "$dir/$name.pov" --quiet "${options[@]}" 2>"$dir/stderr.txt"
 rc=$?
 set -e
 cat "$dir/stderr.txt" >&2

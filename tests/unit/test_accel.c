@@ -1,7 +1,8 @@
 /* test_accel.c — the Embree scene: its geometry-id layout (terrain, water, objects, instances;
  * opaque and cut-out parts) seen through real hits, and Embree's errors: recorded by the accel,
  * reported on the calling thread, never written into a caller's buffer by the callback (which
- * may run on any thread). */
+ * may run on any thread); the frame near the camera that the verification render is built in
+ * (render/accel_frame.h). */
 #include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
@@ -9,6 +10,7 @@
 #include "harness.h"
 #include "geometry/terrain_mesh.h"
 #include "render/accel.h"
+#include "render/accel_frame.h"
 #include "render/accel_terrain.h"
 
 static void add_quad(mesh *m, float x0, float y0, float x1, float y1, float z, err_buf *err)
@@ -225,5 +227,78 @@ TEST(terrain_grid_matches_the_tessellation)
     }
 }
 
+/* small_scene moved by (dx, dy): the terrain, the objects' own meshes and the plant. */
+static scene *small_scene_at(double dx, double dy)
+{
+    scene *s = small_scene();
+    if (!s) return NULL;
+    s->terrain->x0 += dx, s->terrain->y0 += dy;
+    for (uint32_t o = 0; o < s->n_objects; o++)
+        for (uint32_t v = 0; v < s->objects[o].mesh->nv; v++) {
+            s->objects[o].mesh->pos[v * 3] = (float)(s->objects[o].mesh->pos[v * 3] + dx);
+            s->objects[o].mesh->pos[v * 3 + 1] = (float)(s->objects[o].mesh->pos[v * 3 + 1] + dy);
+        }
+    s->instances[0].xf.m[0][3] = (float)(s->instances[0].xf.m[0][3] + dx);
+    s->instances[0].xf.m[1][3] = (float)(s->instances[0].xf.m[1][3] + dy);
+    return s;
+}
+
+/* The frame's origin: whole steps of ACCEL_FRAME_STEP, none for a camera near the origin. */
+TEST(frame_near_the_camera)
+{
+    double f[3];
+    accel_frame_near((const double[3]){300, -400, 250}, f);
+    CHECK(f[0] == 0 && f[1] == 0 && f[2] == 0);
+    accel_frame_near((const double[3]){-5093, -6864, 254}, f);
+    CHECK(f[0] == -5120 && f[1] == -7168 && f[2] == 0);
+}
+
+/* The same scene 8 km from the origin, built in a frame near it: every geometry is met where it
+ * stands, accel_shade's points are in the frame and accel_frame_world takes them back. */
+TEST(scene_built_in_a_frame_near_the_camera)
+{
+    const double dx = 7003, dy = -8001;
+    scene *s = small_scene_at(dx, dy);
+    CHECK(s != NULL);
+    if (!s) return;
+    double frame[3];
+    accel_frame_near((const double[3]){dx + 5, dy + 5, 10}, frame);
+    CHECK(frame[0] == 7168 && frame[1] == -8192);
+    accel a;
+    err_buf err;
+    CHECK_INT(accel_build_open(&a, s, 1, frame, &err), 0);
+    CHECK_INT(accel_commit(&a, &err), 0);
+    const struct {
+        float x, y, z0;
+        unsigned geom, inst;
+        geom_kind kind;
+        float z;
+    } rays[] = {{1.5f, 5, 10, accel_top_object_id(0, ACCEL_PART_OPAQUE), RTC_INVALID_GEOMETRY_ID, GEOM_OBJECT, 5},
+                {4.5f, 5, 10, accel_top_object_id(1, ACCEL_PART_OPAQUE), RTC_INVALID_GEOMETRY_ID, GEOM_OBJECT, 5},
+                {7.5f, 5, 10, ACCEL_PART_OPAQUE, 7, GEOM_PROTOTYPE, 3},
+                {9, 9, 10, ACCEL_TOP_WATER, RTC_INVALID_GEOMETRY_ID, GEOM_WATER, 1},
+                {9, 9, 0.5f, ACCEL_TOP_TERRAIN, RTC_INVALID_GEOMETRY_ID, GEOM_TERRAIN, 0}};
+    for (size_t k = 0; k < sizeof rays / sizeof *rays; k++) {
+        double wx = rays[k].x + dx, wy = rays[k].y + dy; /* the world point under the ray */
+        struct RTCRayHit rh = cast(&a, (float)(wx - frame[0]), (float)(wy - frame[1]), rays[k].z0, -1);
+        CHECK_INT(rh.hit.geomID, rays[k].geom);
+        CHECK_INT(rh.hit.instID[0], rays[k].inst);
+        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
+        hit_info h;
+        accel_shade(&a, &rh, &h);
+        CHECK_INT(h.kind, rays[k].kind);
+        CHECK_NEAR(h.p.x, wx - frame[0], 1e-4);
+        CHECK_NEAR(h.p.y, wy - frame[1], 1e-4);
+        CHECK_NEAR(h.p.z, rays[k].z, 1e-5);
+        vec3 w = accel_frame_world(&a, h.p);
+        CHECK_NEAR(w.x, wx, 1e-3);
+        CHECK_NEAR(w.y, wy, 1e-3);
+    }
+    CHECK_INT(accel_device_error(&a, &err), 0);
+    accel_free(&a);
+    scene_free(s);
+}
+
 TEST_LIST(TEST_CASE(geometry_id_layout), TEST_CASE(embree_errors_recorded_and_reported_by_the_caller),
-          TEST_CASE(terrain_grid_matches_the_tessellation))
+          TEST_CASE(terrain_grid_matches_the_tessellation), TEST_CASE(frame_near_the_camera),
+          TEST_CASE(scene_built_in_a_frame_near_the_camera))

@@ -1,5 +1,6 @@
 /* test_pov_number.c — numbers for POV-Ray scene text: known spellings, significant digits,
- * rounding, the float round trip over many values, and non-finite input. */
+ * rounding, the float round trip over many values, positions read in double precision, and
+ * non-finite input. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -78,6 +79,37 @@ TEST(float_round_trip_is_exact_and_short)
     CHECK_INT(bad, 0);
 }
 
+static const char *position(float v)
+{
+    static char buf[POV_NUMBER_MAX];
+    pov_format_position(buf, v);
+    return buf;
+}
+
+/* A position's text, read in double precision as POV-Ray reads a matrix, lies within
+ * POV_POSITION_TOLERANCE of the float: the shortest text where that is so, six decimals where
+ * the shortest is a float step off (7 km from the origin, a quarter of a millimetre). */
+TEST(position_read_in_double_is_the_float)
+{
+    CHECK(!strcmp(position(0.25f), "0.25"));
+    CHECK(!strcmp(position(-3.0f), "-3"));
+    CHECK(!strcmp(position(7.5f), "7.5"));
+    CHECK(!strcmp(position(-5129.5522f), "-5129.552246")); /* the float is -5129.55224609375 */
+    CHECK(!strcmp(position(251.35411f), "251.354111"));    /* 251.3541107177..., not 251.35411 */
+    sylva_rng r;
+    rng_stream(&r, 5, "pov position", 0);
+    double worst = 0; /* metres between the text read in double and the float */
+    size_t longest = 0;
+    for (int i = 0; i < 200000; i++) {
+        float v = (float)((rng_next_double(&r) - 0.5) * pow(10.0, (int)(rng_next_double(&r) * 12) - 4));
+        const char *t = position(v);
+        worst = fmax(worst, fabs(strtod(t, NULL) - (double)v));
+        longest = strlen(t) > longest ? strlen(t) : longest;
+    }
+    CHECK(worst <= POV_POSITION_TOLERANCE + 1e-9); /* a tie rounds either way */
+    CHECK(longest <= 18);
+}
+
 TEST(non_finite_is_refused)
 {
     char buf[POV_NUMBER_MAX];
@@ -87,7 +119,10 @@ TEST(non_finite_is_refused)
     CHECK_INT(pov_format_float(buf, -INFINITY), -1);
     CHECK_INT(pov_format_float(buf, NAN), -1);
     CHECK(!strcmp(buf, "0"));
+    CHECK_INT(pov_format_position(buf, NAN), -1);
+    CHECK(!strcmp(buf, "0"));
 }
 
 TEST_LIST(TEST_CASE(known_spellings), TEST_CASE(significant_digits_bound_the_error),
-          TEST_CASE(float_round_trip_is_exact_and_short), TEST_CASE(non_finite_is_refused))
+          TEST_CASE(float_round_trip_is_exact_and_short), TEST_CASE(position_read_in_double_is_the_float),
+          TEST_CASE(non_finite_is_refused))

@@ -67,6 +67,7 @@ int cmd_crosscheck(int argc, char **argv)
                        "scene holds more than 200,000 cut-out triangles (default auto)"),
         CLI_OPT_TEXT("--viewpoint", "NAME", viewpoint, CLI_HELP_VIEWPOINT),
         CLI_OPT_TEXT("--season", "S", season, CLI_HELP_SEASON),
+        CLI_OPT_YEAR(bo),
         CLI_OPTS_SCENE_COMMON(bo),
     };
     const cli_command_spec spec = {"crosscheck", "SCENE", crosscheck_about, NULL, options,
@@ -75,6 +76,7 @@ int cmd_crosscheck(int argc, char **argv)
     int parsed = cli_options_parse(&spec, argc, argv);
     if (parsed) return cli_options_status(parsed);
     co.threads = bo.threads, co.quiet = bo.quiet;
+    co.planting_shown = bo.planting_shown, co.planting_years = bo.planting_years;
     size_t pl = co.pov_scene ? strlen(co.pov_scene) : 0;
     if (co.pov_scene && (pl < 5 || strcmp(co.pov_scene + pl - 4, ".pov"))) {
         fprintf(stderr, "sylva crosscheck: --pov must name a .pov file, got '%s'\n", co.pov_scene);

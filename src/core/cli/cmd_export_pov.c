@@ -52,6 +52,7 @@ int cmd_export_pov(int argc, char **argv)
                        "outline polygons, as `sylva crosscheck --leaves` draws them; auto as crosscheck's"),
         CLI_OPT_TEXT("--viewpoint", "NAME", viewpoint, CLI_HELP_VIEWPOINT),
         CLI_OPT_TEXT("--season", "S", season, CLI_HELP_SEASON),
+        CLI_OPT_YEAR(bo),
         CLI_OPTS_SCENE_COMMON(bo),
     };
     const cli_command_spec spec = {"export-pov", "SCENE", export_pov_about, NULL, options,

@@ -72,6 +72,8 @@ static int write_json(const char *out_dir, const crosscheck_result *r, const cro
     fprintf(f, "  \"leaves\": \"%s\", \"outlined_cutout_triangles\": %llu, \"outline_triangles\": %llu,\n",
             o->outline_cutouts ? "outline" : "mask", (unsigned long long)o->outline_cutouts,
             (unsigned long long)o->outline_triangles);
+    if (o->planting_shown) fprintf(f, "  \"planting_year\": %.17g,\n", o->planting_years);
+    else fputs("  \"planting_year\": null,\n", f);
     fprintf(f, "  \"pass\": %s,\n  \"verdict\": ", r->pass ? "true" : "false");
     json_write_string(f, r->verdict);
     fprintf(f, ",\n  \"checks\": {\"coverage\": %s, \"mae\": %s, \"over\": %s, \"classes\": %s},\n",
@@ -211,6 +213,10 @@ static int write_html(const char *out_dir, const crosscheck_result *r, const cro
                    "continue its rays through each transparent texel. The leaves' shapes are coarser than the "
                    "path tracer's; the renderers are compared on the same surfaces (docs/crosscheck.md).</p>\n",
                 (unsigned long long)o->outline_cutouts, (unsigned long long)o->outline_triangles);
+    if (o->planting_shown)
+        fprintf(f, "<p>The scene's planting plan is shown %g years after planting (<code>--year</code>): its "
+                   "plants grown to their age then, its fellings made (docs/mitigation.md).</p>\n",
+                o->planting_years);
     fputs("<p>Both pictures are tone-mapped alike for viewing; every metric is computed on linear float values "
           "(sylva's EXR and POV-Ray's half-float EXR).</p>\n", f);
 

@@ -33,6 +33,8 @@ typedef struct crosscheck_options {
     uint64_t outline_cutouts;     /* > 0: the scene's cut-out triangles were drawn as outlines
                                      (geometry/cutout_outline.h), this many of them, */
     uint64_t outline_triangles;   /* ... by this many opaque triangles */
+    int planting_shown;           /* 1: the scene's planting plan is shown (--year), ... */
+    double planting_years;        /* ... this many years after planting */
     crosscheck_thresholds thresholds;
 } crosscheck_options;
 

@@ -75,24 +75,27 @@ char *pov_append_uint(char *p, uint64_t v)
     return p;
 }
 
+/* The end of a number of length n written at p; a non-finite one (n < 0, written "0") counted. */
+static char *number_end(char *p, int n, int *bad)
+{
+    if (n >= 0) return p + n;
+    if (bad) (*bad)++;
+    return p + 1;
+}
+
 char *pov_append_real(char *p, double v, int digits, int *bad)
 {
-    int n = pov_format_real(p, v, digits);
-    if (n < 0) {
-        if (bad) (*bad)++;
-        return p + 1;
-    }
-    return p + n;
+    return number_end(p, pov_format_real(p, v, digits), bad);
 }
 
 char *pov_append_float(char *p, float v, int *bad)
 {
-    int n = pov_format_float(p, v);
-    if (n < 0) {
-        if (bad) (*bad)++;
-        return p + 1;
-    }
-    return p + n;
+    return number_end(p, pov_format_float(p, v), bad);
+}
+
+char *pov_append_position(char *p, float v, int *bad)
+{
+    return number_end(p, pov_format_position(p, v), bad);
 }
 
 char *pov_append_vec3(char *p, const double v[3], int digits, int *bad)

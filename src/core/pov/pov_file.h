@@ -37,6 +37,8 @@ char *pov_append_text(char *p, const char *text);
 char *pov_append_uint(char *p, uint64_t v);
 char *pov_append_real(char *p, double v, int digits, int *bad);
 char *pov_append_float(char *p, float v, int *bad);
+/* As pov_append_float, for a position POV-Ray keeps in double precision (pov_format_position). */
+char *pov_append_position(char *p, float v, int *bad);
 /* "<a, b, c>" with `digits` significant digits. */
 char *pov_append_vec3(char *p, const double v[3], int digits, int *bad);
 /* "<a, b, c>", each the shortest text that reads back as the same float. */

@@ -102,3 +102,20 @@ int pov_format_float(char *buf, float f)
     }
     return snprintf(buf, POV_NUMBER_MAX, "%.9g", (double)f);
 }
+
+int pov_format_position(char *buf, float f)
+{
+    int len = pov_format_float(buf, f);
+    double a = fabs((double)f);
+    if (len < 0 || a < PLAIN_MIN || a >= PLAIN_MAX) return len;
+    /* the value of the shortest text, from its digits as pov_format_float chose them */
+    int e = decimal_exponent(a);
+    for (int digits = 1; digits <= 9; digits++) {
+        int dec = scale_digits(digits, e);
+        uint64_t n = (uint64_t)(a * pow10_exact[dec] + 0.5);
+        if ((float)((double)n / pow10_exact[dec]) != (float)a) continue;
+        if (fabs((double)n / pow10_exact[dec] - a) <= POV_POSITION_TOLERANCE) return len;
+        break;
+    }
+    return emit_scaled(buf, f < 0.0f, (uint64_t)(a * pow10_exact[6] + 0.5), 6);
+}

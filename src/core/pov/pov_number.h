@@ -18,4 +18,12 @@ int pov_format_real(char *buf, double v, int digits);
  * as exactly f. Returns the length, or -1 (buf holds "0") when f is not finite. */
 int pov_format_float(char *buf, float f);
 
+/* A position in metres that POV-Ray keeps in double precision (a matrix's translation): the
+ * text of pov_format_float when its value lies within POV_POSITION_TOLERANCE of f, else f to
+ * six decimals. The shortest text for a float is only within half a float step of it, a
+ * quarter of a millimetre 7 km from the origin, where the renderer's float stands exactly.
+ * Returns the length, or -1 (buf holds "0") when f is not finite. */
+#define POV_POSITION_TOLERANCE 5e-7
+int pov_format_position(char *buf, float f);
+
 #endif

@@ -270,7 +270,7 @@ static char *append_matrix(char *p, const xform3x4 *xf, int *bad)
             *p++ = ',';
         }
     for (int r = 0; r < 3; r++) {
-        p = pov_append_float(p, xf->m[r][3], bad);
+        p = pov_append_position(p, xf->m[r][3], bad);
         *p++ = r < 2 ? ',' : '>';
     }
     return p;
@@ -478,15 +478,24 @@ static void write_lens(pov_file *pf, const camera_settings *c, const double forw
 
 static void write_camera(pov_file *pf, const camera_settings *c, uint32_t width, uint32_t height)
 {
-    double look[3], f[3], r[3], up[3];
-    for (int d = 0; d < 3; d++) look[d] = c->has_look_at ? c->look_at[d] : c->position[d] + c->direction[d];
+    double f[3], r[3], up[3];
     /* The rolled frame's up as POV-Ray's sky: POV-Ray builds right and up from sky and the view
      * as sylva does, so the turned view is the same. Unrolled, the up vector as given. */
     camera_frame(c, f, r, up);
     const double *sky = c->roll_deg != 0.0 ? up : c->up;
-    char a[128], b[128], u[128], aspect[POV_NUMBER_MAX], fov[POV_NUMBER_MAX];
+    char a[128], b[256], u[128], aspect[POV_NUMBER_MAX], fov[POV_NUMBER_MAX];
     pov_append_vec3(a, c->position, SETTING_DIGITS, NULL);
-    pov_append_vec3(b, look, SETTING_DIGITS, NULL);
+    /* look_at: the point given, or the location plus the view's unit direction as a sum that
+     * POV-Ray adds in double precision. A point 1 m ahead written to 9 digits would carry the
+     * location's rounding (1e-5 m 7 km from the origin) into the view's direction: 1e-5 rad,
+     * a millimetre 100 m out, where grass blades are a few millimetres wide. */
+    if (c->has_look_at) {
+        pov_append_vec3(b, c->look_at, SETTING_DIGITS, NULL);
+    } else {
+        char *p = pov_append_vec3(b, c->position, SETTING_DIGITS, NULL);
+        p = pov_append_text(p, " + ");
+        pov_append_vec3(p, f, SETTING_DIGITS, NULL);
+    }
     pov_append_vec3(u, sky, SETTING_DIGITS, NULL);
     pov_format_real(aspect, (double)width / height, SETTING_DIGITS);
     pov_format_real(fov, c->fov_deg, SETTING_DIGITS);

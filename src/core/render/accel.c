@@ -9,6 +9,7 @@
 #include "geometry/texture_lookup.h"
 #include "geometry/terrain_apron.h"
 #include "geometry/water_surface.h"
+#include "render/accel_frame.h"
 #include "render/accel_terrain.h"
 #include "render/bark_bump.h"
 #include "geometry/ground_texture.h"
@@ -54,6 +55,8 @@ static int build_top(accel *a, const scene *s, err_buf *err)
             terrain_apron_build(s->terrain, s->terrain_material, terrain_apron_reach(s->terrain, eye),
                                 &a->apron_mesh, err))
             return -1;
+        accel_frame_mesh_in_place(a, a->apron_mesh);
+        accel_frame_mesh_in_place(a, a->water_mesh);
         if (a->apron_mesh && accel_add_part(a, a->top, a->apron_mesh, ACCEL_PART_OPAQUE, GEOM_TERRAIN, ACCEL_TOP_APRON,
                                             ACCEL_MASK_GROUND, &a->top_geoms[ACCEL_TOP_APRON], err))
             return -1;
@@ -65,21 +68,27 @@ static int build_top(accel *a, const scene *s, err_buf *err)
         const object *ob = &s->objects[o];
         unsigned id = accel_top_object_id(o, ACCEL_PART_OPAQUE);
         unsigned mask = ob->development ? ACCEL_MASK_DEVELOPMENT : ACCEL_MASK_OBJECT;
-        if (ob->mesh ? accel_add_mesh(a, a->top, ob->mesh, GEOM_OBJECT, id, mask, &a->top_geoms[id], err)
-                     : accel_add_instance(a, a->model_scenes[ob->model], &ob->xf, id, mask, err))
+        const mesh *m = ob->mesh;
+        if (m && a->framed_objects && !(m = a->framed_objects[o] = accel_frame_mesh(a, ob->mesh, err))) return -1;
+        xform3x4 xf = accel_frame_xf(a, &ob->xf);
+        if (m ? accel_add_mesh(a, a->top, m, GEOM_OBJECT, id, mask, &a->top_geoms[id], err)
+              : accel_add_instance(a, a->model_scenes[ob->model], &xf, id, mask, err))
             return -1;
     }
-    for (uint32_t i = 0; i < s->n_instances; i++)
-        if (accel_add_instance(a, a->proto_scenes[s->instances[i].prototype], &s->instances[i].xf, a->first_instance + i,
-                         s->instances[i].development ? ACCEL_MASK_DEVELOPMENT : ACCEL_MASK_PLANT, err))
+    for (uint32_t i = 0; i < s->n_instances; i++) {
+        xform3x4 xf = accel_frame_xf(a, &s->instances[i].xf);
+        if (accel_add_instance(a, a->proto_scenes[s->instances[i].prototype], &xf, a->first_instance + i,
+                               s->instances[i].development ? ACCEL_MASK_DEVELOPMENT : ACCEL_MASK_PLANT, err))
             return -1;
+    }
     return accel_device_error(a, err);
 }
 
-int accel_build_open(accel *a, const scene *s, unsigned threads, err_buf *err)
+int accel_build_open(accel *a, const scene *s, unsigned threads, const double frame[3], err_buf *err)
 {
     memset(a, 0, sizeof *a);
     a->scene = s;
+    if (frame) memcpy(a->frame, frame, sizeof a->frame);
     a->errors = accel_errors_new();
     if (!a->errors) return err_nomem(err, "out of memory building the BVH");
     char config[64];
@@ -99,7 +108,9 @@ int accel_build_open(accel *a, const scene *s, unsigned threads, err_buf *err)
     a->n_top_geoms = accel_top_object_id(s->n_objects, ACCEL_PART_OPAQUE);
     a->first_instance = a->n_top_geoms;
     a->top_geoms = calloc(a->n_top_geoms, sizeof(geom_info));
-    if (!a->proto_scenes || !a->proto_geoms || !a->model_scenes || !a->model_geoms || !a->top_geoms) {
+    if (accel_framed(a)) a->framed_objects = calloc(s->n_objects ? s->n_objects : 1, sizeof(mesh *));
+    if (!a->proto_scenes || !a->proto_geoms || !a->model_scenes || !a->model_geoms || !a->top_geoms ||
+        (accel_framed(a) && !a->framed_objects)) {
         err_nomem(err, "out of memory building the BVH");
         goto fail;
     }
@@ -126,7 +137,7 @@ int accel_commit(accel *a, err_buf *err)
 
 int accel_build(accel *a, const scene *s, unsigned threads, err_buf *err)
 {
-    return accel_build_open(a, s, threads, err) || accel_commit(a, err) ? -1 : 0;
+    return accel_build_open(a, s, threads, NULL, err) || accel_commit(a, err) ? -1 : 0;
 }
 
 void accel_free(accel *a)
@@ -152,6 +163,8 @@ void accel_free(accel *a)
     ground_texture_free(a->ground);
     mesh_free(a->water_mesh);
     mesh_free(a->apron_mesh);
+    for (uint32_t o = 0; a->framed_objects && o < s->n_objects; o++) mesh_free(a->framed_objects[o]);
+    free(a->framed_objects);
     if (a->device) rtcReleaseDevice(a->device);
     accel_errors_free(a->errors);
     memset(a, 0, sizeof *a);
@@ -215,7 +228,11 @@ void accel_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h)
      * to within the rounding of its coordinates, whereas t carries an error proportional to the
      * distance from the camera, which would force a far larger shadow-ray offset. */
     vec3 p = v3_add(v3_add(v3_scale(p0, bw), v3_scale(p1, bu)), v3_scale(p2, bv));
-    h->p = xf ? xf_point(xf, p) : p;
+    if (xf) {
+        xform3x4 framed = accel_frame_xf(a, xf); /* into the frame before rounding, not after */
+        p = xf_point(&framed, p);
+    }
+    h->p = p;
     h->u = bw * m->uv[k[0] * 2] + bu * m->uv[k[1] * 2] + bv * m->uv[k[2] * 2];
     h->v = bw * m->uv[k[0] * 2 + 1] + bu * m->uv[k[1] * 2 + 1] + bv * m->uv[k[2] * 2 + 1];
     h->mat = proxy ? proxy : &s->materials[scene_triangle_material(s, m, t)];

@@ -8,7 +8,8 @@
  * intersection and occlusion filters that discard hits where the texture's alpha is below one
  * half.
  *
- * accel_shade() turns an Embree hit into world-space shading data. Embree's hit.Ng is in
+ * accel_shade() turns an Embree hit into shading data (world directions; points in the frame
+ * the scene was built in, accel_frame.h). Embree's hit.Ng is in
  * instance space, so normals are computed here from the mesh and transformed by the instance's
  * inverse transpose.
  *
@@ -29,13 +30,14 @@
 #include "render/accel_types.h"  /* ids, masks, accel, hit_info */
 #include "util/err.h"
 
-/* Builds everything. threads: Embree's build threads (0: all). Returns 0 or -1 with err.
- * accel_build_open then accel_commit. */
+/* Builds everything in the world's frame. threads: Embree's build threads (0: all). Returns 0 or
+ * -1 with err. accel_build_open then accel_commit. */
 int accel_build(accel *a, const scene *s, unsigned threads, err_buf *err);
 /* Builds everything but the top scene's BVH, so that geometry can still be added to the top
- * scene or re-masked (the crown proxies) before its one build; accel_commit finishes. Returns 0
- * or -1 with err (a freed). */
-int accel_build_open(accel *a, const scene *s, unsigned threads, err_buf *err);
+ * scene or re-masked (the crown proxies, which need the world's frame) before its one build;
+ * accel_commit finishes. frame: the world position of the frame's origin the scene is built in
+ * (accel_frame.h), NULL for the world's. Returns 0 or -1 with err (a freed). */
+int accel_build_open(accel *a, const scene *s, unsigned threads, const double frame[3], err_buf *err);
 /* Builds the top scene's BVH and reads the scene's bounds. Returns 0 or -1 with err (a freed). */
 int accel_commit(accel *a, err_buf *err);
 void accel_free(accel *a); /* accepts a zeroed accel */
@@ -43,7 +45,7 @@ void accel_free(accel *a); /* accepts a zeroed accel */
 /* The object a hit lies on: its index + 1, or 0 when it is not on an object. */
 uint32_t accel_hit_object(const accel *a, const struct RTCRayHit *rh);
 
-/* Shading data for a hit of ray (org, dir). */
+/* Shading data for a hit of ray (org, dir), in a's frame. */
 void accel_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h);
 
 #endif

@@ -9,6 +9,7 @@
 #include "geometry/terrain_mesh.h"
 #include "geometry/texture_lookup.h"
 #include "render/accel_errors.h"
+#include "render/accel_frame.h"
 #include "render/ground_shade.h"
 
 /* Where a grid hit lies: the grid, the tessellation's triangle in it, and the point's position
@@ -144,8 +145,11 @@ int accel_terrain_add(accel *a, RTCScene rs, unsigned id, err_buf *err)
         terrain_grid g = terrain_grid_of(hf, gi);
         uint32_t fv = (uint32_t)v;
         for (uint32_t r = 0; r < g.ny; r++)
-            for (uint32_t i = 0; i < g.nx; i++)
-                terrain_node_vertex(&g, i, g.ny - 1 - r, at->vertices + (v + (size_t)r * g.nx + i) * 3, NULL, NULL);
+            for (uint32_t i = 0; i < g.nx; i++) {
+                float *p = at->vertices + (v + (size_t)r * g.nx + i) * 3;
+                terrain_node_vertex(&g, i, g.ny - 1 - r, p, NULL, NULL);
+                accel_frame_point(a, p);
+            }
         v += (uint64_t)g.nx * g.ny;
         /* the drawn cells: the grid less the hole, as up to four rectangles */
         uint32_t cx = g.nx - 1, cy = g.ny - 1;
@@ -198,13 +202,16 @@ static double outside(double bu, double bv)
     return o > 0 ? o : 0.0;
 }
 
-/* Triangle t's corners and the barycentrics of ray (org, d) on its plane (Moeller and
- * Trumbore, in double precision); 0 when the ray runs along the triangle. */
-static int ray_barycentrics(const terrain_grid *g, uint32_t t, const double org[3], const double d[3],
+/* Triangle t's corners in a's frame and the barycentrics of ray (org, d) on its plane (Moeller
+ * and Trumbore, in double precision); 0 when the ray runs along the triangle. */
+static int ray_barycentrics(const accel *a, const terrain_grid *g, uint32_t t, const double org[3], const double d[3],
                             uint32_t k[3], float p[3][3], double *bu, double *bv)
 {
     terrain_triangle_nodes(g, t, k);
-    for (int c = 0; c < 3; c++) terrain_node_vertex(g, k[c] % g->nx, k[c] / g->nx, p[c], NULL, NULL);
+    for (int c = 0; c < 3; c++) {
+        terrain_node_vertex(g, k[c] % g->nx, k[c] / g->nx, p[c], NULL, NULL);
+        accel_frame_point(a, p[c]);
+    }
     double e1[3], e2[3], o[3];
     for (int c = 0; c < 3; c++) e1[c] = p[1][c] - p[0][c], e2[c] = p[2][c] - p[0][c], o[c] = org[c] - p[0][c];
     double pv[3] = {d[1] * e2[2] - d[2] * e2[1], d[2] * e2[0] - d[0] * e2[2], d[0] * e2[1] - d[1] * e2[0]};
@@ -231,7 +238,7 @@ void accel_terrain_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h
      * that the ray meets inside is taken. Where the ray runs along the triangle, Embree's grid
      * coordinates stand. */
     double bu, bv;
-    int along = !ray_barycentrics(g, th.t, org, d, k, p, &bu, &bv);
+    int along = !ray_barycentrics(a, g, th.t, org, d, k, p, &bu, &bv);
     if (along) {
         cell_barycentrics(th.t, th.fx, th.fy, &bu, &bv);
     } else if (outside(bu, bv) > 1e-9) {
@@ -246,11 +253,11 @@ void accel_terrain_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h
                         continue;
                     uint32_t t = terrain_triangle_of_cell(g, (uint32_t)i, (uint32_t)j, half);
                     double u2, v2;
-                    if (t != th.t && ray_barycentrics(g, t, org, d, k, p, &u2, &v2) && outside(u2, v2) < best_out)
+                    if (t != th.t && ray_barycentrics(a, g, t, org, d, k, p, &u2, &v2) && outside(u2, v2) < best_out)
                         best = t, best_out = outside(u2, v2);
                 }
         th.t = best;
-        ray_barycentrics(g, th.t, org, d, k, p, &bu, &bv);
+        ray_barycentrics(a, g, th.t, org, d, k, p, &bu, &bv);
     }
     for (int c = 0; c < 3; c++) terrain_node_vertex(g, k[c] % g->nx, k[c] / g->nx, NULL, n[c], uv[c]);
     bu = bu < 0 ? 0 : bu > 1 ? 1 : bu;
@@ -280,8 +287,9 @@ void accel_terrain_shade(const accel *a, const struct RTCRayHit *rh, hit_info *h
 void accel_terrain_ground(const accel *a, const struct RTCRayHit *rh, hit_info *h)
 {
     if (!a->ground) return;
+    vec3 w = accel_frame_world(a, h->p); /* the ground is laid out in the world */
     if (a->flat_ground) { /* the export's image, no micro-relief */
-        h->albedo = ground_texture_image_albedo(a->ground, h->p.x, h->p.y);
+        h->albedo = ground_texture_image_albedo(a->ground, w.x, w.y);
         return;
     }
     vec3 wo = v3_norm(v3(-rh->ray.dir_x, -rh->ray.dir_y, -rh->ray.dir_z));
@@ -289,8 +297,8 @@ void accel_terrain_ground(const accel *a, const struct RTCRayHit *rh, hit_info *
      * the footprint's two axes); the distance is the eye's, since a camera ray over the curved
      * Earth reaches the ground as the last of several chords */
     const double *eye = a->scene->camera.position;
-    double ex = h->p.x - eye[0], ey = h->p.y - eye[1], ez = h->p.z - eye[2];
+    double ex = w.x - eye[0], ey = w.y - eye[1], ez = w.z - eye[2];
     float facing = fmaxf(fabsf(v3_dot(wo, h->ns)), 0.05f);
     double footprint = sqrt(ex * ex + ey * ey + ez * ez) * a->pixel_angle / sqrt(facing);
-    ground_shade_point(a->ground, h->p, h->ng, wo, footprint, &h->albedo, &h->ns);
+    ground_shade_point(a->ground, w, h->ng, wo, footprint, &h->albedo, &h->ns);
 }

@@ -82,11 +82,17 @@ typedef struct accel {
     float bounds_lo[3], bounds_hi[3]; /* of the whole scene */
     int bark_relief;           /* 1: accel_shade tilts bark's normals (bark_bump.h); 0 (as built):
                                 * the mesh's normals, which the verification mode compares */
+    double frame[3];           /* the world position of the origin of the frame the Embree scene,
+                                * its rays and accel_shade's points are in (accel_frame.h); 0 but
+                                * in the verification render */
+    mesh **framed_objects;     /* per object, its own mesh moved into the frame, or NULL where the
+                                * object's mesh is used as it is; owned (NULL with a zero frame) */
 } accel;
 
 typedef struct hit_info {
     float t;
-    vec3 p;                    /* world position */
+    vec3 p;                    /* position in the accel's frame: the world's but in the
+                                  verification render (accel_frame.h) */
     vec3 ng;                   /* unit geometric normal, world */
     vec3 ns;                   /* unit shading normal, world */
     int one_normal;            /* 1: the triangle's three normals are one vector (POV-Ray then shades

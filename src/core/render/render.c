@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "render/accel.h"
+#include "render/accel_frame.h"
 #include "render/crown_calibrate.h"
 #include "render/crown_proxy.h"
 #include "render/integrator.h"
@@ -97,6 +98,8 @@ static void ctx_init(render_ctx *ctx, render_setup *rs, const render_options *o,
     /* crown proxies stand in for their plants before camera rays alone, never in verification */
     ctx->camera_mask = o->verify ? ctx->ray_mask : ~leave_out & ~ACCEL_MASK_FAR_PLANT;
     camera_init(&ctx->camera, &s->camera, w, h);
+    const double *eye = s->camera.position, *frame = rs->acc.frame; /* the eye in the accel's frame */
+    ctx->camera.origin = v3((float)(eye[0] - frame[0]), (float)(eye[1] - frame[1]), (float)(eye[2] - frame[2]));
     curved_rays_init(&ctx->curved, o->flat_earth ? NULL : &s->earth, &ctx->camera, rs->acc.bounds_lo,
                      rs->acc.bounds_hi);
 }
@@ -132,8 +135,11 @@ render_setup *render_setup_new(const scene *s, const render_options *opt, err_bu
     }
     rs->scene = s;
     /* one build of the top scene's BVH, with the crown proxies already in it (a failed build
-     * leaves rs->acc zeroed, which render_setup_free accepts) */
-    if (accel_build_open(&rs->acc, s, thread_count(opt), err)) goto fail;
+     * leaves rs->acc zeroed, which render_setup_free accepts); the verification render, which
+     * POV-Ray's double-precision trace checks, in a frame near the camera (accel_frame.h) */
+    double frame[3];
+    accel_frame_near(s->camera.position, frame);
+    if (accel_build_open(&rs->acc, s, thread_count(opt), opt->verify ? frame : NULL, err)) goto fail;
     double t_open = progress_now() - t0;
     camera cam; /* the pixel's angle sets how finely the ground's texture is resolved */
     camera_init(&cam, &s->camera, w, h);

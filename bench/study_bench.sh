@@ -7,7 +7,8 @@
 # middle at hub height with a 50 mm lens.
 #
 # The study renders every viewpoint's existing view, proposed view and wireline in the single
-# frame and the 90 degree panorama (120 products, 80 frames traced) from one build; the
+# frame and the 90 degree panorama (120 products, 80 frames traced; not the scene's sheets and
+# ZTV) from one build; the
 # separate runs are what a practitioner runs today, one `sylva render --viewpoint NAME` per
 # viewpoint (20 proposed single frames, each building the scene anew). The frames are WIDTH
 # pixels wide, each as high as its page (480: the single frame 480 x 320, the panorama
@@ -60,7 +61,7 @@ sum() { awk '{w += $1; c += $2 + $3} END {printf "%.1f %.1f", w, c}'; }
 size=${width}x$(awk -v w="$width" 'BEGIN {printf "%d", w * 24 / 36 + 0.5}') # the single frame's
 echo "study: 20 viewpoints x (existing, proposed, wireline) x (single, cylindrical_90), $width wide, spp $spp ..."
 read -r s_wall s_user s_sys <<<"$(timed "$workdir/study.log" "$sylva" study "$scene" -o "$workdir/study" \
-    --frames single,cylindrical_90 --width "$width" --spp "$spp" --threads "$threads")"
+    --products existing,proposed,wireline --frames single,cylindrical_90 --width "$width" --spp "$spp" --threads "$threads")"
 grep -E '^study: the scene built|products written|^phases:' "$workdir/study.log" | sed 's/^/  /'
 echo "  load after the study: $(cut -d' ' -f1-3 /proc/loadavg)"
 s_cpu=$(awk -v u="$s_user" -v s="$s_sys" 'BEGIN {printf "%.1f", u + s}')

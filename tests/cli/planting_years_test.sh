@@ -2,7 +2,8 @@
 # planting_years_test.sh SYLVA SCENE — a planting plan over the years (tests/scenes/planting/belt.yaml):
 # a planted tree's height at --year N is the height of its species' age variant at the matching
 # age (the row of `sylva tree-stats` for that age, within 5 %), the same tree stands in the same place every year, and
-# `sylva ztv --years` writes each year's maps, what the planting hides and the visible area
+# `sylva ztv --years` writes each year's maps, what the planting hides (a map page with a world file)
+# and the visible area
 # against the years (a chart on a page of 190 x 105 mm at 200 dpi): nothing hidden at year 1 (whips
 # below every sightline), the mast hidden from
 # some place by year 30, and the visible area never growing from one year to the next.
@@ -33,6 +34,12 @@ for f in before/ztv_summary.csv year_1/ztv_vegetation.tif year_1/ztv_hidden_by_p
          visible_area.csv visible_area.png; do
   [ -s "$out/ztv/$f" ] || fail "no $f"
 done
+# what the planting hides is a map page like the others: A3 at 150 dpi, its title saying the year
+file "$out/ztv/year_40/ztv_hidden_by_planting.png" | grep -q "2480 x 1754" ||
+  fail "year 40's hidden map is not an A3 page at 150 dpi: $(file "$out/ztv/year_40/ztv_hidden_by_planting.png")"
+pdftotext "$out/ztv/year_40/ztv_hidden_by_planting.pdf" - 2>/dev/null | grep -q "hidden by the planting, 40 years after planting" ||
+  fail "year 40's hidden map (PDF) does not say what it shows"
+[ -s "$out/ztv/year_40/ztv_hidden_by_planting.pgw" ] || fail "year 40's hidden map has no world file"
 file "$out/ztv/visible_area.png" | grep -q "1496 x 827" ||
   fail "visible_area.png is not the 190 x 95 mm page at 200 dpi: $(file "$out/ztv/visible_area.png")"
 cat "$out/ztv/visible_area.csv"

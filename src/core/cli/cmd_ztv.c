@@ -106,7 +106,9 @@ static int ztv_years_run(cli_mpi *m, const char *scene_path, const cli_scene_use
         if (r) snprintf(dirs[r], sizeof dirs[r], "%s/year_%g", o->dir, years[r - 1]);
         else snprintf(dirs[r], sizeof dirs[r], "%s/before", o->dir);
         bo.planting_shown = r > 0, bo.planting_years = r ? years[r - 1] : 0;
-        rc = ztv_one(m, scene_path, use, &bo, *o, dirs[r]);
+        ztv_study_options year_o = *o;
+        if (r) year_o.planting_before = dirs[0], year_o.planting_year = years[r - 1];
+        rc = ztv_one(m, scene_path, use, &bo, year_o, dirs[r]);
     }
     err_buf err = {{0}};
     const char *mode = o->screening == ZTV_ALL ? "all" : "vegetation";
@@ -145,7 +147,7 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
         CLI_OPT_YEAR(bo),
         CLI_OPT_TEXT("--years", "LIST", years, "maps before the planting plan and at each of LIST's years since "
                      "planting (1,5,15,30) in DIR/before and DIR/year_N, what the planting hides each year "
-                     "(ztv_hidden_by_planting.tif, .png) and the area seeing the development against the years "
+                     "(ztv_hidden_by_planting.tif, .png, .pdf) and the area seeing the development against the years "
                      "(DIR/visible_area.csv, .png)"),
         CLI_OPT_WHOLE("--threads", "N", bo.threads, 1, 1024, "threads for every phase (default: one per core, "
                       "shared out between the ranks of an MPI job on one machine); the maps do not depend on it"),

@@ -1,6 +1,6 @@
 /* ztv_map.c — the reduced grid, its hillshade, and the three kinds of map drawn on it with one
- * frame (title, map, legend panel with scale bar, north arrow and CRS). Nothing here depends on
- * the full grid's size but the reduction step. */
+ * frame (title, map, legend panel with scale bar, north arrow and CRS; a planting plan's map is
+ * ztv_map_planting.c's). Nothing here depends on the full grid's size but the reduction step. */
 #include "ztv/ztv_map.h"
 #include "ztv/ztv_map_style.h"
 
@@ -55,8 +55,7 @@ void ztv_map_free(ztv_map *m)
     free(m);
 }
 
-/* The grid row or column that map pixel p samples: the one nearest its centre. */
-static uint32_t sampled_cell(const ztv_map *m, uint32_t p, uint32_t cells)
+uint32_t ztv_map_sampled_cell(const ztv_map *m, uint32_t p, uint32_t cells)
 {
     uint32_t c = p * m->step + m->step / 2;
     return c < cells ? c : cells - 1;
@@ -67,9 +66,9 @@ void ztv_map_block(ztv_map *m, const ztv_block *b)
     const ztv_grid *g = &m->info->grid;
     for (uint32_t r = 0; r < b->rows; r++) {
         uint32_t j = b->j0 + r, v = j / m->step;
-        if (v >= m->h || sampled_cell(m, v, g->ny) != j) continue;
+        if (v >= m->h || ztv_map_sampled_cell(m, v, g->ny) != j) continue;
         for (uint32_t u = 0; u < m->w; u++) {
-            size_t from = (size_t)r * g->nx + sampled_cell(m, u, g->nx), to = (size_t)v * m->w + u;
+            size_t from = (size_t)r * g->nx + ztv_map_sampled_cell(m, u, g->nx), to = (size_t)v * m->w + u;
             m->ground[to] = b->ground[from];
             for (int mode = 0; mode < ZTV_MODES; mode++) {
                 const ztv_layer *l = b->layer[mode];
@@ -93,9 +92,9 @@ static const uint8_t crown_rgb[3] = {30, 100, 45};
 static const uint8_t object_rgb[3] = {115, 85, 160};
 static const uint8_t outside_rgb[3] = {242, 242, 242};
 static const uint8_t no_terrain_rgb[3] = {60, 70, 90};
-static const uint8_t hidden_rgb[3] = {25, 80, 200};
-static const uint8_t partly_hidden_rgb[3] = {110, 190, 240};
-static const uint8_t still_visible_rgb[3] = {255, 215, 90};
+const uint8_t ztv_map_hidden_rgb[3] = {25, 80, 200};
+const uint8_t ztv_map_partly_hidden_rgb[3] = {110, 190, 240};
+const uint8_t ztv_map_still_visible_rgb[3] = {255, 215, 90};
 /* which developments: one colour each combination of up to three (all of them: red) ... */
 static const uint8_t combination_rgb[8][3] = {{0, 0, 0},      {40, 110, 220}, {245, 160, 30},
                                               {150, 60, 180}, {40, 160, 70},  {0, 165, 165},
@@ -141,7 +140,17 @@ static void add_class_items(const ztv_map *m, map_style *st, ztv_mode mode)
     if (m->class_pixels[mode][ZTV_NO_TERRAIN]) add_item(st, no_terrain_rgb, 0, "no terrain (past the DTM's edge)");
 }
 
-static int class_colour(uint8_t cls, uint8_t rgb[3])
+void ztv_map_add_hidden_items(const ztv_map *m, map_style *st, const char *const labels[4])
+{
+    add_item(st, ztv_map_hidden_rgb, 1, labels[0]);
+    add_item(st, ztv_map_partly_hidden_rgb, 1, labels[1]);
+    add_item(st, ztv_map_still_visible_rgb, 1, labels[2]);
+    uint8_t flat[3] = {ZTV_MAP_FLAT_GREY, ZTV_MAP_FLAT_GREY, ZTV_MAP_FLAT_GREY};
+    add_item(st, flat, 0, labels[3]);
+    add_class_items(m, st, st->mode);
+}
+
+int ztv_map_class_colour(uint8_t cls, uint8_t rgb[3])
 {
     if (cls == ZTV_UNDER_CROWN) memcpy(rgb, crown_rgb, 3);
     else if (cls == ZTV_IN_OBJECT) memcpy(rgb, object_rgb, 3);
@@ -153,7 +162,7 @@ static int class_colour(uint8_t cls, uint8_t rgb[3])
 
 static int fraction_colour(const ztv_map *m, const map_style *st, size_t k, uint8_t rgb[3])
 {
-    int cls = class_colour(m->cls[st->mode][k], rgb);
+    int cls = ztv_map_class_colour(m->cls[st->mode][k], rgb);
     if (cls) return cls;
     ztv_band band = ztv_band_of(m->fraction[st->mode][k]);
     if (band == ZTV_BAND_NONE) return 0;
@@ -163,14 +172,14 @@ static int fraction_colour(const ztv_map *m, const map_style *st, size_t k, uint
 
 static int hidden_colour(const ztv_map *m, const map_style *st, size_t k, uint8_t rgb[3])
 {
-    if (!ztv_class_on_ground(m->cls[ZTV_BARE][k])) return class_colour(m->cls[ZTV_BARE][k], rgb);
-    int cls = class_colour(m->cls[st->mode][k], rgb);
+    if (!ztv_class_on_ground(m->cls[ZTV_BARE][k])) return ztv_map_class_colour(m->cls[ZTV_BARE][k], rgb);
+    int cls = ztv_map_class_colour(m->cls[st->mode][k], rgb);
     if (cls) return cls;
     float bare = m->fraction[ZTV_BARE][k], screened = m->fraction[st->mode][k];
     if (!(bare > 0)) return 0;
-    if (!(screened > 0)) memcpy(rgb, hidden_rgb, 3);
-    else if (screened < bare) memcpy(rgb, partly_hidden_rgb, 3);
-    else memcpy(rgb, still_visible_rgb, 3);
+    if (!(screened > 0)) memcpy(rgb, ztv_map_hidden_rgb, 3);
+    else if (screened < bare) memcpy(rgb, ztv_map_partly_hidden_rgb, 3);
+    else memcpy(rgb, ztv_map_still_visible_rgb, 3);
     return 1;
 }
 
@@ -189,7 +198,7 @@ static int popcount(uint32_t x)
 
 static int cumulative_colour(const ztv_map *m, const map_style *st, size_t k, uint8_t rgb[3])
 {
-    int cls = class_colour(m->cls[st->mode][k], rgb);
+    int cls = ztv_map_class_colour(m->cls[st->mode][k], rgb);
     if (cls) return cls;
     uint32_t bits = m->developments[st->mode][k];
     if (m->info->n_developments < ZTV_MAX_DEVELOPMENTS) bits &= (1u << m->info->n_developments) - 1;
@@ -266,12 +275,9 @@ int ztv_map_write_hidden(const ztv_map *m, ztv_mode mode, FILE *png, FILE *pdf, 
     map_style st = {.mode = mode, .colour = hidden_colour};
     snprintf(st.title, sizeof st.title, "visibility hidden by screening: %s", mode_title(mode));
     snprintf(st.legend_title, sizeof st.legend_title, "bare earth against %s", mode_title(mode));
-    add_item(&st, hidden_rgb, 1, "visible on bare earth, fully hidden");
-    add_item(&st, partly_hidden_rgb, 1, "visible on bare earth, partly hidden");
-    add_item(&st, still_visible_rgb, 1, "visible, nothing hidden");
-    uint8_t flat[3] = {ZTV_MAP_FLAT_GREY, ZTV_MAP_FLAT_GREY, ZTV_MAP_FLAT_GREY};
-    add_item(&st, flat, 0, "not visible on bare earth");
-    add_class_items(m, &st, mode);
+    const char *labels[4] = {"visible on bare earth, fully hidden", "visible on bare earth, partly hidden",
+                             "visible, nothing hidden", "not visible on bare earth"};
+    ztv_map_add_hidden_items(m, &st, labels);
     return ztv_map_page(m, &st, png, pdf, err);
 }
 

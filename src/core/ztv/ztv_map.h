@@ -40,6 +40,10 @@ void ztv_map_block(ztv_map *m, const ztv_block *b);
 int ztv_map_write_mode(const ztv_map *m, ztv_mode mode, FILE *png, FILE *pdf, err_buf *err);
 /* Where the screening of mode hides what bare earth shows (ztv_hidden_MODE.png, .pdf). */
 int ztv_map_write_hidden(const ztv_map *m, ztv_mode mode, FILE *png, FILE *pdf, err_buf *err);
+/* What a planting plan hides in mode at its year (ztv_hidden_by_planting.png, .pdf): m is the
+ * year's map, its info's planting_before the folder of the map made before the plan on the same
+ * grid (ztv_map_planting.c). */
+int ztv_map_write_planting(const ztv_map *m, ztv_mode mode, FILE *png, FILE *pdf, err_buf *err);
 /* Which developments are visible from each cell in mode (ztv_cumulative_MODE.png, .pdf). */
 int ztv_map_write_cumulative(const ztv_map *m, ztv_mode mode, FILE *png, FILE *pdf, err_buf *err);
 

@@ -38,7 +38,24 @@ typedef struct map_style {
     /* The colour of map pixel k: 0 leaves the hillshade, 1 lays rgb over it, 2 paints rgb, 3
      * marks it as not computed. */
     int (*colour)(const struct ztv_map *m, const struct map_style *st, size_t k, uint8_t rgb[3]);
+    /* the map before a planting plan at the map's pixels (w * h each), for the map of what the plan
+     * hides (ztv_planting_map.c); NULL on every other map. Borrowed. */
+    const float *before_fraction;
+    const uint8_t *before_cls;
 } map_style;
+
+/* The colours of what screening hides: fully, partly, nothing of what was seen. */
+extern const uint8_t ztv_map_hidden_rgb[3], ztv_map_partly_hidden_rgb[3], ztv_map_still_visible_rgb[3];
+
+/* The grid row or column that map pixel p samples (the one nearest its centre), of cells. */
+uint32_t ztv_map_sampled_cell(const struct ztv_map *m, uint32_t p, uint32_t cells);
+
+/* The legend of a map of what screening hides: labels of the hidden, partly hidden, nothing hidden
+ * and nothing seen colours, then the class items of st's mode. */
+void ztv_map_add_hidden_items(const struct ztv_map *m, map_style *st, const char *const labels[4]);
+/* The colour of a class drawn alike on every map: 2 (opaque) with rgb set, 3 not computed, 0 when
+ * the class is open ground. */
+int ztv_map_class_colour(uint8_t cls, uint8_t rgb[3]);
 
 /* The colour of every map pixel as st shows it (w * h RGB triples into rgb). */
 void ztv_map_colours(const struct ztv_map *m, const map_style *st, uint8_t *rgb);

@@ -17,7 +17,8 @@
 #include "ztv/ztv_summary.h"
 
 #define MAX_FILES 48 /* pictures (PNG, its world file and PDF each) and tables: 4 modes, 3 hidden, 4
-                     * cumulative, 2 summaries, the GeoPackage, its 3 styles and a style per mode */
+                     * cumulative, a planting's, 2 summaries, the GeoPackage, its 3 styles and a style
+                     * per mode */
 
 struct ztv_output {
     const ztv_info *info;            /* borrowed */
@@ -45,6 +46,14 @@ static const char *const hidden_bands[3] = {"targets hidden by the screening",
 static int screened(const ztv_info *info, int m)
 {
     return m != ZTV_BARE && info->computed[m] && info->computed[ZTV_BARE];
+}
+
+/* The mode a planting's map compares: the screened one (bare earth when only that was traced). */
+static int planting_mode(const ztv_info *info)
+{
+    for (int m = ZTV_MODES - 1; m > ZTV_BARE; m--)
+        if (info->computed[m]) return m;
+    return ZTV_BARE;
 }
 
 static int check_info(const char *dir, const ztv_info *info, err_buf *err)
@@ -236,14 +245,16 @@ static int write_world_file(ztv_output *o, const char *prefix, int m, err_buf *e
     return bad ? err_fail(err, ERR_OUTPUT, "%s: cannot write the world file", path) : 0;
 }
 
-/* Draws one map and writes it as a PNG with its world file and a PDF into new temporaries, kept
- * for the renaming. */
-static int write_picture(ztv_output *o, draw_fn draw, int m, const char *prefix, err_buf *err)
+/* Draws one map of mode m and writes it as a PNG with its world file and a PDF into new
+ * temporaries, kept for the renaming; the files are named prefix + the mode's name, or prefix alone
+ * when named_by_mode is 0. */
+static int write_picture(ztv_output *o, draw_fn draw, int m, const char *prefix, int named_by_mode, err_buf *err)
 {
     char png[ATOMIC_PATH_MAX], pdf[ATOMIC_PATH_MAX];
-    file_path(o, prefix, m, ".png", png, sizeof png);
-    file_path(o, prefix, m, ".pdf", pdf, sizeof pdf);
-    if (write_world_file(o, prefix, m, err)) return -1;
+    int name = named_by_mode ? m : -1;
+    file_path(o, prefix, name, ".png", png, sizeof png);
+    file_path(o, prefix, name, ".pdf", pdf, sizeof pdf);
+    if (write_world_file(o, prefix, name, err)) return -1;
     FILE *f_png = atomic_file_open_stream(&o->files[o->n_files], png, err);
     if (!f_png) return -1;
     o->n_files++;
@@ -317,11 +328,14 @@ int ztv_output_finish(ztv_output *o, err_buf *err)
     }
     for (int m = 0; m < ZTV_MODES; m++) {
         if (!info->computed[m]) continue;
-        if (write_picture(o, ztv_map_write_mode, m, "ztv_", err)) return -1;
-        if (screened(info, m) && write_picture(o, ztv_map_write_hidden, m, "ztv_hidden_", err)) return -1;
-        if (info->n_developments > 1 && write_picture(o, ztv_map_write_cumulative, m, "ztv_cumulative_", err))
+        if (write_picture(o, ztv_map_write_mode, m, "ztv_", 1, err)) return -1;
+        if (screened(info, m) && write_picture(o, ztv_map_write_hidden, m, "ztv_hidden_", 1, err)) return -1;
+        if (info->n_developments > 1 && write_picture(o, ztv_map_write_cumulative, m, "ztv_cumulative_", 1, err))
             return -1;
     }
+    if (info->planting_before && write_picture(o, ztv_map_write_planting, planting_mode(info),
+                                               "ztv_hidden_by_planting", 0, err))
+        return -1;
     if (write_table(o, ztv_summary_write_csv, "ztv_summary.csv", err) ||
         write_table(o, ztv_summary_write_json, "ztv_summary.json", err) || write_styles(o, err))
         return -1;

@@ -120,6 +120,11 @@ typedef struct ztv_info {
     const char *date;                      /* the day the map is made, "YYYY-MM-DD" */
     const double *target_heights;          /* metres above the ground, n_target_heights */
     uint32_t n_target_heights;
+    /* a planting plan's map at a year (`ztv --years`): the output folder of the map made before the
+     * plan on the same grid, for the map of what the plan hides (ztv_map_write_planting), and the
+     * years since planting; NULL otherwise */
+    const char *planting_before;
+    double planting_year;
 } ztv_info;
 
 #endif

@@ -26,6 +26,9 @@ typedef struct ztv_study_options {
     const struct viewpoint *const *views; /* the viewpoints the GeoPackage lists, numbered in this
                                            * order; NULL: the scene's, then its points file's */
     uint32_t n_views;
+    const char *planting_before; /* a planting plan's year (`--years`): the folder of the map made
+                                  * before the plan, for the map of what it hides; NULL otherwise */
+    double planting_year;        /* years since planting, with planting_before */
 } ztv_study_options;
 
 /* Runs the study of sc (built from sf with the ground it is to trace), printing its information

@@ -13,7 +13,6 @@
 #include <gdal.h>
 
 #include "io/atomic_file.h"
-#include "io/raster_canvas.h"
 #include "ztv/ztv_raster.h"
 #include "ztv/ztv_years_chart.h"
 
@@ -52,6 +51,11 @@ static const char *folder_mode(const char *dir, const char *mode)
     return mode;
 }
 
+void ztv_years_map_path(const char *dir, const char *mode, char *path, size_t n)
+{
+    snprintf(path, n, "%s/ztv_%s.tif", dir, folder_mode(dir, mode));
+}
+
 /* The map of one year: bands 1 (targets visible) and 3 (class) of ztv_MODE.tif. */
 typedef struct year_map {
     GDALDatasetH ds;
@@ -68,7 +72,7 @@ static void year_map_free(year_map *m)
 static int year_map_read(const char *dir, const char *mode, year_map *m, err_buf *err)
 {
     char path[4200];
-    snprintf(path, sizeof path, "%s/ztv_%s.tif", dir, folder_mode(dir, mode));
+    ztv_years_map_path(dir, mode, path, sizeof path);
     CPLPushErrorHandler(CPLQuietErrorHandler);
     m->ds = GDALOpen(path, GA_ReadOnly);
     CPLPopErrorHandler();
@@ -95,39 +99,6 @@ static int cell_state(const year_map *before, const year_map *now, size_t k, flo
     *lost = b > a ? b - a : 0;
     if (!(b > 0)) return 0;
     return a >= b ? 1 : a > 0 ? 2 : 3;
-}
-
-/* The hidden map's PNG: each cell a square of pixels, a legend beneath. */
-static int hidden_png(const char *path, const year_map *before, const year_map *now, double year, err_buf *err)
-{
-    static const uint8_t colours[5][3] = {{235, 235, 235}, {250, 250, 250}, {255, 215, 90}, {110, 190, 240}, {25, 80, 200}};
-    static const uint8_t crown[3] = {30, 100, 45}, white[3] = {255, 255, 255}, ink[3] = {30, 30, 30};
-    static const char *const labels[] = {"no viewpoint", "not seen before planting", "still seen", "partly hidden",
-                                         "hidden by the planting"};
-    uint32_t px = now->nx >= 800 ? 1 : 800 / now->nx + 1, legend = 100;
-    if (px * now->ny > 4000) px = 1;
-    canvas c;
-    if (canvas_init(&c, now->nx * px, now->ny * px + legend, white, err)) return -1;
-    for (uint32_t j = 0; j < now->ny; j++)
-        for (uint32_t i = 0; i < now->nx; i++) {
-            size_t k = (size_t)j * now->nx + i;
-            float lost;
-            int st = cell_state(before, now, k, &lost);
-            const uint8_t *col = st >= 0 ? colours[st + 1] : now->cls[k] == ZTV_UNDER_CROWN ? crown : colours[0];
-            canvas_rect(&c, (int)(i * px), (int)(j * px), (int)((i + 1) * px - 1), (int)((j + 1) * px - 1), col);
-        }
-    char title[128];
-    snprintf(title, sizeof title, "hidden by the planting, year %g", year);
-    int y0 = (int)(now->ny * px) + 10;
-    canvas_text(&c, 10, y0, title, 2, ink);
-    for (int s = 0; s < 5; s++) {
-        int x = 10 + 190 * (s % 3), y = y0 + 30 + 20 * (s / 3);
-        canvas_rect(&c, x, y, x + 12, y + 8, s ? colours[s] : crown);
-        canvas_text(&c, x + 18, y + 1, s ? labels[s] : "under a crown", 1, ink);
-    }
-    int rc = canvas_write_png(&c, path, err);
-    canvas_free(&c);
-    return rc;
 }
 
 /* The hidden map's GeoTIFF on the year's grid and CRS. */
@@ -175,7 +146,8 @@ static int hidden_tif(const char *path, const year_map *before, const year_map *
     return atomic_file_commit(&af, err);
 }
 
-/* The year's maps against the one before the plan: the hidden map's files and areas. */
+/* The year's maps against the one before the plan: the hidden map's GeoTIFF and areas (its page
+ * was drawn with the year's map, ztv_map.h). */
 static int year_products(const char *mode, const year_map *before, ztv_year_row *row, double cell_km2, err_buf *err)
 {
     year_map now = {0};
@@ -192,8 +164,6 @@ static int year_products(const char *mode, const year_map *before, ztv_year_row 
     }
     row->hidden_km2 = hidden * cell_km2, row->partly_km2 = partly * cell_km2;
     if (!rc) snprintf(path, sizeof path, "%s/ztv_hidden_by_planting.tif", row->dir), rc = hidden_tif(path, before, &now, err);
-    if (!rc) snprintf(path, sizeof path, "%s/ztv_hidden_by_planting.png", row->dir),
-             rc = hidden_png(path, before, &now, row->year, err);
     year_map_free(&now);
     return rc;
 }

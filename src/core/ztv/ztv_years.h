@@ -5,11 +5,13 @@
  *
  * Files: in each year's folder ztv_hidden_by_planting.tif (GeoTIFF, Float32: band 1 the targets
  * seen before the plan and not that year, band 2 the cell's class that year; nodata -1 where the
- * cell is no viewpoint in either) and ztv_hidden_by_planting.png; in the parent folder
- * visible_area.csv and visible_area.png. */
+ * cell is no viewpoint in either); in the parent folder visible_area.csv and visible_area.png. The
+ * year's run draws the map page of the same comparison, ztv_hidden_by_planting.png and .pdf
+ * (ztv_map_write_planting, ztv_map.h), as it draws its other maps. */
 #ifndef SYLVA_ZTV_YEARS_H
 #define SYLVA_ZTV_YEARS_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "util/err.h"
@@ -26,6 +28,10 @@ typedef struct ztv_year_row {
  * mode's name ("vegetation", "all"). Writes the per-year maps and dir's table and chart.
  * Returns 0, or -1 with err set. */
 int ztv_years_write(const char *dir, const char *mode, ztv_year_row *rows, uint32_t n, err_buf *err);
+
+/* The path of the map of mode in output folder dir (the mode it fell back to when a scene with
+ * less in it had no such map: all without objects is vegetation, without plants bare earth). */
+void ztv_years_map_path(const char *dir, const char *mode, char *path, size_t n);
 
 /* The area in km2 from which some target is seen in mode, from a ztv_summary.csv. Returns 0, or -1
  * with err set. */

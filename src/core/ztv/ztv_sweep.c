@@ -155,14 +155,12 @@ void ztv_sweep_scratch_free(ztv_sweep_scratch *s)
 }
 
 /* The sightline from the eye at node (pa, pb), S metres from the target, walked exactly over
- * its first len metres (all of it when longer than S): ZTV_HIDDEN when the ground stands above it
- * by more than the slack where the Embree sightline is traced, ZTV_SEEN when it stays below by
- * more than the slack all the way, else ZTV_DOUBT. */
-static int sight_walk(const ztv_sweep_ground *g, const target *tg, long pa, long pb, double eye, double S,
-                      double len)
+ * its first ZTV_SWEEP_NEAR cells (all of it when shorter): ZTV_HIDDEN when the ground stands
+ * above it by more than the slack where the Embree sightline is traced, ZTV_SEEN when it stays
+ * below by more than the slack all the way, else ZTV_DOUBT. */
+static int near_walk(const ztv_sweep_ground *g, const target *tg, long pa, long pb, double eye, double S)
 {
-    double c = g->c, least = eye - node_z(g, pa, pb), rprev = 0;
-    len = fmin(len, S);
+    double len = fmin(ZTV_SWEEP_NEAR * g->cell, S), c = g->c, least = eye - node_z(g, pa, pb), rprev = 0;
     walker w;
     walker_start(&w, (double)pa, (double)pb, (tg->u - pa) / S, (tg->v - pb) / S);
     for (;;) {
@@ -207,13 +205,13 @@ static int node_status(const ztv_sweep_ground *g, const target *tg, const double
     double need = ZTV_SIGHT_GAP * (g->steepest + fabs(eye - tg->z) / S + c * S) + ZTV_SWEEP_SLACK;
     int may_hide = g->observer_height >= need && tg->height >= need;
     double rnear = ZTV_SWEEP_NEAR * g->cell;
-    if (S <= rnear) return sight_walk(g, tg, pa, pb, eye, S, rnear);
+    if (S <= rnear) return near_walk(g, tg, pa, pb, eye, S);
     /* the rest: the ray as far as the share 1 - rnear / S of the way to the node */
     const double *at = rec + 4 * crossing_at(rec, n, t * (1 - rnear / S));
     double lam = S * S / (t * t), skew = c * fabs(lam - 1) * t, drop = c * lam * t, G = at[AT_STEEP];
     if (may_hide && at[AT_BELOW] - skew > (eye - tg->z + G * D) / t - drop) return ZTV_HIDDEN;
     int far_clear = at[AT_ABOVE] + skew < (eye - tg->z - G * D) / t - drop;
-    int near = sight_walk(g, tg, pa, pb, eye, S, rnear);
+    int near = near_walk(g, tg, pa, pb, eye, S);
     return near == ZTV_HIDDEN ? ZTV_HIDDEN : near == ZTV_SEEN && far_clear ? ZTV_SEEN : ZTV_DOUBT;
 }
 
@@ -256,103 +254,6 @@ static void walk_ray(const ztv_sweep_ground *g, const target *tg, double ue, dou
     }
 }
 
-void ztv_sweep_block_count(const ztv_sweep_ground *g, uint32_t *bx, uint32_t *by)
-{
-    *bx = (g->nx - 1 + ZTV_SWEEP_BLOCK - 1) / ZTV_SWEEP_BLOCK, *by = (g->ny - 1 + ZTV_SWEEP_BLOCK - 1) / ZTV_SWEEP_BLOCK;
-}
-
-void ztv_sweep_blocks(const ztv_sweep_ground *g, float *low, float *high)
-{
-    uint32_t bx, by;
-    ztv_sweep_block_count(g, &bx, &by);
-    for (uint32_t q = 0; q < by; q++)
-        for (uint32_t p = 0; p < bx; p++) {
-            double lo = INFINITY, hi = -INFINITY;
-            uint32_t a1 = (p + 1) * ZTV_SWEEP_BLOCK, b1 = (q + 1) * ZTV_SWEEP_BLOCK;
-            for (uint32_t b = q * ZTV_SWEEP_BLOCK; b <= b1 && b < g->ny; b++)
-                for (uint32_t a = p * ZTV_SWEEP_BLOCK; a <= a1 && a < g->nx; a++) {
-                    double z = node_z(g, a, b);
-                    lo = z < lo ? z : lo, hi = z > hi ? z : hi;
-                }
-            low[(size_t)q * bx + p] = (float)lo, high[(size_t)q * bx + p] = (float)hi;
-        }
-}
-
-/* The walker moved on to distance r: its next crossings are those beyond r. */
-static void walker_seek(walker *w, double r)
-{
-    for (int k = 0; k < 3; k++) {
-        if (!w->step[k]) continue;
-        double x = w->from[k] + r / w->per[k];
-        w->next[k] = w->step[k] > 0 ? (long)floor(x) + 1 : (long)ceil(x) - 1;
-        w->t[k] = (w->next[k] - w->from[k]) * w->per[k];
-    }
-}
-
-/* The whole sightline from the eye at node (pa, pb), S metres from the target, walked exactly a
- * block at a time (ztv_sweep.h): ZTV_HIDDEN, ZTV_SEEN or ZTV_DOUBT as sight_walk's. Its height
- * over the ground's datum at distance r from the eye is eye + k r + c r^2, k = (zT - eye) / S
- * - c S: lowest at r = -k / 2c, highest at an end of any stretch. */
-static int sight_walk_blocks(const ztv_sweep_ground *g, const target *tg, long pa, long pb, double eye, double S)
-{
-    double a = (tg->u - pa) / S, b = (tg->v - pb) / S, c = g->c, k = (tg->z - eye) / S - c * S;
-    double least = eye - node_z(g, pa, pb), rprev = 0, r0 = 0, B = ZTV_SWEEP_BLOCK;
-    uint32_t bx, by;
-    ztv_sweep_block_count(g, &bx, &by);
-    walker coarse, fine;
-    walker_start(&coarse, pa / B, pb / B, a / B, b / B);
-    walker_start(&fine, (double)pa, (double)pb, a, b);
-    int behind = 0; /* the fine walker stands short of r0 (a block was passed at once) */
-    while (r0 < S) {
-        int kind;
-        long line;
-        double r1 = walker_next(&coarse, &kind, &line);
-        if (!(r1 < S)) r1 = S;
-        if (!(r1 > r0)) continue;
-        double rm = 0.5 * (r0 + r1);
-        long p = (long)floor((pa + a * rm) / B), q = (long)floor((pb + b * rm) / B);
-        p = p < 0 ? 0 : p >= (long)bx ? (long)bx - 1 : p, q = q < 0 ? 0 : q >= (long)by ? (long)by - 1 : q;
-        size_t blk = (size_t)q * bx + (size_t)p;
-        double z0 = eye + (k + c * r0) * r0, z1 = eye + (k + c * r1) * r1, bottom = fmin(z0, z1);
-        double rv = c > 0 ? -k / (2 * c) : r0;
-        if (rv > r0 && rv < r1) bottom = fmin(bottom, eye + (k + c * rv) * rv);
-        if (bottom - g->high[blk] > ZTV_SWEEP_SLACK) { /* clear all across the block */
-            behind = 1, r0 = rprev = r1;
-            continue;
-        }
-        if (fmax(z0, z1) < g->low[blk] - ZTV_SWEEP_SLACK && r0 >= 2 * ZTV_SIGHT_GAP && r1 <= S - 2 * ZTV_SIGHT_GAP)
-            return ZTV_HIDDEN;
-        if (behind) walker_seek(&fine, r0), behind = 0;
-        double end = r1 * (1 + 1e-12) + 1e-9;
-        while (fmin(fmin(fine.t[0], fine.t[1]), fine.t[2]) <= end) {
-            double r = walker_next(&fine, &kind, &line);
-            if (!(r <= S)) break;
-            double h = crossing_height(g, kind, line, pa + a * r, pb + b * r);
-            if (isnan(h)) continue;
-            double m = eye + r / S * (tg->z - eye) - c * r * (S - r) - h;
-            if (m < -ZTV_SWEEP_SLACK && r >= 2 * ZTV_SIGHT_GAP && r <= S - 2 * ZTV_SIGHT_GAP) return ZTV_HIDDEN;
-            least = fmin(least, m - 0.25 * c * (r - rprev) * (r - rprev));
-            rprev = r;
-        }
-        r0 = r1;
-    }
-    least = fmin(least, tg->height - 0.25 * c * (S - rprev) * (S - rprev));
-    return least > ZTV_SWEEP_SLACK ? ZTV_SEEN : ZTV_DOUBT;
-}
-
-/* The nodes the rays left in doubt, each decided by its whole sightline walked exactly. */
-static void settle_doubtful(const ztv_sweep_ground *g, const target *tg, uint8_t *status)
-{
-    for (uint32_t r = 0; r < g->ny; r++)
-        for (uint32_t a = 0; a < g->nx; a++) {
-            size_t k = (size_t)r * g->nx + a;
-            if (status[k] != ZTV_DOUBT || isnan(g->eye[k])) continue;
-            long pb = (long)(g->ny - 1 - r);
-            double eu = a - tg->u, ev = pb - tg->v, S = sqrt(eu * eu + ev * ev) * g->cell;
-            if (S >= 1e-3) status[k] = (uint8_t)sight_walk_blocks(g, tg, a, pb, g->eye[k], S);
-        }
-}
-
 void ztv_sweep_target(const ztv_sweep_ground *g, const double t[3], uint8_t *status, ztv_sweep_scratch *s)
 {
     size_t n = (size_t)g->nx * g->ny;
@@ -373,5 +274,4 @@ void ztv_sweep_target(const ztv_sweep_ground *g, const double t[3], uint8_t *sta
         walk_ray(g, &tg, 0, v, status, s);
         walk_ray(g, &tg, umax, v, status, s);
     }
-    settle_doubtful(g, &tg, status);
 }

@@ -17,17 +17,11 @@
  * The exact sightline to P and the ray differ by at most G u D in ground height at share u of the
  * way (G the steepest triangle near the ray so far), and sylva's Embree sightline differs from
  * the exact one by ZTV_SWEEP_SLACK at most (chords, single precision): a node is declared seen
- * or hidden only when the answer holds with both margins; otherwise it is doubtful. A doubtful
- * node's whole sightline is then walked exactly, with the slack alone as its margin, a block of
- * ZTV_SWEEP_BLOCK x ZTV_SWEEP_BLOCK cells at a time: a block whose highest node the sightline
- * clears by more than the slack all across it is passed at once, one whose lowest node stands
- * above the sightline by more than the slack all across it hides the target at once, and the
- * sightline is walked crossing by crossing through the others. What that walk leaves in doubt,
- * a sightline grazing the ground within the slack, the Embree sightline decides. So the sweep never changes an answer;
- * it only spares the sightlines it is sure of. Its cost is a few crossings per node: the rays'
- * (about 2 ZTV_SWEEP_RAYS crossings a node they pass) and the walk next to P (about
- * 3 ZTV_SWEEP_NEAR), and for a doubtful node two bounds per block its sightline crosses and
- * about 3 crossings per cell of the blocks it grazes; nothing is allocated here.
+ * or hidden only when the answer holds with both margins; otherwise it is doubtful, and the
+ * Embree sightline decides it. So the sweep never changes an answer; it only spares the
+ * sightlines it is sure of. Its cost is a few crossings per node: the rays' (about 2 ZTV_SWEEP_RAYS
+ * crossings a node they pass) and the walk next to P (about 3 ZTV_SWEEP_NEAR); nothing is
+ * allocated here.
  */
 #ifndef SYLVA_ZTV_SWEEP_H
 #define SYLVA_ZTV_SWEEP_H
@@ -37,7 +31,6 @@
 #define ZTV_SWEEP_SLACK 0.25  /* metres: what the Embree sightline may differ from the exact one */
 #define ZTV_SWEEP_RAYS 1u     /* rays per perimeter node */
 #define ZTV_SWEEP_NEAR 2.0    /* cells of each sightline next to its observer walked exactly */
-#define ZTV_SWEEP_BLOCK 8u    /* cells a side of the blocks a doubtful sightline is walked by */
 
 enum { ZTV_DOUBT = 0, ZTV_SEEN = 1, ZTV_HIDDEN = 2 };
 
@@ -51,9 +44,6 @@ typedef struct ztv_sweep_ground {
     const float *steep;        /* (nx - 1) (ny - 1) window cells, row-major from the south: the
                                 * steepest triangle within a cell of each; ztv_sweep_steepness */
     double steepest;           /* the greatest of steep */
-    const float *low, *high;   /* blocks of ZTV_SWEEP_BLOCK x ZTV_SWEEP_BLOCK window cells,
-                                * row-major from the south: the lowest and the highest of their
-                                * nodes (edges included); ztv_sweep_blocks */
     const float *eye;          /* nx ny nodes, row-major from the north: the eye's height, NAN
                                 * where no observer stands */
     double observer_height;    /* metres above the ground */
@@ -63,12 +53,6 @@ typedef struct ztv_sweep_ground {
 /* The window's steepness into steep ((nx - 1) (ny - 1) floats): for each cell, the greatest
  * gradient of the triangles of it and of its eight neighbours. */
 void ztv_sweep_steepness(const ztv_sweep_ground *g, float *steep);
-
-/* The blocks of g's window along its columns and rows (ztv_sweep_blocks fills bx by). */
-void ztv_sweep_block_count(const ztv_sweep_ground *g, uint32_t *bx, uint32_t *by);
-
-/* The lowest and the highest node of each block of the window into low and high. */
-void ztv_sweep_blocks(const ztv_sweep_ground *g, float *low, float *high);
 
 /* A worker's scratch for one window; owned by the caller. */
 typedef struct ztv_sweep_scratch {
@@ -82,8 +66,7 @@ int ztv_sweep_scratch_alloc(ztv_sweep_scratch *s, const ztv_sweep_ground *g);
 void ztv_sweep_scratch_free(ztv_sweep_scratch *s);
 
 /* The status (ZTV_SEEN, ZTV_HIDDEN or ZTV_DOUBT) of every node of the window seen from target
- * t (local metres, inside the window, above its ground) into status (nx ny, as eye): the rays
- * first, then the doubtful nodes' sightlines walked exactly. */
+ * t (local metres, inside the window, above its ground) into status (nx ny, as eye). */
 void ztv_sweep_target(const ztv_sweep_ground *g, const double t[3], uint8_t *status, ztv_sweep_scratch *s);
 
 #endif

@@ -242,9 +242,9 @@ static int hand_over(const sweep_ctx *c, ztv_sink sink, void *user, err_buf *err
     return rc;
 }
 
-/* The ground the sweep walks: the window's nodes, their steepness into steep and their blocks'
- * lowest and highest nodes into low and high (all owned by the caller). */
-static void ground_set(sweep_ctx *c, float *steep, float *low, float *high)
+/* The ground the sweep walks: the window's nodes, their steepness into steep (owned by the
+ * caller). */
+static void ground_set(sweep_ctx *c, float *steep)
 {
     const sylva_heightfield *h = c->job->scene->terrain;
     ztv_sweep_ground *gr = &c->ground;
@@ -255,8 +255,6 @@ static void ground_set(sweep_ctx *c, float *steep, float *low, float *high)
     double most = 0;
     for (size_t k = 0; k < (size_t)(gr->nx - 1) * (gr->ny - 1); k++) most = fmax(most, steep[k]);
     gr->steep = steep, gr->steepest = most;
-    ztv_sweep_blocks(gr, low, high);
-    gr->low = low, gr->high = high;
 }
 
 int ztv_sweep_map(const ztv_job *job, ztv_sink sink, void *user, ztv_stats *stats, err_buf *err)
@@ -273,11 +271,7 @@ int ztv_sweep_map(const ztv_job *job, ztv_sink sink, void *user, ztv_stats *stat
     c.eye = malloc(cells * sizeof *c.eye), c.height = malloc(cells * sizeof *c.height); /* freed below */
     c.where = malloc(cells), c.cls = malloc(cells);
     float *steep = malloc((size_t)(c.w.nx - 1) * (c.w.ny - 1) * sizeof *steep);
-    uint32_t bx, by;
-    ztv_sweep_block_count(&(ztv_sweep_ground){.nx = c.w.nx, .ny = c.w.ny}, &bx, &by);
-    float *low = malloc((size_t)bx * by * sizeof *low), *high = malloc((size_t)bx * by * sizeof *high); /* likewise */
-    if (!c.eye || !c.height || !c.where || !c.cls || !steep || !low || !high ||
-        counts_alloc(&c.total, cells, c.screened, NULL)) {
+    if (!c.eye || !c.height || !c.where || !c.cls || !steep || counts_alloc(&c.total, cells, c.screened, NULL)) {
         rc = err_nomem(err, "out of memory for the %zu cells of the map", cells);
         goto done;
     }
@@ -290,7 +284,7 @@ int ztv_sweep_map(const ztv_job *job, ztv_sink sink, void *user, ztv_stats *stat
     c.canopy = surface;
     if (surface) ztv_sight_init(&c.canopy_sight, ztv_canopy_scene(surface), job->earth);
     if ((rc = cells_set(&c, cover, err))) goto done;
-    ground_set(&c, steep, low, high);
+    ground_set(&c, steep);
     threads = job->threads ? job->threads : task_pool_default_threads();
     if (threads > job->targets->n) threads = job->targets->n;
     c.worker = calloc(threads, sizeof *c.worker); /* freed below */
@@ -317,7 +311,7 @@ done:
     }
     ztv_cover_free(cover);
     ztv_canopy_free(surface);
-    free(c.eye), free(c.height), free(c.where), free(c.cls), free(steep), free(low), free(high);
+    free(c.eye), free(c.height), free(c.where), free(c.cls), free(steep);
     counts_free(&c.total);
     for (unsigned w = 0; c.worker && w < threads; w++) counts_free(&c.worker[w]);
     free(c.worker);

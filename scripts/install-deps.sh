@@ -18,6 +18,7 @@ packages=(
   libgsl-dev             # photomontage camera match: nonlinear least squares (multifit_nlinear)
   libimage-exiftool-perl # exiftool: the EXIF tests compare what sylva reads with what it reports
   libcairo2-dev libpango1.0-dev  # study sheets and ZTV maps: vector PDF and PNG, real fonts
+  libpng-dev             # the pages' PNGs written straight through libpng (src/core/io/png_write.c)
   fonts-dejavu-core      # the sheets' and maps' typeface
   poppler-utils          # pdfinfo, pdfimages, pdftotext: the sheet tests read the PDFs back
   libopenmpi-dev openmpi-bin  # MPI: render and ztv split between ranks (docs/mpi.md); optional

@@ -1,17 +1,17 @@
-// oiio_shim.cpp — the only C++ in sylva: image_io.h implemented on OpenImageIO. Every entry
-// point catches whatever OpenImageIO or the standard library throws and turns it into an
-// err_buf sentence; memory handed back to C is malloc'd so image_free can release it. Alpha is
-// read and written unassociated, so pixel values pass through unchanged.
+// oiio_shim.cpp — the only C++ in sylva: the image module (sylva_image.so, io/image_module.h),
+// image_io.h's reading and writing on OpenImageIO, loaded by the core on first use
+// (io/image_io.c). Every operation catches whatever OpenImageIO or the standard library throws
+// and turns it into an err_buf sentence; memory handed back to C is malloc'd so image_free can
+// release it. Alpha is read and written unassociated, so pixel values pass through unchanged.
+// The core's functions it needs come through the host's table; of the core it links only
+// util/err.c, which holds no state.
 extern "C" {
 #include "io/atomic_file.h"
 #include "io/photo.h"
-#include "util/chunk_check.h"
 #include "util/err.h"
-#include "util/file_check.h"
-#include "util/jpeg_frame.h"
-#include "util/memory_budget.h"
 }
 #include "io/image_io.h"
+#include "io/image_module.h"
 
 #include <unistd.h>
 
@@ -29,6 +29,9 @@ extern "C" {
 #include <vector>
 
 namespace {
+
+// The core's functions, from the entry point; static data of the core.
+const image_host *host = nullptr;
 
 // OpenImageIO scales integer samples into [0, 1] when it converts them to float. That suits
 // 8- and 16-bit photographs; 32-bit integer channels hold ids and counts, so they are read
@@ -89,11 +92,11 @@ int jpeg_budget(const char *path, const char *what, uint64_t need_per_sample, ui
                 err_buf *err)
 {
     uint32_t w = 0, h = 0, c = 0;
-    if (!jpeg_frame(path, &w, &h, &c)) return 0;
+    if (!host->jpeg_frame(path, &w, &h, &c)) return 0;
     const uint64_t need = static_cast<uint64_t>(w) * h * (c * need_per_sample + extra_per_pixel);
     const std::string label = std::string(what) + " '" + path + "' (" + std::to_string(w) + "x" +
                               std::to_string(h) + ", as its JPEG frame states)";
-    return memory_check(need, label.c_str(), err) ? err_default(err, ERR_LIMIT) : 0;
+    return host->memory_check(need, label.c_str(), err) ? err_default(err, ERR_LIMIT) : 0;
 }
 
 // Reads the file `path`, or the bytes behind `proxy` when it is not NULL (OpenImageIO then
@@ -104,7 +107,7 @@ int read_into(const char *path, const char *open_name, OIIO::Filesystem::IOProxy
     if (!proxy) {
         // A FIFO or device would block OpenImageIO's format detection or feed it without end.
         const std::string label = std::string(path) + ": cannot read the image";
-        if (file_check_regular(path, label.c_str(), err)) return -1;
+        if (host->file_check_regular(path, label.c_str(), err)) return -1;
         if (access(path, R_OK) != 0) // OpenImageIO would only say it could not open the file
             return err_set(err, "%s: cannot read the image: %s", path, std::strerror(errno));
         if (jpeg_budget(path, "reading the image", sizeof(float), IMAGE_READ_COPY_BYTES_PER_PIXEL, err))
@@ -142,7 +145,7 @@ int read_into(const char *path, const char *open_name, OIIO::Filesystem::IOProxy
     const std::string what = std::string("reading the image '") + path + "' (" +
                              std::to_string(spec.width) + "x" + std::to_string(spec.height) +
                              ", " + std::to_string(spec.nchannels) + " channels)";
-    if (memory_check(need, what.c_str(), err)) return err_default(err, ERR_LIMIT);
+    if (host->memory_check(need, what.c_str(), err)) return err_default(err, ERR_LIMIT);
 
     img->width = static_cast<uint32_t>(spec.width);
     img->height = static_cast<uint32_t>(spec.height);
@@ -225,7 +228,7 @@ int read_guarded(const char *path, const void *bytes, size_t size, const char *f
         status = err_set(err, "%s: cannot read the image: unknown failure in OpenImageIO", path);
     }
     if (status) {
-        image_free(&img);
+        host->image_free(&img);
         return -1;
     }
     *out = img;
@@ -353,7 +356,7 @@ const char *photo_format(const unsigned char *b, size_t n)
 int photo_read_into(const char *path, image_f32 *img, photo *meta, err_buf *err)
 {
     const std::string label = std::string(path) + ": cannot read the photograph";
-    if (file_check_regular(path, label.c_str(), err)) return -1;
+    if (host->file_check_regular(path, label.c_str(), err)) return -1;
     if (access(path, R_OK) != 0)
         return err_fail(err, ERR_INPUT, "%s: cannot read the photograph: %s", path,
                         std::strerror(errno));
@@ -365,7 +368,7 @@ int photo_read_into(const char *path, image_f32 *img, photo *meta, err_buf *err)
     if (!format)
         return err_fail(err, ERR_INPUT, "%s: cannot read the photograph (a JPEG, PNG or TIFF "
                         "file is expected): its first bytes are none of theirs", path);
-    if (png_check(path, err)) return -1; /* libpng allocates what a damaged chunk states */
+    if (host->png_check(path, err)) return -1; /* libpng allocates what a damaged chunk states */
     if (jpeg_budget(path, "reading the photograph", sizeof(float), 3 * sizeof(float), err)) return -1;
     auto in = OIIO::ImageInput::create(format);
     OIIO::ImageSpec opened;
@@ -388,7 +391,7 @@ int photo_read_into(const char *path, image_f32 *img, photo *meta, err_buf *err)
     const uint64_t need = n_px * (static_cast<uint64_t>(spec.nchannels) + 3) * sizeof(float);
     const std::string what = std::string("reading the photograph '") + path + "' (" +
                              std::to_string(spec.width) + "x" + std::to_string(spec.height) + ")";
-    if (memory_check(need, what.c_str(), err)) return err_default(err, ERR_LIMIT);
+    if (host->memory_check(need, what.c_str(), err)) return err_default(err, ERR_LIMIT);
     if (n_px * static_cast<uint64_t>(spec.nchannels) > SIZE_MAX / sizeof(float))
         return err_fail(err, ERR_LIMIT, "%s: the photograph is too large to address", path);
 
@@ -416,44 +419,21 @@ int photo_read_into(const char *path, image_f32 *img, photo *meta, err_buf *err)
     return 0;
 }
 
-} // namespace
-
-extern "C" int image_read(const char *path, image_f32 *out, err_buf *err)
+int module_read(const char *path, image_f32 *out, err_buf *err)
 {
-    if (!path || !out) return err_set(err, "image_read needs a path and an output image");
     return read_guarded(path, nullptr, 0, nullptr, out, err);
 }
 
-extern "C" int image_read_memory(const void *bytes, size_t size, const char *format,
-                                 const char *name, image_f32 *out, err_buf *err)
+int module_read_memory(const void *bytes, size_t size, const char *format, const char *name, image_f32 *out,
+                       err_buf *err)
 {
-    if (!bytes || !size || !format || !name || !out)
-        return err_set(err, "image_read_memory needs bytes, a format and a name");
     return read_guarded(name, bytes, size, format, out, err);
 }
 
-extern "C" void image_free(image_f32 *img)
+int module_write_u8_into(atomic_file *af, uint32_t width, uint32_t height, uint32_t channels,
+                         const uint8_t *pixels, err_buf *err)
 {
-    if (!img) return;
-    if (img->channel_names)
-        for (uint32_t c = 0; c < img->channels; c++) std::free(img->channel_names[c]);
-    std::free(img->channel_names);
-    std::free(img->pixels);
-    *img = image_f32{};
-}
-
-extern "C" int image_write_u8_into(atomic_file *af, uint32_t width, uint32_t height,
-                                   uint32_t channels, const uint8_t *pixels, err_buf *err)
-{
-    if (!af || !af->stream || !pixels)
-        return err_set(err, "image_write_u8_into needs an open temporary and pixels");
     const char *path = af->path;
-    if (width == 0 || height == 0 || width > INT_MAX || height > INT_MAX)
-        return err_set(err, "%s: cannot write a %ux%u image; width and height must be between "
-                       "1 and %d", path, width, height, INT_MAX);
-    if (channels < 1 || channels > 4)
-        return err_set(err, "%s: cannot write %u channels; 1 to 4 (grey, grey+alpha, RGB, RGBA) "
-                       "are supported", path, channels);
     try {
         return write_u8(path, af, width, height, channels, pixels, err);
     } catch (const std::exception &e) {
@@ -463,23 +443,8 @@ extern "C" int image_write_u8_into(atomic_file *af, uint32_t width, uint32_t hei
     }
 }
 
-extern "C" int image_write_u8(const char *path, uint32_t width, uint32_t height,
-                              uint32_t channels, const uint8_t *pixels, err_buf *err)
+int module_read_photo(const char *path, image_f32 *stored, photo *meta, err_buf *err)
 {
-    if (!path || !pixels) return err_set(err, "image_write_u8 needs a path and pixels");
-    atomic_file tmp;
-    if (!atomic_file_open_stream(&tmp, path, err)) return -1;
-    if (image_write_u8_into(&tmp, width, height, channels, pixels, err)) {
-        atomic_file_abort(&tmp);
-        return -1;
-    }
-    return atomic_file_commit(&tmp, err);
-}
-
-extern "C" int image_read_photo(const char *path, image_f32 *stored, photo *meta, err_buf *err)
-{
-    if (!path || !stored || !meta)
-        return err_set(err, "image_read_photo needs a path, an image and a photo");
     image_f32 img{};
     int status;
     try {
@@ -492,9 +457,23 @@ extern "C" int image_read_photo(const char *path, image_f32 *stored, photo *meta
                           "OpenImageIO", path);
     }
     if (status) {
-        image_free(&img);
+        host->image_free(&img);
         return -1;
     }
     *stored = img;
     return 0;
+}
+
+const image_module operations = {sizeof(image_module), IMAGE_MODULE_VERSION, module_read, module_read_memory,
+                                 module_write_u8_into, module_read_photo};
+
+} // namespace
+
+// The module's one exported symbol (io/image_module.h): NULL for a host whose table is older
+// than the one this module was built with.
+extern "C" __attribute__((visibility("default"))) const image_module *sylva_image_module(const image_host *h)
+{
+    if (!h || h->size < sizeof(image_host)) return nullptr;
+    host = h;
+    return &operations;
 }

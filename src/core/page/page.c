@@ -6,6 +6,7 @@
 #include <stdio.h>
 
 #include "io/atomic_file.h"
+#include "io/png_write.h"
 
 #define MM_PER_INCH 25.4
 #define PT_PER_MM (72.0 / MM_PER_INCH)
@@ -57,8 +58,12 @@ static int write_png(const page_size *size, page_draw_fn draw, void *ctx, FILE *
         return err_nomem(err, "out of memory for a %dx%d page", w, h);
     }
     int rc = draw_on(s, size->dpi / MM_PER_INCH, size, draw, ctx, "PNG", err);
-    if (!rc && cairo_surface_write_to_png_stream(s, to_stream, out))
-        rc = err_fail(err, ERR_OUTPUT, "writing the PNG page failed");
+    if (!rc) {
+        /* libpng at zlib level 1: several times faster than cairo's own PNG writer on a page */
+        cairo_surface_flush(s);
+        rc = png_write_xrgb(out, (uint32_t)w, (uint32_t)h, (size_t)cairo_image_surface_get_stride(s),
+                            cairo_image_surface_get_data(s), err);
+    }
     cairo_surface_destroy(s);
     return rc;
 }

@@ -26,6 +26,7 @@
 #include "plugin/plugin_host.h"
 #include "plugin/plugin_manifest.h"
 #include "util/arena.h"
+#include "util/build_tree.h"
 #include "util/edit_distance.h"
 
 /* A module returning descriptors for this many indices without a NULL is refused whole. */
@@ -527,13 +528,7 @@ static plugin_registry *registry_out_of_memory(plugin_registry *reg, err_buf *er
 
 int plugin_running_from_build_tree(void)
 {
-    char *exe = realpath("/proc/self/exe", NULL); /* malloc'ed by libc, freed below */
-    char *root = realpath(SYLVA_BUILD_ROOT, NULL); /* likewise */
-    size_t n = root ? strlen(root) : 0;
-    int inside = exe && root && !strncmp(exe, root, n) && exe[n] == '/';
-    free(exe);
-    free(root);
-    return inside;
+    return build_tree_running();
 }
 
 plugin_registry *plugin_registry_open(err_buf *err)

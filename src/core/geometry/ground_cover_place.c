@@ -162,38 +162,48 @@ static void place_candidate(cover_pass *c, uint32_t k, double p[3], double d, do
     keep_tuft(&c->tufts[k], proto, &xf);
 }
 
+/* A candidate's draws: where it stands (on the ground, d from the eye) and its four numbers. */
+typedef struct cell_draws {
+    double p[3], d;
+    double keep, pick, turn, size;
+} cell_draws;
+
+/* Candidate (ix, iy)'s jittered point and draws; 0 when it stands off the terrain or beyond
+ * c->radius. */
+static int draw_cell(const cover_pass *c, int64_t ix, int64_t iy, cell_draws *o)
+{
+    sylva_rng r;
+    rng_stream(&r, c->seed, "ground cover", ((uint64_t)(uint32_t)ix << 32) | (uint32_t)iy);
+    o->p[0] = ((double)ix + rng_next_double(&r)) * c->cell;
+    o->p[1] = ((double)iy + rng_next_double(&r)) * c->cell;
+    o->p[2] = 0;
+    o->keep = rng_next_double(&r), o->pick = rng_next_double(&r), o->turn = rng_next_double(&r);
+    o->size = rng_next_double(&r);
+    double dx = o->p[0] - c->view->eye[0], dy = o->p[1] - c->view->eye[1];
+    if (dx * dx + dy * dy > c->radius * c->radius) return 0;
+    if (heightfield_surface_height(c->s->terrain, o->p[0], o->p[1], &o->p[2])) return 0;
+    double dz = o->p[2] - c->view->eye[2];
+    o->d = sqrt(dx * dx + dy * dy + dz * dz);
+    return o->d <= c->radius;
+}
+
 /* Survivor v of the count in the place pass: the same point and draws as visit_cell's, within
  * the place pass's radius; its weighing (the same view, ground and point as the count's) taken
  * from the count. */
 static void visit_survivor(cover_pass *c, uint32_t k, const survivor *v)
 {
-    sylva_rng r;
-    rng_stream(&r, c->seed, "ground cover", ((uint64_t)(uint32_t)v->ix << 32) | (uint32_t)v->iy);
-    double p[3] = {((double)v->ix + rng_next_double(&r)) * c->cell, ((double)v->iy + rng_next_double(&r)) * c->cell, 0};
-    double keep = rng_next_double(&r), pick = rng_next_double(&r), turn = rng_next_double(&r),
-           size = rng_next_double(&r);
-    double dx = p[0] - c->view->eye[0], dy = p[1] - c->view->eye[1];
-    if (dx * dx + dy * dy > c->radius * c->radius) return;
-    if (heightfield_surface_height(c->s->terrain, p[0], p[1], &p[2])) return;
-    double dz = p[2] - c->view->eye[2], d = sqrt(dx * dx + dy * dy + dz * dz);
-    if (d > c->radius) return;
-    place_candidate(c, k, p, d, v->share, v->forest_floor, keep, pick, turn, size);
+    cell_draws q;
+    if (draw_cell(c, v->ix, v->iy, &q))
+        place_candidate(c, k, q.p, q.d, v->share, v->forest_floor, q.keep, q.pick, q.turn, q.size);
 }
 
 /* Candidate (ix, iy) of block k, for worker w: its jittered point, whether it is kept, and what
  * stands there. */
 static void visit_cell(cover_pass *c, unsigned w, uint32_t k, int64_t ix, int64_t iy)
 {
-    sylva_rng r;
-    rng_stream(&r, c->seed, "ground cover", ((uint64_t)(uint32_t)ix << 32) | (uint32_t)iy);
-    double p[3] = {((double)ix + rng_next_double(&r)) * c->cell, ((double)iy + rng_next_double(&r)) * c->cell, 0};
-    double keep = rng_next_double(&r), pick = rng_next_double(&r), turn = rng_next_double(&r),
-           size = rng_next_double(&r);
-    double dx = p[0] - c->view->eye[0], dy = p[1] - c->view->eye[1];
-    if (dx * dx + dy * dy > c->radius * c->radius) return;
-    if (heightfield_surface_height(c->s->terrain, p[0], p[1], &p[2])) return;
-    double dz = p[2] - c->view->eye[2], d = sqrt(dx * dx + dy * dy + dz * dz);
-    if (d > c->radius) return;
+    cell_draws q;
+    if (!draw_cell(c, ix, iy, &q)) return;
+    double *p = q.p, d = q.d, keep = q.keep;
     double mid[3] = {p[0], p[1], p[2] + 0.2};
     if (!in_view(c->view, mid, TUFT_REACH)) return;
     float wk[GROUND_KINDS];
@@ -202,7 +212,7 @@ static void visit_cell(cover_pass *c, unsigned w, uint32_t k, int64_t ix, int64_
     if (heightfield_normal(c->s->terrain, p[0], p[1], n)) return;
     double share = ground_cover_density(wk, n) * land_cover_herb_share(c->s->land_cover, p[0], p[1]);
     if (c->place) {
-        place_candidate(c, k, p, d, share, wk[GROUND_FOREST_FLOOR], keep, pick, turn, size);
+        place_candidate(c, k, p, d, share, wk[GROUND_FOREST_FLOOR], keep, q.pick, q.turn, q.size);
         return;
     }
     if (!(keep < share)) return;

@@ -182,7 +182,7 @@ static void json_vec(FILE *f, const char *key, const double *v, const char *tail
 static int export_scene(const char *dir, const scene *s, uint32_t w, uint32_t h, err_buf *err)
 {
     light_summary l;
-    if (light_summary_init(&l, &s->sun, &s->sky, s->site.origin[2], s->camera.position[2], err)) return -1;
+    if (light_summary_init(&l, &s->sun, &s->sky, s->site.origin[2], s->camera.position[2], 0, err)) return -1;
     if (s->camera.cylindrical || s->camera.f_number > 0 || s->camera.k1 != 0 || s->camera.k2 != 0)
         return err_set(err, "the export takes a pinhole camera only (no panorama, lens or distortion)");
     char path[PATH_LEN];

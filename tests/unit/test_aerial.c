@@ -104,7 +104,7 @@ TEST(verification_fog)
         err_buf err = {{0}};
         film *f = render_scene(s, &ro, NULL, &err);
         static light_summary l; /* its tables are large for the stack */
-        CHECK_INT(light_summary_init(&l, &s->sun, &s->sky, 0, CAMERA_Z, &err), 0);
+        CHECK_INT(light_summary_init(&l, &s->sun, &s->sky, 0, CAMERA_Z, 0, &err), 0);
         CHECK_NEAR(l.fog_distance, VISIBILITY * 1000 / 3.912, 1e-6);
         CHECK(f != NULL);
         if (f) {

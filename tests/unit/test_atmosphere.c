@@ -2,8 +2,10 @@
  * extinction at the camera, a segment's transmittance against the analytic optical depth of an
  * exponential atmosphere, a blue zenith over a paler horizon, the reddening of the sun and of
  * the sky around it as the sun sets, no light from an atmosphere of zero density, and the
- * argument checks. */
+ * argument checks, and the tables the same whatever the thread count. */
 #include "harness.h"
+
+#include <string.h>
 
 #include "geometry/atmosphere.h"
 
@@ -28,7 +30,7 @@ static void setup(double elev_deg, double altitude, double visibility_km, double
 {
     double sun[3], e[3] = {1, 1, 1};
     sun_at(elev_deg, 180, sun);
-    CHECK_INT(atmosphere_init(&atmo, sun, e, altitude, visibility_km, density, 1, 0.2), 0);
+    CHECK_INT(atmosphere_init(&atmo, sun, e, altitude, visibility_km, density, 1, 0.2, 0), 0);
 }
 
 TEST(koschmieder_extinction_at_the_camera)
@@ -121,16 +123,29 @@ TEST(zero_density_scatters_nothing)
 TEST(argument_checks)
 {
     double sun[3] = {0, 0, 1}, zero[3] = {0, 0, 0}, e[3] = {1, 1, 1};
-    CHECK_INT(atmosphere_init(&atmo, zero, e, 0, 30, 1, 1, 0.2), -1);
-    CHECK_INT(atmosphere_init(&atmo, sun, e, 0, 0, 1, 1, 0.2), -1);
-    CHECK_INT(atmosphere_init(&atmo, sun, e, 0, 30, -1, 1, 0.2), -1);
-    CHECK_INT(atmosphere_init(&atmo, sun, e, 0, 30, 1, 1, 1.5), -1);
+    CHECK_INT(atmosphere_init(&atmo, zero, e, 0, 30, 1, 1, 0.2, 0), -1);
+    CHECK_INT(atmosphere_init(&atmo, sun, e, 0, 0, 1, 1, 0.2, 0), -1);
+    CHECK_INT(atmosphere_init(&atmo, sun, e, 0, 30, -1, 1, 0.2, 0), -1);
+    CHECK_INT(atmosphere_init(&atmo, sun, e, 0, 30, 1, 1, 1.5, 0), -1);
     /* clean air at sea level limits the range to 3.912 / 13.5e-6 m = 290 km */
     CHECK_NEAR(atmosphere_clear_visibility_km(0), 289.78, 0.01);
-    CHECK_INT(atmosphere_init(&atmo, sun, e, 0, 300, 1, 1, 0.2), -1);
-    CHECK_INT(atmosphere_init(&atmo, sun, e, 3000, 300, 1, 1, 0.2), 0); /* thinner air up there */
+    CHECK_INT(atmosphere_init(&atmo, sun, e, 0, 300, 1, 1, 0.2, 0), -1);
+    CHECK_INT(atmosphere_init(&atmo, sun, e, 3000, 300, 1, 1, 0.2, 0), 0); /* thinner air up there */
+}
+
+/* The tables built on one thread and on three are the same to the bit. */
+TEST(tables_whatever_the_threads)
+{
+    static atmosphere one, three; /* large: not on the stack */
+    double sun[3], e[3] = {1, 0.95, 0.9};
+    sun_at(25, 120, sun);
+    CHECK_INT(atmosphere_init(&one, sun, e, 240, 30, 1, 1, 0.2, 1), 0);
+    CHECK_INT(atmosphere_init(&three, sun, e, 240, 30, 1, 1, 0.2, 3), 0);
+    CHECK(!memcmp(&one, &three, sizeof one));
+    CHECK(one.view[64][10][1] > 0.0f && one.multiple[5][20][2] > 0.0f);
 }
 
 TEST_LIST(TEST_CASE(koschmieder_extinction_at_the_camera), TEST_CASE(segment_transmittance_is_the_analytic_optical_depth),
           TEST_CASE(zenith_bluer_than_horizon), TEST_CASE(sunset_reddens_sun_and_sky),
-          TEST_CASE(zero_density_scatters_nothing), TEST_CASE(argument_checks))
+          TEST_CASE(zero_density_scatters_nothing), TEST_CASE(argument_checks),
+          TEST_CASE(tables_whatever_the_threads))

@@ -66,7 +66,7 @@ static double sky_irradiance_up(const sun_settings *sun, const sky_settings *sky
 {
     light_summary l;
     err_buf err = {{0}};
-    CHECK(light_summary_init(&l, sun, sky, 0, 0, &err) == 0);
+    CHECK(light_summary_init(&l, sun, sky, 0, 0, 0, &err) == 0);
     const int nc = 400, np = 800;
     double e = 0;
     for (int a = 0; a < nc; a++) {

@@ -275,7 +275,7 @@ TEST(light_summary)
                         .ambient = {0.1, 0.2, 0.3}};
     light_summary l;
     err_buf err;
-    CHECK_INT(light_summary_init(&l, &sun, &sky, 0, 0, &err), 0);
+    CHECK_INT(light_summary_init(&l, &sun, &sky, 0, 0, 0, &err), 0);
     CHECK_INT(l.sun_on, 1);
     CHECK_NEAR(l.sun_dir.y, -0.6, 1e-7);
     CHECK_NEAR(l.sun_dir.z, 0.8, 1e-7);
@@ -287,7 +287,7 @@ TEST(light_summary)
 
     /* the exporter's figure is the path tracer's, bit for bit */
     lights lt;
-    CHECK_INT(lights_init(&lt, &sun, &sky, 0, 0, &err), 0);
+    CHECK_INT(lights_init(&lt, &sun, &sky, 0, 0, 0, &err), 0);
     vec3 tm = table_mean(&lt.table);
     CHECK(tm.x == l.sky_mean.x && tm.y == l.sky_mean.y && tm.z == l.sky_mean.z);
     CHECK(!memcmp(&lt.summary, &l, sizeof l));
@@ -296,15 +296,15 @@ TEST(light_summary)
     /* a constant sky's mean is its colour; no sky, no mean; no irradiance, no sun */
     sky = (sky_settings){.model = SKY_CONSTANT, .scale = 2, .color = {0.25, 0.5, 1}};
     sun.irradiance = 0;
-    CHECK_INT(light_summary_init(&l, &sun, &sky, 0, 0, &err), 0);
+    CHECK_INT(light_summary_init(&l, &sun, &sky, 0, 0, 0, &err), 0);
     CHECK_NEAR(l.sky_mean.x, 0.5, 1e-6);
     CHECK_NEAR(l.sky_mean.z, 2, 1e-6);
     CHECK_INT(l.sun_on, 0);
     sky.model = SKY_NONE;
-    CHECK_INT(light_summary_init(&l, &sun, &sky, 0, 0, &err), 0);
+    CHECK_INT(light_summary_init(&l, &sun, &sky, 0, 0, 0, &err), 0);
     CHECK_NEAR(l.sky_mean.y, 0, 0);
     sky = (sky_settings){.model = SKY_PREETHAM, .turbidity = 12, .scale = 1, .ground_albedo = 0.2};
-    CHECK_INT(light_summary_init(&l, &sun, &sky, 0, 0, &err), -1);
+    CHECK_INT(light_summary_init(&l, &sun, &sky, 0, 0, 0, &err), -1);
     CHECK_STR_CONTAINS(err.msg, "turbidity 12 is outside the Preetham model's range [1.7, 10]");
 }
 

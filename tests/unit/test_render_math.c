@@ -163,7 +163,7 @@ TEST(sun_cone_sampling)
     sky_settings sky = {.model = SKY_NONE};
     lights l;
     err_buf err;
-    CHECK(lights_init(&l, &sun, &sky, 0, 0, &err) == 0);
+    CHECK(lights_init(&l, &sun, &sky, 0, 0, 0, &err) == 0);
     /* irradiance at normal incidence recovered from the disk radiance: E = L * pi sin^2 */
     double e = 0;
     int n = 0;

@@ -272,7 +272,7 @@ int crosscheck_run(const scene *s, const char *out_dir, const crosscheck_options
         goto done;
     }
     light_summary l;
-    if (light_summary_init(&l, &s->sun, &s->sky, s->site.origin[2], s->camera.position[2], err)) goto done;
+    if (light_summary_init(&l, &s->sun, &s->sky, s->site.origin[2], s->camera.position[2], 0, err)) goto done;
     if (l.fog_distance > 0.0 && air_free_alpha(&job, r, image_name, log_name, &img, err)) goto done;
     size_t n = (size_t)r->width * r->height;
     pov_rgb = malloc(n * 3 * sizeof(float));

@@ -10,6 +10,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "util/task_pool.h"
+
 /* Bruneton and Neyret 2008, section 5 ("Results"): Earth and atmosphere radii, Rayleigh
  * scattering at sea level for 680, 550 and 440 nm and its scale height, the Mie scale height,
  * the Mie single-scattering albedo (scattering / extinction = 0.9) and asymmetry g = 0.76. */
@@ -313,8 +315,34 @@ static void multiple_at(const atmosphere *a, double r, double mu_s, double psi[3
     }
 }
 
+/* Row i of the multiple-scattering table, one task each (task_pool.h): its own cells alone. */
+static void multiple_row(void *ctx, unsigned worker, uint32_t i)
+{
+    (void)worker;
+    atmosphere *a = ctx;
+    double r = R_GROUND + row_altitude((double)i / (ATMO_MS_ALTITUDES - 1));
+    for (int j = 0; j < ATMO_MS_COSINES; j++) {
+        double psi[3];
+        multiple_at(a, r, 2.0 * j / (ATMO_MS_COSINES - 1) - 1.0, psi);
+        for (int k = 0; k < 3; k++) a->multiple[i][j][k] = (float)psi[k];
+    }
+}
+
+/* Row i of the view table, one task each: its own cells alone. */
+static void view_row(void *ctx, unsigned worker, uint32_t i)
+{
+    (void)worker;
+    atmosphere *a = ctx;
+    for (int j = 0; j < ATMO_VIEW_AZIMUTHS; j++) {
+        double d[3], c[3];
+        view_direction(a, 2.0 * i / (ATMO_VIEW_ELEVATIONS - 1) - 1.0, M_PI * j / (ATMO_VIEW_AZIMUTHS - 1), d);
+        sky_ray(a, d, 1, c);
+        for (int k = 0; k < 3; k++) a->view[i][j][k] = (float)c[k];
+    }
+}
+
 int atmosphere_init(atmosphere *a, const double sun_dir[3], const double sun_irradiance[3], double altitude,
-                    double visibility_km, double density, double light_scale, double ground_albedo)
+                    double visibility_km, double density, double light_scale, double ground_albedo, unsigned threads)
 {
     double len = sqrt(sun_dir[0] * sun_dir[0] + sun_dir[1] * sun_dir[1] + sun_dir[2] * sun_dir[2]);
     if (!(len > 0.0 && len <= DBL_MAX)) return -1;
@@ -357,14 +385,7 @@ int atmosphere_init(atmosphere *a, const double sun_dir[3], const double sun_irr
             a->depth[i][j][1] = (float)c[1];
         }
     }
-    for (int i = 0; i < ATMO_MS_ALTITUDES; i++) {
-        double r = R_GROUND + row_altitude((double)i / (ATMO_MS_ALTITUDES - 1));
-        for (int j = 0; j < ATMO_MS_COSINES; j++) {
-            double psi[3];
-            multiple_at(a, r, 2.0 * j / (ATMO_MS_COSINES - 1) - 1.0, psi);
-            for (int k = 0; k < 3; k++) a->multiple[i][j][k] = (float)psi[k];
-        }
-    }
+    task_pool_run(threads, ATMO_MS_ALTITUDES, multiple_row, a);
     /* The sun seen from each altitude of the flat frame: the sun's direction is the same there,
      * so its cosine from the vertical is sun_dir.z; the column itself runs over the sphere. */
     for (int i = 0; i < ATMO_SUN_ALTITUDES; i++) {
@@ -396,12 +417,6 @@ int atmosphere_init(atmosphere *a, const double sun_dir[3], const double sun_irr
             for (int k = 0; k < 3; k++) a->sky_irradiance[k] += c[k] * cos(th) * sin(th) * dth * dph;
         }
     }
-    for (int i = 0; i < ATMO_VIEW_ELEVATIONS; i++)
-        for (int j = 0; j < ATMO_VIEW_AZIMUTHS; j++) {
-            double d[3], c[3];
-            view_direction(a, 2.0 * i / (ATMO_VIEW_ELEVATIONS - 1) - 1.0, M_PI * j / (ATMO_VIEW_AZIMUTHS - 1), d);
-            sky_ray(a, d, 1, c);
-            for (int k = 0; k < 3; k++) a->view[i][j][k] = (float)c[k];
-        }
+    task_pool_run(threads, ATMO_VIEW_ELEVATIONS, view_row, a);
     return 0;
 }

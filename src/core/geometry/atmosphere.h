@@ -77,9 +77,10 @@ typedef struct atmosphere {
  * both kinds of scatterer after that (0: no atmosphere). sun_dir need not be unit. Returns 0,
  * or -1 when the visibility is longer than clean air allows at that altitude (Rayleigh
  * scattering alone), an argument is out of range or the sun has no light left at the observer;
- * on -1 *a is unspecified. */
+ * on -1 *a is unspecified. The tables are built on up to `threads` threads (0: one per
+ * processor), each row by one thread, so they are the same for any count. */
 int atmosphere_init(atmosphere *a, const double sun_dir[3], const double sun_irradiance[3], double altitude,
-                    double visibility_km, double density, double light_scale, double ground_albedo);
+                    double visibility_km, double density, double light_scale, double ground_albedo, unsigned threads);
 /* The longest visibility (km) clean air gives at this altitude: 3.912 / Rayleigh(550 nm). */
 double atmosphere_clear_visibility_km(double altitude);
 

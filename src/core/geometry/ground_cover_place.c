@@ -2,6 +2,7 @@
 #include "geometry/ground_cover_place.h"
 
 #include <math.h>
+#include <stdatomic.h>
 #include <stdlib.h>
 
 #include "geometry/camera_frame.h"
@@ -60,6 +61,28 @@ typedef struct block_tufts {
     int out_of_memory;
 } block_tufts;
 
+/* A candidate the count kept: the place pass needs no more of it than its cell, its share before
+ * the fade and its forest floor's weight, so it takes these instead of weighing the ground again
+ * (the count's radius holds the place pass's, and the fade only lowers the share, so every tuft
+ * placed is one of these). */
+typedef struct survivor {
+    int64_t ix, iy;
+    double share;
+    float forest_floor;
+} survivor;
+
+/* The survivors of one block, in the order its cells are visited; `whole` 0 when they were not
+ * all kept (memory, or the pass's bound), and the place pass then visits the whole block. */
+typedef struct block_survivors {
+    survivor *s;      /* owned by the pass (pass_free) */
+    uint32_t n, cap;
+    int whole;
+} block_survivors;
+
+/* The survivors kept at most, as a multiple of max_instances: a count that keeps more than that
+ * lets the place pass weigh the rest again rather than hold them. */
+#define SURVIVORS_PER_TUFT 2
+
 /* A block of CELLS_PER_BLOCK x CELLS_PER_BLOCK candidates that may show in the view. */
 typedef struct cover_block {
     int64_t bx, by;
@@ -82,6 +105,9 @@ typedef struct cover_pass {
     uint64_t *histograms;      /* count pass: tufts per metre of distance, one row per worker */
     size_t histogram_len;      /* radius + 2 */
     block_tufts *tufts;        /* place pass: one per block, owned by the pass */
+    block_survivors *survivors; /* count pass: one per block, owned by the pass; NULL: none kept */
+    atomic_uint_fast64_t n_survivors; /* kept so far, against max_survivors */
+    uint64_t max_survivors;
 } cover_pass;
 
 static void keep_tuft(block_tufts *b, uint32_t proto, const xform3x4 *xf)
@@ -99,38 +125,34 @@ static void keep_tuft(block_tufts *b, uint32_t proto, const xform3x4 *xf)
     b->t[b->n++] = (tuft){proto, *xf};
 }
 
-/* Candidate (ix, iy) of block k, for worker w: its jittered point, whether it is kept, and what
- * stands there. */
-static void visit_cell(cover_pass *c, unsigned w, uint32_t k, int64_t ix, int64_t iy)
+/* The count's survivor (ix, iy) of block k kept for the place pass, unless the bound is reached. */
+static void keep_survivor(cover_pass *c, uint32_t k, int64_t ix, int64_t iy, double share, float forest_floor)
 {
-    sylva_rng r;
-    rng_stream(&r, c->seed, "ground cover", ((uint64_t)(uint32_t)ix << 32) | (uint32_t)iy);
-    double p[3] = {((double)ix + rng_next_double(&r)) * c->cell, ((double)iy + rng_next_double(&r)) * c->cell, 0};
-    double keep = rng_next_double(&r), pick = rng_next_double(&r), turn = rng_next_double(&r),
-           size = rng_next_double(&r);
-    double dx = p[0] - c->view->eye[0], dy = p[1] - c->view->eye[1];
-    if (dx * dx + dy * dy > c->radius * c->radius) return;
-    if (heightfield_surface_height(c->s->terrain, p[0], p[1], &p[2])) return;
-    double dz = p[2] - c->view->eye[2], d = sqrt(dx * dx + dy * dy + dz * dz);
-    if (d > c->radius) return;
-    double mid[3] = {p[0], p[1], p[2] + 0.2};
-    if (!in_view(c->view, mid, TUFT_REACH)) return;
-    float wk[GROUND_KINDS];
-    double n[3];
-    ground_cover_weights(c->ground, p[0], p[1], wk);
-    if (heightfield_normal(c->s->terrain, p[0], p[1], n)) return;
-    double share = ground_cover_density(wk, n) * land_cover_herb_share(c->s->land_cover, p[0], p[1]);
-    if (c->place) {
-        double t = (d / c->radius - FADE_START) / (1.0 - FADE_START);
-        if (t > 0) share *= t >= 1 ? 0 : 1.0 - t * t * (3.0 - 2.0 * t);
+    block_survivors *b = &c->survivors[k];
+    if (!b->whole) return;
+    if (b->n == b->cap) {
+        uint32_t cap = b->cap ? 2 * b->cap : 64;
+        survivor *more = atomic_fetch_add(&c->n_survivors, cap - b->cap) + cap - b->cap <= c->max_survivors
+                             ? realloc(b->s, (size_t)cap * sizeof *more) : NULL;
+        if (!more) {
+            b->whole = 0;
+            return;
+        }
+        b->s = more, b->cap = cap;
     }
+    b->s[b->n++] = (survivor){ix, iy, share, forest_floor};
+}
+
+/* The tuft of a candidate that stands at p, d from the eye, with its share before the fade: kept
+ * into block k's tufts when the faded share keeps it. */
+static void place_candidate(cover_pass *c, uint32_t k, double p[3], double d, double share, float forest_floor,
+                            double keep, double pick, double turn, double size)
+{
+    double t = (d / c->radius - FADE_START) / (1.0 - FADE_START);
+    if (t > 0) share *= t >= 1 ? 0 : 1.0 - t * t * (3.0 - 2.0 * t);
     if (!(keep < share)) return;
-    if (!c->place) {
-        c->histograms[w * c->histogram_len + (size_t)d]++;
-        return;
-    }
     /* a herb for one tuft in ten on meadow, for one in two on the forest floor */
-    double herb_share = 0.1 + 0.4 * wk[GROUND_FOREST_FLOOR];
+    double herb_share = 0.1 + 0.4 * forest_floor;
     uint32_t proto = pick < herb_share
                          ? c->models->herb_first + (uint32_t)(pick / herb_share * GROUND_COVER_HERB_VARIANTS)
                          : c->models->grass_first +
@@ -140,11 +162,73 @@ static void visit_cell(cover_pass *c, unsigned w, uint32_t k, int64_t ix, int64_
     keep_tuft(&c->tufts[k], proto, &xf);
 }
 
+/* A candidate's draws: where it stands (on the ground, d from the eye) and its four numbers. */
+typedef struct cell_draws {
+    double p[3], d;
+    double keep, pick, turn, size;
+} cell_draws;
+
+/* Candidate (ix, iy)'s jittered point and draws; 0 when it stands off the terrain or beyond
+ * c->radius. */
+static int draw_cell(const cover_pass *c, int64_t ix, int64_t iy, cell_draws *o)
+{
+    sylva_rng r;
+    rng_stream(&r, c->seed, "ground cover", ((uint64_t)(uint32_t)ix << 32) | (uint32_t)iy);
+    o->p[0] = ((double)ix + rng_next_double(&r)) * c->cell;
+    o->p[1] = ((double)iy + rng_next_double(&r)) * c->cell;
+    o->p[2] = 0;
+    o->keep = rng_next_double(&r), o->pick = rng_next_double(&r), o->turn = rng_next_double(&r);
+    o->size = rng_next_double(&r);
+    double dx = o->p[0] - c->view->eye[0], dy = o->p[1] - c->view->eye[1];
+    if (dx * dx + dy * dy > c->radius * c->radius) return 0;
+    if (heightfield_surface_height(c->s->terrain, o->p[0], o->p[1], &o->p[2])) return 0;
+    double dz = o->p[2] - c->view->eye[2];
+    o->d = sqrt(dx * dx + dy * dy + dz * dz);
+    return o->d <= c->radius;
+}
+
+/* Survivor v of the count in the place pass: the same point and draws as visit_cell's, within
+ * the place pass's radius; its weighing (the same view, ground and point as the count's) taken
+ * from the count. */
+static void visit_survivor(cover_pass *c, uint32_t k, const survivor *v)
+{
+    cell_draws q;
+    if (draw_cell(c, v->ix, v->iy, &q))
+        place_candidate(c, k, q.p, q.d, v->share, v->forest_floor, q.keep, q.pick, q.turn, q.size);
+}
+
+/* Candidate (ix, iy) of block k, for worker w: its jittered point, whether it is kept, and what
+ * stands there. */
+static void visit_cell(cover_pass *c, unsigned w, uint32_t k, int64_t ix, int64_t iy)
+{
+    cell_draws q;
+    if (!draw_cell(c, ix, iy, &q)) return;
+    double *p = q.p, d = q.d, keep = q.keep;
+    double mid[3] = {p[0], p[1], p[2] + 0.2};
+    if (!in_view(c->view, mid, TUFT_REACH)) return;
+    float wk[GROUND_KINDS];
+    double n[3];
+    ground_cover_weights(c->ground, p[0], p[1], wk);
+    if (heightfield_normal(c->s->terrain, p[0], p[1], n)) return;
+    double share = ground_cover_density(wk, n) * land_cover_herb_share(c->s->land_cover, p[0], p[1]);
+    if (c->place) {
+        place_candidate(c, k, p, d, share, wk[GROUND_FOREST_FLOOR], keep, q.pick, q.turn, q.size);
+        return;
+    }
+    if (!(keep < share)) return;
+    c->histograms[w * c->histogram_len + (size_t)d]++;
+    if (c->survivors) keep_survivor(c, k, ix, iy, share, wk[GROUND_FOREST_FLOOR]);
+}
+
 /* task_pool task: every candidate of block k. */
 static void visit_block(void *ctx, unsigned worker, uint32_t k)
 {
     cover_pass *c = ctx;
     const cover_block *b = &c->blocks[k];
+    if (c->place && c->survivors && c->survivors[k].whole) {
+        for (uint32_t i = 0; i < c->survivors[k].n; i++) visit_survivor(c, k, &c->survivors[k].s[i]);
+        return;
+    }
     for (int64_t iy = b->by * CELLS_PER_BLOCK; iy < (b->by + 1) * CELLS_PER_BLOCK; iy++)
         for (int64_t ix = b->bx * CELLS_PER_BLOCK; ix < (b->bx + 1) * CELLS_PER_BLOCK; ix++)
             visit_cell(c, worker, k, ix, iy);
@@ -182,6 +266,8 @@ static void pass_free(cover_pass *c)
 {
     for (uint32_t k = 0; c->tufts && k < c->n_blocks; k++) free(c->tufts[k].t);
     free(c->tufts);
+    for (uint32_t k = 0; c->survivors && k < c->n_blocks; k++) free(c->survivors[k].s);
+    free(c->survivors);
     free(c->histograms);
     free(c->blocks);
 }
@@ -195,6 +281,9 @@ static int count_tufts(cover_pass *c, unsigned threads, uint64_t *histogram, err
     c->histograms = calloc((size_t)threads * c->histogram_len, sizeof *c->histograms);
     if (!c->histograms) return err_nomem(err, "out of memory for the ground cover");
     c->place = 0;
+    /* the survivors kept for the place pass where memory allows (none kept: it weighs them all) */
+    c->survivors = calloc(c->n_blocks ? c->n_blocks : 1, sizeof *c->survivors);
+    for (uint32_t k = 0; c->survivors && k < c->n_blocks; k++) c->survivors[k].whole = 1;
     task_pool_run(threads, c->n_blocks, visit_block, c);
     for (unsigned w = 0; w < threads; w++)
         for (size_t i = 0; i < c->histogram_len; i++) histogram[i] += c->histograms[w * c->histogram_len + i];
@@ -255,7 +344,9 @@ int ground_cover_add(scene *s, const ground_cover_settings *gc, uint32_t width, 
     if (!ground) return err->msg[0] ? -1 : 0; /* a terrain of scene materials: no cover */
     uint32_t first_instance = s->n_instances;
     cover_pass c = {.s = s, .ground = ground, .view = &v, .models = &models, .seed = s->image.seed,
-                    .cell = 1.0 / sqrt(gc->density), .radius = radius};
+                    .cell = 1.0 / sqrt(gc->density), .radius = radius,
+                    .max_survivors = SURVIVORS_PER_TUFT * (uint64_t)gc->max_instances};
+    atomic_init(&c.n_survivors, 0);
     int rc = -1;
     /* count what the radius holds, metre by metre, and shrink it to the cap */
     uint64_t *histogram = calloc((size_t)radius + 2, sizeof *histogram); /* owned here */

@@ -65,7 +65,7 @@ static vec3 sky_mean(const light_summary *l)
 }
 
 int light_summary_init(light_summary *l, const sun_settings *sun, const sky_settings *sky, double origin_altitude,
-                       double camera_z, err_buf *err)
+                       double camera_z, unsigned threads, err_buf *err)
 {
     memset(l, 0, sizeof *l);
     l->sun_on = sun->enabled && sun->irradiance > 0;
@@ -100,7 +100,7 @@ int light_summary_init(light_summary *l, const sun_settings *sun, const sky_sett
                             "of %.0f m (%.0f km, Rayleigh scattering alone); give a shorter one",
                            sky->visibility_km, altitude, atmosphere_clear_visibility_km(altitude));
         if (atmosphere_init(&l->atmosphere, d, e, altitude, sky->visibility_km, sky->density, sky->scale,
-                            sky->ground_albedo))
+                            sky->ground_albedo, threads))
             return err_fail(err, ERR_INPUT, "sky: the physical sky cannot be set up (visibility %g km, density %g)",
                             sky->visibility_km, sky->density);
         double beta = atmosphere_extinction_550(&l->atmosphere, altitude);

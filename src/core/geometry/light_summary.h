@@ -47,10 +47,11 @@ typedef struct light_summary {
 } light_summary;
 
 /* origin_altitude is the altitude above sea level of the scene's z = 0 (site.origin[2], 0
- * without a site) and camera_z the camera's z: the physical sky is seen from their sum. Returns
- * 0, or -1 with err when the sky's settings are outside the model's range. */
+ * without a site) and camera_z the camera's z: the physical sky is seen from their sum. threads:
+ * for the physical sky's tables (atmosphere_init; 0: one per processor), the same for any count.
+ * Returns 0, or -1 with err when the sky's settings are outside the model's range. */
 int light_summary_init(light_summary *l, const sun_settings *sun, const sky_settings *sky, double origin_altitude,
-                       double camera_z, err_buf *err);
+                       double camera_z, unsigned threads, err_buf *err);
 
 /* Sky radiance toward unit dir (the exact model). */
 vec3 light_summary_sky(const light_summary *l, vec3 dir);

@@ -623,7 +623,7 @@ int pov_export_scene(const scene *s, const char *pov_path, const pov_export_opti
     if (split_path(pov_path, ".pov", &ep, err)) return -1;
     const char *source = o ? o->source : NULL;
     light_summary l;
-    if (light_summary_init(&l, &s->sun, &s->sky, s->site.origin[2], s->camera.position[2], err)) return -1;
+    if (light_summary_init(&l, &s->sun, &s->sky, s->site.origin[2], s->camera.position[2], 0, err)) return -1;
     int rc = -1;
     mesh *terrain = NULL, *water = NULL;
     if (s->terrain) {

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "render/crown_proxy.h"
+#include "util/task_pool.h"
 
 /* Camera samples per species region for the calibration: the mean of a region's radiance then
  * carries a relative error of about 0.6 / sqrt(this) (a sample's spread is some 60 % of the
@@ -46,6 +47,21 @@ static uint32_t centre_species(const render_ctx *ctx, uint32_t x, uint32_t y)
     if (!j) return 0;
     const scene *s = a->scene;
     return s->prototypes[s->instances[a->proxies->plant[j - 1]].prototype].species + 1;
+}
+
+/* The centre species of every pixel of a row, one task each (task_pool.h): each row writes its
+ * own slots of region. */
+typedef struct centre_rows {
+    const render_ctx *ctx;
+    uint32_t *region;
+} centre_rows;
+
+static void centre_row(void *arg, unsigned worker, uint32_t y)
+{
+    (void)worker;
+    const centre_rows *job = arg;
+    const uint32_t w = job->ctx->camera.width;
+    for (uint32_t x = 0; x < w; x++) job->region[(size_t)y * w + x] = centre_species(job->ctx, x, y);
 }
 
 static void probe_row(probe_job *job, uint32_t y)
@@ -118,8 +134,8 @@ int crown_proxies_calibrate(accel *a, const render_ctx *ctx, unsigned threads, e
         err_nomem(err, "out of memory calibrating the crown proxies");
         goto done;
     }
-    for (uint32_t y = 0; y < h; y++)
-        for (uint32_t x = 0; x < w; x++) region[(size_t)y * w + x] = centre_species(ctx, x, y);
+    centre_rows centres = {.ctx = ctx, .region = region};
+    task_pool_run(threads ? threads : 1, h, centre_row, &centres);
     /* pixels within two of a proxy's, whose samples may meet it or its shadow, join its region */
     for (uint32_t y = 0; y < h; y++)
         for (uint32_t x = 0; x < w; x++) {

@@ -11,10 +11,10 @@ static void sky_eval_cb(const double dir[3], double rgb[3], const void *user)
 }
 
 int lights_init(lights *l, const sun_settings *sun, const sky_settings *sky, double origin_altitude, double camera_z,
-                err_buf *err)
+                unsigned threads, err_buf *err)
 {
     memset(l, 0, sizeof *l);
-    if (light_summary_init(&l->summary, sun, sky, origin_altitude, camera_z, err)) return -1;
+    if (light_summary_init(&l->summary, sun, sky, origin_altitude, camera_z, threads, err)) return -1;
     v3_basis(l->summary.sun_dir, &l->sun_t, &l->sun_b);
     if (sky->model != SKY_NONE &&
         sky_table_build(&l->table, LIGHT_SKY_ROWS, LIGHT_SKY_COLUMNS, sky_eval_cb, &l->summary))

@@ -18,8 +18,10 @@ typedef struct lights {
     sky_table table;       /* for sampling (empty for SKY_NONE) */
 } lights;
 
+/* The lights of these settings (light_summary_init's arguments, threads included); 0, or -1 with
+ * err set. The caller frees them (lights_free), after a failure too. */
 int lights_init(lights *l, const sun_settings *sun, const sky_settings *sky, double origin_altitude, double camera_z,
-                err_buf *err);
+                unsigned threads, err_buf *err);
 void lights_free(lights *l);
 
 /* Samples a direction in the sun's cone; returns its pdf (1 for a point-like sun, i.e. a delta). */

@@ -12,6 +12,7 @@
 #include "render/crown_calibrate.h"
 #include "render/crown_proxy.h"
 #include "render/integrator.h"
+#include "render/lights_cache.h"
 #include "util/interleave.h"
 #include "util/progress.h"
 
@@ -76,7 +77,8 @@ static void *render_worker(void *arg)
 struct render_setup {
     const scene *scene;
     accel acc;
-    lights lt;
+    const lights *lt;          /* own_lights, or borrowed from a lights_cache */
+    lights own_lights;         /* owned (lights_free) when no cache gives them */
     double build_seconds, bvh_seconds;
 };
 
@@ -91,7 +93,7 @@ static void ctx_init(render_ctx *ctx, render_setup *rs, const render_options *o,
     const scene *s = rs->scene;
     unsigned leave_out = o->leave_out;
     if (leave_out & ACCEL_MASK_PLANT) leave_out |= ACCEL_MASK_FAR_PLANT | ACCEL_MASK_PROXY;
-    *ctx = (render_ctx){.accel = &rs->acc, .lights = &rs->lt, .spp = o->spp ? o->spp : s->image.spp,
+    *ctx = (render_ctx){.accel = &rs->acc, .lights = rs->lt, .spp = o->spp ? o->spp : s->image.spp,
                         .noise_target = (float)s->image.noise_target,
                         .max_depth = s->image.max_depth, .seed = o->seed_set ? o->seed : s->image.seed,
                         .verify = o->verify, .recorder = o->recorder, .ray_mask = ~leave_out & ~ACCEL_MASK_PROXY};
@@ -110,7 +112,7 @@ static void ctx_init(render_ctx *ctx, render_setup *rs, const render_options *o,
 static int attach_proxies(render_setup *rs, const render_options *o, const camera *cam, err_buf *err)
 {
     if (o->verify || !(rs->scene->image.crown_proxy > 0)) return 0;
-    vec3 sun = rs->lt.summary.sun_on ? rs->lt.summary.sun_dir : v3(0.0f, 0.7071f, 0.7071f);
+    vec3 sun = rs->lt->summary.sun_on ? rs->lt->summary.sun_dir : v3(0.0f, 0.7071f, 0.7071f);
     return crown_proxies_attach(&rs->acc, cam, sun, rs->scene->image.crown_proxy, thread_count(o), err);
 }
 
@@ -121,6 +123,18 @@ static int calibrate_proxies(render_setup *rs, const render_options *o, uint32_t
     render_ctx ctx;
     ctx_init(&ctx, rs, o, w, h);
     return crown_proxies_calibrate(&rs->acc, &ctx, thread_count(o), err);
+}
+
+/* The setup's lights: the cache's when opt gives one, else its own. */
+static int make_lights(render_setup *rs, const render_options *opt, err_buf *err)
+{
+    const scene *s = rs->scene;
+    if (opt->lights)
+        return (rs->lt = lights_cache_get(opt->lights, &s->sun, &s->sky, s->site.origin[2], s->camera.position[2],
+                                          thread_count(opt), err)) ? 0 : -1;
+    rs->lt = &rs->own_lights;
+    return lights_init(&rs->own_lights, &s->sun, &s->sky, s->site.origin[2], s->camera.position[2], thread_count(opt),
+                       err);
 }
 
 render_setup *render_setup_new(const scene *s, const render_options *opt, err_buf *err)
@@ -146,9 +160,7 @@ render_setup *render_setup_new(const scene *s, const render_options *opt, err_bu
     rs->acc.pixel_angle = (float)camera_smallest_pixel_angle(&cam);
     rs->acc.flat_ground = opt->verify;
     rs->acc.bark_relief = !opt->verify; /* POV-Ray, which the verification matches, has none */
-    if (lights_init(&rs->lt, &s->sun, &s->sky, s->site.origin[2], s->camera.position[2], err) ||
-        attach_proxies(rs, opt, &cam, err))
-        goto fail;
+    if (make_lights(rs, opt, err) || attach_proxies(rs, opt, &cam, err)) goto fail;
     double t_commit = progress_now();
     if (accel_commit(&rs->acc, err)) goto fail;
     rs->bvh_seconds = t_open + progress_now() - t_commit;
@@ -163,7 +175,7 @@ fail:
 void render_setup_free(render_setup *rs)
 {
     if (!rs) return;
-    lights_free(&rs->lt);
+    lights_free(&rs->own_lights);
     accel_free(&rs->acc);
     free(rs);
 }

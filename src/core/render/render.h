@@ -26,6 +26,9 @@ typedef struct render_options {
     uint32_t part, parts; /* parts > 1: render only the bands of RENDER_BAND_ROWS rows whose
                            * index modulo parts is part (band k holds rows [16 k, 16 k + 16));
                            * the other pixels are left zero. 0 or 1: every pixel */
+    struct lights_cache *lights; /* render_setup_new: the lights taken from this cache
+                                  * (render/lights_cache.h), shared with the setups before and
+                                  * after it; NULL: the setup builds its own */
 } render_options;
 
 #define RENDER_BAND_ROWS 16u /* rows of one band of a part: one row of tiles */

@@ -1,7 +1,8 @@
 /* study_job.h — one viewpoint of a study in one frame: the viewpoint's camera placed over the
  * built scene (its eye height above the ground), the ground cover for that camera and size
- * (geometry/scene_view.h), one render setup (Embree's BVH, lights, crown proxies: they follow
- * the camera) for every product, the scene rendered with its development and, when the existing
+ * (geometry/scene_view.h), one render setup (Embree's BVH and crown proxies, which follow the
+ * camera; the lights, which ro's lights cache keeps for every camera that sees the same sky) for
+ * every product, the scene rendered with its development and, when the existing
  * view or the wireline is asked for, without it (the same setup and samples, as a montage's
  * pair), then the products written and the scene left as it was built (its ground cover taken
  * out, scene/scene_mark.h).

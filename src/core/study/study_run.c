@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "io/output_folder.h"
+#include "render/lights_cache.h"
 #include "scene_build/scene_build.h"
 #include "scene_file/host_schema.h"
 #include "sheet/sheet.h"
@@ -216,8 +217,10 @@ static int render_jobs(scene *s, const scene_file *sf, const study_options *o, s
         if (p->jobs[i].todo && p->jobs[i].part == parts->part) total += job_work(p, &p->jobs[i]), n_mine++;
     progress prog;
     progress_begin(&prog, "study", total, 1); /* its time left, printed with each job's line */
-    render_options ro = {.threads = o->build.threads, .quiet = 1, .spp = p->spp};
-    int rc = 0;
+    /* one sun, sky and season for every job: their lights built once for every camera that
+     * sees the same sky (render/lights_cache.h) */
+    render_options ro = {.threads = o->build.threads, .quiet = 1, .spp = p->spp, .lights = lights_cache_new()};
+    int rc = ro.lights ? 0 : err_nomem(err, "out of memory for the study's lights");
     for (uint32_t i = 0, mine = 0; !rc && i < p->n_jobs; i++) {
         const study_job *j = &p->jobs[i];
         if (!j->todo || j->part != parts->part) continue;
@@ -237,6 +240,7 @@ static int render_jobs(scene *s, const scene_file *sf, const study_options *o, s
                 study_frame_of(j->frame)->name, j->size[0], j->size[1], names, took, left);
     }
     progress_end(&prog);
+    lights_cache_free(ro.lights);
     return rc;
 }
 

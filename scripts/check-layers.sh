@@ -14,11 +14,11 @@ rank() { case $1 in util) echo 0;; io) echo 1;; params|page) echo 2;; plugin) ec
 # The back ends read the scene and its settings (scene/scene_settings.h), never the file format
 # (scene_file/, nor scene_build/, whose headers bring it). The three files that read their product's
 # own sections of the file (ztv: its settings, targets and developments, and the names its maps
-# print; photo:) are the exceptions, named here. study/ is no back end: like the command line it
+# print; photo:, read by the montage and its sheet) are the exceptions, named here. study/ is no back end: like the command line it
 # drives the build (scene_build) and reads its own study: section, then hands the built scene to
 # the renderer; sheet/ sets out what the study made with the scene file's viewpoints and objects.
 backend() { case $1 in geometry|render|pov|ztv|montage) return 0;; *) return 1;; esac; }
-reads_file() { case $1 in ztv/ztv_study.c|ztv/ztv_targets.c|ztv/ztv_features.c|ztv/ztv_labels.[ch]|montage/montage_run.c) return 0;; *) return 1;; esac; }
+reads_file() { case $1 in ztv/ztv_study.c|ztv/ztv_targets.c|ztv/ztv_features.c|ztv/ztv_labels.[ch]|montage/montage_run.c|montage/verification_sheet.[ch]) return 0;; *) return 1;; esac; }
 bad=0
 for f in $(find . -name '*.[ch]' -o -name '*.cpp' | sed 's|^\./||'); do
   d=${f%%/*}; rd=$(rank $d)

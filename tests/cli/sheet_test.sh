@@ -15,15 +15,8 @@
 #   panorama   the cylindrical frame's sheet gives no focal length and 90.00 degrees across;
 #   print      --print-width 297 makes an A4 landscape page;
 #   resume     a rerun writes nothing; a changed dpi writes the sheets anew and keeps the views.
-set -uo pipefail
-for tool in pdftotext pdfinfo pdfimages python3; do
-  command -v $tool >/dev/null || { echo "SKIP: $tool is missing (scripts/install-deps.sh)"; exit 77; }
-done
+. "$(dirname "$0")/sheet_lib.sh"
 sylva=$1 scene=$2
-out=$(mktemp -d)
-trap 'rm -rf "$out"' EXIT
-fails=0
-fail() { echo "FAIL: $*" >&2; fails=$((fails + 1)); }
 
 "$sylva" study "$scene" -o "$out/s" --only south_west --frames single,cylindrical_90 --dpi 100 -q >/dev/null \
   || fail "study exited with $?"

@@ -112,7 +112,7 @@ static void round_trip(double k1)
     CHECK(s != NULL);
     snprintf(dir, sizeof dir, "%s", work_path("out"));
     mkdir(dir, 0700);
-    montage_options mo = {.dir = dir, .threads = 2, .quiet = 1};
+    montage_options mo = {.dir = dir, .threads = 2, .quiet = 1, .dpi = 50};
     montage_report rep;
     int rc = s ? montage_run(s, sf, &mo, &rep, &err) : -1;
     if (rc) fprintf(stderr, "%s\n", err.msg);
@@ -150,7 +150,7 @@ static void round_trip(double k1)
         image_free(&got);
         film_free(ref);
         const char *files[] = {"montage.png", "montage.exr", "mask.png", "existing.png", "wireline.png",
-                               "sheet.html", "sheet.png"};
+                               "sheet.pdf", "sheet.png", "residuals.csv"};
         for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
             char p[4200];
             struct stat st;
@@ -224,7 +224,7 @@ TEST(panorama_montage)
     CHECK(s != NULL);
     snprintf(dir, sizeof dir, "%s", work_path("pano_out"));
     mkdir(dir, 0700);
-    montage_options mo = {.dir = dir, .threads = 2, .quiet = 1};
+    montage_options mo = {.dir = dir, .threads = 2, .quiet = 1, .dpi = 50};
     montage_report rep;
     int rc = s ? montage_run(s, sf, &mo, &rep, &err) : -1;
     if (rc) fprintf(stderr, "%s\n", err.msg);
@@ -365,7 +365,7 @@ TEST(plate_without_photo_section)
     snprintf(snapshot, sizeof snapshot, "%s", SYLVA_TEST_DATA_DIR "/image/plain_photo.png"); /* no sylva tag */
     snprintf(dir, sizeof dir, "%s", work_path("no_photo_out"));
     mkdir(dir, 0700);
-    montage_options mo = {.dir = dir, .threads = 2, .quiet = 1, .photo = plate};
+    montage_options mo = {.dir = dir, .threads = 2, .quiet = 1, .dpi = 50, .photo = plate};
     montage_report rep;
     int rc = montage_run(s, sf, &mo, &rep, &err);
     if (rc) fprintf(stderr, "%s\n", err.msg);

@@ -19,8 +19,9 @@ static const char montage_about[] =
     "trees in front of the development hiding it, its shadows darkening the photograph.\n"
     "Writes into DIR (created when missing): montage.png and montage.exr, mask.png (the\n"
     "development's coverage), existing.png (the photograph as it is), wireline.png (the\n"
-    "development's outline and edges over the photograph) and the verification sheet\n"
-    "(sheet.html, sheet.png). See docs/photomontage.md.\n";
+    "development's outline and edges over the photograph), the verification sheet (sheet.pdf,\n"
+    "sheet.png: A3, real fonts, the wireline as vector strokes) and with control points\n"
+    "residuals.csv. See docs/photomontage.md.\n";
 
 static const char montage_epilogue[] =
     "exit status: 0 done, 1 usage, 2 bad scene, photograph or control points (or points\n"
@@ -37,6 +38,8 @@ int cmd_montage(int argc, char **argv)
         CLI_OPT_PATH("--photo", "IMG", mo.photo, "the photograph (default: photo: file)"),
         CLI_OPT_PATH("--control-points", "FILE", mo.points, "the control points (default: photo: control_points)"),
         CLI_OPT_WHOLE("--spp", "N", mo.spp, 1, 1u << 20, "samples per pixel (default: the scene's)"),
+        CLI_OPT_NUMBER("--dpi", "N", "pixels per inch", mo.dpi, 0, 10000, CLI_OPEN_LOW,
+                       "pixels per inch of the sheet's page and pictures (default: the study: section's, 300)"),
         CLI_OPT_WHOLE("--threads", "N", bo.threads, 1, 1024, "threads for every phase (default: one per core)"),
         CLI_OPT_TEXT("--season", "S", season, CLI_HELP_SEASON),
         CLI_OPT_YEAR(bo),

@@ -136,11 +136,6 @@ int canvas_write_png(const canvas *c, const char *path, err_buf *err)
     return image_write_u8(path, c->width, c->height, 3, c->rgb, err);
 }
 
-int canvas_write_png_into(const canvas *c, atomic_file *af, err_buf *err)
-{
-    return image_write_u8_into(af, c->width, c->height, 3, c->rgb, err);
-}
-
 void canvas_series_color(uint32_t i, uint8_t rgb[3])
 {
     static const uint8_t palette[8][3] = {{34, 139, 34},  {230, 140, 20}, {20, 70, 110},  {190, 60, 60},

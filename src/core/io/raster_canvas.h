@@ -9,7 +9,6 @@
 
 #include <stdint.h>
 
-#include "io/atomic_file.h"
 #include "util/err.h"
 
 typedef struct canvas {
@@ -34,9 +33,6 @@ int canvas_text_width(const char *text, int scale); /* pixels */
 
 /* Writes the canvas as a PNG (image_write_u8: a temporary name renamed into place). */
 int canvas_write_png(const canvas *c, const char *path, err_buf *err);
-/* Writes the canvas as a PNG into a temporary the caller opened and commits
- * (image_write_u8_into). */
-int canvas_write_png_into(const canvas *c, atomic_file *af, err_buf *err);
 
 /* A distinct colour for series i (cycles after 8). */
 void canvas_series_color(uint32_t i, uint8_t rgb[3]);

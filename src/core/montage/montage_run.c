@@ -15,9 +15,9 @@
 #include "render/wireline.h"
 #include "site/site_frame.h"
 #include "scene_file/scene_file.h"
+#include "sheet/sheet.h"
 #include "util/progress.h"
 
-#define DEG (M_PI / 180.0)
 
 /* With camera_from_exif: the camera at the photograph's GPS position (its altitude as the
  * height) turned to its GPS direction, on the site's map. The direction is taken as a bearing
@@ -85,75 +85,12 @@ static int match_camera(const scene_file *sf, const control_points *cp, const ch
     return 0;
 }
 
-/* The horizontal distance and bearing from the camera to the middle of the development's
- * bounding box; NAN when the scene has no development. */
-static void development_bearing(const scene *s, const double eye[3], double *dist, double *bearing)
-{
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (uint32_t o = 0; o < s->n_objects; o++)
-        if (s->objects[o].development) scene_object_bounds(s, o, lo, hi);
-    *dist = *bearing = NAN;
-    if (!(lo[0] <= hi[0])) return;
-    double dx = 0.5 * (lo[0] + hi[0]) - eye[0], dy = 0.5 * (lo[1] + hi[1]) - eye[1];
-    *dist = hypot(dx, dy);
-    *bearing = fmod(atan2(dx, dy) / DEG + 360.0, 360.0);
-}
-
-static int write_sheet(const scene *s, const scene_file *sf, const photo *ph, const char *photo_path,
-                       const control_points *cp, const montage_report *rep, const uint8_t *wire8,
-                       const uint8_t *mont8, const char *dir, err_buf *err)
-{
-    const camera_model *c = &rep->camera;
-    const camera_match *m = rep->match;
-    uint32_t n = m && cp ? m->n_points : 0;
-    sheet_residual *res = calloc(n + 1, sizeof *res); /* freed below */
-    if (!res) return err_nomem(err, "out of memory for the verification sheet");
-    for (uint32_t i = 0; i < n; i++)
-        res[i] = (sheet_residual){cp->points[i].id, cp->points[i].pixel[0], cp->points[i].pixel[1], m->residual[i][0],
-                                  m->residual[i][1]};
-    double shift[3] = {0, 0, 0};
-    if (sf->site.crs_wkt) memcpy(shift, sf->site.origin, sizeof shift);
-    double dist, bearing;
-    development_bearing(s, c->position, &dist, &bearing);
-    char camera_name[160] = "";
-    if (ph->exif.has_make || ph->exif.has_model)
-        snprintf(camera_name, sizeof camera_name, "%s %s", ph->exif.has_make ? ph->exif.make : "",
-                 ph->exif.has_model ? ph->exif.model : "");
-    double ground;
-    double eye_above = scene_terrain_height(s, c->position[0], c->position[1], &ground) ? NAN : c->position[2] - ground;
-    verification_sheet v = {
-        .title = "Photomontage", .photo = strrchr(photo_path, '/') ? strrchr(photo_path, '/') + 1 : photo_path,
-        .crs_name = sf->site.crs_name,
-        .viewpoint = {c->position[0] + shift[0], c->position[1] + shift[1], c->position[2] + shift[2]},
-        .eye_above_ground = eye_above, .heading_deg = c->heading_deg, .pitch_deg = c->pitch_deg,
-        .roll_deg = c->roll_deg, .hfov_deg = c->fov_deg,
-        .cylindrical = s->camera.cylindrical,
-        .vfov_deg = s->camera.cylindrical ? 2.0 * atan(0.5 * c->fov_deg * DEG * c->height / c->width) / DEG
-                                          : 2.0 * atan(0.5 * c->height / camera_model_focal_px(c)) / DEG,
-        .focal_mm = rep->sensor_width_mm > 0 && !s->camera.cylindrical ? camera_model_focal_mm(c, rep->sensor_width_mm)
-                                                                        : NAN,
-        .sensor_width_mm = rep->sensor_width_mm > 0 ? rep->sensor_width_mm : NAN,
-        .focal35_mm = ph->exif.has_focal_length_35mm ? ph->exif.focal_length_35mm : NAN,
-        .camera_model = camera_name[0] ? camera_name : NULL, .k1 = c->k1, .k2 = c->k2,
-        .development_distance_m = dist, .development_bearing_deg = bearing,
-        .date_time = s->sun.date_time_utc[0] ? s->sun.date_time_utc : NULL,
-        .sun_azimuth_deg = s->sun.azimuth_deg, .sun_elevation_deg = s->sun.elevation_deg,
-        .residuals = res, .n_residuals = n, .rmse_px = m ? m->rmse_px : NAN,
-        .wireline = {c->width, c->height, wire8}, .montage = {c->width, c->height, mont8},
-        .wireline_file = "wireline.png", .montage_file = "montage.png"};
-    char html[4200], png[4200];
-    snprintf(html, sizeof html, "%s/sheet.html", dir);
-    snprintf(png, sizeof png, "%s/sheet.png", dir);
-    int rc = verification_sheet_write(&v, html, png, err);
-    free(res);
-    return rc;
-}
-
 /* The files of the montage into dir. */
 static int write_files(const scene *s, const scene_file *sf, const photo *ph, const char *photo_path,
                        const control_points *cp, const montage_report *rep, const composite_renders *r,
-                       const float *montage, const char *dir, err_buf *err)
+                       const float *montage, const montage_options *o, err_buf *err)
 {
+    const char *dir = o->dir;
     uint32_t w = ph->width, h = ph->height;
     char path[4200];
     const float *alpha = r->full->development;
@@ -173,13 +110,20 @@ static int write_files(const scene *s, const scene_file *sf, const photo *ph, co
     camera_init(&cam, &s->camera, w, h);
     wireline wl = {0};
     if (!rc) rc = wireline_find(&wl, r->full, s, &cam, err);
+    if (!rc) { /* the sheet before the wireline is painted over the photograph */
+        verification_inputs vi = {.s = s, .sf = sf, .ph = ph, .photo_path = photo_path, .cp = cp,
+                                  .match = rep->match, .camera = &rep->camera, .sensor_width_mm = rep->sensor_width_mm,
+                                  .spp = o->spp ? o->spp : s->image.spp,
+                                  .page = sheet_page_size(sf->study.print_width_mm, o->dpi > 0 ? o->dpi : sf->study.dpi),
+                                  .photograph = plate8, .montage = mont8, .wl = &wl};
+        rc = verification_sheet_write(&vi, dir, err);
+    }
     if (!rc) {
         const uint8_t red[3] = {255, 0, 0}, yellow[3] = {255, 220, 0};
         wireline_draw(&wl, plate8, red, yellow);
         snprintf(path, sizeof path, "%s/wireline.png", dir);
         rc = image_write_u8(path, w, h, 3, plate8, err);
     }
-    if (!rc) rc = write_sheet(s, sf, ph, photo_path, cp, rep, plate8, mont8, dir, err);
     wireline_free(&wl);
     free(plate8);
     free(mont8);
@@ -246,7 +190,7 @@ int montage_run(scene *s, const scene_file *sf, const montage_options *o, montag
         image_f32 plate = {.width = ph.width, .height = ph.height, .channels = 3, .pixels = ph.rgb};
         rc = composite_apply(&l, &plate, gain, 1, montage, NULL, err);
     }
-    if (!rc) rc = write_files(s, sf, &ph, photo_path, cp, rep, &r, montage, o->dir, err);
+    if (!rc) rc = write_files(s, sf, &ph, photo_path, cp, rep, &r, montage, o, err);
     free(montage);
     composite_renders_free(&r);
     control_points_free(cp);

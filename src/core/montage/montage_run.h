@@ -4,8 +4,9 @@
  * development at the photograph's size through the matched camera (lens distortion included),
  * the development composited into the photograph in linear light with the terrain and trees as
  * holdouts and the shadow catcher on, and the files a reviewer needs written into a folder:
- * montage.png and .exr, mask.png, existing.png (the photograph as it is), wireline.png and the
- * verification sheet (sheet.html, sheet.png).
+ * montage.png and .exr, mask.png, existing.png (the photograph as it is), wireline.png, the
+ * verification sheet (sheet.pdf, sheet.png; montage/verification_sheet.h) and with control points
+ * residuals.csv.
  *
  * The scene's camera is replaced by the matched one. A cylindrical panorama (the context views
  * photomontage guidance asks for) is rendered and composited through the scene's camera as it
@@ -29,6 +30,7 @@ typedef struct montage_options {
     const char *points;        /* control points, or NULL: the scene's photo: control_points */
     uint32_t spp;              /* 0: the scene's */
     unsigned threads;          /* 0: one per core */
+    double dpi;                /* the sheet's pixels per inch; 0: the study: section's (300) */
     int quiet;
 } montage_options;
 

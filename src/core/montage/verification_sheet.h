@@ -1,56 +1,53 @@
-/* verification_sheet.h — the photomontage's verification sheet: what a reviewer needs to check
- * a visualisation, as an HTML page and as one PNG — the viewpoint's map coordinates and height,
- * the camera and lens, the horizontal and vertical fields of view, the distance and bearing to
- * the development, the date, time and sun position used, the control points' residuals, and
- * the wireline and the photomontage side by side.
+/* verification_sheet.h — the photomontage's verification sheet (docs/photomontage.md,
+ * Verification sheet): the study's sheet (sheet/sheet.h) with the photomontage as the proposed
+ * view, the photograph as the existing view, the wireline traced from the render and stroked over
+ * the photograph, the location map, and the table filled for a photograph: its EXIF, how the
+ * camera's position was found, the matched lens, the capture time, the camera match's residuals
+ * and the visualisation Type (TGN 06/19, Table 2) that follows from them. Written as sheet.pdf and
+ * sheet.png, with every control point's residual in residuals.csv.
  *
- * Both are written atomically (io/atomic_file.h). The HTML links to the wireline and montage
- * images by the file names given (beside it); the PNG holds them, scaled to fit. Values not
- * known (NAN, NULL) are shown as a dash. Nothing is kept: the caller owns the sheet's data.
- */
+ * The Type: 4 (survey verifiable) when the camera stands at the position the scene's camera:
+ * gives (surveyed; neither the EXIF's GPS nor moved by the match), the control points are map
+ * coordinates in the site's CRS, and the match puts them within VERIFIED_RMSE_DEG of their
+ * pixels as seen from the camera; otherwise 3, with the reason. Nothing is kept: the caller owns
+ * every input. */
 #ifndef SYLVA_VERIFICATION_SHEET_H
 #define SYLVA_VERIFICATION_SHEET_H
 
+#include <stddef.h>
 #include <stdint.h>
 
+#include "io/photo.h"
+#include "montage/camera_match.h"
+#include "montage/control_points.h"
+#include "page/page.h"
+#include "render/wireline.h"
+#include "scene/scene.h"
+#include "scene_file/scene_file.h"
 #include "util/err.h"
 
-typedef struct sheet_residual {
-    const char *id;          /* the control point's name */
-    double u, v;             /* its pixel in the photograph */
-    double du, dv;           /* the solved camera's projection minus (u, v), pixels */
-} sheet_residual;
+#define VERIFIED_RMSE_DEG 0.05 /* the match's RMSE, as an angle at the camera, that verifies it */
 
-typedef struct sheet_image {
-    uint32_t width, height;
-    const uint8_t *rgb;      /* 8-bit sRGB, 3 per pixel, row 0 at the top */
-} sheet_image;
+typedef struct verification_inputs {
+    const scene *s;                 /* rendered through the camera below */
+    const scene_file *sf;
+    const photo *ph;
+    const char *photo_path;
+    const control_points *cp;       /* NULL: no match */
+    const camera_match *match;      /* NULL: no match */
+    const camera_model *camera;     /* the camera rendered through */
+    double sensor_width_mm;         /* 0: unknown */
+    uint32_t spp;                   /* samples per pixel of the render */
+    page_size page;
+    const uint8_t *photograph, *montage; /* 8-bit sRGB at the photograph's size */
+    const wireline *wl;             /* the development's wireline in the render */
+} verification_inputs;
 
-typedef struct verification_sheet {
-    const char *title;
-    const char *photo;                 /* the photograph's file name, or NULL */
-    const char *crs_name;              /* NULL: coordinates are local metres */
-    double viewpoint[3];               /* easting, northing, height of the camera, metres */
-    double eye_above_ground;           /* metres */
-    double heading_deg, pitch_deg, roll_deg;
-    int cylindrical;                   /* 1: a panorama */
-    double hfov_deg, vfov_deg;
-    double focal_mm, sensor_width_mm, focal35_mm;
-    const char *camera_model;          /* make and model */
-    double k1, k2;                     /* radial distortion */
-    double development_distance_m;     /* from the camera to the development's centre, horizontal */
-    double development_bearing_deg;    /* clockwise from grid north */
-    const char *date_time;             /* as the sun was placed for, or NULL */
-    double sun_azimuth_deg, sun_elevation_deg;
-    const sheet_residual *residuals;
-    uint32_t n_residuals;
-    double rmse_px;
-    sheet_image wireline, montage;
-    const char *wireline_file, *montage_file; /* the images' names beside the HTML */
-} verification_sheet;
+/* The Type of the montage in: 3 or 4, and why into *reason (a static phrase or reason_buf). */
+int verification_type(const verification_inputs *in, char *reason_buf, size_t n, const char **reason);
 
-/* Writes the sheet as html_path and png_path (either may be NULL). Returns 0, or -1 with err
- * set (nothing is left behind). */
-int verification_sheet_write(const verification_sheet *v, const char *html_path, const char *png_path, err_buf *err);
+/* Writes DIR/sheet.pdf, DIR/sheet.png and, with a match, DIR/residuals.csv (id, u, v, du, dv,
+ * residual in pixels). Returns 0, or -1 with err set. */
+int verification_sheet_write(const verification_inputs *in, const char *dir, err_buf *err);
 
 #endif

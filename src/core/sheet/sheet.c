@@ -18,6 +18,9 @@
 #define RIGHT_MIN 140.0 /* the right column, for the map and the table */
 #define WIDE_ASPECT 0.45 /* a frame less high than this for its width is laid out as a panorama */
 #define SIDE_WIDE 128.0  /* a panorama's existing view and wireline, wide */
+/* the panels' captions: a study's rendered views, or a photomontage and its photograph */
+#define PROPOSED(sh) ((sh)->photo ? "Photomontage (proposed)" : "Proposed view")
+#define EXISTING(sh) ((sh)->photo ? "Existing view (the photograph)" : "Existing view")
 
 page_size sheet_page_size(double print_width_mm, double dpi)
 {
@@ -56,7 +59,8 @@ static void draw_title(cairo_t *cr, const sheet *sh)
     const sheet_view *v = &sh->view;
     char title[256], project[512];
     char planting[160];
-    if (sheet_planting_text(sh, planting, sizeof planting))
+    if (sh->photo) snprintf(title, sizeof title, "Photomontage: %s", sh->photo->file);
+    else if (sheet_planting_text(sh, planting, sizeof planting))
         snprintf(title, sizeof title, "Viewpoint %u: %s \u2014 %s", v->number, v->name, planting);
     else
         snprintf(title, sizeof title, "Viewpoint %u: %s", v->number, v->name);
@@ -64,14 +68,20 @@ static void draw_title(cairo_t *cr, const sheet *sh)
     page_text(cr, MARGIN, MARGIN, 0, &big, title, 0);
     page_font small = {.size_pt = 8, .rgb = {0.25, 0.25, 0.25}};
     const char *base = strrchr(sh->sf->path, '/');
-    snprintf(project, sizeof project, "%s frame, %.1f\u00b0 across \u2014 existing view, proposed view and wireline",
-             v->frame, v->hfov_deg);
+    if (sh->photo)
+        snprintf(project, sizeof project, "%s, %.1f\u00b0 across \u2014 photograph, photomontage and wireline",
+                 v->frame, v->hfov_deg);
+    else
+        snprintf(project, sizeof project, "%s frame, %.1f\u00b0 across \u2014 existing view, proposed view and wireline",
+                 v->frame, v->hfov_deg);
     page_text(cr, MARGIN, MARGIN + 7.5, 0, &small, project, 0);
     snprintf(project, sizeof project, "Project: %s", base ? base + 1 : sh->sf->path);
     page_font right = {.size_pt = 9, .bold = 1, .align = PAGE_RIGHT};
     page_text(cr, SHEET_A3_WIDTH - MARGIN, MARGIN, 0, &right, project, 0);
     right.bold = 0, right.size_pt = 8;
-    page_text(cr, SHEET_A3_WIDTH - MARGIN, MARGIN + 5, 0, &right, "Visualisation Type 2 (LI TGN 06/19)", 0);
+    char type[64];
+    snprintf(type, sizeof type, "Visualisation Type %d (LI TGN 06/19)", sh->photo ? sh->photo->type : 2);
+    page_text(cr, SHEET_A3_WIDTH - MARGIN, MARGIN + 5, 0, &right, type, 0);
     cairo_move_to(cr, MARGIN, MARGIN + TITLE_H - 3);
     cairo_line_to(cr, SHEET_A3_WIDTH - MARGIN, MARGIN + TITLE_H - 3);
     cairo_set_line_width(cr, 0.35);
@@ -103,7 +113,8 @@ static int draw_wireline(cairo_t *cr, const sheet *sh, double x, double y, doubl
                          err_buf *err)
 {
     page_picture none = {0};
-    if (draw_panel(cr, sh->wireline ? &sh->existing : &none, "Wireline", x, y, w, h, dpi, err)) return -1;
+    const char *caption = sh->photo ? "Wireline over the photograph" : "Wireline";
+    if (draw_panel(cr, sh->wireline ? &sh->existing : &none, caption, x, y, w, h, dpi, err)) return -1;
     sheet_wireline_draw(cr, sh->wireline, x, y + CAPTION_H, w, h);
     return 0;
 }
@@ -125,13 +136,23 @@ static double draw_table(cairo_t *cr, const sheet *sh, const sheet_panels *p, do
 
 static void draw_foot(cairo_t *cr, const sheet *sh)
 {
-    char note[512];
-    snprintf(note, sizeof note,
-             "Printed at 100%% on %s paper, each view shows the landscape at its true size when held at the distance "
-             "given for it and seen with one eye. Rendered by sylva from the scene's terrain model, vegetation and "
-             "development; the wireline is the development's outline (red) and inner edges (yellow) as the camera sees "
-             "them, over the existing view.",
-             sh->page.width_mm == SHEET_A3_WIDTH ? "A3" : "the stated");
+    char note[640];
+    if (sh->photo)
+        snprintf(note, sizeof note,
+                 "Printed at 100%% on %s paper, each picture shows the landscape at its true size when held at the "
+                 "distance given for it and seen with one eye. The photomontage is the photograph with the development "
+                 "rendered into it by sylva through the camera %s, the terrain and vegetation in front of it hiding it "
+                 "and its shadows darkening the photograph; the wireline is the development's outline (red) and inner "
+                 "edges (yellow) as that camera sees them, over the photograph.",
+                 sh->page.width_mm == SHEET_A3_WIDTH ? "A3" : "the stated",
+                 sh->photo->points ? "matched to the control points" : "the scene gives");
+    else
+        snprintf(note, sizeof note,
+                 "Printed at 100%% on %s paper, each view shows the landscape at its true size when held at the distance "
+                 "given for it and seen with one eye. Rendered by sylva from the scene's terrain model, vegetation and "
+                 "development; the wireline is the development's outline (red) and inner edges (yellow) as the camera sees "
+                 "them, over the existing view.",
+                 sh->page.width_mm == SHEET_A3_WIDTH ? "A3" : "the stated");
     page_font f = {.size_pt = 6, .rgb = {0.2, 0.2, 0.2}};
     page_text(cr, MARGIN, SHEET_A3_HEIGHT - MARGIN - FOOT_H + 2, SHEET_A3_WIDTH - 2 * MARGIN, &f, note, 0);
 }
@@ -141,9 +162,9 @@ static void draw_foot(cairo_t *cr, const sheet *sh)
 static int draw_upright(cairo_t *cr, const sheet *sh, const sheet_panels *p, double scale, double dpi, err_buf *err)
 {
     double x = MARGIN, y = MARGIN + TITLE_H;
-    if (draw_panel(cr, &sh->proposed, "Proposed view", x, y, p->main_mm, p->height_main_mm, dpi, err)) return -1;
+    if (draw_panel(cr, &sh->proposed, PROPOSED(sh), x, y, p->main_mm, p->height_main_mm, dpi, err)) return -1;
     y += CAPTION_H + p->height_main_mm + GAP;
-    if (draw_panel(cr, &sh->existing, "Existing view", x, y, p->side_mm, p->height_side_mm, dpi, err) ||
+    if (draw_panel(cr, &sh->existing, EXISTING(sh), x, y, p->side_mm, p->height_side_mm, dpi, err) ||
         draw_wireline(cr, sh, x + p->side_mm + GAP, y, p->side_mm, p->height_side_mm, dpi, err))
         return -1;
     double rx = MARGIN + p->main_mm + GAP, rw = SHEET_A3_WIDTH - MARGIN - rx, ry = MARGIN + TITLE_H;
@@ -160,9 +181,9 @@ static int draw_upright(cairo_t *cr, const sheet *sh, const sheet_panels *p, dou
 static int draw_wide(cairo_t *cr, const sheet *sh, const sheet_panels *p, double scale, double dpi, err_buf *err)
 {
     double x = MARGIN, y = MARGIN + TITLE_H;
-    if (draw_panel(cr, &sh->proposed, "Proposed view", x, y, p->main_mm, p->height_main_mm, dpi, err)) return -1;
+    if (draw_panel(cr, &sh->proposed, PROPOSED(sh), x, y, p->main_mm, p->height_main_mm, dpi, err)) return -1;
     y += CAPTION_H + p->height_main_mm + GAP;
-    if (draw_panel(cr, &sh->existing, "Existing view", x, y, p->side_mm, p->height_side_mm, dpi, err) ||
+    if (draw_panel(cr, &sh->existing, EXISTING(sh), x, y, p->side_mm, p->height_side_mm, dpi, err) ||
         draw_wireline(cr, sh, x, y + CAPTION_H + p->height_side_mm + GAP, p->side_mm, p->height_side_mm, dpi, err))
         return -1;
     double mx = x + p->side_mm + GAP, mh = SHEET_A3_HEIGHT - MARGIN - FOOT_H - y - CAPTION_H, mw = fmin(mh * 1.1, 110);

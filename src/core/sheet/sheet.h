@@ -14,8 +14,12 @@
  *
  * The page is laid out at A3 (420 x 297 mm) and scaled to the print width. The wireline is drawn
  * as vector strokes over the existing view (sheet_wireline.h): the outline and inner edges that
- * render/wireline.h finds in the rendered pixels, traced into polylines. Nothing is kept: the
- * caller owns every field. */
+ * render/wireline.h finds in the rendered pixels, traced into polylines.
+ *
+ * A photomontage's sheet (sheet.photo set, `sylva montage`) is the same page with the photomontage
+ * as the proposed view, the photograph as the existing one and the wireline over the photograph;
+ * its title names the photograph and its Type (3 or 4), and its table states the photograph's
+ * EXIF and camera match (sheet_table.h). Nothing is kept: the caller owns every field. */
 #ifndef SYLVA_SHEET_H
 #define SYLVA_SHEET_H
 

@@ -120,7 +120,8 @@ static void draw_viewpoint(cairo_t *cr, const map_window *m, const sheet_view *v
     page_xy(m, eye[0], eye[1], &x, &y);
     page_dot(cr, x, y, 1.8, (const double[3]){0.8, 0.05, 0.05});
     char n[16];
-    snprintf(n, sizeof n, "%u", v->number);
+    if (v->number) snprintf(n, sizeof n, "%u", v->number);
+    else snprintf(n, sizeof n, "P"); /* a photograph's camera, no viewpoint of the scene's */
     page_font f = {.size_pt = 5.5, .bold = 1, .align = PAGE_CENTRE, .rgb = {1, 1, 1}};
     page_text(cr, x, y - 1.15, 0, &f, n, 0);
 }

@@ -1,6 +1,6 @@
 /* sheet_map.h — a sheet's location map: the surveyed terrain as a hillshade around a viewpoint
  * and the development, with the viewpoint numbered, its frame's field of view as a wedge along its
- * heading, the development's structures marked and named, a north arrow and a scale bar. The map
+ * heading (a photograph's camera, number 0, marked P), the development's structures marked and named, a north arrow and a scale bar. The map
  * is square metres to square millimetres, north up; it spans the viewpoint and every development
  * structure with a margin of a fifth, and at least MAP_MIN_SPAN metres. */
 #ifndef SYLVA_SHEET_MAP_H

@@ -4,7 +4,10 @@
  * width, 35 mm equivalent, fields of view, render size, visualisation Type, print size, each
  * panel's printed size and viewing distance, the development in the frame, Earth curvature, the
  * camera match and the POV-Ray cross-check; with a planting plan, the year since planting and
- * the season the view shows. */
+ * the season the view shows. A photomontage's sheet (sheet_photo) names the photograph and how its
+ * camera's position was found in place of the viewpoint, gives the capture time beside the sun's,
+ * the EXIF's camera, lens and focal lengths beside the matched ones, its visualisation Type with
+ * the reason, and the camera match's residuals. */
 #ifndef SYLVA_SHEET_TABLE_H
 #define SYLVA_SHEET_TABLE_H
 

@@ -92,7 +92,7 @@ void sheet_view_of(const scene *s, const scene_file *sf, const scene_viewpoint *
                    const char *frame, uint32_t width, uint32_t height, sheet_view *out)
 {
     memset(out, 0, sizeof *out);
-    out->number = scene_file_viewpoint_number(sf, v), out->name = v->name, out->frame = frame;
+    out->number = v ? scene_file_viewpoint_number(sf, v) : 0, out->name = v ? v->name : NULL, out->frame = frame;
     out->crs_name = s->site.crs_wkt ? s->site.crs_name : NULL;
     out->easting = c->position[0] + s->site.origin[0], out->northing = c->position[1] + s->site.origin[1];
     double ground;

@@ -45,8 +45,9 @@ typedef struct sheet_view {
     int development_fits;         /* 1: the frame holds every development structure whole */
 } sheet_view;
 
-/* The facts of viewpoint v (one of sf's) rendered with camera c (the frame's lens, placed over
- * the ground of s) at width x height pixels in the frame named frame. */
+/* The facts of viewpoint v (one of sf's; NULL: a camera of no viewpoint, a photograph's, with
+ * number 0 and no name) rendered with camera c (the frame's lens, placed over the ground of s) at
+ * width x height pixels in the frame named frame. */
 void sheet_view_of(const scene *s, const scene_file *sf, const scene_viewpoint *v, const camera_settings *c,
                    const char *frame, uint32_t width, uint32_t height, sheet_view *out);
 

@@ -12,7 +12,7 @@ rank() { case $1 in util) echo 0;; io) echo 1;; params|page) echo 2;; plugin) ec
   site|season|model) echo 5;; scene_file) echo 6;; scene_build) echo 7;; geometry) echo 8;;
   render|pov) echo 9;; sheet) echo 10;; crosscheck|ztv|montage|study) echo 11;; cli) echo 12;; *) echo -1;; esac; }
 # The back ends read the scene and its settings (scene/scene_settings.h), never the file format
-# (scene_file/, nor scene_build/, whose headers bring it). The three files that read their product's
+# (scene_file/, nor scene_build/, whose headers bring it). The files that read their product's
 # own sections of the file (ztv: its settings, targets and developments, and the names its maps
 # print; photo:, read by the montage and its sheet) are the exceptions, named here. study/ is no back end: like the command line it
 # drives the build (scene_build) and reads its own study: section, then hands the built scene to

@@ -343,7 +343,7 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
         scene_ground_camera(s, sf, err) ||
         build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) ||
         scene_build_trees(s, sf, opt, err) || build_woodland(s, sf, plugins, opt, &out, err) ||
-        scene_build_planting(s, sf, opt, err) ||
+        scene_build_planting(s, sf, plugins, opt, err) ||
         scene_build_objects(s, sf, err) ||
         apply_season(s, sf, err)) {
         scene_free(s);

@@ -760,6 +760,8 @@ static const sylva_param_spec planting_params[] = {
      .unit = "years", .help = "Years after planting at which blocks and belts are thinned (0: never)."},
     {.name = "thinning_keep", .type = SYLVA_P_REAL, .flags = MIN_X | MAX, .def = 0.5, .min = 0, .max = 1,
      .help = "The share of a block's or belt's plants the thinning keeps."},
+    {.name = "ecology", .type = SYLVA_P_BOOL, .def = 1,
+     .help = "Blocks' and belts' plants compete and die year by year by the scene's ecology (false: every plant stands, the plan as drawn)."},
     {.name = "blocks", .type = SYLVA_P_GROUP_LIST, .max_len = 100000, .group = planting_item_params,
      .n_group = COUNT(planting_item_params),
      .help = "Woodland blocks: {polygon, species, shares, spacing or density, stock}."},

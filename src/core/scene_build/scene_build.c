@@ -251,23 +251,40 @@ int scene_place_plants(scene *s, const sylva_plant *plants, uint32_t n, err_buf 
     return 0;
 }
 
-/* plants: {file: F}: the saved run loaded by the scene's ecology plugin and its plants placed as
- * generate() would place them, with no year simulated. */
-static int place_saved_run(scene *s, const scene_file *sf, const plugin_registry *reg, const build_options *opt,
-                           err_buf *err)
+/* The years a planting plan shown with `age_existing: true` grows the scene's ecology on by;
+ * 0 when it does not. */
+static uint32_t ecology_years_on(const scene_file *sf, const build_options *opt)
+{
+    if (!opt->planting_shown || !sf->planting.n_features || !sf->planting.age_existing) return 0;
+    return opt->planting_years > 0 ? (uint32_t)fmin(floor(opt->planting_years), 100000) : 0;
+}
+
+/* The ecology run through a session and its plants placed as generate() would place them: the
+ * saved run of plants: {file: F} (no year simulated), or a run of the scene's years; either
+ * then stepped `more` years further (a planting plan's years, age_existing). */
+static int place_session_run(scene *s, const scene_file *sf, const plugin_registry *reg, const build_options *opt,
+                             uint32_t more, err_buf *err)
 {
     ecology_session *e = ecology_session_open(sf, s, reg, opt, err); /* owned here */
     if (!e) return -1;
     uint32_t placed = 0;
     err_buf load = {{0}};
-    int rc = ecology_session_load(e, sf->plants_file, &load); /* a bad file is the plants: key's fault */
-    if (rc)
+    int rc = 0;
+    if (sf->plants_file && (rc = ecology_session_load(e, sf->plants_file, &load))) /* the plants: key's fault */
         err_at(err, load.status, sf->path, sf->plants_file_line, sf->plants_file_column, "%s", err_sentence(&load));
+    uint32_t from = sf->plants_file ? ecology_session_year(e) : 0;
+    uint32_t steps = (sf->plants_file ? 0 : ecology_session_years_wanted(e)) + more;
+    if (!rc && steps) rc = ecology_session_step(e, steps, err);
     if (!rc) rc = ecology_session_place(e, &placed, err);
-    if (!rc && !opt->quiet) {
-        uint32_t year = ecology_session_year(e), wanted = ecology_session_years_wanted(e);
-        fprintf(stderr, "plants: %u from the ecology run saved in %s (year %u%s), not simulated again\n", placed,
-                sf->plants_file, year, year == wanted ? "" : ", not the scene's years");
+    if (!rc && !opt->quiet && sf->plants_file) {
+        uint32_t wanted = ecology_session_years_wanted(e);
+        fprintf(stderr, "plants: %u from the ecology run saved in %s (year %u%s), not simulated again", placed,
+                sf->plants_file, from, from == wanted ? "" : ", not the scene's years");
+        if (more) fprintf(stderr, " but grown on %u years with the planting plan's (to year %u)", more, from + more);
+        fprintf(stderr, "\n");
+    } else if (!rc && !opt->quiet) {
+        fprintf(stderr, "ecology: %u plants after %u years, the scene's %u and the planting plan's %u "
+                "('age_existing: true')\n", placed, steps, steps - more, more);
     }
     if (!rc) rc = scene_place_plants(s, e->call.host.plants, e->call.host.n_plants, err);
     ecology_session_free(e);
@@ -278,7 +295,8 @@ static int build_ecology(scene *s, const scene_file *sf, const plugin_registry *
                          const plugin_call_output *out, err_buf *err)
 {
     if (!sf->ecology.plugin || opt->no_ecology) return 0;
-    if (sf->plants_file) return place_saved_run(s, sf, reg, opt, err);
+    uint32_t more = ecology_years_on(sf, opt);
+    if (sf->plants_file || more) return place_session_run(s, sf, reg, opt, more, err);
     plugin_call c;
     if (plugin_call_open_ecology(&c, sf, s, reg, out, err)) return -1;
     int rc = plugin_call_ecology(&c, err);

@@ -3,7 +3,8 @@
  * standing at a later year are some of those standing at an earlier one, each in the same
  * place with the same number; a block planted far closer than its crowns loses plants by year
  * 30 where a sparse one keeps more; the same plants stand on one thread and on two; a plan
- * with `ecology: false` keeps every plant; single trees never die of it. */
+ * with `ecology: false` keeps every plant; single trees never die of it; `age_existing: true`
+ * grows the scene's own ecology on through the plan's years. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -17,7 +18,7 @@
 /* A flat site 120 m by 60 m with an oak grown by the ecology's beech profile (no deaths from
  * the site's conditions: env_death 0), a 6 m sphere; a dense block at 1 m (its plants' crowns
  * overlap from planting), a sparse block at 9 m, a single tree; `extra` in the plan. */
-static const char *plan_text(const char *extra)
+static const char *plan_text(const char *extra, uint32_t ecology_years)
 {
     static char text[8192];
     snprintf(text, sizeof text,
@@ -26,13 +27,13 @@ static const char *plan_text(const char *extra)
              "    - [0, 0, 0, 0, 0, 0, 0]\n    - [0, 0, 0, 0, 0, 0, 0]\n    - [0, 0, 0, 0, 0, 0, 0]\n"
              "    - [0, 0, 0, 0, 0, 0, 0]\n"
              "species:\n  oak: {shape: sphere, radius: 3, ecology: {profile: beech, env_death: 0}}\n"
-             "ecology: {plugin: ecology, years: 0, patches: 24}\n"
+             "ecology: {plugin: ecology, years: %u, patches: 24}\n"
              "planting:\n  year: 2027\n  seed: 4\n%s"
              "  blocks:\n"
              "    - {name: dense, polygon: [[5, 5], [25, 5], [25, 25], [5, 25]], species: oak, spacing: 1}\n"
              "    - {name: sparse, polygon: [[60, 5], [110, 5], [110, 55], [60, 55]], species: oak, spacing: 9}\n"
              "  trees:\n    - {position: [40, 40], species: oak}\n",
-             extra);
+             ecology_years, extra);
     return text;
 }
 
@@ -44,17 +45,24 @@ static plugin_registry *registry(void)
     return reg;
 }
 
-/* The plan built at `year` on `threads` threads, or NULL (the sentence printed). */
-static scene *plan_at(plugin_registry *reg, const char *extra, double year, unsigned threads)
+/* The plan built at `year` on `threads` threads, the scene's ecology grown `ecology_years`, or
+ * NULL (the sentence printed). */
+static scene *plan_grown(plugin_registry *reg, const char *extra, uint32_t ecology_years, double year,
+                         unsigned threads)
 {
     err_buf err = {{0}};
-    const char *path = work_file("planted.yaml", plan_text(extra));
+    const char *path = work_file("planted.yaml", plan_text(extra, ecology_years));
     scene_file *sf = path ? scene_file_load_with(path, reg, SCENE_FILE_NO_CAMERA, &err) : NULL;
     build_options bo = {.analysis = 1, .quiet = 1, .planting_shown = 1, .planting_years = year, .threads = threads};
     scene *s = sf ? scene_build(sf, reg, &bo, &err) : NULL;
     if (!s) fprintf(stderr, "  %s\n", err.msg);
     scene_file_free(sf);
     return s;
+}
+
+static scene *plan_at(plugin_registry *reg, const char *extra, double year, unsigned threads)
+{
+    return plan_grown(reg, extra, 0, year, threads);
 }
 
 /* The instance with plan number `planted`, or NULL. */
@@ -158,5 +166,46 @@ TEST(same_survivors_on_one_and_two_threads)
     with_two_plans((plan_case){"", 25, 1}, (plan_case){"", 25, 2}, the_same_plants);
 }
 
-TEST_LIST(TEST_CASE(survivors_are_some_of_the_years_before_in_their_places),
+/* The scene's own plants (no plan number) of a, the same as b's: as many, in the same places. */
+static int same_existing(const scene *a, const scene *b)
+{
+    uint32_t i = 0, k = 0, same = 1;
+    for (;; i++, k++) {
+        while (i < a->n_instances && a->instances[i].planted) i++;
+        while (k < b->n_instances && b->instances[k].planted) k++;
+        if (i >= a->n_instances || k >= b->n_instances) return same && i >= a->n_instances && k >= b->n_instances;
+        same = same && a->instances[i].xf.m[0][3] == b->instances[k].xf.m[0][3] &&
+               a->instances[i].xf.m[1][3] == b->instances[k].xf.m[1][3] &&
+               a->instances[i].xf.m[2][2] == b->instances[k].xf.m[2][2];
+    }
+}
+
+static uint32_t existing_count(const scene *s)
+{
+    uint32_t n = 0;
+    for (uint32_t i = 0; i < s->n_instances; i++) n += !s->instances[i].planted;
+    return n;
+}
+
+/* With age_existing the scene's ecology of 12 years shown 6 years after planting is the
+ * ecology of 18 years, plant for plant; without, the ecology of 12. */
+TEST(age_existing_grows_the_scenes_ecology_on)
+{
+    plugin_registry *reg = registry();
+    scene *aged = plan_grown(reg, "  age_existing: true\n", 12, 6, 0), *kept = plan_grown(reg, "", 12, 6, 0);
+    scene *of12 = plan_grown(reg, "", 12, 0, 0), *of18 = plan_grown(reg, "", 18, 0, 0);
+    CHECK(aged && kept && of12 && of18);
+    if (aged && kept && of12 && of18) {
+        fprintf(stderr, "  the ecology's plants: %u aged, %u kept; %u of 12 years, %u of 18\n", existing_count(aged),
+                existing_count(kept), existing_count(of12), existing_count(of18));
+        CHECK(existing_count(of12) > 0 && existing_count(of18) > 0);
+        CHECK(same_existing(aged, of18));
+        CHECK(same_existing(kept, of12));
+        CHECK(!same_existing(aged, kept));
+    }
+    scene_free(aged), scene_free(kept), scene_free(of12), scene_free(of18);
+    plugin_registry_free(reg);
+}
+
+TEST_LIST(TEST_CASE(age_existing_grows_the_scenes_ecology_on), TEST_CASE(survivors_are_some_of_the_years_before_in_their_places),
           TEST_CASE(dense_block_thins_and_sparse_keeps_more), TEST_CASE(same_survivors_on_one_and_two_threads))

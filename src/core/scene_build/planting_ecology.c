@@ -1,6 +1,7 @@
 /* planting_ecology.c — a planting plan's blocks and belts grown by the scene's ecology
- * (planting_ecology.h): a session of the ecology plugin on the scene's terrain and species, its
- * terrain factors computed, no year simulated, asked for the fate of the plan's plants. */
+ * (planting_ecology.h): the session of the ecology plugin that placed the scene's ecology (or
+ * one opened here: its terrain factors computed, no year simulated), asked for the fate of the
+ * plan's plants, which depends on the run's terrain and species, not on its plants. */
 #include "scene_build/planting_ecology.h"
 
 #include <math.h>
@@ -16,7 +17,17 @@ static uint32_t thinned_from(const planting_spec *plan, const planted_plant *p)
     return (uint32_t)ceil(plan->thinning_year);
 }
 
-int planting_ecology_fates(scene *s, const scene_file *sf, const plugin_registry *reg, const build_options *opt,
+int planting_ecology_wanted(const scene_file *sf, const build_options *opt)
+{
+    const planting_spec *plan = &sf->planting;
+    int cohort = 0;
+    for (uint32_t f = 0; f < plan->n_features && !cohort; f++)
+        cohort = plan->features[f].kind == PLANTING_BLOCK || plan->features[f].kind == PLANTING_BELT;
+    return opt->planting_shown && cohort && plan->ecology && sf->ecology.plugin && !opt->no_ecology;
+}
+
+int planting_ecology_fates(scene *s, const scene_file *sf, const plugin_registry *reg, ecology_session *ecology,
+                           const build_options *opt,
                            const planted_plant *plants, uint32_t n, double years, uint32_t **died,
                            const char **why, err_buf *err)
 {
@@ -24,7 +35,7 @@ int planting_ecology_fates(scene *s, const scene_file *sf, const plugin_registry
     *died = NULL, *why = NULL;
     uint32_t cohort = 0;
     for (uint32_t i = 0; i < n; i++) cohort += plan->features[plants[i].feature].kind != PLANTING_TREE;
-    if (!plan->ecology) *why = "the plan as drawn ('ecology: false')";
+    if (!plan->ecology) *why = "the plan as drawn: 'ecology: false'";
     else if (!sf->ecology.plugin) *why = "the scene has no ecology";
     else if (opt->no_ecology) *why = "the ecology left out";
     else if (!cohort) *why = "no block or belt";
@@ -49,9 +60,10 @@ int planting_ecology_fates(scene *s, const scene_file *sf, const plugin_registry
                                              .taken_out = thinned_from(plan, p)};
         index[c++] = i;
     }
-    ecology_session *e = ecology_session_open(sf, s, reg, opt, err); /* owned here */
+    ecology_session *own = ecology ? NULL : ecology_session_open(sf, s, reg, opt, err); /* owned here */
+    ecology_session *e = ecology ? ecology : own;
     rc = e ? ecology_session_planted_fate(e, set_out, cohort, steps, plan->seed, fate, err) : -1;
-    ecology_session_free(e);
+    ecology_session_free(own);
     if (rc) {
         err_prefix(err, "planting: ");
         goto done;

@@ -8,6 +8,7 @@
 
 #include "io/image_io.h"
 #include "scene_build/ecology_session.h"
+#include "scene_build/planting_ecology.h"
 #include "site/ground_departure.h"
 #include "scene_build/host.h"
 #include "scene_build/plugin_call.h"
@@ -261,9 +262,10 @@ static uint32_t ecology_years_on(const scene_file *sf, const build_options *opt)
 
 /* The ecology run through a session and its plants placed as generate() would place them: the
  * saved run of plants: {file: F} (no year simulated), or a run of the scene's years; either
- * then stepped `more` years further (a planting plan's years, age_existing). */
+ * then stepped `more` years further (a planting plan's years, age_existing). With `kept`, the
+ * session is handed to the caller (*kept, to free) for the planting plan's plants. */
 static int place_session_run(scene *s, const scene_file *sf, const plugin_registry *reg, const build_options *opt,
-                             uint32_t more, err_buf *err)
+                             uint32_t more, ecology_session **kept, err_buf *err)
 {
     ecology_session *e = ecology_session_open(sf, s, reg, opt, err); /* owned here */
     if (!e) return -1;
@@ -282,21 +284,28 @@ static int place_session_run(scene *s, const scene_file *sf, const plugin_regist
                 sf->plants_file, from, from == wanted ? "" : ", not the scene's years");
         if (more) fprintf(stderr, " but grown on %u years with the planting plan's (to year %u)", more, from + more);
         fprintf(stderr, "\n");
-    } else if (!rc && !opt->quiet) {
+    } else if (!rc && !opt->quiet && more) {
         fprintf(stderr, "ecology: %u plants after %u years, the scene's %u and the planting plan's %u "
                 "('age_existing: true')\n", placed, steps, steps - more, more);
     }
     if (!rc) rc = scene_place_plants(s, e->call.host.plants, e->call.host.n_plants, err);
-    ecology_session_free(e);
+    if (!rc && kept) *kept = e;
+    else ecology_session_free(e);
     return rc;
 }
 
+/* The scene's ecology placed: by generate(), or through a session when a saved run, the plan's
+ * age_existing or the plan's own plants (planting_ecology_wanted) need one; that session is
+ * kept (*kept, the caller frees) for the plan, whose plants it then grows on the same terrain
+ * factors. */
 static int build_ecology(scene *s, const scene_file *sf, const plugin_registry *reg, const build_options *opt,
-                         const plugin_call_output *out, err_buf *err)
+                         const plugin_call_output *out, ecology_session **kept, err_buf *err)
 {
     if (!sf->ecology.plugin || opt->no_ecology) return 0;
     uint32_t more = ecology_years_on(sf, opt);
-    if (sf->plants_file || more) return place_session_run(s, sf, reg, opt, more, err);
+    int for_plan = planting_ecology_wanted(sf, opt);
+    if (sf->plants_file || more || for_plan)
+        return place_session_run(s, sf, reg, opt, more, for_plan ? kept : NULL, err);
     plugin_call c;
     if (plugin_call_open_ecology(&c, sf, s, reg, out, err)) return -1;
     int rc = plugin_call_ecology(&c, err);
@@ -310,10 +319,10 @@ static int build_ecology(scene *s, const scene_file *sf, const plugin_registry *
 /* The woodland: the land cover's communities placed and the ecology's plants grown, all of them
  * fitted to the canopy's heights when the scene has them. */
 static int build_woodland(scene *s, const scene_file *sf, const plugin_registry *reg, const build_options *opt,
-                          const plugin_call_output *out, err_buf *err)
+                          const plugin_call_output *out, ecology_session **kept, err_buf *err)
 {
     uint32_t first = s->n_instances;
-    if (scene_build_communities(s, sf, opt->quiet, err) || build_ecology(s, sf, reg, opt, out, err)) return -1;
+    if (scene_build_communities(s, sf, opt->quiet, err) || build_ecology(s, sf, reg, opt, out, kept, err)) return -1;
     return scene_canopy_fit_plants(s, sf, first, opt->quiet);
 }
 
@@ -355,18 +364,21 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
     s->earth = sf->earth, s->snow = sf->snow, s->season_day = sf->season.day;
     plugin_call_output out = {.verbose = opt->verbose, .quiet = opt->quiet, .warnings_only = opt->quiet,
                               .threads = opt->threads, .times = opt->times};
+    ecology_session *ecology = NULL; /* owned here: the woodland's, kept for the planting plan */
     if (scene_set_site(s, &sf->site, err) || add_materials(s, sf, err) ||
         build_terrain(s, sf, plugins, opt, &out, err) || terrain_near_site(s, sf, err) ||
         scene_build_landcover(s, sf, opt->quiet, err) || scene_build_canopy(s, sf, opt->quiet, err) ||
         scene_ground_camera(s, sf, err) ||
         build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) ||
-        scene_build_trees(s, sf, opt, err) || build_woodland(s, sf, plugins, opt, &out, err) ||
-        scene_build_planting(s, sf, plugins, opt, err) ||
+        scene_build_trees(s, sf, opt, err) || build_woodland(s, sf, plugins, opt, &out, &ecology, err) ||
+        scene_build_planting(s, sf, plugins, ecology, opt, err) ||
         scene_build_objects(s, sf, err) ||
         apply_season(s, sf, err)) {
+        ecology_session_free(ecology);
         scene_free(s);
         return NULL;
     }
+    ecology_session_free(ecology);
     if (!opt->detail_at_development) ground_departure_report(s, stderr); /* a render's camera and development */
     return s;
 }

@@ -113,8 +113,8 @@ static int plant_one(scene *s, const scene_file *sf, const planted_plant *p, uin
     return 0;
 }
 
-int scene_build_planting(scene *s, const scene_file *sf, const plugin_registry *reg, const build_options *opt,
-                         err_buf *err)
+int scene_build_planting(scene *s, const scene_file *sf, const plugin_registry *reg, ecology_session *ecology,
+                         const build_options *opt, err_buf *err)
 {
     const planting_spec *plan = &sf->planting;
     if (!plan->n_features && opt->planting_shown)
@@ -135,7 +135,7 @@ int scene_build_planting(scene *s, const scene_file *sf, const plugin_registry *
     planting_tally tally = {.lowest = INFINITY, .tallest = 0};
     uint32_t *died = NULL; /* owned here: each plant's year of death by the ecology, or NULL */
     const char *no_ecology = NULL;
-    if (planting_ecology_fates(s, sf, reg, opt, plants, n, opt->planting_years, &died, &no_ecology, err)) {
+    if (planting_ecology_fates(s, sf, reg, ecology, opt, plants, n, opt->planting_years, &died, &no_ecology, err)) {
         free(plants);
         return -1;
     }

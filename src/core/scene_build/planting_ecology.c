@@ -27,9 +27,8 @@ int planting_ecology_wanted(const scene_file *sf, const build_options *opt)
 }
 
 int planting_ecology_fates(scene *s, const scene_file *sf, const plugin_registry *reg, ecology_session *ecology,
-                           const build_options *opt,
-                           const planted_plant *plants, uint32_t n, double years, uint32_t **died,
-                           const char **why, err_buf *err)
+                           const build_options *opt, const planted_plant *plants, uint32_t n, double years,
+                           uint32_t **died, const char **why, err_buf *err)
 {
     const planting_spec *plan = &sf->planting;
     *died = NULL, *why = NULL;

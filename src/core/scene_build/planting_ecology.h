@@ -31,8 +31,7 @@ int planting_ecology_wanted(const scene_file *sf, const build_options *opt);
  * reg's plugin opened here. Returns 0, or -1 with err set (the plugin cannot grow planted
  * plants, or failed). */
 int planting_ecology_fates(scene *s, const scene_file *sf, const plugin_registry *reg, ecology_session *ecology,
-                           const build_options *opt,
-                           const planted_plant *plants, uint32_t n, double years, uint32_t **died,
-                           const char **why, err_buf *err);
+                           const build_options *opt, const planted_plant *plants, uint32_t n, double years,
+                           uint32_t **died, const char **why, err_buf *err);
 
 #endif

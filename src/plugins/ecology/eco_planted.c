@@ -5,7 +5,8 @@
  * age 4.26, a dominated plant with chance p_m, unfavourable conditions with chance
  * env_death (1 - c)) — eco_grow, eco_find_dominance and eco_remove_dead themselves, run on a
  * cohort that borrows the run's terrain, species and N_opt (4.27) and owns its plants, streams
- * and search grid. No seedlings are added: a planting plan's ground is managed.
+ * and search grid. No seedlings are added: a planting plan's ground is managed. A plant is
+ * dominated by none in its first year in the ground (first_year_free).
  *
  * A planted plant's normalised height at planting is its stock's height over its species'
  * model height; its age the age at planting, rounded to whole years as the run counts them;
@@ -91,6 +92,19 @@ static void set_out(eco_sim *c, const eco_random *rnd, const sylva_ecology_plant
     pl->power = eco_power(pl->v, pl->h, c->p_r[j]); /* (4.18) */
 }
 
+/* A plant in its first year in the ground is dominated by none (docs/models/ecology.md, "Planted
+ * plants": Algorithm 8 waits a year): the plants of a planting are set out together, of one
+ * nursery grade, their roots still in their pits, and a few centimetres of the grade's spread
+ * make none the master of its neighbour. Their ecological circles (4.33) overlap from the start
+ * when they are planted closer than 2 h R_s, so without this the shorter of each pair would be
+ * dominated (and may die, p_m) from the first year. From the second year Algorithm 8 acts. */
+static void first_year_free(eco_sim *c, uint32_t year)
+{
+    for (uint32_t j = 0; j < c->n_species; j++)
+        for (uint32_t q = 0; q < c->pop[j].n; q++)
+            if (c->pop[j].plants[q].set_out_in + 1 == year) c->pop[j].plants[q].dominated = 0;
+}
+
 /* Takes out the plants whose taken_out year is `year` (management: thinning), keeping order. */
 static void take_out(eco_sim *c, const sylva_ecology_planted *plants, uint32_t year)
 {
@@ -124,6 +138,7 @@ int eco_planted_fate(const eco_sim *run, const eco_random *rnd, const sylva_ecol
             for (uint32_t q = 0; q < c.pop[j].n; q++) standing[c.pop[j].plants[q].planted] = 1;
         eco_grow(&c);
         if ((rc = eco_find_dominance(&c, err))) break;
+        first_year_free(&c, y);
         eco_remove_dead(&c, rnd);
         /* a plant standing before the year's deaths and not after them died this year */
         for (uint32_t j = 0; j < c.n_species; j++)

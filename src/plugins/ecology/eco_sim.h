@@ -74,6 +74,7 @@ typedef struct eco_plant {
     uint32_t age;       /* years */
     uint32_t patch;     /* index i + k ni of its patch */
     uint32_t planted;   /* a planted cohort's plant: its index there (eco_planted.c); 0 in a run */
+    uint32_t set_out_in; /* a planted cohort's plant: the year it was set out (0 at planting); 0 in a run */
     uint8_t dominated;  /* Algorithm 8's flag from the last search */
 } eco_plant;
 

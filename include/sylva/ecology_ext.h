@@ -102,6 +102,8 @@ typedef struct sylva_ecology_planted {
     double age;           /* years at planting */
     uint32_t taken_out;   /* the year since planting from which management takes it out (it
                            * stands no more from that year on); 0: never */
+    uint32_t replaced_until; /* the last year since planting in which, dying, it is replaced in kind
+                              * (the same stock set out in its place, its number kept); 0: never */
 } sylva_ecology_planted;
 
 typedef struct sylva_ecology_ext_v3 {
@@ -110,7 +112,8 @@ typedef struct sylva_ecology_ext_v3 {
      * run's terrain by the run's species and rules — growth, competition, deaths — with no
      * seedlings, drawing from streams keyed by `seed` alone (the run itself is left as it was).
      * died[i] gets the year (1..years) in which plant i died, or 0 when it stands at the end
-     * (or was taken out before dying). A plant of a species the run does not simulate takes no
+     * (or was taken out before dying); one dying in a year up to its replaced_until is set out
+     * again as it was at planting and is not counted dead. A plant of a species the run does not simulate takes no
      * part: it neither shades another nor dies. The same plants and seed give the same deaths
      * for any thread count, and fewer years give the same deaths up to their last. */
     int (*planted_fate)(const sylva_ecology_run *, const sylva_host_api *, sylva_host *,

@@ -56,7 +56,8 @@ int planting_ecology_fates(scene *s, const scene_file *sf, const plugin_registry
         double age = planting_age_for_height(s, p->species, plan->full_grown_age, p->stock_height);
         set_out[c] = (sylva_ecology_planted){.species = p->species, .position = {p->xy[0], p->xy[1]},
                                              .height = p->stock_height, .age = fmax(age, 0),
-                                             .taken_out = thinned_from(plan, p)};
+                                             .taken_out = thinned_from(plan, p),
+                                             .replaced_until = plan->maintenance_years};
         index[c++] = i;
     }
     ecology_session *own = ecology ? NULL : ecology_session_open(sf, s, reg, opt, err); /* owned here */

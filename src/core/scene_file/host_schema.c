@@ -762,6 +762,8 @@ static const sylva_param_spec planting_params[] = {
      .help = "The share of a block's or belt's plants the thinning keeps."},
     {.name = "ecology", .type = SYLVA_P_BOOL, .def = 1,
      .help = "Blocks' and belts' plants compete and die year by year by the scene's ecology (false: every plant stands, the plan as drawn)."},
+    {.name = "maintenance_years", .type = SYLVA_P_INT, .flags = MIN | MAX, .def = 5, .min = 0, .max = 10000,
+     .unit = "years", .help = "The establishment (defects) period: until then a block's or belt's plant that dies is replaced in kind, so the plan stands whole; the ecology's competition and deaths act from then on."},
     {.name = "age_existing", .type = SYLVA_P_BOOL, .def = 0,
      .help = "The scene's ecology grown on through the plan's years as well: at --year N its plants are N years older (false: they keep their age)."},
     {.name = "blocks", .type = SYLVA_P_GROUP_LIST, .max_len = 100000, .group = planting_item_params,

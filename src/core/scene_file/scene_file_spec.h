@@ -184,6 +184,7 @@ typedef struct planting_spec {
     double thinning_keep;       /* the share of a block's or belt's plants kept by thinning */
     int ecology;                /* 1: blocks' and belts' plants compete and die by the scene's ecology */
     int age_existing;           /* 1: the scene's ecology is grown on through the plan's years */
+    uint32_t maintenance_years; /* years since planting during which dead plants are replaced in kind */
     uint32_t line, column;      /* of the section */
 } planting_spec;
 

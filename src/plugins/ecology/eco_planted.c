@@ -6,7 +6,9 @@
  * env_death (1 - c)) — eco_grow, eco_find_dominance and eco_remove_dead themselves, run on a
  * cohort that borrows the run's terrain, species and N_opt (4.27) and owns its plants, streams
  * and search grid. No seedlings are added: a planting plan's ground is managed. A plant is
- * dominated by none in its first year in the ground (first_year_free).
+ * dominated by none in its first year in the ground (first_year_free); one that dies in a year up
+ * to its replaced_until (the plan's establishment period) is replaced in kind: the same stock set
+ * out again in its place, under its number, so it is not counted dead.
  *
  * A planted plant's normalised height at planting is its stock's height over its species'
  * model height; its age the age at planting, rounded to whole years as the run counts them;
@@ -73,9 +75,9 @@ static int cohort_start(eco_sim *c, const eco_sim *run, const eco_random *rnd, c
     return SYLVA_OK;
 }
 
-/* Plant i set out on its patch as a seedling is (eco_reproduce.c's sow), at its stock's height
- * and age. A plant off the terrain's grid takes no part. */
-static void set_out(eco_sim *c, const eco_random *rnd, const sylva_ecology_planted *pp, uint32_t i)
+/* Plant i set out on its patch in `year` as a seedling is (eco_reproduce.c's sow), at its stock's
+ * height and age. A plant off the terrain's grid takes no part. */
+static void set_out(eco_sim *c, const eco_random *rnd, const sylva_ecology_planted *pp, uint32_t i, uint32_t year)
 {
     uint32_t j = run_species(c, pp->species);
     const eco_terrain *t = &c->terrain;
@@ -85,7 +87,7 @@ static void set_out(eco_sim *c, const eco_random *rnd, const sylva_ecology_plant
     double h = pp->height / c->model_height[j];
     eco_plant *pl = &c->pop[j].plants[c->pop[j].n++];
     *pl = (eco_plant){.x = pp->position[0], .y = pp->position[1], .z = eco_height_at(t, pp->position[0], pp->position[1]),
-                      .h = h > 1 ? 1 : h > 0 ? h : 0, .patch = (uint32_t)p, .planted = i,
+                      .h = h > 1 ? 1 : h > 0 ? h : 0, .patch = (uint32_t)p, .planted = i, .set_out_in = year,
                       .age = pp->age > 0 ? (uint32_t)floor(pp->age + 0.5) : 0};
     eco_plant_settle(c, j, pl, rnd);
     pl->r = pl->h * sp->r_s;                         /* (4.33) */
@@ -130,7 +132,7 @@ int eco_planted_fate(const eco_sim *run, const eco_random *rnd, const sylva_ecol
     for (uint32_t i = 0; i < n && !rc; i++) {
         if (!(plants[i].height > 0) || !isfinite(plants[i].position[0]) || !isfinite(plants[i].position[1]))
             rc = plugin_fail(err, SYLVA_ERR_PARAM, "planted plant %u has no height or no position", i);
-        else set_out(&c, rnd, &plants[i], i);
+        else set_out(&c, rnd, &plants[i], i, 0);
     }
     for (uint32_t y = 1; y <= years && !rc; y++) {
         take_out(&c, plants, y);
@@ -143,8 +145,10 @@ int eco_planted_fate(const eco_sim *run, const eco_random *rnd, const sylva_ecol
         /* a plant standing before the year's deaths and not after them died this year */
         for (uint32_t j = 0; j < c.n_species; j++)
             for (uint32_t q = 0; q < c.pop[j].n; q++) standing[c.pop[j].plants[q].planted] = 2;
+        /* one that died within the establishment period is replaced in kind, in plan order */
         for (uint32_t i = 0; i < n; i++) {
-            if (standing[i] == 1) died[i] = y;
+            if (standing[i] == 1 && y <= plants[i].replaced_until) set_out(&c, rnd, &plants[i], i, y);
+            else if (standing[i] == 1) died[i] = y;
             standing[i] = 0;
         }
     }

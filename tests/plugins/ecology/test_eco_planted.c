@@ -4,7 +4,8 @@
  * place with the same number; a block planted far closer than its crowns loses plants by year
  * 30 where a sparse one keeps more; the same plants stand on one thread and on two; a plan
  * with `ecology: false` keeps every plant; single trees never die of it; `age_existing: true`
- * grows the scene's own ecology on through the plan's years. */
+ * grows the scene's own ecology on through the plan's years; no plant is lost during the
+ * plan's maintenance_years. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -160,6 +161,29 @@ static void the_same_plants(const scene *one, const scene *two)
     }
 }
 
+static void all_stand(const scene *drawn, const scene *maintained)
+{
+    fprintf(stderr, "  year 8 of 8 maintained: dense %u of %u, sparse %u of %u\n", count_in(maintained, 0, 30),
+            count_in(drawn, 0, 30), count_in(maintained, 50, 120), count_in(drawn, 50, 120));
+    CHECK(count_in(drawn, 0, 30) >= 400);
+    CHECK_INT(count_in(maintained, 0, 30), count_in(drawn, 0, 30));
+    CHECK_INT(count_in(maintained, 50, 120), count_in(drawn, 50, 120));
+}
+
+static void fewer_after(const scene *drawn, const scene *later)
+{
+    fprintf(stderr, "  year 16, maintained to 8: dense %u of %u\n", count_in(later, 0, 30), count_in(drawn, 0, 30));
+    CHECK(count_in(later, 0, 30) < count_in(drawn, 0, 30));
+}
+
+/* Through the establishment period (maintenance_years: 8) a dead plant is replaced in kind: in
+ * year 8 every plant of the dense block stands; from then on it thins. */
+TEST(no_plant_lost_during_maintenance_years)
+{
+    with_two_plans((plan_case){"  ecology: false\n", 8, 0}, (plan_case){"  maintenance_years: 8\n", 8, 0}, all_stand);
+    with_two_plans((plan_case){"  ecology: false\n", 16, 0}, (plan_case){"  maintenance_years: 8\n", 16, 0}, fewer_after);
+}
+
 /* One thread and two: the same plants stand, as tall. */
 TEST(same_survivors_on_one_and_two_threads)
 {
@@ -208,4 +232,5 @@ TEST(age_existing_grows_the_scenes_ecology_on)
 }
 
 TEST_LIST(TEST_CASE(age_existing_grows_the_scenes_ecology_on), TEST_CASE(survivors_are_some_of_the_years_before_in_their_places),
-          TEST_CASE(dense_block_thins_and_sparse_keeps_more), TEST_CASE(same_survivors_on_one_and_two_threads))
+          TEST_CASE(dense_block_thins_and_sparse_keeps_more), TEST_CASE(same_survivors_on_one_and_two_threads),
+          TEST_CASE(no_plant_lost_during_maintenance_years))

@@ -1,5 +1,5 @@
-/* sylva/ecology_ext.h — the optional interfaces "sylva.ecology.v1" and "sylva.ecology.v2" of
- * an ecology plugin: a simulation the host runs year by year.
+/* sylva/ecology_ext.h — the optional interfaces "sylva.ecology.v1", "v2" and "v3" of an ecology
+ * plugin: a simulation the host runs year by year, and the fate of plants set out by hand.
  * Part of the plugin ABI (sylva/plugin.h, whose version and rules it follows); plugin.h includes
  * it, so a plugin written against an older header compiles unchanged. */
 #ifndef SYLVA_ECOLOGY_EXT_H
@@ -89,6 +89,37 @@ typedef struct sylva_ecology_ext_v2 {
      * many. */
     int (*place)(const sylva_ecology_run *, const sylva_host_api *, sylva_host *, uint32_t *placed);
 } sylva_ecology_ext_v2;
+
+/* "sylva.ecology.v3": v2's table, then planted_fate(). A plugin offering v3 may answer a request
+ * for v1 or v2 with the same table's part (its size is then v3's). */
+#define SYLVA_ECOLOGY_EXT_V3 "sylva.ecology.v3"
+
+/* One plant set out by hand (a planting plan's), as it is at planting. */
+typedef struct sylva_ecology_planted {
+    uint32_t species;     /* index into the request's species array */
+    double position[2];   /* x, y, metres */
+    double height;        /* metres at planting */
+    double age;           /* years at planting */
+    uint32_t taken_out;   /* the year since planting from which management takes it out (it
+                           * stands no more from that year on); 0: never */
+    uint32_t replaced_until; /* the last year since planting in which, dying, it is replaced in kind
+                              * (the same stock set out in its place, its number kept); 0: never */
+} sylva_ecology_planted;
+
+typedef struct sylva_ecology_ext_v3 {
+    sylva_ecology_ext_v2 v2; /* v2.v1.size = sizeof(sylva_ecology_ext_v3) as the plugin compiled it */
+    /* Grows plants [0, n), all set out in year 0, for `years` years among themselves on the
+     * run's terrain by the run's species and rules — growth, competition, deaths — with no
+     * seedlings, drawing from streams keyed by `seed` alone (the run itself is left as it was).
+     * died[i] gets the year (1..years) in which plant i died, or 0 when it stands at the end
+     * (or was taken out before dying); one dying in a year up to its replaced_until is set out
+     * again as it was at planting and is not counted dead. A plant of a species the run does not simulate takes no
+     * part: it neither shades another nor dies. The same plants and seed give the same deaths
+     * for any thread count, and fewer years give the same deaths up to their last. */
+    int (*planted_fate)(const sylva_ecology_run *, const sylva_host_api *, sylva_host *,
+                        const sylva_ecology_planted *plants, uint32_t n, uint32_t years, uint64_t seed,
+                        uint32_t *died);
+} sylva_ecology_ext_v3;
 
 #ifdef __cplusplus
 }

@@ -40,6 +40,8 @@ ecology_session *ecology_session_open(const scene_file *sf, scene *s, const plug
     }
     const sylva_ecology_ext_v2 *v2 = lp->desc->extension(SYLVA_ECOLOGY_EXT_V2);
     e->ext2 = v2 && v2->v1.size >= sizeof *v2 ? v2 : NULL;
+    const sylva_ecology_ext_v3 *v3 = lp->desc->extension(SYLVA_ECOLOGY_EXT_V3);
+    e->ext3 = v3 && v3->v2.v1.size >= sizeof *v3 ? v3 : NULL;
     int rc = e->ext->run_new(e->call.state, host_api_table(), &e->call.host, &e->call.ecology, &e->run);
     if (rc) {
         e->run = NULL;
@@ -86,18 +88,37 @@ int ecology_session_load(ecology_session *e, const char *path, err_buf *err)
     return rc ? plugin_call_failed(&e->call, "load", rc, err) : 0;
 }
 
+/* The refusal of a call the plugin's interfaces lack: at the scene's ecology section. */
+static int lacks_interface(const ecology_session *e, const char *what, const char *id, const char *instead,
+                           err_buf *err)
+{
+    return err_at(err, ERR_INPUT, e->sf->path, e->sf->ecology.line, e->sf->ecology.column,
+                  "ecology plugin '%s' (%s) cannot %s: it offers no '%s' interface; %s", e->sf->ecology.plugin,
+                  e->call.plugin->file, what, id, instead);
+}
+
 int ecology_session_place(ecology_session *e, uint32_t *placed, err_buf *err)
 {
     *placed = 0;
     if (!e->ext2)
-        return err_at(err, ERR_INPUT, e->sf->path, e->sf->ecology.line, e->sf->ecology.column,
-                      "ecology plugin '%s' (%s) cannot place a saved run's plants: it offers no '%s' interface; "
-                      "give the plants as a list, or let the ecology run", e->sf->ecology.plugin, e->call.plugin->file,
-                      SYLVA_ECOLOGY_EXT_V2);
+        return lacks_interface(e, "place a saved run's plants", SYLVA_ECOLOGY_EXT_V2,
+                               "give the plants as a list, or let the ecology run", err);
     phase_mark t0 = phase_start();
     int rc = e->ext2->place(e->run, host_api_table(), &e->call.host, placed);
     phase_stop(e->call.times, PHASE_ECOLOGY, t0);
     return rc ? plugin_call_failed(&e->call, "place", rc, err) : 0;
+}
+
+int ecology_session_planted_fate(ecology_session *e, const sylva_ecology_planted *plants, uint32_t n,
+                                 uint32_t years, uint64_t seed, uint32_t *died, err_buf *err)
+{
+    if (!e->ext3)
+        return lacks_interface(e, "grow planted plants", SYLVA_ECOLOGY_EXT_V3,
+                               "set 'ecology: false' in the planting plan", err);
+    phase_mark t0 = phase_start();
+    int rc = e->ext3->planted_fate(e->run, host_api_table(), &e->call.host, plants, n, years, seed, died);
+    phase_stop(e->call.times, PHASE_ECOLOGY, t0);
+    return rc ? plugin_call_failed(&e->call, "planted_fate", rc, err) : 0;
 }
 
 uint32_t ecology_session_count(const ecology_session *e, uint32_t which)

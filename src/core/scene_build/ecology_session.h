@@ -20,6 +20,7 @@ typedef struct ecology_session {
     plugin_call call;                   /* owned: the plugin, its state and host */
     const sylva_ecology_ext_v1 *ext;    /* the plugin's */
     const sylva_ecology_ext_v2 *ext2;   /* the plugin's, or NULL when it offers only v1 */
+    const sylva_ecology_ext_v3 *ext3;   /* the plugin's, or NULL when it offers no v3 */
     sylva_ecology_run *run;             /* owned */
 } ecology_session;
 
@@ -48,6 +49,12 @@ int ecology_session_plants(ecology_session *e, sylva_ecology_plant_record **out,
  * would place them; *placed gets how many. Fails (err set) for a plugin without
  * "sylva.ecology.v2". */
 int ecology_session_place(ecology_session *e, uint32_t *placed, err_buf *err);
+
+/* The fate of plants set out by hand, grown `years` years among themselves by the run's rules
+ * (sylva_ecology_ext_v3.planted_fate): died[i] the year plant i died in, 0 when it stands.
+ * Fails (err set) for a plugin without "sylva.ecology.v3". */
+int ecology_session_planted_fate(ecology_session *e, const sylva_ecology_planted *plants, uint32_t n,
+                                 uint32_t years, uint64_t seed, uint32_t *died, err_buf *err);
 
 uint32_t ecology_session_factor_count(const ecology_session *e);
 int ecology_session_factor(ecology_session *e, uint32_t i, sylva_ecology_factor_map *out, err_buf *err);

@@ -8,6 +8,7 @@
 
 #include "io/image_io.h"
 #include "scene_build/ecology_session.h"
+#include "scene_build/planting_ecology.h"
 #include "site/ground_departure.h"
 #include "scene_build/host.h"
 #include "scene_build/plugin_call.h"
@@ -251,34 +252,60 @@ int scene_place_plants(scene *s, const sylva_plant *plants, uint32_t n, err_buf 
     return 0;
 }
 
-/* plants: {file: F}: the saved run loaded by the scene's ecology plugin and its plants placed as
- * generate() would place them, with no year simulated. */
-static int place_saved_run(scene *s, const scene_file *sf, const plugin_registry *reg, const build_options *opt,
-                           err_buf *err)
+/* The years a planting plan shown with `age_existing: true` grows the scene's ecology on by;
+ * 0 when it does not. */
+static uint32_t ecology_years_on(const scene_file *sf, const build_options *opt)
+{
+    if (!opt->planting_shown || !sf->planting.n_features || !sf->planting.age_existing) return 0;
+    return opt->planting_years > 0 ? (uint32_t)fmin(floor(opt->planting_years), 100000) : 0;
+}
+
+/* The ecology run through a session and its plants placed as generate() would place them: the
+ * saved run of plants: {file: F} (no year simulated), or a run of the scene's years; either
+ * then stepped `more` years further (a planting plan's years, age_existing). With `kept`, the
+ * session is handed to the caller (*kept, to free) for the planting plan's plants. */
+static int place_session_run(scene *s, const scene_file *sf, const plugin_registry *reg, const build_options *opt,
+                             uint32_t more, ecology_session **kept, err_buf *err)
 {
     ecology_session *e = ecology_session_open(sf, s, reg, opt, err); /* owned here */
     if (!e) return -1;
     uint32_t placed = 0;
     err_buf load = {{0}};
-    int rc = ecology_session_load(e, sf->plants_file, &load); /* a bad file is the plants: key's fault */
-    if (rc)
+    int rc = 0;
+    if (sf->plants_file && (rc = ecology_session_load(e, sf->plants_file, &load))) /* the plants: key's fault */
         err_at(err, load.status, sf->path, sf->plants_file_line, sf->plants_file_column, "%s", err_sentence(&load));
+    uint32_t from = sf->plants_file ? ecology_session_year(e) : 0;
+    uint32_t steps = (sf->plants_file ? 0 : ecology_session_years_wanted(e)) + more;
+    if (!rc && steps) rc = ecology_session_step(e, steps, err);
     if (!rc) rc = ecology_session_place(e, &placed, err);
-    if (!rc && !opt->quiet) {
-        uint32_t year = ecology_session_year(e), wanted = ecology_session_years_wanted(e);
-        fprintf(stderr, "plants: %u from the ecology run saved in %s (year %u%s), not simulated again\n", placed,
-                sf->plants_file, year, year == wanted ? "" : ", not the scene's years");
+    if (!rc && !opt->quiet && sf->plants_file) {
+        uint32_t wanted = ecology_session_years_wanted(e);
+        fprintf(stderr, "plants: %u from the ecology run saved in %s (year %u%s), not simulated again", placed,
+                sf->plants_file, from, from == wanted ? "" : ", not the scene's years");
+        if (more) fprintf(stderr, " but grown on %u years with the planting plan's (to year %u)", more, from + more);
+        fprintf(stderr, "\n");
+    } else if (!rc && !opt->quiet && more) {
+        fprintf(stderr, "ecology: %u plants after %u years, the scene's %u and the planting plan's %u "
+                "('age_existing: true')\n", placed, steps, steps - more, more);
     }
     if (!rc) rc = scene_place_plants(s, e->call.host.plants, e->call.host.n_plants, err);
-    ecology_session_free(e);
+    if (!rc && kept) *kept = e;
+    else ecology_session_free(e);
     return rc;
 }
 
+/* The scene's ecology placed: by generate(), or through a session when a saved run, the plan's
+ * age_existing or the plan's own plants (planting_ecology_wanted) need one; that session is
+ * kept (*kept, the caller frees) for the plan, whose plants it then grows on the same terrain
+ * factors. */
 static int build_ecology(scene *s, const scene_file *sf, const plugin_registry *reg, const build_options *opt,
-                         const plugin_call_output *out, err_buf *err)
+                         const plugin_call_output *out, ecology_session **kept, err_buf *err)
 {
     if (!sf->ecology.plugin || opt->no_ecology) return 0;
-    if (sf->plants_file) return place_saved_run(s, sf, reg, opt, err);
+    uint32_t more = ecology_years_on(sf, opt);
+    int for_plan = planting_ecology_wanted(sf, opt);
+    if (sf->plants_file || more || for_plan)
+        return place_session_run(s, sf, reg, opt, more, for_plan ? kept : NULL, err);
     plugin_call c;
     if (plugin_call_open_ecology(&c, sf, s, reg, out, err)) return -1;
     int rc = plugin_call_ecology(&c, err);
@@ -292,10 +319,10 @@ static int build_ecology(scene *s, const scene_file *sf, const plugin_registry *
 /* The woodland: the land cover's communities placed and the ecology's plants grown, all of them
  * fitted to the canopy's heights when the scene has them. */
 static int build_woodland(scene *s, const scene_file *sf, const plugin_registry *reg, const build_options *opt,
-                          const plugin_call_output *out, err_buf *err)
+                          const plugin_call_output *out, ecology_session **kept, err_buf *err)
 {
     uint32_t first = s->n_instances;
-    if (scene_build_communities(s, sf, opt->quiet, err) || build_ecology(s, sf, reg, opt, out, err)) return -1;
+    if (scene_build_communities(s, sf, opt->quiet, err) || build_ecology(s, sf, reg, opt, out, kept, err)) return -1;
     return scene_canopy_fit_plants(s, sf, first, opt->quiet);
 }
 
@@ -337,18 +364,21 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
     s->earth = sf->earth, s->snow = sf->snow, s->season_day = sf->season.day;
     plugin_call_output out = {.verbose = opt->verbose, .quiet = opt->quiet, .warnings_only = opt->quiet,
                               .threads = opt->threads, .times = opt->times};
+    ecology_session *ecology = NULL; /* owned here: the woodland's, kept for the planting plan */
     if (scene_set_site(s, &sf->site, err) || add_materials(s, sf, err) ||
         build_terrain(s, sf, plugins, opt, &out, err) || terrain_near_site(s, sf, err) ||
         scene_build_landcover(s, sf, opt->quiet, err) || scene_build_canopy(s, sf, opt->quiet, err) ||
         scene_ground_camera(s, sf, err) ||
         build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) ||
-        scene_build_trees(s, sf, opt, err) || build_woodland(s, sf, plugins, opt, &out, err) ||
-        scene_build_planting(s, sf, opt, err) ||
+        scene_build_trees(s, sf, opt, err) || build_woodland(s, sf, plugins, opt, &out, &ecology, err) ||
+        scene_build_planting(s, sf, plugins, ecology, opt, err) ||
         scene_build_objects(s, sf, err) ||
         apply_season(s, sf, err)) {
+        ecology_session_free(ecology);
         scene_free(s);
         return NULL;
     }
+    ecology_session_free(ecology);
     if (!opt->detail_at_development) ground_departure_report(s, stderr); /* a render's camera and development */
     return s;
 }

@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "scene_build/planting_ecology.h"
 #include "scene_build/planting_growth.h"
 #include "scene_build/planting_layout.h"
 #include "scene_build/planting_stock.h"
@@ -57,7 +58,7 @@ static uint32_t fell(scene *s, const planting_spec *plan)
 }
 
 typedef struct planting_tally {
-    uint32_t placed, thinned, outside;
+    uint32_t placed, thinned, died, outside;
     double lowest, tallest;
 } planting_tally;
 
@@ -72,15 +73,20 @@ static int place_young(scene *s, uint32_t proto, const tree_spec *t, err_buf *er
     return scene_add_instance(s, proto, &xf, err) < 0 ? -1 : 0;
 }
 
-/* Plant p (number id in the plan) at its age after `years`: young, or its species' model. */
+/* Plant p (number id in the plan) at its age after `years`: young, or its species' model; none
+ * when thinned, or when the ecology's history (died: the year it died in, 0 none) has it dead. */
 static int plant_one(scene *s, const scene_file *sf, const planted_plant *p, uint32_t id, double years,
-                     const planting_young *young, planting_tally *tally, err_buf *err)
+                     uint32_t died, const planting_young *young, planting_tally *tally, err_buf *err)
 {
     const planting_spec *plan = &sf->planting;
     const planting_feature *f = &plan->features[p->feature];
     if (f->kind != PLANTING_TREE && plan->thinning_year > 0 && years >= plan->thinning_year &&
         p->thinning_rank >= plan->thinning_keep) {
         tally->thinned++;
+        return 0;
+    }
+    if (died) {
+        tally->died++;
         return 0;
     }
     double age0 = planting_age_for_height(s, p->species, plan->full_grown_age, p->stock_height);
@@ -107,7 +113,8 @@ static int plant_one(scene *s, const scene_file *sf, const planted_plant *p, uin
     return 0;
 }
 
-int scene_build_planting(scene *s, const scene_file *sf, const build_options *opt, err_buf *err)
+int scene_build_planting(scene *s, const scene_file *sf, const plugin_registry *reg, ecology_session *ecology,
+                         const build_options *opt, err_buf *err)
 {
     const planting_spec *plan = &sf->planting;
     if (!plan->n_features && opt->planting_shown)
@@ -126,12 +133,18 @@ int scene_build_planting(scene *s, const scene_file *sf, const build_options *op
     planted_plant *plants = planting_layout_new(plan, PLANTING_MAX_PLANTS, &n, err); /* owned here */
     if (!plants) return err_prefix(err, "planting: ");
     planting_tally tally = {.lowest = INFINITY, .tallest = 0};
+    uint32_t *died = NULL; /* owned here: each plant's year of death by the ecology, or NULL */
+    const char *no_ecology = NULL;
+    if (planting_ecology_fates(s, sf, reg, ecology, opt, plants, n, opt->planting_years, &died, &no_ecology, err)) {
+        free(plants);
+        return -1;
+    }
     planting_young young; /* its arrays owned here */
     int rc = planting_young_build(s, plan, plants, n, opt->planting_years, &young, err);
     for (uint32_t i = 0; i < n && !rc; i++)
-        rc = plant_one(s, sf, &plants[i], i, opt->planting_years, &young, &tally, err);
+        rc = plant_one(s, sf, &plants[i], i, opt->planting_years, died ? died[i] : 0, &young, &tally, err);
     planting_young_release(&young);
-    free(plants);
+    free(plants), free(died);
     if (rc) return -1;
     if (!opt->quiet) {
         fprintf(stderr, "planting: year %g after planting (%.0f): %u plants", opt->planting_years,
@@ -140,6 +153,8 @@ int scene_build_planting(scene *s, const scene_file *sf, const build_options *op
         if (tally.placed && opt->planting_years < PLANTING_ESTABLISHMENT_YEARS)
             fprintf(stderr, ", young (as the nursery stock grows, until year %g)", PLANTING_ESTABLISHMENT_YEARS);
         if (tally.thinned) fprintf(stderr, ", %u thinned", tally.thinned);
+        if (no_ecology) fprintf(stderr, ", none lost to competition or death (%s)", no_ecology);
+        else fprintf(stderr, ", %u lost to competition or death by the ecology", tally.died);
         if (tally.outside) fprintf(stderr, ", %u past the terrain's edge left out", tally.outside);
         fprintf(stderr, "; %u existing plants felled\n", felled);
     }

@@ -347,6 +347,9 @@ int sf_read_planting(loader *L, const ynode_pair *section)
     ps->full_grown_age = sylva_param_real(p, "full_grown_age");
     ps->thinning_year = sylva_param_real(p, "thinning_year");
     ps->thinning_keep = sylva_param_real(p, "thinning_keep");
+    ps->ecology = (int)sylva_param_int(p, "ecology");
+    ps->age_existing = (int)sylva_param_int(p, "age_existing");
+    ps->maintenance_years = (uint32_t)sylva_param_int(p, "maintenance_years");
     ps->line = section->key_line, ps->column = section->key_column;
     uint32_t n = 0;
     for (int k = 0; k < PLANTING_KINDS; k++) n += sylva_param(p, kind_keys[k])->len;

@@ -182,6 +182,9 @@ typedef struct planting_spec {
     double full_grown_age;      /* years: a species' full-grown variant stands at this age */
     double thinning_year;       /* years since planting from which blocks and belts are thinned; 0: never */
     double thinning_keep;       /* the share of a block's or belt's plants kept by thinning */
+    int ecology;                /* 1: blocks' and belts' plants compete and die by the scene's ecology */
+    int age_existing;           /* 1: the scene's ecology is grown on through the plan's years */
+    uint32_t maintenance_years; /* years since planting during which dead plants are replaced in kind */
     uint32_t line, column;      /* of the section */
 } planting_spec;
 

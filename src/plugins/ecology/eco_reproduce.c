@@ -34,6 +34,18 @@ static uint32_t beside(const eco_terrain *t, uint32_t p, double u)
     return opt[c < n ? c : n - 1];
 }
 
+void eco_plant_settle(const eco_sim *s, uint32_t j, eco_plant *pl, const eco_random *rnd)
+{
+    const eco_species *sp = &s->species[j];
+    float f[ECO_N_FACTORS];
+    for (int q = 0; q < ECO_N_FACTORS; q++) f[q] = s->terrain.factor[q][pl->patch];
+    double fav[5];
+    eco_favourabilities(sp, f, fav);
+    for (int q = 0; q < 5; q++) pl->fav[q] = (float)fav[q];
+    pl->v = eco_vigour(fav);
+    pl->t_max = eco_death_age(sp, rnd->uniform(&s->rng[(size_t)j * ECO_N_STREAMS + ECO_RNG_DEATH_AGE]));
+}
+
 /* A seedling of species j on patch p at a random point of it (Fig. 4.19); lost in water,
  * outside the growth area or the species' habitat, and in the edge band unless it takes root. The population has room
  * (reserved by the caller). */
@@ -46,16 +58,9 @@ static void sow(eco_sim *s, uint32_t j, uint32_t p, const eco_random *rnd)
     if (!s->growable[p] || (s->habitat && s->habitat[j] && !s->habitat[j][p]) || eco_in_water(t, x, y)) return;
     /* drawn only in the band, so a run without one draws what it always drew */
     if (s->establish[p] < 1.0f && !(rnd->uniform(&rng[ECO_RNG_ESTABLISH]) < s->establish[p])) return;
-    const eco_species *sp = &s->species[j];
     eco_plant *pl = &s->pop[j].plants[s->pop[j].n++];
     *pl = (eco_plant){.x = x, .y = y, .z = eco_height_at(t, x, y), .patch = p};
-    float f[ECO_N_FACTORS];
-    for (int q = 0; q < ECO_N_FACTORS; q++) f[q] = t->factor[q][p];
-    double fav[5];
-    eco_favourabilities(sp, f, fav);
-    for (int q = 0; q < 5; q++) pl->fav[q] = (float)fav[q];
-    pl->v = eco_vigour(fav);
-    pl->t_max = eco_death_age(sp, rnd->uniform(&rng[ECO_RNG_DEATH_AGE]));
+    eco_plant_settle(s, j, pl, rnd);
     pl->rotation = 2.0 * M_PI * rnd->uniform(&rng[ECO_RNG_ROTATION]);
 }
 

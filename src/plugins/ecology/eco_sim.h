@@ -73,6 +73,8 @@ typedef struct eco_plant {
     float fav[5];       /* favourabilities at its patch, ECO_FAV_* order */
     uint32_t age;       /* years */
     uint32_t patch;     /* index i + k ni of its patch */
+    uint32_t planted;   /* a planted cohort's plant: its index there (eco_planted.c); 0 in a run */
+    uint32_t set_out_in; /* a planted cohort's plant: the year it was set out (0 at planting); 0 in a run */
     uint8_t dominated;  /* Algorithm 8's flag from the last search */
 } eco_plant;
 
@@ -152,6 +154,18 @@ int eco_find_dominance(eco_sim *s, plugin_err *err);                     /* Algo
 void eco_remove_dead(eco_sim *s, const eco_random *rnd);              /* 4.26, p_m, env */
 
 uint32_t eco_sim_count(const eco_sim *s); /* living plants */
+
+/* A new plant of species j on its patch (pl->patch set): its favourabilities there (4.21–4.25),
+ * vigour (4.20) and death age (4.26, from j's death-age stream) (eco_reproduce.c). */
+void eco_plant_settle(const eco_sim *s, uint32_t j, eco_plant *pl, const eco_random *rnd);
+
+/* Plants set out by hand (eco_planted.c): plants [0, n) grown `years` years among themselves on
+ * run's terrain by run's species — growth (4.32), dominance (Algorithm 8), deaths (4.26, p_m,
+ * unfavourable conditions) as a run's plants, no seedlings — on streams of their own keyed by
+ * seed; died[i] the year plant i died in, 0 when it stands at the end or was taken out first.
+ * run is only read. SYLVA_OK, or SYLVA_ERR_NOMEM / SYLVA_ERR_PARAM with err set. */
+int eco_planted_fate(const eco_sim *run, const eco_random *rnd, const sylva_ecology_planted *plants, uint32_t n,
+                     uint32_t years, uint64_t seed, uint32_t *died, plugin_err *err);
 
 /* The edge band (eco_edge.c): the chance that a seedling takes root at distance d metres
  * outside the area, given the band's width fade and the noise n in [0, 1] there (1 for d <= 0),

@@ -225,7 +225,7 @@ done:
     return rc;
 }
 
-/* ---- the "sylva.ecology.v1" and "v2" interfaces ------------------------------------------------------ */
+/* ---- the "sylva.ecology.v1", "v2" and "v3" interfaces ------------------------------------------------------ */
 
 static int run_new(void *state, const sylva_host_api *api, sylva_host *host, const sylva_ecology_request *req,
                    sylva_ecology_run **run)
@@ -324,9 +324,21 @@ static int run_place(const sylva_ecology_run *run, const sylva_host_api *api, sy
     return place_plants(run->sim, run->min_height, api, host, placed);
 }
 
-/* v2's table; a request for v1 gets its v1 part. */
-static const sylva_ecology_ext_v2 eco_extension_v2 = {
-    .v1 = {.size = sizeof(sylva_ecology_ext_v2),
+static int run_planted_fate(const sylva_ecology_run *run, const sylva_host_api *api, sylva_host *host,
+                            const sylva_ecology_planted *plants, uint32_t n, uint32_t years, uint64_t seed,
+                            uint32_t *died)
+{
+    if (n && (!plants || !died)) return api->error(host, "planted_fate needs the plants and room for their deaths");
+    plugin_host_ref h = {api, host};
+    eco_random rnd = host_random(&h);
+    plugin_err err = {0};
+    return eco_planted_fate(run->sim, &rnd, plants, n, years, seed, died, &err) ? plugin_report(api, host, &err)
+                                                                                 : SYLVA_OK;
+}
+
+/* v3's table; a request for v1 or v2 gets its part. */
+static const sylva_ecology_ext_v3 eco_extension_v3 = {
+    .v2 = {.v1 = {.size = sizeof(sylva_ecology_ext_v3),
            .run_new = run_new,
            .run_free = run_free,
            .years_wanted = run_years_wanted,
@@ -338,14 +350,16 @@ static const sylva_ecology_ext_v2 eco_extension_v2 = {
            .factor = run_factor,
            .save = run_save,
            .load = run_load},
-    .place = run_place,
+           .place = run_place},
+    .planted_fate = run_planted_fate,
 };
 
 static const void *eco_extension(const char *id)
 {
     if (!id) return NULL;
-    if (!strcmp(id, SYLVA_ECOLOGY_EXT_V2)) return &eco_extension_v2;
-    return !strcmp(id, SYLVA_ECOLOGY_EXT_V1) ? &eco_extension_v2.v1 : NULL;
+    if (!strcmp(id, SYLVA_ECOLOGY_EXT_V3)) return &eco_extension_v3;
+    if (!strcmp(id, SYLVA_ECOLOGY_EXT_V2)) return &eco_extension_v3.v2;
+    return !strcmp(id, SYLVA_ECOLOGY_EXT_V1) ? &eco_extension_v3.v2.v1 : NULL;
 }
 
 static const sylva_plugin eco_descriptor = {

@@ -400,6 +400,29 @@ TEST(empty_ply_face)
     scene_free(s);
 }
 
+/* A binary PLY whose header's last line runs on in NUL bytes to its newline: Assimp takes the
+ * data from just past "end_header", so it reads a face of no vertices where the file's own face
+ * lists three; whatever the format, a face of no vertices in what Assimp read is refused, not
+ * handed to its triangulation (which aborted the program on it). */
+TEST(empty_face_as_assimp_reads_it)
+{
+    static const uint8_t tail[] = {
+        0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+        0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 10,
+        0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 128, 63, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+        128, 63, 0, 0, 0, 0, 3, 0, 0, 0, 0, 1, 0, 0, 0, 2, 0, 0, 0};
+    const char *header = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+                         "property float y\nproperty float z\nelement face 1\n"
+                         "property list uchar int vertex_indices\nend_header";
+    const char *path = work_path("header_run_on.ply");
+    FILE *f = fopen(path, "wb");
+    CHECK(f != NULL);
+    if (!f) return;
+    put(f, header, strlen(header)), put(f, tail, sizeof tail);
+    fclose(f);
+    expect_error(path, NULL, ERR_INPUT, "has no vertices; every face needs at least one");
+}
+
 /* Assimp reads an ASCII PLY a line per item: a vertex whose numbers run onto the next line would
  * make it take a face's length from a coordinate (it aborted on one), and extra numbers on a
  * line are skipped by it, so both are refused with the line and column. */
@@ -474,7 +497,7 @@ TEST(image_mime_type_without_slash)
     expect_error(write_text("mime.gltf", gltf), NULL, ERR_INPUT, "mime.gltf: an image's mimeType is 'png'");
 }
 
-TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TEST_CASE(empty_ply_face),
+TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TEST_CASE(empty_ply_face), TEST_CASE(empty_face_as_assimp_reads_it),
           TEST_CASE(ply_items_hold_their_lines),
           TEST_CASE(image_mime_type_without_slash),
           TEST_CASE(ply_named_otherwise), TEST_CASE(texture_coordinate_not_finite), TEST_CASE(damaged_glb_chunk), TEST_CASE(y_up_files_are_turned),

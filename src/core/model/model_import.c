@@ -308,9 +308,19 @@ static int starts_with(const char *path, const char *magic)
     return n == len && !strncasecmp(head, magic, len);
 }
 
-/* Reads the file with Assimp: triangulated, points and lines dropped, the data structure
- * checked, every file it refers to opened through the model's folder. */
-static const struct aiScene *read_with_assimp(const char *path, model_folder *folder, err_buf *err)
+/* The first face of no vertices in ai (which Assimp's validation lets through and its
+ * triangulation aborts the program on), as "mesh M, face F" into out; 0 when there is none. */
+static int empty_face(const struct aiScene *ai, char *out, size_t n)
+{
+    for (unsigned m = 0; m < ai->mNumMeshes; m++)
+        for (unsigned f = 0; ai->mMeshes[m] && f < ai->mMeshes[m]->mNumFaces; f++)
+            if (!ai->mMeshes[m]->mFaces[f].mNumIndices) return snprintf(out, n, "mesh %u, face %u", m, f), 1;
+    return 0;
+}
+
+/* One reading of the file by Assimp with flags, every file it refers to opened through the
+ * model's folder: the scene, or NULL with err set. */
+static const struct aiScene *assimp_read(const char *path, unsigned flags, model_folder *folder, err_buf *err)
 {
     struct aiPropertyStore *props = aiCreatePropertyStore();
     if (!props) {
@@ -318,7 +328,6 @@ static const struct aiScene *read_with_assimp(const char *path, model_folder *fo
         return NULL;
     }
     aiSetImportPropertyInteger(props, AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    unsigned flags = aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure;
     struct aiFileIO io = model_folder_io(folder);
     const struct aiScene *ai = aiImportFileExWithProperties(path, flags, &io, props);
     aiReleasePropertyStore(props);
@@ -334,6 +343,25 @@ static const struct aiScene *read_with_assimp(const char *path, model_folder *fo
         ai = NULL;
     }
     return ai;
+}
+
+/* Reads the file with Assimp: first with the data structure checked alone, so that a face of no
+ * vertices is refused before Assimp's triangulation sees it, then triangulated with points and
+ * lines dropped (a second reading: when a step fails on a scene already read, Assimp's C interface
+ * frees the scene twice). */
+static const struct aiScene *read_with_assimp(const char *path, model_folder *folder, err_buf *err)
+{
+    const struct aiScene *ai = assimp_read(path, aiProcess_ValidateDataStructure, folder, err);
+    if (!ai) return NULL;
+    char where[64];
+    int empty = empty_face(ai, where, sizeof where);
+    aiReleaseImport(ai);
+    if (empty) {
+        err_fail(err, ERR_INPUT, "%s: %s has no vertices; every face needs at least one", path, where);
+        return NULL;
+    }
+    return assimp_read(path, aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure,
+                       folder, err);
 }
 
 int model_import(scene *s, const char *path, const model_import_options *opt, mesh **out,

@@ -1,11 +1,15 @@
-/* fuzz_ecology_state.c — libFuzzer target for a saved ecology run read back: each input is the
- * forest.state that a fixed scene's `plants: {file: forest.state}` names, and the scene is built
- * with scene_build(), so the ecology plugin's run is opened (scene_build/ecology_session.h), loads the
- * state (the plugin's eco_sim_load) and places its plants in the scene. The state's
- * fingerprint (bytes 16 to 23) and checksum (its last 8 bytes, FNV-1a of what lies between) are
- * written into every input of at least 32 bytes before it is read, so that mutated states get
- * past both to the species, streams and plants. Building must end in a scene or an error
- * sentence: a crash, a sanitizer report, a leak, a hang or runaway memory is a finding. */
+/* fuzz_ecology_state.c — libFuzzer target for a saved ecology run read back: each input is a
+ * forest.state given to the ecology plugin's load (its eco_sim_load) on a run opened once, as
+ * `sylva simulate --load` and a scene's `plants: {file: forest.state}` open it
+ * (scene_build/ecology_session.h), and a state the plugin takes is then placed (its place(),
+ * the plants the host receives as a scene's). The state's fingerprint (bytes 16 to 23) and
+ * checksum (its last 8 bytes, FNV-1a of what lies between) are written into every input of at
+ * least 32 bytes before it is read, so that mutated states get past both to the species,
+ * streams and plants. A refused state leaves the run as it was, a taken one replaces all of it,
+ * so each input's outcome is its own. Loading must end in placed plants of finite positions and
+ * sizes or an error sentence: a crash, a sanitizer report, a leak, a hang or runaway memory is a
+ * finding. */
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,6 +17,7 @@
 
 #include "plugin/plugin_host.h"
 #include "scene_build/ecology_session.h"
+#include "scene_build/host.h"
 #include "scene_build/scene_build.h"
 #include "scene_file/scene_file.h"
 #include "fuzz_file.h"
@@ -42,40 +47,36 @@ static const char scene_text[] =
     "ecology: {plugin: ecology, years: 5, patches: 8, species: beech shrub, min_height: 0, max_plants: 2000}\n";
 
 static plugin_registry *registry; /* opened once, freed at exit */
-static scene_file *saved_scene;   /* the scene with plants: {file: forest.state}; freed at exit */
+static scene_file *run_scene;     /* the scene the run grows on; freed at exit */
+static scene *built;              /* run_scene built without its ecology; freed at exit */
+static ecology_session *session;  /* the run every input is loaded into; freed at exit */
 static const char *state_path;    /* in the scratch folder (work_dir.h owns it) */
 static uint64_t fingerprint;      /* of the scene's terrain and species, as the plugin saves it */
 static uint8_t *state;            /* the input with its fingerprint and checksum; owned */
 
 static void release(void)
 {
-    scene_file_free(saved_scene);
+    ecology_session_free(session);
+    scene_free(built);
+    scene_file_free(run_scene);
     plugin_registry_free(registry);
     free(state);
 }
 
-static scene_file *load(const char *name, const char *extra, err_buf *err)
+/* Opens the run at year 0 and reads the fingerprint it saves. */
+static int open_run(err_buf *err)
 {
-    char path[1200], text[sizeof scene_text + 64];
-    snprintf(text, sizeof text, "%s%s", scene_text, extra);
-    fuzz_write_file(TARGET, fuzz_scratch_path(name, path, sizeof path), (const uint8_t *)text, strlen(text));
-    return scene_file_load(path, registry, err);
-}
-
-/* The fingerprint the plugin writes for the scene: a year-0 run saved and its bytes read. */
-static int read_fingerprint(err_buf *err)
-{
-    scene_file *sf = load("run.yaml", "", err); /* owned here */
+    char path[1200];
+    fuzz_write_file(TARGET, fuzz_scratch_path("run.yaml", path, sizeof path), (const uint8_t *)scene_text,
+                    strlen(scene_text));
     build_options opt = {.quiet = 1, .threads = 1, .no_ecology = 1};
-    scene *s = sf ? scene_build(sf, registry, &opt, err) : NULL; /* owned here */
-    ecology_session *e = s ? ecology_session_open(sf, s, registry, &opt, err) : NULL; /* owned here */
-    int rc = !e || ecology_session_save(e, state_path, err);
+    run_scene = scene_file_load(path, registry, err);
+    built = run_scene ? scene_build(run_scene, registry, &opt, err) : NULL;
+    session = built ? ecology_session_open(run_scene, built, registry, &opt, err) : NULL;
+    int rc = !session || ecology_session_save(session, state_path, err);
     FILE *f = rc ? NULL : fopen(state_path, "rb");
     rc = !f || fseek(f, 16, SEEK_SET) || fread(&fingerprint, 8, 1, f) != 1;
     if (f) fclose(f);
-    ecology_session_free(e);
-    scene_free(s);
-    scene_file_free(sf);
     return rc;
 }
 
@@ -90,8 +91,7 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
         registry = NULL;
     }
     state = malloc(MAX_STATE);
-    if (!registry || !state || read_fingerprint(&err) ||
-        !(saved_scene = load("scene.yaml", "plants: {file: forest.state}\n", &err))) {
+    if (!registry || !state || open_run(&err)) {
         fprintf(stderr, "%s: cannot start (%s); build the plugins first\n", TARGET, err.msg);
         exit(2);
     }
@@ -111,9 +111,19 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     fuzz_write_file(TARGET, state_path, state, size);
     err_buf err = {{0}};
-    build_options opt = {.quiet = 1, .threads = 1};
-    scene *s = scene_build(saved_scene, registry, &opt, &err); /* owned here */
-    if (!s && !err.msg[0]) fuzz_finding(TARGET, "building failed without a message");
-    scene_free(s);
+    uint32_t placed = 0;
+    struct sylva_host *host = &session->call.host;
+    if (ecology_session_load(session, state_path, &err) || ecology_session_place(session, &placed, &err)) {
+        if (!err.msg[0]) fuzz_finding(TARGET, "loading failed without a message");
+    } else if (placed != host->n_plants) {
+        fuzz_finding(TARGET, "the plants placed are not the plants the host holds");
+    }
+    for (uint32_t i = 0; i < host->n_plants; i++) {
+        const sylva_plant *p = &host->plants[i];
+        if (!isfinite(p->position[0]) || !isfinite(p->position[1]) || !isfinite(p->height) || !isfinite(p->age) ||
+            !isfinite(p->rotation))
+            fuzz_finding(TARGET, "a placed plant is not finite");
+    }
+    host->n_plants = 0; /* the next input's plants start afresh (the host keeps the array) */
     return 0;
 }

@@ -191,10 +191,10 @@ TEST(same_survivors_on_one_and_two_threads)
     with_two_plans((plan_case){"", 25, 1}, (plan_case){"", 25, 2}, the_same_plants);
 }
 
-/* A flat site 200 m by 40 m at the wind farm's latitude (the prairie's flat ground: the terrain
- * factors of scenes/wind_farm.yaml's uplands) with the prairie's species file, post oak alone in
- * the ecology, and a row of ten feathered post oaks 10 m apart (crowns apart to year 30); `extra`
- * in the plan. */
+/* A flat site 200 m by 40 m at the wind farm's latitude (flat ground there is as sunny as
+ * scenes/wind_farm.yaml's uplands; altitude and humidity, without spread, take the middle value)
+ * with the prairie's species file, post oak alone in the ecology, and a row of ten feathered post
+ * oaks 10 m apart (their ecological circles apart well past year 30); `extra` in the plan. */
 static const char *prairie_row_text(const char *extra)
 {
     static char text[4096];
@@ -225,7 +225,7 @@ static scene *prairie_row_at(plugin_registry *reg, const char *extra, double yea
 
 /* The prairie's post oak is at home on the prairie: a row set out apart, no crown touching
  * another, still stands 20 years after planting, 15 after its maintenance (the default five
- * years) ended; only a death of age (4.26, a tenth at most by then) may take one. A species
+ * years) ended; only a death of age (4.26: about one in fifty by then) may take one. A species
  * whose optima are not the prairie's loses most of such a row to the site's conditions
  * (env_death) once its failures are no longer replaced. */
 TEST(prairie_post_oak_row_outlives_its_maintenance)

@@ -10,8 +10,10 @@
  * observers EYE m above every node; the Earth curved with refraction 0.13 (gdal_viewshed -cc 0.87).
  *
  *  1. Whole processes: `sylva ztv SCENE -o DIR -q --threads N` (the scene file names the GeoTIFF
- *     and the targets; every product written) against `gdal_viewshed` once per target, N of them
- *     at a time. CPU time is the processes' own (user + system, from wait4), wall time the whole
+ *     and the targets) against `gdal_viewshed` once per target, N of them at a time; sylva twice:
+ *     like for like with `--products raster` (the GeoTIFF alone, as gdal_viewshed writes), and
+ *     as run by default (every product: the GeoTIFF, the map page as PNG and PDF, the summary, the
+ *     GeoPackage). CPU time is the processes' own (user + system, from wait4), wall time the whole
  *     batch's. For 1, 10 and 100 targets, on 1 thread (one gdal_viewshed process at a time) and
  *     on N (--threads, default 2; N gdal_viewshed processes in parallel); the cost per target and
  *     sylva's CPU time over gdal_viewshed's.
@@ -287,8 +289,9 @@ static int scene_file_write(const site *st, uint32_t n, const char *path)
     return fclose(f) ? -1 : 0;
 }
 
-/* sylva ztv over the first n targets on `threads` threads, as a process. */
-static cost sylva_process(const site *st, const char *sylva, uint32_t n, unsigned threads)
+/* sylva ztv over the first n targets on `threads` threads, as a process, writing `products`
+ * (--products; NULL: the default, every product). */
+static cost sylva_process(const site *st, const char *sylva, uint32_t n, unsigned threads, const char *products)
 {
     static unsigned run;
     char yaml[256], out[256], th[16];
@@ -298,7 +301,9 @@ static cost sylva_process(const site *st, const char *sylva, uint32_t n, unsigne
     cost best = {INFINITY, INFINITY};
     for (int rep = 0; rep < repeats; rep++) {
         snprintf(out, sizeof out, "%s/ztv_%u", st->dir, run++);
-        char *argv[] = {(char *)sylva, "ztv", yaml, "-o", out, "-q", "--threads", th, NULL}, **cmds[1] = {argv};
+        char *argv[] = {(char *)sylva, "ztv", yaml, "-o", out, "-q", "--threads", th, NULL, NULL, NULL};
+        char **cmds[1] = {argv};
+        if (products) argv[8] = "--products", argv[9] = (char *)products;
         cost c = run_commands(cmds, 1, 1);
         if (c.cpu < 0) return c;
         keep_best(&best, c);
@@ -397,23 +402,30 @@ static cost gdal_tracing(const site *st, uint32_t n, unsigned threads)
 
 /* --- the report ----------------------------------------------------------------------------- */
 
+/* One line of both tools' costs; gdal's cpu < 0 when it was not run or failed. */
 static void print_pair(const char *what, uint32_t n, unsigned threads, cost s, cost g)
 {
-    if (s.cpu < 0 || g.cpu < 0) {
-        printf("  %-17s %3u targets, %u thread%s: %s failed\n", what, n, threads, threads > 1 ? "s" : "",
-               s.cpu < 0 ? "sylva" : "gdal_viewshed");
+    if (s.cpu < 0) {
+        printf("  %-24s %3u targets, %u thread%s: sylva failed\n", what, n, threads, threads > 1 ? "s" : "");
         return;
     }
-    printf("  %-17s %3u targets, %u thread%s: sylva %7.3f s CPU %7.3f s wall | gdal %7.3f s CPU %7.3f s wall"
+    if (g.cpu < 0) {
+        printf("  %-24s %3u targets, %u thread%s: sylva %7.3f s CPU %7.3f s wall | per target CPU sylva %.4f s "
+               "| gdal_viewshed not run or failed\n", what, n, threads, threads > 1 ? "s" : " ", s.cpu, s.wall,
+               s.cpu / n);
+        return;
+    }
+    printf("  %-24s %3u targets, %u thread%s: sylva %7.3f s CPU %7.3f s wall | gdal %7.3f s CPU %7.3f s wall"
            " | per target CPU sylva %.4f s gdal %.4f s | sylva / gdal CPU %.3f\n",
            what, n, threads, threads > 1 ? "s" : " ", s.cpu, s.wall, g.cpu, g.wall, s.cpu / n, g.cpu / n,
            s.cpu / g.cpu);
 }
 
 /* Both tools on one site: whole processes and the tracing alone. The CPU ratios of the goals
- * into ratio_one (1 target, whole process, 1 thread) and ratio_hundred (100 targets, per target). */
-static int compare_site(site *st, accel *acc, const char *sylva, unsigned threads, int gdal, double *ratio_one,
-                        double *ratio_hundred, err_buf *err)
+ * into ratio_one (1 target, whole process, 1 thread) and ratio_hundred (100 targets, per target),
+ * [0] like for like (sylva's raster alone), [1] sylva's every product. */
+static int compare_site(site *st, accel *acc, const char *sylva, unsigned threads, int gdal, double ratio_one[2],
+                        double ratio_hundred[2], err_buf *err)
 {
     double xy[MAX_TARGETS][2], centre[1][2] = {{0, 0}};
     uint32_t dev[MAX_TARGETS] = {0};
@@ -434,15 +446,18 @@ static int compare_site(site *st, accel *acc, const char *sylva, unsigned thread
         unsigned th = counts[w];
         for (size_t k = 0; k < N_COUNTS; k++) {
             uint32_t n = target_counts[k];
-            cost s = sylva_process(st, sylva, n, th), g = gdal ? gdal_processes(st, n, th) : (cost){-1, 0};
-            print_pair("whole processes", n, th, s, g);
-            if (th == 1 && n == 1 && s.cpu > 0 && g.cpu > 0) *ratio_one = s.cpu / g.cpu;
-            if (th == 1 && n == 100 && s.cpu > 0 && g.cpu > 0) *ratio_hundred = s.cpu / g.cpu;
+            cost g = gdal ? gdal_processes(st, n, th) : (cost){-1, 0};
+            for (int every = 0; every < 2; every++) {
+                cost s = sylva_process(st, sylva, n, th, every ? NULL : "raster");
+                print_pair(every ? "whole, every product" : "whole, raster (like gdal)", n, th, s, g);
+                if (th == 1 && n == 1 && s.cpu > 0 && g.cpu > 0) ratio_one[every] = s.cpu / g.cpu;
+                if (th == 1 && n == 100 && s.cpu > 0 && g.cpu > 0) ratio_hundred[every] = s.cpu / g.cpu;
+            }
             tg.n = n, job.threads = th;
             ztv_stats stats;
             cost ts = sylva_tracing(&job, &stats, err), tgd = gdal ? gdal_tracing(st, n, th) : (cost){-1, 0};
             print_pair("tracing alone", n, th, ts, tgd);
-            printf("  %-17s %3u targets: %.1f %% of the pairs settled by the bare-earth sweep, %.3f rays a pair\n",
+            printf("  %-24s %3u targets: %.1f %% of the pairs settled by the bare-earth sweep, %.3f rays a pair\n",
                    "", n, stats.pairs ? 100.0 * stats.swept / stats.pairs : 0.0,
                    stats.pairs ? (double)stats.rays / stats.pairs : 0.0);
         }
@@ -466,7 +481,7 @@ int main(int argc, char **argv)
         else if (i + 1 < argc && !strcmp(argv[i], "--repeats")) repeats = atoi(argv[++i]);
         else {
             fprintf(stderr, "usage: ztv_bench [--cells N] [--trees N] [--threads N] [--dem FILE] [--sylva PATH] "
-                            "[--no-gdal]\n");
+                            "[--repeats N] [--no-gdal]\n");
             return 1;
         }
     }
@@ -478,7 +493,7 @@ int main(int argc, char **argv)
            sysconf(_SC_NPROCESSORS_ONLN), threads, load_average());
     if (!mkdtemp(dir)) return perror("ztv_bench: mkdtemp"), 3;
     err_buf err = {{0}};
-    double ratio_one = NAN, ratio_hundred = NAN, p[2][MAX_TARGETS][3], xy[MAX_TARGETS][2];
+    double ratio_one[2] = {NAN, NAN}, ratio_hundred[2] = {NAN, NAN}, p[2][MAX_TARGETS][3], xy[MAX_TARGETS][2];
     sylva_heightfield *real = terrain_read(dem);
     if (!real) printf("real DTM %s: not read (the shared data beside the clone?); skipped\n", dem);
     for (int k = real ? 0 : 1; k < 2; k++) {
@@ -492,10 +507,10 @@ int main(int argc, char **argv)
         snprintf(st.dem, sizeof st.dem, "%s/dtm.tif", st.dir);
         if (mkdir(st.dir, 0700) || write_terrain(st.dem, s->terrain))
             return fprintf(stderr, "ztv_bench: cannot write %s\n", st.dem), 3;
-        double one = NAN, hundred = NAN;
-        if (compare_site(&st, &acc, sylva, threads, gdal, &one, &hundred, &err))
+        double one[2] = {NAN, NAN}, hundred[2] = {NAN, NAN};
+        if (compare_site(&st, &acc, sylva, threads, gdal, one, hundred, &err))
             return fprintf(stderr, "ztv_bench: %s\n", err.msg), 4;
-        if (k == 0) ratio_one = one, ratio_hundred = hundred;
+        if (k == 0) memcpy(ratio_one, one, sizeof one), memcpy(ratio_hundred, hundred, sizeof hundred);
         accel_free(&acc);
         scene_free(s);
     }
@@ -522,9 +537,10 @@ int main(int argc, char **argv)
     printf("screening: generated DTM, %u trees, 10 targets, %u threads, tracing alone: bare earth %.3f s CPU "
            "%.3f s wall; bare earth and vegetation %.3f s CPU %.3f s wall: %.2f times bare earth's CPU\n",
            s->n_instances, threads, bare.cpu, bare.wall, screened.cpu, screened.wall, screened.cpu / bare.cpu);
-    printf("goals: one target on the real DTM, whole process, 1 thread: sylva / gdal_viewshed CPU %.3f (goal <= 1); "
-           "100 targets, per target: %.3f (goal <= 0.2); screened / bare earth CPU %.2f (goal <= 2)\n",
-           ratio_one, ratio_hundred, screened.cpu / bare.cpu);
+    printf("goals: one target on the real DTM, whole process, 1 thread, sylva / gdal_viewshed CPU: raster alone "
+           "(like for like) %.3f, every product %.3f (goal <= 1); 100 targets, per target: raster alone %.3f, every "
+           "product %.3f (goal <= 0.2); screened / bare earth CPU %.2f (goal <= 2)\n",
+           ratio_one[0], ratio_one[1], ratio_hundred[0], ratio_hundred[1], screened.cpu / bare.cpu);
     accel_free(&acc);
     scene_free(s);
     struct rusage ru;

@@ -2,7 +2,8 @@
 # ztv_test.sh SYLVA SCENE — `sylva ztv` end to end on tests/scenes/ztv/small_site.yaml: the files
 # it promises appear (GeoTIFFs on the site's CRS, maps as PNG with its world file and PDF, summary) and nothing else; the summary
 # finds the area the trees and the barn hide and the cells inside them; the maps and GeoTIFFs
-# are byte for byte the same from one thread and from two; a second run replaces the files.
+# are byte for byte the same from one thread and from two; a second run replaces the files;
+# --products raster writes the GeoTIFFs and their styles alone, the same bytes, and a bad list is refused.
 set -uo pipefail
 sylva=$1 scene=$2
 out=$(mktemp -d)
@@ -48,6 +49,18 @@ fi
 # a second run into the same folder replaces what is there
 "$sylva" ztv "$scene" -o "$out/a" --screening none -q >/dev/null || fail "second run exited with $?"
 [ -f "$out/a/ztv_bare.tif" ] && cmp -s "$out/a/ztv_bare.tif" "$out/b/ztv_bare.tif" || fail "rerun: ztv_bare.tif changed"
+
+# --products raster: the GeoTIFFs and their styles, nothing else, the same bytes as with every product
+"$sylva" ztv "$scene" -o "$out/r" --products raster --threads 1 -q >/dev/null || fail "--products raster exited with $?"
+want="ztv_all.qml ztv_all.tif ztv_bare.qml ztv_bare.tif ztv_hidden_all.tif"
+got=$(cd "$out/r" 2>/dev/null && ls -A | tr '\n' ' ' | sed 's/ $//')
+[ "$got" = "$want" ] || fail "--products raster: files '$got', expected '$want'"
+for f in $want; do cmp -s "$out/r/$f" "$out/b/$f" || fail "--products raster: $f differs from the full run's"; done
+"$sylva" ztv "$scene" -o "$out/s" --products summary,raster -q >/dev/null || fail "--products summary,raster exited with $?"
+[ -f "$out/s/ztv_summary.csv" ] && [ ! -e "$out/s/ztv_bare.png" ] || fail "--products summary,raster: wrong files"
+"$sylva" ztv "$scene" -o "$out/x" --products raster,pictures -q >/dev/null 2>"$out/err"
+rc=$?
+[ $rc -eq 1 ] && grep -q "'pictures' is not a product" "$out/err" || fail "--products raster,pictures: exit $rc, $(cat "$out/err")"
 
 [ $fails -eq 0 ] && echo "ztv: files, summary, thread count and rerun as expected"
 exit $((fails > 0))

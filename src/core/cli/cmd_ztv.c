@@ -73,6 +73,36 @@ static int parse_years(const char *text, double *years, uint32_t *n)
     return 0;
 }
 
+/* The kinds of file --products names, in ZTV_PRODUCT_* bit order (ztv/ztv_raster.h). */
+static const char *const product_names[] = {"raster", "maps", "summary", "layers"};
+
+/* "raster,summary" (or "all") into the ZTV_PRODUCT_* bits; -1 after printing why. */
+static int parse_products(const char *text, unsigned *products)
+{
+    *products = 0;
+    for (const char *p = text; *p;) {
+        size_t len = strcspn(p, ",");
+        unsigned bit = 0;
+        if (len == 3 && !strncmp(p, "all", 3)) bit = ZTV_PRODUCTS_ALL;
+        for (unsigned k = 0; k < 4 && !bit; k++)
+            if (strlen(product_names[k]) == len && !strncmp(p, product_names[k], len)) bit = 1u << k;
+        if (!bit) {
+            fprintf(stderr, "sylva ztv: --products '%s': '%.*s' is not a product; give a list of raster, maps, "
+                    "summary, layers separated by commas, or all\n", text, (int)len, p);
+            return -1;
+        }
+        *products |= bit;
+        p += len;
+        if (*p) p++;
+    }
+    if (!*products) {
+        fprintf(stderr, "sylva ztv: --products: give a list of raster, maps, summary, layers separated by commas, "
+                "or all\n");
+        return -1;
+    }
+    return 0;
+}
+
 /* One map into dir: the scene built (at the planting year bo says) and traced. */
 static int ztv_one(cli_mpi *m, const char *scene_path, const cli_scene_use *use, const build_options *bo,
                    ztv_study_options o, const char *dir)
@@ -124,7 +154,7 @@ static int ztv_years_run(cli_mpi *m, const char *scene_path, const cli_scene_use
 
 static int ztv_run(cli_mpi *m, int argc, char **argv)
 {
-    const char *scene_path = NULL, *season = NULL, *years = NULL;
+    const char *scene_path = NULL, *season = NULL, *years = NULL, *products = NULL;
     ztv_study_options o = {.radius = NAN, .cell = NAN, .eye = NAN, .screening = -1};
     build_options bo = {.analysis = 1}; /* the ground as surveyed, whatever the camera */
     int refined = 0;
@@ -141,6 +171,10 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
                        "(default; a ZTV is a property of the DTM and the development), or the terrain plugin's "
                        "refinement, with its levels of detail around the development, not the camera"),
         CLI_OPT_FLAG("--flat-earth", o.flat_earth, "straight sightlines, whatever the earth: section says"),
+        CLI_OPT_TEXT("--products", "LIST", products, "the files written, of raster (the GeoTIFFs and their QGIS "
+                     "styles), maps (the pages: PNG, world file, PDF), summary (CSV, JSON) and layers (the "
+                     "GeoPackage and its styles), separated by commas (default all; raster alone is what a GIS "
+                     "viewshed writes)"),
         CLI_OPT_FLAG("--sightlines", o.sightlines, "every pair by its sightline, bare earth too, without the "
                      "bare-earth sweep (slower; the same maps)"),
         CLI_OPT_TEXT("--season", "S", season, CLI_HELP_SEASON),
@@ -172,6 +206,12 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
     if (years && (o.screening == ZTV_BARE || o.screening == ZTV_CANOPY)) {
         fprintf(stderr, "sylva ztv: --years maps what the planting hides, which bare earth and the canopy "
                 "surface do not hold; give --screening vegetation or all\n");
+        return EXIT_USAGE;
+    }
+    if (products && parse_products(products, &o.products)) return EXIT_USAGE;
+    if (years && o.products && o.products != ZTV_PRODUCTS_ALL) {
+        fprintf(stderr, "sylva ztv: --years reads each year's maps and summary back; give --products all or "
+                "leave it out\n");
         return EXIT_USAGE;
     }
     if (years) return ztv_years_run(m, scene_path, &use, bo, &o, years);

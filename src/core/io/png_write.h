@@ -1,6 +1,7 @@
 /* png_write.h — an 8-bit RGB PNG written straight through libpng, quickly: zlib at level 1 and
- * one filter (Sub) for every row. For pictures sylva draws itself (a page's pixels from cairo),
- * where writing fast matters more than the last bytes of compression; images read or written in
+ * no filter on any row (on a page's flat colours and text, smaller and cheaper than Sub). For
+ * pictures sylva draws itself (a page's pixels from cairo), where writing fast matters more than
+ * the last bytes of compression; images read or written in
  * other formats go through io/image_io.h. Nothing is allocated past the call.
  */
 #ifndef SYLVA_PNG_WRITE_H

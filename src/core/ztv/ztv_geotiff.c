@@ -1,9 +1,11 @@
 /* ztv_geotiff.c — the GeoTIFF writer: GDAL creates the file on a temporary that atomic_file
  * made (so no planted name is ever followed at creation), writes row blocks through
  * GDALDatasetRasterIO, and the temporary is checked to still be the file made before it is
- * renamed. Strips are one row high, so that the rows of a block fill whole strips that are
- * flushed out of GDAL's cache at once: memory stays that of one block. GDAL stays quiet (its
- * messages go into err) and writes no .aux.xml sidecar. */
+ * renamed. Strips are STRIP_ROWS rows high, DEFLATE at level 1 without a predictor (the bands
+ * hold few distinct values, which it packs as small without the predictor's cost); the rows are
+ * gathered here into whole strips, each written and flushed out of GDAL's cache at once, so that
+ * the file is the same bytes whatever the blocks it is given and memory stays that of a strip.
+ * GDAL stays quiet (its messages go into err) and writes no .aux.xml sidecar. */
 #include "ztv/ztv_geotiff.h"
 
 #include <stdlib.h>
@@ -16,12 +18,16 @@
 
 #include "io/atomic_file.h"
 
+#define STRIP_ROWS 16 /* rows a strip */
+
 struct ztv_geotiff {
     const ztv_info *info;   /* borrowed */
     atomic_file file;       /* the temporary, open until commit or free */
     GDALDatasetH ds;        /* open until finish; closed by ztv_geotiff_free otherwise */
     uint32_t bands;
-    uint32_t rows_written;  /* rows [0, rows_written) are in the file */
+    uint32_t rows_written;  /* rows [0, rows_written) were given: in the file or pending */
+    float *pending;         /* the strip being gathered: bands planes of STRIP_ROWS rows; owned */
+    uint32_t pending_rows;  /* rows of it gathered, the last of those given */
 };
 
 /* GDAL's state while it works on our dataset: its messages caught, no PAM sidecar; the
@@ -68,7 +74,14 @@ ztv_geotiff *ztv_geotiff_open(const char *path, const ztv_info *info, uint32_t b
     }
     g->info = info;
     g->bands = bands;
+    g->pending = malloc((size_t)bands * STRIP_ROWS * info->grid.nx * sizeof *g->pending); /* freed with g */
+    if (!g->pending) {
+        err_nomem(err, "out of memory for a strip of %s", path);
+        free(g);
+        return NULL;
+    }
     if (atomic_file_open(&g->file, path, err)) {
+        free(g->pending);
         free(g);
         return NULL;
     }
@@ -76,8 +89,10 @@ ztv_geotiff *ztv_geotiff_open(const char *path, const ztv_info *info, uint32_t b
     char *saved = gdal_enter();
     int rc = 0;
     GDALDriverH driver = GDALGetDriverByName("GTiff");
-    const char *const options[] = {"COMPRESS=DEFLATE", "PREDICTOR=3", "INTERLEAVE=PIXEL",
-                                   "BLOCKYSIZE=1", "BIGTIFF=IF_SAFER", NULL};
+    char strip[32];
+    snprintf(strip, sizeof strip, "BLOCKYSIZE=%d", STRIP_ROWS);
+    const char *const options[] = {"COMPRESS=DEFLATE", "ZLEVEL=1", "PREDICTOR=1", "INTERLEAVE=PIXEL",
+                                   strip, "BIGTIFF=IF_SAFER", NULL};
     if (!driver) rc = err_fail(err, ERR_INTERNAL, "%s: GDAL has no GeoTIFF driver", path);
     if (!rc) {
         g->ds = GDALCreate(driver, g->file.tmp, (int)info->grid.nx, (int)info->grid.ny, (int)bands,
@@ -105,24 +120,38 @@ ztv_geotiff *ztv_geotiff_open(const char *path, const ztv_info *info, uint32_t b
     return g;
 }
 
+/* Writes the strip gathered (a whole one, or the grid's last) and drops it from GDAL's cache. */
+static int write_strip(ztv_geotiff *g, err_buf *err)
+{
+    uint32_t j0 = g->rows_written - g->pending_rows, nx = g->info->grid.nx;
+    char *saved = gdal_enter();
+    CPLErr e = GDALDatasetRasterIO(g->ds, GF_Write, 0, (int)j0, (int)nx, (int)g->pending_rows, g->pending, (int)nx,
+                                   (int)g->pending_rows, GDT_Float32, (int)g->bands, NULL, 0, 0,
+                                   (GSpacing)STRIP_ROWS * nx * sizeof *g->pending);
+    if (e == CE_None) GDALFlushCache(g->ds);
+    int rc = e == CE_None && CPLGetLastErrorType() < CE_Failure
+                 ? 0
+                 : err_fail(err, ERR_OUTPUT, "%s: GDAL cannot write rows %u to %u: %s", g->file.path, j0,
+                            j0 + g->pending_rows, gdal_why());
+    gdal_leave(saved);
+    g->pending_rows = 0;
+    return rc;
+}
+
 int ztv_geotiff_rows(ztv_geotiff *g, uint32_t j0, uint32_t rows, const float *values, err_buf *err)
 {
     if (!g->ds || j0 != g->rows_written || rows == 0 || rows > g->info->grid.ny - j0)
         return err_fail(err, ERR_INTERNAL, "%s: rows %u to %u cannot follow the %u rows written",
                         g->file.path, j0, j0 + rows, g->rows_written);
-    char *saved = gdal_enter();
-    CPLErr e = GDALDatasetRasterIO(g->ds, GF_Write, 0, (int)j0, (int)g->info->grid.nx, (int)rows,
-                                   (void *)values, (int)g->info->grid.nx, (int)rows, GDT_Float32,
-                                   (int)g->bands, NULL, 0, 0, 0);
-    /* every strip of these rows is whole: write them out and drop them from GDAL's cache */
-    if (e == CE_None) GDALFlushCache(g->ds);
-    int rc = e == CE_None && CPLGetLastErrorType() < CE_Failure
-                 ? 0
-                 : err_fail(err, ERR_OUTPUT, "%s: GDAL cannot write rows %u to %u: %s", g->file.path, j0,
-                            j0 + rows, gdal_why());
-    gdal_leave(saved);
-    if (!rc) g->rows_written += rows;
-    return rc;
+    size_t nx = g->info->grid.nx, plane = (size_t)STRIP_ROWS * nx;
+    for (uint32_t r = 0; r < rows; r++) {
+        for (uint32_t b = 0; b < g->bands; b++)
+            memcpy(g->pending + b * plane + g->pending_rows * nx, values + ((size_t)b * rows + r) * nx,
+                   nx * sizeof *values);
+        g->pending_rows++, g->rows_written++;
+        if ((g->pending_rows == STRIP_ROWS || g->rows_written == g->info->grid.ny) && write_strip(g, err)) return -1;
+    }
+    return 0;
 }
 
 int ztv_geotiff_finish(ztv_geotiff *g, err_buf *err)
@@ -166,5 +195,6 @@ void ztv_geotiff_free(ztv_geotiff *g)
         gdal_leave(saved);
     }
     atomic_file_abort(&g->file);
+    free(g->pending);
     free(g);
 }

@@ -47,17 +47,15 @@ static void to_page(const ztv_map_layout *l, double gx, double gy, double *x, do
     *x = l->x + (gx - l->west) * l->mm_per_m, *y = l->y + (l->north - gy) * l->mm_per_m;
 }
 
-/* The map picture: one image pixel a reduced-grid pixel, shown without smoothing. */
-static int draw_picture(cairo_t *cr, const ztv_map *m, const map_style *st, const ztv_map_layout *l, err_buf *err)
+/* The map picture, one image pixel a reduced-grid pixel; NULL when out of memory. Made once for
+ * the page's PDF and PNG; owned by the caller (cairo_surface_destroy). */
+static cairo_surface_t *map_picture(const ztv_map *m, const map_style *st)
 {
     uint8_t *rgb = malloc((size_t)m->w * m->h * 3); /* owned here */
     if (rgb) ztv_map_colours(m, st, rgb);
-    cairo_surface_t *img = rgb ? page_surface_rgb(rgb, (int)m->w, (int)m->h) : NULL; /* owned here */
+    cairo_surface_t *img = rgb ? page_surface_rgb(rgb, (int)m->w, (int)m->h) : NULL;
     free(rgb);
-    if (!img) return err_nomem(err, "out of memory drawing a %u x %u map", m->w, m->h);
-    page_paint(cr, img, l->x, l->y, l->w, l->h, CAIRO_FILTER_NEAREST);
-    cairo_surface_destroy(img);
-    return 0;
+    return img;
 }
 
 /* The centre of the rings: the mean of the targets' places. */
@@ -433,6 +431,7 @@ static void draw_panel(cairo_t *cr, const ztv_map *m, const map_style *st, const
 typedef struct page_ctx {
     const ztv_map *m;
     const map_style *st;
+    cairo_surface_t *picture; /* map_picture's; borrowed */
 } page_ctx;
 
 static int draw_page(cairo_t *cr, const page_size *size, void *ctx, err_buf *err)
@@ -448,7 +447,7 @@ static int draw_page(cairo_t *cr, const page_size *size, void *ctx, err_buf *err
     snprintf(sub, sizeof sub, "%s%sobserver %g m above the ground, %u target%s", info->project ? info->project : "",
              info->project ? ": " : "", info->observer_height, info->n_targets, info->n_targets == 1 ? "" : "s");
     page_text(cr, MARGIN, MARGIN + 7.5, 0, &(page_font){.size_pt = 8, .rgb = {0.3, 0.3, 0.3}}, sub, 0);
-    if (draw_picture(cr, c->m, c->st, &l, err)) return -1;
+    page_paint(cr, c->picture, l.x, l.y, l.w, l.h, CAIRO_FILTER_NEAREST); /* shown without smoothing */
     cairo_save(cr);
     cairo_rectangle(cr, l.x, l.y, l.w, l.h);
     cairo_clip(cr);
@@ -477,6 +476,9 @@ static int draw_page(cairo_t *cr, const page_size *size, void *ctx, err_buf *err
 int ztv_map_page(const ztv_map *m, const map_style *st, FILE *png, FILE *pdf, err_buf *err)
 {
     page_size size = {ZTV_PAGE_WIDTH, ZTV_PAGE_HEIGHT, ZTV_MAP_DPI};
-    page_ctx c = {m, st};
-    return page_write_streams(&size, draw_page, &c, pdf, png, err);
+    page_ctx c = {m, st, map_picture(m, st)};
+    if (!c.picture) return err_nomem(err, "out of memory drawing a %u x %u map", m->w, m->h);
+    int rc = page_write_streams(&size, draw_page, &c, pdf, png, err);
+    cairo_surface_destroy(c.picture);
+    return rc;
 }

@@ -43,6 +43,12 @@ static const char *const hidden_bands[3] = {"targets hidden by the screening",
                                             "fraction of the targets hidden by the screening",
                                             "cell class with screening (0 open, 1 under a crown, 2 in an object)"};
 
+/* 1 when the map writes the files of kind product (a ZTV_PRODUCT_* bit). */
+static int wanted(const ztv_info *info, unsigned product)
+{
+    return !info->products || (info->products & product);
+}
+
 static int screened(const ztv_info *info, int m)
 {
     return m != ZTV_BARE && info->computed[m] && info->computed[ZTV_BARE];
@@ -103,7 +109,7 @@ ztv_output *ztv_output_open(const char *dir, const ztv_info *info, err_buf *err)
     o->info = info;
     snprintf(o->dir, sizeof o->dir, "%s", dir);
     char path[ATOMIC_PATH_MAX];
-    for (int m = 0; m < ZTV_MODES; m++) {
+    for (int m = 0; m < ZTV_MODES && wanted(info, ZTV_PRODUCT_RASTER); m++) {
         if (!info->computed[m]) continue;
         file_path(o, "ztv_", m, ".tif", path, sizeof path);
         if (!(o->tif[m] = ztv_geotiff_open(path, info, 4, mode_bands, err))) goto fail;
@@ -111,7 +117,8 @@ ztv_output *ztv_output_open(const char *dir, const ztv_info *info, err_buf *err)
         file_path(o, "ztv_hidden_", m, ".tif", path, sizeof path);
         if (!(o->hidden[m] = ztv_geotiff_open(path, info, 3, hidden_bands, err))) goto fail;
     }
-    if (!(o->map = ztv_map_new(info, err)) || !(o->summary = ztv_summary_new(info, err))) goto fail;
+    if (wanted(info, ZTV_PRODUCT_MAPS) && !(o->map = ztv_map_new(info, err))) goto fail;
+    if (wanted(info, ZTV_PRODUCT_SUMMARY) && !(o->summary = ztv_summary_new(info, err))) goto fail;
     return o;
 fail:
     ztv_output_free(o);
@@ -217,8 +224,8 @@ int ztv_output_block(ztv_output *o, const ztv_block *b, err_buf *err)
         hidden_planes(b->layer[ZTV_BARE], b->layer[m], n, o->bands);
         if (ztv_geotiff_rows(o->hidden[m], b->j0, b->rows, o->bands, err)) goto fail;
     }
-    ztv_map_block(o->map, b);
-    ztv_summary_block(o->summary, b);
+    if (o->map) ztv_map_block(o->map, b);
+    if (o->summary) ztv_summary_block(o->summary, b);
     o->next_row += b->rows;
     return 0;
 fail:
@@ -303,11 +310,12 @@ static int write_style(ztv_output *o, ztv_qml_style style, const char *prefix, i
 
 static int write_styles(ztv_output *o, err_buf *err)
 {
-    if (write_layers(o, err) || write_style(o, ZTV_QML_VIEWPOINTS, "ztv_viewpoints", -1, err) ||
-        write_style(o, ZTV_QML_RINGS, "ztv_distance_rings", -1, err) ||
-        write_style(o, ZTV_QML_DEVELOPMENTS, "ztv_developments", -1, err))
+    if (wanted(o->info, ZTV_PRODUCT_LAYERS) &&
+        (write_layers(o, err) || write_style(o, ZTV_QML_VIEWPOINTS, "ztv_viewpoints", -1, err) ||
+         write_style(o, ZTV_QML_RINGS, "ztv_distance_rings", -1, err) ||
+         write_style(o, ZTV_QML_DEVELOPMENTS, "ztv_developments", -1, err)))
         return -1;
-    for (int m = 0; m < ZTV_MODES; m++)
+    for (int m = 0; m < ZTV_MODES && wanted(o->info, ZTV_PRODUCT_RASTER); m++)
         if (o->info->computed[m] && write_style(o, ZTV_QML_VISIBILITY, "ztv_", m, err)) return -1;
     return 0;
 }
@@ -326,19 +334,20 @@ int ztv_output_finish(ztv_output *o, err_buf *err)
         if (o->tif[m] && ztv_geotiff_finish(o->tif[m], err)) return -1;
         if (o->hidden[m] && ztv_geotiff_finish(o->hidden[m], err)) return -1;
     }
-    for (int m = 0; m < ZTV_MODES; m++) {
+    for (int m = 0; m < ZTV_MODES && o->map; m++) {
         if (!info->computed[m]) continue;
         if (write_picture(o, ztv_map_write_mode, m, "ztv_", 1, err)) return -1;
         if (screened(info, m) && write_picture(o, ztv_map_write_hidden, m, "ztv_hidden_", 1, err)) return -1;
         if (info->n_developments > 1 && write_picture(o, ztv_map_write_cumulative, m, "ztv_cumulative_", 1, err))
             return -1;
     }
-    if (info->planting_before && write_picture(o, ztv_map_write_planting, planting_mode(info),
+    if (o->map && info->planting_before && write_picture(o, ztv_map_write_planting, planting_mode(info),
                                                "ztv_hidden_by_planting", 0, err))
         return -1;
-    if (write_table(o, ztv_summary_write_csv, "ztv_summary.csv", err) ||
-        write_table(o, ztv_summary_write_json, "ztv_summary.json", err) || write_styles(o, err))
+    if (o->summary && (write_table(o, ztv_summary_write_csv, "ztv_summary.csv", err) ||
+                       write_table(o, ztv_summary_write_json, "ztv_summary.json", err)))
         return -1;
+    if (write_styles(o, err)) return -1;
     /* everything is written: rename it all into place */
     for (int m = 0; m < ZTV_MODES; m++) {
         if (o->tif[m] && ztv_geotiff_commit(o->tif[m], err)) return -1;

@@ -42,6 +42,15 @@ static inline int ztv_class_on_ground(uint8_t cls) { return cls < ZTV_OUTSIDE; }
 
 #define ZTV_MAX_DEVELOPMENTS 24u /* developments in one map: bits of a float-exact mask */
 
+/* The kinds of file a map writes (docs/ztv.md, "Outputs"); ztv_info.products holds a set of them. */
+enum {
+    ZTV_PRODUCT_RASTER = 1,   /* ztv_MODE.tif, ztv_hidden_MODE.tif and ztv_MODE.qml, the GeoTIFFs' styles */
+    ZTV_PRODUCT_MAPS = 2,     /* the pages: ztv_*.png with their .pgw, ztv_*.pdf */
+    ZTV_PRODUCT_SUMMARY = 4,  /* ztv_summary.csv and ztv_summary.json */
+    ZTV_PRODUCT_LAYERS = 8,   /* ztv_layers.gpkg and its styles as .qml files */
+    ZTV_PRODUCTS_ALL = 15
+};
+
 /* The terrain's edges, in the order of ztv_grid.past_edge. */
 enum { ZTV_WEST, ZTV_EAST, ZTV_SOUTH, ZTV_NORTH, ZTV_EDGES };
 
@@ -125,6 +134,7 @@ typedef struct ztv_info {
      * years since planting; NULL otherwise */
     const char *planting_before;
     double planting_year;
+    unsigned products;                     /* ZTV_PRODUCT_* bits: the files written; 0: all of them */
 } ztv_info;
 
 #endif

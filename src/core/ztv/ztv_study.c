@@ -126,7 +126,7 @@ static int open_output(const scene_file *sf, const scene *sc, const ztv_job *job
                      .target_development = t->development, .study_views = features->viewpoints,
                      .n_study_views = features->n_viewpoints, .structures = features->structures,
                      .n_structures = features->n_structures, .planting_before = o->planting_before,
-                     .planting_year = o->planting_year};
+                     .planting_year = o->planting_year, .products = o->products};
     if (sf->site.crs_wkt) memcpy(info->origin, sf->site.origin, sizeof info->origin);
     info->computed[ZTV_BARE] = 1;
     info->computed[job->screened] = 1;

@@ -29,6 +29,7 @@ typedef struct ztv_study_options {
     const char *planting_before; /* a planting plan's year (`--years`): the folder of the map made
                                   * before the plan, for the map of what it hides; NULL otherwise */
     double planting_year;        /* years since planting, with planting_before */
+    unsigned products;           /* ZTV_PRODUCT_* bits (ztv/ztv_raster.h): the files written; 0: all */
 } ztv_study_options;
 
 /* Runs the study of sc (built from sf with the ground it is to trace), printing its information

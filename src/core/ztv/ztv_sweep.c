@@ -53,6 +53,13 @@ static double node_z(const ztv_sweep_ground *g, long a, long b)
     return g->z[(size_t)(g->j0 + b) * g->stride + g->i0 + (size_t)a];
 }
 
+/* (long)floor(x) for a finite x within a long's range, without a call into libm. */
+static inline long floor_long(double x)
+{
+    long i = (long)x;
+    return i - (x < (double)i);
+}
+
 static inline double most(double a, double b)
 {
     return a > b ? a : b;
@@ -118,7 +125,8 @@ void ztv_sweep_steepness(const ztv_sweep_ground *g, float *steep)
         for (uint32_t a = 0; a < cx; a++) {
             double z00 = node_z(g, a, b), z10 = node_z(g, a + 1, b), z01 = node_z(g, a, b + 1);
             double z11 = node_z(g, a + 1, b + 1);
-            double lower = hypot(z10 - z00, z11 - z10), upper = hypot(z11 - z01, z01 - z00);
+            double ax = z10 - z00, ay = z11 - z10, bx = z11 - z01, by = z01 - z00; /* metres: no overflow */
+            double lower = sqrt(ax * ax + ay * ay), upper = sqrt(bx * bx + by * by);
             steep[(size_t)b * cx + a] = (float)(fmax(lower, upper) / g->cell);
         }
     /* each cell takes its neighbours' too: along the rows, then along the columns */
@@ -244,7 +252,7 @@ static void walk_ray(const ztv_sweep_ground *g, const target *tg, double ue, dou
         double *r = s->crossing + 4 * (size_t)n++;
         r[AT_T] = t, r[AT_ABOVE] = above, r[AT_BELOW] = below, r[AT_STEEP] = steep;
         if (kind != own) continue;
-        long pa = own ? (long)floor(u + 0.5) : line, pb = own ? line : (long)floor(v + 0.5);
+        long pa = own ? floor_long(u + 0.5) : line, pb = own ? line : floor_long(v + 0.5);
         if (pa < 0 || pb < 0 || pa >= (long)g->nx || pb >= (long)g->ny) continue;
         size_t k = (size_t)(g->ny - 1 - pb) * g->nx + (size_t)pa;
         float D = (float)(fabs(own ? u - pa : v - pb) * g->cell);

@@ -84,7 +84,7 @@ static int parse_products(const char *text, unsigned *products)
         size_t len = strcspn(p, ",");
         unsigned bit = 0;
         if (len == 3 && !strncmp(p, "all", 3)) bit = ZTV_PRODUCTS_ALL;
-        for (unsigned k = 0; k < 4 && !bit; k++)
+        for (unsigned k = 0; k < sizeof product_names / sizeof *product_names && !bit; k++)
             if (strlen(product_names[k]) == len && !strncmp(p, product_names[k], len)) bit = 1u << k;
         if (!bit) {
             fprintf(stderr, "sylva ztv: --products '%s': '%.*s' is not a product; give a list of raster, maps, "

@@ -447,13 +447,39 @@ TEST(ply_items_hold_their_lines)
 
 /* A PLY named as another format: Assimp reads it as PLY when the extension's reader refuses it,
  * so it is checked as a .ply file is (here a face of no vertices, on which Assimp aborts). */
-TEST(ply_named_otherwise)
+TEST(read_by_its_extension_alone)
 {
-    const char *text = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                       "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
-                       "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0\n";
-    expect_error(write_text("empty_face.glb", text), NULL, ERR_INPUT, "empty_face.glb:14:1: face 2 lists no vertices");
-    expect_error(write_text("empty_face.obj", text), NULL, ERR_INPUT, "face 2 lists no vertices");
+    /* Assimp hands a file its own readers refuse to its other readers: this OBJ named .gltf used
+     * to be imported as a triangle */
+    const char *obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    expect_error(write_text("triangle.gltf", obj), NULL, ERR_INPUT, "triangle.gltf: cannot read the model");
+    expect_error(write_text("triangle.stl", obj), NULL, ERR_INPUT, "triangle.stl: cannot read the model");
+    const char *ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                      "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    expect_error(write_text("triangle_ply.glb", ply), NULL, ERR_INPUT, "triangle_ply.glb: cannot read the model");
+    /* and the same files under their own names are read */
+    scene *s = scene_new();
+    mesh *m = NULL;
+    err_buf err = {{0}};
+    CHECK_INT(model_import(s, write_text("triangle.obj", obj), NULL, &m, NULL, &err), 0);
+    CHECK(m && m->nt == 1);
+    mesh_free(m);
+    m = NULL;
+    CHECK_INT(model_import(s, write_text("triangle.ply", ply), NULL, &m, NULL, &err), 0);
+    CHECK(m && m->nt == 1);
+    mesh_free(m);
+    scene_free(s);
+}
+
+/* Without its module (SYLVA_MODEL_MODULE naming a file that is not there) a model is refused
+ * with a sentence naming the module; each case runs in a process of its own, so the module has
+ * not been opened yet. */
+TEST(module_missing)
+{
+    setenv("SYLVA_MODEL_MODULE", "/nonexistent/sylva_model.so", 1);
+    expect_error(write_text("triangle.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), NULL, ERR_INPUT,
+                 "models are read through Assimp in the module sylva_model.so, which cannot be loaded");
 }
 
 /* A texture coordinate that is not a finite number (a NaN in a glTF buffer) is refused as a
@@ -500,7 +526,7 @@ TEST(image_mime_type_without_slash)
 TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TEST_CASE(empty_ply_face), TEST_CASE(empty_face_as_assimp_reads_it),
           TEST_CASE(ply_items_hold_their_lines),
           TEST_CASE(image_mime_type_without_slash),
-          TEST_CASE(ply_named_otherwise), TEST_CASE(texture_coordinate_not_finite), TEST_CASE(damaged_glb_chunk), TEST_CASE(y_up_files_are_turned),
+          TEST_CASE(read_by_its_extension_alone), TEST_CASE(module_missing), TEST_CASE(texture_coordinate_not_finite), TEST_CASE(damaged_glb_chunk), TEST_CASE(y_up_files_are_turned),
           TEST_CASE(obj_with_mtl_texture_points_lines), TEST_CASE(gltf_mirrored_node_keeps_winding),
           TEST_CASE(gltf_node_scale_beyond_single_precision),
           TEST_CASE(clear_errors))

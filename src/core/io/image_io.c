@@ -1,7 +1,6 @@
 /* image_io.c — image_io.h on the image module (io/image_module.h), opened with dlopen the first
  * time an image is read or written, so that a run that never needs OpenImageIO never loads it.
- * The module is looked for as SYLVA_IMAGE_MODULE names it (a file), then in the build tree's
- * lib/ (a program run from the build tree), then in the install folder beside the plugins'.
+ * The module is found as util/module_load.h says, SYLVA_IMAGE_MODULE naming its file.
  * The arguments are checked here, and the freeing and the atomic write are the core's own.
  */
 #include "io/image_io.h"
@@ -13,11 +12,11 @@
 #include <stdlib.h>
 
 #include "io/image_module.h"
-#include "util/build_tree.h"
 #include "util/chunk_check.h"
 #include "util/file_check.h"
 #include "util/jpeg_frame.h"
 #include "util/memory_budget.h"
+#include "util/module_load.h"
 
 static const image_host host = {sizeof(image_host), memory_check, file_check_regular, png_check, jpeg_frame,
                                 image_free};
@@ -28,36 +27,21 @@ static pthread_once_t module_once = PTHREAD_ONCE_INIT;
 static const image_module *module;
 static char module_problem[1024];
 
-/* Opens the module at path into module; 0, or -1 with module_problem set. */
-static int module_open(const char *path)
-{
-    void *so = dlopen(path, RTLD_NOW | RTLD_LOCAL); /* kept open until the process ends */
-    if (!so) {
-        snprintf(module_problem, sizeof module_problem, "%s", dlerror());
-        return -1;
-    }
-    image_module_entry entry = (image_module_entry)dlsym(so, IMAGE_MODULE_ENTRY);
-    const image_module *m = entry ? entry(&host) : NULL;
-    if (!entry || !m || m->size < sizeof(image_module) || m->version != IMAGE_MODULE_VERSION) {
-        snprintf(module_problem, sizeof module_problem, "%s: %s", path,
-                 !entry ? "no entry point " IMAGE_MODULE_ENTRY " in the shared library"
-                        : "the image module is of another version than this sylva (rebuild or reinstall both)");
-        dlclose(so);
-        return -1;
-    }
-    module = m;
-    return 0;
-}
-
 static void module_find(void)
 {
-    const char *named = getenv("SYLVA_IMAGE_MODULE");
-    if (named && *named) {
-        module_open(named);
+    void *so = NULL;
+    image_module_entry entry = (image_module_entry)module_load("SYLVA_IMAGE_MODULE", IMAGE_MODULE_FILE,
+                                                               SYLVA_MODULE_INSTALL_DIR, IMAGE_MODULE_ENTRY, &so,
+                                                               module_problem, sizeof module_problem);
+    if (!entry) return;
+    const image_module *m = entry(&host);
+    if (!m || m->size < sizeof(image_module) || m->version != IMAGE_MODULE_VERSION) {
+        snprintf(module_problem, sizeof module_problem, "%s: the image module is of another version than this "
+                 "sylva (rebuild or reinstall both)", IMAGE_MODULE_FILE);
+        dlclose(so);
         return;
     }
-    if (build_tree_running() && !module_open(SYLVA_BUILD_ROOT "/lib/" IMAGE_MODULE_FILE)) return;
-    if (!module_open(SYLVA_IMAGE_MODULE_INSTALL_DIR "/" IMAGE_MODULE_FILE)) return;
+    module = m; /* so stays open until the process ends: the module's C++ runtime lives until then */
 }
 
 /* The module, or NULL with err saying why it cannot be loaded. */

@@ -1,4 +1,4 @@
-// oiio_shim.cpp — the only C++ in sylva: the image module (sylva_image.so, io/image_module.h),
+// oiio_shim.cpp — the image module (sylva_image.so, io/image_module.h),
 // image_io.h's reading and writing on OpenImageIO, loaded by the core on first use
 // (io/image_io.c). Every operation catches whatever OpenImageIO or the standard library throws
 // and turns it into an err_buf sentence; memory handed back to C is malloc'd so image_free can

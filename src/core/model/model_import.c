@@ -1,17 +1,14 @@
 /* model_import.c — a model file through Assimp into one sylva mesh: the file is checked
- * (readable, a supported extension; a PLY walked whole), Assimp reads it triangulated with
- * points and lines dropped; the triangle count over all node instances is checked against the
+ * (readable, a supported extension; a PLY walked whole), Assimp reads it (in the model module,
+ * model/model_module.h) triangulated with points and lines dropped; the triangle count over all node instances is checked against the
  * limit before the mesh is allocated at its exact size; then every node's meshes are copied
  * with the node's accumulated transform, the file's frame turned to sylva's (metres, +Z up)
  * and the caller's scale applied; missing normals are made from the triangles. Materials are
  * made on first use (model_material.c). */
 #include "model/model_import.h"
 
-#include <assimp/cimport.h>
-#include <assimp/config.h>
+#include <assimp/scene.h> /* before metadata.h, which needs what it includes */
 #include <assimp/metadata.h>
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
 
 #include <errno.h>
 #include <float.h>
@@ -22,6 +19,7 @@
 #include <strings.h>
 #include <unistd.h>
 
+#include "model/model_assimp.h"
 #include "model/model_folder.h"
 #include "model/model_material.h"
 #include "model/gltf_check.h"
@@ -284,84 +282,44 @@ static int copy_node(copy_state *cs, const struct aiNode *n, const affine *paren
     return 0;
 }
 
-/* Assimp's message, with anything unprintable (it may quote the file) shown as '?' and cut at
- * 200 characters. */
-static const char *assimp_reason(char *buf, size_t cap)
+/* Assimp's message in why, with anything unprintable (it may quote the file) shown as '?' and
+ * cut at 200 characters. */
+static const char *assimp_reason(char *why)
 {
-    snprintf(buf, cap < 204 ? cap : 204, "%s", aiGetErrorString());
-    if (strlen(buf) == 203) strcpy(buf + 200, "...");
-    for (char *c = buf; *c; c++)
+    if (strlen(why) >= 203) strcpy(why + 200, "...");
+    for (char *c = why; *c; c++)
         if ((unsigned char)*c < 0x20 || (unsigned char)*c >= 0x7f) *c = '?';
-    return buf[0] ? buf : "no reason given";
+    return why[0] ? why : "no reason given";
 }
 
-/* 1 when the file starts with `magic` (in any case): when the reader of a file's extension
- * refuses it, Assimp tries its other readers on the contents, and its PLY and GLB readers take
- * such a file whatever it is named, so it is checked as a .ply or .glb file is. */
-static int starts_with(const char *path, const char *magic)
+/* The file read by Assimp through the model module, triangulated with points and lines dropped,
+ * every file it refers to opened through the model's folder: the scene, with *reading its
+ * owner (close it with the module's close whatever the result), or NULL with err set. */
+static const struct aiScene *read_with_assimp(const model_module *assimp, const char *path, model_folder *folder,
+                                              model_reading **reading, err_buf *err)
 {
-    char head[8] = {0};
-    size_t len = strlen(magic);
-    FILE *f = fopen(path, "rb");
-    size_t n = f ? fread(head, 1, len, f) : 0;
-    if (f) fclose(f);
-    return n == len && !strncasecmp(head, magic, len);
-}
-
-/* The first face of no vertices in ai (which Assimp's validation lets through and its
- * triangulation aborts the program on), as "mesh M, face F" into out; 0 when there is none. */
-static int empty_face(const struct aiScene *ai, char *out, size_t n)
-{
-    for (unsigned m = 0; m < ai->mNumMeshes; m++)
-        for (unsigned f = 0; ai->mMeshes[m] && f < ai->mMeshes[m]->mNumFaces; f++)
-            if (!ai->mMeshes[m]->mFaces[f].mNumIndices) return snprintf(out, n, "mesh %u, face %u", m, f), 1;
-    return 0;
-}
-
-/* One reading of the file by Assimp with flags, every file it refers to opened through the
- * model's folder: the scene, or NULL with err set. */
-static const struct aiScene *assimp_read(const char *path, unsigned flags, model_folder *folder, err_buf *err)
-{
-    struct aiPropertyStore *props = aiCreatePropertyStore();
-    if (!props) {
-        err_nomem(err, "%s: out of memory starting the model reader", path);
+    struct aiFileIO io = model_folder_io(folder);
+    const struct aiScene *ai = NULL;
+    char why[512];
+    model_read_status status = assimp->read(path, &io, reading, &ai, why, sizeof why);
+    if (model_folder_refusal(folder, err)) return NULL; /* Assimp may have gone on without the file */
+    if (status == MODEL_READ_NOMEM) {
+        err_nomem(err, "%s: out of memory reading the model", path);
         return NULL;
     }
-    aiSetImportPropertyInteger(props, AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    struct aiFileIO io = model_folder_io(folder);
-    const struct aiScene *ai = aiImportFileExWithProperties(path, flags, &io, props);
-    aiReleasePropertyStore(props);
-    if (model_folder_refusal(folder, err)) { /* Assimp may have gone on without the file */
-        if (ai) aiReleaseImport(ai);
-        ai = NULL;
-    } else if (!ai) {
-        char why[512];
-        err_fail(err, ERR_INPUT, "%s: cannot read the model: %s", path, assimp_reason(why, sizeof why));
-    } else if ((ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode) {
+    if (status == MODEL_READ_EMPTY_FACE) {
+        err_fail(err, ERR_INPUT, "%s: %s has no vertices; every face needs at least one", path, why);
+        return NULL;
+    }
+    if (status != MODEL_READ_OK) {
+        err_fail(err, ERR_INPUT, "%s: cannot read the model: %s", path, assimp_reason(why));
+        return NULL;
+    }
+    if ((ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode) {
         err_fail(err, ERR_INPUT, "%s: the model is incomplete (no scene root or no meshes)", path);
-        aiReleaseImport(ai);
-        ai = NULL;
+        return NULL;
     }
     return ai;
-}
-
-/* Reads the file with Assimp: first with the data structure checked alone, so that a face of no
- * vertices is refused before Assimp's triangulation sees it, then triangulated with points and
- * lines dropped (a second reading: when a step fails on a scene already read, Assimp's C interface
- * frees the scene twice). */
-static const struct aiScene *read_with_assimp(const char *path, model_folder *folder, err_buf *err)
-{
-    const struct aiScene *ai = assimp_read(path, aiProcess_ValidateDataStructure, folder, err);
-    if (!ai) return NULL;
-    char where[64];
-    int empty = empty_face(ai, where, sizeof where);
-    aiReleaseImport(ai);
-    if (empty) {
-        err_fail(err, ERR_INPUT, "%s: %s has no vertices; every face needs at least one", path, where);
-        return NULL;
-    }
-    return assimp_read(path, aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure,
-                       folder, err);
 }
 
 int model_import(scene *s, const char *path, const model_import_options *opt, mesh **out,
@@ -378,15 +336,22 @@ int model_import(scene *s, const char *path, const model_import_options *opt, me
                         ".obj, .gltf, .glb, .ply, .stl, .fbx, .dae and .3ds", path);
     if (access(path, R_OK) != 0)
         return err_fail(err, ERR_INPUT, "%s: cannot read the model: %s", path, strerror(errno));
-    /* Assimp hangs on a cut PLY, and aborts on a face of no vertices */
-    if ((!strcmp(f->ext, "ply") || starts_with(path, "ply")) && ply_check(path, err)) return -1;
-    if (glb_check(path, err)) return -1; /* Assimp allocates what a GLB chunk states */
-    if ((f->gltf || starts_with(path, "gltf")) && gltf_check(path, err)) return -1; /* Assimp crashes on a mimeType without '/' */
+    /* Only the readers of the file's extension read it (model/model_module.h). Assimp's PLY
+     * reader hangs on a cut PLY and aborts on a face of no vertices */
+    if (!strcmp(f->ext, "ply") && ply_check(path, err)) return -1;
+    if (f->gltf && glb_check(path, err)) return -1; /* Assimp allocates what a GLB chunk states */
+    if (f->gltf && gltf_check(path, err)) return -1; /* Assimp crashes on a mimeType without '/' */
 
+    const model_module *assimp = model_assimp(path, err);
+    if (!assimp) return -1;
     model_folder folder;
     if (model_folder_init(&folder, path, o.root, err)) return -1;
-    const struct aiScene *ai = read_with_assimp(path, &folder, err);
-    if (!ai) return -1;
+    model_reading *reading = NULL; /* closed at done */
+    const struct aiScene *ai = read_with_assimp(assimp, path, &folder, &reading, err);
+    if (!ai) {
+        if (reading) assimp->close(reading);
+        return -1;
+    }
     int rc = -1;
     copy_state cs = {.ai = ai, .path = path, .s = s};
     affine frame;
@@ -424,7 +389,7 @@ int model_import(scene *s, const char *path, const model_import_options *opt, me
     }
     cs.m->cap_v = (uint32_t)nv, cs.m->cap_t = (uint32_t)nt;
     memset(cs.m->pos + (size_t)nv * 3, 0, 4 * sizeof(float));
-    if (model_materials_init(&cs.mats, ai, path, f->gltf, err)) goto done;
+    if (model_materials_init(&cs.mats, ai, assimp, path, f->gltf, err)) goto done;
     cs.mats.folder = &folder;
     if (copy_node(&cs, ai->mRootNode, &frame, err)) goto done;
     if (info)
@@ -436,6 +401,6 @@ int model_import(scene *s, const char *path, const model_import_options *opt, me
 done:
     mesh_free(cs.m);
     if (cs.mats.ids) model_materials_free(&cs.mats);
-    aiReleaseImport(ai);
+    assimp->close(reading);
     return rc;
 }

@@ -23,6 +23,7 @@
 
 #include "io/image_io.h"
 #include "model/model_folder.h"
+#include "model/model_module.h"
 
 /* How a texture's alpha is treated when it is copied into the scene. */
 typedef enum alpha_use { ALPHA_AS_IS, ALPHA_CUT } alpha_use;
@@ -35,10 +36,10 @@ struct model_texture_use {
     int32_t id;       /* scene texture */
 };
 
-int model_materials_init(model_materials *mm, const struct aiScene *ai, const char *path, int gltf,
-                         err_buf *err)
+int model_materials_init(model_materials *mm, const struct aiScene *ai, const model_module *assimp, const char *path,
+                         int gltf, err_buf *err)
 {
-    *mm = (model_materials){.ai = ai, .path = path, .gltf = gltf};
+    *mm = (model_materials){.ai = ai, .assimp = assimp, .path = path, .gltf = gltf};
     mm->ids = malloc((ai->mNumMaterials ? ai->mNumMaterials : 1) * sizeof *mm->ids);
     if (!mm->ids) return err_nomem(err, "%s: out of memory for %u materials", path, ai->mNumMaterials);
     for (unsigned i = 0; i < ai->mNumMaterials; i++) mm->ids[i] = -1;
@@ -226,13 +227,13 @@ int32_t model_material_id(model_materials *mm, scene *s, unsigned index, err_buf
 
     struct aiString ai_name = {0};
     char mat_name[256]; /* the file's name for it, unprintable bytes shown as '?' */
-    snprintf(mat_name, sizeof mat_name, "%s", aiGetMaterialString(am, AI_MATKEY_NAME, &ai_name) == aiReturn_SUCCESS &&
-                                                  ai_name.length ? ai_name.data : "unnamed");
+    int named = mm->assimp->material_string(am, AI_MATKEY_NAME, &ai_name) == aiReturn_SUCCESS && ai_name.length;
+    snprintf(mat_name, sizeof mat_name, "%s", named ? ai_name.data : "unnamed");
     for (char *c = mat_name; *c; c++)
         if ((unsigned char)*c < 0x20 || (unsigned char)*c == 0x7f) *c = '?';
     struct aiColor4D colour = {1, 1, 1, 1};
-    if (aiGetMaterialColor(am, AI_MATKEY_BASE_COLOR, &colour) != aiReturn_SUCCESS &&
-        aiGetMaterialColor(am, AI_MATKEY_COLOR_DIFFUSE, &colour) != aiReturn_SUCCESS)
+    if (mm->assimp->material_color(am, AI_MATKEY_BASE_COLOR, &colour) != aiReturn_SUCCESS &&
+        mm->assimp->material_color(am, AI_MATKEY_COLOR_DIFFUSE, &colour) != aiReturn_SUCCESS)
         colour = (struct aiColor4D){0.8f, 0.8f, 0.8f, 1.0f};
 
     /* glTF alpha mode and cutoff */
@@ -241,20 +242,18 @@ int32_t model_material_id(model_materials *mm, scene *s, unsigned index, err_buf
     float cutoff = 0.5f;
     if (mm->gltf) {
         struct aiString mode = {0};
-        if (aiGetMaterialString(am, AI_MATKEY_GLTF_ALPHAMODE, &mode) != aiReturn_SUCCESS)
+        if (mm->assimp->material_string(am, AI_MATKEY_GLTF_ALPHAMODE, &mode) != aiReturn_SUCCESS)
             strcpy(mode.data, "OPAQUE");
         unsigned one = 1;
-        if (aiGetMaterialFloatArray(am, AI_MATKEY_GLTF_ALPHACUTOFF, &cutoff, &one) != aiReturn_SUCCESS)
+        if (mm->assimp->material_floats(am, AI_MATKEY_GLTF_ALPHACUTOFF, &cutoff, &one) != aiReturn_SUCCESS)
             cutoff = 0.5f;
         if (!strcmp(mode.data, "MASK")) alpha = ALPHA_CUT;
         else if (strcmp(mode.data, "BLEND")) mask = 0;
     }
 
     struct aiString tex_ref = {0};
-    int has_tex = aiGetMaterialTexture(am, aiTextureType_BASE_COLOR, 0, &tex_ref, NULL, NULL, NULL,
-                                       NULL, NULL, NULL) == aiReturn_SUCCESS ||
-                  aiGetMaterialTexture(am, aiTextureType_DIFFUSE, 0, &tex_ref, NULL, NULL, NULL, NULL,
-                                       NULL, NULL) == aiReturn_SUCCESS;
+    int has_tex = mm->assimp->material_texture(am, aiTextureType_BASE_COLOR, 0, &tex_ref) == aiReturn_SUCCESS ||
+                  mm->assimp->material_texture(am, aiTextureType_DIFFUSE, 0, &tex_ref) == aiReturn_SUCCESS;
     int32_t tex = -1;
     if (has_tex && tex_ref.length) {
         tex = texture_id(mm, s, tex_ref.data, mat_name, alpha, cutoff, clamp01(colour.a), err);

@@ -14,11 +14,13 @@
 
 struct aiScene;
 struct model_folder;
+struct model_module;
 
 typedef struct model_texture_use model_texture_use;
 
 typedef struct model_materials {
     const struct aiScene *ai;  /* borrowed */
+    const struct model_module *assimp; /* the model module, which reads the materials; borrowed */
     const char *path;          /* the model file, borrowed */
     const struct model_folder *folder; /* where its texture files must lie; NULL: anywhere; borrowed */
     int gltf;                  /* glTF alpha modes apply */
@@ -28,9 +30,10 @@ typedef struct model_materials {
     uint32_t n_materials, n_textures; /* added to the scene so far */
 } model_materials;
 
-/* Prepares the table for ai (which must outlive it). Returns 0 or -1 (out of memory). */
-int model_materials_init(model_materials *mm, const struct aiScene *ai, const char *path,
-                         int gltf, err_buf *err);
+/* Prepares the table for ai, read by the module assimp (both must outlive it). Returns 0 or -1
+ * (out of memory). */
+int model_materials_init(model_materials *mm, const struct aiScene *ai, const struct model_module *assimp,
+                         const char *path, int gltf, err_buf *err);
 void model_materials_free(model_materials *mm); /* accepts a zeroed table */
 
 /* The scene material for Assimp material `index`, made on first use. Returns the id (>= 0) or

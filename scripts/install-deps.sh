@@ -20,6 +20,7 @@ packages=(
   libcairo2-dev libpango1.0-dev  # study sheets and ZTV maps: vector PDF and PNG, real fonts
   libpng-dev             # the pages' PNGs written straight through libpng (src/core/io/png_write.c)
   fonts-dejavu-core      # the sheets' and maps' typeface
+  valgrind               # Assimp's own heap writes, which the sanitizers cannot see (unit.model_import_valgrind)
   poppler-utils          # pdfinfo, pdfimages, pdftotext: the sheet tests read the PDFs back
   libopenmpi-dev openmpi-bin  # MPI: render and ztv split between ranks (docs/mpi.md); optional
   chromium fonts-dejavu-core  # the study's index.html opened headless by its test (cli.study_index)

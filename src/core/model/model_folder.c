@@ -4,6 +4,8 @@
  * (realpath), so neither ".." nor a symbolic link leads out. */
 #include "model/model_folder.h"
 
+#include "model/obj_statements.h"
+
 #include <errno.h>
 #include <limits.h>
 #include <stdio.h>
@@ -116,11 +118,37 @@ int model_folder_refusal(const model_folder *mf, err_buf *err)
 
 /* --- the Assimp file system ------------------------------------------------------------------- */
 
-static FILE *stream_of(struct aiFile *f) { return (FILE *)(void *)f->UserData; }
+/* A file Assimp opened: the stream, and for the OBJ model file the byte before the next one read
+ * (model/obj_statements.h needs it). */
+typedef struct folder_file {
+    FILE *s;
+    int obj;          /* 1: point and line statements are read as comments */
+    long next;        /* the offset after the last byte read, or -1 */
+    int last;         /* that byte */
+} folder_file;
+
+static FILE *stream_of(struct aiFile *f) { return ((folder_file *)(void *)f->UserData)->s; }
+
+/* The byte before offset at in ff's stream (-1 at the start); the stream is left at `at`. */
+static int byte_before(folder_file *ff, long at)
+{
+    if (at <= 0) return -1;
+    if (at == ff->next) return ff->last;
+    int c = fseek(ff->s, at - 1, SEEK_SET) == 0 ? fgetc(ff->s) : EOF;
+    fseek(ff->s, at, SEEK_SET);
+    return c == EOF ? '\n' : c; /* unreadable: taken as a line end, so a statement there is a comment */
+}
 
 static size_t file_read(struct aiFile *f, char *buf, size_t size, size_t count)
 {
-    return fread(buf, size, count, stream_of(f));
+    folder_file *ff = (folder_file *)(void *)f->UserData;
+    if (!ff->obj) return fread(buf, size, count, ff->s);
+    long at = ftell(ff->s);
+    int before = byte_before(ff, at);
+    size_t got = fread(buf, size, count, ff->s), bytes = got * size;
+    obj_points_lines_as_comments(buf, bytes, before);
+    if (bytes) ff->next = at + (long)bytes, ff->last = (unsigned char)buf[bytes - 1]; /* '#' or not, no line end */
+    return got;
 }
 
 static size_t file_write(struct aiFile *f, const char *buf, size_t size, size_t count)
@@ -175,15 +203,18 @@ static struct aiFile *folder_open(struct aiFileIO *io, const char *path, const c
     }
     FILE *s = fopen(path, "rb");
     if (!s) return NULL;
-    struct aiFile *f = calloc(1, sizeof *f); /* freed by folder_close */
-    if (!f) {
+    struct aiFile *f = calloc(1, sizeof *f);     /* freed by folder_close */
+    folder_file *ff = calloc(1, sizeof *ff);     /* freed by folder_close */
+    if (!f || !ff) {
         fclose(s);
+        free(f), free(ff);
         mf->out_of_memory = 1;
         return NULL;
     }
+    *ff = (folder_file){.s = s, .obj = mf->obj_points_lines && !strcmp(path, mf->model), .next = -1};
     f->ReadProc = file_read, f->WriteProc = file_write, f->TellProc = file_tell;
     f->FileSizeProc = file_size, f->SeekProc = file_seek, f->FlushProc = file_flush;
-    f->UserData = (aiUserData)(void *)s;
+    f->UserData = (aiUserData)(void *)ff;
     return f;
 }
 
@@ -192,6 +223,7 @@ static void folder_close(struct aiFileIO *io, struct aiFile *f)
     (void)io;
     if (!f) return;
     fclose(stream_of(f));
+    free(f->UserData);
     free(f);
 }
 

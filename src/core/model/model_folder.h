@@ -8,7 +8,9 @@
  * Assimp reads through model_folder_io, which opens only files the folder allows and keeps the
  * first refusal (Assimp itself may go on without a refused material library); model_import then
  * fails with model_folder_refusal. Textures are checked with model_folder_check before they are
- * read. Only model_folder_io allocates: a handle per open file, freed when Assimp closes it. */
+ * read. An OBJ model reaches Assimp with its point and line statements read as comments
+ * (obj_points_lines, model/obj_statements.h). Only model_folder_io allocates: a handle and its
+ * state per open file, freed when Assimp closes it. */
 #ifndef SYLVA_MODEL_FOLDER_H
 #define SYLVA_MODEL_FOLDER_H
 
@@ -27,6 +29,8 @@ typedef struct model_folder {
     char refused[1024];               /* the first reference model_folder_io refused, or "" */
     const char *refused_why;          /* why, as model_folder_check says it */
     int out_of_memory;                /* 1: model_folder_io could not allocate a file's handle */
+    int obj_points_lines;             /* 1: the model file is read with its point and line statements
+                                         as comments (an OBJ file; 0 after model_folder_init) */
 } model_folder;
 
 /* Sets mf up for the model file `model` (which must exist), with root the folder its files must

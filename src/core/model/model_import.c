@@ -346,6 +346,7 @@ int model_import(scene *s, const char *path, const model_import_options *opt, me
     if (!assimp) return -1;
     model_folder folder;
     if (model_folder_init(&folder, path, o.root, err)) return -1;
+    folder.obj_points_lines = !strcmp(f->ext, "obj"); /* Assimp 5.2 writes past its arrays on some */
     model_reading *reading = NULL; /* closed at done */
     const struct aiScene *ai = read_with_assimp(assimp, path, &folder, &reading, err);
     if (!ai) {

@@ -28,6 +28,7 @@
  * The goals of the visibility map are printed beside the figures they judge.
  *
  * usage: ztv_bench [--cells N] [--trees N] [--threads N] [--dem FILE] [--sylva PATH] [--repeats N] [--no-gdal]
+ *                  [--screening-only]  (the screened map against bare earth alone)
  */
 #include <embree3/rtcore.h>
 #include <gdal.h>
@@ -469,10 +470,11 @@ int main(int argc, char **argv)
 {
     uint32_t cells = 1000, trees = 100000;
     unsigned threads = 2;
-    int gdal = 1;
+    int gdal = 1, screening_only = 0;
     const char *dem = REAL_DEM, *sylva = SYLVA_BUILD_ROOT "/sylva";
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--no-gdal")) gdal = 0;
+        else if (!strcmp(argv[i], "--screening-only")) screening_only = 1;
         else if (i + 1 < argc && !strcmp(argv[i], "--cells")) cells = (uint32_t)atol(argv[++i]);
         else if (i + 1 < argc && !strcmp(argv[i], "--trees")) trees = (uint32_t)atol(argv[++i]);
         else if (i + 1 < argc && !strcmp(argv[i], "--threads")) threads = (unsigned)atol(argv[++i]);
@@ -481,7 +483,7 @@ int main(int argc, char **argv)
         else if (i + 1 < argc && !strcmp(argv[i], "--repeats")) repeats = atoi(argv[++i]);
         else {
             fprintf(stderr, "usage: ztv_bench [--cells N] [--trees N] [--threads N] [--dem FILE] [--sylva PATH] "
-                            "[--repeats N] [--no-gdal]\n");
+                            "[--repeats N] [--no-gdal] [--screening-only]\n");
             return 1;
         }
     }
@@ -494,9 +496,9 @@ int main(int argc, char **argv)
     if (!mkdtemp(dir)) return perror("ztv_bench: mkdtemp"), 3;
     err_buf err = {{0}};
     double ratio_one[2] = {NAN, NAN}, ratio_hundred[2] = {NAN, NAN}, p[2][MAX_TARGETS][3], xy[MAX_TARGETS][2];
-    sylva_heightfield *real = terrain_read(dem);
-    if (!real) printf("real DTM %s: not read (the shared data beside the clone?); skipped\n", dem);
-    for (int k = real ? 0 : 1; k < 2; k++) {
+    sylva_heightfield *real = screening_only ? NULL : terrain_read(dem);
+    if (!real && !screening_only) printf("real DTM %s: not read (the shared data beside the clone?); skipped\n", dem);
+    for (int k = real ? 0 : 1; k < 2 - screening_only; k++) {
         site st = {.name = k ? "generated DTM" : "real DTM (Zion SRTM)", .p = p[k]};
         scene *s = build(k ? terrain_new(cells) : real, 0, &err);
         accel acc;

@@ -11,6 +11,7 @@
 #include "ztv/ztv_canopy.h"
 #include "ztv/ztv_cover.h"
 #include "ztv/ztv_grid.h"
+#include "ztv/ztv_screen.h"
 #include "ztv/ztv_sight.h"
 #include "ztv/ztv_sweep.h"
 
@@ -36,7 +37,10 @@ typedef struct sweep_ctx {
     float *eye, *height;       /* window cells: the eye and the ground, NAN off the map; owned */
     uint8_t *where, *cls;      /* window cells: the bare and the screened classes; owned */
     int screened;
-    ztv_sight sight, canopy_sight;
+    ztv_sight sight;
+    ztv_sight screen_sight;    /* over the screening geometry alone, with screen_mask: the canopy
+                                * surface in canopy mode, else the plants and objects (ztv_screen.h) */
+    unsigned screen_mask;
     const ztv_canopy *canopy;
     progress *prog;
     counts *worker;            /* one per thread; owned */
@@ -138,7 +142,6 @@ static void target_pass(sweep_ctx *c, counts *n, uint32_t t)
     const ztv_job *job = c->job;
     const double *p = job->targets->p[t];
     uint32_t bit = 1u << job->targets->development[t];
-    unsigned screen_mask = ztv_mode_mask(job->screened);
     ztv_sweep_target(&c->ground, p, n->status, &n->scratch);
     for (uint32_t r = 0; r < c->w.ny; r++)
         for (uint32_t a = 0; a < c->w.nx; a++) {
@@ -154,9 +157,8 @@ static void target_pass(sweep_ctx *c, counts *n, uint32_t t)
             if (!bare) continue;
             n->visible[0][k]++, n->developments[0][k] |= bit;
             if (!c->screened || c->cls[k] != ZTV_OPEN) continue;
-            int seen = c->canopy ? ztv_sight_clear(&c->canopy_sight, eye, p, ~0u, &n->rays)
-                                 : ztv_sight_clear(&c->sight, eye, p, screen_mask, &n->rays);
-            if (seen) n->visible[1][k]++, n->developments[1][k] |= bit;
+            /* bare earth leaves the pair clear: the screening geometry alone is asked */
+            if (ztv_sight_clear(&c->screen_sight, eye, p, c->screen_mask, &n->rays)) n->visible[1][k]++, n->developments[1][k] |= bit;
         }
 }
 
@@ -267,6 +269,7 @@ int ztv_sweep_map(const ztv_job *job, ztv_sink sink, void *user, ztv_stats *stat
     unsigned threads = 0;
     ztv_cover *cover = NULL;
     ztv_canopy *surface = NULL;
+    ztv_screen screen = {0};
     int rc = 0;
     c.eye = malloc(cells * sizeof *c.eye), c.height = malloc(cells * sizeof *c.height); /* freed below */
     c.where = malloc(cells), c.cls = malloc(cells);
@@ -277,12 +280,15 @@ int ztv_sweep_map(const ztv_job *job, ztv_sink sink, void *user, ztv_stats *stat
     }
     if (job->screened == ZTV_CANOPY) surface = ztv_canopy_new(job->scene, job->accel, err);
     else if (c.screened) cover = ztv_cover_new(job->scene, job->accel, &job->grid, err);
-    if (c.screened && !cover && !surface) {
+    uint64_t pairs = (uint64_t)cells * job->targets->n;
+    unsigned mask = ztv_mode_mask(job->screened);
+    if (c.screened && (cover ? ztv_screen_open(&screen, job->accel, mask, pairs, err) : !surface)) {
         rc = -1;
         goto done;
     }
     c.canopy = surface;
-    if (surface) ztv_sight_init(&c.canopy_sight, ztv_canopy_scene(surface), job->earth);
+    if (c.screened) ztv_sight_init(&c.screen_sight, surface ? ztv_canopy_scene(surface) : screen.scene, job->earth);
+    c.screen_mask = surface ? ~0u : screen.mask;
     if ((rc = cells_set(&c, cover, err))) goto done;
     ground_set(&c, steep);
     threads = job->threads ? job->threads : task_pool_default_threads();
@@ -311,6 +317,7 @@ done:
     }
     ztv_cover_free(cover);
     ztv_canopy_free(surface);
+    ztv_screen_close(&screen);
     free(c.eye), free(c.height), free(c.where), free(c.cls), free(steep);
     counts_free(&c.total);
     for (unsigned w = 0; c.worker && w < threads; w++) counts_free(&c.worker[w]);

@@ -13,6 +13,7 @@
 #include "ztv/ztv_canopy.h"
 #include "ztv/ztv_cover.h"
 #include "ztv/ztv_grid.h"
+#include "ztv/ztv_screen.h"
 #include "ztv/ztv_sight.h"
 #include "ztv/ztv_sweep_map.h"
 
@@ -27,7 +28,9 @@ typedef struct layer_buf {
 typedef struct trace_ctx {
     const ztv_job *job;
     ztv_sight sight;
-    ztv_sight canopy_sight;        /* over the canopy surface alone (canopy mode) */
+    ztv_sight screen_sight;        /* over the screening geometry alone, with screen_mask: the canopy
+                                    * surface in canopy mode, else the plants and objects (ztv_screen.h) */
+    unsigned screen_mask;
     const ztv_cover *cover;        /* vegetation and all modes */
     const ztv_canopy *canopy;      /* canopy mode */
     uint32_t j0, rows;             /* the block being computed */
@@ -55,22 +58,18 @@ typedef struct row_scratch {
 static void pair_sight(const trace_ctx *c, row_scratch *w, int viewpoint, const double eye[3], const double t[3],
                        int *bare, int *screened, uint64_t *rays)
 {
-    unsigned screen_mask = ztv_mode_mask(c->job->screened);
     *screened = 0;
     if (!c->screened || !viewpoint) {
         *bare = ztv_sight_clear(&c->sight, eye, t, ACCEL_MASK_GROUND, rays);
         return;
-    } else if (c->canopy) {
-        /* the canopy surface does not hold the ground's apron and water: both are asked */
+    } else if (c->canopy || w->bare_clear < w->screened_blocked) {
+        /* bare earth hides most: what it hides, the screening hides too, and what it leaves clear
+         * is asked of the screening geometry alone (the canopy surface holds no apron or water) */
         *bare = ztv_sight_clear(&c->sight, eye, t, ACCEL_MASK_GROUND, rays);
-        *screened = *bare && ztv_sight_clear(&c->canopy_sight, eye, t, ~0u, rays);
-    } else if (w->bare_clear < w->screened_blocked) {
-        /* bare earth hides most: what it hides, the screening hides too */
-        *bare = ztv_sight_clear(&c->sight, eye, t, ACCEL_MASK_GROUND, rays);
-        *screened = *bare && ztv_sight_clear(&c->sight, eye, t, screen_mask, rays);
+        *screened = *bare && ztv_sight_clear(&c->screen_sight, eye, t, c->screen_mask, rays);
     } else {
         /* the screening hides little: what it lets through, bare earth does too */
-        *screened = ztv_sight_clear(&c->sight, eye, t, screen_mask, rays);
+        *screened = ztv_sight_clear(&c->sight, eye, t, ztv_mode_mask(c->job->screened), rays);
         *bare = *screened || ztv_sight_clear(&c->sight, eye, t, ACCEL_MASK_GROUND, rays);
     }
     w->bare_clear += *bare, w->screened_blocked += !*screened;
@@ -171,6 +170,7 @@ int ztv_trace(const ztv_job *job, ztv_sink sink, void *user, ztv_stats *stats, e
     int rc = 0;
     ztv_cover *cover = NULL;
     ztv_canopy *surface = NULL;
+    ztv_screen screen = {0};
     c.ground = malloc(n * sizeof *c.ground);
     if (!c.ground || layer_alloc(&c.layer[0], n) || (c.screened && layer_alloc(&c.layer[1], n))) {
         rc = err_nomem(err, "out of memory for a block of %zu cells of the map", n);
@@ -178,12 +178,15 @@ int ztv_trace(const ztv_job *job, ztv_sink sink, void *user, ztv_stats *stats, e
     }
     if (job->screened == ZTV_CANOPY) surface = ztv_canopy_new(job->scene, job->accel, err);
     else if (c.screened) cover = ztv_cover_new(job->scene, job->accel, g, err);
-    if (c.screened && !cover && !surface) {
+    uint64_t pairs = (uint64_t)g->nx * g->ny * job->targets->n;
+    unsigned mask = ztv_mode_mask(job->screened);
+    if (c.screened && (cover ? ztv_screen_open(&screen, job->accel, mask, pairs, err) : !surface)) {
         rc = -1;
         goto done;
     }
     c.cover = cover, c.canopy = surface;
-    if (surface) ztv_sight_init(&c.canopy_sight, ztv_canopy_scene(surface), job->earth);
+    if (c.screened) ztv_sight_init(&c.screen_sight, surface ? ztv_canopy_scene(surface) : screen.scene, job->earth);
+    c.screen_mask = surface ? ~0u : screen.mask;
     unsigned threads = job->threads ? job->threads : render_default_threads();
     progress prog;
     uint32_t parts = job->parts > 1 ? job->parts : 1, part = parts > 1 ? job->part : 0;
@@ -225,6 +228,7 @@ done:
         *stats = (ztv_stats){.cells = c.cells, .pairs = c.pairs, .rays = c.rays, .seconds = progress_now() - t0};
     ztv_cover_free(cover);
     ztv_canopy_free(surface);
+    ztv_screen_close(&screen);
     free(c.ground);
     layer_free(&c.layer[0]);
     layer_free(&c.layer[1]);

@@ -474,9 +474,9 @@ TEST(read_by_its_extension_alone)
 }
 
 /* Assimp 5.2's OBJ reader counts no vertex for a line statement of one vertex but stores one, so
- * a later line's duplicated corner lands one vertex past the mesh's arrays (a heap overflow the
- * test "obj_line_of_one_vertex_valgrind" sees). Point and line statements reach it as comments:
- * the file's triangle alone is read. */
+ * a later line's duplicated corner lands one vertex past the mesh's arrays (a heap overflow that
+ * unit.model_import_valgrind sees in its regression input). Point and line statements reach it as
+ * comments: the file's triangle alone is read. */
 TEST(obj_line_of_one_vertex)
 {
     const char *obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1\nl 1\nl 1 2 3\np 2\n";

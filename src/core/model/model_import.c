@@ -1,10 +1,11 @@
 /* model_import.c — a model file through Assimp into one sylva mesh: the file is checked
  * (readable, a supported extension; a PLY walked whole), Assimp reads it (in the model module,
- * model/model_module.h) triangulated with points and lines dropped; the triangle count over all node instances is checked against the
- * limit before the mesh is allocated at its exact size; then every node's meshes are copied
- * with the node's accumulated transform, the file's frame turned to sylva's (metres, +Z up)
- * and the caller's scale applied; missing normals are made from the triangles. Materials are
- * made on first use (model_material.c). */
+ * model/model_module.h; an OBJ file's points and lines as comments, model/obj_statements.h)
+ * triangulated with points and lines dropped; the triangle count over all node instances is
+ * checked against the limit before the mesh is allocated at its exact size; then every node's
+ * meshes are copied with the node's accumulated transform, the file's frame turned to sylva's
+ * (metres, +Z up) and the caller's scale applied; missing normals are made from the triangles.
+ * Materials are made on first use (model_material.c). */
 #include "model/model_import.h"
 
 #include <assimp/scene.h> /* before metadata.h, which needs what it includes */
@@ -346,7 +347,7 @@ int model_import(scene *s, const char *path, const model_import_options *opt, me
     if (!assimp) return -1;
     model_folder folder;
     if (model_folder_init(&folder, path, o.root, err)) return -1;
-    folder.obj_points_lines = !strcmp(f->ext, "obj"); /* Assimp 5.2 writes past its arrays on some */
+    folder.obj_points_lines = !strcmp(f->ext, "obj"); /* Assimp 5.2 writes past its arrays on some lines */
     model_reading *reading = NULL; /* closed at done */
     const struct aiScene *ai = read_with_assimp(assimp, path, &folder, &reading, err);
     if (!ai) {

@@ -504,6 +504,32 @@ TEST(obj_points_lines_become_comments)
     }
 }
 
+/* Assimp 5.2's filter of the paths a model refers to reads past the end of one ending with "://":
+ * such an OBJ material library or glTF buffer uri crashed the program; both are refused first,
+ * an OBJ statement continued over a line included; a model whose library is named otherwise is
+ * read as before. */
+TEST(references_ending_with_colon_slashes)
+{
+    const char *tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    char obj[256];
+    snprintf(obj, sizeof obj, "# a triangle\nmtllib file://\n%s", tri);
+    expect_error(write_text("url_mtl.obj", obj), NULL, ERR_INPUT,
+                 "url_mtl.obj:2: the material library's name ends with \"://\"");
+    snprintf(obj, sizeof obj, "mtllib \\\nhttp://\r\n%s", tri);
+    expect_error(write_text("continued_mtl.obj", obj), NULL, ERR_INPUT, "ends with \"://\"");
+    const char *gltf = "{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":36,\"uri\":\"file:\\/\\/\"}]}";
+    expect_error(write_text("url_buffer.gltf", gltf), NULL, ERR_INPUT, "a uri ends with \"://\"");
+    write_text("red.mtl", "newmtl red\nKd 1 0 0\n");
+    snprintf(obj, sizeof obj, "mtllib red.mtl\nusemtl red\n%s", tri);
+    scene *s = scene_new();
+    mesh *m = NULL;
+    err_buf err = {{0}};
+    CHECK_INT(model_import(s, write_text("named_mtl.obj", obj), NULL, &m, NULL, &err), 0);
+    CHECK(m && m->nt == 1);
+    mesh_free(m);
+    scene_free(s);
+}
+
 /* Without its module (SYLVA_MODEL_MODULE naming a file that is not there) a model is refused
  * with a sentence naming the module; each case runs in a process of its own, so the module has
  * not been opened yet. */
@@ -558,7 +584,7 @@ TEST(image_mime_type_without_slash)
 TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TEST_CASE(empty_ply_face), TEST_CASE(empty_face_as_assimp_reads_it),
           TEST_CASE(ply_items_hold_their_lines),
           TEST_CASE(image_mime_type_without_slash),
-          TEST_CASE(read_by_its_extension_alone), TEST_CASE(module_missing), TEST_CASE(obj_line_of_one_vertex), TEST_CASE(obj_points_lines_become_comments), TEST_CASE(texture_coordinate_not_finite), TEST_CASE(damaged_glb_chunk), TEST_CASE(y_up_files_are_turned),
+          TEST_CASE(read_by_its_extension_alone), TEST_CASE(module_missing), TEST_CASE(obj_line_of_one_vertex), TEST_CASE(obj_points_lines_become_comments), TEST_CASE(references_ending_with_colon_slashes), TEST_CASE(texture_coordinate_not_finite), TEST_CASE(damaged_glb_chunk), TEST_CASE(y_up_files_are_turned),
           TEST_CASE(obj_with_mtl_texture_points_lines), TEST_CASE(gltf_mirrored_node_keeps_winding),
           TEST_CASE(gltf_node_scale_beyond_single_precision),
           TEST_CASE(clear_errors))

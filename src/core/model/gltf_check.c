@@ -1,11 +1,44 @@
-/* gltf_check.c — every "mimeType" value of a glTF (JSON) or GLB (its JSON chunk is text in the
- * file) must hold a '/' (gltf_check.h). */
+/* gltf_check.c — the mimeType and uri values of a glTF (JSON) or GLB (its JSON chunk is text in
+ * the file) checked before Assimp reads it (gltf_check.h). */
 #include "model/gltf_check.h"
 
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* The string value of the key that starts at data[at] (its quotes included), as [*start, *end)
+ * of data, escapes left as they are; 0 when the key has no string value there. */
+static int string_value(const char *data, size_t size, size_t at, size_t key_len, size_t *start, size_t *end)
+{
+    size_t p = at + key_len;
+    while (p < size && data[p] && strchr(" \t\r\n", data[p])) p++;
+    if (p >= size || data[p] != ':') return 0;
+    for (p++; p < size && data[p] && strchr(" \t\r\n", data[p]); p++) {}
+    if (p >= size || data[p] != '"') return 0;
+    *start = ++p;
+    while (p < size && data[p] != '"') p += data[p] == '\\' ? 2 : 1;
+    *end = p < size ? p : size;
+    return 1;
+}
+
+/* Whether the JSON string text[0..n) (escapes as written) decodes to a path that Assimp's path
+ * filter reads past: 1 when it ends with "://", 2 when it is two backslashes alone, else 0.
+ * Escapes other than \/ and \\ decode to some other byte, which is all the test needs. */
+static int unsafe_uri(const char *text, size_t n)
+{
+    char first[2] = {0}, last[3] = {0};
+    size_t len = 0;
+    for (size_t i = 0; i < n; i++) {
+        char c = text[i];
+        if (c == '\\' && i + 1 < n) c = text[++i] == '/' || text[i] == '\\' ? text[i] : '?';
+        if (len < 2) first[len] = c;
+        memmove(last, last + 1, 2), last[2] = c;
+        len++;
+    }
+    if (len >= 3 && !memcmp(last, "://", 3)) return 1;
+    return len == 2 && first[0] == '\\' && first[1] == '\\' ? 2 : 0;
+}
 
 int gltf_check(const char *path, err_buf *err)
 {
@@ -21,21 +54,23 @@ int gltf_check(const char *path, err_buf *err)
     } else if (fread(data, 1, (size_t)size, f) != (size_t)size) {
         err_fail(err, ERR_INPUT, "%s: cannot read the model: a read error", path);
     } else {
-        static const char key[] = "\"mimeType\"";
+        static const char mime[] = "\"mimeType\"", uri[] = "\"uri\"";
         rc = 0;
-        for (size_t at = 0; !rc && at + sizeof key - 1 <= (size_t)size; at++) {
-            if (memcmp(data + at, key, sizeof key - 1)) continue;
-            size_t p = at + sizeof key - 1;
-            while (p < (size_t)size && strchr(" \t\r\n", data[p]) && data[p]) p++;
-            if (p >= (size_t)size || data[p] != ':') continue;
-            for (p++; p < (size_t)size && strchr(" \t\r\n", data[p]) && data[p]; p++) {}
-            if (p >= (size_t)size || data[p] != '"') continue;
-            size_t start = ++p;
-            while (p < (size_t)size && data[p] != '"' && data[p] != '/') p += data[p] == '\\' ? 2 : 1;
-            if (p < (size_t)size && data[p] == '/') continue;
-            size_t n = (p < (size_t)size ? p : (size_t)size) - start;
-            rc = err_fail(err, ERR_INPUT, "%s: an image's mimeType is '%.*s'; image/png or image/jpeg is valid", path,
-                          (int)(n > 40 ? 40 : n), data + start);
+        size_t start, end;
+        for (size_t at = 0; !rc && at < (size_t)size; at++) {
+            int bad;
+            if (at + sizeof mime - 1 <= (size_t)size && !memcmp(data + at, mime, sizeof mime - 1) &&
+                string_value(data, (size_t)size, at, sizeof mime - 1, &start, &end) &&
+                !memchr(data + start, '/', end - start)) {
+                size_t n = end - start;
+                rc = err_fail(err, ERR_INPUT, "%s: an image's mimeType is '%.*s'; image/png or image/jpeg is valid",
+                              path, (int)(n > 40 ? 40 : n), data + start);
+            } else if (at + sizeof uri - 1 <= (size_t)size && !memcmp(data + at, uri, sizeof uri - 1) &&
+                       string_value(data, (size_t)size, at, sizeof uri - 1, &start, &end) &&
+                       (bad = unsafe_uri(data + start, end - start))) {
+                rc = err_fail(err, ERR_INPUT, "%s: a uri %s; name a file beside the model (model.bin)", path,
+                              bad == 2 ? "is two backslashes" : "ends with \"://\"");
+            }
         }
     }
     free(data);

@@ -1,14 +1,17 @@
-/* gltf_check.h — the image MIME types of a glTF or GLB file checked before Assimp reads it:
- * Assimp 5.2 takes the part of an embedded image's mimeType after its '/' without looking
- * whether there is one, and crashes on a mimeType without it ("png"). The file is read whole
- * and searched for "mimeType" keys; nothing is allocated past the call. */
+/* gltf_check.h — the image MIME types and the URIs of a glTF or GLB file checked before Assimp
+ * reads it: Assimp 5.2 takes the part of an embedded image's mimeType after its '/' without
+ * looking whether there is one, and crashes on a mimeType without it ("png"); and the filter it
+ * hands every file a model refers to through (a buffer's uri) reads past the end of a path ending
+ * with "://" or made of two backslashes alone. The file is read whole and searched for
+ * "mimeType" and "uri" keys; nothing is allocated past the call. */
 #ifndef SYLVA_GLTF_CHECK_H
 #define SYLVA_GLTF_CHECK_H
 
 #include "util/err.h"
 
-/* 0 when every "mimeType" string value in the file holds a '/'; -1 with err set ("path: ...",
- * ERR_INPUT) naming the first that does not, or when the file cannot be read. */
+/* 0 when every "mimeType" string value in the file holds a '/' and no "uri" value ends with "://"
+ * or is two backslashes; -1 with err set ("path: ...", ERR_INPUT) naming the first that fails, or
+ * when the file cannot be read. */
 int gltf_check(const char *path, err_buf *err);
 
 #endif

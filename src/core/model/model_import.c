@@ -24,6 +24,7 @@
 #include "model/model_folder.h"
 #include "model/model_material.h"
 #include "model/gltf_check.h"
+#include "model/obj_check.h"
 #include "model/ply_check.h"
 #include "util/chunk_check.h"
 
@@ -340,6 +341,7 @@ int model_import(scene *s, const char *path, const model_import_options *opt, me
     /* Only the readers of the file's extension read it (model/model_module.h). Assimp's PLY
      * reader hangs on a cut PLY and aborts on a face of no vertices */
     if (!strcmp(f->ext, "ply") && ply_check(path, err)) return -1;
+    if (!strcmp(f->ext, "obj") && obj_check(path, err)) return -1; /* Assimp reads past some library names */
     if (f->gltf && glb_check(path, err)) return -1; /* Assimp allocates what a GLB chunk states */
     if (f->gltf && gltf_check(path, err)) return -1; /* Assimp crashes on a mimeType without '/' */
 

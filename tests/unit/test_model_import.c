@@ -5,6 +5,7 @@
  * OBJ's points and lines are dropped and its MTL texture read; a mirroring node keeps the
  * triangles facing the way their normals do; bad options and files without triangles give
  * clear errors. */
+#include <dirent.h>
 #include <stdint.h>
 
 #include "harness.h"
@@ -402,9 +403,10 @@ TEST(empty_ply_face)
 }
 
 /* A binary PLY whose header's last line runs on in NUL bytes to its newline: Assimp takes the
- * data from just past "end_header", so it reads a face of no vertices where the file's own face
- * lists three; whatever the format, a face of no vertices in what Assimp read is refused, not
- * handed to its triangulation (which aborted the program on it). */
+ * data from just past "end_header" (a NUL ends its line), so it read a face of no vertices where
+ * the file's own face lists three, and triangulation aborted the program on it. The header is
+ * refused where Assimp's reading of it parts from the file's (a face of no vertices in what Assimp
+ * read is also refused, whatever the format). */
 TEST(empty_face_as_assimp_reads_it)
 {
     static const uint8_t tail[] = {
@@ -421,7 +423,7 @@ TEST(empty_face_as_assimp_reads_it)
     if (!f) return;
     put(f, header, strlen(header)), put(f, tail, sizeof tail);
     fclose(f);
-    expect_error(path, NULL, ERR_INPUT, "has no vertices; every face needs at least one");
+    expect_error(path, NULL, ERR_INPUT, "header_run_on.ply:9:11: a PLY header line holds the control character 0x00");
 }
 
 /* Assimp reads an ASCII PLY a line per item: a vertex whose numbers run onto the next line would
@@ -530,6 +532,80 @@ TEST(references_ending_with_colon_slashes)
     scene_free(s);
 }
 
+/* A PLY header is refused where Assimp would read it otherwise than the file's own walk does
+ * (its lines end at \r, \f and NUL too, its words are split by spaces and tabs alone and start
+ * at the line's first byte): a binary PLY whose end_header line carried a vertical tab made
+ * Assimp read its data from elsewhere, past the end of the file, and crashed the program (found
+ * by fuzzing); an end_header ending with \r\n in a binary file, and a property line indented,
+ * likewise. An ASCII file with \r\n line ends is read (ply_items_hold_their_lines). */
+TEST(ply_header_read_as_assimp_reads_it)
+{
+    static const uint8_t body[] = {1, 0, 64, 97, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0};
+    static const struct { const char *name, *header, *want; } cases[] = {
+        {"vertical_tab.ply",
+         "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+         "property list uchar int vertex_indices\nend_header\v?\n",
+         "vertical_tab.ply:6:11: a PLY header line holds the control character 0x0B"},
+        {"crlf_binary.ply",
+         "ply\r\nformat binary_little_endian 1.0\r\nelement vertex 3\r\nproperty float x\r\n"
+         "property list uchar int vertex_indices\r\nend_header\r\n",
+         "crlf_binary.ply:6:11: the end_header line of a binary PLY ends with \\r\\n"},
+        {"indented.ply",
+         "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+         " property list uchar int vertex_indices\nend_header\n",
+         "indented.ply:5:1: a PLY header line starts with a space"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        const char *path = work_path(cases[i].name);
+        FILE *f = fopen(path, "wb");
+        CHECK(f != NULL);
+        if (!f) return;
+        put(f, cases[i].header, strlen(cases[i].header)), put(f, body, sizeof body);
+        fclose(f);
+        expect_error(path, NULL, ERR_INPUT, cases[i].want);
+    }
+}
+
+/* The files a model opened are closed whatever its reader does: Assimp's OBJ reader left its
+ * material library open when it could not read it (a library named ".", the model's folder),
+ * a descriptor and its buffers lost with every such model; a folder is not opened as a file.
+ * A material library that is missing leaves the model to Assimp's default material, as it
+ * did not when Assimp's guesses at other places for it were taken for the model's references
+ * (refused as absolute paths). */
+static int open_descriptors(void)
+{
+    int n = 0;
+    DIR *d = opendir("/proc/self/fd");
+    if (!d) return -1;
+    while (readdir(d)) n++;
+    closedir(d);
+    return n;
+}
+
+TEST(unreadable_material_library_leaves_no_file_open)
+{
+    const char *obj = "mtllib .\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    char paths[2][1100];
+    snprintf(paths[0], sizeof paths[0], "%s", write_text("folder_as_mtl.obj", obj));
+    snprintf(paths[1], sizeof paths[1], "%s", write_text("missing_mtl.obj", "mtllib missing.mtl\nv 0 0 0\n"
+                                                         "v 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+    int before = open_descriptors();
+    if (before < 0) {
+        SKIP("/proc/self/fd cannot be listed here");
+    }
+    for (int i = 0; i < 4; i++) {
+        const char *path = paths[i % 2];
+        scene *s = scene_new();
+        mesh *m = NULL;
+        err_buf err = {{0}};
+        CHECK_INT(model_import(s, path, NULL, &m, NULL, &err), 0);
+        CHECK(m && m->nt == 1);
+        mesh_free(m);
+        scene_free(s);
+    }
+    CHECK_INT(open_descriptors(), before);
+}
+
 /* Without its module (SYLVA_MODEL_MODULE naming a file that is not there) a model is refused
  * with a sentence naming the module; each case runs in a process of its own, so the module has
  * not been opened yet. */
@@ -584,7 +660,9 @@ TEST(image_mime_type_without_slash)
 TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TEST_CASE(empty_ply_face), TEST_CASE(empty_face_as_assimp_reads_it),
           TEST_CASE(ply_items_hold_their_lines),
           TEST_CASE(image_mime_type_without_slash),
-          TEST_CASE(read_by_its_extension_alone), TEST_CASE(module_missing), TEST_CASE(obj_line_of_one_vertex), TEST_CASE(obj_points_lines_become_comments), TEST_CASE(references_ending_with_colon_slashes), TEST_CASE(texture_coordinate_not_finite), TEST_CASE(damaged_glb_chunk), TEST_CASE(y_up_files_are_turned),
+          TEST_CASE(read_by_its_extension_alone), TEST_CASE(module_missing), TEST_CASE(obj_line_of_one_vertex), TEST_CASE(obj_points_lines_become_comments), TEST_CASE(references_ending_with_colon_slashes),
+          TEST_CASE(ply_header_read_as_assimp_reads_it), TEST_CASE(unreadable_material_library_leaves_no_file_open),
+          TEST_CASE(texture_coordinate_not_finite), TEST_CASE(damaged_glb_chunk), TEST_CASE(y_up_files_are_turned),
           TEST_CASE(obj_with_mtl_texture_points_lines), TEST_CASE(gltf_mirrored_node_keeps_winding),
           TEST_CASE(gltf_node_scale_beyond_single_precision),
           TEST_CASE(clear_errors))

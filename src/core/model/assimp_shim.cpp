@@ -31,11 +31,16 @@ struct model_reading {
 
 namespace {
 
-// A file the core's aiFileIO opened, as Assimp's C++ interface reads it.
+// A file the core's aiFileIO opened, as Assimp's C++ interface reads it; it is in its file
+// system's set of open files while it lives (Assimp closes some with Close, deletes others).
 class core_stream : public Assimp::IOStream {
 public:
-    core_stream(aiFileIO *io, aiFile *file) : io_(io), file_(file) {}
-    ~core_stream() override { io_->CloseProc(io_, file_); }
+    core_stream(aiFileIO *io, aiFile *file, std::set<core_stream *> *open) : io_(io), file_(file), open_(open) {}
+    ~core_stream() override
+    {
+        open_->erase(this);
+        io_->CloseProc(io_, file_);
+    }
     size_t Read(void *buffer, size_t size, size_t count) override
     {
         return file_->ReadProc(file_, static_cast<char *>(buffer), size, count);
@@ -49,13 +54,20 @@ public:
 private:
     aiFileIO *io_;
     aiFile *file_;
+    std::set<core_stream *> *open_;
 };
 
 // The core's aiFileIO (the model's folder, model/model_folder.h) as Assimp's file system. A file
-// exists when it opens, as in Assimp's C interface.
+// exists when it opens, as in Assimp's C interface. Assimp's readers leave a file open when they
+// throw between opening and closing it (an OBJ's material library that cannot be read, say): the
+// files still open are closed with the file system, which the importer owns.
 class core_files : public Assimp::IOSystem {
 public:
     explicit core_files(const aiFileIO *io) : io_(*io) {}
+    ~core_files() override
+    {
+        while (!open_.empty()) delete *open_.begin(); // each leaves the set as it goes
+    }
     bool Exists(const char *path) const override
     {
         aiFile *f = io_.OpenProc(&io_, path, "rb");
@@ -67,14 +79,24 @@ public:
     {
         aiFile *f = io_.OpenProc(&io_, path, mode);
         if (!f) return nullptr;
-        Assimp::IOStream *s = new (std::nothrow) core_stream(&io_, f); // deleted by Close
-        if (!s) io_.CloseProc(&io_, f);
+        core_stream *s = new (std::nothrow) core_stream(&io_, f, &open_); // deleted by Assimp or ~core_files
+        if (!s) {
+            io_.CloseProc(&io_, f);
+            return nullptr;
+        }
+        try {
+            open_.insert(s);
+        } catch (...) {
+            delete s;
+            return nullptr;
+        }
         return s;
     }
     void Close(Assimp::IOStream *s) override { delete s; }
 
 private:
-    mutable aiFileIO io_; // the C callbacks take it by non-const pointer
+    mutable aiFileIO io_;           // the C callbacks take it by non-const pointer
+    std::set<core_stream *> open_; // the files opened and not yet closed
 };
 
 // The first face of no vertices in scene, as "mesh M, face F" into why; false when there is none.

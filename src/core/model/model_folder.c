@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 static const char why_absolute[] = "is an absolute path";
@@ -194,7 +195,7 @@ static struct aiFile *folder_open(struct aiFileIO *io, const char *path, const c
         const char *base = joined || !mf->prefix_len ? mf->dir : getcwd(cwd, sizeof cwd);
         const char *why = base ? escape(mf, base, ref, path) : why_climbs;
         if (why) {
-            if (!mf->refused[0]) {
+            if (!mf->refused[0] && !mf->after_missing) {
                 snprintf(mf->refused, sizeof mf->refused, "%s", ref);
                 mf->refused_why = why;
             }
@@ -202,6 +203,12 @@ static struct aiFile *folder_open(struct aiFileIO *io, const char *path, const c
         }
     }
     FILE *s = fopen(path, "rb");
+    struct stat st;
+    if (s && (fstat(fileno(s), &st) != 0 || !S_ISREG(st.st_mode))) { /* a folder opens for reading too */
+        fclose(s);
+        s = NULL;
+    }
+    mf->after_missing = !s;
     if (!s) return NULL;
     struct aiFile *f = calloc(1, sizeof *f);     /* freed by folder_close */
     folder_file *ff = calloc(1, sizeof *ff);     /* freed by folder_close */

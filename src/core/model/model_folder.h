@@ -5,9 +5,12 @@
  * reference is refused when it is an absolute path, when its ".." climb out of the folder, or
  * when the file it reaches lies outside through a symbolic link.
  *
- * Assimp reads through model_folder_io, which opens only files the folder allows and keeps the
- * first refusal (Assimp itself may go on without a refused material library); model_import then
- * fails with model_folder_refusal. Textures are checked with model_folder_check before they are
+ * Assimp reads through model_folder_io, which opens only regular files the folder allows and
+ * keeps the first refusal (Assimp itself may go on without a refused material library);
+ * model_import then fails with model_folder_refusal. A file that is missing is the model's own
+ * affair (Assimp goes on without a material library, fails without a glTF buffer): the paths
+ * Assimp's file system guesses after it (the folder prefixed to an absolute path, pieces of the
+ * name) are refused without being kept, as they are not the model's references. Textures are checked with model_folder_check before they are
  * read. An OBJ model reaches Assimp with its point and line statements read as comments
  * (obj_points_lines, model/obj_statements.h). Only model_folder_io allocates: a handle and its
  * state per open file, freed when Assimp closes it. */
@@ -29,6 +32,8 @@ typedef struct model_folder {
     char refused[1024];               /* the first reference model_folder_io refused, or "" */
     const char *refused_why;          /* why, as model_folder_check says it */
     int out_of_memory;                /* 1: model_folder_io could not allocate a file's handle */
+    int after_missing;                /* 1: a file in the folder did not open, and Assimp has not
+                                         opened one since (its guesses follow) */
     int obj_points_lines;             /* 1: the model file is read with its point and line statements
                                          as comments (an OBJ file; 0 after model_folder_init) */
 } model_folder;

@@ -61,6 +61,26 @@ static int bad(err_buf *err, const char *path, uint32_t line, const char *what)
     return err_at(err, ERR_INPUT, path, line, 1, "%s", what);
 }
 
+/* Whether a header line of len bytes reads alike to this walk and to Assimp: Assimp ends a line
+ * at \r, \n, \f or NUL and matches its words from the line's first byte, separated by spaces
+ * and tabs only, so a line holding another control character or starting with a space would
+ * split differently there (an element or end_header seen on one side alone, the binary data read
+ * from another place); 1, or 0 with the column in err. A blank line reads alike. */
+static int text_as_assimp_reads_it(const char *path, uint32_t line, const char *text, size_t len, err_buf *err)
+{
+    for (size_t i = 0; i < len; i++) {
+        unsigned char c = (unsigned char)text[i];
+        if (c < 0x20 && c != '\t')
+            return !err_at(err, ERR_INPUT, path, line, (uint32_t)i + 1, "a PLY header line holds the control "
+                           "character 0x%02X; header lines hold words separated by spaces", c);
+    }
+    size_t lead = strspn(text, " \t");
+    if (lead && lead < len)
+        return !err_at(err, ERR_INPUT, path, line, 1, "a PLY header line starts with a space; header lines "
+                       "start with their keyword (ply, format, element, property, comment, end_header)");
+    return 1;
+}
+
 /* Parses the header in data[0, size). */
 static int parse_header(const char *path, const char *data, size_t size, ply_header *h, err_buf *err)
 {
@@ -76,11 +96,13 @@ static int parse_header(const char *path, const char *data, size_t size, ply_hea
                        "or not a PLY file)");
         char text[256];
         size_t len = (size_t)(nl - (data + at));
-        if (len && data[at + len - 1] == '\r') len--;
+        int crlf = len && data[at + len - 1] == '\r';
+        len -= (size_t)crlf;
         if (len >= sizeof text) return bad(err, path, line, "a PLY header line is longer than 255 characters");
         memcpy(text, data + at, len);
         text[len] = '\0';
         at = (size_t)(nl - data) + 1;
+        if (!text_as_assimp_reads_it(path, line, text, len, err)) return -1;
         char w[5][64] = {{0}};
         int n = sscanf(text, "%63s %63s %63s %63s %63s", w[0], w[1], w[2], w[3], w[4]);
         if (line == 1) {
@@ -88,7 +110,13 @@ static int parse_header(const char *path, const char *data, size_t size, ply_hea
             continue;
         }
         if (n <= 0 || !strcmp(w[0], "comment") || !strcmp(w[0], "obj_info")) continue;
-        if (!strcmp(w[0], "end_header")) break;
+        if (!strcmp(w[0], "end_header")) {
+            if (crlf && h->format != PLY_ASCII)
+                return err_at(err, ERR_INPUT, path, line, (uint32_t)len + 1, "the end_header line of a binary "
+                              "PLY ends with \\r\\n: Assimp's reader would start the binary data at the \\n; "
+                              "end it with \\n alone");
+            break;
+        }
         if (!strcmp(w[0], "format")) {
             if (n != 3 || strcmp(w[2], "1.0"))
                 return bad(err, path, line, "the format line reads 'format ascii|binary_little_endian|"

@@ -571,7 +571,7 @@ TEST(ply_header_read_as_assimp_reads_it)
  * a descriptor and its buffers lost with every such model; a folder is not opened as a file.
  * A material library that is missing leaves the model to Assimp's default material, as it
  * did not when Assimp's guesses at other places for it were taken for the model's references
- * (refused as absolute paths). */
+ * (refused as absolute paths), and is named for a warning. */
 static int open_descriptors(void)
 {
     int n = 0;
@@ -598,8 +598,10 @@ TEST(unreadable_material_library_leaves_no_file_open)
         scene *s = scene_new();
         mesh *m = NULL;
         err_buf err = {{0}};
-        CHECK_INT(model_import(s, path, NULL, &m, NULL, &err), 0);
+        model_import_info info;
+        CHECK_INT(model_import(s, path, NULL, &m, &info, &err), 0);
         CHECK(m && m->nt == 1);
+        CHECK(!strcmp(info.missing, i % 2 ? "missing.mtl" : "."));
         mesh_free(m);
         scene_free(s);
     }

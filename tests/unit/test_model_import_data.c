@@ -23,7 +23,7 @@ typedef struct loaded {
 } loaded;
 
 /* Imports MODELS/rel with the given scale (0: none) and the files it refers to in MODELS/root
- * (NULL: its own folder); the test fails when it does not load. */
+ * (NULL: its own folder); the test fails when it does not load or misses a file it names. */
 static int load_within(const char *rel, const char *root, double scale, loaded *l)
 {
     *l = (loaded){0};
@@ -40,6 +40,8 @@ static int load_within(const char *rel, const char *root, double scale, loaded *
         fprintf(stderr, "%s\n", err.msg);
         return -1;
     }
+    if (l->info.missing[0]) fprintf(stderr, "%s names '%s', which did not open\n", rel, l->info.missing);
+    CHECK(!l->info.missing[0]); /* every file these models name is there */
     mesh_bounds(l->m, l->lo, l->hi);
     return 0;
 }

@@ -187,10 +187,11 @@ static struct aiFile *folder_open(struct aiFileIO *io, const char *path, const c
 {
     model_folder *mf = (model_folder *)(void *)io->UserData;
     if (!path || strpbrk(mode, "wa+")) return NULL;
+    const char *ref = NULL; /* as the model names the file; NULL for the model itself */
     if (strcmp(path, mf->model)) {
         /* Assimp joins a reference to the model's folder as the model names it */
         int joined = mf->prefix_len && !strncmp(path, mf->model, mf->prefix_len);
-        const char *ref = joined ? path + mf->prefix_len : path;
+        ref = joined ? path + mf->prefix_len : path;
         char cwd[MODEL_FOLDER_PATH_MAX];
         const char *base = joined || !mf->prefix_len ? mf->dir : getcwd(cwd, sizeof cwd);
         const char *why = base ? escape(mf, base, ref, path) : why_climbs;
@@ -208,6 +209,7 @@ static struct aiFile *folder_open(struct aiFileIO *io, const char *path, const c
         fclose(s);
         s = NULL;
     }
+    if (!s && ref && !mf->after_missing && !mf->missing[0]) snprintf(mf->missing, sizeof mf->missing, "%s", ref);
     mf->after_missing = !s;
     if (!s) return NULL;
     struct aiFile *f = calloc(1, sizeof *f);     /* freed by folder_close */

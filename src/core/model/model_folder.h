@@ -10,7 +10,8 @@
  * model_import then fails with model_folder_refusal. A file that is missing is the model's own
  * affair (Assimp goes on without a material library, fails without a glTF buffer): the paths
  * Assimp's file system guesses after it (the folder prefixed to an absolute path, pieces of the
- * name) are refused without being kept, as they are not the model's references. Textures are checked with model_folder_check before they are
+ * name) are refused without being kept, as they are not the model's references; the first such
+ * file is kept in `missing` for a warning. Textures are checked with model_folder_check before they are
  * read. An OBJ model reaches Assimp with its point and line statements read as comments
  * (obj_points_lines, model/obj_statements.h). Only model_folder_io allocates: a handle and its
  * state per open file, freed when Assimp closes it. */
@@ -34,6 +35,8 @@ typedef struct model_folder {
     int out_of_memory;                /* 1: model_folder_io could not allocate a file's handle */
     int after_missing;                /* 1: a file in the folder did not open, and Assimp has not
                                          opened one since (its guesses follow) */
+    char missing[1024];               /* the first file the model names that did not open (missing,
+                                         or not a regular file), as the model names it, or "" */
     int obj_points_lines;             /* 1: the model file is read with its point and line statements
                                          as comments (an OBJ file; 0 after model_folder_init) */
 } model_folder;

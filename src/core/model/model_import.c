@@ -396,9 +396,11 @@ int model_import(scene *s, const char *path, const model_import_options *opt, me
     if (model_materials_init(&cs.mats, ai, assimp, path, f->gltf, err)) goto done;
     cs.mats.folder = &folder;
     if (copy_node(&cs, ai->mRootNode, &frame, err)) goto done;
-    if (info)
+    if (info) {
         *info = (model_import_info){.triangles = cs.m->nt, .meshes = (uint32_t)uses,
                                     .materials = cs.mats.n_materials, .textures = cs.mats.n_textures};
+        snprintf(info->missing, sizeof info->missing, "%s", folder.missing);
+    }
     *out = cs.m;
     cs.m = NULL;
     rc = 0;

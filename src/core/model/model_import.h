@@ -42,6 +42,8 @@ typedef struct model_import_info {
     uint32_t meshes;        /* mesh uses (node, mesh pairs) */
     uint32_t materials;     /* materials added to the scene */
     uint32_t textures;      /* textures added to the scene */
+    char missing[256];      /* the first file the model names that could not be read (a missing
+                               material library, say), which the reader went on without; or "" */
 } model_import_info;
 
 /* Imports the model at path. opt may be NULL (defaults); info may be NULL. Materials are named

@@ -58,7 +58,12 @@ static int32_t model_for_file(object_builder *b, const object_spec *o, err_buf *
     b->files = grown;
     model_import_options opt = {.scale = o->model_scale, .up = (model_up)o->model_up, .root = o->model_root};
     mesh *m = NULL;
-    if (model_import(b->s, o->model_path, &opt, &m, NULL, err)) return -1;
+    model_import_info info;
+    if (model_import(b->s, o->model_path, &opt, &m, &info, err)) return -1;
+    if (info.missing[0]) /* said once a file, as the model is read once */
+        fprintf(stderr, "sylva: warning: %s: the model names the file '%s', which cannot be read (missing, or "
+                "not a file); the model is read without it (an OBJ without its material library takes the "
+                "default material)\n", o->model_path, info.missing);
     int32_t id = scene_add_model(b->s, base_name(o->model_path), m, err);
     if (id < 0) return -1;
     b->files[b->n_files++] = (imported_file){o->model_path, o->model_scale, o->model_up, o->model_root, (uint32_t)id};

@@ -11,8 +11,8 @@
  * affair (Assimp goes on without a material library, fails without a glTF buffer): the paths
  * Assimp's file system guesses after it (the folder prefixed to an absolute path, pieces of the
  * name) are refused without being kept, as they are not the model's references; the first such
- * file is kept in `missing` for a warning. Textures are checked with model_folder_check before they are
- * read. An OBJ model reaches Assimp with its point and line statements read as comments
+ * file is kept in `missing` for a warning. Textures are checked with model_folder_check before
+ * they are read. An OBJ model reaches Assimp with its point and line statements read as comments
  * (obj_points_lines, model/obj_statements.h). Only model_folder_io allocates: a handle and its
  * state per open file, freed when Assimp closes it. */
 #ifndef SYLVA_MODEL_FOLDER_H

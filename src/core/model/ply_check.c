@@ -111,7 +111,7 @@ static int parse_header(const char *path, const char *data, size_t size, ply_hea
         }
         if (n <= 0 || !strcmp(w[0], "comment") || !strcmp(w[0], "obj_info")) continue;
         if (!strcmp(w[0], "end_header")) {
-            if (crlf && h->format != PLY_ASCII)
+            if (crlf && have_format && h->format != PLY_ASCII)
                 return err_at(err, ERR_INPUT, path, line, (uint32_t)len + 1, "the end_header line of a binary "
                               "PLY ends with \\r\\n: Assimp's reader would start the binary data at the \\n; "
                               "end it with \\n alone");

@@ -5,13 +5,13 @@
 #include "model/model_folder.h"
 
 #include "model/obj_statements.h"
+#include "util/file_check.h"
 
 #include <errno.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 static const char why_absolute[] = "is an absolute path";
@@ -203,12 +203,10 @@ static struct aiFile *folder_open(struct aiFileIO *io, const char *path, const c
             return NULL;
         }
     }
-    FILE *s = fopen(path, "rb");
-    struct stat st;
-    if (s && (fstat(fileno(s), &st) != 0 || !S_ISREG(st.st_mode))) { /* a folder opens for reading too */
-        fclose(s);
-        s = NULL;
-    }
+    err_buf why_not = {{0}}; /* not passed on: a file that does not open is said as missing */
+    int fd = file_open_regular(path, NULL, &why_not); /* a folder or FIFO is no file to read */
+    FILE *s = fd >= 0 ? fdopen(fd, "rb") : NULL;
+    if (fd >= 0 && !s) close(fd);
     if (!s && ref && !mf->after_missing && !mf->missing[0]) snprintf(mf->missing, sizeof mf->missing, "%s", ref);
     mf->after_missing = !s;
     if (!s) return NULL;

@@ -440,6 +440,11 @@ TEST(ply_items_hold_their_lines)
     snprintf(text, sizeof text, "%s0 0 0\n1 0 0 9\n0 1 0\n3 0 1 2\n", header);
     expect_error(write_text("extra_number.ply", text), NULL, ERR_INPUT,
                  "extra_number.ply:11:8: item 2 of element 'vertex' is followed by more numbers");
+    /* A list length past what an integer holds is refused before it is converted (undefined). */
+    snprintf(text, sizeof text, "%s0 0 0\n1 0 0\n0 1 0\n66666666666666666666 0 1 2\n", header);
+    expect_error(write_text("list_length_past_integers.ply", text), NULL, ERR_INPUT,
+                 "list_length_past_integers.ply:13:21: item 1 of element 'face' holds something that is not "
+                 "a number (or a list length that is not a whole number up to 10^9)");
     snprintf(text, sizeof text, "%s0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n", header);
     scene *s = scene_new();
     mesh *m = load(s, write_text("crlf.ply", text), 0, MODEL_UP_FILE, NULL);

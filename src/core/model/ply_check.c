@@ -7,6 +7,7 @@
 #include "model/ply_check.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -239,7 +240,8 @@ static int ascii_number(const char *d, size_t size, size_t *at, double *v)
 }
 
 /* The numbers of one item, all on its line; 0, or -1 when the line ends early, -2 on a word that
- * is not a number (or a list length that is not a whole number), -3 on a face of no vertices. */
+ * is not a number (or a list length that is not a whole number up to 10^9), -3 on a face of no
+ * vertices. */
 static int ascii_item(const ply_element *el, const char *d, size_t size, size_t *at)
 {
     for (int k = 0; k < el->n_props; k++) {
@@ -248,7 +250,7 @@ static int ascii_item(const ply_element *el, const char *d, size_t size, size_t 
         int rc = ascii_number(d, size, at, &v);
         if (rc) return rc;
         if (!p->list) continue;
-        if (v < 0 || v != (double)(uint64_t)v || v > 1e9) return -2;
+        if (!(v >= 0 && v <= 1e9) || v != floor(v)) return -2; /* in range before it is converted */
         if (p->face_indices && v == 0) return -3;
         double index;
         for (uint64_t j = 0, n = (uint64_t)v; j < n; j++)
@@ -281,8 +283,8 @@ static int walk_ascii(const char *path, const ply_header *h, const char *d, size
                               "numbers; each item of an ASCII PLY holds one whole line", item, el->name);
             if (rc == -2)
                 return err_at(err, ERR_INPUT, path, line, col, "item %llu of element '%s' holds something "
-                              "that is not a number (or a list length that is not a whole number)", item,
-                              el->name);
+                              "that is not a number (or a list length that is not a whole number up to "
+                              "10^9)", item, el->name);
             if (rc == -3)
                 return err_at(err, ERR_INPUT, path, line, 1, "face %llu lists no vertices; a face lists at "
                               "least one (three for a triangle)", item);

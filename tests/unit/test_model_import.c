@@ -453,6 +453,18 @@ TEST(ply_items_hold_their_lines)
     scene_free(s);
 }
 
+/* Assimp sizes an element's array by its first declaration and fills it from every declaration
+ * of that name: a second, longer 'vertex' element was written past the first's array (found by
+ * fuzzing; valgrind saw the write). Each element is declared once. */
+TEST(ply_element_declared_twice)
+{
+    const char *text = "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nelement vertex 3\n"
+                       "property float x\nproperty float y\nproperty float z\nend_header\n0\n0 0 0\n1 0 0\n0 1 0\n";
+    expect_error(write_text("vertex_twice.ply", text), NULL, ERR_INPUT,
+                 "vertex_twice.ply:5:1: element 'vertex' is declared again (first on line 3); a PLY declares "
+                 "each element once");
+}
+
 /* A PLY named as another format: Assimp reads it as PLY when the extension's reader refuses it,
  * so it is checked as a .ply file is (here a face of no vertices, on which Assimp aborts). */
 TEST(read_by_its_extension_alone)
@@ -665,7 +677,7 @@ TEST(image_mime_type_without_slash)
 }
 
 TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TEST_CASE(empty_ply_face), TEST_CASE(empty_face_as_assimp_reads_it),
-          TEST_CASE(ply_items_hold_their_lines),
+          TEST_CASE(ply_items_hold_their_lines), TEST_CASE(ply_element_declared_twice),
           TEST_CASE(image_mime_type_without_slash),
           TEST_CASE(read_by_its_extension_alone), TEST_CASE(module_missing), TEST_CASE(obj_line_of_one_vertex), TEST_CASE(obj_points_lines_become_comments), TEST_CASE(references_ending_with_colon_slashes),
           TEST_CASE(ply_header_read_as_assimp_reads_it), TEST_CASE(unreadable_material_library_leaves_no_file_open),

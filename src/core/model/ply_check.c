@@ -26,6 +26,7 @@ typedef struct ply_property {
 
 typedef struct ply_element {
     char name[64];
+    uint32_t line;  /* of its element line */
     uint64_t count;
     ply_property props[PLY_MAX_PROPERTIES];
     int n_props;
@@ -136,9 +137,16 @@ static int parse_header(const char *path, const char *data, size_t size, ply_hea
                 return bad(err, path, line, "an element line reads 'element NAME COUNT'");
             if (h->n_elements == PLY_MAX_ELEMENTS)
                 return bad(err, path, line, "more than 64 PLY elements");
+            /* Assimp sizes an element's array by its first declaration and fills it from all of
+             * them: a second, longer 'vertex' element was written past the first's array. */
+            for (int k = 0; k < h->n_elements; k++)
+                if (!strncmp(h->elements[k].name, w[1], sizeof h->elements[k].name - 1))
+                    return err_at(err, ERR_INPUT, path, line, 1, "element '%.63s' is declared again (first "
+                                  "on line %u); a PLY declares each element once", w[1], h->elements[k].line);
             ply_element *e = &h->elements[h->n_elements++];
             memset(e, 0, sizeof *e);
             snprintf(e->name, sizeof e->name, "%s", w[1]);
+            e->line = line;
             e->count = count;
         } else if (!strcmp(w[0], "property")) {
             if (!h->n_elements) return bad(err, path, line, "a property comes before any element");

@@ -20,6 +20,18 @@
 static const char *const extensions[N_FORMATS] = {"obj", "stl", "ply", "gltf", "glb"};
 static const char *model_path[N_FORMATS]; /* in the scratch folder (work_dir.h owns it) */
 
+/* The model at path imported into a new scene, as every input is: model_import's status, and
+ * the mesh into *m (the caller's) when it is 0. */
+static int import(const char *path, mesh **m, err_buf *err)
+{
+    scene *s = scene_new(); /* owned here: the model's materials and textures go into it */
+    if (!s) fuzz_finding(TARGET, "out of memory for a scene");
+    model_import_options opt = {.max_triangles = 1u << 20};
+    int rc = model_import(s, path, &opt, m, NULL, err);
+    scene_free(s);
+    return rc;
+}
+
 /* A run whose model module cannot be opened (a build whose sanitizers leave a symbol of the
  * module unresolved) would refuse every input with a sentence and find nothing: a valid triangle
  * must import before the run starts. */
@@ -30,12 +42,9 @@ static void check_a_model_imports(void)
     fuzz_write_file(TARGET, fuzz_scratch_path("triangle.obj", path, sizeof path), (const uint8_t *)triangle,
                     sizeof triangle - 1);
     err_buf err = {{0}};
-    scene *s = scene_new(); /* owned here */
-    mesh *m = NULL;         /* owned here */
-    model_import_options opt = {.max_triangles = 1u << 20};
-    int failed = !s || model_import(s, path, &opt, &m, NULL, &err) || m->nt != 1;
+    mesh *m = NULL; /* owned here */
+    int failed = import(path, &m, &err) || m->nt != 1;
     mesh_free(m);
-    scene_free(s);
     if (failed) {
         fprintf(stderr, "%s: a one-triangle OBJ does not import, so no input would reach the model reader: %s\n",
                 TARGET, err.msg[0] ? err.msg : "no mesh of one triangle");
@@ -71,16 +80,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     const char *path = model_path[data[0] % N_FORMATS];
     fuzz_write_file(TARGET, path, data + 1, size - 1);
     err_buf err = {{0}};
-    scene *s = scene_new(); /* owned here: the model's materials and textures go into it */
-    if (!s) fuzz_finding(TARGET, "out of memory for a scene");
     mesh *m = NULL; /* owned here */
-    model_import_options opt = {.max_triangles = 1u << 20};
-    if (model_import(s, path, &opt, &m, NULL, &err)) {
+    if (import(path, &m, &err)) {
         if (!err.msg[0]) fuzz_finding(TARGET, "importing failed without a message");
     } else {
         check_mesh(m);
     }
     mesh_free(m);
-    scene_free(s);
     return 0;
 }

@@ -315,11 +315,12 @@ static cost sylva_process(const site *st, const char *sylva, uint32_t n, unsigne
 /* gdal_viewshed once per target of the first n, `parallel` processes at a time. */
 static cost gdal_processes(const site *st, uint32_t n, unsigned parallel)
 {
-    static char text[MAX_TARGETS][4][40];
+    static char text[MAX_TARGETS][4][160]; /* room for st->dir and a file name */
     char *argv[MAX_TARGETS][16], **cmds[MAX_TARGETS];
+    size_t room = sizeof text[0][0];
     for (uint32_t t = 0; t < n; t++) {
-        snprintf(text[t][0], 40, "%.3f", st->p[t][0]), snprintf(text[t][1], 40, "%.3f", st->p[t][1]);
-        snprintf(text[t][2], 40, "%s/gdal_%u.tif", st->dir, t), snprintf(text[t][3], 40, "%g", 1 - REFRACTION);
+        snprintf(text[t][0], room, "%.3f", st->p[t][0]), snprintf(text[t][1], room, "%.3f", st->p[t][1]);
+        snprintf(text[t][2], room, "%s/gdal_%u.tif", st->dir, t), snprintf(text[t][3], room, "%g", 1 - REFRACTION);
         char *a[] = {"gdal_viewshed", "-q", "-ox", text[t][0], "-oy", text[t][1], "-oz", "150", "-tz", "2",
                      "-cc", text[t][3], (char *)st->dem, text[t][2], NULL};
         memcpy(argv[t], a, sizeof a);

@@ -105,17 +105,12 @@ static double ground_at(const ztv_sweep_ground *g, double u, double v)
     return z00 + fy * (z01 - z00) + fx * (z11 - z01);
 }
 
-static double steep_at(const ztv_sweep_ground *g, long a, long b)
+/* The steepness of cell (a, b), or of the window's cell nearest it. */
+static inline double steep_at(const ztv_sweep_ground *g, long a, long b)
 {
-    return g->steep[(size_t)clamp_cell(b, g->ny) * (g->nx - 1) + (size_t)clamp_cell(a, g->nx)];
-}
-
-/* The steepness of the cell a walk enters at a crossing of family kind (0 or 1) at (u, v), going
- * the way of step along that family. Every cell a walk passes is entered across a grid line. */
-static double entered_steepness(const ztv_sweep_ground *g, int kind, long line, int step, double u, double v)
-{
-    long back = step > 0 ? 0 : 1;
-    return kind == 0 ? steep_at(g, line - back, (long)v) : steep_at(g, (long)u, line - back);
+    unsigned long cx = g->nx - 1, cy = g->ny - 1;
+    if ((unsigned long)a >= cx || (unsigned long)b >= cy) a = clamp_cell(a, g->nx), b = clamp_cell(b, g->ny);
+    return g->steep[(size_t)b * cx + (size_t)a];
 }
 
 void ztv_sweep_steepness(const ztv_sweep_ground *g, float *steep)
@@ -148,18 +143,30 @@ void ztv_sweep_steepness(const ztv_sweep_ground *g, float *steep)
     }
 }
 
+/* What a walked ray knows at crossing k: its distance; the horizons with the slack above and below
+ * the ground, and the steepness passed, up to there; and at the crossing alone, the two terms
+ * whose running greatest are the horizons, and the steepness of the cell the ray came through to
+ * it (the segment from the crossing before). */
+enum { AT_T, AT_ABOVE, AT_BELOW, AT_STEEP, AT_UP, AT_DOWN, AT_CELL, AT_N };
+
+/* The greatest of AT_UP, AT_DOWN and AT_CELL over each run of ZTV_SWEEP_RUN crossings, so that
+ * node_status can pass over a run in one step where none of its crossings can change the answer. */
+#define ZTV_SWEEP_RUN 16u
+enum { RUN_UP, RUN_DOWN, RUN_CELL, RUN_N };
+
 int ztv_sweep_scratch_alloc(ztv_sweep_scratch *s, const ztv_sweep_ground *g)
 {
     s->crossings = 2 * (g->nx + g->ny) + 16;
     s->nearest = malloc((size_t)g->nx * g->ny * sizeof *s->nearest);
-    s->crossing = malloc((size_t)s->crossings * 4 * sizeof *s->crossing);
-    return s->nearest && s->crossing ? 0 : -1;
+    s->crossing = malloc((size_t)s->crossings * AT_N * sizeof *s->crossing);
+    s->run = malloc(((size_t)s->crossings / ZTV_SWEEP_RUN + 1) * RUN_N * sizeof *s->run);
+    return s->nearest && s->crossing && s->run ? 0 : -1;
 }
 
 void ztv_sweep_scratch_free(ztv_sweep_scratch *s)
 {
-    free(s->nearest), free(s->crossing);
-    s->nearest = NULL, s->crossing = NULL;
+    free(s->nearest), free(s->crossing), free(s->run);
+    s->nearest = NULL, s->crossing = NULL, s->run = NULL;
 }
 
 /* The sightline from the eye at node (pa, pb), S metres from the target, walked exactly over
@@ -169,8 +176,9 @@ void ztv_sweep_scratch_free(ztv_sweep_scratch *s)
 static int near_walk(const ztv_sweep_ground *g, const target *tg, long pa, long pb, double eye, double S)
 {
     double len = fmin(ZTV_SWEEP_NEAR * g->cell, S), c = g->c, least = eye - node_z(g, pa, pb), rprev = 0;
+    double per_S = 1 / S, rise = (tg->z - eye) * per_S;
     walker w;
-    walker_start(&w, (double)pa, (double)pb, (tg->u - pa) / S, (tg->v - pb) / S);
+    walker_start(&w, (double)pa, (double)pb, (tg->u - pa) * per_S, (tg->v - pb) * per_S);
     for (;;) {
         int kind;
         long line;
@@ -178,10 +186,11 @@ static int near_walk(const ztv_sweep_ground *g, const target *tg, long pa, long 
         if (!(r <= S)) break;
         double h = crossing_height(g, kind, line, pa + w.a * r, pb + w.b * r);
         if (isnan(h)) continue;
-        double m = eye + r / S * (tg->z - eye) - c * r * (S - r) - h;
+        double m = eye + r * rise - c * r * (S - r) - h;
         if (m < -ZTV_SWEEP_SLACK && r >= 2 * ZTV_SIGHT_GAP && r <= S - 2 * ZTV_SIGHT_GAP) return ZTV_HIDDEN;
         /* between crossings the ground is straight and the sightline bows down by c dr^2 / 4 at most */
-        least = fmin(least, m - 0.25 * c * (r - rprev) * (r - rprev));
+        double bowed = m - 0.25 * c * (r - rprev) * (r - rprev);
+        least = bowed < least ? bowed : least;
         rprev = r;
         if (r >= len) break;
     }
@@ -189,42 +198,64 @@ static int near_walk(const ztv_sweep_ground *g, const target *tg, long pa, long 
     return least > ZTV_SWEEP_SLACK ? ZTV_SEEN : ZTV_DOUBT;
 }
 
-/* What a walked ray knows at crossing k: [0] its distance, [1] and [2] the horizons with the
- * slack above and below the ground, [3] the steepness passed. */
-enum { AT_T, AT_ABOVE, AT_BELOW, AT_STEEP };
-
 /* The first of the n crossings recorded at distance t or beyond (the last when none): searched
  * back from the last, as t lies a few cells short of it. */
 static uint32_t crossing_at(const double *rec, uint32_t n, double t)
 {
     uint32_t k = n - 1;
-    while (k > 0 && rec[4 * (k - 1) + AT_T] >= t) k--;
+    while (k > 0 && rec[AT_N * (k - 1) + AT_T] >= t) k--;
     return k;
 }
 
 /* The status of node (pa, pb), which the ray passes D metres away at its n-th crossing (t from
  * the target). */
-static int node_status(const ztv_sweep_ground *g, const target *tg, const double *rec, uint32_t n, long pa, long pb,
-                       double eye, double D, double t)
+static int node_status(const ztv_sweep_ground *g, const target *tg, const ztv_sweep_scratch *s, uint32_t n, long pa,
+                       long pb, double eye, double D, double t)
 {
+    const double *rec = s->crossing;
     double eu = pa - tg->u, ev = pb - tg->v, S = sqrt(eu * eu + ev * ev) * g->cell, c = g->c;
     if (S < 1e-3) return ZTV_DOUBT;
-    /* the ends' gaps cannot hide what the bound below blames on the ground next to them */
-    double need = ZTV_SIGHT_GAP * (g->steepest + fabs(eye - tg->z) / S + c * S) + ZTV_SWEEP_SLACK;
-    int may_hide = g->observer_height >= need && tg->height >= need;
     double rnear = ZTV_SWEEP_NEAR * g->cell;
     if (S <= rnear) return near_walk(g, tg, pa, pb, eye, S);
+    double per_S = 1 / S, per_t = 1 / t;
+    /* the ends' gaps cannot hide what the bound below blames on the ground next to them */
+    double need = ZTV_SIGHT_GAP * (g->steepest + fabs(eye - tg->z) * per_S + c * S) + ZTV_SWEEP_SLACK;
+    int may_hide = g->observer_height >= need && tg->height >= need;
     /* the rest: the ray as far as the share 1 - rnear / S of the way to the node */
-    const double *at = rec + 4 * crossing_at(rec, n, t * (1 - rnear / S));
-    double lam = S * S / (t * t), skew = c * fabs(lam - 1) * t, drop = c * lam * t, G = at[AT_STEEP];
-    if (may_hide && at[AT_BELOW] - skew > (eye - tg->z + G * D) / t - drop) return ZTV_HIDDEN;
-    int far_clear = at[AT_ABOVE] + skew < (eye - tg->z - G * D) / t - drop;
+    uint32_t last = crossing_at(rec, n, t * (1 - rnear * per_S));
+    const double *at = rec + AT_N * last;
+    double lam = S * S * per_t * per_t, skew = c * fabs(lam - 1) * t, drop = c * lam * t, G = at[AT_STEEP];
+    double sight = (eye - tg->z) * per_t - drop, off = D * per_t; /* the sightline's slope; the offset's share */
+    if (may_hide && at[AT_BELOW] - skew - G * off > sight) return ZTV_HIDDEN;
+    int far_clear = at[AT_ABOVE] + skew + G * off < sight;
     int near = near_walk(g, tg, pa, pb, eye, S);
-    return near == ZTV_HIDDEN ? ZTV_HIDDEN : near == ZTV_SEEN && far_clear ? ZTV_SEEN : ZTV_DOUBT;
+    if (near == ZTV_HIDDEN || (near == ZTV_SEEN && far_clear)) return near;
+    if (near == ZTV_DOUBT && !may_hide) return ZTV_DOUBT;
+    /* the bound again with each crossing's own steepness in place of the steepest passed: the
+     * ground under the sightline at a crossing differs from the ray's by that of the cell the ray
+     * came through, times the offset there; crossing by crossing, till the answer is known */
+    int seen = near == ZTV_SEEN;
+    for (uint32_t k = 0; k <= last && (seen || may_hide);) {
+        const double *run = s->run + RUN_N * (k / ZTV_SWEEP_RUN);
+        if (k % ZTV_SWEEP_RUN == 0 && k + ZTV_SWEEP_RUN - 1 <= last) { /* a whole run */
+            if (may_hide && run[RUN_DOWN] - skew - run[RUN_CELL] * off > sight) return ZTV_HIDDEN;
+            int may_cloud = seen && run[RUN_UP] + skew + run[RUN_CELL] * off >= sight;
+            if (!may_cloud && !(may_hide && run[RUN_DOWN] - skew > sight)) {
+                k += ZTV_SWEEP_RUN;
+                continue;
+            }
+        }
+        const double *r = rec + AT_N * k++;
+        if (seen && r[AT_UP] + skew + r[AT_CELL] * off >= sight) seen = 0;
+        if (may_hide && r[AT_DOWN] - skew - r[AT_CELL] * off > sight) return ZTV_HIDDEN;
+    }
+    return seen ? ZTV_SEEN : ZTV_DOUBT;
 }
 
 /* Walks the ray from the target to (ue, ve), trying each node not yet settled that it passes
- * nearer than any ray before it. */
+ * nearer than any ray before it. The walker's state is held in locals and each family's
+ * crossing has its own code, the edge's nodes read directly where the edge lies inside the
+ * window (crossing_height's cases, without its clamps), since this loop is most of a map's time. */
 static void walk_ray(const ztv_sweep_ground *g, const target *tg, double ue, double ve, uint8_t *status,
                      ztv_sweep_scratch *s)
 {
@@ -233,32 +264,78 @@ static void walk_ray(const ztv_sweep_ground *g, const target *tg, double ue, dou
     walker w;
     walker_start(&w, tg->u, tg->v, du / len, dv / len);
     int own = fabs(du) >= fabs(dv) ? 0 : 1; /* the family of lines whose nodes it settles */
-    double above = -INFINITY, below = -INFINITY, tprev = 0;
+    double above = -INFINITY, below = -INFINITY, tprev = 0, tend = len * (1 + 1e-12), zt = tg->z;
     double steep = steep_at(g, (long)floor(tg->u), (long)floor(tg->v));
+    double t0 = w.t[0], t1 = w.t[1], t2 = w.t[2];
+    long n0 = w.next[0], n1 = w.next[1], n2 = w.next[2];
+    const long cx = (long)g->nx - 1, cy = (long)g->ny - 1; /* the window's cells */
+    const long back0 = w.step[0] < 0, back1 = w.step[1] < 0;
+    const size_t stride = g->stride;
+    const float *z = g->z + (size_t)g->j0 * stride + g->i0; /* node (0, 0) of the window */
     uint32_t n = 0;
+    double cell = steep; /* the steepness of the cell the ray is in */
     while (n < s->crossings) {
         int kind;
         long line;
-        double t = walker_next(&w, &kind, &line);
-        if (!(t <= len * (1 + 1e-12))) break;
-        double u = tg->u + w.a * t, v = tg->v + w.b * t, h = crossing_height(g, kind, line, u, v);
-        if (isnan(h)) continue;
-        if (kind < 2) steep = most(steep, entered_steepness(g, kind, line, w.step[kind], u, v));
-        double inv = 1.0 / t, base = (h - tg->z) * inv - c * t;
+        double t, u, v, h, came = cell;
+        if (t0 <= t1 && t0 <= t2) { /* u = line: the edge between (line, b) and (line, b + 1) */
+            t = t0, line = n0, kind = 0;
+            n0 += w.step[0], t0 = (n0 - w.from[0]) * w.per[0];
+            if (!(t <= tend)) break;
+            u = tg->u + w.a * t, v = tg->v + w.b * t;
+            long b = (long)v, a = line - back0; /* a: the cell entered */
+            if ((unsigned long)line <= (unsigned long)cx && (unsigned long)b < (unsigned long)cy) {
+                const float *q = z + (size_t)b * stride + (size_t)line;
+                h = q[0] + (v - b) * (q[stride] - q[0]);
+            } else if (isnan(h = crossing_height(g, 0, line, u, v)))
+                continue;
+            cell = steep_at(g, a, b), steep = most(steep, cell);
+        } else if (t1 <= t2) { /* v = line: the edge between (a, line) and (a + 1, line) */
+            t = t1, line = n1, kind = 1;
+            n1 += w.step[1], t1 = (n1 - w.from[1]) * w.per[1];
+            if (!(t <= tend)) break;
+            u = tg->u + w.a * t, v = tg->v + w.b * t;
+            long a = (long)u, b = line - back1;
+            if ((unsigned long)a < (unsigned long)cx && (unsigned long)line <= (unsigned long)cy) {
+                const float *q = z + (size_t)line * stride + (size_t)a;
+                h = q[0] + (u - a) * (q[1] - q[0]);
+            } else if (isnan(h = crossing_height(g, 1, line, u, v)))
+                continue;
+            cell = steep_at(g, a, b), steep = most(steep, cell);
+        } else { /* u - v = line: the diagonal of cell (a, a - line) */
+            t = t2, line = n2, kind = 2;
+            n2 += w.step[2], t2 = (n2 - w.from[2]) * w.per[2];
+            if (!(t <= tend)) break;
+            u = tg->u + w.a * t, v = tg->v + w.b * t;
+            long a = (long)u, b = a - line;
+            if ((unsigned long)a < (unsigned long)cx && (unsigned long)b < (unsigned long)cy) {
+                const float *q = z + (size_t)b * stride + (size_t)a;
+                h = q[0] + (u - a) * (q[stride + 1] - q[0]);
+            } else if (isnan(h = crossing_height(g, 2, line, u, v)))
+                continue;
+        }
+        double inv = 1.0 / t, base = (h - zt) * inv - c * t;
         /* between crossings (h - zT) / t - c t exceeds its value at the far one by c dt at most */
-        above = most(above, base + ZTV_SWEEP_SLACK * inv + c * (t - tprev));
-        below = most(below, base - ZTV_SWEEP_SLACK * inv);
+        double up = base + ZTV_SWEEP_SLACK * inv + c * (t - tprev), down = base - ZTV_SWEEP_SLACK * inv;
+        above = most(above, up), below = most(below, down);
         tprev = t;
-        double *r = s->crossing + 4 * (size_t)n++;
+        double *r = s->crossing + AT_N * (size_t)n++;
         r[AT_T] = t, r[AT_ABOVE] = above, r[AT_BELOW] = below, r[AT_STEEP] = steep;
+        r[AT_UP] = up, r[AT_DOWN] = down, r[AT_CELL] = came;
+        double *run = s->run + RUN_N * ((n - 1) / ZTV_SWEEP_RUN);
+        int first = (n - 1) % ZTV_SWEEP_RUN == 0; /* of its run */
+        run[RUN_UP] = first ? up : most(run[RUN_UP], up);
+        run[RUN_DOWN] = first ? down : most(run[RUN_DOWN], down);
+        run[RUN_CELL] = first ? came : most(run[RUN_CELL], came);
         if (kind != own) continue;
         long pa = own ? floor_long(u + 0.5) : line, pb = own ? line : floor_long(v + 0.5);
         if (pa < 0 || pb < 0 || pa >= (long)g->nx || pb >= (long)g->ny) continue;
         size_t k = (size_t)(g->ny - 1 - pb) * g->nx + (size_t)pa;
         float D = (float)(fabs(own ? u - pa : v - pb) * g->cell);
-        if (status[k] != ZTV_DOUBT || isnan(g->eye[k]) || !(D < s->nearest[k])) continue;
-        s->nearest[k] = D;
-        status[k] = (uint8_t)node_status(g, tg, s->crossing, n, pa, pb, g->eye[k], D, t);
+        if (!(D < s->nearest[k])) continue; /* settled, no observer, or a nearer ray tried it */
+        int st = node_status(g, tg, s, n, pa, pb, g->eye[k], D, t);
+        status[k] = (uint8_t)st;
+        s->nearest[k] = st == ZTV_DOUBT ? D : -1.0f;
     }
 }
 
@@ -266,20 +343,17 @@ void ztv_sweep_target(const ztv_sweep_ground *g, const double t[3], uint8_t *sta
 {
     size_t n = (size_t)g->nx * g->ny;
     memset(status, ZTV_DOUBT, n);
-    for (size_t k = 0; k < n; k++) s->nearest[k] = INFINITY;
+    for (size_t k = 0; k < n; k++) s->nearest[k] = isnan(g->eye[k]) ? -1.0f : INFINITY;
     target tg = {(t[0] - g->x0) / g->cell - g->i0, (t[1] - g->y0) / g->cell - g->j0, t[2], 0};
     double umax = g->nx - 1, vmax = g->ny - 1;
     if (!(tg.u >= 0 && tg.v >= 0 && tg.u <= umax && tg.v <= vmax)) return; /* all doubtful */
     tg.height = tg.z - ground_at(g, tg.u, tg.v);
-    uint32_t m = ZTV_SWEEP_RAYS;
-    for (uint32_t k = 0; k <= g->nx * m - m; k++) {
-        double u = (double)k / m;
-        walk_ray(g, &tg, u, 0, status, s);
-        walk_ray(g, &tg, u, vmax, status, s);
-    }
-    for (uint32_t k = 0; k <= g->ny * m - m; k++) {
-        double v = (double)k / m;
-        walk_ray(g, &tg, 0, v, status, s);
-        walk_ray(g, &tg, umax, v, status, s);
-    }
+    /* round the perimeter, so that each ray walks over the ground the one before it left in the
+     * cache: along the south edge eastwards, up the east edge, back along the north edge, down the
+     * west edge (each corner twice) */
+    uint32_t m = ZTV_SWEEP_RAYS, east = g->nx * m - m, north = g->ny * m - m;
+    for (uint32_t k = 0; k <= east; k++) walk_ray(g, &tg, (double)k / m, 0, status, s);
+    for (uint32_t k = 0; k <= north; k++) walk_ray(g, &tg, umax, (double)k / m, status, s);
+    for (uint32_t k = east + 1; k-- > 0;) walk_ray(g, &tg, (double)k / m, vmax, status, s);
+    for (uint32_t k = north + 1; k-- > 0;) walk_ray(g, &tg, 0, (double)k / m, status, s);
 }

@@ -15,13 +15,14 @@
  * ZTV_SWEEP_NEAR cells of the sightline, next to P, are walked exactly on the sightline itself.
  *
  * The exact sightline to P and the ray differ by at most G u D in ground height at share u of the
- * way (G the steepest triangle near the ray so far), and sylva's Embree sightline differs from
- * the exact one by ZTV_SWEEP_SLACK at most (chords, single precision): a node is declared seen
- * or hidden only when the answer holds with both margins; otherwise it is doubtful, and the
- * Embree sightline decides it. So the sweep never changes an answer; it only spares the
- * sightlines it is sure of. Its cost is a few crossings per node: the rays' (about 2 ZTV_SWEEP_RAYS
- * crossings a node they pass) and the walk next to P (about 3 ZTV_SWEEP_NEAR); nothing is
- * allocated here.
+ * way (G the steepest triangle near the ray so far; where that leaves the answer open, the
+ * steepness near the ray crossing by crossing), and sylva's Embree sightline differs from the
+ * exact one by ZTV_SWEEP_SLACK at most (chords, single precision): a node is declared seen or
+ * hidden only when the answer holds with both margins; otherwise it is doubtful, and the Embree
+ * sightline decides it. So the sweep never changes an answer; it only spares the sightlines it
+ * is sure of (docs/models/ztv_sweep.md). Its cost is a few crossings per node: the rays' (about 2
+ * ZTV_SWEEP_RAYS crossings a node they pass) and the walk next to P (about 3 ZTV_SWEEP_NEAR);
+ * nothing is allocated here.
  */
 #ifndef SYLVA_ZTV_SWEEP_H
 #define SYLVA_ZTV_SWEEP_H
@@ -56,8 +57,10 @@ void ztv_sweep_steepness(const ztv_sweep_ground *g, float *steep);
 
 /* A worker's scratch for one window; owned by the caller. */
 typedef struct ztv_sweep_scratch {
-    float *nearest;            /* nx ny: the distance D of each node's ray so far */
-    double *crossing;          /* 4 per crossing of the longest ray: t, the two horizons, G */
+    float *nearest;            /* nx ny: the distance D of the nearest ray that tried each node, -1
+                                * once it is settled or where no observer stands */
+    double *crossing;          /* what the longest ray knows at each of its crossings (ztv_sweep.c) */
+    double *run;               /* the same, the greatest over runs of crossings (ztv_sweep.c) */
     uint32_t crossings;        /* room of crossing, in crossings */
 } ztv_sweep_scratch;
 

@@ -147,14 +147,14 @@ static void target_pass(sweep_ctx *c, counts *n, uint32_t t)
         for (uint32_t a = 0; a < c->w.nx; a++) {
             size_t k = (size_t)r * c->w.nx + a;
             if (isnan(c->eye[k])) continue;
-            double x, y;
-            ztv_cell_centre(&job->grid, c->w.q0 + a, c->w.r0 + r, &x, &y);
-            double eye[3] = {x, y, c->eye[k]};
             uint8_t s = n->status[k];
-            int bare = s == ZTV_SEEN;
-            if (s == ZTV_DOUBT) bare = ztv_sight_clear(&c->sight, eye, p, ACCEL_MASK_GROUND, &n->rays);
             n->swept += s != ZTV_DOUBT, n->pairs++;
-            if (!bare) continue;
+            if (s == ZTV_HIDDEN) continue;
+            /* the cell's position only where a sightline is cast */
+            double eye[3] = {0, 0, c->eye[k]};
+            if (s == ZTV_DOUBT || (c->screened && c->cls[k] == ZTV_OPEN))
+                ztv_cell_centre(&job->grid, c->w.q0 + a, c->w.r0 + r, &eye[0], &eye[1]);
+            if (s == ZTV_DOUBT && !ztv_sight_clear(&c->sight, eye, p, ACCEL_MASK_GROUND, &n->rays)) continue;
             n->visible[0][k]++, n->developments[0][k] |= bit;
             if (!c->screened || c->cls[k] != ZTV_OPEN) continue;
             /* bare earth leaves the pair clear: the screening geometry alone is asked */

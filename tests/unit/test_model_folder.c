@@ -72,7 +72,7 @@ static const char *gltf(const char *name, const char *buffer_uri, const char *im
 /* model/NAME: an OBJ triangle with the material library and map given. */
 static const char *obj(const char *name, const char *mtllib, const char *map)
 {
-    char text[512], mtl[512], file[256], mtl_file[256];
+    char text[2048], mtl[512], file[256], mtl_file[256];
     snprintf(mtl_file, sizeof mtl_file, "model/%s.mtl", name);
     snprintf(mtl, sizeof mtl, "newmtl m\nKd 0.5 0.5 0.5\nmap_Kd %s\n", map);
     write_string(mtl_file, mtl);
@@ -147,6 +147,13 @@ TEST(obj_material_libraries_and_maps_stay_in_the_folder)
     refused(obj("map_abs.obj", NULL, abs_tex), abs_tex, "is an absolute path");
     refused(obj("map_back.obj", NULL, "..\\outside\\tex.png"), "..\\outside\\tex.png", "climbs out of the model's folder");
     refused(obj("map_drive.obj", NULL, "C:\\textures\\tex.png"), "C:\\textures\\tex.png", "is an absolute path");
+    /* after a library that is missing, Assimp guesses absolute places for it (refused, not the
+     * model's); a library the model names after it is judged as any other */
+    refused(obj("up_after_missing.obj", "missing.mtl\nmtllib ../outside/grey.mtl", "sub/tex.png"),
+            "../outside/grey.mtl", "climbs out of the model's folder");
+    char abs_lib[1400];
+    snprintf(abs_lib, sizeof abs_lib, "missing.mtl\nmtllib %s", at("outside/grey.mtl"));
+    refused(obj("abs_after_missing.obj", abs_lib, "sub/tex.png"), at("outside/grey.mtl"), "is an absolute path");
     accepted(at("model/map_up.obj"), work_dir());
 }
 

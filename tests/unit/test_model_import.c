@@ -463,6 +463,13 @@ TEST(ply_element_declared_twice)
     expect_error(write_text("vertex_twice.ply", text), NULL, ERR_INPUT,
                  "vertex_twice.ply:5:1: element 'vertex' is declared again (first on line 3); a PLY declares "
                  "each element once");
+    /* a name longer than the header's words are read: refused as such, not as a line of too many
+     * words (nor two names told apart by their first 63 characters alone) */
+    char long_name[200];
+    snprintf(long_name, sizeof long_name, "ply\nformat ascii 1.0\nelement v%070d 1\nproperty float x\n"
+             "end_header\n0\n", 0);
+    expect_error(write_text("long_name.ply", long_name), NULL, ERR_INPUT,
+                 "long_name.ply:3:9: a name in a PLY header is longer than 63 characters");
 }
 
 /* A PLY named as another format: Assimp reads it as PLY when the extension's reader refuses it,

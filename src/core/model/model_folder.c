@@ -182,6 +182,13 @@ static enum aiReturn file_seek(struct aiFile *f, size_t offset, enum aiOrigin or
 
 static void file_flush(struct aiFile *f) { (void)f; }
 
+/* 1 when ref is one of the places Assimp's file system guesses for a file that did not open: an
+ * absolute name found within the path it asked for then. */
+static int guess(const model_folder *mf, const char *ref)
+{
+    return (ref[0] == '/' || ref[0] == '\\') && mf->failed[0] && strstr(mf->failed, ref);
+}
+
 /* Opens path for Assimp when it is the model or a file its folder allows; a refusal is kept. */
 static struct aiFile *folder_open(struct aiFileIO *io, const char *path, const char *mode)
 {
@@ -192,14 +199,13 @@ static struct aiFile *folder_open(struct aiFileIO *io, const char *path, const c
         /* Assimp joins a reference to the model's folder as the model names it */
         int joined = mf->prefix_len && !strncmp(path, mf->model, mf->prefix_len);
         ref = joined ? path + mf->prefix_len : path;
+        if (guess(mf, ref)) return NULL; /* absolute: refused, and not the model's */
         char cwd[MODEL_FOLDER_PATH_MAX];
         const char *base = joined || !mf->prefix_len ? mf->dir : getcwd(cwd, sizeof cwd);
         const char *why = base ? escape(mf, base, ref, path) : why_climbs;
         if (why) {
-            if (!mf->refused[0] && !mf->after_missing) {
-                snprintf(mf->refused, sizeof mf->refused, "%s", ref);
-                mf->refused_why = why;
-            }
+            if (!mf->refused[0]) snprintf(mf->refused, sizeof mf->refused, "%s", ref), mf->refused_why = why;
+            snprintf(mf->failed, sizeof mf->failed, "%s", path);
             return NULL;
         }
     }
@@ -207,8 +213,8 @@ static struct aiFile *folder_open(struct aiFileIO *io, const char *path, const c
     int fd = file_open_regular(path, NULL, &why_not); /* a folder or FIFO is no file to read */
     FILE *s = fd >= 0 ? fdopen(fd, "rb") : NULL;
     if (fd >= 0 && !s) close(fd);
-    if (!s && ref && !mf->after_missing && !mf->missing[0]) snprintf(mf->missing, sizeof mf->missing, "%s", ref);
-    mf->after_missing = !s;
+    if (!s && ref && !mf->missing[0]) snprintf(mf->missing, sizeof mf->missing, "%s", ref);
+    if (!s) snprintf(mf->failed, sizeof mf->failed, "%s", path);
     if (!s) return NULL;
     struct aiFile *f = calloc(1, sizeof *f);     /* freed by folder_close */
     folder_file *ff = calloc(1, sizeof *ff);     /* freed by folder_close */

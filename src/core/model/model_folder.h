@@ -8,13 +8,16 @@
  * Assimp reads through model_folder_io, which opens only regular files the folder allows and
  * keeps the first refusal (Assimp itself may go on without a refused material library);
  * model_import then fails with model_folder_refusal. A file that is missing is the model's own
- * affair (Assimp goes on without a material library, fails without a glTF buffer): the paths
- * Assimp's file system guesses after it (the folder prefixed to an absolute path, pieces of the
- * name) are refused without being kept, as they are not the model's references; the first such
- * file is kept in `missing` for a warning. Textures are checked with model_folder_check before
- * they are read. An OBJ model reaches Assimp with its point and line statements read as comments
- * (obj_points_lines, model/obj_statements.h). Only model_folder_io allocates: a handle and its
- * state per open file, freed when Assimp closes it. */
+ * affair (Assimp goes on without a material library, fails without a glTF buffer); the first
+ * such file is kept in `missing` for a warning. After a file that did not open, Assimp's file
+ * system guesses other places for it: the folder prefixed to the absolute path it asked for, and
+ * pieces of that path, each an absolute name found within it. Those are refused without being
+ * kept, as they are not the model's references; a reference the model names after them is kept
+ * as any other (an absolute one that happens to lie within the path before it is refused but
+ * taken for a guess). Textures are checked with model_folder_check before they are read. An OBJ
+ * model reaches Assimp with its point and line statements read as comments (obj_points_lines,
+ * model/obj_statements.h). Only model_folder_io allocates: a handle and its state per open file,
+ * freed when Assimp closes it. */
 #ifndef SYLVA_MODEL_FOLDER_H
 #define SYLVA_MODEL_FOLDER_H
 
@@ -33,8 +36,8 @@ typedef struct model_folder {
     char refused[1024];               /* the first reference model_folder_io refused, or "" */
     const char *refused_why;          /* why, as model_folder_check says it */
     int out_of_memory;                /* 1: model_folder_io could not allocate a file's handle */
-    int after_missing;                /* 1: a file in the folder did not open, and Assimp has not
-                                         opened one since (its guesses follow) */
+    char failed[MODEL_FOLDER_PATH_MAX]; /* the last file the model names that did not open or was
+                                         refused, as Assimp asked for it (its guesses follow) */
     char missing[1024];               /* the first file the model names that did not open (missing,
                                          or not a regular file), as the model names it, or "" */
     int obj_points_lines;             /* 1: the model file is read with its point and line statements

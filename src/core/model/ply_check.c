@@ -6,6 +6,7 @@
  * properties in order. */
 #include "model/ply_check.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <stdint.h>
@@ -112,6 +113,11 @@ static int parse_header(const char *path, const char *data, size_t size, ply_hea
             continue;
         }
         if (n <= 0 || !strcmp(w[0], "comment") || !strcmp(w[0], "obj_info")) continue;
+        /* the words were read 63 bytes at a time: a longer one would have been split in two */
+        for (size_t i = 0, run = 0; i < len; i++)
+            if ((run = isspace((unsigned char)text[i]) ? 0 : run + 1) > 63)
+                return err_at(err, ERR_INPUT, path, line, (uint32_t)(i - 62), "a name in a PLY header is longer "
+                              "than 63 characters");
         if (!strcmp(w[0], "end_header")) {
             if (crlf && have_format && h->format != PLY_ASCII)
                 return err_at(err, ERR_INPUT, path, line, (uint32_t)len + 1, "the end_header line of a binary "
@@ -140,8 +146,8 @@ static int parse_header(const char *path, const char *data, size_t size, ply_hea
             /* Assimp sizes an element's array by its first declaration and fills it from all of
              * them: a second, longer 'vertex' element was written past the first's array. */
             for (int k = 0; k < h->n_elements; k++)
-                if (!strncmp(h->elements[k].name, w[1], sizeof h->elements[k].name - 1))
-                    return err_at(err, ERR_INPUT, path, line, 1, "element '%.63s' is declared again (first "
+                if (!strcmp(h->elements[k].name, w[1]))
+                    return err_at(err, ERR_INPUT, path, line, 1, "element '%s' is declared again (first "
                                   "on line %u); a PLY declares each element once", w[1], h->elements[k].line);
             ply_element *e = &h->elements[h->n_elements++];
             memset(e, 0, sizeof *e);

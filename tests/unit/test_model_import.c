@@ -469,7 +469,7 @@ TEST(ply_element_declared_twice)
     snprintf(long_name, sizeof long_name, "ply\nformat ascii 1.0\nelement v%070d 1\nproperty float x\n"
              "end_header\n0\n", 0);
     expect_error(write_text("long_name.ply", long_name), NULL, ERR_INPUT,
-                 "long_name.ply:3:9: a name in a PLY header is longer than 63 characters");
+                 "long_name.ply:3:9: a word of a PLY header line is longer than 63 characters (a name, a type or a count)");
 }
 
 /* A PLY named as another format: Assimp reads it as PLY when the extension's reader refuses it,

@@ -116,8 +116,8 @@ static int parse_header(const char *path, const char *data, size_t size, ply_hea
         /* the words were read 63 bytes at a time: a longer one would have been split in two */
         for (size_t i = 0, run = 0; i < len; i++)
             if ((run = isspace((unsigned char)text[i]) ? 0 : run + 1) > 63)
-                return err_at(err, ERR_INPUT, path, line, (uint32_t)(i - 62), "a name in a PLY header is longer "
-                              "than 63 characters");
+                return err_at(err, ERR_INPUT, path, line, (uint32_t)(i - 62), "a word of a PLY header line is longer "
+                              "than 63 characters (a name, a type or a count)");
         if (!strcmp(w[0], "end_header")) {
             if (crlf && have_format && h->format != PLY_ASCII)
                 return err_at(err, ERR_INPUT, path, line, (uint32_t)len + 1, "the end_header line of a binary "

@@ -83,8 +83,10 @@ int obj_check(const char *path, err_buf *err)
             statement_add(&s, c);
         }
     }
-    if (backslash && !found) statement_add(&s, '\\');
     if (ferror(f)) rc = err_fail(err, ERR_INPUT, "%s: cannot read the model: a read error", path);
+    else if (backslash && !found)
+        rc = err_fail(err, ERR_INPUT, "%s:%lu: the file ends with a backslash, which Assimp's OBJ reader takes for a "
+                      "line continued past the end of the file; end the file without it", path, line);
     else if (unsafe(&s))
         rc = err_fail(err, ERR_INPUT, "%s:%lu: the material library's name %s; name a file beside the model "
                       "(materials.mtl)", path, s.line,

@@ -10,8 +10,10 @@
 #include "util/err.h"
 
 /* 0 when no mtllib statement of the OBJ file at path names a library ending with "://" or
- * starting with two backslashes; -1 with err set ("path:line: ...", ERR_INPUT) naming the first
- * that does, or when the file cannot be read. */
+ * starting with two backslashes, and the file does not end with a backslash (Assimp takes one
+ * there for a continuation into the end of its buffer and drops it, so "mtllib file://\" reached
+ * the filter as "file://"); -1 with err set ("path:line: ...", ERR_INPUT) naming the first that
+ * does, or when the file cannot be read. */
 int obj_check(const char *path, err_buf *err);
 
 #endif

@@ -213,9 +213,11 @@ static struct aiFile *folder_open(struct aiFileIO *io, const char *path, const c
     int fd = file_open_regular(path, NULL, &why_not); /* a folder or FIFO is no file to read */
     FILE *s = fd >= 0 ? fdopen(fd, "rb") : NULL;
     if (fd >= 0 && !s) close(fd);
-    if (!s && ref && !mf->missing[0]) snprintf(mf->missing, sizeof mf->missing, "%s", ref);
-    if (!s) snprintf(mf->failed, sizeof mf->failed, "%s", path);
-    if (!s) return NULL;
+    if (!s) {
+        if (ref && !mf->missing[0]) snprintf(mf->missing, sizeof mf->missing, "%s", ref);
+        snprintf(mf->failed, sizeof mf->failed, "%s", path);
+        return NULL;
+    }
     struct aiFile *f = calloc(1, sizeof *f);     /* freed by folder_close */
     folder_file *ff = calloc(1, sizeof *ff);     /* freed by folder_close */
     if (!f || !ff) {

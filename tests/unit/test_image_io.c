@@ -1,6 +1,7 @@
 /* test_image_io.c — the OpenImageIO shim: 8-bit PNG written and read back exactly (grey, RGB,
- * RGBA with unassociated alpha), readable errors for files that are not images, and no
- * temporary file left beside the target after a success or a failure. */
+ * RGBA with unassociated alpha), readable errors for files that are not images, damaged PNGs
+ * refused in sylva's sentence alone, and no temporary file left beside the target after a
+ * success or a failure. */
 #include <dirent.h>
 #include <math.h>
 #include <stdint.h>
@@ -8,6 +9,7 @@
 #include <unistd.h>
 
 #include "cut_image.h"
+#include "damaged_png.h"
 #include "harness.h"
 #include "work_dir.h"
 #include "io/image_io.h"
@@ -260,7 +262,53 @@ TEST(images_beyond_the_memory_budget)
     remove(small);
 }
 
+/* A damaged PNG texture, as a file and as the bytes a model embeds, is refused in sylva's
+ * sentence with nothing else on stderr: pixels whose zlib checksum is wrong (libpng printed
+ * "libpng error: IDAT: incorrect data check" under OpenImageIO), and a tEXt chunk stating
+ * 1.8 GB in a file of 44 bytes (libpng allocated it before finding the file's end, as it did for
+ * photographs). */
+TEST(damaged_pngs_are_refused_quietly)
+{
+    static uint8_t bytes[64 * 1024];
+    const char *path = NULL;
+    size_t n = damaged_png_write("damaged.png", bytes, sizeof bytes, &path);
+    if (!n) return;
+    static const uint8_t text[] = {0x6b, 0x49, 0xd2, 0x00, 't', 'E', 'X', 't', 'a', 'b', 'c'};
+    static uint8_t stated[33 + sizeof text];
+    memcpy(stated, bytes, 33), memcpy(stated + 33, text, sizeof text); /* signature, IHDR, the tEXt's start */
+    char stated_path[1200]; /* a copy: work_path's string lives until its next call */
+    snprintf(stated_path, sizeof stated_path, "%s", work_path("stated.png"));
+    FILE *f = fopen(stated_path, "wb");
+    CHECK(f && fwrite(stated, 1, sizeof stated, f) == sizeof stated);
+    if (f) fclose(f);
+    struct {
+        const char *path;
+        const uint8_t *bytes;
+        size_t n;
+        const char *want;
+    } cases[] = {{path, bytes, n, "the PNG is damaged or cut short (libpng says: IDAT: incorrect data check)"},
+                 {stated_path, stated, sizeof stated, "the PNG is damaged or cut short: chunk 'tEXt' at byte 33 "
+                                                      "states 1800000000 bytes of data, and 0 bytes follow it"}};
+    for (int c = 0; c < 2; c++)
+        for (int memory = 0; memory < 2; memory++) {
+            err_buf err = {{0}};
+            image_f32 img = {0};
+            stderr_begin();
+            int rc = memory ? image_read_memory(cases[c].bytes, cases[c].n, "png", "embedded", &img, &err)
+                            : image_read(cases[c].path, &img, &err);
+            CHECK_INT(stderr_end(), 0);
+            CHECK_INT(rc, -1);
+            CHECK_INT(err.status, ERR_INPUT);
+            CHECK_STR_CONTAINS(err.msg, memory ? "embedded" : cases[c].path);
+            CHECK_STR_CONTAINS(err.msg, cases[c].want);
+            CHECK(img.pixels == NULL);
+        }
+    remove(path);
+    remove(stated_path);
+}
+
 TEST_LIST(TEST_CASE(images_beyond_the_memory_budget), TEST_CASE(cut_images_are_refused), TEST_CASE(png_rgb_round_trip), TEST_CASE(png_rgba_round_trip),
           TEST_CASE(png_grey_round_trip), TEST_CASE(overwrite_replaces_the_file),
           TEST_CASE(unreadable_files), TEST_CASE(failed_writes_leave_nothing),
-          TEST_CASE(devices_and_fifos_are_refused), TEST_CASE(foreign_files_are_not_quoted))
+          TEST_CASE(devices_and_fifos_are_refused), TEST_CASE(foreign_files_are_not_quoted),
+          TEST_CASE(damaged_pngs_are_refused_quietly))

@@ -2,13 +2,14 @@
  * set (photos/README.md) against what exiftool reports for the same files, the sensor width each
  * gives against the camera's known pixel pitch, 8- and 16-bit PNGs written here read back in
  * linear light, the eight EXIF orientations (and a TIFF tagged with one), the memory check and
- * the errors for files that are not photographs. Without the shared data (or exiftool, or
+ * the errors for files that are not photographs or are damaged. Without the shared data (or exiftool, or
  * oiiotool) those parts report themselves skipped. */
 #include <stdint.h>
 #include <stdlib.h>
 #include <sys/stat.h>
 
 #include "cut_image.h"
+#include "damaged_png.h"
 #include "harness.h"
 #include "work_dir.h"
 #include "io/image_io.h"
@@ -494,6 +495,25 @@ TEST(huge_jpeg_frame_behind_stray_bytes)
     photo_free(&p);
 }
 
+/* A PNG photograph whose pixels are damaged (its zlib checksum) is refused in sylva's sentence
+ * alone: libpng printed "libpng error: IDAT: incorrect data check" on stderr under OpenImageIO. */
+TEST(damaged_png_refused_quietly)
+{
+    static uint8_t bytes[64 * 1024];
+    const char *path = NULL;
+    if (!damaged_png_write("damaged_pixels.png", bytes, sizeof bytes, &path)) return;
+    err_buf err = {{0}};
+    photo p = {0};
+    stderr_begin();
+    int rc = photo_read(path, &p, &err);
+    CHECK_INT(stderr_end(), 0);
+    CHECK_INT(rc, -1);
+    CHECK_INT(err.status, ERR_INPUT);
+    CHECK_STR_CONTAINS(err.msg, path);
+    CHECK_STR_CONTAINS(err.msg, "the PNG is damaged or cut short (libpng says: IDAT: incorrect data check)");
+    CHECK(p.rgb == NULL);
+}
+
 /* A PNG that ends before its IEND chunk, whether in a chunk's header or just after a whole
  * chunk, is refused as cut short before it is decoded. */
 TEST(png_without_its_end)
@@ -523,4 +543,4 @@ TEST_LIST(TEST_CASE(cut_photographs_are_refused), TEST_CASE(exif_matches_exiftoo
           TEST_CASE(png_round_trip_linear), TEST_CASE(exif_instant), TEST_CASE(orientations),
           TEST_CASE(orientation_tag_honoured), TEST_CASE(sixteen_bit_png), TEST_CASE(memory_budget),
           TEST_CASE(errors_name_the_file), TEST_CASE(damaged_png_chunk),
-          TEST_CASE(png_without_its_end), TEST_CASE(huge_jpeg_frame), TEST_CASE(huge_jpeg_frame_behind_stray_bytes))
+          TEST_CASE(png_without_its_end), TEST_CASE(damaged_png_refused_quietly), TEST_CASE(huge_jpeg_frame), TEST_CASE(huge_jpeg_frame_behind_stray_bytes))

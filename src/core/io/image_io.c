@@ -12,13 +12,13 @@
 #include <stdlib.h>
 
 #include "io/image_module.h"
-#include "util/chunk_check.h"
+#include "io/png_read_check.h"
 #include "util/file_check.h"
 #include "util/jpeg_frame.h"
 #include "util/memory_budget.h"
 #include "util/module_load.h"
 
-static const image_host host = {sizeof(image_host), memory_check, file_check_regular, png_check, jpeg_frame,
+static const image_host host = {sizeof(image_host), memory_check, file_check_regular, png_read_check, jpeg_frame,
                                 image_free};
 
 /* The module once opened (never closed: its C++ runtime stays until the process ends), or the

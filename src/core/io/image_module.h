@@ -27,15 +27,15 @@ struct photo;     /* io/photo.h */
 
 #define IMAGE_MODULE_FILE "sylva_image.so"
 #define IMAGE_MODULE_ENTRY "sylva_image_module"
-#define IMAGE_MODULE_VERSION 1u
+#define IMAGE_MODULE_VERSION 2u
 
 /* The core's functions the module calls (util/memory_budget.h, util/file_check.h,
- * util/chunk_check.h, util/jpeg_frame.h, image_io.h). */
+ * io/png_read_check.h, util/jpeg_frame.h, image_io.h). */
 typedef struct image_host {
     uint32_t size;
     int (*memory_check)(uint64_t need, const char *what, err_buf *err);
     int (*file_check_regular)(const char *path, const char *label, err_buf *err);
-    int (*png_check)(const char *path, err_buf *err);
+    int (*png_read_check)(const char *name, const void *bytes, size_t size, int pixels, err_buf *err);
     int (*jpeg_frame)(const char *path, uint32_t *width, uint32_t *height, uint32_t *components);
     void (*image_free)(struct image_f32 *img);
 } image_host;

@@ -99,10 +99,11 @@ int jpeg_budget(const char *path, const char *what, uint64_t need_per_sample, ui
     return host->memory_check(need, label.c_str(), err) ? err_default(err, ERR_LIMIT) : 0;
 }
 
-// Reads the file `path`, or the bytes behind `proxy` when it is not NULL (OpenImageIO then
-// takes the format from the extension of `open_name`); `path` names the image in messages.
-int read_into(const char *path, const char *open_name, OIIO::Filesystem::IOProxy *proxy,
-              image_f32 *img, err_buf *err)
+// Reads the file `path`, or the `size` bytes at `bytes` behind `proxy` when it is not NULL
+// (OpenImageIO then takes the format from the extension of `open_name`); `path` names the image
+// in messages.
+int read_into(const char *path, const char *open_name, OIIO::Filesystem::IOProxy *proxy, const void *bytes,
+              size_t size, image_f32 *img, err_buf *err)
 {
     if (!proxy) {
         // A FIFO or device would block OpenImageIO's format detection or feed it without end.
@@ -113,6 +114,7 @@ int read_into(const char *path, const char *open_name, OIIO::Filesystem::IOProxy
         if (jpeg_budget(path, "reading the image", sizeof(float), IMAGE_READ_COPY_BYTES_PER_PIXEL, err))
             return -1;
     }
+    if (host->png_read_check(path, bytes, size, 0, err)) return -1; // before libpng prints or allocates
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
     // The readers take the proxy from the configuration when they open; passing it only as
@@ -146,6 +148,7 @@ int read_into(const char *path, const char *open_name, OIIO::Filesystem::IOProxy
                              std::to_string(spec.width) + "x" + std::to_string(spec.height) +
                              ", " + std::to_string(spec.nchannels) + " channels)";
     if (host->memory_check(need, what.c_str(), err)) return err_default(err, ERR_LIMIT);
+    if (host->png_read_check(path, bytes, size, 1, err)) return -1;
 
     img->width = static_cast<uint32_t>(spec.width);
     img->height = static_cast<uint32_t>(spec.height);
@@ -218,9 +221,9 @@ int read_guarded(const char *path, const void *bytes, size_t size, const char *f
         if (bytes) {
             OIIO::Filesystem::IOMemReader proxy(bytes, size);
             std::string open_name = std::string("memory.") + format;
-            status = read_into(path, open_name.c_str(), &proxy, &img, err);
+            status = read_into(path, open_name.c_str(), &proxy, bytes, size, &img, err);
         } else {
-            status = read_into(path, path, nullptr, &img, err);
+            status = read_into(path, path, nullptr, nullptr, 0, &img, err);
         }
     } catch (const std::exception &e) {
         status = err_set(err, "%s: cannot read the image: %s", path, e.what());
@@ -368,7 +371,7 @@ int photo_read_into(const char *path, image_f32 *img, photo *meta, err_buf *err)
     if (!format)
         return err_fail(err, ERR_INPUT, "%s: cannot read the photograph (a JPEG, PNG or TIFF "
                         "file is expected): its first bytes are none of theirs", path);
-    if (host->png_check(path, err)) return -1; /* libpng allocates what a damaged chunk states */
+    if (host->png_read_check(path, nullptr, 0, 0, err)) return -1; // before libpng prints or allocates
     if (jpeg_budget(path, "reading the photograph", sizeof(float), 3 * sizeof(float), err)) return -1;
     auto in = OIIO::ImageInput::create(format);
     OIIO::ImageSpec opened;
@@ -392,6 +395,7 @@ int photo_read_into(const char *path, image_f32 *img, photo *meta, err_buf *err)
     const std::string what = std::string("reading the photograph '") + path + "' (" +
                              std::to_string(spec.width) + "x" + std::to_string(spec.height) + ")";
     if (host->memory_check(need, what.c_str(), err)) return err_default(err, ERR_LIMIT);
+    if (host->png_read_check(path, nullptr, 0, 1, err)) return -1;
     if (n_px * static_cast<uint64_t>(spec.nchannels) > SIZE_MAX / sizeof(float))
         return err_fail(err, ERR_LIMIT, "%s: the photograph is too large to address", path);
 

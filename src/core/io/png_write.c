@@ -6,23 +6,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* libpng's error handler: keeps its message for the err_buf and jumps back to the writer. */
-static void on_error(png_structp png, png_const_charp message)
-{
-    char *keep = png_get_error_ptr(png);
-    snprintf(keep, 128, "%s", message);
-    png_longjmp(png, 1);
-}
-
-static void on_warning(png_structp png, png_const_charp message)
-{
-    (void)png, (void)message;
-}
+#include "io/png_messages.h"
 
 int png_write_xrgb(FILE *out, uint32_t width, uint32_t height, size_t stride, const uint8_t *pixels, err_buf *err)
 {
-    char message[128] = "";
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, message, on_error, on_warning);
+    char message[PNG_MESSAGE_MAX] = "";
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, message, png_keep_error, png_ignore_warning);
     png_infop info = png ? png_create_info_struct(png) : NULL;
     /* one row of RGB; freed below (volatile: it is set after setjmp) */
     uint8_t *volatile row = malloc(width ? (size_t)width * 3 : 1);

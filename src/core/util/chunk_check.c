@@ -18,10 +18,9 @@ typedef struct chunked_format {
     const char *last_type;         /* the chunk type that ends the file, or NULL */
 } chunked_format;
 
-static int walk(const char *path, const chunked_format *fm, err_buf *err)
+/* Walks the chunks of the file open as f (from its start; path names it in messages). */
+static int walk(FILE *f, const char *path, const chunked_format *fm, err_buf *err)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) return err_fail(err, ERR_INPUT, "%s: cannot read the file: %s", path, strerror(errno));
     unsigned char head[16];
     int rc = 0, ended = 0; /* ended: the chunk that ends the file was reached */
     long size = fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
@@ -54,20 +53,23 @@ static int walk(const char *path, const chunked_format *fm, err_buf *err)
             rc = err_fail(err, ERR_INPUT, "%s: the %s is damaged or cut short: it ends at byte %ld "
                           "without its '%s' chunk", path, fm->name, size, fm->last_type);
     }
-    fclose(f);
     return rc;
 }
 
-int png_check(const char *path, err_buf *err)
+int png_check_stream(FILE *f, const char *name, err_buf *err)
 {
     static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     static const chunked_format png = {"PNG", signature, 8, 8, 1, 4, "IEND"};
-    return walk(path, &png, err);
+    return walk(f, name, &png, err);
 }
 
 int glb_check(const char *path, err_buf *err)
 {
     static const unsigned char magic[4] = {'g', 'l', 'T', 'F'};
     static const chunked_format glb = {"GLB", magic, 4, 12, 0, 0, NULL};
-    return walk(path, &glb, err);
+    FILE *f = fopen(path, "rb");
+    if (!f) return err_fail(err, ERR_INPUT, "%s: cannot read the file: %s", path, strerror(errno));
+    int rc = walk(f, path, &glb, err);
+    fclose(f);
+    return rc;
 }

@@ -12,7 +12,8 @@
 #include "io/png_messages.h"
 #include "util/chunk_check.h"
 
-/* Reads the PNG open as f past its signature: its header and, with pixels, every row. */
+/* Reads the PNG open as f past its signature: its header and, with pixels, every row and the
+ * chunks after them, expanded to 8 bits and RGB as OpenImageIO's reader has libpng do. */
 static int read_png(FILE *f, const char *name, int pixels, err_buf *err)
 {
     char message[PNG_MESSAGE_MAX] = "";
@@ -33,6 +34,7 @@ static int read_png(FILE *f, const char *name, int pixels, err_buf *err)
     png_set_sig_bytes(png, 8);
     png_read_info(png, info);
     if (pixels) {
+        png_set_expand(png);
         int passes = png_set_interlace_handling(png);
         png_read_update_info(png, info);
         png_uint_32 height = png_get_image_height(png, info);
@@ -44,6 +46,7 @@ static int read_png(FILE *f, const char *name, int pixels, err_buf *err)
         }
         for (int pass = 0; pass < passes; pass++)
             for (png_uint_32 y = 0; y < height; y++) png_read_row(png, row, NULL);
+        png_read_end(png, NULL);
     }
     png_destroy_read_struct(&png, &info, NULL);
     free(row);

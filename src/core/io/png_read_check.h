@@ -17,8 +17,8 @@ extern "C" {
 
 /* The PNG in the file `name`, or in the `size` bytes at `bytes` when bytes is not NULL (name then
  * only names it), read as far as its header and the chunks before its pixels, or with pixels set
- * through every row of its pixels too (call that once the image's size has passed the memory
- * budget: it costs a decoding). First its chunks' lengths are checked against the file
+ * through every row of its pixels and the chunks after them too, expanded as OpenImageIO reads
+ * them (call that once the image's size has passed the memory budget: it costs a decoding). First its chunks' lengths are checked against the file
  * (util/chunk_check.h). Returns 0 when it reads cleanly that far or does not start with the PNG
  * signature; -1 with err set ("name: the PNG is damaged or cut short ...", ERR_INPUT, libpng's
  * words quoted) when it does not, or when the file cannot be read. */

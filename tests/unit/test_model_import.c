@@ -453,6 +453,29 @@ TEST(ply_items_hold_their_lines)
     scene_free(s);
 }
 
+/* A binary PLY element of 77,777,777,732 items and no property hung the check (found by fuzzing:
+ * each item takes no bytes, so the walk never reached the file's end). An element with items
+ * declares a property; one of no items may have none. */
+TEST(ply_element_without_properties)
+{
+    static const char header[] = "ply\nformat binary_little_endian 1.0\nelement vertnffob 77777777732\n\n\n"
+                                 "end_header\n\001\002";
+    char path[1200];
+    snprintf(path, sizeof path, "%s", write_text("no_properties.ply", header));
+    expect_error(path, NULL, ERR_INPUT,
+                 "no_properties.ply:3:1: element 'vertnffob' has 77777777732 items but no property; an element "
+                 "with items declares at least one property");
+    const char *empty = "ply\nformat ascii 1.0\nelement note 0\nelement vertex 3\nproperty float x\n"
+                        "property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                        "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    scene *s = scene_new();
+    mesh *m = load(s, write_text("empty_element.ply", empty), 0, MODEL_UP_FILE, NULL);
+    CHECK(m != NULL);
+    if (m) CHECK_INT(m->nt, 1);
+    mesh_free(m);
+    scene_free(s);
+}
+
 /* Assimp sizes an element's array by its first declaration and fills it from every declaration
  * of that name: a second, longer 'vertex' element was written past the first's array (found by
  * fuzzing; valgrind saw the write). Each element is declared once. */
@@ -689,7 +712,7 @@ TEST(image_mime_type_without_slash)
 }
 
 TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TEST_CASE(empty_ply_face), TEST_CASE(empty_face_as_assimp_reads_it),
-          TEST_CASE(ply_items_hold_their_lines), TEST_CASE(ply_element_declared_twice),
+          TEST_CASE(ply_items_hold_their_lines), TEST_CASE(ply_element_declared_twice), TEST_CASE(ply_element_without_properties),
           TEST_CASE(image_mime_type_without_slash),
           TEST_CASE(read_by_its_extension_alone), TEST_CASE(module_missing), TEST_CASE(obj_line_of_one_vertex), TEST_CASE(obj_points_lines_become_comments), TEST_CASE(references_ending_with_colon_slashes),
           TEST_CASE(ply_header_read_as_assimp_reads_it), TEST_CASE(unreadable_material_library_leaves_no_file_open),

@@ -182,6 +182,13 @@ static int parse_header(const char *path, const char *data, size_t size, ply_hea
         }
     }
     if (!have_format) return bad(err, path, line, "the PLY header has no format line");
+    /* An item of no properties takes no bytes of the body: a binary walk (Assimp's, and this
+     * one) would go round 7.7 x 10^10 of them without reading a byte. */
+    for (int k = 0; k < h->n_elements; k++)
+        if (h->elements[k].count && !h->elements[k].n_props)
+            return err_at(err, ERR_INPUT, path, h->elements[k].line, 1, "element '%s' has %llu items but no "
+                          "property; an element with items declares at least one property",
+                          h->elements[k].name, (unsigned long long)h->elements[k].count);
     h->body = at;
     h->line = line + 1;
     return 0;

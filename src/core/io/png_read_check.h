@@ -18,8 +18,9 @@ extern "C" {
 /* The PNG in the file `name`, or in the `size` bytes at `bytes` when bytes is not NULL (name then
  * only names it), read as far as its header and the chunks before its pixels, or with pixels set
  * through every row of its pixels and the chunks after them too, expanded as OpenImageIO reads
- * them (call that once the image's size has passed the memory budget: it costs a decoding). First its chunks' lengths are checked against the file
- * (util/chunk_check.h). Returns 0 when it reads cleanly that far or does not start with the PNG
+ * them (call that once the image's size has passed the memory budget: it costs a decoding).
+ * Each call first checks the chunks' lengths against the file (util/chunk_check.h), a walk of
+ * their headers alone. Returns 0 when it reads cleanly that far or does not start with the PNG
  * signature; -1 with err set ("name: the PNG is damaged or cut short ...", ERR_INPUT, libpng's
  * words quoted) when it does not, or when the file cannot be read. */
 int png_read_check(const char *name, const void *bytes, size_t size, int pixels, err_buf *err);

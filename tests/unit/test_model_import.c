@@ -553,6 +553,18 @@ TEST(obj_points_lines_become_comments)
     }
 }
 
+/* The model at path imports as one triangle. */
+static void expect_one_triangle(const char *path)
+{
+    scene *s = scene_new(); /* owned here, with the mesh */
+    mesh *m = NULL;
+    err_buf err = {{0}};
+    CHECK_INT(model_import(s, path, NULL, &m, NULL, &err), 0);
+    CHECK(m && m->nt == 1);
+    mesh_free(m);
+    scene_free(s);
+}
+
 /* Assimp 5.2's filter of the paths a model refers to reads past the end of one ending with "://":
  * such an OBJ material library or glTF buffer uri crashed the program; both are refused first,
  * an OBJ statement continued over a line included; a model whose library is named otherwise is
@@ -571,17 +583,20 @@ TEST(references_ending_with_colon_slashes)
     expect_error(write_text("end_backslash_mtl.obj", "v 0 0 0\nmtllib \\file://\\"), NULL, ERR_INPUT,
                  "end_backslash_mtl.obj:2: the file ends with a backslash, which Assimp's OBJ reader takes for a "
                  "line continued past the end of the file");
+    /* the byte after a continuation is taken into the statement as it is, a backslash or a line end
+     * too (found by fuzzing: a backslash there, then a line end, ended the statement, and the
+     * next line's "mtllib file://" reached the filter) */
+    snprintf(obj, sizeof obj, "v 0 0 0\\\n\\\nmtllib file://\n%s", tri);
+    expect_error(write_text("literal_after_continuation.obj", obj), NULL, ERR_INPUT,
+                 "literal_after_continuation.obj:3: the material library's name ends with \"://\"");
+    /* a line end taken so ends the library's name, and before the name leaves none */
+    snprintf(obj, sizeof obj, "mtllib \\\n\nfile://\nmtllib x\\\r\n\r://\n%s", tri);
+    expect_one_triangle(write_text("line_end_after_continuation.obj", obj));
     const char *gltf = "{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":36,\"uri\":\"file:\\/\\/\"}]}";
     expect_error(write_text("url_buffer.gltf", gltf), NULL, ERR_INPUT, "a uri ends with \"://\"");
     write_text("red.mtl", "newmtl red\nKd 1 0 0\n");
     snprintf(obj, sizeof obj, "mtllib red.mtl\nusemtl red\n%s", tri);
-    scene *s = scene_new();
-    mesh *m = NULL;
-    err_buf err = {{0}};
-    CHECK_INT(model_import(s, write_text("named_mtl.obj", obj), NULL, &m, NULL, &err), 0);
-    CHECK(m && m->nt == 1);
-    mesh_free(m);
-    scene_free(s);
+    expect_one_triangle(write_text("named_mtl.obj", obj));
 }
 
 /* A PLY header is refused where Assimp would read it otherwise than the file's own walk does

@@ -20,6 +20,8 @@ typedef struct statement {
     int library;       /* 1: an mtllib statement, its library being read */
     size_t n_ref;      /* bytes of the library read so far */
     char first[2], last[3];
+    int ended;         /* 1: a line end inside the statement ended its keyword or its library, and
+                        * Assimp reads nothing of it after that */
     unsigned long line; /* the physical line it starts on */
 } statement;
 
@@ -32,9 +34,15 @@ static int unsafe(const statement *s)
     return colon_slashes || unc;
 }
 
-/* Takes byte c of the statement's text (continuations joined). */
+/* Takes byte c of the statement's text (continuations joined). A line end reaches here only as
+ * the byte after a continuation, which Assimp's reader copies into the statement as it is. */
 static void statement_add(statement *s, char c)
 {
+    if (s->ended) return;
+    if (line_end((unsigned char)c)) {
+        s->ended = 1;
+        return;
+    }
     if (s->library) {
         if (!s->n_ref && (c == ' ' || c == '\t')) return; /* the spaces before the name */
         if (s->n_ref < 2) s->first[s->n_ref] = c;
@@ -53,7 +61,9 @@ int obj_check(const char *path, err_buf *err)
     char buf[65536];
     statement s = {.line = 1};
     unsigned long line = 1;
-    int backslash = 0, skipping = 0, found = 0, rc = 0; /* skipping: a continuation, up to its '\n' */
+    /* skipping: a continuation, up to its '\n'; literal: the byte after that '\n', which the reader
+     * takes into the statement whatever it is */
+    int backslash = 0, skipping = 0, literal = 0, found = 0, rc = 0;
     size_t got;
     while (!found && (got = fread(buf, 1, sizeof buf, f)) > 0) {
         for (size_t i = 0; i < got && !found; i++) {
@@ -61,12 +71,19 @@ int obj_check(const char *path, err_buf *err)
             if (c == '\n') line++;
             if (skipping) {
                 skipping = c != '\n';
+                literal = !skipping;
+                continue;
+            }
+            if (literal) {
+                literal = 0;
+                statement_add(&s, c);
                 continue;
             }
             if (backslash) {
                 backslash = 0;
                 if (line_end((unsigned char)c)) { /* a continuation: the statement goes on after the '\n' */
                     skipping = c != '\n';
+                    literal = !skipping;
                     continue;
                 }
                 statement_add(&s, '\\');

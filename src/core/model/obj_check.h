@@ -3,7 +3,8 @@
  * filter reads past the end of a path ending with "://" (a "mtllib file://" line crashed the
  * program) or consisting of two backslashes alone. The file is read as Assimp's OBJ reader splits
  * it into statements (a line ends at '\n', '\r', '\f' or a NUL byte; a backslash before a line end
- * continues it), a piece at a time; nothing is allocated past the call. */
+ * continues it past the next '\n', and the byte after that '\n' joins the statement whatever it is,
+ * a backslash or a line end too), a piece at a time; nothing is allocated past the call. */
 #ifndef SYLVA_OBJ_CHECK_H
 #define SYLVA_OBJ_CHECK_H
 

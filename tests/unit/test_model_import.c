@@ -465,6 +465,13 @@ TEST(ply_element_without_properties)
     expect_error(path, NULL, ERR_INPUT,
                  "no_properties.ply:3:1: element 'vertnffob' has 77777777732 items but no property; an element "
                  "with items declares at least one property");
+    /* Assimp takes an unknown element's count from its name's leading digits: a 265-byte PLY
+     * whose element was named 4444...4#face took it to 11 GB (found by fuzzing) */
+    static const char digits[] = "ply\nformat binary_little_endian 1.0\nelement 4444444444#face 1\n"
+                                 "property list uchar int vertex_indices\nend_header\n\001\000\000\000\000";
+    expect_error(write_text("digit_name.ply", digits), NULL, ERR_INPUT,
+                 "digit_name.ply:3:1: element name '4444444444#face' starts with a digit, which Assimp reads as "
+                 "the element's count; start the name with a letter");
     const char *empty = "ply\nformat ascii 1.0\nelement note 0\nelement vertex 3\nproperty float x\n"
                         "property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"
                         "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";

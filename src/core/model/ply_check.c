@@ -143,6 +143,11 @@ static int parse_header(const char *path, const char *data, size_t size, ply_hea
                 return bad(err, path, line, "an element line reads 'element NAME COUNT'");
             if (h->n_elements == PLY_MAX_ELEMENTS)
                 return bad(err, path, line, "more than 64 PLY elements");
+            /* Assimp reads the count of an element whose name it does not know from the name's
+             * first characters: a name of digits stated billions of items to it. */
+            if (isdigit((unsigned char)w[1][0]))
+                return err_at(err, ERR_INPUT, path, line, 1, "element name '%s' starts with a digit, which "
+                              "Assimp reads as the element's count; start the name with a letter", w[1]);
             /* Assimp sizes an element's array by its first declaration and fills it from all of
              * them: a second, longer 'vertex' element was written past the first's array. */
             for (int k = 0; k < h->n_elements; k++)

@@ -5,7 +5,8 @@
 # Embree sightline), must be the same bytes. The disagreement allowed is none: the sweep declares a
 # pair seen or hidden only with a margin that bounds its difference from the sightline (the ray's
 # offset times the ground's steepness, and ZTV_SWEEP_SLACK for the chords and single precision),
-# and leaves every other pair to the sightline. Prints the share of pairs the sweep settled.
+# and leaves every other pair to the sightline. Prints the share of pairs the sweep settled; the
+# run with --sightlines must say why the sweep did not run, the default one must not.
 # Exit 0 when every scene agrees, 1 when one does not, 77 (skipped) without the shared data.
 set -uo pipefail
 sylva=$1 work=$2
@@ -24,6 +25,15 @@ for scene in "$@"; do
       { echo "$name: sylva ztv ($way) failed:"; tail -n 3 "$work/$name.$way.log"; status=1; continue 2; }
   done
   settled=$(sed -n 's/.*, \([0-9.]*\) % of the pairs settled.*/\1/p' "$work/$name.sweep.log")
+  # the line says why the sweep did not run, and only then
+  if grep -q "settled by the bare-earth sweep (not run" "$work/$name.sweep.log"; then
+    echo "$name: the sweep did not run: $(grep -o '(not run.*' "$work/$name.sweep.log")"
+    status=1
+  fi
+  if ! grep -q "settled by the bare-earth sweep (not run: --sightlines asks" "$work/$name.sightlines.log"; then
+    echo "$name: with --sightlines the line does not say why the sweep did not run"
+    status=1
+  fi
   if cmp -s "$work/$name.sweep/ztv_bare.tif" "$work/$name.sightlines/ztv_bare.tif"; then
     echo "$name: the same map (${settled:-?} % of the pairs settled by the sweep)"
   else

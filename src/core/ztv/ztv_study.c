@@ -16,6 +16,7 @@
 #include "ztv/ztv_grid.h"
 #include "ztv/ztv_labels.h"
 #include "ztv/ztv_output.h"
+#include "ztv/ztv_sweep_map.h"
 #include "ztv/ztv_trace.h"
 
 static const char *const mode_names[ZTV_MODES] = {"bare earth", "vegetation", "all", "the canopy surface"};
@@ -155,10 +156,12 @@ static int trace_and_write(ztv_job *job, const run_parts *parts, ztv_output *out
     if (!quiet) {
         char ranks[32] = "";
         if (parts->parts > 1) snprintf(ranks, sizeof ranks, " on %d ranks", parts->parts);
+        char why[256], unswept[300] = "";
+        if (!ztv_sweep_map_fits(job, why, sizeof why)) snprintf(unswept, sizeof unswept, " (not run: %s)", why);
         fprintf(stderr, "ztv: %llu cells x %u targets in %.2fs%s: %.3g pairs/s, %.2f rays each, %.1f %% of "
-                "the pairs settled by the bare-earth sweep\n",
+                "the pairs settled by the bare-earth sweep%s\n",
                 (unsigned long long)total[0], job->targets->n, st.seconds, ranks, total[1] / fmax(st.seconds, 1e-9),
-                total[1] ? (double)total[2] / total[1] : 0.0, total[1] ? 100.0 * st.swept / total[1] : 0.0);
+                total[1] ? (double)total[2] / total[1] : 0.0, total[1] ? 100.0 * st.swept / total[1] : 0.0, unswept);
         phase_times_print(times, stderr);
     }
     return 0;

@@ -2,6 +2,7 @@
 #include "ztv/ztv_sweep_map.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -48,7 +49,7 @@ typedef struct sweep_ctx {
 } sweep_ctx;
 
 /* The map's cells on the terrain as a window of the heightfield's nodes; -1 when the map's
- * lattice is not the heightfield's. */
+ * lattice is not the heightfield's, -2 when the map and the heightfield do not overlap. */
 static int window_of(const ztv_grid *g, const sylva_heightfield *h, window *w)
 {
     double cell = g->cell;
@@ -60,20 +61,37 @@ static int window_of(const ztv_grid *g, const sylva_heightfield *h, window *w)
     long ra = joff > (long)h->ny - 1 ? joff - ((long)h->ny - 1) : 0, rb = joff;
     if (qb > (long)g->nx - 1) qb = (long)g->nx - 1;
     if (rb > (long)g->ny - 1) rb = (long)g->ny - 1;
-    if (qb - qa < 1 || rb - ra < 1) return -1;
+    if (qb - qa < 1 || rb - ra < 1) return -2;
     *w = (window){(uint32_t)qa, (uint32_t)ra, (uint32_t)(qb - qa + 1), (uint32_t)(rb - ra + 1), (uint32_t)(ioff + qa),
                   (uint32_t)(joff - rb)};
     return 0;
 }
 
-int ztv_sweep_map_fits(const ztv_job *job)
+int ztv_sweep_map_fits(const ztv_job *job, char *why, size_t n)
 {
     const sylva_heightfield *h = job->scene->terrain;
+    const geom_info *ground = job->accel->top_geoms ? &job->accel->top_geoms[ACCEL_TOP_TERRAIN] : NULL;
     window w;
-    if (job->sightlines || job->parts > 1 || !h || terrain_grid_count(h) != 1 || h->has_water) return 0;
-    if (job->accel->top_geoms && job->accel->top_geoms[ACCEL_TOP_TERRAIN].alpha) return 0; /* cut-out ground */
-    if (window_of(&job->grid, h, &w)) return 0;
-    return (double)w.nx * w.ny <= ZTV_SWEEP_MAX_CELLS && job->targets->n > 0;
+    int lattice;
+    char spare[256];
+    if (!why) why = spare, n = sizeof spare;
+    if (job->sightlines) snprintf(why, n, "--sightlines asks for every pair's sightline");
+    else if (job->parts > 1) snprintf(why, n, "a map shared between MPI ranks is traced by sightlines");
+    else if (!h) snprintf(why, n, "the scene has no terrain");
+    else if (terrain_grid_count(h) != 1)
+        snprintf(why, n, "the ground is refined, in levels of detail (--ground refined)");
+    else if (h->has_water) snprintf(why, n, "the terrain has water");
+    else if (ground && ground->alpha) snprintf(why, n, "the ground has cut-out parts");
+    else if ((lattice = window_of(&job->grid, h, &w)) == -1)
+        snprintf(why, n, "the map's %.9g m cells are not centred on the DTM's nodes, %.9g x %.9g m apart; "
+                 "--cell 0, or no cell:, maps one cell per node", job->grid.cell, h->dx, h->dy);
+    else if (lattice) snprintf(why, n, "the map does not overlap the DTM");
+    else if ((double)w.nx * w.ny > ZTV_SWEEP_MAX_CELLS)
+        snprintf(why, n, "the map covers %.3g of the DTM's nodes, more than the sweep's %u", (double)w.nx * w.ny,
+                 ZTV_SWEEP_MAX_CELLS);
+    else if (job->targets->n == 0) snprintf(why, n, "there are no targets");
+    else return 1;
+    return 0;
 }
 
 /* The cells' eyes, ground and classes, as the row by row tracer sets them. */

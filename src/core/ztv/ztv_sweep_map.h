@@ -10,12 +10,14 @@
 #ifndef SYLVA_ZTV_SWEEP_MAP_H
 #define SYLVA_ZTV_SWEEP_MAP_H
 
+#include <stddef.h>
+
 #include "ztv/ztv_job.h"
 
 #define ZTV_SWEEP_MAX_CELLS (1u << 25)
 
-/* 1 when job's map can be swept. */
-int ztv_sweep_map_fits(const ztv_job *job);
+/* 1 when job's map can be swept; else 0, and why not into why (n bytes; may be NULL). */
+int ztv_sweep_map_fits(const ztv_job *job, char *why, size_t n);
 
 /* Runs job as ztv_trace does (same blocks to the sink, same results). */
 int ztv_sweep_map(const ztv_job *job, ztv_sink sink, void *user, ztv_stats *stats, err_buf *err);

@@ -158,7 +158,7 @@ static void layer_free(layer_buf *l)
 
 int ztv_trace(const ztv_job *job, ztv_sink sink, void *user, ztv_stats *stats, err_buf *err)
 {
-    if (ztv_sweep_map_fits(job)) return ztv_sweep_map(job, sink, user, stats, err);
+    if (ztv_sweep_map_fits(job, NULL, 0)) return ztv_sweep_map(job, sink, user, stats, err);
     const ztv_grid *g = &job->grid;
     double t0 = progress_now();
     trace_ctx c = {.job = job, .screened = job->screened != ZTV_BARE};

@@ -246,25 +246,32 @@ static void base64(const uint8_t *in, size_t n, char *out)
  * must still face the way their normals point, and glTF's +Y must become +Z. */
 static void expect_error(const char *path, const model_import_options *o, err_status status, const char *want);
 
-/* A tetrahedron in a glTF whose mesh node has the scale `scale` ("x,y,z") under a lift of 5 m. */
-static const char *write_scaled_gltf(const char *name, const char *scale)
+/* The tetrahedron's vertices in a glTF whose mesh node has the scale `scale` ("x,y,z") under a
+ * lift of 5 m, and one primitive of mode `mode` with the n 16-bit indices (at most 12). */
+static const char *write_tet_gltf(const char *name, const char *scale, int mode, const uint16_t *indices, int n)
 {
     uint8_t buf[48 + 24];
     memcpy(buf, tet_pos, 48);
-    memcpy(buf + 48, tet_tri, 24);
+    memcpy(buf + 48, indices, 2 * (size_t)n);
     char b64[200], text[2048];
-    base64(buf, sizeof buf, b64);
+    base64(buf, 48 + 2 * (size_t)n, b64);
     snprintf(text, sizeof text,
              "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[0]}],"
              "\"nodes\":[{\"translation\":[0,5,0],\"children\":[1]},{\"mesh\":0,\"scale\":[%s]}],"
-             "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":1}]}],"
-             "\"buffers\":[{\"byteLength\":72,\"uri\":\"data:application/octet-stream;base64,%s\"}],"
-             "\"bufferViews\":[{\"buffer\":0,\"byteLength\":48},{\"buffer\":0,\"byteOffset\":48,\"byteLength\":24}],"
+             "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":1,\"mode\" : %d}]}],"
+             "\"buffers\":[{\"byteLength\":%d,\"uri\":\"data:application/octet-stream;base64,%s\"}],"
+             "\"bufferViews\":[{\"buffer\":0,\"byteLength\":48},{\"buffer\":0,\"byteOffset\":48,\"byteLength\":%d}],"
              "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":4,\"type\":\"VEC3\","
-             "\"min\":[0,0,0],\"max\":[1,2,3]},{\"bufferView\":1,\"componentType\":5123,\"count\":12,"
+             "\"min\":[0,0,0],\"max\":[1,2,3]},{\"bufferView\":1,\"componentType\":5123,\"count\":%d,"
              "\"type\":\"SCALAR\"}]}",
-             scale, b64);
+             scale, mode, 48 + 2 * n, b64, 2 * n, n);
     return write_text(name, text);
+}
+
+/* The tetrahedron's triangles so. */
+static const char *write_scaled_gltf(const char *name, const char *scale)
+{
+    return write_tet_gltf(name, scale, 4, &tet_tri[0][0], 12);
 }
 
 static const char *write_mirrored_gltf(void) { return write_scaled_gltf("mirrored.gltf", "-1,1,1"); }
@@ -293,6 +300,22 @@ TEST(gltf_mirrored_node_keeps_winding)
     }
     mesh_free(m);
     scene_free(s);
+}
+
+/* Assimp 5.2 reads a line loop's lines, leaving out a line whose indices are past the vertices,
+ * and closes the loop from its first line without looking whether it wrote one: a GLB whose line
+ * loop indexed no vertex that exists crashed the program on a null pointer (found by fuzzing). A
+ * primitive of mode 2 is refused; triangles with such indices are refused by Assimp's own check,
+ * and a mode of 20 is no line loop to this check. */
+TEST(gltf_line_loop)
+{
+    static const uint16_t past[4] = {9, 10, 11, 12}, loop[4] = {0, 1, 2, 3};
+    expect_error(write_tet_gltf("line_loop_past.gltf", "1,1,1", 2, past, 4), NULL, ERR_INPUT,
+                 "line_loop_past.gltf: a mesh primitive is a line loop (mode 2), on which the model reader can crash; "
+                 "sylva draws triangles: export the mesh as triangles (mode 4) or leave the line loop out");
+    expect_error(write_tet_gltf("line_loop.gltf", "1,1,1", 2, loop, 4), NULL, ERR_INPUT, "is a line loop (mode 2)");
+    expect_error(write_tet_gltf("triangles_past.gltf", "1,1,1", 4, past, 4), NULL, ERR_INPUT, "cannot read the model");
+    expect_error(write_tet_gltf("mode_20.gltf", "1,1,1", 20, loop, 4), NULL, ERR_INPUT, "cannot read the model");
 }
 
 static void expect_error(const char *path, const model_import_options *o, err_status status, const char *want)
@@ -740,7 +763,7 @@ TEST(image_mime_type_without_slash)
 
 TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TEST_CASE(empty_ply_face), TEST_CASE(empty_face_as_assimp_reads_it),
           TEST_CASE(ply_items_hold_their_lines), TEST_CASE(ply_element_declared_twice), TEST_CASE(ply_element_without_properties), TEST_CASE(ply_element_name_of_digits),
-          TEST_CASE(image_mime_type_without_slash),
+          TEST_CASE(image_mime_type_without_slash), TEST_CASE(gltf_line_loop),
           TEST_CASE(read_by_its_extension_alone), TEST_CASE(module_missing), TEST_CASE(obj_line_of_one_vertex), TEST_CASE(obj_points_lines_become_comments), TEST_CASE(references_ending_with_colon_slashes),
           TEST_CASE(ply_header_read_as_assimp_reads_it), TEST_CASE(unreadable_material_library_leaves_no_file_open),
           TEST_CASE(texture_coordinate_not_finite), TEST_CASE(damaged_glb_chunk), TEST_CASE(y_up_files_are_turned),

@@ -1,5 +1,5 @@
-/* gltf_check.c — the mimeType and uri values of a glTF (JSON) or GLB (its JSON chunk is text in
- * the file) checked before Assimp reads it (gltf_check.h). */
+/* gltf_check.c — the mimeType, uri and mode values of a glTF (JSON) or GLB (its JSON chunk is text
+ * in the file) checked before Assimp reads it (gltf_check.h). */
 #include "model/gltf_check.h"
 
 #include <errno.h>
@@ -20,6 +20,17 @@ static int string_value(const char *data, size_t size, size_t at, size_t key_len
     while (p < size && data[p] != '"') p += data[p] == '\\' ? 2 : 1;
     *end = p < size ? p : size;
     return 1;
+}
+
+/* Whether the value of the key that starts at data[at] (its quotes included) is the JSON number 2,
+ * written so (an integer, as Assimp's reader takes a primitive's mode). */
+static int number_two(const char *data, size_t size, size_t at, size_t key_len)
+{
+    size_t p = at + key_len;
+    while (p < size && data[p] && strchr(" \t\r\n", data[p])) p++;
+    if (p >= size || data[p] != ':') return 0;
+    for (p++; p < size && data[p] && strchr(" \t\r\n", data[p]); p++) {}
+    return p < size && data[p] == '2' && (p + 1 >= size || !data[p + 1] || !strchr("0123456789.eE", data[p + 1]));
 }
 
 /* Whether the JSON string text[0..n) (escapes as written) decodes to a path that Assimp's path
@@ -54,7 +65,7 @@ int gltf_check(const char *path, err_buf *err)
     } else if (fread(data, 1, (size_t)size, f) != (size_t)size) {
         err_fail(err, ERR_INPUT, "%s: cannot read the model: a read error", path);
     } else {
-        static const char mime[] = "\"mimeType\"", uri[] = "\"uri\"";
+        static const char mime[] = "\"mimeType\"", uri[] = "\"uri\"", mode[] = "\"mode\"";
         rc = 0;
         size_t start, end;
         for (size_t at = 0; !rc && at < (size_t)size; at++) {
@@ -70,6 +81,11 @@ int gltf_check(const char *path, err_buf *err)
                        (bad = unsafe_uri(data + start, end - start))) {
                 rc = err_fail(err, ERR_INPUT, "%s: a uri %s; name a file beside the model (model.bin)", path,
                               bad == 2 ? "is two backslashes" : "ends with \"://\"");
+            } else if (at + sizeof mode - 1 <= (size_t)size && !memcmp(data + at, mode, sizeof mode - 1) &&
+                       number_two(data, (size_t)size, at, sizeof mode - 1)) {
+                rc = err_fail(err, ERR_INPUT, "%s: a mesh primitive is a line loop (mode 2), on which the model "
+                              "reader can crash; sylva draws triangles: export the mesh as "
+                              "triangles (mode 4) or leave the line loop out", path);
             }
         }
     }

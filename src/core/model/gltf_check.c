@@ -7,14 +7,22 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Where the value of the key that starts at data[at] (its quotes included) starts, past the colon
+ * and the white space; size when the key is followed by no colon. */
+static size_t value_at(const char *data, size_t size, size_t at, size_t key_len)
+{
+    size_t p = at + key_len;
+    while (p < size && data[p] && strchr(" \t\r\n", data[p])) p++;
+    if (p >= size || data[p] != ':') return size;
+    for (p++; p < size && data[p] && strchr(" \t\r\n", data[p]); p++) {}
+    return p;
+}
+
 /* The string value of the key that starts at data[at] (its quotes included), as [*start, *end)
  * of data, escapes left as they are; 0 when the key has no string value there. */
 static int string_value(const char *data, size_t size, size_t at, size_t key_len, size_t *start, size_t *end)
 {
-    size_t p = at + key_len;
-    while (p < size && data[p] && strchr(" \t\r\n", data[p])) p++;
-    if (p >= size || data[p] != ':') return 0;
-    for (p++; p < size && data[p] && strchr(" \t\r\n", data[p]); p++) {}
+    size_t p = value_at(data, size, at, key_len);
     if (p >= size || data[p] != '"') return 0;
     *start = ++p;
     while (p < size && data[p] != '"') p += data[p] == '\\' ? 2 : 1;
@@ -26,10 +34,7 @@ static int string_value(const char *data, size_t size, size_t at, size_t key_len
  * written so (an integer, as Assimp's reader takes a primitive's mode). */
 static int number_two(const char *data, size_t size, size_t at, size_t key_len)
 {
-    size_t p = at + key_len;
-    while (p < size && data[p] && strchr(" \t\r\n", data[p])) p++;
-    if (p >= size || data[p] != ':') return 0;
-    for (p++; p < size && data[p] && strchr(" \t\r\n", data[p]); p++) {}
+    size_t p = value_at(data, size, at, key_len);
     return p < size && data[p] == '2' && (p + 1 >= size || !data[p + 1] || !strchr("0123456789.eE", data[p + 1]));
 }
 

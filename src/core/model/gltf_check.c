@@ -56,6 +56,85 @@ static int unsafe_uri(const char *text, size_t n)
     return len == 2 && first[0] == '\\' && first[1] == '\\' ? 2 : 0;
 }
 
+/* Where the first key written with an escape ("mod\u0065") starts in the JSON text[0..n), n when
+ * there is none. The text's strings are followed from its start, so that what a string value
+ * holds is never taken for a key; a key is a string followed by a colon. */
+static size_t escaped_key(const char *text, size_t n)
+{
+    for (size_t p = 0; p < n; p++) {
+        if (text[p] != '"') continue;
+        size_t start = p;
+        int escaped = 0;
+        for (p++; p < n && text[p] != '"'; p++)
+            if (text[p] == '\\') escaped = 1, p++;
+        if (p >= n) break;
+        size_t q = p + 1;
+        while (q < n && text[q] && strchr(" \t\r\n", text[q])) q++;
+        if (escaped && q < n && text[q] == ':') return start;
+    }
+    return n;
+}
+
+/* The JSON of a glTF file: all of it, or a GLB's first chunk (glb_check has found its length
+ * within the file). */
+static void json_text(const char *data, size_t size, const char **text, size_t *n)
+{
+    *text = data, *n = size;
+    if (size >= 20 && !memcmp(data, "glTF", 4) && !memcmp(data + 16, "JSON", 4)) {
+        const unsigned char *b = (const unsigned char *)data + 12;
+        size_t len = (size_t)b[0] | (size_t)b[1] << 8 | (size_t)b[2] << 16 | (size_t)b[3] << 24;
+        *text = data + 20, *n = len < size - 20 ? len : size - 20;
+    }
+}
+
+/* 0 when no key of the file's JSON is written with an escape; -1 with err set naming the first,
+ * with its line and column in the JSON. */
+static int keys_plain(const char *path, const char *data, size_t size, err_buf *err)
+{
+    const char *text;
+    size_t n;
+    json_text(data, size, &text, &n);
+    size_t at = escaped_key(text, n), line = 1, column = 1, end = at + 1;
+    if (at >= n) return 0;
+    for (size_t i = 0; i < at; i++) column = text[i] == '\n' ? (line++, 1) : column + 1;
+    while (end < n && text[end] != '"') end += text[end] == '\\' ? 2 : 1;
+    int len = (int)((end < n ? end + 1 : n) - at > 40 ? 40 : (end < n ? end + 1 : n) - at);
+    char where[80];
+    snprintf(where, sizeof where, text != data ? ": the JSON chunk, line %zu, column %zu" : ":%zu:%zu", line, column);
+    return err_fail(err, ERR_INPUT,
+                    "%s%s: the key %.*s is written with an escape; a glTF's keys are plain names (\"uri\", "
+                    "\"mode\", \"mimeType\"): write it without one",
+                    path, where, len, text + at);
+}
+
+/* 0 when every "mimeType" value holds a '/', no "uri" value is one Assimp's path filter reads past
+ * and no "mode" is 2; -1 with err set naming the first that fails. */
+static int values_checked(const char *path, const char *data, size_t size, err_buf *err)
+{
+    static const char mime[] = "\"mimeType\"", uri[] = "\"uri\"", mode[] = "\"mode\"";
+    size_t start, end;
+    for (size_t at = 0; at < size; at++) {
+        int bad;
+        if (at + sizeof mime - 1 <= size && !memcmp(data + at, mime, sizeof mime - 1) &&
+            string_value(data, size, at, sizeof mime - 1, &start, &end) && !memchr(data + start, '/', end - start)) {
+            size_t n = end - start;
+            return err_fail(err, ERR_INPUT, "%s: an image's mimeType is '%.*s'; image/png or image/jpeg is valid",
+                            path, (int)(n > 40 ? 40 : n), data + start);
+        }
+        if (at + sizeof uri - 1 <= size && !memcmp(data + at, uri, sizeof uri - 1) &&
+            string_value(data, size, at, sizeof uri - 1, &start, &end) &&
+            (bad = unsafe_uri(data + start, end - start)))
+            return err_fail(err, ERR_INPUT, "%s: a uri %s; name a file beside the model (model.bin)", path,
+                            bad == 2 ? "is two backslashes" : "ends with \"://\"");
+        if (at + sizeof mode - 1 <= size && !memcmp(data + at, mode, sizeof mode - 1) &&
+            number_two(data, size, at, sizeof mode - 1))
+            return err_fail(err, ERR_INPUT, "%s: a mesh primitive is a line loop (mode 2), on which the model "
+                            "reader can crash; sylva draws triangles: export the mesh as "
+                            "triangles (mode 4) or leave the line loop out", path);
+    }
+    return 0;
+}
+
 int gltf_check(const char *path, err_buf *err)
 {
     FILE *f = fopen(path, "rb");
@@ -70,29 +149,7 @@ int gltf_check(const char *path, err_buf *err)
     } else if (fread(data, 1, (size_t)size, f) != (size_t)size) {
         err_fail(err, ERR_INPUT, "%s: cannot read the model: a read error", path);
     } else {
-        static const char mime[] = "\"mimeType\"", uri[] = "\"uri\"", mode[] = "\"mode\"";
-        rc = 0;
-        size_t start, end;
-        for (size_t at = 0; !rc && at < (size_t)size; at++) {
-            int bad;
-            if (at + sizeof mime - 1 <= (size_t)size && !memcmp(data + at, mime, sizeof mime - 1) &&
-                string_value(data, (size_t)size, at, sizeof mime - 1, &start, &end) &&
-                !memchr(data + start, '/', end - start)) {
-                size_t n = end - start;
-                rc = err_fail(err, ERR_INPUT, "%s: an image's mimeType is '%.*s'; image/png or image/jpeg is valid",
-                              path, (int)(n > 40 ? 40 : n), data + start);
-            } else if (at + sizeof uri - 1 <= (size_t)size && !memcmp(data + at, uri, sizeof uri - 1) &&
-                       string_value(data, (size_t)size, at, sizeof uri - 1, &start, &end) &&
-                       (bad = unsafe_uri(data + start, end - start))) {
-                rc = err_fail(err, ERR_INPUT, "%s: a uri %s; name a file beside the model (model.bin)", path,
-                              bad == 2 ? "is two backslashes" : "ends with \"://\"");
-            } else if (at + sizeof mode - 1 <= (size_t)size && !memcmp(data + at, mode, sizeof mode - 1) &&
-                       number_two(data, (size_t)size, at, sizeof mode - 1)) {
-                rc = err_fail(err, ERR_INPUT, "%s: a mesh primitive is a line loop (mode 2), on which the model "
-                              "reader can crash; sylva draws triangles: export the mesh as "
-                              "triangles (mode 4) or leave the line loop out", path);
-            }
-        }
+        rc = keys_plain(path, data, (size_t)size, err) || values_checked(path, data, (size_t)size, err) ? -1 : 0;
     }
     free(data);
     fclose(f);

@@ -5,14 +5,15 @@
  * with "://" or made of two backslashes alone; and its reader of a line loop (a primitive of mode
  * 2) dereferences its first line, which it left empty when that line's indices are past the
  * vertices (a null pointer). The file is read whole and searched for "mimeType", "uri" and "mode"
- * keys; nothing is allocated past the call. */
+ * keys; a key written with an escape ("mod\u0065"), which Assimp's JSON reader decodes and the
+ * search would not find, is refused. Nothing is allocated past the call. */
 #ifndef SYLVA_GLTF_CHECK_H
 #define SYLVA_GLTF_CHECK_H
 
 #include "util/err.h"
 
-/* 0 when every "mimeType" string value in the file holds a '/', no "uri" value ends with "://"
- * or is two backslashes and no "mode" is 2; -1 with err set ("path: ...", ERR_INPUT) naming the
+/* 0 when no key of the JSON is written with an escape, every "mimeType" string value in the file
+ * holds a '/', no "uri" value ends with "://" or is two backslashes and no "mode" is 2; -1 with err set ("path: ...", ERR_INPUT) naming the
  * first that fails, or when the file cannot be read. */
 int gltf_check(const char *path, err_buf *err);
 

@@ -51,6 +51,17 @@ static int type_size(const char *t, int *is_signed)
     return 0;
 }
 
+/* Whether Assimp's reader knows the element name: it reads the count of an element it does not
+ * know as 0 (from the name's first characters, which its count follows), and so reads that
+ * element's items as the next element's. */
+static int assimp_knows(const char *name)
+{
+    static const char *const known[] = {"vertex", "face", "tristrips", "edge", "material"};
+    for (size_t i = 0; i < sizeof known / sizeof known[0]; i++)
+        if (!strcmp(name, known[i])) return 1;
+    return 0;
+}
+
 typedef struct ply_header {
     ply_format format;
     ply_element elements[PLY_MAX_ELEMENTS];
@@ -90,6 +101,7 @@ static int parse_header(const char *path, const char *data, size_t size, ply_hea
     size_t at = 0;
     uint32_t line = 0;
     int have_format = 0;
+    uint32_t info = 0; /* the line of an obj_info inside the last element, 0 when none */
     h->n_elements = 0;
     for (;;) {
         line++;
@@ -112,6 +124,7 @@ static int parse_header(const char *path, const char *data, size_t size, ply_hea
             if (n != 1 || strcmp(w[0], "ply")) return bad(err, path, line, "a PLY file starts with the line 'ply'");
             continue;
         }
+        if (n > 0 && !strcmp(w[0], "obj_info") && h->n_elements && !info) info = line;
         if (n <= 0 || !strcmp(w[0], "comment") || !strcmp(w[0], "obj_info")) continue;
         /* the words were read 63 bytes at a time: a longer one would have been split in two */
         for (size_t i = 0, run = 0; i < len; i++)
@@ -155,6 +168,7 @@ static int parse_header(const char *path, const char *data, size_t size, ply_hea
                     return err_at(err, ERR_INPUT, path, line, 1, "element '%s' is declared again (first "
                                   "on line %u); a PLY declares each element once", w[1], h->elements[k].line);
             ply_element *e = &h->elements[h->n_elements++];
+            info = 0;
             memset(e, 0, sizeof *e);
             snprintf(e->name, sizeof e->name, "%s", w[1]);
             e->line = line;
@@ -162,6 +176,12 @@ static int parse_header(const char *path, const char *data, size_t size, ply_hea
         } else if (!strcmp(w[0], "property")) {
             if (!h->n_elements) return bad(err, path, line, "a property comes before any element");
             ply_element *e = &h->elements[h->n_elements - 1];
+            /* Assimp's reader ends an element's properties at an obj_info line and passes over
+             * the rest of them: the element would lose this one */
+            if (info)
+                return err_at(err, ERR_INPUT, path, line, 1, "a property of element '%s' follows an obj_info "
+                              "line (line %u), after which Assimp's reader drops the element's properties; "
+                              "put obj_info lines before the first element", e->name, info);
             if (e->n_props == PLY_MAX_PROPERTIES)
                 return bad(err, path, line, "more than 64 properties in one PLY element");
             ply_property *p = &e->props[e->n_props++];
@@ -194,6 +214,17 @@ static int parse_header(const char *path, const char *data, size_t size, ply_hea
             return err_at(err, ERR_INPUT, path, h->elements[k].line, 1, "element '%s' has %llu items but no "
                           "property; an element with items declares at least one property",
                           h->elements[k].name, (unsigned long long)h->elements[k].count);
+    for (int k = 0; k < h->n_elements; k++) {
+        const ply_element *e = &h->elements[k];
+        if (!e->count || assimp_knows(e->name)) continue;
+        for (int j = k + 1; j < h->n_elements; j++)
+            if (h->elements[j].count && assimp_knows(h->elements[j].name))
+                return err_at(err, ERR_INPUT, path, e->line, 1, "element '%s' has %llu item%s, which Assimp's "
+                              "reader reads as none, as it does for every element but vertex, face, tristrips, "
+                              "edge and material, so it would read element '%s' from the wrong place; leave '%s' "
+                              "out or declare it after the elements it knows", e->name,
+                              (unsigned long long)e->count, e->count == 1 ? "" : "s", h->elements[j].name, e->name);
+    }
     h->body = at;
     h->line = line + 1;
     return 0;

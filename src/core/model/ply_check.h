@@ -2,7 +2,9 @@
  * loops forever, aborts or crashes on a header without end_header or a body shorter than the
  * header declares, and aborts on a face that lists no vertices, so model_import asks this first. It reads the header and walks the body
  * (binary: every scalar and list; ASCII: every number, each item on a line of its own as Assimp
- * reads it) without keeping any of it.
+ * reads it) without keeping any of it. Where Assimp would read the header otherwise than the PLY
+ * format says without failing (an element it does not know, whose items it takes for none,
+ * before one it knows; a property after an obj_info line, which it drops), the file is refused.
  *
  * Nothing is allocated past the call; the file is read into memory for the walk and freed. */
 #ifndef SYLVA_PLY_CHECK_H

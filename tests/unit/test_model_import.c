@@ -12,6 +12,7 @@
 #include "work_dir.h"
 #include "io/image_io.h"
 #include "geometry/cutout.h"
+#include "model/gltf_layout.h"
 #include "model/model_import.h"
 #include "model/obj_statements.h"
 #include "scene/scene.h"
@@ -321,7 +322,7 @@ TEST(gltf_line_loop)
 /* The file at path with its first `from` replaced by `to`. */
 static void replace_in_file(const char *path, const char *from, const char *to)
 {
-    char text[4096], out[4096 + 64];
+    char text[4096], out[4096 + 256];
     FILE *f = fopen(path, "r");
     CHECK(f != NULL);
     if (!f) return;
@@ -330,7 +331,8 @@ static void replace_in_file(const char *path, const char *from, const char *to)
     text[n] = '\0';
     char *at = strstr(text, from);
     CHECK(at != NULL);
-    if (!at || strlen(to) > 64 + strlen(from)) return;
+    CHECK(strlen(to) <= 256 + strlen(from));
+    if (!at || strlen(to) > 256 + strlen(from)) return;
     snprintf(out, sizeof out, "%.*s%s%s", (int)(at - text), text, to, at + strlen(from));
     f = fopen(path, "w");
     CHECK(f != NULL);
@@ -374,6 +376,64 @@ TEST(gltf_escaped_key)
     put(f, gltf, strlen(gltf)), put(f, "   ", len - strlen(gltf));
     fclose(f);
     expect_error(path, NULL, ERR_INPUT, "escaped.glb: the JSON chunk, line 1, column 28: the key \"me\\u0073hes\"");
+}
+
+/* Assimp 5.2 bounds an accessor by its component size times its count and then copies whole
+ * elements from its offset: an accessor one byte past its view read past the end of its buffer
+ * (a heap overflow under ASan; tests/fuzz/regressions/model_import/glb_accessor_one_byte_past_its_view).
+ * The layout is checked against the file's bytes first (model/gltf_layout.h). */
+TEST(gltf_layout_checked)
+{
+    /* each a change to the tetrahedron's glTF and what the refusal says */
+    static const struct { const char *name, *from, *to, *want; } cases[] = {
+        {"offset_past.gltf", "{\"bufferView\":0,", "{\"bufferView\":0,\"byteOffset\":1,",
+         "offset_past.gltf:1:495: accessor 0 reads bytes 1 to 49 of buffer view 0 (4 elements of 12 bytes, 12 apart), "
+         "which holds 48"},
+        {"view_past.gltf", "\"byteOffset\":48,\"byteLength\":24", "\"byteOffset\":50,\"byteLength\":24",
+         "buffer view 1 takes bytes 50 to 74 of buffer 0, which holds 72"},
+        {"wrapping.gltf", "\"byteOffset\":48,", "\"byteOffset\":18446744073709551608,",
+         "buffer view 1's \"byteOffset\" is 18446744073709551608; a whole number from 0 to 9007199254740992"},
+        {"fraction.gltf", "\"count\":4,", "\"count\":4.0,",
+         "accessor 0's \"count\" is 4.0; a whole number from 1 to 4294967295"},
+        {"sparse.gltf", "\"min\":[0,0,0]",
+         "\"sparse\":{\"count\":1,\"indices\":{\"bufferView\":1,\"componentType\":5123},\"values\":{\"bufferView\":0}},"
+         "\"min\":[0,0,0]",
+         "accessor 0 is sparse"},
+        {"version1.gltf", "\"version\":\"2.0\"", "\"version\":\"1.0\"",
+         "version1.gltf:1:21: the file states no glTF version 2"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        const char *path = write_scaled_gltf(cases[i].name, "1,1,1");
+        replace_in_file(path, cases[i].from, cases[i].to);
+        expect_error(path, NULL, ERR_INPUT, cases[i].want);
+    }
+
+    /* an interleaved view is read: normals 12 bytes into a view of stride 24 end with it */
+    const char *interleaved = "{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":96}],\"bufferViews\":"
+                              "[{\"buffer\":0,\"byteLength\":96,\"byteStride\":24}],\"accessors\":[{\"bufferView\":0,"
+                              "\"componentType\":5126,\"count\":4,\"type\":\"VEC3\"},{\"bufferView\":0,\"byteOffset\":12,"
+                              "\"componentType\":5126,\"count\":4,\"type\":\"VEC3\"}]}";
+    err_buf err = {{0}};
+    CHECK_INT(gltf_layout_check(interleaved, strlen(interleaved), GLTF_NO_BIN, "i.gltf", &err), 0);
+    CHECK_INT(err.msg[0], 0);
+
+    /* a GLB: buffer 0 is the BIN chunk, here 36 bytes, whatever the JSON states of it */
+    const char *json = "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[0]}],\"nodes\":[{\"mesh\":0}],"
+                       "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0}}]}],\"buffers\":[{\"byteLength\":"
+                       "40}],\"bufferViews\":[{\"buffer\":0,\"byteLength\":36}],\"accessors\":[{\"bufferView\":0,"
+                       "\"byteOffset\":1,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\"}]}";
+    uint32_t len = (uint32_t)(strlen(json) + 3) / 4 * 4, bin = 36, total = 20 + len + 8 + bin;
+    uint32_t json_type = 0x4E4F534A, bin_type = 0x004E4942;
+    const char *path = work_path("past.glb");
+    FILE *f = fopen(path, "wb");
+    CHECK(f != NULL);
+    if (!f) return;
+    put(f, "glTF", 4), put(f, &(uint32_t){2}, 4), put(f, &total, 4), put(f, &len, 4), put(f, &json_type, 4);
+    put(f, json, strlen(json)), put(f, "   ", len - strlen(json));
+    put(f, &bin, 4), put(f, &bin_type, 4), put(f, tet_pos, bin);
+    fclose(f);
+    expect_error(path, NULL, ERR_INPUT, "past.glb (its JSON chunk):1:");
+    expect_error(path, NULL, ERR_INPUT, "accessor 0 reads bytes 1 to 37 of buffer view 0");
 }
 
 static void expect_error(const char *path, const model_import_options *o, err_status status, const char *want)
@@ -628,12 +688,12 @@ TEST(read_by_its_extension_alone)
     /* Assimp hands a file its own readers refuse to its other readers: this OBJ named .gltf used
      * to be imported as a triangle */
     const char *obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
-    expect_error(write_text("triangle.gltf", obj), NULL, ERR_INPUT, "triangle.gltf: cannot read the model");
+    expect_error(write_text("triangle.gltf", obj), NULL, ERR_INPUT, "triangle.gltf:1:1: not a JSON value");
     expect_error(write_text("triangle.stl", obj), NULL, ERR_INPUT, "triangle.stl: cannot read the model");
     const char *ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                       "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
                       "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
-    expect_error(write_text("triangle_ply.glb", ply), NULL, ERR_INPUT, "triangle_ply.glb: cannot read the model");
+    expect_error(write_text("triangle_ply.glb", ply), NULL, ERR_INPUT, "triangle_ply.glb:1:1: not a JSON value");
     /* and the same files under their own names are read */
     scene *s = scene_new();
     mesh *m = NULL;
@@ -859,5 +919,5 @@ TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TES
           TEST_CASE(ply_header_read_as_assimp_reads_it), TEST_CASE(unreadable_material_library_leaves_no_file_open),
           TEST_CASE(texture_coordinate_not_finite), TEST_CASE(damaged_glb_chunk), TEST_CASE(y_up_files_are_turned),
           TEST_CASE(obj_with_mtl_texture_points_lines), TEST_CASE(gltf_mirrored_node_keeps_winding),
-          TEST_CASE(gltf_node_scale_beyond_single_precision),
+          TEST_CASE(gltf_node_scale_beyond_single_precision), TEST_CASE(gltf_layout_checked),
           TEST_CASE(clear_errors))

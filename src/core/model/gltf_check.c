@@ -1,11 +1,15 @@
-/* gltf_check.c — the mimeType, uri and mode values of a glTF (JSON) or GLB (its JSON chunk is text
- * in the file) checked before Assimp reads it (gltf_check.h). */
+/* gltf_check.c — the keys, the mimeType, uri and mode values and the byte layout (gltf_layout.h)
+ * of a glTF (JSON) or GLB (its JSON chunk is text in the file) checked before Assimp reads it
+ * (gltf_check.h). */
 #include "model/gltf_check.h"
 
 #include <errno.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "model/gltf_layout.h"
 
 /* Where the value of the key that starts at data[at] (its quotes included) starts, past the colon
  * and the white space; size when the key is followed by no colon. */
@@ -75,15 +79,23 @@ static size_t escaped_key(const char *text, size_t n)
     return n;
 }
 
-/* The JSON of a glTF file: all of it, or a GLB's first chunk (glb_check has found its length
- * within the file). */
-static void json_text(const char *data, size_t size, const char **text, size_t *n)
+static uint64_t le32(const char *p)
 {
-    *text = data, *n = size;
+    const unsigned char *b = (const unsigned char *)p;
+    return (uint64_t)b[0] | (uint64_t)b[1] << 8 | (uint64_t)b[2] << 16 | (uint64_t)b[3] << 24;
+}
+
+/* The JSON of a glTF file: all of it, or a GLB's first chunk (glb_check has found its length
+ * within the file). *bin: the length of a GLB's BIN chunk, found as Assimp finds it (after the
+ * JSON chunk padded to 4 bytes, when the length the header states reaches past its header; 0
+ * when it does not), GLTF_NO_BIN when the file is not a GLB. */
+static void json_text(const char *data, size_t size, const char **text, size_t *n, uint64_t *bin)
+{
+    *text = data, *n = size, *bin = GLTF_NO_BIN;
     if (size >= 20 && !memcmp(data, "glTF", 4) && !memcmp(data + 16, "JSON", 4)) {
-        const unsigned char *b = (const unsigned char *)data + 12;
-        size_t len = (size_t)b[0] | (size_t)b[1] << 8 | (size_t)b[2] << 16 | (size_t)b[3] << 24;
-        *text = data + 20, *n = len < size - 20 ? len : size - 20;
+        uint64_t len = le32(data + 12), body = 20 + ((len + 3) & ~(uint64_t)3);
+        *text = data + 20, *n = len < size - 20 ? (size_t)len : size - 20;
+        *bin = le32(data + 8) >= body + 8 && body + 8 <= size ? le32(data + body) : 0;
     }
 }
 
@@ -93,7 +105,8 @@ static int keys_plain(const char *path, const char *data, size_t size, err_buf *
 {
     const char *text;
     size_t n;
-    json_text(data, size, &text, &n);
+    uint64_t bin;
+    json_text(data, size, &text, &n, &bin);
     size_t at = escaped_key(text, n), line = 1, column = 1, end = at + 1;
     if (at >= n) return 0;
     for (size_t i = 0; i < at; i++) column = text[i] == '\n' ? (line++, 1) : column + 1;
@@ -149,7 +162,16 @@ int gltf_check(const char *path, err_buf *err)
     } else if (fread(data, 1, (size_t)size, f) != (size_t)size) {
         err_fail(err, ERR_INPUT, "%s: cannot read the model: a read error", path);
     } else {
-        rc = keys_plain(path, data, (size_t)size, err) || values_checked(path, data, (size_t)size, err) ? -1 : 0;
+        const char *text;
+        size_t n;
+        uint64_t bin;
+        json_text(data, (size_t)size, &text, &n, &bin);
+        char where[ERR_FILE_MAX + 32];
+        snprintf(where, sizeof where, bin != GLTF_NO_BIN ? "%s (its JSON chunk)" : "%s", path);
+        rc = keys_plain(path, data, (size_t)size, err) || values_checked(path, data, (size_t)size, err) ||
+                     gltf_layout_check(text, n, bin, where, err)
+                 ? -1
+                 : 0;
     }
     free(data);
     fclose(f);

@@ -6,15 +6,17 @@
  * 2) dereferences its first line, which it left empty when that line's indices are past the
  * vertices (a null pointer). The file is read whole and searched for "mimeType", "uri" and "mode"
  * keys; a key written with an escape ("mod\u0065"), which Assimp's JSON reader decodes and the
- * search would not find, is refused. Nothing is allocated past the call. */
+ * search would not find, is refused. Then the layout its JSON states, read whole, is checked
+ * against its bytes (gltf_layout.h). Nothing is allocated past the call. */
 #ifndef SYLVA_GLTF_CHECK_H
 #define SYLVA_GLTF_CHECK_H
 
 #include "util/err.h"
 
 /* 0 when no key of the JSON is written with an escape, every "mimeType" string value in the file
- * holds a '/', no "uri" value ends with "://" or is two backslashes and no "mode" is 2; -1 with err set ("path: ...", ERR_INPUT) naming the
- * first that fails, or when the file cannot be read. */
+ * holds a '/', no "uri" value ends with "://" or is two backslashes, no "mode" is 2 and
+ * gltf_layout_check passes; -1 with err set ("path...: ...", ERR_INPUT; ERR_LIMIT or ERR_NOMEM
+ * from the JSON reader) naming the first that fails, or when the file cannot be read. */
 int gltf_check(const char *path, err_buf *err);
 
 #endif

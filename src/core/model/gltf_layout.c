@@ -1,0 +1,206 @@
+/* gltf_layout.c — buffers, buffer views and accessors of a glTF 2.0 file checked against one
+ * another (gltf_layout.h). */
+#include "model/gltf_layout.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "util/json_read.h"
+
+typedef struct layout {
+    json_doc d;
+    const char *where;
+    err_buf *err;
+} layout;
+
+/* -1 with err set at value v of the JSON: "where:L:C: what". */
+static int fail(layout *l, uint32_t v, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+static int fail(layout *l, uint32_t v, const char *fmt, ...)
+{
+    char what[512];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    uint32_t line, column;
+    json_line_column(&l->d, l->d.values[v].at, &line, &column);
+    return err_fail(l->err, ERR_INPUT, "%s:%u:%u: %s", l->where, line, column, what);
+}
+
+/* The whole number of member key of object o into *out: dflt when the member is absent and dflt
+ * is not -1 (then *present is 0); otherwise it must be a whole number from lo to hi. what names
+ * the object in messages ("accessor 5"). */
+static int whole(layout *l, uint32_t o, const char *key, int64_t dflt, uint64_t lo, uint64_t hi, const char *what,
+                 uint64_t *out)
+{
+    uint32_t m = json_member(&l->d, o, key);
+    if (!m) {
+        if (dflt >= 0) return *out = (uint64_t)dflt, 0;
+        return fail(l, o, "%s has no \"%s\"; a glTF 2.0 file gives one", what, key);
+    }
+    if (json_whole(&l->d, m, out) && *out >= lo && *out <= hi) return 0;
+    const json_value *v = &l->d.values[m];
+    uint32_t shown = v->kind == JSON_STRING ? v->len + 2 : v->kind == JSON_ARRAY || v->kind == JSON_OBJECT ? 1 : v->len;
+    return fail(l, m, "%s's \"%s\" is %.*s%s; a whole number from %llu to %llu, written with digits alone, is valid",
+                what, key, (int)(shown > 24 ? 24 : shown), l->d.text + v->at, shown > 24 ? "..." : "",
+                (unsigned long long)lo, (unsigned long long)hi);
+}
+
+/* The array of member key of the root, its item count in *count (0 when absent). */
+static int array(layout *l, const char *key, uint32_t *arr, uint32_t *count)
+{
+    *count = 0;
+    *arr = json_member(&l->d, 0, key);
+    if (!*arr) return 0;
+    if (l->d.values[*arr].kind != JSON_ARRAY) return fail(l, *arr, "\"%s\" is not an array", key);
+    for (uint32_t v = l->d.values[*arr].first; v; v = l->d.values[v].next) {
+        if (l->d.values[v].kind != JSON_OBJECT) return fail(l, v, "item %u of \"%s\" is not an object", *count, key);
+        (*count)++;
+    }
+    return 0;
+}
+
+static unsigned component_size(uint64_t type)
+{
+    switch (type) {
+    case 5120: case 5121: return 1; /* BYTE, UNSIGNED_BYTE */
+    case 5122: case 5123: return 2; /* SHORT, UNSIGNED_SHORT */
+    case 5125: case 5126: return 4; /* UNSIGNED_INT, FLOAT */
+    default: return 0;
+    }
+}
+
+/* The components of the accessor type v ("VEC3": 3), 0 when it is none of glTF's. */
+static unsigned type_components(const layout *l, uint32_t v)
+{
+    static const struct { const char *name; unsigned n; } types[] = {
+        {"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4}, {"MAT2", 4}, {"MAT3", 9}, {"MAT4", 16}};
+    for (size_t k = 0; k < sizeof types / sizeof types[0]; k++)
+        if (json_string_is(&l->d, v, types[k].name)) return types[k].n;
+    return 0;
+}
+
+/* The bytes each buffer holds as the reader takes them, into held[] (n_buffers): a GLB's buffer 0
+ * is its BIN chunk, whatever the JSON states of it; another, its byteLength, which the reader
+ * holds the buffer's data to. */
+static int check_buffers(layout *l, uint64_t bin, uint32_t buffers, uint32_t n_buffers, uint64_t *held)
+{
+    char what[48];
+    uint32_t v = l->d.values[buffers].first;
+    for (uint32_t i = 0; i < n_buffers; i++, v = l->d.values[v].next) {
+        snprintf(what, sizeof what, "buffer %u", i);
+        if (bin != GLTF_NO_BIN && i == 0) held[i] = bin;
+        else if (whole(l, v, "byteLength", -1, 1, 1ull << 53, what, &held[i])) return -1;
+    }
+    return 0;
+}
+
+/* Each view's buffer and bytes checked against the bytes its buffer holds (held[], n_buffers);
+ * the views' lengths and strides kept in view_len[] and view_stride[] (n_views each). */
+static int check_views(layout *l, uint32_t views, uint32_t n_views, const uint64_t *held, uint32_t n_buffers,
+                       uint64_t *view_len, uint64_t *view_stride)
+{
+    char what[48];
+    uint32_t v = l->d.values[views].first;
+    for (uint32_t i = 0; i < n_views; i++, v = l->d.values[v].next) {
+        uint64_t b, offset, length;
+        snprintf(what, sizeof what, "buffer view %u", i);
+        if (!n_buffers) return fail(l, v, "%s names a buffer, and the file has none", what);
+        if (whole(l, v, "buffer", -1, 0, n_buffers - 1, what, &b) ||
+            whole(l, v, "byteOffset", 0, 0, 1ull << 53, what, &offset) ||
+            whole(l, v, "byteLength", -1, 1, 1ull << 53, what, &length) ||
+            whole(l, v, "byteStride", 0, 0, 252, what, &view_stride[i]))
+            return -1;
+        if (view_stride[i] && (view_stride[i] < 4 || view_stride[i] % 4))
+            return fail(l, json_member(&l->d, v, "byteStride"), "%s's byteStride is %llu; a multiple of 4 from 4 "
+                        "to 252 is valid", what, (unsigned long long)view_stride[i]);
+        if (offset + length > held[b])
+            return fail(l, v, "%s takes bytes %llu to %llu of buffer %llu, which holds %llu; a view lies within its "
+                        "buffer (a GLB's buffer 0 is its BIN chunk): export the model again", what,
+                        (unsigned long long)offset, (unsigned long long)(offset + length), (unsigned long long)b,
+                        (unsigned long long)held[b]);
+        view_len[i] = length;
+    }
+    return 0;
+}
+
+static int check_accessors(layout *l, uint32_t n_views, const uint64_t *view_len, const uint64_t *view_stride)
+{
+    uint32_t accessors, n_accessors;
+    if (array(l, "accessors", &accessors, &n_accessors)) return -1;
+    char what[48];
+    uint32_t a = l->d.values[accessors].first;
+    for (uint32_t i = 0; i < n_accessors; i++, a = l->d.values[a].next) {
+        snprintf(what, sizeof what, "accessor %u", i);
+        uint32_t sparse = json_member(&l->d, a, "sparse");
+        if (sparse)
+            return fail(l, sparse, "%s is sparse, whose indices the model reader writes by without checking "
+                        "them; export the model without sparse accessors (morph targets and shape keys off)", what);
+        uint64_t component, count, offset, view;
+        if (whole(l, a, "componentType", -1, 5120, 5126, what, &component) ||
+            whole(l, a, "count", -1, 1, UINT32_MAX, what, &count) ||
+            whole(l, a, "byteOffset", 0, 0, 1ull << 53, what, &offset))
+            return -1;
+        unsigned size = component_size(component);
+        if (!size)
+            return fail(l, json_member(&l->d, a, "componentType"), "%s's componentType is %llu; valid are 5120, "
+                        "5121, 5122, 5123, 5125 and 5126", what, (unsigned long long)component);
+        uint32_t type = json_member(&l->d, a, "type");
+        if (!type) return fail(l, a, "%s has no \"type\"; a glTF 2.0 file gives one", what);
+        unsigned components = type_components(l, type);
+        if (!components)
+            return fail(l, type, "%s's type is not one of \"SCALAR\", \"VEC2\", \"VEC3\", \"VEC4\", \"MAT2\", "
+                        "\"MAT3\" and \"MAT4\"", what);
+        if (!json_member(&l->d, a, "bufferView")) continue; /* all zeros, which the reader refuses */
+        if (!n_views) return fail(l, a, "%s names a buffer view, and the file has none", what);
+        if (whole(l, a, "bufferView", -1, 0, n_views - 1, what, &view)) return -1;
+        uint64_t element = (uint64_t)size * components;
+        uint64_t stride = view_stride[view] ? view_stride[view] : element;
+        uint64_t end = offset + (count - 1) * stride + element; /* below 2^63: each term is */
+        if (end > view_len[view])
+            return fail(l, a, "%s reads bytes %llu to %llu of buffer view %llu (%llu elements of %llu bytes, "
+                        "%llu apart), which holds %llu; an accessor lies within its view: export the model again",
+                        what, (unsigned long long)offset, (unsigned long long)end, (unsigned long long)view,
+                        (unsigned long long)count, (unsigned long long)element, (unsigned long long)stride,
+                        (unsigned long long)view_len[view]);
+    }
+    return 0;
+}
+
+int gltf_layout_check(const char *json, size_t n, uint64_t bin, const char *where, err_buf *err)
+{
+    layout l = {.where = where, .err = err};
+    if (json_read(&l.d, json, n, where, err)) return -1;
+    int rc = -1;
+    uint64_t *held = NULL; /* owned: freed below; the buffers' bytes, then the views' lengths and strides */
+    uint32_t buffers, n_buffers, views, n_views;
+    if (l.d.values[0].kind != JSON_OBJECT) {
+        fail(&l, 0, "a glTF file is one JSON object");
+        goto done;
+    }
+    uint32_t asset = json_member(&l.d, 0, "asset"), version = asset ? json_member(&l.d, asset, "version") : 0;
+    if (!version || l.d.values[version].kind != JSON_STRING || l.d.values[version].len < 1 ||
+        l.d.text[l.d.values[version].at + 1] != '2') {
+        fail(&l, version ? version : asset, "the file states no glTF version 2 (\"asset\": {\"version\": "
+             "\"2.0\"}); sylva reads glTF 2.0");
+        goto done;
+    }
+    if (array(&l, "buffers", &buffers, &n_buffers) || array(&l, "bufferViews", &views, &n_views)) goto done;
+    held = calloc((size_t)n_buffers + 2 * (size_t)n_views + 1, sizeof *held);
+    if (!held) {
+        err_nomem(err, "%s: out of memory checking %u buffers and %u buffer views", where, n_buffers, n_views);
+        goto done;
+    }
+    uint64_t *view_len = held + n_buffers, *view_stride = view_len + n_views;
+    if (check_buffers(&l, bin, buffers, n_buffers, held) ||
+        check_views(&l, views, n_views, held, n_buffers, view_len, view_stride) ||
+        check_accessors(&l, n_views, view_len, view_stride))
+        goto done;
+    rc = 0;
+done:
+    free(held);
+    json_free(&l.d);
+    return rc;
+}

@@ -316,7 +316,8 @@ TEST(gltf_line_loop)
                  "sylva draws triangles: export the mesh as triangles (mode 4) or leave the line loop out");
     expect_error(write_tet_gltf("line_loop.gltf", "1,1,1", 2, loop, 4), NULL, ERR_INPUT, "is a line loop (mode 2)");
     expect_error(write_tet_gltf("triangles_past.gltf", "1,1,1", 4, past, 4), NULL, ERR_INPUT, "cannot read the model");
-    expect_error(write_tet_gltf("mode_20.gltf", "1,1,1", 20, loop, 4), NULL, ERR_INPUT, "cannot read the model");
+    expect_error(write_tet_gltf("mode_20.gltf", "1,1,1", 20, loop, 4), NULL, ERR_INPUT,
+                 "mode_20.gltf:1:214: mesh 0 primitive 0's \"mode\" is 20; a whole number from 0 to 6");
 }
 
 /* The file at path with its first `from` replaced by `to`. */
@@ -408,6 +409,28 @@ TEST(gltf_layout_checked)
         expect_error(path, NULL, ERR_INPUT, cases[i].want);
     }
 
+    /* Assimp makes count - 2 faces of a fan and writes the first: a fan of two indices wrote past
+     * an array of none, a line strip of one likewise, a strip of one asked for 2^64 faces */
+    static const uint16_t few[2] = {0, 1};
+    expect_error(write_tet_gltf("fan_of_two.gltf", "1,1,1", 6, few, 2), NULL, ERR_INPUT,
+                 "fan_of_two.gltf:1:164: mesh 0 primitive 0 draws a triangle fan of 2 vertices, and a triangle fan needs "
+                 "at least 3");
+    expect_error(write_tet_gltf("line_strip_of_one.gltf", "1,1,1", 3, few, 1), NULL, ERR_INPUT,
+                 "draws a line strip of 1 vertex, and a line strip needs at least 2");
+    expect_error(write_tet_gltf("strip_of_one.gltf", "1,1,1", 5, few, 1), NULL, ERR_INPUT,
+                 "draws a triangle strip of 1 vertex");
+    const char *path = write_scaled_gltf("paired_indices.gltf", "1,1,1");
+    replace_in_file(path, "\"componentType\":5123", "\"componentType\":5121");
+    replace_in_file(path, "\"type\":\"SCALAR\"", "\"type\":\"VEC2\"");
+    expect_error(path, NULL, ERR_INPUT, "accessor 1, the indices of mesh 0 primitive 0, is not a SCALAR of "
+                                        "componentType 5121, 5123 or 5125");
+    path = write_scaled_gltf("no_position.gltf", "1,1,1");
+    replace_in_file(path, "{\"POSITION\":0}", "{\"NORMAL\":0}");
+    expect_error(path, NULL, ERR_INPUT, "mesh 0 primitive 0 has no POSITION attribute");
+    path = write_scaled_gltf("far_indices.gltf", "1,1,1");
+    replace_in_file(path, "\"indices\":1", "\"indices\":2");
+    expect_error(path, NULL, ERR_INPUT, "mesh 0 primitive 0's \"indices\" is 2; a whole number from 0 to 1");
+
     /* an interleaved view is read: normals 12 bytes into a view of stride 24 end with it */
     const char *interleaved = "{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":96}],\"bufferViews\":"
                               "[{\"buffer\":0,\"byteLength\":96,\"byteStride\":24}],\"accessors\":[{\"bufferView\":0,"
@@ -424,7 +447,7 @@ TEST(gltf_layout_checked)
                        "\"byteOffset\":1,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\"}]}";
     uint32_t len = (uint32_t)(strlen(json) + 3) / 4 * 4, bin = 36, total = 20 + len + 8 + bin;
     uint32_t json_type = 0x4E4F534A, bin_type = 0x004E4942;
-    const char *path = work_path("past.glb");
+    path = work_path("past.glb");
     FILE *f = fopen(path, "wb");
     CHECK(f != NULL);
     if (!f) return;

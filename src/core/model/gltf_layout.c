@@ -126,13 +126,13 @@ static int check_views(layout *l, uint32_t views, uint32_t n_views, const uint64
     return 0;
 }
 
-static int check_accessors(layout *l, uint32_t n_views, const uint64_t *view_len, const uint64_t *view_stride)
+/* Each accessor (its value's index in accessor[], n_accessors) within its view. */
+static int check_accessors(layout *l, const uint32_t *accessor, uint32_t n_accessors, uint32_t n_views,
+                           const uint64_t *view_len, const uint64_t *view_stride)
 {
-    uint32_t accessors, n_accessors;
-    if (array(l, "accessors", &accessors, &n_accessors)) return -1;
     char what[48];
-    uint32_t a = l->d.values[accessors].first;
-    for (uint32_t i = 0; i < n_accessors; i++, a = l->d.values[a].next) {
+    for (uint32_t i = 0; i < n_accessors; i++) {
+        uint32_t a = accessor[i];
         snprintf(what, sizeof what, "accessor %u", i);
         uint32_t sparse = json_member(&l->d, a, "sparse");
         if (sparse)
@@ -169,13 +169,77 @@ static int check_accessors(layout *l, uint32_t n_views, const uint64_t *view_len
     return 0;
 }
 
+/* The accessor index of member key of object o (an attribute or "indices") into *out, checked
+ * against n_accessors; *out = UINT32_MAX when the member is absent. what names o in messages. */
+static int accessor_ref(layout *l, uint32_t o, const char *key, uint32_t n_accessors, const char *what, uint32_t *out)
+{
+    uint64_t i;
+    *out = UINT32_MAX;
+    if (!json_member(&l->d, o, key)) return 0;
+    if (!n_accessors) return fail(l, o, "%s names an accessor, and the file has none", what);
+    if (whole(l, o, key, -1, 0, n_accessors - 1, what, &i)) return -1;
+    *out = (uint32_t)i;
+    return 0;
+}
+
+/* Each mesh primitive draws enough vertices for its mode: Assimp 5.2 makes count - 2 faces of a
+ * triangle fan or strip and count - 1 of a line strip and then writes the first whatever that
+ * came to (a fan of two indices wrote a face into an array of none; one index asked for 2^64
+ * faces); its indices are an unsigned integer scalar, as the spec says. The accessors
+ * (accessor[], n_accessors, their values) have been checked before. */
+static int check_primitives(layout *l, const uint32_t *accessor, uint32_t n_accessors)
+{
+    static const char *const modes[] = {"points", "lines", "a line loop", "a line strip", "triangles",
+                                        "a triangle strip", "a triangle fan"};
+    static const uint64_t least[] = {1, 2, 2, 2, 3, 3, 3};
+    uint32_t meshes, n_meshes;
+    if (array(l, "meshes", &meshes, &n_meshes)) return -1;
+    char what[64];
+    uint32_t m = l->d.values[meshes].first;
+    for (uint32_t i = 0; i < n_meshes; i++, m = l->d.values[m].next) {
+        uint32_t prims = json_member(&l->d, m, "primitives");
+        if (!prims) continue;
+        if (l->d.values[prims].kind != JSON_ARRAY) return fail(l, prims, "mesh %u's \"primitives\" is not an array", i);
+        uint32_t k = 0;
+        for (uint32_t p = l->d.values[prims].first; p; p = l->d.values[p].next, k++) {
+            snprintf(what, sizeof what, "mesh %u primitive %u", i, k);
+            if (l->d.values[p].kind != JSON_OBJECT) return fail(l, p, "%s is not an object", what);
+            uint64_t mode, count;
+            uint32_t attributes = json_member(&l->d, p, "attributes"), position, indices;
+            if (whole(l, p, "mode", 4, 0, 6, what, &mode)) return -1;
+            if (!attributes || l->d.values[attributes].kind != JSON_OBJECT)
+                return fail(l, p, "%s has no \"attributes\" object; a primitive gives its POSITION there", what);
+            if (accessor_ref(l, attributes, "POSITION", n_accessors, what, &position) ||
+                accessor_ref(l, p, "indices", n_accessors, what, &indices))
+                return -1;
+            if (position == UINT32_MAX) return fail(l, attributes, "%s has no POSITION attribute", what);
+            uint32_t a = accessor[indices != UINT32_MAX ? indices : position];
+            if (whole(l, a, "count", -1, 1, UINT32_MAX, "the accessor", &count)) return -1;
+            if (indices != UINT32_MAX) {
+                uint64_t component;
+                if (whole(l, a, "componentType", -1, 5120, 5126, "the accessor", &component)) return -1;
+                if (!json_string_is(&l->d, json_member(&l->d, a, "type"), "SCALAR") ||
+                    (component != 5121 && component != 5123 && component != 5125))
+                    return fail(l, a, "accessor %u, the indices of %s, is not a SCALAR of componentType 5121, 5123 "
+                                "or 5125 (an unsigned byte, short or int)", indices, what);
+            }
+            if (count < least[mode])
+                return fail(l, p, "%s draws %s of %llu %s, and %s needs at least %llu; leave the primitive out or "
+                            "export it again", what, modes[mode], (unsigned long long)count,
+                            count == 1 ? "vertex" : "vertices", modes[mode], (unsigned long long)least[mode]);
+        }
+    }
+    return 0;
+}
+
 int gltf_layout_check(const char *json, size_t n, uint64_t bin, const char *where, err_buf *err)
 {
     layout l = {.where = where, .err = err};
     if (json_read(&l.d, json, n, where, err)) return -1;
     int rc = -1;
-    uint64_t *held = NULL; /* owned: freed below; the buffers' bytes, then the views' lengths and strides */
-    uint32_t buffers, n_buffers, views, n_views;
+    uint64_t *held = NULL;     /* owned: freed below; the buffers' bytes, then the views' lengths and strides */
+    uint32_t *accessor = NULL; /* owned: freed below; the accessors' values */
+    uint32_t buffers, n_buffers, views, n_views, accessors, n_accessors;
     if (l.d.values[0].kind != JSON_OBJECT) {
         fail(&l, 0, "a glTF file is one JSON object");
         goto done;
@@ -187,20 +251,28 @@ int gltf_layout_check(const char *json, size_t n, uint64_t bin, const char *wher
              "\"2.0\"}); sylva reads glTF 2.0");
         goto done;
     }
-    if (array(&l, "buffers", &buffers, &n_buffers) || array(&l, "bufferViews", &views, &n_views)) goto done;
+    if (array(&l, "buffers", &buffers, &n_buffers) || array(&l, "bufferViews", &views, &n_views) ||
+        array(&l, "accessors", &accessors, &n_accessors))
+        goto done;
     held = calloc((size_t)n_buffers + 2 * (size_t)n_views + 1, sizeof *held);
-    if (!held) {
-        err_nomem(err, "%s: out of memory checking %u buffers and %u buffer views", where, n_buffers, n_views);
+    accessor = calloc((size_t)n_accessors + 1, sizeof *accessor);
+    if (!held || !accessor) {
+        err_nomem(err, "%s: out of memory checking %u buffers, %u buffer views and %u accessors", where, n_buffers,
+                  n_views, n_accessors);
         goto done;
     }
+    for (uint32_t i = 0, a = l.d.values[accessors].first; i < n_accessors; i++, a = l.d.values[a].next)
+        accessor[i] = a;
     uint64_t *view_len = held + n_buffers, *view_stride = view_len + n_views;
     if (check_buffers(&l, bin, buffers, n_buffers, held) ||
         check_views(&l, views, n_views, held, n_buffers, view_len, view_stride) ||
-        check_accessors(&l, n_views, view_len, view_stride))
+        check_accessors(&l, accessor, n_accessors, n_views, view_len, view_stride) ||
+        check_primitives(&l, accessor, n_accessors))
         goto done;
     rc = 0;
 done:
     free(held);
+    free(accessor);
     json_free(&l.d);
     return rc;
 }

@@ -1,4 +1,5 @@
-/* gltf_layout.h — the byte layout a glTF 2.0 file states, checked before Assimp reads it.
+/* gltf_layout.h — the layout a glTF 2.0 file states (its bytes and its primitives' vertex counts),
+ * checked before Assimp reads it.
  * Assimp 5.2 bounds an accessor by its component size times its count, not by its elements and
  * their stride from its offset, and then copies whole elements: an accessor one byte past the end
  * of its buffer view made it read past the end of its buffer. It adds offsets and lengths in
@@ -6,8 +7,10 @@
  * the sparse indices say, unchecked. So, on the JSON as Assimp reads it (json_read.h): the
  * version is 2; every buffer view lies within its buffer (a GLB's buffer 0 is its BIN chunk);
  * every accessor's elements, from its offset at its view's stride, lie within its view; the
- * numbers these take are whole numbers of their ranges; and no accessor is sparse.
- * Nothing is allocated past the call. */
+ * numbers these take are whole numbers of their ranges; no accessor is sparse; and every mesh
+ * primitive has a POSITION and draws enough vertices for its mode, with indices of an unsigned
+ * integer type: Assimp makes count - 2 faces of a triangle fan and then writes the first, so a
+ * fan of two indices wrote a face into an array of none. Nothing is allocated past the call. */
 #ifndef SYLVA_GLTF_LAYOUT_H
 #define SYLVA_GLTF_LAYOUT_H
 

@@ -379,6 +379,70 @@ TEST(gltf_escaped_key)
     expect_error(path, NULL, ERR_INPUT, "escaped.glb: the JSON chunk, line 1, column 28: the key \"me\\u0073hes\"");
 }
 
+/* gltf_layout_check on the JSON text: refused with a message containing want, or passed (NULL). */
+static void expect_layout(const char *json, const char *want)
+{
+    err_buf err = {{0}};
+    CHECK_INT(gltf_layout_check(json, strlen(json), GLTF_NO_BIN, "t.gltf", &err), want ? -1 : 0);
+    if (want) CHECK_STR_CONTAINS(err.msg, want);
+    else CHECK_INT(err.msg[0], 0);
+}
+
+/* Assimp 5.2 recurses down a node hierarchy, and reads an animation sampler's output one value
+ * (three for a cubic spline) for each of its input's times whatever its count */
+TEST(gltf_nodes_and_animations_checked)
+{
+    /* a chain of nodes 1000 deep is read, 1001 deep refused; a node of 100,000 children is read */
+    size_t cap = 16 * 100001 + 256;
+    char *json = malloc(cap);
+    CHECK(json != NULL);
+    if (!json) return;
+    for (int levels = 1000; levels <= 1001; levels++) {
+        size_t n = (size_t)snprintf(json, cap, "{\"asset\":{\"version\":\"2.0\"},\"nodes\":[");
+        for (int i = 0; i < levels; i++)
+            n += (size_t)snprintf(json + n, cap - n, i + 1 < levels ? "{\"children\":[%d]}," : "{}", i + 1);
+        snprintf(json + n, cap - n, "]}");
+        expect_layout(json, levels == 1000 ? NULL : "the node hierarchy is deeper than 1000 levels");
+    }
+    size_t n = (size_t)snprintf(json, cap, "{\"asset\":{\"version\":\"2.0\"},\"nodes\":[{\"children\":[");
+    for (int i = 1; i <= 100000; i++) n += (size_t)snprintf(json + n, cap - n, i < 100000 ? "%d," : "%d", i);
+    n += (size_t)snprintf(json + n, cap - n, "]}");
+    for (int i = 1; i <= 100000; i++) n += (size_t)snprintf(json + n, cap - n, ",{}");
+    snprintf(json + n, cap - n, "]}");
+    expect_layout(json, NULL);
+    free(json);
+
+    expect_layout("{\"asset\":{\"version\":\"2.0\"},\"nodes\":[{\"children\":[1]},{\"children\":[0]}]}",
+                  "t.gltf:1:67: node 1 has node 0 for a child, which is its ancestor or itself");
+    expect_layout("{\"asset\":{\"version\":\"2.0\"},\"nodes\":[{\"children\":[2]}]}",
+                  "node 0 has a child that is not one of the file's 1 nodes");
+
+    /* animations: 3 times, and outputs of 2, 6 and 9 values */
+    static const struct { const char *sampler, *channel, *want; } cases[] = {
+        {"{\"input\":0,\"output\":1}", "{\"sampler\":0,\"target\":{\"node\":0,\"path\":\"translation\"}}",
+         "animation 0 sampler 0 has 3 times and 2 values; it needs one for each time"},
+        {"{\"input\":0,\"output\":2,\"interpolation\":\"CUBICSPLINE\"}", "{\"sampler\":0,\"target\":{\"node\":0}}",
+         "animation 0 sampler 0 has 3 times and 6 values; it needs three"},
+        {"{\"input\":0,\"output\":3,\"interpolation\":\"CUBICSPLINE\"}", "{\"sampler\":0,\"target\":{\"node\":0}}",
+         NULL},
+        {"{\"input\":0,\"output\":2}", "{\"sampler\":1,\"target\":{\"node\":0}}",
+         "animation 0 channel 0's \"sampler\" is 1; a whole number from 0 to 0"},
+        {"{\"input\":0,\"output\":2}", "{\"sampler\":0}", "animation 0 channel 0 has no target object"},
+        {"{\"input\":0,\"output\":2}", "{\"sampler\":0,\"target\":{\"node\":1}}",
+         "animation 0 channel 0's \"node\" is 1; a whole number from 0 to 0"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char text[1024];
+        snprintf(text, sizeof text,
+                 "{\"asset\":{\"version\":\"2.0\"},\"nodes\":[{}],\"accessors\":[{\"componentType\":5126,\"count\":3,"
+                 "\"type\":\"SCALAR\"},{\"componentType\":5126,\"count\":2,\"type\":\"VEC3\"},{\"componentType\":5126,"
+                 "\"count\":6,\"type\":\"VEC3\"},{\"componentType\":5126,\"count\":9,\"type\":\"VEC3\"}],"
+                 "\"animations\":[{\"samplers\":[%s],\"channels\":[%s]}]}",
+                 cases[i].sampler, cases[i].channel);
+        expect_layout(text, cases[i].want);
+    }
+}
+
 /* Assimp 5.2 bounds an accessor by its component size times its count and then copies whole
  * elements from its offset: an accessor one byte past its view read past the end of its buffer
  * (a heap overflow under ASan; tests/fuzz/regressions/model_import/glb_accessor_one_byte_past_its_view).
@@ -431,14 +495,29 @@ TEST(gltf_layout_checked)
     replace_in_file(path, "\"indices\":1", "\"indices\":2");
     expect_error(path, NULL, ERR_INPUT, "mesh 0 primitive 0's \"indices\" is 2; a whole number from 0 to 1");
 
+    /* Assimp reads the matrices of a skin a node uses without looking whether there are any (a
+     * segfault), and one for each joint, and looks the node's skin up unchecked */
+    static const struct { const char *name, *skins, *want; } skins[] = {
+        {"skin_missing.gltf", "", "skin_missing.gltf:1:111: node 1 names a skin, and the file has none"},
+        {"skin_without_matrices.gltf", "\"skins\":[{\"joints\":[0]}],", "skin 0 has no inverseBindMatrices"},
+        {"skin_vec3_matrices.gltf", "\"skins\":[{\"joints\":[0],\"inverseBindMatrices\":0}],",
+         "accessor 0, the inverse bind matrices of skin 0, is not 1 MAT4 of floats (5126), one for each joint"},
+    };
+    for (size_t i = 0; i < sizeof skins / sizeof skins[0]; i++) {
+        const char *skinned = write_scaled_gltf(skins[i].name, "1,1,1");
+        replace_in_file(skinned, "{\"mesh\":0,", "{\"skin\":0,\"mesh\":0,");
+        char with_skins[160];
+        snprintf(with_skins, sizeof with_skins, "%s\"meshes\":", skins[i].skins);
+        replace_in_file(skinned, "\"meshes\":", with_skins);
+        expect_error(skinned, NULL, ERR_INPUT, skins[i].want);
+    }
+
     /* an interleaved view is read: normals 12 bytes into a view of stride 24 end with it */
     const char *interleaved = "{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":96}],\"bufferViews\":"
                               "[{\"buffer\":0,\"byteLength\":96,\"byteStride\":24}],\"accessors\":[{\"bufferView\":0,"
                               "\"componentType\":5126,\"count\":4,\"type\":\"VEC3\"},{\"bufferView\":0,\"byteOffset\":12,"
                               "\"componentType\":5126,\"count\":4,\"type\":\"VEC3\"}]}";
-    err_buf err = {{0}};
-    CHECK_INT(gltf_layout_check(interleaved, strlen(interleaved), GLTF_NO_BIN, "i.gltf", &err), 0);
-    CHECK_INT(err.msg[0], 0);
+    expect_layout(interleaved, NULL);
 
     /* a GLB: buffer 0 is the BIN chunk, here 36 bytes, whatever the JSON states of it */
     const char *json = "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[0]}],\"nodes\":[{\"mesh\":0}],"
@@ -942,5 +1021,5 @@ TEST_LIST(TEST_CASE(z_up_formats_keep_their_axes), TEST_CASE(cut_ply_files), TES
           TEST_CASE(ply_header_read_as_assimp_reads_it), TEST_CASE(unreadable_material_library_leaves_no_file_open),
           TEST_CASE(texture_coordinate_not_finite), TEST_CASE(damaged_glb_chunk), TEST_CASE(y_up_files_are_turned),
           TEST_CASE(obj_with_mtl_texture_points_lines), TEST_CASE(gltf_mirrored_node_keeps_winding),
-          TEST_CASE(gltf_node_scale_beyond_single_precision), TEST_CASE(gltf_layout_checked),
+          TEST_CASE(gltf_node_scale_beyond_single_precision), TEST_CASE(gltf_layout_checked), TEST_CASE(gltf_nodes_and_animations_checked),
           TEST_CASE(clear_errors))

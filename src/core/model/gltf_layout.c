@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "model/model_import.h"
 #include "util/json_read.h"
 
 typedef struct layout {
@@ -232,14 +233,159 @@ static int check_primitives(layout *l, const uint32_t *accessor, uint32_t n_acce
     return 0;
 }
 
+/* Each node's skin is one of the file's, and each skin has inverse bind matrices, a MAT4 of
+ * floats for every joint: Assimp 5.2 looks a node's skin up without checking its index, reads
+ * the matrices of a skin a node uses without looking whether it has any (a skin without them
+ * crashed the program) and reads one for each joint whatever their count. */
+static int check_skins(layout *l, const uint32_t *accessor, uint32_t n_accessors)
+{
+    uint32_t skins, n_skins, nodes, n_nodes;
+    if (array(l, "skins", &skins, &n_skins) || array(l, "nodes", &nodes, &n_nodes)) return -1;
+    char what[48];
+    uint32_t v = l->d.values[skins].first;
+    for (uint32_t i = 0; i < n_skins; i++, v = l->d.values[v].next) {
+        snprintf(what, sizeof what, "skin %u", i);
+        uint32_t matrices, joints = json_member(&l->d, v, "joints"), n_joints = 0;
+        if (joints && l->d.values[joints].kind != JSON_ARRAY) return fail(l, joints, "%s's joints are not an array", what);
+        for (uint32_t j = joints ? l->d.values[joints].first : 0; j; j = l->d.values[j].next) n_joints++;
+        if (accessor_ref(l, v, "inverseBindMatrices", n_accessors, what, &matrices)) return -1;
+        if (matrices == UINT32_MAX)
+            return fail(l, v, "%s has no inverseBindMatrices, without which the model reader crashes; sylva draws "
+                        "no skins: export the model without its armature, or with its bind matrices", what);
+        uint32_t a = accessor[matrices];
+        uint64_t count, component;
+        if (whole(l, a, "count", -1, 1, UINT32_MAX, "the accessor", &count) ||
+            whole(l, a, "componentType", -1, 5120, 5126, "the accessor", &component))
+            return -1;
+        if (!json_string_is(&l->d, json_member(&l->d, a, "type"), "MAT4") || component != 5126 || count < n_joints)
+            return fail(l, a, "accessor %u, the inverse bind matrices of %s, is not %u MAT4 of floats (5126), one "
+                        "for each joint", matrices, what, n_joints);
+    }
+    v = l->d.values[nodes].first;
+    for (uint32_t i = 0; i < n_nodes; i++, v = l->d.values[v].next) {
+        uint64_t skin;
+        if (!json_member(&l->d, v, "skin")) continue;
+        snprintf(what, sizeof what, "node %u", i);
+        if (!n_skins) return fail(l, v, "%s names a skin, and the file has none", what);
+        if (whole(l, v, "skin", -1, 0, n_skins - 1, what, &skin)) return -1;
+    }
+    return 0;
+}
+
+/* The children array of node i checked, its first item (0 when none) returned in *first. */
+static int children_of(layout *l, const uint32_t *node, uint32_t i, uint32_t *first)
+{
+    uint32_t children = json_member(&l->d, node[i], "children");
+    if (children && l->d.values[children].kind != JSON_ARRAY)
+        return fail(l, children, "node %u's children are not an array", i);
+    *first = children ? l->d.values[children].first : 0;
+    return 0;
+}
+
+/* The node hierarchy: children are nodes of the file, no node is its own ancestor, and no chain
+ * of children is deeper than MODEL_MAX_NODE_DEPTH: Assimp's reader recurses down it (a chain of
+ * tens of thousands of nodes would exhaust its stack). node[] (n_nodes) holds the nodes' values;
+ * work[] (3 n_nodes, zeroed) is work space: each node's height, the next child to visit and the
+ * greatest height below it so far, found by a walk down the children with an explicit stack. */
+static int check_nodes(layout *l, const uint32_t *node, uint32_t n_nodes, uint32_t *work)
+{
+    const uint32_t IN_PROGRESS = UINT32_MAX; /* a height while the node is on the stack */
+    uint32_t *height = work, *cursor = work + n_nodes, *best = cursor + n_nodes;
+    uint32_t stack[MODEL_MAX_NODE_DEPTH];
+    for (uint32_t root = 0; root < n_nodes; root++) {
+        if (height[root]) continue;
+        uint32_t depth = 0;
+        if (children_of(l, node, root, &cursor[root])) return -1;
+        stack[depth++] = root, height[root] = IN_PROGRESS, best[root] = 1;
+        while (depth) {
+            uint32_t i = stack[depth - 1], c = cursor[i];
+            if (!c) { /* all of i's children seen */
+                height[i] = best[i], depth--;
+                if (depth && best[stack[depth - 1]] < height[i] + 1) best[stack[depth - 1]] = height[i] + 1;
+                continue;
+            }
+            cursor[i] = l->d.values[c].next;
+            uint64_t child;
+            if (!json_whole(&l->d, c, &child) || child >= n_nodes)
+                return fail(l, c, "node %u has a child that is not one of the file's %u nodes", i, n_nodes);
+            if (height[child] == IN_PROGRESS)
+                return fail(l, c, "node %u has node %llu for a child, which is its ancestor or itself; a node "
+                            "hierarchy is a tree", i, (unsigned long long)child);
+            if (height[child]) {
+                if (best[i] < height[child] + 1) best[i] = height[child] + 1;
+            } else {
+                if (depth == MODEL_MAX_NODE_DEPTH)
+                    return fail(l, c, "the node hierarchy is deeper than %d levels; sylva reads hierarchies up to "
+                                "that", MODEL_MAX_NODE_DEPTH);
+                if (children_of(l, node, (uint32_t)child, &cursor[child])) return -1;
+                stack[depth++] = (uint32_t)child, height[child] = IN_PROGRESS, best[child] = 1;
+            }
+            if (best[i] > MODEL_MAX_NODE_DEPTH)
+                return fail(l, node[i], "the node hierarchy is deeper than %d levels; sylva reads hierarchies up "
+                            "to that", MODEL_MAX_NODE_DEPTH);
+        }
+    }
+    return 0;
+}
+
+/* Each animation channel's sampler and target node are the animation's and the file's, and each
+ * sampler's output holds a value for each of its input's times (three for a cubic spline):
+ * Assimp 5.2 reads one (or three) per time whatever the output's count, and for morph weights
+ * divides the count by the times and takes two from the quotient of a cubic spline (an output of
+ * fewer than three values a time made it allocate 16 GB a key). */
+static int check_animations(layout *l, const uint32_t *accessor, uint32_t n_accessors, uint32_t n_nodes)
+{
+    uint32_t animations, n_animations;
+    if (array(l, "animations", &animations, &n_animations)) return -1;
+    char what[64];
+    uint32_t v = l->d.values[animations].first;
+    for (uint32_t i = 0; i < n_animations; i++, v = l->d.values[v].next) {
+        uint32_t samplers = json_member(&l->d, v, "samplers"), channels = json_member(&l->d, v, "channels"), n = 0;
+        if ((samplers && l->d.values[samplers].kind != JSON_ARRAY) || (channels && l->d.values[channels].kind != JSON_ARRAY))
+            return fail(l, v, "animation %u's samplers or channels are not an array", i);
+        for (uint32_t s = samplers ? l->d.values[samplers].first : 0; s; s = l->d.values[s].next, n++) {
+            snprintf(what, sizeof what, "animation %u sampler %u", i, n);
+            uint32_t input, output;
+            uint64_t times, values;
+            if (l->d.values[s].kind != JSON_OBJECT) return fail(l, s, "%s is not an object", what);
+            if (accessor_ref(l, s, "input", n_accessors, what, &input) ||
+                accessor_ref(l, s, "output", n_accessors, what, &output))
+                return -1;
+            if (input == UINT32_MAX || output == UINT32_MAX) continue;
+            if (whole(l, accessor[input], "count", -1, 1, UINT32_MAX, "the accessor", &times) ||
+                whole(l, accessor[output], "count", -1, 1, UINT32_MAX, "the accessor", &values))
+                return -1;
+            int cubic = json_string_is(&l->d, json_member(&l->d, s, "interpolation"), "CUBICSPLINE");
+            if (values < (cubic ? 3 : 1) * times)
+                return fail(l, s, "%s has %llu times and %llu values; it needs %s for each time", what,
+                            (unsigned long long)times, (unsigned long long)values,
+                            cubic ? "three (a cubic spline's tangents and value)" : "one");
+        }
+        uint32_t k = 0;
+        for (uint32_t c = channels ? l->d.values[channels].first : 0; c; c = l->d.values[c].next, k++) {
+            snprintf(what, sizeof what, "animation %u channel %u", i, k);
+            uint64_t sampler, target_node;
+            uint32_t target = json_member(&l->d, c, "target");
+            if (l->d.values[c].kind != JSON_OBJECT) return fail(l, c, "%s is not an object", what);
+            if (!n) return fail(l, c, "%s names a sampler, and its animation has none", what);
+            if (whole(l, c, "sampler", -1, 0, n - 1, what, &sampler)) return -1;
+            if (!target || l->d.values[target].kind != JSON_OBJECT)
+                return fail(l, c, "%s has no target object; a channel names the node it moves", what);
+            if (!n_nodes) return fail(l, target, "%s names a node, and the file has none", what);
+            if (whole(l, target, "node", -1, 0, n_nodes - 1, what, &target_node)) return -1;
+        }
+    }
+    return 0;
+}
+
 int gltf_layout_check(const char *json, size_t n, uint64_t bin, const char *where, err_buf *err)
 {
     layout l = {.where = where, .err = err};
     if (json_read(&l.d, json, n, where, err)) return -1;
     int rc = -1;
     uint64_t *held = NULL;     /* owned: freed below; the buffers' bytes, then the views' lengths and strides */
-    uint32_t *accessor = NULL; /* owned: freed below; the accessors' values */
-    uint32_t buffers, n_buffers, views, n_views, accessors, n_accessors;
+    uint32_t *accessor = NULL; /* owned: freed below; the accessors' values, then the nodes' and work space */
+    uint32_t buffers, n_buffers, views, n_views, accessors, n_accessors, nodes, n_nodes;
     if (l.d.values[0].kind != JSON_OBJECT) {
         fail(&l, 0, "a glTF file is one JSON object");
         goto done;
@@ -252,10 +398,10 @@ int gltf_layout_check(const char *json, size_t n, uint64_t bin, const char *wher
         goto done;
     }
     if (array(&l, "buffers", &buffers, &n_buffers) || array(&l, "bufferViews", &views, &n_views) ||
-        array(&l, "accessors", &accessors, &n_accessors))
+        array(&l, "accessors", &accessors, &n_accessors) || array(&l, "nodes", &nodes, &n_nodes))
         goto done;
     held = calloc((size_t)n_buffers + 2 * (size_t)n_views + 1, sizeof *held);
-    accessor = calloc((size_t)n_accessors + 1, sizeof *accessor);
+    accessor = calloc((size_t)n_accessors + 4 * (size_t)n_nodes + 1, sizeof *accessor);
     if (!held || !accessor) {
         err_nomem(err, "%s: out of memory checking %u buffers, %u buffer views and %u accessors", where, n_buffers,
                   n_views, n_accessors);
@@ -263,11 +409,14 @@ int gltf_layout_check(const char *json, size_t n, uint64_t bin, const char *wher
     }
     for (uint32_t i = 0, a = l.d.values[accessors].first; i < n_accessors; i++, a = l.d.values[a].next)
         accessor[i] = a;
+    uint32_t *node = accessor + n_accessors, *work = node + n_nodes;
+    for (uint32_t i = 0, v = l.d.values[nodes].first; i < n_nodes; i++, v = l.d.values[v].next) node[i] = v;
     uint64_t *view_len = held + n_buffers, *view_stride = view_len + n_views;
     if (check_buffers(&l, bin, buffers, n_buffers, held) ||
         check_views(&l, views, n_views, held, n_buffers, view_len, view_stride) ||
         check_accessors(&l, accessor, n_accessors, n_views, view_len, view_stride) ||
-        check_primitives(&l, accessor, n_accessors))
+        check_primitives(&l, accessor, n_accessors) || check_skins(&l, accessor, n_accessors) ||
+        check_nodes(&l, node, n_nodes, work) || check_animations(&l, accessor, n_accessors, n_nodes))
         goto done;
     rc = 0;
 done:

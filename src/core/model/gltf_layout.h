@@ -1,5 +1,5 @@
-/* gltf_layout.h — the layout a glTF 2.0 file states (its bytes and its primitives' vertex counts),
- * checked before Assimp reads it.
+/* gltf_layout.h — the layout a glTF 2.0 file states (its bytes, its primitives' vertex counts, its
+ * skins, nodes and animations), checked before Assimp reads it.
  * Assimp 5.2 bounds an accessor by its component size times its count, not by its elements and
  * their stride from its offset, and then copies whole elements: an accessor one byte past the end
  * of its buffer view made it read past the end of its buffer. It adds offsets and lengths in
@@ -10,7 +10,11 @@
  * numbers these take are whole numbers of their ranges; no accessor is sparse; and every mesh
  * primitive has a POSITION and draws enough vertices for its mode, with indices of an unsigned
  * integer type: Assimp makes count - 2 faces of a triangle fan and then writes the first, so a
- * fan of two indices wrote a face into an array of none. Nothing is allocated past the call. */
+ * fan of two indices wrote a face into an array of none; and every node's skin is one of the
+ * file's, with a MAT4 inverse bind matrix of floats for each joint (a skin without them crashed
+ * Assimp); the node hierarchy is a tree no deeper than MODEL_MAX_NODE_DEPTH (Assimp recurses down
+ * it); and each animation channel's sampler and node exist, each sampler's output holding a value
+ * (three for a cubic spline) for each of its input's times. Nothing is allocated past the call. */
 #ifndef SYLVA_GLTF_LAYOUT_H
 #define SYLVA_GLTF_LAYOUT_H
 

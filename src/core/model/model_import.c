@@ -144,14 +144,12 @@ static int file_frame(const struct aiScene *ai, const model_format *f, const mod
     return 0;
 }
 
-#define MAX_NODE_DEPTH 1000
-
 /* Counts triangles and vertices over all node instances; -1 when the hierarchy is deeper than
- * MAX_NODE_DEPTH. */
+ * MODEL_MAX_NODE_DEPTH. */
 static int count_uses(const struct aiScene *ai, const struct aiNode *n, int depth, uint64_t *nt,
                       uint64_t *nv, uint64_t *uses)
 {
-    if (depth > MAX_NODE_DEPTH) return -1;
+    if (depth > MODEL_MAX_NODE_DEPTH) return -1;
     for (unsigned i = 0; i < n->mNumMeshes; i++) {
         if (n->mMeshes[i] >= ai->mNumMeshes) continue; /* reported when copying */
         const struct aiMesh *am = ai->mMeshes[n->mMeshes[i]];
@@ -363,7 +361,7 @@ int model_import(scene *s, const char *path, const model_import_options *opt, me
 
     uint64_t nt = 0, nv = 0, uses = 0;
     if (count_uses(ai, ai->mRootNode, 0, &nt, &nv, &uses)) {
-        err_fail(err, ERR_LIMIT, "%s: the node hierarchy is deeper than %d levels", path, MAX_NODE_DEPTH);
+        err_fail(err, ERR_LIMIT, "%s: the node hierarchy is deeper than %d levels", path, MODEL_MAX_NODE_DEPTH);
         goto done;
     }
     if (nt == 0) {

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "model/model_import.h"
+#include "model/model_limits.h"
 #include "util/json_read.h"
 
 typedef struct layout {

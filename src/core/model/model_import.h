@@ -10,16 +10,10 @@
 
 #include <stdint.h>
 
+#include "model/model_limits.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"
 #include "util/err.h"
-
-/* The default triangle limit (instances counted): a model above it is refused before any of
- * its geometry is copied. Memory per triangle is stated in docs/models-import.md. */
-#define MODEL_MAX_TRIANGLES 20000000u
-/* The deepest node hierarchy read (levels from a root); glTF's is checked before Assimp reads it,
- * whose reader recurses through it. */
-#define MODEL_MAX_NODE_DEPTH 1000
 
 /* The up axis of the file's coordinates. Formats that state it (glTF: +Y by its
  * specification, COLLADA: <up_axis>, FBX: UpAxis, 3DS: +Z) are turned by what they state;

@@ -1,5 +1,6 @@
-/* gltf_layout.c — buffers, buffer views and accessors of a glTF 2.0 file checked against one
- * another (gltf_layout.h). */
+/* gltf_layout.c — the buffers, buffer views and accessors of a glTF 2.0 file checked against one
+ * another and its bytes, and its primitives, skins, nodes and animations against what Assimp
+ * reads of them unchecked (gltf_layout.h). */
 #include "model/gltf_layout.h"
 
 #include <stdarg.h>
@@ -31,8 +32,8 @@ static int fail(layout *l, uint32_t v, const char *fmt, ...)
 }
 
 /* The whole number of member key of object o into *out: dflt when the member is absent and dflt
- * is not -1 (then *present is 0); otherwise it must be a whole number from lo to hi. what names
- * the object in messages ("accessor 5"). */
+ * is not -1 (an absent member is refused when it is); otherwise it must be a whole number from lo
+ * to hi. what names the object in messages ("accessor 5"). */
 static int whole(layout *l, uint32_t o, const char *key, int64_t dflt, uint64_t lo, uint64_t hi, const char *what,
                  uint64_t *out)
 {

@@ -32,6 +32,23 @@ static const char *write_text(const char *name, const char *text)
 /* The file as bytes: n bytes from p appended to the open file. */
 static void put(FILE *f, const void *p, size_t n) { fwrite(p, 1, n, f); }
 
+/* A GLB of the JSON text (its chunk padded with spaces to four bytes) and, when bin_len is not 0,
+ * a BIN chunk of bin_len bytes from bin; its path, or NULL when it cannot be written. */
+static const char *write_glb(const char *name, const char *json, const void *bin, uint32_t bin_len)
+{
+    uint32_t len = (uint32_t)(strlen(json) + 3) / 4 * 4, total = 20 + len + (bin_len ? 8 + bin_len : 0);
+    uint32_t json_type = 0x4E4F534A, bin_type = 0x004E4942;
+    const char *path = work_path(name);
+    FILE *f = fopen(path, "wb");
+    CHECK(f != NULL);
+    if (!f) return NULL;
+    put(f, "glTF", 4), put(f, &(uint32_t){2}, 4), put(f, &total, 4), put(f, &len, 4), put(f, &json_type, 4);
+    put(f, json, strlen(json)), put(f, "   ", len - strlen(json));
+    if (bin_len) put(f, &bin_len, 4), put(f, &bin_type, 4), put(f, bin, bin_len);
+    fclose(f);
+    return path;
+}
+
 static const char *write_binary_stl(void)
 {
     const char *path = work_path("tet.stl");
@@ -366,16 +383,9 @@ TEST(gltf_escaped_key)
     mesh_free(m);
     scene_free(s);
 
-    /* the same JSON as a GLB's one chunk, padded with spaces to four bytes */
-    const char *gltf = "{\"asset\":{\"version\":\"2.0\"},\"me\\u0073hes\":[]}";
-    uint32_t len = (uint32_t)(strlen(gltf) + 3) / 4 * 4, total = 20 + len, type = 0x4E4F534A;
-    path = work_path("escaped.glb");
-    FILE *f = fopen(path, "wb");
-    CHECK(f != NULL);
-    if (!f) return;
-    put(f, "glTF", 4), put(f, &(uint32_t){2}, 4), put(f, &total, 4), put(f, &len, 4), put(f, &type, 4);
-    put(f, gltf, strlen(gltf)), put(f, "   ", len - strlen(gltf));
-    fclose(f);
+    /* the same JSON as a GLB's one chunk */
+    path = write_glb("escaped.glb", "{\"asset\":{\"version\":\"2.0\"},\"me\\u0073hes\":[]}", NULL, 0);
+    if (!path) return;
     expect_error(path, NULL, ERR_INPUT, "escaped.glb: the JSON chunk, line 1, column 28: the key \"me\\u0073hes\"");
 }
 
@@ -524,16 +534,8 @@ TEST(gltf_layout_checked)
                        "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0}}]}],\"buffers\":[{\"byteLength\":"
                        "40}],\"bufferViews\":[{\"buffer\":0,\"byteLength\":36}],\"accessors\":[{\"bufferView\":0,"
                        "\"byteOffset\":1,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\"}]}";
-    uint32_t len = (uint32_t)(strlen(json) + 3) / 4 * 4, bin = 36, total = 20 + len + 8 + bin;
-    uint32_t json_type = 0x4E4F534A, bin_type = 0x004E4942;
-    path = work_path("past.glb");
-    FILE *f = fopen(path, "wb");
-    CHECK(f != NULL);
-    if (!f) return;
-    put(f, "glTF", 4), put(f, &(uint32_t){2}, 4), put(f, &total, 4), put(f, &len, 4), put(f, &json_type, 4);
-    put(f, json, strlen(json)), put(f, "   ", len - strlen(json));
-    put(f, &bin, 4), put(f, &bin_type, 4), put(f, tet_pos, bin);
-    fclose(f);
+    path = write_glb("past.glb", json, tet_pos, 36);
+    if (!path) return;
     expect_error(path, NULL, ERR_INPUT, "past.glb (its JSON chunk):1:");
     expect_error(path, NULL, ERR_INPUT, "accessor 0 reads bytes 1 to 37 of buffer view 0");
 }

@@ -99,21 +99,17 @@ static void json_text(const char *data, size_t size, const char **text, size_t *
     }
 }
 
-/* 0 when no key of the file's JSON is written with an escape; -1 with err set naming the first,
- * with its line and column in the JSON. */
-static int keys_plain(const char *path, const char *data, size_t size, err_buf *err)
+/* 0 when no key of the JSON text[0..n) is written with an escape; -1 with err set naming the
+ * first, with its line and column in the JSON (glb: the JSON is a GLB's chunk, named so). */
+static int keys_plain(const char *path, const char *text, size_t n, int glb, err_buf *err)
 {
-    const char *text;
-    size_t n;
-    uint64_t bin;
-    json_text(data, size, &text, &n, &bin);
     size_t at = escaped_key(text, n), line = 1, column = 1, end = at + 1;
     if (at >= n) return 0;
     for (size_t i = 0; i < at; i++) column = text[i] == '\n' ? (line++, 1) : column + 1;
     while (end < n && text[end] != '"') end += text[end] == '\\' ? 2 : 1;
     int len = (int)((end < n ? end + 1 : n) - at > 40 ? 40 : (end < n ? end + 1 : n) - at);
     char where[80];
-    snprintf(where, sizeof where, text != data ? ": the JSON chunk, line %zu, column %zu" : ":%zu:%zu", line, column);
+    snprintf(where, sizeof where, glb ? ": the JSON chunk, line %zu, column %zu" : ":%zu:%zu", line, column);
     return err_fail(err, ERR_INPUT,
                     "%s%s: the key %.*s is written with an escape; a glTF's keys are plain names (\"uri\", "
                     "\"mode\", \"mimeType\"): write it without one",
@@ -168,7 +164,7 @@ int gltf_check(const char *path, err_buf *err)
         json_text(data, (size_t)size, &text, &n, &bin);
         char where[ERR_FILE_MAX + 32];
         snprintf(where, sizeof where, bin != GLTF_NO_BIN ? "%s (its JSON chunk)" : "%s", path);
-        rc = keys_plain(path, data, (size_t)size, err) || values_checked(path, data, (size_t)size, err) ||
+        rc = keys_plain(path, text, n, bin != GLTF_NO_BIN, err) || values_checked(path, data, (size_t)size, err) ||
                      gltf_layout_check(text, n, bin, where, err)
                  ? -1
                  : 0;

@@ -70,7 +70,7 @@ static int read_string(reader *r, uint32_t *start, uint32_t *end)
         }
         if (r->p + 1 >= r->d->n || !strchr("\"\\/bfnrtu", t[r->p + 1]))
             return fail_at(r, ERR_INPUT, r->p, "a bad escape in a string; valid are \\\" \\\\ \\/ \\b \\f \\n \\r "
-                           "\\t and \\uXXXX");
+                           "\\t and \\u followed by four hexadecimal digits");
         if (t[r->p + 1] == 'u') {
             for (uint32_t k = 2; k < 6; k++)
                 if (r->p + k >= r->d->n || !strchr("0123456789abcdefABCDEF", t[r->p + k]))

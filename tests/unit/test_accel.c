@@ -1,7 +1,8 @@
 /* test_accel.c — the Embree scene: its geometry-id layout (terrain, water, objects, instances;
  * opaque and cut-out parts) seen through real hits, and Embree's errors: recorded by the accel,
  * reported on the calling thread, never written into a caller's buffer by the callback (which
- * may run on any thread); the frame near the camera that the verification render is built in
+ * may run on any thread); a build holding only the plants that reach a rectangle, or none
+ * (accel_build_plants); the frame near the camera that the verification render is built in
  * (render/accel_frame.h). */
 #include <pthread.h>
 #include <stdlib.h>
@@ -97,6 +98,51 @@ TEST(geometry_id_layout)
     CHECK_INT(h.kind, GEOM_TERRAIN);
     CHECK_INT(accel_device_error(&a, &err), 0);
     accel_free(&a);
+    scene_free(s);
+}
+
+/* The number of the plant (its instance) that a vertical ray down at (x, y) meets, or -1 when it
+ * meets none. */
+static int plant_hit(const accel *a, float x, float y)
+{
+    struct RTCRayHit rh = cast(a, x, y, 10, -1);
+    unsigned inst = rh.hit.instID[0];
+    return inst == RTC_INVALID_GEOMETRY_ID || inst < a->first_instance ? -1 : (int)(inst - a->first_instance);
+}
+
+TEST(plants_held_within_a_rectangle)
+{
+    scene *s = small_scene(); /* plant 0: a 1 m x 2 m quad centred at (7.5, 5) */
+    CHECK(s != NULL);
+    if (!s) return;
+    err_buf err;
+    /* plant 1 reaches the rectangle's east edge by 0.4 m; plant 2, turned a quarter, stops 0.5 m
+     * short of it; plant 3 is far off */
+    const xform3x4 xf[3] = {{{{1, 0, 0, 9.4f}, {0, 1, 0, 5}, {0, 0, 1, 0}}},
+                            {{{0, -1, 0, 10.5f}, {1, 0, 0, 5}, {0, 0, 1, 0}}},
+                            {{{1, 0, 0, 20}, {0, 1, 0, 5}, {0, 0, 1, 0}}}};
+    for (int k = 0; k < 3; k++) CHECK_INT(scene_add_instance(s, 0, &xf[k], &err), k + 1);
+    const accel_plants within = {ACCEL_PLANTS_WITHIN, {6, 4}, {9, 6}}, none = {.kind = ACCEL_PLANTS_NONE};
+    accel all, part, bare;
+    CHECK_INT(accel_build(&all, s, 1, &err), 0);
+    CHECK_INT(accel_build_plants(&part, s, 1, &within, &err), 0);
+    CHECK_INT(accel_build_plants(&bare, s, 1, &none, &err), 0);
+    CHECK_INT(all.plants_held, 4);
+    CHECK_INT(part.plants_held, 2);
+    CHECK_INT(bare.plants_held, 0);
+    CHECK(bare.proto_scenes[0] == NULL); /* no plant places the prototype: its BVH is not built */
+    /* the plants held keep their ids, and rays over the rectangle meet what they meet in all */
+    CHECK_INT(plant_hit(&all, 7.5f, 5), 0);
+    CHECK_INT(plant_hit(&part, 7.5f, 5), 0);
+    CHECK_INT(plant_hit(&all, 9.2f, 5.5f), 1);
+    CHECK_INT(plant_hit(&part, 9.2f, 5.5f), 1);
+    CHECK_INT(plant_hit(&all, 10.5f, 5), 2);
+    CHECK_INT(plant_hit(&part, 10.5f, 5), -1);
+    CHECK_INT(plant_hit(&all, 20, 5), 3);
+    CHECK_INT(plant_hit(&part, 20, 5), -1);
+    CHECK_INT(plant_hit(&bare, 7.5f, 5), -1);
+    CHECK_INT(cast(&bare, 4.5f, 5, 10, -1).hit.geomID, accel_top_object_id(1, ACCEL_PART_OPAQUE)); /* objects stay */
+    accel_free(&all), accel_free(&part), accel_free(&bare);
     scene_free(s);
 }
 
@@ -299,6 +345,7 @@ TEST(scene_built_in_a_frame_near_the_camera)
     scene_free(s);
 }
 
-TEST_LIST(TEST_CASE(geometry_id_layout), TEST_CASE(embree_errors_recorded_and_reported_by_the_caller),
+TEST_LIST(TEST_CASE(geometry_id_layout), TEST_CASE(plants_held_within_a_rectangle),
+          TEST_CASE(embree_errors_recorded_and_reported_by_the_caller),
           TEST_CASE(terrain_grid_matches_the_tessellation), TEST_CASE(frame_near_the_camera),
           TEST_CASE(scene_built_in_a_frame_near_the_camera))

@@ -2,6 +2,7 @@
  * accel_mesh.h), hit shading. */
 #include "render/accel.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -27,11 +28,43 @@ uint32_t accel_hit_object(const accel *a, const struct RTCRayHit *rh)
 
 /* --- building ----------------------------------------------------------------------------- */
 
-static int build_prototypes(accel *a, const scene *s, err_buf *err)
+/* 1 when the box lo .. hi of a prototype, placed by xf, reaches the rectangle of `which`. */
+static int box_reaches(const xform3x4 *xf, const float lo[3], const float hi[3], const accel_plants *which)
+{
+    for (int r = 0; r < 2; r++) {
+        double centre = xf->m[r][3], reach = 0;
+        for (int k = 0; k < 3; k++) {
+            double mid = 0.5 * ((double)lo[k] + hi[k]), half = 0.5 * ((double)hi[k] - lo[k]);
+            centre += xf->m[r][k] * mid, reach += fabs(xf->m[r][k]) * half;
+        }
+        if (centre + reach < which->lo[r] || centre - reach > which->hi[r]) return 0;
+    }
+    return 1;
+}
+
+/* Marks in held (n_instances) the plants a build holds and in used (n_prototypes) the prototypes
+ * they place. Returns 0, or -1 when out of memory. */
+static int plants_held(const scene *s, const accel_plants *which, uint8_t *held, uint8_t *used)
+{
+    float (*box)[2][3] = malloc((s->n_prototypes ? s->n_prototypes : 1) * sizeof *box); /* freed below */
+    if (!box) return -1;
+    for (uint32_t p = 0; p < s->n_prototypes; p++) mesh_bounds(s->prototypes[p].mesh, box[p][0], box[p][1]);
+    for (uint32_t i = 0; i < s->n_instances; i++) {
+        const instance *in = &s->instances[i];
+        held[i] = which->kind == ACCEL_PLANTS_ALL ||
+                  (which->kind == ACCEL_PLANTS_WITHIN && box_reaches(&in->xf, box[in->prototype][0],
+                                                                     box[in->prototype][1], which));
+        if (held[i]) used[in->prototype] = 1;
+    }
+    free(box);
+    return 0;
+}
+
+static int build_prototypes(accel *a, const scene *s, const uint8_t *used, err_buf *err)
 {
     for (uint32_t p = 0; p < s->n_prototypes; p++)
-        if (accel_build_shared(a, s->prototypes[p].mesh, GEOM_PROTOTYPE, &a->proto_scenes[p],
-                         &a->proto_geoms[p * ACCEL_PARTS], err))
+        if (used[p] && accel_build_shared(a, s->prototypes[p].mesh, GEOM_PROTOTYPE, &a->proto_scenes[p],
+                                          &a->proto_geoms[p * ACCEL_PARTS], err))
             return -1;
     for (uint32_t m = 0; m < s->n_models; m++)
         if (accel_build_shared(a, s->models[m].mesh, GEOM_OBJECT, &a->model_scenes[m], &a->model_geoms[m * ACCEL_PARTS],
@@ -40,8 +73,8 @@ static int build_prototypes(accel *a, const scene *s, err_buf *err)
     return 0;
 }
 
-/* The top scene: terrain, water, objects, then the instances (the id layout in accel.h). */
-static int build_top(accel *a, const scene *s, err_buf *err)
+/* The top scene: terrain, water, objects, then the plants held (the id layout in accel.h). */
+static int build_top(accel *a, const scene *s, const uint8_t *held, err_buf *err)
 {
     a->top = rtcNewScene(a->device);
     /* robust traversal: a ray running exactly along the terrain's cell edges (a camera on a
@@ -76,6 +109,8 @@ static int build_top(accel *a, const scene *s, err_buf *err)
             return -1;
     }
     for (uint32_t i = 0; i < s->n_instances; i++) {
+        if (!held[i]) continue;
+        a->plants_held++;
         xform3x4 xf = accel_frame_xf(a, &s->instances[i].xf);
         if (accel_add_instance(a, a->proto_scenes[s->instances[i].prototype], &xf, a->first_instance + i,
                                s->instances[i].development ? ACCEL_MASK_DEVELOPMENT : ACCEL_MASK_PLANT, err))
@@ -84,8 +119,12 @@ static int build_top(accel *a, const scene *s, err_buf *err)
     return accel_device_error(a, err);
 }
 
-int accel_build_open(accel *a, const scene *s, unsigned threads, const double frame[3], err_buf *err)
+/* accel_build_open holding the plants `which` says (NULL: all). */
+static int build_open(accel *a, const scene *s, unsigned threads, const double frame[3], const accel_plants *which,
+                      err_buf *err)
 {
+    static const accel_plants all = {ACCEL_PLANTS_ALL, {0, 0}, {0, 0}};
+    uint8_t *held = NULL, *used = NULL; /* freed below */
     memset(a, 0, sizeof *a);
     a->scene = s;
     if (frame) memcpy(a->frame, frame, sizeof a->frame);
@@ -109,16 +148,24 @@ int accel_build_open(accel *a, const scene *s, unsigned threads, const double fr
     a->first_instance = a->n_top_geoms;
     a->top_geoms = calloc(a->n_top_geoms, sizeof(geom_info));
     if (accel_framed(a)) a->framed_objects = calloc(s->n_objects ? s->n_objects : 1, sizeof(mesh *));
+    held = malloc(s->n_instances ? s->n_instances : 1), used = calloc(s->n_prototypes ? s->n_prototypes : 1, 1);
     if (!a->proto_scenes || !a->proto_geoms || !a->model_scenes || !a->model_geoms || !a->top_geoms ||
-        (accel_framed(a) && !a->framed_objects)) {
+        (accel_framed(a) && !a->framed_objects) || !held || !used || plants_held(s, which ? which : &all, held, used)) {
         err_nomem(err, "out of memory building the BVH");
         goto fail;
     }
-    if (build_prototypes(a, s, err) || build_top(a, s, err)) goto fail;
+    if (build_prototypes(a, s, used, err) || build_top(a, s, held, err)) goto fail;
+    free(held), free(used);
     return 0;
 fail:
+    free(held), free(used);
     accel_free(a);
     return -1;
+}
+
+int accel_build_open(accel *a, const scene *s, unsigned threads, const double frame[3], err_buf *err)
+{
+    return build_open(a, s, threads, frame, NULL, err);
 }
 
 int accel_commit(accel *a, err_buf *err)
@@ -137,7 +184,12 @@ int accel_commit(accel *a, err_buf *err)
 
 int accel_build(accel *a, const scene *s, unsigned threads, err_buf *err)
 {
-    return accel_build_open(a, s, threads, NULL, err) || accel_commit(a, err) ? -1 : 0;
+    return accel_build_plants(a, s, threads, NULL, err);
+}
+
+int accel_build_plants(accel *a, const scene *s, unsigned threads, const accel_plants *which, err_buf *err)
+{
+    return build_open(a, s, threads, NULL, which, err) || accel_commit(a, err) ? -1 : 0;
 }
 
 void accel_free(accel *a)

@@ -33,6 +33,21 @@
 /* Builds everything in the world's frame. threads: Embree's build threads (0: all). Returns 0 or
  * -1 with err. accel_build_open then accel_commit. */
 int accel_build(accel *a, const scene *s, unsigned threads, err_buf *err);
+
+/* Which plants a build holds: every one; none; or those whose horizontal bounds (their
+ * prototype's box placed by the instance) reach the rectangle lo .. hi of the world, in metres.
+ * A ray that stays over the rectangle meets the same plants in a BVH built WITHIN it as in one
+ * built with ALL. */
+typedef enum { ACCEL_PLANTS_ALL, ACCEL_PLANTS_NONE, ACCEL_PLANTS_WITHIN } accel_plants_kind;
+typedef struct accel_plants {
+    accel_plants_kind kind;
+    double lo[2], hi[2];       /* ACCEL_PLANTS_WITHIN: the rectangle's south-west and north-east corners */
+} accel_plants;
+
+/* accel_build holding the plants `which` says (NULL: all), and the BVHs of the prototypes they
+ * place alone. Returns 0 or -1 with err (a freed). */
+int accel_build_plants(accel *a, const scene *s, unsigned threads, const accel_plants *which, err_buf *err);
+
 /* Builds everything but the top scene's BVH, so that geometry can still be added to the top
  * scene or re-masked (the crown proxies, which need the world's frame) before its one build;
  * accel_commit finishes. frame: the world position of the frame's origin the scene is built in

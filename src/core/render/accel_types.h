@@ -70,6 +70,7 @@ typedef struct accel {
     geom_info *top_geoms;      /* per top-level non-instance geometry id; owned */
     uint32_t n_top_geoms;
     uint32_t first_instance;   /* top geomID of instance 0 */
+    uint32_t plants_held;      /* the plant instances in the top scene (accel_plants) */
     struct accel_terrain *terrain; /* the terrain's grid geometry (accel_terrain.h); owned */
     mesh *water_mesh;          /* owned */
     mesh *apron_mesh;          /* the terrain beyond its edge, or NULL; owned */

@@ -42,7 +42,7 @@ int ztv_screen_open(ztv_screen *s, const accel *a, unsigned mask, uint64_t pairs
 {
     mask &= ~(unsigned)ACCEL_MASK_GROUND;
     *s = (ztv_screen){.scene = a->top, .mask = mask};
-    uint64_t geometries = (uint64_t)a->scene->n_instances + a->scene->n_objects;
+    uint64_t geometries = (uint64_t)a->plants_held + a->scene->n_objects;
     if (pairs < ZTV_SCREEN_PAIRS_PER_PLANT * geometries) return 0;
     if (!(s->own = own_scene(a, mask, err))) return -1;
     s->scene = s->own, s->mask = ~0u;

@@ -4,11 +4,11 @@
  * either in an Embree scene of their own, or in the top scene with a mask that leaves the ground
  * out. The top scene's BVH holds the terrain's grid among the plants, so a sightline running a
  * couple of metres over the ground walks the terrain's nodes all the way; a scene of their own
- * spares that walk but costs a BVH over every instance, so it is built when the map traces at
- * least ZTV_SCREEN_PAIRS_PER_PLANT pairs per instance (measured: its build costs about as much as
- * the walks it spares over 4 to 5 sightlines an instance, and about half the pairs clear bare
- * earth). Either way a sightline clear of the ground and of these is clear of the top scene with
- * the screened mode's mask: the same geometries (their filters, transforms and ids).
+ * spares that walk but costs a BVH over every instance the accel holds, so it is built when the map
+ * traces at least ZTV_SCREEN_PAIRS_PER_PLANT pairs per instance held (measured: its build costs
+ * about as much as the walks it spares over 4 to 5 sightlines an instance, and about half the pairs
+ * clear bare earth). Either way a sightline clear of the ground and of these is clear of the top
+ * scene with the screened mode's mask: the same geometries (their filters, transforms and ids).
  *
  * Ownership: ztv_screen_open may make an Embree scene on the accel's device (which must outlive
  * it); ztv_screen_close releases it.

@@ -167,6 +167,29 @@ static int trace_and_write(ztv_job *job, const run_parts *parts, ztv_output *out
     return 0;
 }
 
+/* The plants the map's sightlines can meet: none on bare earth or the canopy surface; else those
+ * reaching the rectangle of its cells' centres and its targets, which every sightline of the map
+ * stays over (each runs straight, seen from above, from a cell's centre to a target), widened by
+ * ZTV_PLANTS_MARGIN for the rays' single precision. The BVH then holds nothing the map does not
+ * need: on a site planted far beyond the map's radius most plants are left out. */
+#define ZTV_PLANTS_MARGIN 1.0 /* metres */
+static accel_plants plants_reached(const ztv_job *job)
+{
+    if (job->screened != ZTV_VEGETATION && job->screened != ZTV_ALL) return (accel_plants){.kind = ACCEL_PLANTS_NONE};
+    const ztv_grid *g = &job->grid;
+    double west, north, east, south;
+    ztv_cell_centre(g, 0, 0, &west, &north);
+    ztv_cell_centre(g, g->nx - 1, g->ny - 1, &east, &south);
+    accel_plants w = {ACCEL_PLANTS_WITHIN, {west, south}, {east, north}};
+    for (uint32_t t = 0; t < job->targets->n; t++)
+        for (int k = 0; k < 2; k++) {
+            w.lo[k] = fmin(w.lo[k], job->targets->p[t][k]);
+            w.hi[k] = fmax(w.hi[k], job->targets->p[t][k]);
+        }
+    for (int k = 0; k < 2; k++) w.lo[k] -= ZTV_PLANTS_MARGIN, w.hi[k] += ZTV_PLANTS_MARGIN;
+    return w;
+}
+
 /* The canopy mode asked of a scene without canopy heights: refused at the ztv: key that asked, or
  * as the option's. Returns 0 when the mode has what it screens with. */
 static int refuse_canopy_without_heights(const ztv_study_options *opt, const scene_file *sf, const scene *sc,
@@ -210,7 +233,8 @@ int ztv_study_run(const scene_file *sf, const scene *sc, const ztv_study_options
                 job.grid.ny, job.grid.cell, o.eye, job.screened == ZTV_BARE ? "bare earth only" : "bare earth and ",
                 job.screened == ZTV_BARE ? "" : mode_names[job.screened]);
     phase_mark t_phase = phase_start();
-    if (accel_build(&acc, sc, o.threads, err)) {
+    accel_plants plants = plants_reached(&job);
+    if (accel_build_plants(&acc, sc, o.threads, &plants, err)) {
         err_default(err, ERR_INTERNAL);
         goto done;
     }

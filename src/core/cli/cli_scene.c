@@ -34,6 +34,7 @@ int cli_scene_open(cli_scene *c, const char *cmd, const char *scene_path, const 
                                                                       use->outputs, use->n_outputs) : EXIT_OK;
     build_options bo = opt ? *opt : (build_options){0};
     bo.times = &c->times;
+    if (use->build_for) use->build_for(c->sf, &bo, use->build_for_arg);
     if (!(c->scene = scene_build(c->sf, c->reg, &bo, &err))) return cli_fail(NULL, &err, ERR_INPUT);
     c->seconds = progress_now() - t0;
     const double *ph = c->times.seconds; /* loading the file, materials, objects, season: the rest */

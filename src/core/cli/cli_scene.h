@@ -23,6 +23,11 @@ typedef struct cli_scene_use {
     const cli_file *inputs, *outputs; /* with check_outputs: the files the command line names */
     uint32_t n_inputs, n_outputs;
     scene_view view;       /* the steps of a scene drawn from its camera (geometry/scene_view.h) */
+    /* NULL, or what the command makes of the loaded scene file for its build (called before the
+     * build, with the command's build options to change and build_for_arg): a bare-earth map
+     * leaves the plants out */
+    void (*build_for)(const scene_file *sf, build_options *bo, const void *arg);
+    const void *build_for_arg;
 } cli_scene_use;
 
 typedef struct cli_scene {

@@ -103,6 +103,18 @@ static int parse_products(const char *text, unsigned *products)
     return 0;
 }
 
+/* A map of bare earth or of the canopy surface traces no plant: its scene is built without them
+ * (a woodland's ecology can be most of a run). arg: the command's ztv_study_options. */
+static void build_for_map(const scene_file *sf, build_options *bo, const void *arg)
+{
+    const ztv_study_options *o = arg;
+    int mode = o->screening >= 0 ? o->screening : (int)sf->ztv.screening;
+    bo->no_plants = mode == ZTV_BARE || mode == ZTV_CANOPY;
+    if (bo->no_plants && !bo->quiet)
+        fprintf(stderr, "ztv: %s: the scene's plants are not built\n",
+                mode == ZTV_BARE ? "bare earth only" : "screened by the canopy surface");
+}
+
 /* One map into dir: the scene built (at the planting year bo says) and traced. */
 static int ztv_one(cli_mpi *m, const char *scene_path, const cli_scene_use *use, const build_options *bo,
                    ztv_study_options o, const char *dir)
@@ -198,7 +210,8 @@ static int ztv_run(cli_mpi *m, int argc, char **argv)
     if (m->rank) bo.quiet = 1;
     o.quiet = bo.quiet;
 
-    cli_scene_use use = {.season = season, .no_camera = 1, .check_outputs = 1}; /* the folder's files */
+    cli_scene_use use = {.season = season, .no_camera = 1, .check_outputs = 1, /* the folder's files */
+                         .build_for = build_for_map, .build_for_arg = &o};
     if (years && bo.planting_shown) {
         fprintf(stderr, "sylva ztv: give --year N or --years LIST, not both\n");
         return EXIT_USAGE;

@@ -16,6 +16,9 @@ typedef struct build_options {
                         development objects' mean position, else the ztv targets', else the
                         terrain's centre) instead of the camera: a refined ground that is the same
                         whatever the camera (`ztv --ground refined`) */
+    int no_plants;   /* 1: a scene without plants: no species' models, no plants placed (the scene
+                        file's, the tree survey's, the woodland's, the planting plan's): an analysis
+                        that traces bare earth or a canopy surface, which needs none */
     int planting_shown; /* 1: the planting plan planted and grown planting_years after its year
                         (--year); 0: the scene as it stands before the plan (nothing felled) */
     double planting_years; /* years since planting (>= 0) */

@@ -369,9 +369,10 @@ scene *scene_build(const scene_file *sf, const plugin_registry *plugins, const b
         build_terrain(s, sf, plugins, opt, &out, err) || terrain_near_site(s, sf, err) ||
         scene_build_landcover(s, sf, opt->quiet, err) || scene_build_canopy(s, sf, opt->quiet, err) ||
         scene_ground_camera(s, sf, err) ||
-        build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) ||
-        scene_build_trees(s, sf, opt, err) || build_woodland(s, sf, plugins, opt, &out, &ecology, err) ||
-        scene_build_planting(s, sf, plugins, ecology, opt, err) ||
+        (!opt->no_plants &&
+         (build_species(s, sf, plugins, &out, err) || build_plants(s, sf, err) || scene_build_trees(s, sf, opt, err) ||
+          build_woodland(s, sf, plugins, opt, &out, &ecology, err) ||
+          scene_build_planting(s, sf, plugins, ecology, opt, err))) ||
         scene_build_objects(s, sf, err) ||
         apply_season(s, sf, err)) {
         ecology_session_free(ecology);

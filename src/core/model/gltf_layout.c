@@ -237,11 +237,13 @@ static int check_primitives(layout *l, const uint32_t *accessor, uint32_t n_acce
 /* Each node's skin is one of the file's, and each skin has inverse bind matrices, a MAT4 of
  * floats for every joint: Assimp 5.2 looks a node's skin up without checking its index, reads
  * the matrices of a skin a node uses without looking whether it has any (a skin without them
- * crashed the program) and reads one for each joint whatever their count. */
-static int check_skins(layout *l, const uint32_t *accessor, uint32_t n_accessors)
+ * crashed the program) and reads one for each joint whatever their count. node[] (n_nodes)
+ * holds the nodes' values. */
+static int check_skins(layout *l, const uint32_t *accessor, uint32_t n_accessors, const uint32_t *node,
+                       uint32_t n_nodes)
 {
-    uint32_t skins, n_skins, nodes, n_nodes;
-    if (array(l, "skins", &skins, &n_skins) || array(l, "nodes", &nodes, &n_nodes)) return -1;
+    uint32_t skins, n_skins;
+    if (array(l, "skins", &skins, &n_skins)) return -1;
     char what[48];
     uint32_t v = l->d.values[skins].first;
     for (uint32_t i = 0; i < n_skins; i++, v = l->d.values[v].next) {
@@ -262,13 +264,12 @@ static int check_skins(layout *l, const uint32_t *accessor, uint32_t n_accessors
             return fail(l, a, "accessor %u, the inverse bind matrices of %s, is not %u MAT4 of floats (5126), one "
                         "for each joint", matrices, what, n_joints);
     }
-    v = l->d.values[nodes].first;
-    for (uint32_t i = 0; i < n_nodes; i++, v = l->d.values[v].next) {
+    for (uint32_t i = 0; i < n_nodes; i++) {
         uint64_t skin;
-        if (!json_member(&l->d, v, "skin")) continue;
+        if (!json_member(&l->d, node[i], "skin")) continue;
         snprintf(what, sizeof what, "node %u", i);
-        if (!n_skins) return fail(l, v, "%s names a skin, and the file has none", what);
-        if (whole(l, v, "skin", -1, 0, n_skins - 1, what, &skin)) return -1;
+        if (!n_skins) return fail(l, node[i], "%s names a skin, and the file has none", what);
+        if (whole(l, node[i], "skin", -1, 0, n_skins - 1, what, &skin)) return -1;
     }
     return 0;
 }
@@ -416,7 +417,7 @@ int gltf_layout_check(const char *json, size_t n, uint64_t bin, const char *wher
     if (check_buffers(&l, bin, buffers, n_buffers, held) ||
         check_views(&l, views, n_views, held, n_buffers, view_len, view_stride) ||
         check_accessors(&l, accessor, n_accessors, n_views, view_len, view_stride) ||
-        check_primitives(&l, accessor, n_accessors) || check_skins(&l, accessor, n_accessors) ||
+        check_primitives(&l, accessor, n_accessors) || check_skins(&l, accessor, n_accessors, node, n_nodes) ||
         check_nodes(&l, node, n_nodes, work) || check_animations(&l, accessor, n_accessors, n_nodes))
         goto done;
     rc = 0;
